@@ -1,0 +1,275 @@
+"""The vocabulary of check modules: the ``check`` decorator, the context a check receives, tolerances, and
+assertion helpers that fail with a message a student can act on.
+
+A check is a function ``check_<property>(ctx)`` decorated with ``@check(points, stage=...)``.  It returns
+nothing when the property holds and raises ``CheckFailure`` (through the helpers below) when it does not.  The
+student's code is reached only through ``ctx.student(probe, *args)`` (sandboxed child); the reference through
+``ctx.reference(probe, *args)`` (same probe, run in the grader).  Checks never mutate what they receive.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .results import Figure, Series
+
+__all__ = [
+    "Tol",
+    "EXACT",
+    "SHEET",
+    "SHEET_COARSE",
+    "STRUCTURE",
+    "STAGE_DEFINED",
+    "STAGE_SHAPE",
+    "STAGE_STRUCTURE",
+    "STAGE_VALUES",
+    "STAGE_RANDOM",
+    "CheckSpec",
+    "check",
+    "checks_of",
+    "CheckFailure",
+    "NotAnswered",
+    "Mistake",
+    "fail",
+    "as_array",
+    "assert_close",
+    "assert_rotation",
+    "close",
+    "format_array",
+    "mismatch_table",
+    "figure",
+]
+
+
+# ---------------------------------------------------------------------------------------------- tolerances
+
+
+@dataclass(frozen=True)
+class Tol:
+    """A named tolerance: ``|got - expected| <= atol + rtol * |expected|`` entrywise."""
+
+    name: str
+    atol: float
+    rtol: float = 0.0
+
+    def __str__(self) -> str:
+        rtol = f", rtol={self.rtol:g}" if self.rtol else ""
+        return f"{self.name} (atol={self.atol:g}{rtol})"
+
+
+#: the same computation as the reference, up to floating-point rounding
+EXACT = Tol("exact", 1e-8, 1e-8)
+#: numbers printed on the sheet with four decimals
+SHEET = Tol("sheet, 4 decimals", 6e-4)
+#: numbers printed on the sheet with three or fewer decimals, or read off a figure
+SHEET_COARSE = Tol("sheet, 3 decimals", 6e-3)
+#: structural properties (orthonormality, symmetry) of a computed matrix
+STRUCTURE = Tol("structure", 1e-6)
+
+# ---------------------------------------------------------------------------------------------- stages
+
+STAGE_DEFINED = 1  # it runs and returns something
+STAGE_SHAPE = 2  # type, shape, finite
+STAGE_STRUCTURE = 3  # orthonormal, det = +1, symmetric positive-definite, ...
+STAGE_VALUES = 4  # the sheet's numbers
+STAGE_RANDOM = 5  # randomized comparison with the reference
+
+
+# ---------------------------------------------------------------------------------------------- registry
+
+
+@dataclass(frozen=True)
+class CheckSpec:
+    func: object
+    name: str
+    title: str
+    points: float
+    stage: int
+    group: str
+    visibility: str
+
+
+def check(points: float, *, title: str, stage: int = STAGE_VALUES, group: str = "", visibility: str = "visible"):
+    """Declare a check.  ``title`` states the property (first line of every message); checks of one ``group``
+    run in stage order and stop at the first failing stage."""
+    if visibility not in ("visible", "hidden"):
+        raise ValueError(f"visibility must be 'visible' or 'hidden', not {visibility!r}")
+
+    def decorate(func):
+        name = func.__name__.removeprefix("check_")
+        func.check_spec = CheckSpec(func, name, title, float(points), stage, group or name, visibility)
+        return func
+
+    return decorate
+
+
+def checks_of(module) -> list[CheckSpec]:
+    """The checks of a check module, in definition order."""
+    specs = [obj.check_spec for obj in vars(module).values() if hasattr(obj, "check_spec")]
+    order = {name: i for i, name in enumerate(vars(module))}
+    return sorted(specs, key=lambda s: order[s.func.__name__])
+
+
+# ---------------------------------------------------------------------------------------------- failures
+
+
+class CheckFailure(Exception):
+    """The property does not hold.  ``message`` explains got/expected; ``hint`` names the likely mistake."""
+
+    def __init__(self, message: str, hint: str = "", diagnosis: str = ""):
+        super().__init__(message)
+        self.message = message
+        self.hint = hint
+        self.diagnosis = diagnosis
+
+
+class NotAnswered(Exception):
+    """A question in answers.toml is still blank."""
+
+
+def fail(message: str, hint: str = "", diagnosis: str = ""):
+    raise CheckFailure(message, hint, diagnosis)
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """A known mistake: what a student would get by making it, and what to tell them."""
+
+    name: str
+    value: object
+    hint: str
+
+
+# ---------------------------------------------------------------------------------------------- formatting
+
+
+def format_array(a, digits: int = 4) -> str:
+    a = np.asarray(a, dtype=float)
+    with np.printoptions(precision=digits, suppress=True, floatmode="fixed", linewidth=120):
+        return np.array2string(a, separator=", ")
+
+
+def mismatch_table(got, expected, tol: Tol, digits: int = 4) -> str:
+    """Side-by-side table of the entries, marking those outside the tolerance."""
+    got = np.atleast_1d(np.asarray(got, dtype=float))
+    expected = np.atleast_1d(np.asarray(expected, dtype=float))
+    bad = ~_within(got, expected, tol)
+    rows = ["  index        got          expected     |diff|"]
+    for index in np.ndindex(expected.shape):
+        mark = "  ✘" if bad[index] else ""
+        label = ",".join(str(i) for i in index)
+        g, e = got[index], expected[index]
+        rows.append(f"  [{label:>5}]  {g:>+11.{digits}f}  {e:>+11.{digits}f}  {abs(g - e):>9.2e}{mark}")
+    if len(rows) > 40:
+        shown = [rows[0]] + [r for r in rows[1:] if r.endswith("✘")][:30]
+        rows = shown + [f"  ... {int(bad.sum())} of {bad.size} entries outside the tolerance"]
+    return "\n".join(rows)
+
+
+# ---------------------------------------------------------------------------------------------- helpers
+
+
+def _within(got, expected, tol: Tol):
+    return np.abs(got - expected) <= tol.atol + tol.rtol * np.abs(expected)
+
+
+def close(got, expected, tol: Tol) -> bool:
+    """True when ``got`` has the shape of ``expected`` and matches it entrywise within ``tol``."""
+    try:
+        got = np.asarray(got, dtype=float)
+        expected = np.asarray(expected, dtype=float)
+    except (TypeError, ValueError):
+        return False
+    return got.shape == expected.shape and bool(np.all(np.isfinite(got))) and bool(np.all(_within(got, expected, tol)))
+
+
+def as_array(value, name: str, shape: tuple | None = None) -> np.ndarray:
+    """``value`` as a finite float array of the given shape, or a failure that says what is wrong."""
+    if value is None:
+        fail(f"{name} is None: the function returned nothing.", "Did you forget a return statement?", "none")
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        fail(f"{name} must be numeric, got a value of type {type(value).__name__}: {str(value)[:200]}")
+    if shape is not None and array.shape != tuple(shape):
+        if array.size == int(np.prod(shape)):
+            fail(
+                f"{name} must have shape {tuple(shape)}, got shape {array.shape}.",
+                f"Reshape it, e.g. np.reshape(x, {tuple(shape)}).",
+                "shape",
+            )
+        fail(f"{name} must have shape {tuple(shape)}, got shape {array.shape}.", diagnosis="shape")
+    if not np.all(np.isfinite(array)):
+        fail(f"{name} contains NaN or infinite entries:\n{format_array(array)}", diagnosis="not_finite")
+    return array
+
+
+def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str = "", note: str = ""):
+    """Fail unless ``got`` matches ``expected`` within ``tol``; name the first matching known mistake."""
+    expected = np.asarray(expected, dtype=float)
+    got = as_array(got, name, expected.shape)
+    if close(got, expected, tol):
+        return got
+    where = f" {context}" if context else ""
+    lines = [f"{name} is not the expected value{where}.", f"tolerance: {tol}"]
+    if note:
+        lines.append(note)
+    lines += ["got:", format_array(got), "expected:", format_array(expected), mismatch_table(got, expected, tol)]
+    for mistake in mistakes:
+        try:
+            matches = close(got, mistake.value, tol)
+        except Exception:  # noqa: BLE001 - a candidate that cannot be compared simply does not match
+            matches = False
+        if matches:
+            fail("\n".join(lines), mistake.hint, mistake.name)
+    fail("\n".join(lines))
+
+
+def assert_rotation(A, name: str, tol: Tol = STRUCTURE):
+    """Fail unless ``A`` is a proper rotation: orthonormal and with determinant +1."""
+    A = as_array(A, name, (3, 3))
+    defect = float(np.max(np.abs(A.T @ A - np.eye(3))))
+    if defect > tol.atol:
+        fail(
+            f"{name} is not orthonormal: max |A.T @ A - E| = {defect:.3g} > {tol.atol:g}.\n"
+            f"got:\n{format_array(A)}\nA.T @ A =\n{format_array(A.T @ A)}",
+            "A rotation matrix keeps lengths and angles: its columns are orthogonal unit vectors. "
+            "Check the entries (sin/cos swapped? a missing or extra term?).",
+            "not_orthonormal",
+        )
+    det = float(np.linalg.det(A))
+    if abs(det - 1.0) > 10 * tol.atol:
+        fail(
+            f"{name} is a reflection, not a rotation: det = {det:+.6f} (a rotation has det = +1).\n"
+            f"got:\n{format_array(A)}",
+            "One axis points the wrong way: check the signs of the sin terms (a sign flip turns a rotation "
+            "into a reflection).",
+            "reflection",
+        )
+    return A
+
+
+def figure(title: str, xlabel: str, ylabel: str, student, reference, equal_axes: bool = False) -> Figure:
+    """A figure with the student's curves over the reference's; each of ``student`` and ``reference`` is a
+    list of ``(label, x, y)``."""
+    series = [Series(f"yours: {label}", tuple(map(float, x)), tuple(map(float, y)), "student")
+              for label, x, y in student]
+    series += [Series(f"reference: {label}", tuple(map(float, x)), tuple(map(float, y)), "reference")
+               for label, x, y in reference]
+    return Figure(title, xlabel, ylabel, tuple(series), equal_axes)
+
+
+def encode_key(probe: str, args: tuple) -> str:
+    """A stable text key for a probe call (used by the reference cache)."""
+    from probes._codec import encode
+
+    return probe + json.dumps(encode(list(args)), sort_keys=True)
+
+
+@dataclass
+class _Scratch:
+    figures: list = field(default_factory=list)
+    seed: int | None = None

@@ -1,0 +1,168 @@
+"""The ``grade`` command.
+
+    grade init DIR                     copy the student template to DIR
+    grade problem-N [--submission P]   grade problem N of the submission in P (default: the current folder)
+    grade list                         every problem, its points, and whether checks exist for it
+    grade demo                         grade the bundled sample submissions
+    grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
+
+Exit codes: 0 all checks passed, 1 some checks did not pass, 2 usage error or a submission that cannot be
+loaded, 3 an internal grader error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import shutil
+import sys
+from pathlib import Path
+
+EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_GRADER = 0, 1, 2, 3
+
+
+def _problem_number(text: str) -> int:
+    match = re.fullmatch(r"(?:problem-?|p)?(\d{1,2})", text.strip().lower())
+    if not match:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a problem (write e.g. problem-6)")
+    return int(match.group(1))
+
+
+def _write(path: str | None, text: str) -> None:
+    if path:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        Path(path).write_text(text, encoding="utf-8")
+        print(f"wrote {path}", file=sys.stderr)
+
+
+def cmd_init(args) -> int:
+    from .loader import template_dir
+
+    target = Path(args.dir)
+    if target.exists() and any(target.iterdir()):
+        print(f"error: {target} exists and is not empty; choose a new folder", file=sys.stderr)
+        return EXIT_USAGE
+    shutil.copytree(template_dir(), target, dirs_exist_ok=True, ignore=shutil.ignore_patterns("__pycache__"))
+    print(f"Created {target}/ from the student template.\nNext: cd {target} && grade problem-6")
+    return EXIT_OK
+
+
+def cmd_list(args) -> int:
+    from .runner import problems
+
+    infos = problems()
+    print(f"{'problem':>8}  {'points':>6}  {'by hand':>7}  {'checks':>6}  title")
+    for p in infos:
+        manual = f"{p.manual_points:g}" if p.manual_points else "-"
+        print(f"{p.number:>8}  {p.points:>6g}  {manual:>7}  {p.checks:>6}  {p.title}")
+    print(f"\n{len(infos)} problems have checks; {sum(p.points for p in infos):g} points graded automatically.")
+    return EXIT_OK
+
+
+def _exit_code(reports) -> int:
+    from .results import Status
+
+    statuses = {r.status for report in reports for r in report.results}
+    if Status.GRADER_ERROR in statuses:
+        return EXIT_GRADER
+    return EXIT_OK if statuses <= {Status.PASSED} else EXIT_FAILED
+
+
+def cmd_problem(args) -> int:
+    from .render import render_gradescope, render_html, render_json, render_terminal
+    from .runner import grade_submission, problem_module
+    from .sandbox import Limits
+
+    numbers = args.problems
+    for number in numbers:
+        try:
+            problem_module(number)
+        except KeyError:
+            print(f"error: problem {number} has no checks (see `grade list`)", file=sys.stderr)
+            return EXIT_USAGE
+    submission = Path(args.submission)
+    if not submission.exists():
+        print(f"error: {submission} does not exist", file=sys.stderr)
+        return EXIT_USAGE
+    limits = Limits(call_timeout=args.timeout) if args.timeout else None
+    reports = grade_submission(submission, numbers, seed=args.seed, limits=limits)
+    colour = sys.stdout.isatty() and "NO_COLOR" not in os.environ
+    print(render_terminal(reports, colour=colour), end="")
+    if args.html:
+        _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))
+    _write(args.json, render_json(reports, show_hidden=False))
+    _write(args.gradescope, render_gradescope(reports))
+    if any("could not be loaded" in r.message for rep in reports for r in rep.results):
+        return EXIT_USAGE
+    return _exit_code(reports)
+
+
+def cmd_demo(args) -> int:
+    from .demo import run_demo
+
+    return run_demo(args)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="grade",
+        description="Autograder of the multibody-dynamics course.",
+        epilog="Grade a problem with `grade problem-6` inside your work folder.",
+    )
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+
+    p_init = sub.add_parser("init", help="copy the student template to a new folder")
+    p_init.add_argument("dir", help="the folder to create")
+    p_init.set_defaults(func=cmd_init)
+
+    p_list = sub.add_parser("list", help="list the problems, their points and checks")
+    p_list.set_defaults(func=cmd_list)
+
+    p_demo = sub.add_parser("demo", help="grade the bundled sample submissions")
+    p_demo.add_argument("--problems", type=_problem_number, nargs="+", default=None,
+                        help="problems to grade (default: those with checks)")
+    p_demo.add_argument("--out", default=None, help="also write the demo's reports into this folder")
+    p_demo.set_defaults(func=cmd_demo)
+
+    from .batch import add_batch_parser
+
+    add_batch_parser(sub)
+    return parser
+
+
+def _problem_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="grade problem-N", description="Grade one problem of a submission.")
+    parser.add_argument("problems", type=_problem_number, nargs="+", help="problem-N (several allowed)")
+    parser.add_argument("--submission", "-s", default=".",
+                        help="a folder, a .zip archive or a .ipynb notebook (default: the current folder)")
+    parser.add_argument("--html", help="write an HTML report with plots to this file")
+    parser.add_argument("--json", help="write a JSON report to this file")
+    parser.add_argument("--gradescope", help="write a Gradescope results.json to this file")
+    parser.add_argument("--seed", type=int, default=None, help="seed of the randomized checks (to reproduce)")
+    parser.add_argument("--timeout", type=float, default=None, help="seconds allowed per call of your code")
+    parser.set_defaults(func=cmd_problem)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
+    try:
+        if argv and re.fullmatch(r"(problem-?|p)\d{1,2}", argv[0].lower()):
+            args = _problem_parser().parse_args(argv)
+        else:
+            parser = build_parser()
+            args = parser.parse_args(argv)
+            if args.command is None:
+                parser.print_help()
+                return EXIT_USAGE
+        return args.func(args)
+    except SystemExit as exc:  # argparse's usage errors
+        return EXIT_USAGE if exc.code not in (0, None) else EXIT_OK
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,129 @@
+"""Results as data: frozen dataclasses that every renderer and the gradebook read."""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from enum import Enum
+
+__all__ = ["Status", "Series", "Figure", "CheckResult", "ManualItem", "ProblemReport"]
+
+
+class Status(str, Enum):
+    PASSED = "passed"
+    FAILED = "failed"  # the value or property is wrong
+    ERROR = "error"  # the student's code raised, crashed or returned something unusable
+    TIMEOUT = "timeout"  # the student's code did not answer in time
+    NOT_IMPLEMENTED = "not_implemented"  # still the template's stub, or an unanswered question
+    SKIPPED = "skipped"  # not run because an earlier stage failed
+    GRADER_ERROR = "grader_error"  # a defect of the grader: not the student's fault
+
+    @property
+    def symbol(self) -> str:
+        return {
+            "passed": "✔",
+            "failed": "✘",
+            "error": "!",
+            "timeout": "⏱",
+            "not_implemented": "…",
+            "skipped": "-",
+            "grader_error": "?",
+        }[self.value]
+
+
+@dataclass(frozen=True)
+class Series:
+    """One curve of a figure: ``role`` is "student", "reference" or "other"."""
+
+    label: str
+    x: tuple[float, ...]
+    y: tuple[float, ...]
+    role: str = "other"
+
+
+@dataclass(frozen=True)
+class Figure:
+    title: str
+    xlabel: str
+    ylabel: str
+    series: tuple[Series, ...]
+    equal_axes: bool = False
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    check_id: str  # e.g. "p06.cardan_values"
+    problem: int
+    title: str  # the property checked, one line
+    status: Status
+    score: float
+    max_score: float
+    message: str = ""  # got/expected, tolerance, mismatch table
+    hint: str = ""  # the likely mistake and what to do
+    diagnosis: str = ""  # short name of a recognised mistake, e.g. "transpose"
+    visibility: str = "visible"  # "visible" | "hidden"
+    stage: int = 0
+    seed: int | None = None
+    figures: tuple[Figure, ...] = ()
+    duration: float = 0.0
+
+    @property
+    def passed(self) -> bool:
+        return self.status is Status.PASSED
+
+
+@dataclass(frozen=True)
+class ManualItem:
+    """A free-text answer scored by a person: shown with the course's model answer."""
+
+    problem: int
+    key: str
+    question: str
+    answer: str
+    model_answer: str
+    max_score: float
+    score: float | None = None  # None until a person scores it
+
+
+@dataclass(frozen=True)
+class ProblemReport:
+    problem: int
+    title: str
+    results: tuple[CheckResult, ...]
+    manual: tuple[ManualItem, ...] = ()
+    sandbox: str = ""
+    isolated: bool = True
+    seed: int = 0
+    duration: float = 0.0
+    stdout: str = ""
+    stderr: str = ""
+    submission: str = ""
+    grader_version: str = ""
+    notes: tuple[str, ...] = field(default=())
+
+    @property
+    def score(self) -> float:
+        manual = sum(m.score for m in self.manual if m.score is not None)
+        return sum(r.score for r in self.results) + manual
+
+    @property
+    def max_score(self) -> float:
+        return sum(r.max_score for r in self.results) + sum(m.max_score for m in self.manual)
+
+    @property
+    def auto_max_score(self) -> float:
+        return sum(r.max_score for r in self.results)
+
+    @property
+    def pending_manual(self) -> float:
+        return sum(m.max_score for m in self.manual if m.score is None)
+
+    def count(self, status: Status) -> int:
+        return sum(1 for r in self.results if r.status is status)
+
+    def to_dict(self) -> dict:
+        data = asdict(self)
+        for result in data["results"]:
+            result["status"] = result["status"].value
+        data["score"] = self.score
+        data["max_score"] = self.max_score
+        return data

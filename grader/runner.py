@@ -1,0 +1,265 @@
+"""Grading: run a problem's checks against a submission and collect the results.
+
+``grade_problem(problem, submission)`` is the API that the CLI and the batch grader call; ``grade_submission``
+grades several problems of one submission with a single sandboxed worker.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import random
+import time
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from . import __version__
+from .checking import CheckFailure, NotAnswered, checks_of
+from .child import Child
+from .context import Context
+from .errors import GraderFault, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
+from .loader import cleanup, materialize, read_answers
+from .results import CheckResult, ManualItem, ProblemReport, Status
+from .sandbox import Limits, SandboxMode, sandbox_mode
+
+__all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission"]
+
+
+@dataclass(frozen=True)
+class ProblemInfo:
+    number: int
+    title: str
+    points: float  # automatically graded points
+    manual_points: float  # points scored by hand
+    checks: int
+    hidden: int
+
+
+@lru_cache(maxsize=None)
+def problem_module(number: int):
+    try:
+        return importlib.import_module(f"checks.problem_{number:02d}")
+    except ModuleNotFoundError as exc:
+        if exc.name == f"checks.problem_{number:02d}":
+            raise KeyError(number) from None
+        raise
+
+
+def problems() -> list[ProblemInfo]:
+    """Every problem that has a check module, in order."""
+    import checks
+
+    infos = []
+    for info in pkgutil.iter_modules(checks.__path__):
+        if not info.name.startswith("problem_"):
+            continue
+        number = int(info.name.removeprefix("problem_"))
+        module = problem_module(number)
+        specs = checks_of(module)
+        manual = getattr(module, "MANUAL", {})
+        infos.append(
+            ProblemInfo(
+                number,
+                module.TITLE,
+                sum(s.points for s in specs),
+                sum(points for _, points in manual.values()),
+                len(specs),
+                sum(1 for s in specs if s.visibility == "hidden"),
+            )
+        )
+    return sorted(infos, key=lambda p: p.number)
+
+
+# ------------------------------------------------------------------------------------------ one check
+
+
+def _student_error(exc) -> tuple[Status, str, str]:
+    """Status, message and hint for a failure of the student's code."""
+    if isinstance(exc, StudentTimeout):
+        where = "importing your package" if exc.phase == "import" else "your code"
+        return (
+            Status.TIMEOUT,
+            f"{where} did not finish within {exc.seconds:g} s.",
+            "Look for an infinite loop or a loop that runs far more steps than asked.",
+        )
+    if isinstance(exc, WorkerCrash):
+        where = " while importing your package" if exc.phase == "import" else ""
+        return Status.ERROR, f"{exc.detail}{where}.", "Run your code locally: does it exit, or allocate huge arrays?"
+    assert isinstance(exc, StudentCodeError)
+    if exc.kind == "not_implemented":
+        return Status.NOT_IMPLEMENTED, f"not implemented yet: {exc.message}", ""
+    if exc.kind == "answers":
+        return Status.ERROR, exc.message, "Fix the syntax of answers.toml (strings in quotes, one key per line)."
+    if exc.kind == "exit":
+        return (
+            Status.ERROR,
+            f"your code called sys.exit({exc.message}) {'at import' if exc.phase == 'import' else ''}".rstrip() + ".",
+            "Remove calls to sys.exit()/exit()/quit() from the package.",
+        )
+    if exc.kind == "bad_value":
+        return Status.ERROR, f"your function returned a value that cannot be graded: {exc.message}", (
+            "Return numbers, numpy arrays, lists or dicts of them."
+        )
+    if exc.phase == "import":
+        return (
+            Status.ERROR,
+            f"your package could not be imported: {exc.type_name}: {exc.message}\n{exc.traceback}".rstrip(),
+            "Fix this first: no check can run until the package imports.",
+        )
+    return Status.ERROR, f"your code raised {exc.type_name}: {exc.message}\n{exc.traceback}".rstrip(), ""
+
+
+def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
+    ctx.figures = []
+    ctx.last_seed = None
+    start = time.perf_counter()
+    hint = diagnosis = ""
+    try:
+        spec.func(ctx)
+        status, message = Status.PASSED, ""
+    except CheckFailure as exc:
+        status, message, hint, diagnosis = Status.FAILED, exc.message, exc.hint, exc.diagnosis
+    except NotAnswered as exc:
+        status, message = Status.NOT_IMPLEMENTED, str(exc)
+    except (StudentCodeError, StudentTimeout, WorkerCrash) as exc:
+        status, message, hint = _student_error(exc)
+    except GraderFault as exc:
+        status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {exc}"
+    except Exception as exc:  # noqa: BLE001 - a crashing check is the grader's defect, reported as such
+        status = Status.GRADER_ERROR
+        message = f"internal grader error (not your fault): {type(exc).__name__}: {exc}"
+    return CheckResult(
+        check_id=f"p{problem:02d}.{spec.name}",
+        problem=problem,
+        title=spec.title,
+        status=status,
+        score=spec.points if status is Status.PASSED else 0.0,
+        max_score=spec.points,
+        message=message,
+        hint=hint,
+        diagnosis=diagnosis,
+        visibility=spec.visibility,
+        stage=spec.stage,
+        seed=ctx.last_seed,
+        figures=tuple(ctx.figures),
+        duration=time.perf_counter() - start,
+    )
+
+
+def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
+    results = []
+    blocked: dict[str, tuple[int, str]] = {}
+    for spec in checks_of(module):
+        block = blocked.get(spec.group)
+        if block is not None and spec.stage > block[0]:
+            results.append(
+                CheckResult(
+                    check_id=f"p{problem:02d}.{spec.name}",
+                    problem=problem,
+                    title=spec.title,
+                    status=Status.SKIPPED,
+                    score=0.0,
+                    max_score=spec.points,
+                    message=f"not run: an earlier check failed first ({block[1]})",
+                    visibility=spec.visibility,
+                    stage=spec.stage,
+                )
+            )
+            continue
+        result = _run_check(spec, ctx, problem)
+        results.append(result)
+        if not result.passed and (block is None or spec.stage < block[0]):
+            blocked[spec.group] = (spec.stage, spec.title)
+    return results
+
+
+def _manual_items(module, ctx: Context, problem: int) -> list[ManualItem]:
+    manual = getattr(module, "MANUAL", {})
+    if not manual:
+        return []
+    from .context import _reference_package
+
+    ref_path = Path(_reference_package().__file__).with_name("answers.toml")
+    ref_answers, _ = read_answers(ref_path.parent)
+    model = ref_answers.get(f"problem_{problem:02d}", {}).get("free_text", {})
+    texts = ctx.free_text()
+    return [
+        ManualItem(problem, key, question, str(texts.get(key, "") or ""), str(model.get(key, "")), float(points))
+        for key, (question, points) in manual.items()
+    ]
+
+
+# ------------------------------------------------------------------------------------------ public API
+
+
+def grade_submission(
+    source: str | Path,
+    numbers: list[int],
+    *,
+    seed: int | None = None,
+    limits: Limits | None = None,
+    mode: SandboxMode | None = None,
+    workdir: str | Path | None = None,
+) -> list[ProblemReport]:
+    """Grade the given problems of one submission with one sandboxed worker."""
+    mode = mode or sandbox_mode()
+    seed = random.randrange(2**31) if seed is None else seed
+    modules = {n: problem_module(n) for n in numbers}
+    try:
+        submission = materialize(source, workdir)
+    except SubmissionError as exc:
+        return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
+    answers, answers_error = read_answers(submission.path)
+    reports = []
+    try:
+        with Child(submission.path, limits, mode) as child:
+            for number in numbers:
+                start = time.perf_counter()
+                ctx = Context(number, child, answers, answers_error, seed)
+                results = _run_checks(modules[number], ctx, number)
+                stdout, stderr = child.output()
+                reports.append(
+                    ProblemReport(
+                        problem=number,
+                        title=modules[number].TITLE,
+                        results=tuple(results),
+                        manual=tuple(_manual_items(modules[number], ctx, number)),
+                        sandbox=mode.note,
+                        isolated=mode.isolated,
+                        seed=seed,
+                        duration=time.perf_counter() - start,
+                        stdout=stdout,
+                        stderr=stderr,
+                        submission=str(source),
+                        grader_version=__version__,
+                        notes=submission.notes,
+                    )
+                )
+    finally:
+        cleanup(submission)
+    return reports
+
+
+def grade_problem(problem: int, source: str | Path, **options) -> ProblemReport:
+    """Grade one problem of a submission (a directory, a zip archive or a notebook)."""
+    return grade_submission(source, [problem], **options)[0]
+
+
+def _unloadable(number, module, source, reason, mode, seed) -> ProblemReport:
+    results = tuple(
+        CheckResult(
+            check_id=f"p{number:02d}.{spec.name}",
+            problem=number,
+            title=spec.title,
+            status=Status.ERROR,
+            score=0.0,
+            max_score=spec.points,
+            message=f"the submission could not be loaded: {reason}",
+            visibility=spec.visibility,
+            stage=spec.stage,
+        )
+        for spec in checks_of(module)
+    )
+    return ProblemReport(number, module.TITLE, results, sandbox=mode.note, isolated=mode.isolated, seed=seed,
+                         submission=str(source), grader_version=__version__)
