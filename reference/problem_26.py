@@ -20,7 +20,7 @@ def position(beta, phi, l1, l2, l3):
 
 
 def jacobian(beta, phi, l1, l2, l3):
-    """Analytic constraint Jacobian ``J_f = d f / d q`` (3 x 2, columns ``beta``, ``phi``) with ``x_dot = J_f q_dot``."""
+    """Analytic constraint Jacobian ``J_f = d f / d q`` (3 x 2, columns beta, phi): ``x_dot = J_f q_dot``."""
     # BEGIN SOLUTION problem 26
     radius = l2 + l3 * np.sin(phi)
     cb, sb = np.cos(beta), np.sin(beta)

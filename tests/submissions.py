@@ -1,0 +1,84 @@
+"""Sample submissions for the tests, the demo and the batch benchmark.
+
+* ``reference`` and ``template``: copies of the two packages.
+* planted mistakes: ``tests/planted/problem_NN.toml`` lists ``[[mistake]]`` entries, each a text replacement in
+  one file of a reference copy, with the check it must fail and the diagnosis and message it must produce.
+* hostile submissions: ``tests/hostile/<name>/`` holds files laid over a reference copy, and ``expect.toml``
+  says what the grader must report.
+"""
+
+from __future__ import annotations
+
+import shutil
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+PLANTED = ROOT / "tests" / "planted"
+HOSTILE = ROOT / "tests" / "hostile"
+
+
+@dataclass(frozen=True)
+class Planted:
+    name: str
+    problem: int
+    file: str
+    old: str
+    new: str
+    check: str  # the check id that must fail, e.g. "p06.cardan_values"
+    diagnosis: str = ""  # the diagnosis it must name ("" when none is expected)
+    message: str = ""  # a text the message or hint must contain
+    status: str = "failed"
+    also: tuple = field(default=())  # more checks allowed to fail alongside
+
+
+def planted_mistakes(problem: int | None = None) -> list[Planted]:
+    mistakes = []
+    for path in sorted(PLANTED.glob("problem_*.toml")):
+        number = int(path.stem.removeprefix("problem_"))
+        if problem is not None and number != problem:
+            continue
+        for entry in tomllib.loads(path.read_text())["mistake"]:
+            entry = dict(entry)
+            entry["also"] = tuple(entry.get("also", ()))
+            mistakes.append(Planted(problem=number, **entry))
+    return mistakes
+
+
+def copy_reference(dest: Path) -> Path:
+    shutil.copytree(ROOT / "reference", dest, ignore=shutil.ignore_patterns("__pycache__", "answers_*.toml"))
+    return dest
+
+
+def copy_template(dest: Path) -> Path:
+    shutil.copytree(ROOT / "student_template", dest, ignore=shutil.ignore_patterns("__pycache__"))
+    return dest
+
+
+def build_planted(mistake: Planted, dest: Path) -> Path:
+    copy_reference(dest)
+    target = dest / mistake.file
+    text = target.read_text()
+    if text.count(mistake.old) != 1:
+        raise ValueError(f"{mistake.name}: {mistake.old!r} occurs {text.count(mistake.old)} times in {mistake.file}")
+    target.write_text(text.replace(mistake.old, mistake.new))
+    return dest
+
+
+def hostile_names() -> list[str]:
+    return sorted(p.name for p in HOSTILE.iterdir() if (p / "expect.toml").exists())
+
+
+def hostile_expectation(name: str) -> dict:
+    return tomllib.loads((HOSTILE / name / "expect.toml").read_text())
+
+
+def build_hostile(name: str, dest: Path) -> Path:
+    copy_reference(dest)
+    for path in (HOSTILE / name).rglob("*"):
+        if path.is_file() and path.name != "expect.toml":
+            target = dest / path.relative_to(HOSTILE / name)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(path, target)
+    return dest
