@@ -143,6 +143,11 @@ def serve(request_fd: int, reply_fd: int, submission: str) -> int:
         except BaseException as exc:  # noqa: BLE001 - every failure of student code is reported, not raised
             reply = _error(req_id, "exception", exc)
         reply["phase"] = phase
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
         write_message(reply_fd, reply)
 
 
@@ -175,10 +180,24 @@ def _apply_limits(limits: dict) -> None:
         os.setuid(uid)
 
 
+class _BlockTrustedPackages:
+    """Refuses imports of the grader's trusted packages (the sandbox hides their files as well)."""
+
+    BLOCKED = ("reference", "checks", "grader", "tests", "student_template", "tools")
+
+    def find_spec(self, name, path=None, target=None):
+        if name.split(".")[0] in self.BLOCKED:
+            raise ModuleNotFoundError(f"No module named {name!r}", name=name)
+        return None
+
+
 def main(argv: list[str]) -> int:
     request_fd, reply_fd = int(argv[1]), int(argv[2])
     submission = argv[3]
     _apply_limits(json.loads(argv[4]) if len(argv) > 4 else {})
+    sys.meta_path.insert(0, _BlockTrustedPackages())
+    for name in [m for m in sys.modules if m.split(".")[0] in _BlockTrustedPackages.BLOCKED]:
+        del sys.modules[name]
     os.environ["GRADER_SUBMISSION"] = submission
     # Keep the protocol out of reach of print(): stdout/stderr are files the parent reads separately.
     sys.stdin.close()
