@@ -139,7 +139,7 @@ def cuboid_dimensions(m, I1, I2, I3):
     """Edges ``(a, b, c)`` of the homogeneous cuboid of mass ``m`` with ``diag(I1, I2, I3)``:
     ``a = sqrt(6/m (-I1+I2+I3))``, cyclic."""
     # BEGIN SOLUTION problem 16
-    return tuple(np.sqrt(12.0 / m * principal_second_moments(I1, I2, I3)))
+    return tuple(np.sqrt(12.0 / m * principal_second_moments(I1, I2, I3)).tolist())
     # END SOLUTION
 
 
@@ -147,7 +147,7 @@ def ellipsoid_dimensions(m, I1, I2, I3):
     """Full axes ``(a, b, c)`` of the homogeneous ellipsoid of mass ``m`` with ``diag(I1, I2, I3)``:
     ``a = sqrt(10/m (-I1+I2+I3))``, cyclic."""
     # BEGIN SOLUTION problem 16
-    return tuple(np.sqrt(20.0 / m * principal_second_moments(I1, I2, I3)))
+    return tuple(np.sqrt(20.0 / m * principal_second_moments(I1, I2, I3)).tolist())
     # END SOLUTION
 
 
@@ -155,7 +155,7 @@ def particles_dimensions(m, I1, I2, I3):
     """Cuboid edges ``(a, b, c)`` whose six face-centre particles (mass ``m/6`` each) have
     ``diag(I1, I2, I3)``: ``a = sqrt(6/m (-I1+I2+I3))``, cyclic (the same as ``cuboid_dimensions``)."""
     # BEGIN SOLUTION problem 16
-    return tuple(np.sqrt(12.0 / m * principal_second_moments(I1, I2, I3)))
+    return tuple(np.sqrt(12.0 / m * principal_second_moments(I1, I2, I3)).tolist())
     # END SOLUTION
 
 
