@@ -1,0 +1,168 @@
+"""Checks of problem 7: skew matrices, angular velocity from a transformation, the symbolic derivation."""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_SHAPE,
+    STAGE_VALUES,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    assert_rotation,
+    check,
+    fail,
+)
+
+TITLE = "Derivatives of transformations"
+
+FLOATS = st.floats(-5, 5, allow_nan=False, allow_infinity=False)
+VECTORS = st.tuples(FLOATS, FLOATS, FLOATS).map(np.array)
+ANGLES = st.floats(-np.pi, np.pi, allow_nan=False, allow_infinity=False)
+SYMBOLIC = Tol("symbolic evaluation", 1e-9, 1e-9)
+KEYS = ("A_IC1", "A_IC2", "A_IC3", "A_C3I", "C3_omega_IC3")
+
+
+def _rotation_and_rate(draw_angles, w):
+    from reference.rotations import cardan, skew
+
+    A = cardan(*draw_angles)
+    return A, skew(w) @ A  # dA_IC/dt for the inertial angular velocity w
+
+
+MOTIONS = st.tuples(st.tuples(ANGLES, ANGLES, ANGLES), VECTORS).map(lambda t: _rotation_and_rate(*t))
+
+SIGN_HINT = ("Your result has the opposite sign: skew(w) has -w3 at [0, 1], +w2 at [0, 2] and -w1 at [1, 2], so "
+             "that skew(w) @ x == np.cross(w, x).")
+
+
+@check(1, title="skew(w) is a 3 x 3 matrix and unskew returns a 3-vector", stage=STAGE_SHAPE, group="skew")
+def check_skew_shape(ctx):
+    as_array(ctx.student("problem_07.skew", np.array([1.0, 2.0, 3.0])), "skew((1, 2, 3))", (3, 3))
+    W = np.array([[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]])
+    as_array(ctx.student("problem_07.unskew", W), "unskew(skew((1, 2, 3)))", (3,))
+
+
+@check(1, title="skew(w) @ x equals the cross product w × x on random vectors", stage=STAGE_RANDOM, group="skew")
+def check_skew_values(ctx):
+    ctx.compare_random(
+        "problem_07.skew", VECTORS.map(lambda w: (w,)), name="skew(w)", tol=EXACT,
+        mistakes=lambda args, expected: [Mistake("sign_flip", -np.asarray(expected), SIGN_HINT)],
+    )
+
+
+@check(1, title="unskew inverts skew on random vectors", stage=STAGE_RANDOM, group="skew")
+def check_unskew_values(ctx):
+    from reference.rotations import skew
+
+    ctx.compare_random(
+        "problem_07.unskew", VECTORS.map(lambda w: (skew(w),)), name="unskew(W)", tol=EXACT,
+        mistakes=lambda args, expected: [
+            Mistake("sign_flip", -np.asarray(expected), "The vector of W is (W[2, 1], W[0, 2], W[1, 0]): "
+                    "you read the entries on the other side of the diagonal."),
+        ],
+    )
+
+
+def _omega_mistakes(frame):
+    def mistakes(args, expected):
+        A, dA = (np.asarray(x) for x in args)
+        other = A.T @ np.asarray(expected) if frame == "inertial" else A @ np.asarray(expected)
+        name = "body" if frame == "inertial" else "inertial"
+        formula = "skew(I_omega) = dA_IC @ A_CI" if frame == "inertial" else "skew(C_omega) = A_CI @ dA_IC"
+        return [
+            Mistake("wrong_frame", other, f"You returned the angular velocity in {name} coordinates. "
+                    f"Here {formula}."),
+            Mistake("sign_flip", -np.asarray(expected), "The product is in the wrong order or the vector is read "
+                    "from the wrong side of the diagonal (that flips the sign)."),
+        ]
+
+    return mistakes
+
+
+@check(2, title="omega_body(A_IC, dA_IC) = unskew(A_CI @ dA_IC) on random motions", stage=STAGE_RANDOM,
+       group="omega_body")
+def check_omega_body(ctx):
+    ctx.compare_random("problem_07.omega_body", MOTIONS, name="C_omega_IC", tol=EXACT,
+                       mistakes=_omega_mistakes("body"))
+
+
+@check(1, title="omega_inertial(A_IC, dA_IC) = unskew(dA_IC @ A_CI) on random motions", stage=STAGE_RANDOM,
+       group="omega_inertial")
+def check_omega_inertial(ctx):
+    ctx.compare_random("problem_07.omega_inertial", MOTIONS, name="I_omega_IC", tol=EXACT,
+                       mistakes=_omega_mistakes("inertial"))
+
+
+def _points(seed, n=4):
+    rng = np.random.default_rng(seed)
+    names = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
+    return [dict(zip(names, map(float, rng.uniform(-2, 2, 6)))) for _ in range(n)]
+
+
+def _numeric(points):
+    """The expressions' values from the reference's numeric rotations (no sympy needed in the grader)."""
+    from reference.rotations import R2, R3, cardan, cardan_rate_matrix
+
+    out = {key: [] for key in KEYS}
+    for p in points:
+        a, b, g = p["alpha"], p["beta"], p["gamma"]
+        rates = np.array([p["alpha_dot"], p["beta_dot"], p["gamma_dot"]])
+        A3 = cardan(a, b, g)
+        for key, value in (("A_IC1", R3(g)), ("A_IC2", R3(g) @ R2(b)), ("A_IC3", A3), ("A_C3I", A3.T),
+                           ("C3_omega_IC3", (cardan_rate_matrix(a, b, g) @ rates).reshape(3, 1))):
+            out[key].append(value)
+    return out
+
+
+@check(3, title="derive(): the symbolic A_IC1, A_IC2, A_IC3, A_C3I and C3_omega_IC3 evaluate to the right values",
+       stage=STAGE_VALUES, group="symbolic")
+def check_symbolic(ctx):
+    points = _points(ctx.seed)
+    got = ctx.student("problem_07.symbolic", points, timeout=60)
+    expected = _numeric(points)
+    missing = [k for k in KEYS if k not in got]
+    if missing:
+        fail(f"derive() lacks the entries {missing} (it returned {sorted(got)}).")
+    from reference.rotations import cardan
+
+    for key in KEYS:
+        for point, g, e in zip(points, got[key], expected[key]):
+            shape = np.shape(e)
+            mistakes = []
+            if key == "C3_omega_IC3":
+                A = cardan(point["alpha"], point["beta"], point["gamma"])
+                mistakes = [
+                    Mistake("wrong_frame", (A @ np.ravel(e)).reshape(shape),
+                            "This is the angular velocity in inertial coordinates: C3_omega comes from "
+                            "A_C3I @ dA_IC3/dt, not dA_IC3/dt @ A_C3I."),
+                    Mistake("sign_flip", -np.asarray(e), "Read the vector as (W[2,1], W[0,2], W[1,0])."),
+                ]
+            elif key != "A_C3I":
+                mistakes = [Mistake("transpose", np.asarray(e).T, f"{key} is transposed (A_CI for A_IC).")]
+            described = ", ".join(f"{k}={v:.4f}" for k, v in point.items())
+            assert_close(np.reshape(g, np.shape(g)), e, key, SYMBOLIC, mistakes, context=f"at ({described})")
+
+
+@check(1, title="the animation ends at the right orientation (100 Euler steps of the Cardan angles)",
+       stage=STAGE_VALUES, group="animation")
+def check_animation(ctx):
+    got = ctx.student("problem_07.animate")
+    expected = ctx.reference("problem_07.animate")
+    if not isinstance(got, dict) or "A_IC3" not in got:
+        fail("animate() must return a dict with the entries 'angles' and 'A_IC3'.")
+    from reference.rotations import cardan
+
+    start = np.deg2rad([60.0, 45.0, 30.0])
+    A = assert_rotation(got["A_IC3"], "A_IC3")
+    assert_close(A, expected["A_IC3"], "A_IC3 at t = pi", EXACT, [
+        Mistake("step_count", cardan(*(start + np.pi * (1 + 1 / 100))),
+                "One step too many: run exactly n = 100 steps of dt = pi / n."),
+        Mistake("step_count", cardan(*(start + np.pi * (1 - 1 / 100))),
+                "One step too few: run exactly n = 100 steps of dt = pi / n."),
+        Mistake("degrees", cardan(*np.deg2rad(np.rad2deg(start) + np.pi)),
+                "The angles and the step are in radians: add dt = pi / n to angles in radians."),
+    ])

@@ -1,0 +1,140 @@
+"""Checks of problem 8: integrating a constant angular velocity three ways."""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    assert_rotation,
+    check,
+    fail,
+    format_array,
+)
+
+TITLE = "Integrating angular velocities"
+MANUAL = {"c": ("8(c): compare the error accumulation of (a) and (b); which suits rotations better, and how "
+                "does one line make (a) exact?", 2)}
+
+FLOATS = st.floats(-3, 3, allow_nan=False, allow_infinity=False)
+VECTORS = st.tuples(FLOATS, FLOATS, FLOATS).map(np.array)
+ANGLES = st.floats(-np.pi, np.pi, allow_nan=False, allow_infinity=False)
+PITCH = st.floats(-1.3, 1.3, allow_nan=False, allow_infinity=False)  # away from the Cardan singularity
+STEPS = st.floats(0.001, 0.5, allow_nan=False)
+RUN = Tol("100 steps", 1e-7, 1e-7)
+
+EULER_HINT = ("This is an explicit Euler step (A + dt * skew(w) @ A), which does not stay orthonormal. The "
+              "exponential step is A_IC(t + dt) = expm(dt * skew(I_omega)) @ A_IC.")
+
+
+def _rotations():
+    from reference.rotations import cardan
+
+    return st.tuples(ANGLES, PITCH, ANGLES).map(lambda a: cardan(*a))
+
+
+def _step_mistakes(which):
+    def mistakes(args, expected):
+        from reference.rotations import expm_skew, skew
+
+        x, w, dt = (np.asarray(a, dtype=float) for a in args)
+        if which == "cardan":
+            from reference.rotations import cardan_rate_matrix
+
+            body = x + dt * np.linalg.solve(cardan_rate_matrix(*x), w)
+            return [Mistake("wrong_frame", body, "You used I_omega as if it were C_omega: the rates are "
+                            "(A_IC @ B)^-1 @ I_omega, with A_IC from the current angles.")]
+        found = [
+            Mistake("wrong_frame", x + dt * x @ skew(w) if which == "euler" else x @ expm_skew(dt * skew(w)),
+                    "The angular velocity is given in inertial coordinates: dA_IC/dt = skew(I_omega) @ A_IC; "
+                    "A_IC @ skew(w) would treat w as body coordinates."),
+            Mistake("sign_flip", x - dt * skew(w) @ x if which == "euler" else expm_skew(-dt * skew(w)) @ x,
+                    "The rotation runs backwards: check the sign of skew(w) (skew(w) @ x == cross(w, x))."),
+        ]
+        if which == "exp":
+            found.insert(0, Mistake("euler_not_exponential", x + dt * skew(w) @ x, EULER_HINT))
+        return found
+
+    return mistakes
+
+
+@check(1, title="cardan_rate_matrix(alpha, beta, gamma) gives C_omega = B @ (alpha_dot, beta_dot, gamma_dot)",
+       stage=STAGE_RANDOM, group="rates")
+def check_rate_matrix(ctx):
+    ctx.compare_random(
+        "problem_08.rate_matrix", st.tuples(ANGLES, PITCH, ANGLES), name="B", tol=EXACT,
+        mistakes=lambda args, expected: [
+            Mistake("transpose", np.asarray(expected).T, "B is transposed: its columns are the axes of the three "
+                    "rotations (e1 of C, the rotated 2-axis, the 3-axis of I), in C-coordinates.")],
+    )
+
+
+@check(2, title="euler_matrix_step is one explicit Euler step of dA_IC/dt = skew(I_omega) @ A_IC",
+       stage=STAGE_RANDOM, group="euler")
+def check_euler_step(ctx):
+    ctx.compare_random("problem_08.step", st.tuples(_rotations(), VECTORS, STEPS).map(lambda t: ("euler", *t)),
+                       name="A_IC after one Euler step", tol=EXACT,
+                       mistakes=lambda args, e: _step_mistakes("euler")(args[1:], e))
+
+
+@check(1, title="exponential_step keeps A_IC orthonormal (even for a large step)", stage=STAGE_STRUCTURE,
+       group="exp")
+def check_exponential_orthonormal(ctx):
+    from reference.rotations import R3, skew
+
+    A0, w, dt = R3(np.pi / 2), np.sqrt(1 / 3) * np.ones(3), 0.5
+    got = as_array(ctx.student("problem_08.step", "exp", A0, w, dt), "exponential_step(R3(90°), w, 0.5)", (3, 3))
+    if np.allclose(got, A0 + dt * skew(w) @ A0, atol=1e-9):
+        fail(f"exponential_step(R3(90°), w, 0.5) is not orthonormal: it is the Euler step.\n"
+             f"got:\n{format_array(got)}", EULER_HINT, "euler_not_exponential")
+    assert_rotation(got, "exponential_step(R3(90°), w, 0.5)")
+
+
+@check(2, title="exponential_step equals expm(dt * skew(I_omega)) @ A_IC on random inputs", stage=STAGE_RANDOM,
+       group="exp")
+def check_exponential_step(ctx):
+    ctx.compare_random("problem_08.step", st.tuples(_rotations(), VECTORS, STEPS).map(lambda t: ("exp", *t)),
+                       name="A_IC after one exponential step", tol=EXACT,
+                       mistakes=lambda args, e: _step_mistakes("exp")(args[1:], e))
+
+
+@check(2, title="cardan_euler_step advances the angles by dt * (A_IC @ B)^-1 @ I_omega", stage=STAGE_RANDOM,
+       group="cardan")
+def check_cardan_step(ctx):
+    angles = st.tuples(ANGLES, PITCH, ANGLES).map(np.array)
+    ctx.compare_random("problem_08.step", st.tuples(angles, VECTORS, STEPS).map(lambda t: ("cardan", *t)),
+                       name="angles after one step", tol=EXACT,
+                       mistakes=lambda args, e: _step_mistakes("cardan")(args[1:], e))
+
+
+@check(1, title="(a) after 100 Euler steps the matrix has grown (not orthonormal) exactly as Euler predicts",
+       stage=STAGE_VALUES, group="runs")
+def check_part_a(ctx):
+    got = ctx.student("problem_08.part", "a")
+    assert_close(got, ctx.reference("problem_08.part", "a"), "A_IC after (a)", RUN)
+
+
+@check(1, title="(b) after 100 Euler steps of the Cardan angles", stage=STAGE_VALUES, group="runs")
+def check_part_b(ctx):
+    got = ctx.student("problem_08.part", "b")
+    if not isinstance(got, dict) or "A_IC" not in got:
+        fail("part_b() must return a dict with the entries 'angles' and 'A_IC'.")
+    assert_close(got["A_IC"], ctx.reference("problem_08.part", "b")["A_IC"], "A_IC after (b)", RUN)
+
+
+@check(2, title="(c) the exponential returns exactly to A_IC(t0) = R3(90°) after 2 pi", stage=STAGE_VALUES,
+       group="runs")
+def check_part_c(ctx):
+    from reference.rotations import R3
+
+    got = as_array(ctx.student("problem_08.part", "c"), "A_IC after (c)", (3, 3))
+    euler = ctx.reference("problem_08.part", "a")
+    assert_close(got, R3(np.pi / 2), "A_IC after (c)", Tol("exact rotation", 1e-9), [
+        Mistake("lost_orthonormality", euler, EULER_HINT),
+    ])

@@ -1,0 +1,90 @@
+"""Checks of problem 9: coordinate systems defined relative to each other."""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import EXACT, SHEET, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
+
+TITLE = "A better coordinate-system class (relative transformations)"
+
+ANGLES = st.floats(-np.pi, np.pi, allow_nan=False, allow_infinity=False)
+
+
+def _rotation():
+    from reference.rotations import cardan
+
+    return st.tuples(ANGLES, ANGLES, ANGLES).map(lambda a: cardan(*a))
+
+
+CHAINS = st.lists(st.deferred(_rotation), min_size=2, max_size=4).map(lambda rs: (rs,))
+SHEET_VECTORS = {"I_v": (1.6319, 0.5195, 0.2588), "C1_v": (1.6730, -0.3660, 0.2588),
+                 "C2_v": (1.0, -0.3660, 1.3660), "C3_v": (1.0, 1.0, 1.0)}
+
+
+def _absolute(relatives):
+    """Each frame as if its A_BC were given relative to I."""
+    return {"to_inertial": [np.asarray(A) for A in relatives],
+            "pairs": [[np.asarray(b).T @ np.asarray(c) for b in relatives] for c in relatives]}
+
+
+def _reversed_product(relatives):
+    """A_IC = A_BC @ A_IB instead of A_IB @ A_BC."""
+    absolute = []
+    for A in relatives:
+        absolute.append(np.asarray(A) if not absolute else np.asarray(A) @ absolute[-1])
+    return {"to_inertial": absolute, "pairs": [[b.T @ c for b in absolute] for c in absolute]}
+
+
+def _compare_chain(got, expected, args):
+    if not isinstance(got, dict) or "pairs" not in got:
+        fail("the probe could not read the chain's transformations.")
+    absolute, reversed_ = _absolute(args[0]), _reversed_product(args[0])
+    n = len(expected["to_inertial"])
+    for i in range(n):
+        assert_close(got["to_inertial"][i], expected["to_inertial"][i], f"C{i + 1}.get_transform()", EXACT, [
+            Mistake("ignores_parent", absolute["to_inertial"][i],
+                    "The constructor ignored the parent frame B: with B, A_IC = B.A_IC @ A_BC."),
+            Mistake("rotation_order", reversed_["to_inertial"][i],
+                    "The product is reversed: A_IC = A_IB @ A_BC (adjacent letters cancel), not A_BC @ A_IB."),
+        ])
+    for i in range(n):
+        for j in range(n):
+            e = np.asarray(expected["pairs"][i][j])
+            assert_close(got["pairs"][i][j], e, f"C{i + 1}.get_transform(C{j + 1})", EXACT, [
+                Mistake("transpose", e.T, f"You returned A_C{i + 1}C{j + 1} transposed: get_transform(B) returns "
+                        f"A_BC = B.A_IC.T @ A_IC (from this frame C to B)."),
+            ])
+
+
+@check(3, title="frames built relative to each other report the right A_IC and A_BC for every pair",
+       stage=STAGE_RANDOM, group="chain")
+def check_chain(ctx):
+    ctx.compare_random("problem_09.chain", CHAINS, name="transformations", tol=EXACT, compare=_compare_chain,
+                       examples=15, describe=lambda args: f"a chain of {len(args[0])} random relative rotations")
+
+
+@check(1, title="set_transform(A_BC, B) places an existing frame relative to B", stage=STAGE_RANDOM,
+       group="set")
+def check_set_transform(ctx):
+    def compare(got, expected, args):
+        A_IB, A_BC = (np.asarray(a) for a in args)
+        assert_close(got["A_IC"], expected["A_IC"], "A_IC after set_transform(A_BC, B)", EXACT, [
+            Mistake("ignores_parent", A_BC, "set_transform ignored B: A_IC = B.A_IC @ A_BC."),
+            Mistake("rotation_order", A_BC @ A_IB, "The product is reversed: A_IC = A_IB @ A_BC."),
+        ])
+        assert_close(got["A_BC"], expected["A_BC"], "get_transform(B) after set_transform(A_BC, B)", EXACT)
+
+    ctx.compare_random("problem_09.set_later", st.tuples(st.deferred(_rotation), st.deferred(_rotation)),
+                       name="set_transform", tol=EXACT, compare=compare, examples=10)
+
+
+@check(1, title="the relative chain I → C1 → C2 → C3 reproduces problem 6's vectors", stage=STAGE_VALUES,
+       group="sheet")
+def check_vectors(ctx):
+    got = ctx.student("problem_09.vectors")
+    if not isinstance(got, dict):
+        fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}.")
+    for key, target in SHEET_VECTORS.items():
+        if key not in got:
+            fail(f"vectors() has no entry {key!r}.")
+        assert_close(got[key], target, key, SHEET, context="(the sheet's value)")

@@ -1,0 +1,70 @@
+"""Checks of problem 10: properties of rotation matrices (multiple choice and a matrix read off a figure)."""
+
+import numpy as np
+
+from grader.checking import STAGE_VALUES, as_array, check, fail, format_array
+
+TITLE = "Understanding rotation matrices"
+MANUAL = {"why": ("10(a)/(b): why is your choice (not) orthonormal / a rotation?", 1)}
+
+#: a matrix written with one or two decimals is orthonormal to about this
+READ_OFF = 0.1
+#: how far (in degrees) an answer to (c) may be from the course's orientation
+C_ANGLE_DEG = 25.0
+
+
+def _choice(ctx, key, options):
+    value = ctx.answer(key)
+    if isinstance(value, bool) or not isinstance(value, int) or value not in options:
+        fail(f"answers.toml: [problem_10] {key} must be one of {list(options)}, got {value!r}.")
+    return value
+
+
+@check(1, title="(a) the matrix that is NOT orthonormal", stage=STAGE_VALUES)
+def check_a(ctx):
+    from reference.problem_10 import MATRICES_A, answer_a, orthonormality_defect
+
+    choice, key = _choice(ctx, "a", range(1, 5)), answer_a()
+    if choice != key:
+        fail(f"option {choice} is orthonormal: max |A.T A - E| = {orthonormality_defect(MATRICES_A[choice - 1]):.3f} "
+             f"(zero up to the printed three decimals).",
+             "Check A.T @ A for each option: only one has a column that is not a unit vector.", "wrong_choice")
+
+
+@check(1, title="(b) the matrix that IS a rotation", stage=STAGE_VALUES)
+def check_b(ctx):
+    from reference.problem_10 import MATRICES_B, answer_b, is_orthonormal
+
+    choice, key = _choice(ctx, "b", range(1, 5)), answer_b()
+    if choice != key:
+        A = MATRICES_B[choice - 1]
+        why = (f"it is orthonormal but det = {np.linalg.det(A):+.3f}: a reflection"
+               if is_orthonormal(A) else "it is not orthonormal")
+        fail(f"option {choice} is not a rotation: {why}.",
+             "A rotation is orthonormal AND has determinant +1.", "reflection" if is_orthonormal(A) else "wrong_choice")
+
+
+@check(2, title="(c) A_IC read off the figure is a proper rotation close to the course's orientation",
+       stage=STAGE_VALUES)
+def check_c(ctx):
+    from reference.problem_10 import COURSE_C, nearest_rotation
+
+    A = as_array(ctx.answer("c"), "[problem_10] c", (3, 3))
+    defect = float(np.max(np.abs(A.T @ A - np.eye(3))))
+    if defect > READ_OFF:
+        fail(f"your A_IC is not orthonormal: max |A.T A - E| = {defect:.2f} > {READ_OFF} (allowed for values read "
+             f"off a figure).\ngot:\n{format_array(A, 2)}",
+             "Each column is an axis of C in I-coordinates: unit length and mutually perpendicular.",
+             "not_orthonormal")
+    if np.linalg.det(A) < 0:
+        fail(f"your A_IC is a reflection (det = {np.linalg.det(A):+.2f}), not a rotation.",
+             "One axis points the wrong way: C is a right-handed frame.", "reflection")
+    target = nearest_rotation(COURSE_C)
+    R = nearest_rotation(A)
+    angle = np.degrees(np.arccos(np.clip((np.trace(target.T @ R) - 1) / 2, -1, 1)))
+    if angle > C_ANGLE_DEG:
+        fail(f"your A_IC is {angle:.0f}° away from the course's orientation (allowed {C_ANGLE_DEG:g}°).\n"
+             f"got:\n{format_array(A, 2)}\nthe course's orientation (the nearest rotation to its printed "
+             f"matrix, which itself is not orthonormal):\n{format_array(target, 2)}",
+             "Read each axis of C (purple) in the coordinates of I (green): it is a column of A_IC.",
+             "far_from_figure")

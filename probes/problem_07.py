@@ -1,0 +1,54 @@
+"""Probes of problem 7: skew/unskew, angular velocity from a transformation, the symbolic derivation."""
+
+from . import module, probe
+
+NAMES = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
+
+
+@probe
+def skew(pkg, w):
+    return module(pkg, "rotations").skew(w)
+
+
+@probe
+def unskew(pkg, W):
+    return module(pkg, "rotations").unskew(W)
+
+
+@probe
+def omega_body(pkg, A, dA):
+    return module(pkg, "rotations").omega_body(A, dA)
+
+
+@probe
+def omega_inertial(pkg, A, dA):
+    return module(pkg, "rotations").omega_inertial(A, dA)
+
+
+@probe
+def symbolic(pkg, points):
+    """Evaluate every expression of ``derive()`` at the given points (dicts of the six symbol values)."""
+    import sympy as sp
+
+    derived = module(pkg, "problem_07").derive()
+    if not isinstance(derived, dict):
+        raise TypeError(f"derive() must return a dict, got {type(derived).__name__}")
+    out = {}
+    for key, expr in derived.items():
+        expr = sp.Matrix(expr) if not isinstance(expr, sp.MatrixBase) else expr
+        known = {s.name: s for s in expr.free_symbols}
+        unknown = sorted(set(known) - set(NAMES))
+        if unknown or expr.atoms(sp.Function) - expr.atoms(sp.sin, sp.cos, sp.tan):
+            raise ValueError(
+                f"{key} contains symbols or functions other than {', '.join(NAMES)}: "
+                f"{unknown or sorted(map(str, expr.atoms(sp.Function)))}"
+            )
+        symbols = [known.get(n, sp.Symbol(n)) for n in NAMES]
+        func = sp.lambdify(symbols, expr, modules="numpy")
+        out[key] = [func(*(p[n] for n in NAMES)) for p in points]
+    return out
+
+
+@probe
+def animate(pkg):
+    return module(pkg, "problem_07").animate()

@@ -1,0 +1,31 @@
+"""Probes of problem 9: relative coordinate systems."""
+
+from . import module, probe
+
+
+@probe
+def chain(pkg, relatives):
+    """Build C1 (relative to I), C2 (relative to C1), ... from the given A_BC; return every get_transform."""
+    CoSys = module(pkg, "cosys").CoSys
+    frames = []
+    for A_BC in relatives:
+        frames.append(CoSys(A_BC, frames[-1]) if frames else CoSys(A_BC))
+    return {
+        "to_inertial": [f.get_transform() for f in frames],
+        "pairs": [[c.get_transform(b) for b in frames] for c in frames],
+    }
+
+
+@probe
+def set_later(pkg, A_IB, A_BC):
+    """Create C at the identity, then place it relative to B with set_transform; return A_BC read back and A_IC."""
+    CoSys = module(pkg, "cosys").CoSys
+    B = CoSys(A_IB)
+    C = CoSys()
+    C.set_transform(A_BC, B)
+    return {"A_BC": C.get_transform(B), "A_IC": C.get_transform()}
+
+
+@probe
+def vectors(pkg):
+    return module(pkg, "problem_09").vectors()
