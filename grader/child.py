@@ -37,10 +37,26 @@ class Child:
         self._errors = tempfile.TemporaryFile()
         self.calls = 0
         self.restarts = 0
+        self._pending_import = False
 
     # ------------------------------------------------------------------ process life
 
+    def start(self) -> None:
+        """Start the worker and ask it to import the submission, without waiting: the parent's own work
+        overlaps with the child's start-up; the first ``call`` waits for the import to finish."""
+        if self._proc is None and self._import_failure is None:
+            self._spawn()
+            self._pending_import = True
+
     def _start(self) -> None:
+        self._spawn()
+        self._finish_import()
+
+    def _finish_import(self) -> None:
+        self._pending_import = False
+        self._request(None, self.limits.import_timeout, phase="import")
+
+    def _spawn(self) -> None:
         to_child_r, to_child_w = os.pipe()
         from_child_r, from_child_w = os.pipe()
         argv = child_command(self.submission, to_child_r, from_child_w, self.limits, self.mode)
@@ -62,9 +78,11 @@ class Child:
             os.close(from_child_w)
         self._send_fd, self._recv_fd = to_child_w, from_child_r
         self.restarts += 1
-        self._request({"op": "import"}, self.limits.import_timeout, phase="import")
+        self._next_id += 1
+        self._send({"op": "import", "id": self._next_id}, phase="import")
 
     def _kill(self) -> None:
+        self._pending_import = False
         proc, self._proc = self._proc, None
         if proc is None:
             return
@@ -138,15 +156,19 @@ class Child:
             return f"the process running your code was {cause}"
         return f"the process running your code ended unexpectedly with exit code {code} (did it call os._exit?)"
 
-    def _request(self, message: dict, timeout: float, phase: str = "call") -> dict:
-        self._next_id += 1
-        message = dict(message, id=self._next_id)
+    def _send(self, message: dict, phase: str) -> None:
         try:
             worker.write_message(self._send_fd, message)
         except (BrokenPipeError, OSError):
             code = self._proc.wait(timeout=5) if self._proc else None
             self._kill()
             raise WorkerCrash(self._crash_detail(code), phase)
+
+    def _request(self, message: dict | None, timeout: float, phase: str = "call") -> dict:
+        """Send ``message`` (None: only wait for the reply to the last request) and return the reply."""
+        if message is not None:
+            self._next_id += 1
+            self._send(dict(message, id=self._next_id), phase)
         while True:
             reply = self._receive(timeout, phase)
             if reply.get("id") == self._next_id:
@@ -165,10 +187,13 @@ class Child:
         """Run ``probe`` (e.g. ``"problem_06.vectors"``) on the submission; return its decoded value."""
         if self._import_failure is not None:
             raise self._import_failure
-        if self._proc is None or self._proc.poll() is not None:
-            self._kill()
+        if self._pending_import or self._proc is None or self._proc.poll() is not None:
             try:
-                self._start()
+                if self._pending_import:
+                    self._finish_import()
+                else:
+                    self._kill()
+                    self._start()
             except (StudentCodeError, StudentTimeout, WorkerCrash) as exc:
                 if exc.phase == "import" and not getattr(exc, "not_implemented", False):
                     self._import_failure = exc

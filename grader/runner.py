@@ -214,6 +214,7 @@ def grade_submission(
     reports = []
     try:
         with Child(submission.path, limits, mode) as child:
+            child.start()
             for number in numbers:
                 start = time.perf_counter()
                 ctx = Context(number, child, answers, answers_error, seed)
