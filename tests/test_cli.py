@@ -1,0 +1,110 @@
+"""The grade command: exit codes, report files, init, list, loading zips and notebooks."""
+
+import json
+import zipfile
+from pathlib import Path
+
+import nbformat
+import pytest
+
+from grader.cli import main
+
+from .submissions import build_planted, copy_reference, planted_mistakes
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    return copy_reference(tmp_path_factory.mktemp("ref") / "pkg")
+
+
+def test_reference_exits_zero_and_writes_reports(reference, tmp_path, capsys):
+    html, js, gs = tmp_path / "r.html", tmp_path / "r.json", tmp_path / "results.json"
+    code = main(["problem-6", "--submission", str(reference), "--seed", "5", "--html", str(html),
+                 "--json", str(js), "--gradescope", str(gs)])
+    assert code == 0
+    out = capsys.readouterr().out
+    assert "Problem 6" in out and "10 / 10 points" in out and "seed 5" in out
+    assert "<html" in html.read_text()
+    data = json.loads(js.read_text())
+    assert data["reports"][0]["visible_score"] == 10
+    results = json.loads(gs.read_text())
+    assert results["score"] == 10 and all(t["status"] == "passed" for t in results["tests"])
+    assert {"name", "score", "max_score", "output", "visibility"} <= set(results["tests"][0])
+
+
+def test_failing_checks_exit_one(tmp_path, capsys):
+    mistake = next(m for m in planted_mistakes(6) if m.name == "p06-cardan-rotation-order")
+    code = main(["problem-6", "--submission", str(build_planted(mistake, tmp_path / "pkg")), "--seed", "1"])
+    out = capsys.readouterr().out
+    assert code == 1
+    assert "wrong order" in out and "hint:" in out and "seed 1" in out
+
+
+def test_usage_errors_exit_two(tmp_path, capsys):
+    assert main(["problem-6", "--submission", str(tmp_path / "missing")]) == 2
+    assert main(["problem-99", "--submission", str(tmp_path)]) == 2
+    assert main(["frobnicate"]) == 2
+    assert "does not exist" in capsys.readouterr().err
+
+
+def test_a_broken_zip_is_reported_not_crashed(tmp_path, capsys):
+    bad = tmp_path / "work.zip"
+    bad.write_bytes(b"this is not a zip archive")
+    assert main(["problem-6", "--submission", str(bad)]) == 2
+    assert "not a readable zip archive" in capsys.readouterr().out
+
+
+def test_zip_of_a_folder_and_zip_slip(reference, tmp_path, capsys):
+    archive = tmp_path / "student.zip"
+    with zipfile.ZipFile(archive, "w") as z:
+        for path in reference.glob("*"):
+            z.write(path, f"mywork/{path.name}")
+        z.writestr("../../escape.py", "raise SystemExit('escaped')")
+    assert main(["problem-6", "--submission", str(archive), "--seed", "2"]) == 0
+    assert not (tmp_path.parent / "escape.py").exists()
+
+
+def test_notebook_becomes_a_module(reference, tmp_path, capsys):
+    source = (reference / "problem_06.py").read_text()
+    notebook = nbformat.v4.new_notebook()
+    notebook.cells = [nbformat.v4.new_markdown_cell("# Problem 6"), nbformat.v4.new_code_cell("%matplotlib inline"),
+                      nbformat.v4.new_code_cell(source)]
+    folder = tmp_path / "student"
+    folder.mkdir()
+    (folder / "rotations.py").write_text((reference / "rotations.py").read_text())
+    nbformat.write(notebook, folder / "problem_06.ipynb")
+    assert main(["problem-6", "--submission", str(folder), "--seed", "2"]) == 0
+    assert "notebook problem_06.ipynb → problem_06.py" in capsys.readouterr().out
+
+
+def test_init_and_list(tmp_path, capsys):
+    target = tmp_path / "mywork"
+    assert main(["init", str(target)]) == 0
+    assert (target / "answers.toml").exists() and (target / "rotations.py").exists()
+    assert main(["init", str(target)]) == 2
+    assert main(["list"]) == 0
+    out = capsys.readouterr().out
+    assert "Euler angles" in out and "points graded automatically" in out
+
+
+def test_html_report_embeds_figures_and_hides_hidden_checks():
+    from grader.render import render_html, render_json, render_terminal
+    from grader.results import CheckResult, Figure, ProblemReport, Series, Status
+
+    fig = Figure("traces", "x", "y", (Series("yours: B", (0.0, 1.0), (0.0, 1.0), "student"),
+                                       Series("reference: B", (0.0, 1.0), (0.0, 2.0), "reference")))
+    results = (
+        CheckResult("p99.a", 99, "visible one", Status.FAILED, 0, 1, "got 1, expected 2", figures=(fig,)),
+        CheckResult("p99.b", 99, "secret one", Status.FAILED, 0, 2, "the hidden detail", visibility="hidden"),
+    )
+    report = ProblemReport(99, "Test", results, seed=1)
+    html = render_html([report])
+    assert html.count("data:image/png;base64,") == 1
+    assert "the hidden detail" not in html and "1 hidden check worth 2 points" in html
+    text = render_terminal([report])
+    assert "the hidden detail" not in text and "1 hidden check worth 2 points" in text
+    data = json.loads(render_json([report], show_hidden=False))["reports"][0]
+    assert data["hidden_checks"] == {"count": 1, "max_score": 2.0}
+    assert all(r["check_id"] != "p99.b" for r in data["results"])

@@ -1,0 +1,92 @@
+"""The student template is generated from the reference, is current, keeps the public API, and grades to 0."""
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from grader import grade_submission, problems
+from grader.results import Status
+from tools.make_template import TemplateError, answers_template, stub_source
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_template_is_current():
+    done = subprocess.run([sys.executable, "-m", "tools.make_template", "--check"], cwd=ROOT,
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+
+
+def _api(path: Path) -> dict:
+    """Public names and signatures: module __all__, functions, classes and their methods."""
+    tree = ast.parse(path.read_text())
+    api = {}
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "__all__" for t in node.targets):
+            api["__all__"] = ast.literal_eval(node.value)
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            api[node.name] = ast.dump(node.args)
+        elif isinstance(node, ast.ClassDef):
+            api[node.name] = [ast.dump(b) for b in node.bases]
+            for item in node.body:
+                if isinstance(item, ast.FunctionDef):
+                    api[f"{node.name}.{item.name}"] = ast.dump(item.args)
+    return api
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in (ROOT / "reference").glob("*.py")))
+def test_public_names_and_signatures_match(name):
+    assert _api(ROOT / "reference" / name) == _api(ROOT / "student_template" / name)
+
+
+def test_no_solution_survives_in_the_template():
+    for path in (ROOT / "student_template").glob("*.py"):
+        markers = [line for line in path.read_text().splitlines()
+                   if line.strip().startswith(("# BEGIN SOLUTION", "# END SOLUTION"))]
+        assert not markers, path.name
+
+
+def test_untouched_template_scores_zero_with_clear_messages(tmp_path):
+    numbers = [p.number for p in problems()]
+    reports = grade_submission(ROOT / "student_template", numbers, seed=3)
+    for report in reports:
+        assert report.score == 0, report.problem
+        for r in report.results:
+            assert r.status in (Status.NOT_IMPLEMENTED, Status.SKIPPED), (r.check_id, r.status, r.message)
+            if r.status is Status.NOT_IMPLEMENTED:
+                assert "not implemented yet" in r.message or "not answered yet" in r.message, r.message
+
+
+def test_stub_replaces_regions_with_named_errors():
+    source = (
+        "class Body:\n"
+        "    def step(self, dt):\n"
+        "        \"\"\"Doc.\"\"\"\n"
+        "        # BEGIN SOLUTION problem 12\n"
+        "        self.x += dt\n"
+        "        # END SOLUTION\n"
+    )
+    stubbed = stub_source(source)
+    assert 'raise NotImplementedError("Problem 12: Body.step is not implemented yet")' in stubbed
+    assert "self.x += dt" not in stubbed and '"""Doc."""' in stubbed
+    ast.parse(stubbed)
+
+
+@pytest.mark.parametrize("source", [
+    "def f():\n    # BEGIN SOLUTION problem 1\n    return 1\n",
+    "def f():\n    return 1\n    # END SOLUTION\n",
+    "# BEGIN SOLUTION problem 1\nx = 1\n# END SOLUTION\n",
+])
+def test_malformed_regions_are_refused(source):
+    with pytest.raises(TemplateError):
+        stub_source(source)
+
+
+def test_answers_template_blanks_every_answer():
+    import tomllib
+
+    blank = tomllib.loads(answers_template('[problem_10]\na = 4\nc = [[1, 0], [0, 1]]\n[problem_10.free_text]\nwhy = "x"\n'))
+    assert blank == {"problem_10": {"a": "", "c": "", "free_text": {"why": ""}}}
