@@ -1,0 +1,73 @@
+"""Wall time of `grade problem-N` on a finished submission (the reference), next to a bare
+`python -c "import numpy"` measured in the same run.
+
+    python benchmarks/bench_grade.py [--runs 7] [--problems 6 15 31 32]
+
+Prints the median (and min/max) of each, and the ratio to the baseline.  The first run of each command is a
+warm-up (it fills the reference cache) and is not counted.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+#: targets from the design: non-simulation problems 1 s, kinematic trees 1.5 s, simulations 3 s
+TARGETS = {6: 1.0, 7: 3.0, 15: 3.0, 12: 3.0, 31: 1.5, 32: 1.5}
+
+
+def timed(argv: list[str], runs: int) -> list[float]:
+    subprocess.run(argv, capture_output=True, cwd=tempfile.gettempdir())  # warm-up
+    times = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        done = subprocess.run(argv, capture_output=True, cwd=tempfile.gettempdir())
+        times.append(time.perf_counter() - start)
+        if done.returncode not in (0, 1):
+            raise SystemExit(f"{' '.join(argv)} failed ({done.returncode}):\n{done.stderr.decode()[-2000:]}")
+    return times
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=7)
+    parser.add_argument("--problems", type=int, nargs="+", default=[6, 15, 31, 32])
+    args = parser.parse_args()
+    grade = shutil.which("grade")
+    if grade is None:
+        raise SystemExit("the grade command is not installed: pip install -e .")
+    from grader import problems
+    from grader.sandbox import sandbox_mode
+
+    available = {p.number for p in problems()}
+    print(f"machine: {shutil.os.cpu_count()} cores; sandbox: {sandbox_mode().note}; {args.runs} runs each")
+    base = timed([sys.executable, "-c", "import numpy"], args.runs)
+    base_median = statistics.median(base)
+    print(f"{'command':<44}{'median':>9}{'min':>9}{'max':>9}{'/ numpy':>10}{'target':>9}")
+    label = 'python -c "import numpy"'
+    print(f"{label:<44}{base_median:>8.3f}s{min(base):>8.3f}s{max(base):>8.3f}s{1:>10.1f}")
+    status = 0
+    for number in args.problems:
+        if number not in available:
+            print(f"{'grade problem-' + str(number):<44}  (no checks for this problem yet)")
+            continue
+        times = timed([grade, f"problem-{number}", "--submission", str(ROOT / "reference"), "--seed", "1"],
+                      args.runs)
+        median = statistics.median(times)
+        target = TARGETS.get(number, 1.0)
+        verdict = "ok" if median <= target else "OVER"
+        status |= median > target
+        print(f"{'grade problem-' + str(number) + ' (reference)':<44}{median:>8.3f}s{min(times):>8.3f}s"
+              f"{max(times):>8.3f}s{median / base_median:>10.1f}{target:>7.1f}s {verdict}")
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())
