@@ -10,7 +10,7 @@ student's code is reached only through ``ctx.student(probe, *args)`` (sandboxed 
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -267,9 +267,3 @@ def encode_key(probe: str, args: tuple) -> str:
     from probes._codec import encode
 
     return probe + json.dumps(encode(list(args)), sort_keys=True)
-
-
-@dataclass
-class _Scratch:
-    figures: list = field(default_factory=list)
-    seed: int | None = None
