@@ -1,0 +1,162 @@
+"""Checks of problem 22: the end effector of the 2n-joint arm by a loop and by recursion, and that the recursion
+really recurses."""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    SHEET,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    Mistake,
+    assert_close,
+    check,
+    fail,
+)
+
+from .problem_21 import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips, walk
+
+TITLE = "Recursive Kinematics"
+
+JOINT_VECTORS = st.lists(st.tuples(LENGTHS, ANGLES), min_size=1, max_size=8).map(
+    lambda pairs: np.array(pairs, dtype=float).ravel()
+)
+
+JOINT_ORDER_HINT = (
+    "The joints act in their order: the prismatic joint q_(2k-1) extends along the orientation g_(k-1) of the "
+    "segment so far, and only then the rotational joint q_(2k) turns it: g_k = g_(k-1) + q_(2k). You turned first."
+)
+FINAL_LINK_HINT = "The end effector sits d beyond P_n along g_n: (x_n - d sin g_n, y_n + d cos g_n, g_n)."
+ORIENTATION_HINT = (
+    "point_k(q, k) returns g_k, the orientation AFTER the rotational joint q_(2k) (of the segment leaving P_k); "
+    "you returned g_(k-1), the orientation of the segment arriving at P_k."
+)
+MODELS = {
+    "degrees": DEGREES_HINT,
+    "horizontal_offset": HORIZONTAL_HINT + " Your positions are right but every orientation is 90 deg too large.",
+    "horizontal": HORIZONTAL_HINT,
+    "horizontal_all": HORIZONTAL_HINT,
+    "joint_order": JOINT_ORDER_HINT,
+    "no_final_link": FINAL_LINK_HINT,
+}
+
+
+def _name(model):
+    return model.removesuffix("_offset").removesuffix("_all")
+
+
+def _end_mistakes(q, d):
+    return [Mistake(_name(model), walk(q, d, model)[1], hint) for model, hint in MODELS.items()]
+
+
+def _point_mistakes(q, k):
+    """Modelled mistakes of ``point_k(q, k)``: the pose ``(x_k, y_k, g_k)`` of the mistaken arm."""
+    if k == 0:
+        return []
+    found = []
+    for model, hint in MODELS.items():
+        if model != "no_final_link":
+            x, y, _, after = walk(q, 0.0, model)[0][k - 1]
+            found.append(Mistake(_name(model), (x, y, after), hint))
+    x, y, before, _ = walk(q, 0.0)[0][k - 1]
+    return found + [Mistake("orientation_before", (x, y, before), ORIENTATION_HINT)]
+
+
+def _describe(function):
+    def describe(args):
+        shown = f"{function}(q={np.asarray(args[0]).tolist()!r}"
+        return shown + (f", d={args[1]!r})" if len(args) > 1 else ")")
+
+    return describe
+
+
+def _compare_end(ctx, probe, function):
+    def compare(got, expected, args):
+        mistakes = _end_mistakes(*args) + sign_flips(got, expected, EXACT, SIGN_HINT)
+        assert_close(got, expected, f"{function}(q, d)", EXACT, mistakes)
+
+    ctx.compare_random(probe, st.tuples(JOINT_VECTORS, LINKS), name=f"{function}(q, d)", tol=EXACT, compare=compare,
+                       describe=_describe(function))
+
+
+# ------------------------------------------------------------------------------------ the sheet's case q3
+
+
+@check(1, title="q3 (12 joints, corrected in the problem data), d = 0.15: the end effector is at "
+       "(0.8243, 0.3914, 0) as on the sheet", stage=STAGE_VALUES, group="sheet")
+def check_sheet_target(ctx):
+    from reference.problem_22 import D, TARGET_Q3, joint_vector
+
+    q3 = joint_vector("q3")
+    got = ctx.student("problem_22.loop", q3, D)
+    assert_close(got, TARGET_Q3, "end_effector_loop(q3, 0.15)", SHEET,
+                 _end_mistakes(q3, D) + sign_flips(got, TARGET_Q3, SHEET, SIGN_HINT),
+                 context="(the sheet's value)",
+                 note="q3 has 12 entries: the sheet lost two of them (problem data).")
+
+
+# ------------------------------------------------------------------------------------ the loop
+
+
+@check(2, title="end_effector_loop(q, d) on random 2n-joint arms (n = 1..8)", stage=STAGE_RANDOM, group="loop")
+def check_loop_values(ctx):
+    _compare_end(ctx, "problem_22.loop", "end_effector_loop")
+
+
+# ------------------------------------------------------------------------------------ the recursion
+
+
+@check(2, title="point_k(q, k) is the pose (x_k, y_k, g_k) of P_k for every k = 0..n on random arms",
+       stage=STAGE_RANDOM, group="points")
+def check_points_values(ctx):
+    def compare(got, expected, args):
+        (q,) = args
+        for k, (pose, target) in enumerate(zip(got, expected)):
+            right = {0: "", 1: "P_0 is right: "}.get(k, f"P_0 .. P_{k - 1} are right: ")
+            where = f"{right}the step from P_{k - 1} to P_{k} is wrong." if k else "P_0 is the origin with g_0 = 0."
+            assert_close(pose, target, f"point_k(q, {k})", EXACT,
+                         _point_mistakes(q, k) + sign_flips(pose, target, EXACT, SIGN_HINT), note=where)
+
+    ctx.compare_random("problem_22.points", st.tuples(JOINT_VECTORS), name="point_k(q, k)", tol=EXACT,
+                       compare=compare, describe=_describe("point_k"))
+
+
+@check(1, title="end_effector_recursive(q, d) on random 2n-joint arms (n = 1..8)", stage=STAGE_RANDOM,
+       group="recursive")
+def check_recursive_values(ctx):
+    _compare_end(ctx, "problem_22.recursive", "end_effector_recursive")
+
+
+@check(2, title="point_k calls itself, from P_n down to the origin, and end_effector_recursive uses it",
+       stage=STAGE_STRUCTURE, group="recursion")
+def check_recursion(ctx):
+    from reference.problem_22 import D, joint_vector
+
+    q = joint_vector("q3")
+    n = q.size // 2
+    got = ctx.student("problem_22.nesting", "point_k", q, D)
+    if got["depth"] < 2:
+        fail(
+            f"point_k(q3, {n}) does not call itself: no function of your package ran more than once at a time.",
+            "Recursion: point_k(q, k) gets (x, y, g) of P_(k-1) from point_k(q, k - 1) and adds one stage; "
+            "point_k(q, 0) returns the origin (0, 0, 0) without calling itself. A for-loop over the joints is "
+            "end_effector_loop, not the recursion.",
+            "no_recursion",
+        )
+    if got["depth"] < n:
+        fail(
+            f"point_k(q3, {n}) recurses only {got['depth']} levels deep (in {got['function']}), expected at least "
+            f"{n}: one call per point on the way down to the origin.",
+            "Let each call handle one point: point_k(q, k) calls point_k(q, k - 1), down to k = 0.",
+            "shallow_recursion",
+        )
+    got = ctx.student("problem_22.nesting", "end_effector_recursive", q, D)
+    if got["depth"] < n:
+        fail(
+            f"end_effector_recursive(q3, {D}) does not recurse: the deepest nesting of a function of your package "
+            f"was {got['depth']}, expected at least {n}.",
+            "end_effector_recursive must get P_n from point_k(q, n) (the recursion) and add the final link.",
+            "no_recursion",
+        )

@@ -1,0 +1,62 @@
+"""Probes of problem 22: the 2n-joint arm by a loop and by recursion, and a probe that watches the recursion."""
+
+import os
+import sys
+
+from . import module, probe
+
+
+@probe
+def loop(pkg, q, d):
+    return module(pkg, "planar").end_effector_loop(q, d)
+
+
+@probe
+def recursive(pkg, q, d):
+    return module(pkg, "planar").end_effector_recursive(q, d)
+
+
+@probe
+def points(pkg, q):
+    """``[point_k(q, k) for k = 0..n]``."""
+    point_k = module(pkg, "planar").point_k
+    return [point_k(q, k) for k in range(len(q) // 2 + 1)]
+
+
+@probe
+def nesting(pkg, call, q, d):
+    """Run ``point_k(q, n)`` or ``end_effector_recursive(q, d)`` and report the deepest nesting of one function of
+    the package: ``{"depth": calls of that function active at once, "function": its name}``.
+
+    A function that calls itself (directly, or through the module's global name) has several frames of its code
+    alive at once; a loop has one.
+    """
+    planar = module(pkg, "planar")
+    root = os.path.dirname(os.path.abspath(pkg.__file__)) + os.sep
+    ours, active, deepest = {}, {}, {}
+
+    def watch(frame, event, arg):
+        code = frame.f_code
+        if code not in ours:
+            ours[code] = os.path.abspath(code.co_filename).startswith(root)
+        if not ours[code]:
+            return
+        if event == "call":
+            active[code] = active.get(code, 0) + 1
+            deepest[code] = max(deepest.get(code, 0), active[code])
+        elif event == "return":
+            active[code] = active.get(code, 1) - 1
+
+    previous = sys.getprofile()
+    sys.setprofile(watch)
+    try:
+        if call == "point_k":
+            planar.point_k(q, len(q) // 2)
+        else:
+            planar.end_effector_recursive(q, d)
+    finally:
+        sys.setprofile(previous)
+    if not deepest:
+        return {"depth": 0, "function": ""}
+    code = max(deepest, key=deepest.get)
+    return {"depth": deepest[code], "function": code.co_name}

@@ -1,0 +1,43 @@
+"""Probes of problem 27: the Jacobian columns, the two restated Jacobians, and the computations behind the keys."""
+
+from . import module, probe
+
+
+@probe
+def revolute_column(pkg, p, p_e):
+    return module(pkg, "problem_27").revolute_column(p, p_e)
+
+
+@probe
+def prismatic_column(pkg, u):
+    return module(pkg, "problem_27").prismatic_column(u)
+
+
+@probe
+def jacobian_a(pkg):
+    return module(pkg, "problem_27").jacobian_a()
+
+
+@probe
+def governor_jacobian(pkg):
+    return module(pkg, "problem_27").governor_jacobian()
+
+
+@probe
+def frame_derivative_residuals(pkg, seed, t):
+    return module(pkg, "problem_27").frame_derivative_residuals(seed, t)
+
+
+@probe
+def velocity_residuals(pkg):
+    return module(pkg, "problem_27").velocity_residuals()
+
+
+@probe
+def bias_acceleration_residuals(pkg):
+    return module(pkg, "problem_27").bias_acceleration_residuals()
+
+
+@probe
+def answers(pkg):
+    return module(pkg, "problem_27").answers()

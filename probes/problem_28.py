@@ -1,0 +1,14 @@
+"""Probes of problem 28: what the port of main.m prints."""
+
+import contextlib
+import io
+
+from . import module, probe
+
+
+@probe
+def output(pkg):
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer):
+        module(pkg, "problem_28").main()
+    return buffer.getvalue()
