@@ -152,11 +152,16 @@ def format_array(a, digits: int = 4) -> str:
         return np.array2string(a, separator=", ")
 
 
-def mismatch_table(got, expected, tol: Tol, digits: int = 4) -> str:
-    """Side-by-side table of the entries, marking those outside the tolerance."""
+def mismatch_table(got, expected, tol: Tol, digits: int | None = None) -> str:
+    """Side-by-side table of the entries, marking those outside the tolerance.  By default enough decimals are
+    shown for the smallest marked difference to be visible (4 at least, 10 at most)."""
     got = np.atleast_1d(np.asarray(got, dtype=float))
     expected = np.atleast_1d(np.asarray(expected, dtype=float))
     bad = ~_within(got, expected, tol)
+    if digits is None:
+        diffs = np.abs(got - expected)[bad]
+        smallest = float(diffs[diffs > 0].min()) if np.any(diffs > 0) else 1.0
+        digits = int(min(10, max(4, np.ceil(-np.log10(smallest)) + 1)))
     rows = ["  index        got          expected     |diff|"]
     for index in np.ndindex(expected.shape):
         mark = "  ✘" if bad[index] else ""

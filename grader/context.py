@@ -200,7 +200,7 @@ class Context:
         if isinstance(exc, CheckFailure):
             first, _, rest = exc.message.partition("\n")
             raise CheckFailure(f"{first}\n{where}\n{rest}", exc.hint, exc.diagnosis)
-        if isinstance(exc, StudentCodeError):
+        if isinstance(exc, StudentCodeError) and not exc.not_implemented:
             raise StudentCodeError(exc.kind, exc.type_name, f"{exc.message}\n{where}", exc.traceback, exc.phase)
         raise exc
 

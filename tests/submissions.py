@@ -39,11 +39,27 @@ def planted_mistakes(problem: int | None = None) -> list[Planted]:
         number = int(path.stem.removeprefix("problem_"))
         if problem is not None and number != problem:
             continue
-        for entry in tomllib.loads(path.read_text())["mistake"]:
+        for entry in tomllib.loads(path.read_text()).get("mistake", []):
             entry = dict(entry)
             entry["also"] = tuple(entry.get("also", ()))
             mistakes.append(Planted(problem=number, **entry))
     return mistakes
+
+
+def correct_variants(problem: int | None = None) -> list[dict]:
+    """``[[correct]]`` entries: replacements that keep a solution correct (another valid answer, a different
+    but sound way to compute it); each must still score full marks."""
+    variants = []
+    for path in sorted(PLANTED.glob("problem_*.toml")):
+        number = int(path.stem.removeprefix("problem_"))
+        if problem is None or number == problem:
+            variants += [dict(entry, problem=number) for entry in tomllib.loads(path.read_text()).get("correct", [])]
+    return variants
+
+
+def build_variant(variant: dict, dest: Path) -> Path:
+    return build_planted(Planted(name=variant["name"], problem=variant["problem"], file=variant["file"],
+                                 old=variant["old"], new=variant["new"], check=""), dest)
 
 
 def copy_reference(dest: Path) -> Path:

@@ -6,7 +6,7 @@ import pytest
 from grader import grade_problem, problems
 from grader.results import Status
 
-from .submissions import build_planted, copy_reference, planted_mistakes
+from .submissions import build_planted, build_variant, copy_reference, correct_variants, planted_mistakes
 
 PROBLEMS = [p.number for p in problems()]
 
@@ -37,3 +37,11 @@ def test_planted_mistake_is_caught(mistake, tmp_path):
                   if r.status not in (Status.PASSED, Status.SKIPPED) and r.check_id not in (mistake.check, *mistake.also)]
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
     assert report.score < report.auto_max_score
+
+
+@pytest.mark.parametrize("variant", correct_variants(), ids=lambda v: v["name"])
+def test_correct_variant_scores_full_marks(variant, tmp_path):
+    """Fairness: another valid answer, or a sound alternative computation, loses nothing."""
+    report = grade_problem(variant["problem"], build_variant(variant, tmp_path / "pkg"), seed=12345)
+    failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
+    assert not failed

@@ -1,0 +1,56 @@
+"""Checks of problem 14: the screw axis along the sheet's simulated motion.
+
+T is judged by its defining property against the student's own state at every step (any point of the axis is
+accepted); the motion itself is compared with the reference.
+"""
+
+import numpy as np
+
+from checks.problem_12 import SIMULATION, STATE, assert_traces, trace_array
+from checks.problem_13 import assert_screw
+from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, fail
+
+TITLE = "Visualizing Twists"
+
+DT, STEPS = 0.01, 100  # t_end = 1 s with the course's loop
+
+
+def _start():
+    from reference.problem_14 import INITIAL
+
+    return {"A_IB": np.eye(3), "B_r_IB": np.zeros(3), **{k: np.array(v, dtype=float) for k, v in INITIAL.items()}}
+
+
+@check(1, title="screw_axis() without rotation (omega = 0) returns zero vectors, as its docstring says",
+       stage=STAGE_STRUCTURE, group="at_rest")
+def check_screw_at_rest(ctx):
+    state = {**_start(), "B_v_B": np.array([1.0, -2.0, 0.5]), "B_omega_B": np.zeros(3)}
+    try:
+        assert_close(ctx.student("problem_13.screw", state), np.zeros((2, 3)), "screw_axis() with omega = 0",
+                     EXACT)
+    except CheckFailure as exc:
+        fail(exc.message, "Without rotation there is no screw axis: test omega @ omega == 0 before dividing by it "
+             "and return two zero vectors.", exc.diagnosis)
+
+
+@check(1, title="the sheet's run (100 steps of 0.01 s): the body's state follows the reference",
+       stage=STAGE_VALUES, group="run")
+def check_run_state(ctx):
+    got = ctx.student("problem_12.integrate", _start(), DT, STEPS)
+    expected = ctx.reference("problem_12.integrate", _start(), DT, STEPS)
+    try:
+        assert_traces(got, expected, STATE, SIMULATION, dt=DT)
+    except CheckFailure as exc:
+        fail(exc.message, "This is the integration step of problem 12: its checks localize the mistake.",
+             exc.diagnosis)
+
+
+@check(3, title="the sheet's run: at every step T lies on the screw axis and moves parallel to omega",
+       stage=STAGE_VALUES, group="run")
+def check_run_screw(ctx):
+    got = ctx.student("problem_14.screw_run", _start(), DT, STEPS)
+    n = STEPS + 1
+    screws = trace_array(got, "screw", (n, 2, 3))
+    w, v = trace_array(got, "B_omega_B", (n, 3)), trace_array(got, "B_v_B", (n, 3))
+    for i in range(n):
+        assert_screw(screws[i], w[i], v[i], where=f"after {i} step{'s' * (i != 1)} (t = {i * DT:g} s)")

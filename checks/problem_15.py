@@ -1,0 +1,269 @@
+"""Checks of problem 15: the torque-free rigid body (Newton-Euler in body coordinates), simulated.
+
+The long fixed runs of the reference are cached on disk; the randomized runs are short.  A wrong run is localized
+at the first step where it leaves the reference and diagnosed by applying each known mistake (of the dynamics or
+of the integration step of problem 12) from the reference's state just before.
+"""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from checks.problem_12 import (
+    FINITE,
+    KINEMATIC_MISTAKES,
+    MAX_POINTS,
+    ROTATIONS,
+    SIMULATION,
+    STATE,
+    assert_traces,
+    describe_state,
+    first_departure,
+    kinematic_mistakes_at,
+    kinematic_step,
+    subsample,
+    trace_array,
+    vectors,
+)
+from grader.checking import (
+    EXACT,
+    SHEET,
+    STAGE_RANDOM,
+    STAGE_VALUES,
+    CheckFailure,
+    Mistake,
+    Tol,
+    assert_close,
+    check,
+    close,
+    fail,
+    figure,
+)
+
+TITLE = "Rigid Body Dynamics"
+MANUAL = {"a": ("15(a): Qualitatively, describe the difference of what you observe for the cases (4), (5) and (6).", 2)}
+
+DT = 0.001
+LONG = 30000  # t_end = 30 s with the course's loop
+SHORT = 1000  # the first second of the cases without a printed target
+MOMENTUM_STEPS, MOMENTUM_EVERY = 5000, 10  # case 3 over 5 s, 501 samples
+#: the sheet's final A_IB of case 6 (four decimals); B_r_IB stays zero
+SHEET_CASE_6 = [[0.1564, 0.9877, 0.0004], [-0.9876, 0.1564, 0.0145], [0.0142, -0.0026, 0.9999]]
+#: the inertial angular momentum drifts at first order in dt: by 7e-4 over the 5 s of case 3 (reference)
+MOMENTUM = Tol("conservation, first order in dt", 0.02)
+
+DYNAMIC_MISTAKES = {
+    "no_gyroscopic": (
+        "The gyroscopic term is missing: without torque, Euler's equation is B_I_B @ omegaDot = -omega x (B_I_B @ "
+        "omega), which is not zero unless omega is a principal axis."
+    ),
+    "gyroscopic_sign": (
+        "The gyroscopic term has the wrong sign or order: B_I_B @ omegaDot = -omega x (B_I_B @ omega) = "
+        "(B_I_B @ omega) x omega."
+    ),
+    "multiplied_not_solved": (
+        "You multiplied by B_I_B instead of solving with it: omegaDot = solve(B_I_B, -omega x (B_I_B @ omega)) "
+        "(np.linalg.solve; the inverse would also do)."
+    ),
+    "principal_axes_only": (
+        "Dividing by the diagonal of B_I_B solves Euler's equation only when B_I_B is diagonal (principal axes): "
+        "in general solve the linear system B_I_B @ omegaDot = -omega x (B_I_B @ omega)."
+    ),
+    "acceleration_not_reset": (
+        "B_a_B must be set to zero: no force acts, so the absolute acceleration of the centre of gravity vanishes "
+        "(the term -omega x v of the velocity update is in integration_step)."
+    ),
+}
+
+
+def natural_dynamics(state, mistake=None):
+    """``(B_a_B, B_omegaDot_B)`` of the problem data, or with the named mistake of ``DYNAMIC_MISTAKES``."""
+    from reference.rotations import skew
+
+    I, w = np.asarray(state["B_I_B"], dtype=float), np.asarray(state["B_omega_B"], dtype=float)
+    gyroscopic = -skew(w) @ I @ w
+    omega_dot = {
+        "no_gyroscopic": lambda: np.zeros(3),
+        "gyroscopic_sign": lambda: np.linalg.solve(I, -gyroscopic),
+        "multiplied_not_solved": lambda: I @ gyroscopic,
+        "principal_axes_only": lambda: gyroscopic / np.diag(I),
+    }.get(mistake, lambda: np.linalg.solve(I, gyroscopic))()
+    a = np.asarray(state["B_a_B"], dtype=float) if mistake == "acceleration_not_reset" else np.zeros(3)
+    return a, omega_dot
+
+
+def dynamic_step(state, dt, mistake=None):
+    """Natural dynamics then the integration step, with a mistake of either (named as in the catalogues)."""
+    a, omega_dot = natural_dynamics(state, mistake if mistake in DYNAMIC_MISTAKES else None)
+    return kinematic_step({**state, "B_a_B": a, "B_omegaDot_B": omega_dot}, dt,
+                          mistake if mistake in KINEMATIC_MISTAKES else None)
+
+
+STEP_MISTAKES = {**DYNAMIC_MISTAKES, **KINEMATIC_MISTAKES}
+
+
+def case_state(k):
+    from reference.problem_15 import CASES, INERTIA, MASS
+
+    v, w = (np.array(x, dtype=float) for x in CASES[k])
+    return {"m": MASS, "B_I_B": INERTIA, "B_v_B": v, "B_omega_B": w}
+
+
+def full_state(state):
+    """The state of a fresh body: the given entries, zeros and the identity elsewhere."""
+    zeros = {k: np.zeros(3) for k in ("B_r_IB", "B_v_B", "B_a_B", "B_omega_B", "B_omegaDot_B")}
+    return {"A_IB": np.eye(3), **zeros, **state}
+
+
+@st.composite
+def inertias(draw):
+    """Well-conditioned inertia matrices (principal moments in [1, 3]) in a random orientation."""
+    A = draw(ROTATIONS)
+    x2, y2, z2 = (draw(st.floats(0.5, 1.5, **FINITE)) for _ in range(3))
+    return A @ np.diag([y2 + z2, x2 + z2, x2 + y2]) @ A.T
+
+
+STATES = st.fixed_dictionaries({
+    "m": st.floats(0.5, 2.0, **FINITE),
+    "B_I_B": inertias(),
+    "A_IB": ROTATIONS,
+    "B_r_IB": vectors(2.0),
+    "B_v_B": vectors(2.0),
+    "B_a_B": vectors(2.0),
+    "B_omega_B": vectors(2.0),
+})
+
+
+# ------------------------------------------------------------------------------------ the accelerations
+
+
+@check(3, title="compute_natural_dynamics: B_a_B = 0 and B_I_B omegaDot = -omega x (B_I_B omega) on random states",
+       stage=STAGE_RANDOM, group="natural_dynamics")
+def check_natural_dynamics(ctx):
+    ctx.student("problem_15.accelerations", case_state(3))
+
+    def compare(got, expected, args):
+        state = args[0]
+        if not isinstance(got, dict):
+            fail(f"the probe expected the attributes B_a_B and B_omegaDot_B, got {str(got)[:200]}")
+        for key, index in (("B_a_B", 0), ("B_omegaDot_B", 1)):
+            mistakes = [Mistake(name, natural_dynamics(state, name)[index], hint)
+                        for name, hint in DYNAMIC_MISTAKES.items()]
+            assert_close(got.get(key), expected[key], f"{key} after compute_natural_dynamics()", EXACT, mistakes)
+
+    ctx.compare_random("problem_15.accelerations", st.tuples(STATES), name="the accelerations", tol=EXACT,
+                       compare=compare, examples=15, describe=lambda args: describe_state(args[0]))
+
+
+@check(1, title="angular_momentum() = B_I_B omega (body coordinates) on random states", stage=STAGE_RANDOM,
+       group="angular_momentum")
+def check_angular_momentum(ctx):
+    def mistakes(args, expected):
+        state = args[0]
+        return [Mistake("inertial_frame", state["A_IB"] @ expected, "B_L_B is the angular momentum in BODY "
+                        "coordinates: B_I_B @ B_omega_B, without A_IB (the check maps it to I itself).")]
+
+    ctx.student("problem_15.angular_momentum", case_state(3))
+    ctx.compare_random("problem_15.angular_momentum", st.tuples(STATES), name="angular_momentum()", tol=EXACT,
+                       mistakes=mistakes, examples=10, describe=lambda args: describe_state(args[0]))
+
+
+# ------------------------------------------------------------------------------------ simulations
+
+
+def _diagnose_run(exc, got, expected, state, limit=1000):
+    """Re-raise ``exc`` with the first step where the run leaves the reference's and the diagnosis of the known
+    mistake that reproduces it (simulated from the start when it happens within ``limit`` steps)."""
+    found = first_departure(got, expected, STATE, SIMULATION)
+    if found is None:
+        raise exc
+    i, key, trace = found
+    steps = int(expected["step"][i])
+    message = exc.message
+    if "first departure" not in message:
+        message += (f"\nYour run first leaves the reference's in {key} after {steps} steps (t = {steps * DT:g} s; "
+                    f"tolerance {SIMULATION}).")
+    if steps <= limit:
+        for name, hint in STEP_MISTAKES.items():
+            s = full_state(state)
+            for _ in range(steps):
+                s = dynamic_step(s, DT, name)
+            if close(trace[i], s[key], SIMULATION):
+                fail(message, hint, name)
+    fail(message, exc.hint or "The checks of compute_natural_dynamics above (and of integration_step in problem 12) "
+         "localize the mistake.", exc.diagnosis)
+
+
+@check(3, title="the sheet's case 6 after 30 s (30000 steps of 1 ms): A_IB and B_r_IB as printed",
+       stage=STAGE_VALUES, group="simulation")
+def check_case_6(ctx):
+    state, every = full_state(case_state(6)), 100
+    got = ctx.student("problem_15.simulate", state, DT, LONG, every, timeout=30)
+    expected = ctx.reference("problem_15.simulate", state, DT, LONG, every, persist=True)
+    n = len(expected["step"])
+    final = {key: trace_array(got, key, (n, *np.shape(state[key])))[-1] for key in ("A_IB", "B_r_IB")}
+    try:
+        assert_close(final["A_IB"], SHEET_CASE_6, "A_IB at t = 30 s", SHEET, context="(the sheet's value)")
+        assert_close(final["B_r_IB"], np.zeros(3), "B_r_IB at t = 30 s", SHEET, context="(the sheet's value)")
+    except CheckFailure as exc:
+        _diagnose_run(exc, got, expected, state)
+
+
+@check(2, title="cases 1, 2, 4 and 5 over their first second (1000 steps of 1 ms) follow the reference",
+       stage=STAGE_VALUES, group="simulation")
+def check_other_cases(ctx):
+    for k in (1, 2, 4, 5):
+        state = full_state(case_state(k))
+        got = ctx.student("problem_15.simulate", state, DT, SHORT, SHORT, timeout=20)
+        expected = ctx.reference("problem_15.simulate", state, DT, SHORT, SHORT, persist=True)
+        if first_departure(got, expected, STATE, SIMULATION) is None:
+            continue
+        got, expected = (call("problem_15.simulate", state, DT, SHORT, 10) for call in (ctx.student, ctx.reference))
+        try:
+            assert_traces(got, expected, STATE, SIMULATION, what=f"in case {k}", dt=DT)
+        except CheckFailure as exc:
+            _diagnose_run(exc, got, expected, state)
+
+
+@check(2, title="case 3 over 5 s: the inertial angular momentum A_IB B_L_B stays constant (and follows the "
+       "reference)", stage=STAGE_VALUES, group="momentum")
+def check_momentum_case_3(ctx):
+    state = full_state(case_state(3))
+    args = (state, DT, MOMENTUM_STEPS, MOMENTUM_EVERY, True)
+    got = ctx.student("problem_15.simulate", *args, timeout=30)
+    expected = ctx.reference("problem_15.simulate", *args, persist=True)
+    n = len(expected["step"])
+    A, L = trace_array(got, "A_IB", (n, 3, 3)), trace_array(got, "B_L_B", (n, 3))
+    I_L = np.einsum("nij,nj->ni", A, L)
+    I_L_ref = np.einsum("nij,nj->ni", expected["A_IB"], expected["B_L_B"])
+    t = expected["step"] * DT
+    ctx.add_figure(figure(
+        "Problem 15(b), case 3: inertial angular momentum A_IB @ B_L_B", "t [s]", "I_L [kg m²/s]",
+        student=[(f"I_L{j + 1}", *subsample(t, I_L[:, j], MAX_POINTS)) for j in range(3)],
+        reference=[(f"I_L{j + 1}", *subsample(t, I_L_ref[:, j], MAX_POINTS)) for j in range(3)],
+    ))
+    drift = np.abs(I_L - I_L[0]).max(axis=1)
+    try:
+        if np.all(np.isfinite(drift)) and drift.max() > MOMENTUM.atol:
+            i = int(np.argmax(drift > MOMENTUM.atol))
+            assert_close(I_L[i], I_L[0], f"A_IB @ B_L_B at t = {t[i]:g} s", MOMENTUM,
+                         context="(its value at t = 0: no torque acts, so it is conserved)",
+                         note="The figure shows its components over time.")
+        assert_traces({"I_L": I_L}, {"I_L": I_L_ref, "step": expected["step"]}, ["I_L"], SIMULATION,
+                      what="(A_IB @ B_L_B)", dt=DT)
+    except CheckFailure as exc:
+        _diagnose_run(exc, got, expected, state)
+
+
+@check(2, title="natural dynamics + integration step follow the reference from random states (1-20 steps)",
+       stage=STAGE_RANDOM, group="random_runs")
+def check_random_runs(ctx):
+    def compare(got, expected, args):
+        state, dt, _ = args
+        at = kinematic_mistakes_at(expected, state, dt, mistakes=STEP_MISTAKES, step=dynamic_step)
+        assert_traces(got, expected, STATE, EXACT, at, dt=dt)
+
+    ctx.compare_random(
+        "problem_15.simulate", st.tuples(STATES, st.floats(1e-3, 0.05, **FINITE), st.integers(1, 20)),
+        name="the state", tol=EXACT, compare=compare, examples=10,
+        describe=lambda args: f"{describe_state(args[0])}, dt = {args[1]!r}, {args[2]} step(s)",
+    )

@@ -1,0 +1,144 @@
+"""Checks of problem 20: what makes an inertia matrix.
+
+The student's ``is_inertia_matrix`` is tested on constructed matrices that violate exactly one property each
+(symmetry, positive definiteness, the triangle inequality of the principal moments) and on valid ones.  Part (a)
+follows the physics: as printed, options 2, 3 and 4 are all not inertia matrices, and any of them is accepted.
+"""
+
+import numpy as np
+
+from checks.problem_12 import compact
+from grader.checking import STAGE_STRUCTURE, STAGE_VALUES, check, fail
+
+TITLE = "Understanding Inertia Matrices"
+MANUAL = {"a": ("20(a): Why is the matrix you chose not an inertia matrix?", 1)}
+
+
+def _rotation(seed):
+    from reference.rotations import cardan
+
+    rng = np.random.default_rng(seed)
+    return cardan(*rng.uniform(-np.pi, np.pi, 3))
+
+
+def _rotated(moments, seed):
+    A = _rotation(seed)
+    return A @ np.diag(moments) @ A.T
+
+
+def _sheet(k):
+    from reference.problem_20 import MATRICES_A
+
+    return MATRICES_A[k]
+
+
+def _option(ctx, key):
+    """The chosen option as an integer (``3`` or ``"3"``), or the raw answer if it is not one."""
+    given = ctx.answer(key)
+    if isinstance(given, str) and given.strip().isdigit():
+        return int(given)
+    return given if isinstance(given, int) and not isinstance(given, bool) else repr(given)
+
+
+def _judge(ctx, matrices, expected_ok, property_text, mistake=None):
+    """Fail at the first matrix ``(label, I)`` that the student's ``is_inertia_matrix`` misjudges; ``mistake(label)``
+    gives the ``(hint, diagnosis)`` for it."""
+    results = ctx.student("problem_20.is_inertia", [I for _, I in matrices])
+    if not isinstance(results, list) or len(results) != len(matrices):
+        fail(f"is_inertia_matrix must return (ok, reason) for each matrix, got {str(results)[:200]}")
+    for (label, I), (ok, reason) in zip(matrices, results):
+        if ok is not expected_ok:
+            moments = np.linalg.eigvals(I).real if np.abs(I - I.T).max() > 0 else np.linalg.eigvalsh(I)
+            hint, diagnosis = mistake(label) if mistake else ("", "")
+            fail(f"is_inertia_matrix(I) returned {ok} (reason: {reason!r}) for {label}, which {property_text}.\n"
+                 f"I = {compact(I)}\neigenvalues: {compact(np.sort(moments))}\nexpected: {expected_ok}",
+                 hint, diagnosis)
+
+
+@check(1, title="is_inertia_matrix accepts valid inertia matrices (random orientations, the sheet's option 1, a "
+       "flat plate with I3 = I1 + I2)", stage=STAGE_STRUCTURE, group="accepts")
+def check_accepts_valid(ctx):
+    rng = np.random.default_rng(ctx.seed)
+    matrices = [(f"a random inertia matrix (principal moments {compact(m)})", _rotated(m, rng.integers(2**31)))
+                for m in (np.array([y + z, x + z, x + y]) for x, y, z in rng.uniform(0.2, 2.0, (4, 3)))]
+    matrices += [("the sheet's option 1", _sheet(1)), ("a flat plate diag(1, 1, 2)", np.diag([1.0, 1.0, 2.0]))]
+
+    def mistake(label):
+        if "plate" in label:
+            return ("For a flat body I3 = I1 + I2 exactly: the triangle inequality allows equality (I3 <= I1 + I2, "
+                    "with a small tolerance for rounding).", "plate_rejected")
+        return ("Check the properties of the principal moments (eigenvalues), with a tolerance relative to the "
+                "largest entry for rounding.", "")
+
+    _judge(ctx, matrices, True, "is a valid inertia matrix", mistake)
+
+
+@check(1, title="is_inertia_matrix rejects matrices that are not symmetric (and otherwise fine)",
+       stage=STAGE_STRUCTURE, group="symmetry")
+def check_rejects_non_symmetric(ctx):
+    skew = np.array([[0.0, -0.1, 0.05], [0.1, 0.0, -0.08], [-0.05, 0.08, 0.0]])
+    matrices = [("a rotated diag(2, 2.5, 3) plus a small skew-symmetric part", _rotated([2.0, 2.5, 3.0], 7) + skew),
+                ("the sheet's option 2", _sheet(2))]
+    hint = ("An inertia matrix is symmetric (I_ij = I_ji). np.linalg.eigvalsh reads only one triangle of the "
+            "matrix, so test the symmetry first: np.allclose(I, I.T).")
+    _judge(ctx, matrices, False, "is not symmetric", lambda label: (hint, "forgot_symmetry"))
+
+
+@check(1, title="is_inertia_matrix rejects a matrix that is not positive definite (and otherwise fine)",
+       stage=STAGE_STRUCTURE, group="positive_definite")
+def check_rejects_not_positive_definite(ctx):
+    matrices = [("diag(0, 2, 2)", np.diag([0.0, 2.0, 2.0])), ("diag(2, 0, 2)", np.diag([2.0, 0.0, 2.0]))]
+    hint = ("An inertia matrix is positive definite: every principal moment is > 0 (a zero moment needs all mass on "
+            "one line). The triangle inequality still holds here, so it must be tested separately.")
+    _judge(ctx, matrices, False, "has a zero principal moment (symmetric, the triangle inequality holds)",
+           lambda label: (hint, "forgot_positive_definite"))
+
+
+@check(1, title="is_inertia_matrix rejects matrices whose principal moments violate the triangle inequality",
+       stage=STAGE_STRUCTURE, group="triangle")
+def check_rejects_triangle(ctx):
+    matrices = [("diag(1, 1.5, 3)", np.diag([1.0, 1.5, 3.0])),
+                ("a rotated diag(1, 1.5, 3) whose diagonal entries satisfy the triangle inequality",
+                 _rotated([1.0, 1.5, 3.0], 3)),
+                ("the sheet's option 3", _sheet(3)), ("the sheet's option 4", _sheet(4))]
+
+    def mistake(label):
+        if label.startswith("diag"):
+            return ("The principal moments of any mass distribution satisfy I3 <= I1 + I2 (I1 + I2 - I3 = "
+                    "2 sum m z² >= 0): test it on the sorted eigenvalues.", "forgot_triangle_inequality")
+        return ("The triangle inequality holds for the PRINCIPAL moments (the eigenvalues), not for the diagonal "
+                "entries of a rotated matrix.", "triangle_on_diagonal")
+
+    _judge(ctx, matrices, False, "violates the triangle inequality of the principal moments (symmetric, positive "
+           "definite)", mistake)
+
+
+@check(1, title="20(a): an option that is not an inertia matrix (as printed, options 2, 3 and 4 all qualify)",
+       stage=STAGE_VALUES, group="part_a")
+def check_part_a(ctx):
+    from reference.problem_20 import classify, key_a
+
+    given = _option(ctx, "a")
+    keys = key_a()
+    if given in keys:
+        return
+    reasons = "; ".join(f"({k}) {reason}" for k, (ok, reason) in classify().items())
+    fail(f"[problem_20] a = {given} is not an option whose matrix fails to be an inertia matrix.\n"
+         f"As printed, the matrices make several options correct (physics wins): any of {keys} is accepted.\n"
+         f"{reasons}",
+         "Test each matrix: symmetric? positive definite? principal moments (eigenvalues) satisfying "
+         "I3 <= I1 + I2? Write the option as an integer, e.g. a = 3.")
+
+
+@check(1, title="20(b): the statement that is not necessarily correct for the object of Figure 22",
+       stage=STAGE_VALUES, group="part_b")
+def check_part_b(ctx):
+    import tomllib
+    from importlib import resources
+
+    key = tomllib.loads(resources.files("reference").joinpath("answers.toml").read_text())["problem_20"]["b"]
+    given = _option(ctx, "b")
+    if given != key:
+        fail(f"[problem_20] b = {given} is not the expected option.",
+             "The statements about the diagonal (c > a, e < a) and about f follow from the object's shape and "
+             "symmetry in Figure 22; which one does not? Write the option as an integer, e.g. b = 2.")

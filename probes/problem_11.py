@@ -1,0 +1,46 @@
+"""Probes of problem 11: bound coordinate systems and bound vectors driven through their setters."""
+
+from . import probe
+from ._scenario import run
+
+COSYS, VECTOR = "bound.BoundCoSys", "bound.BoundVector"
+
+
+def _objects(A_IC, I_r_IC, C_v, C_r_CO, A_IX=None):
+    objects = [("C", COSYS, {"A_IC": A_IC, "I_r_IC": I_r_IC}),
+               ("v", VECTOR, {"C": "@C", "C_v": C_v, "C_r_CO": C_r_CO})]
+    if A_IX is not None:
+        objects.append(("X", COSYS, {"A_IC": A_IX}))
+    return objects
+
+
+@probe
+def vector(pkg, A_IC, I_r_IC, C_v, C_r_CO):
+    """The vector in inertial components, its start point, and its components in I and in C."""
+    objects = [*_objects(A_IC, I_r_IC, C_v, C_r_CO), ("I", COSYS, {})]
+    read = [("I_v", "v.I_v"), ("I_r_IO", "v.I_r_IO"), ("I_coords", "v.get_coords", ["@I"]),
+            ("C_coords", "v.get_coords", [])]
+    return run(pkg, objects, read=read)["final"]
+
+
+@probe
+def moved(pkg, A_IC, I_r_IC, C_v, C_r_CO, A_new, I_r_new):
+    """The vector after its coordinate system was turned to ``A_new`` and moved to ``I_r_new``."""
+    steps = [("C.set_transform", [A_new]), ("C.set_offset", [I_r_new])]
+    read = [("A_IC", "C.A_IC"), ("I_r_IC", "C.I_r_IC"), ("I_v", "v.I_v"), ("I_r_IO", "v.I_r_IO")]
+    return run(pkg, _objects(A_IC, I_r_IC, C_v, C_r_CO), steps, read=read)["final"]
+
+
+@probe
+def set_in(pkg, A_IC, I_r_IC, A_IX, X_v, X_r):
+    """The vector after ``set_vector(X_v, X)`` and ``set_offset(X_r, X)`` with another coordinate system X."""
+    steps = [("v.set_vector", [X_v, "@X"]), ("v.set_offset", [X_r, "@X"])]
+    read = [("C_v", "v.C_v"), ("C_r_CO", "v.C_r_CO"), ("I_v", "v.I_v"), ("I_r_IO", "v.I_r_IO")]
+    return run(pkg, _objects(A_IC, I_r_IC, [0, 0, 0], [0, 0, 0], A_IX), steps, read=read)["final"]
+
+
+@probe
+def coords(pkg, A_IC, C_v, A_IX):
+    """``get_coords(X)`` and ``get_coords()`` of a vector on C."""
+    read = [("X_v", "v.get_coords", ["@X"]), ("C_v", "v.get_coords", [])]
+    return run(pkg, _objects(A_IC, [0, 0, 0], C_v, [0, 0, 0], A_IX), read=read)["final"]

@@ -1,0 +1,14 @@
+"""Probes of problem 14: the screw axis traced along a simulated motion."""
+
+from . import probe
+from ._scenario import body_run
+
+STATE = ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")
+
+
+@probe
+def screw_run(pkg, state, dt, n):
+    """``n`` integration steps from ``state``; the state and ``screw_axis()`` before and after every step."""
+    trace = [(k, k) for k in STATE] + [("screw", "screw_axis", [])]
+    out = body_run(pkg, "rigid_body.RigidBodyKinematics", state, [("integration_step", [dt])], n, trace=trace)
+    return {"step": out["step"], **out["trace"]}

@@ -1,0 +1,46 @@
+"""Probes of problem 16: inertia of simple bodies, numerically and symbolically, and the inverse maps."""
+
+import numpy as np
+
+from . import module, probe
+
+BODIES = ("cuboid", "ellipsoid", "particles")
+SYMBOLS = ("m", "a", "b", "c")
+
+
+@probe
+def centre_of_gravity(pkg, masses, points):
+    return module(pkg, "inertia").centre_of_gravity(masses, points)
+
+
+@probe
+def point_masses(pkg, masses, points):
+    return module(pkg, "inertia").point_masses_inertia(masses, points)
+
+
+@probe
+def body(pkg, name, m, a, b, c):
+    return getattr(module(pkg, "inertia"), f"{name}_inertia")(m, a, b, c)
+
+
+@probe
+def symbolic(pkg, name, points):
+    """The symbolic inertia of body ``name`` evaluated at each ``(m, a, b, c)`` of ``points``; a string says why
+    it cannot be evaluated."""
+    matrix = getattr(module(pkg, "inertia"), f"{name}_inertia_symbolic")()
+    import sympy as sp
+
+    if not isinstance(matrix, sp.MatrixBase) or matrix.shape != (3, 3):
+        return f"not a 3 x 3 sympy Matrix: {str(matrix)[:200]}"
+    symbols = {s.name: s for s in matrix.free_symbols}
+    unknown = sorted(set(symbols) - set(SYMBOLS))
+    if unknown:
+        return f"uses the symbols {unknown}; only m, a, b, c are allowed"
+    f = sp.lambdify([symbols.get(n, sp.Symbol(n)) for n in SYMBOLS], matrix, "numpy")
+    values = [np.array(f(*p), dtype=float) for p in points]
+    return np.array(values)
+
+
+@probe
+def dimensions(pkg, m, I1, I2, I3):
+    return module(pkg, "problem_16").part_b(m, I1, I2, I3)
