@@ -19,7 +19,8 @@ from pathlib import Path, PurePosixPath
 
 from .errors import SubmissionError
 
-__all__ = ["Submission", "materialize", "template_dir", "content_hash", "MAX_FILES", "MAX_BYTES"]
+__all__ = ["Submission", "materialize", "submission_digest", "template_dir", "content_hash", "read_answers",
+           "MAX_FILES", "MAX_BYTES"]
 
 MAX_FILES = 500
 MAX_BYTES = 50 * 2**20
@@ -151,6 +152,12 @@ def _student_files(source: Path) -> dict[str, bytes]:
     if not files:
         raise SubmissionError(f"{source.name} contains no Python files, notebooks or answers.toml")
     return files
+
+
+def submission_digest(source: str | Path) -> str:
+    """The content hash of a submission as ``materialize`` would compute it (names and contents of the
+    student's files), without copying anything."""
+    return content_hash(_student_files(Path(source)))
 
 
 def materialize(source: str | Path, workdir: str | Path | None = None) -> Submission:

@@ -114,6 +114,12 @@ class ProblemReport:
         return sum(r.max_score for r in self.results)
 
     @property
+    def visible_score(self) -> float:
+        """The score a student may see before the deadline: the visible checks' points (reports show it out of
+        the full maximum, with the hidden checks' count and points beside it)."""
+        return sum(r.score for r in self.results if r.visibility == "visible")
+
+    @property
     def pending_manual(self) -> float:
         return sum(m.max_score for m in self.manual if m.score is None)
 

@@ -151,6 +151,19 @@ def serve(request_fd: int, reply_fd: int, submission: str) -> int:
         write_message(reply_fd, reply)
 
 
+def _die_with_parent() -> None:
+    """Ask the kernel to kill this process when the grader that started it dies (Linux prctl)."""
+    import ctypes
+    import signal
+
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        PR_SET_PDEATHSIG = 1
+        libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):
+        pass
+
+
 def _apply_limits(limits: dict) -> None:
     """Set hard resource limits and, when started as root, drop to an unprivileged user.
 
@@ -174,6 +187,7 @@ def _apply_limits(limits: dict) -> None:
             resource.setrlimit(names[key], (value, value))
     # Writes beyond the file-size limit fail with an OSError instead of killing the process.
     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    _die_with_parent()
     if uid is not None and os.geteuid() == 0:
         os.setgroups([])
         os.setgid(uid)

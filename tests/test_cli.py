@@ -30,7 +30,7 @@ def test_reference_exits_zero_and_writes_reports(reference, tmp_path, capsys):
     data = json.loads(js.read_text())
     assert data["reports"][0]["visible_score"] == 10
     results = json.loads(gs.read_text())
-    assert results["score"] == 10 and all(t["status"] == "passed" for t in results["tests"])
+    assert sum(t["score"] for t in results["tests"]) == 10 and all(t["status"] == "passed" for t in results["tests"])
     assert {"name", "score", "max_score", "output", "visibility"} <= set(results["tests"][0])
 
 
