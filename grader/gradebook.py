@@ -1,0 +1,377 @@
+"""The gradebook: an embedded SQLite database holding every check result of every student.
+
+One row of ``submissions`` is one problem of one student's work, graded once: its key is
+(student, content hash, grader version, problem), unique in the schema.  The parent process of a batch is the
+only writer, and it commits a student's whole result (every problem, every check) in one transaction, so that a
+batch killed at any point leaves each student either completely graded or not at all.  WAL mode with full
+synchronisation keeps committed students through a crash or a power loss, and lets readers (exports, a
+progress poll) read while a batch writes.
+
+The grader version of a problem is the package version plus a digest of the problem's check and probe modules:
+editing the checks of problem 6 regrades problem 6 and nothing else.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import json
+import sqlite3
+from contextlib import contextmanager
+from dataclasses import asdict, dataclass, replace
+from datetime import datetime, timezone
+from pathlib import Path
+
+from . import __version__
+from .results import CheckResult, Figure, ManualItem, ProblemReport, Series, Status
+
+__all__ = [
+    "GRADEBOOK_NAME",
+    "SCHEMA",
+    "Gradebook",
+    "Graded",
+    "ManualScoreError",
+    "grader_version",
+    "now",
+]
+
+GRADEBOOK_NAME = "gradebook.sqlite"
+SCHEMA_VERSION = 1
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS meta (
+    key   TEXT PRIMARY KEY,
+    value TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS runs (
+    id              INTEGER PRIMARY KEY,
+    started_at      TEXT NOT NULL,
+    finished_at     TEXT,
+    state           TEXT NOT NULL DEFAULT 'running' CHECK (state IN ('running', 'finished', 'interrupted')),
+    submissions_dir TEXT NOT NULL,
+    problems        TEXT NOT NULL,          -- JSON list of problem numbers
+    jobs            INTEGER NOT NULL,
+    force           INTEGER NOT NULL DEFAULT 0,
+    graded          INTEGER NOT NULL DEFAULT 0,
+    skipped         INTEGER NOT NULL DEFAULT 0
+);
+CREATE TABLE IF NOT EXISTS students (
+    id   INTEGER PRIMARY KEY,
+    name TEXT NOT NULL UNIQUE
+);
+CREATE TABLE IF NOT EXISTS submissions (
+    id             INTEGER PRIMARY KEY,
+    student_id     INTEGER NOT NULL REFERENCES students (id),
+    content_hash   TEXT NOT NULL,
+    grader_version TEXT NOT NULL,
+    problem        INTEGER NOT NULL,
+    run_id         INTEGER NOT NULL REFERENCES runs (id),
+    graded_at      TEXT NOT NULL,
+    seed           INTEGER NOT NULL,
+    outcome        TEXT NOT NULL CHECK (outcome IN ('graded', 'timeout', 'crashed')),
+    score          REAL NOT NULL,           -- automatically graded points (hidden checks included)
+    max_score      REAL NOT NULL,
+    source         TEXT NOT NULL,
+    title          TEXT NOT NULL,
+    sandbox        TEXT NOT NULL,
+    isolated       INTEGER NOT NULL,
+    duration       REAL NOT NULL,
+    stdout         TEXT NOT NULL,
+    stderr         TEXT NOT NULL,
+    notes          TEXT NOT NULL,           -- JSON list
+    manual         TEXT NOT NULL,           -- JSON list of the free-text items (answers, no scores)
+    UNIQUE (student_id, content_hash, grader_version, problem)
+);
+CREATE TABLE IF NOT EXISTS check_results (
+    submission_id INTEGER NOT NULL REFERENCES submissions (id) ON DELETE CASCADE,
+    check_id      TEXT NOT NULL,
+    problem       INTEGER NOT NULL,
+    title         TEXT NOT NULL,
+    status        TEXT NOT NULL,
+    score         REAL NOT NULL,
+    max_score     REAL NOT NULL,
+    message       TEXT NOT NULL,
+    hint          TEXT NOT NULL,
+    diagnosis     TEXT NOT NULL,
+    visibility    TEXT NOT NULL CHECK (visibility IN ('visible', 'hidden')),
+    stage         INTEGER NOT NULL,
+    seed          INTEGER,
+    duration      REAL NOT NULL,
+    figures       TEXT NOT NULL,           -- JSON list
+    position      INTEGER NOT NULL,
+    PRIMARY KEY (submission_id, check_id)
+);
+CREATE TABLE IF NOT EXISTS manual_scores (
+    student_id  INTEGER NOT NULL REFERENCES students (id),
+    problem     INTEGER NOT NULL,
+    key         TEXT NOT NULL,
+    score       REAL NOT NULL,
+    comment     TEXT NOT NULL DEFAULT '',
+    imported_at TEXT NOT NULL,
+    source      TEXT NOT NULL,
+    PRIMARY KEY (student_id, problem, key)
+);
+CREATE INDEX IF NOT EXISTS submissions_current ON submissions (student_id, problem, id);
+CREATE INDEX IF NOT EXISTS check_results_check ON check_results (check_id, status);
+"""
+
+#: the latest graded row of every (student, problem)
+_CURRENT = """
+SELECT s.*, st.name AS student FROM submissions s JOIN students st ON st.id = s.student_id
+WHERE s.id = (SELECT max(t.id) FROM submissions t WHERE t.student_id = s.student_id AND t.problem = s.problem)
+ORDER BY st.name, s.problem
+"""
+
+
+def now() -> str:
+    return datetime.now(timezone.utc).isoformat(timespec="microseconds")
+
+
+def grader_version(problem: int) -> str:
+    """The package version and a digest of the problem's check and probe modules."""
+    import importlib.util
+
+    from .runner import problem_module
+
+    digest = hashlib.sha256()
+    module = problem_module(problem)
+    paths = [getattr(module, "__file__", None)]
+    spec = importlib.util.find_spec(f"probes.problem_{problem:02d}")
+    paths.append(spec.origin if spec else None)
+    for path in paths:
+        if path and Path(path).is_file():
+            digest.update(Path(path).read_bytes() + b"\0")
+    return f"{__version__}+{digest.hexdigest()[:12]}"
+
+
+class ManualScoreError(ValueError):
+    """A manual-scores file that cannot be imported: every problem found, one per line."""
+
+
+@dataclass(frozen=True)
+class Graded:
+    """The current result of one problem of one student."""
+
+    student: str
+    content_hash: str
+    grader_version: str
+    run_id: int
+    graded_at: str
+    outcome: str
+    report: ProblemReport
+
+
+def _figure(data: dict) -> Figure:
+    series = tuple(Series(s["label"], tuple(s["x"]), tuple(s["y"]), s.get("role", "other")) for s in data["series"])
+    return Figure(data["title"], data["xlabel"], data["ylabel"], series, bool(data.get("equal_axes")))
+
+
+class Gradebook:
+    """The gradebook of one results folder.  Use as a context manager, or call ``close``."""
+
+    def __init__(self, path: str | Path):
+        self.path = Path(path)
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self.db = sqlite3.connect(self.path, isolation_level=None, timeout=30)
+        self.db.row_factory = sqlite3.Row
+        self.db.execute("PRAGMA journal_mode = WAL")
+        self.db.execute("PRAGMA synchronous = FULL")
+        self.db.execute("PRAGMA foreign_keys = ON")
+        self.db.executescript(
+            f"BEGIN IMMEDIATE; {SCHEMA} "
+            f"INSERT OR IGNORE INTO meta VALUES ('schema_version', '{SCHEMA_VERSION}'); COMMIT;"
+        )
+
+    @classmethod
+    def in_folder(cls, results_dir: str | Path) -> Gradebook:
+        return cls(Path(results_dir) / GRADEBOOK_NAME)
+
+    def close(self) -> None:
+        self.db.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @contextmanager
+    def transaction(self):
+        """One atomic write: committed entirely, or (on any exception, Ctrl-C included) not at all."""
+        self.db.execute("BEGIN IMMEDIATE")
+        try:
+            yield self.db
+        except BaseException:
+            if self.db.in_transaction:
+                self.db.execute("ROLLBACK")
+            raise
+        self.db.execute("COMMIT")
+
+    # ------------------------------------------------------------------ runs
+
+    def start_run(self, submissions_dir: str, problems: list[int], jobs: int, force: bool = False) -> int:
+        with self.transaction() as db:
+            cursor = db.execute(
+                "INSERT INTO runs (started_at, submissions_dir, problems, jobs, force) VALUES (?, ?, ?, ?, ?)",
+                (now(), str(submissions_dir), json.dumps(problems), jobs, int(force)),
+            )
+        return cursor.lastrowid
+
+    def finish_run(self, run_id: int, state: str, skipped: int) -> None:
+        with self.transaction() as db:
+            db.execute(
+                "UPDATE runs SET finished_at = ?, state = ?, skipped = ? WHERE id = ?",
+                (now(), state, skipped, run_id),
+            )
+
+    # ------------------------------------------------------------------ grading
+
+    def graded_problems(self, student: str, content_hash: str, versions: dict[int, str]) -> set[int]:
+        """The problems of ``versions`` whose result for this content and grader version is committed."""
+        rows = self.db.execute(
+            "SELECT s.problem, s.grader_version FROM submissions s JOIN students st ON st.id = s.student_id "
+            "WHERE st.name = ? AND s.content_hash = ?",
+            (student, content_hash),
+        )
+        return {row["problem"] for row in rows if versions.get(row["problem"]) == row["grader_version"]}
+
+    def record(
+        self,
+        student: str,
+        content_hash: str,
+        versions: dict[int, str],
+        run_id: int,
+        reports: list[ProblemReport],
+        outcome: str = "graded",
+        replace_existing: bool = False,
+    ) -> None:
+        """Commit a student's result: every problem and check in one transaction.
+
+        An existing result of the same key is an error (``sqlite3.IntegrityError``, nothing written) unless
+        ``replace_existing`` (a forced regrade), which replaces it in the same transaction."""
+        graded_at = now()
+        with self.transaction() as db:
+            db.execute("INSERT OR IGNORE INTO students (name) VALUES (?)", (student,))
+            (student_id,) = db.execute("SELECT id FROM students WHERE name = ?", (student,)).fetchone()
+            for report in reports:
+                key = (student_id, content_hash, versions[report.problem], report.problem)
+                if replace_existing:
+                    db.execute(
+                        "DELETE FROM submissions WHERE student_id = ? AND content_hash = ? AND grader_version = ? "
+                        "AND problem = ?",
+                        key,
+                    )
+                cursor = db.execute(
+                    "INSERT INTO submissions (student_id, content_hash, grader_version, problem, run_id, graded_at, "
+                    "seed, outcome, score, max_score, source, title, sandbox, isolated, duration, stdout, stderr, "
+                    "notes, manual) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                    (
+                        *key, run_id, graded_at, report.seed, outcome,
+                        sum(r.score for r in report.results), report.auto_max_score, report.submission,
+                        report.title, report.sandbox, int(report.isolated), report.duration, report.stdout,
+                        report.stderr, json.dumps(list(report.notes)),
+                        json.dumps([asdict(replace(m, score=None)) for m in report.manual]),
+                    ),
+                )
+                db.executemany(
+                    "INSERT INTO check_results (submission_id, check_id, problem, title, status, score, max_score, "
+                    "message, hint, diagnosis, visibility, stage, seed, duration, figures, position) "
+                    "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                    [
+                        (
+                            cursor.lastrowid, r.check_id, r.problem, r.title, r.status.value, r.score, r.max_score,
+                            r.message, r.hint, r.diagnosis, r.visibility, r.stage, r.seed, r.duration,
+                            json.dumps([asdict(f) for f in r.figures]), position,
+                        )
+                        for position, r in enumerate(report.results)
+                    ],
+                )
+            db.execute("UPDATE runs SET graded = graded + 1 WHERE id = ?", (run_id,))
+
+    # ------------------------------------------------------------------ reading
+
+    def current(self) -> list[Graded]:
+        """The latest result of every (student, problem), rebuilt as reports with the manual scores merged."""
+        manual = {
+            (row["name"], row["problem"], row["key"]): row["score"]
+            for row in self.db.execute(
+                "SELECT st.name, m.* FROM manual_scores m JOIN students st ON st.id = m.student_id")
+        }
+        graded = []
+        for row in self.db.execute(_CURRENT).fetchall():
+            checks = self.db.execute(
+                "SELECT * FROM check_results WHERE submission_id = ? ORDER BY position", (row["id"],)
+            )
+            results = tuple(
+                CheckResult(
+                    check_id=c["check_id"], problem=c["problem"], title=c["title"], status=Status(c["status"]),
+                    score=c["score"], max_score=c["max_score"], message=c["message"], hint=c["hint"],
+                    diagnosis=c["diagnosis"], visibility=c["visibility"], stage=c["stage"], seed=c["seed"],
+                    figures=tuple(_figure(f) for f in json.loads(c["figures"])), duration=c["duration"],
+                )
+                for c in checks
+            )
+            items = tuple(
+                ManualItem(**dict(item, score=manual.get((row["student"], row["problem"], item["key"]))))
+                for item in json.loads(row["manual"])
+            )
+            report = ProblemReport(
+                problem=row["problem"], title=row["title"], results=results, manual=items, sandbox=row["sandbox"],
+                isolated=bool(row["isolated"]), seed=row["seed"], duration=row["duration"], stdout=row["stdout"],
+                stderr=row["stderr"], submission=row["source"], grader_version=row["grader_version"],
+                notes=tuple(json.loads(row["notes"])),
+            )
+            graded.append(
+                Graded(row["student"], row["content_hash"], row["grader_version"], row["run_id"], row["graded_at"],
+                       row["outcome"], report)
+            )
+        return graded
+
+    # ------------------------------------------------------------------ manual scores
+
+    def import_manual(self, text: str, source: str = "") -> int:
+        """Merge a CSV of manual scores (columns student, problem, key, score and optionally comment; rows with
+        a blank score are skipped).  All rows are checked first; nothing is imported if any is wrong."""
+        items = {
+            (g.student, g.report.problem, m.key): m for g in self.current() for m in g.report.manual
+        }
+        reader = csv.DictReader(io.StringIO(text))
+        missing = {"student", "problem", "key", "score"} - set(reader.fieldnames or ())
+        if missing:
+            raise ManualScoreError(f"the file has no column {', '.join(sorted(missing))}")
+        rows, errors = [], []
+        for line, entry in enumerate(reader, start=2):
+            if not (entry.get("score") or "").strip():
+                continue
+            try:
+                key = (entry["student"].strip(), int(str(entry["problem"]).strip()), entry["key"].strip())
+                score = float(entry["score"])
+            except ValueError as exc:
+                errors.append(f"line {line}: {exc}")
+                continue
+            item = items.get(key)
+            if item is None:
+                errors.append(f"line {line}: {key[0]} has no free-text answer {key[2]!r} in problem {key[1]}")
+            elif not 0 <= score <= item.max_score:
+                errors.append(f"line {line}: score {score:g} is outside 0..{item.max_score:g}")
+            else:
+                rows.append((*key, score, (entry.get("comment") or "").strip()))
+        if errors:
+            raise ManualScoreError("\n".join(errors))
+        stamp = now()
+        with self.transaction() as db:
+            db.executemany(
+                "INSERT INTO manual_scores (student_id, problem, key, score, comment, imported_at, source) "
+                "SELECT id, ?, ?, ?, ?, ?, ? FROM students WHERE name = ? "
+                "ON CONFLICT (student_id, problem, key) DO UPDATE SET score = excluded.score, "
+                "comment = excluded.comment, imported_at = excluded.imported_at, source = excluded.source",
+                [(problem, key, score, comment, stamp, source, student)
+                 for student, problem, key, score, comment in rows],
+            )
+        return len(rows)
+
+    def manual_comments(self) -> dict[tuple[str, int, str], str]:
+        rows = self.db.execute("SELECT st.name, m.problem, m.key, m.comment FROM manual_scores m "
+                               "JOIN students st ON st.id = m.student_id")
+        return {(r["name"], r["problem"], r["key"]): r["comment"] for r in rows}

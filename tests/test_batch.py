@@ -1,0 +1,511 @@
+"""Batch grading: a class of 45 graded in parallel, killed with SIGKILL and resumed (every student graded once,
+with the right grade); Ctrl-C and a killed worker; regrading of changed work only; the per-student time bound;
+exports and the class summary; hidden checks; manual scores."""
+
+import base64
+import csv
+import io
+import json
+import os
+import re
+import signal
+import sqlite3
+import subprocess
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from grader.batch import BatchLocked, Progress, _locked, discover, export_results, run_batch, student_view
+from grader.cli import main
+from grader.errors import SubmissionError
+from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
+from grader.runner import grade_submission, problem_module
+from grader.sandbox import Limits
+
+from .batch_fixtures import (
+    BATCH_LIMITS,
+    HIDDEN_PROBLEM,
+    VERSIONS,
+    build_class,
+    build_slow,
+    hidden_check_module,
+    notebook_submission,
+    synthetic_report,
+    zip_folder,
+)
+from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
+
+LIMITS = Limits(call_timeout=BATCH_LIMITS["call_timeout"], import_timeout=BATCH_LIMITS["import_timeout"])
+CLI_LIMITS = ["--timeout", str(BATCH_LIMITS["call_timeout"]), "--import-timeout", str(BATCH_LIMITS["import_timeout"]),
+              "--student-timeout", str(BATCH_LIMITS["student_timeout"])]
+MISTAKES = {m.name: m for m in planted_mistakes(6)}
+
+
+def batch_command(submissions, out, *extra):
+    return [sys.executable, "-m", "grader.cli", "batch", str(submissions), "--out", str(out), "--problems", "6",
+            "--jobs", "2", *CLI_LIMITS, *extra]
+
+
+def rows(path, query, *args):
+    with sqlite3.connect(path, timeout=30) as db:
+        return db.execute(query, args).fetchall()
+
+
+def committed(path):
+    """How many problem results the gradebook holds (0 while it is being created)."""
+    try:
+        return rows(path, "SELECT count(*) FROM submissions")[0][0] if path.exists() else 0
+    except sqlite3.OperationalError:
+        return 0
+
+
+def graded_rows(path):
+    """(student, problem) -> (submission id, run id, graded at) of every graded row."""
+    return {(name, problem): rest for name, problem, *rest in rows(
+        path, "SELECT st.name, s.problem, s.id, s.run_id, s.graded_at FROM submissions s "
+              "JOIN students st ON st.id = s.student_id")}
+
+
+def descendants(pid):
+    found, todo = [], [pid]
+    while todo:
+        for task in Path(f"/proc/{todo.pop()}/task").glob("*"):
+            try:
+                children = [int(c) for c in (task / "children").read_text().split()]
+            except OSError:  # ended meanwhile
+                continue
+            found += children
+            todo += children
+    return found
+
+
+def cmdline(pid):
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return b""
+
+
+def alive(pid):
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
+    except (OSError, IndexError):
+        return False
+
+
+def assert_gone(pids, seconds=15):
+    """The processes end (workers, their sandboxes and the students' processes)."""
+    deadline = time.monotonic() + seconds
+    while any(alive(pid) for pid in pids) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    left = {pid: cmdline(pid)[:200] for pid in pids if alive(pid)}
+    assert not left, f"processes outlived the batch: {left}"
+
+
+def assert_grade(expected, submission, checks):
+    """One student's result against what the fixture says it must be."""
+    score, outcome = submission
+    name = expected.student
+    assert outcome == expected.outcome, name
+    assert score == sum(c["score"] for c in checks.values()) == sum(
+        c["max_score"] for c in checks.values() if c["status"] == "passed"), name
+    if expected.score is not None:
+        assert score == expected.score, (name, {k: c["status"] for k, c in checks.items()})
+    assert score <= expected.max_score, name
+    for check_id, check in checks.items():
+        allowed = expected.statuses.get(check_id, expected.statuses.get("*", expected.others))
+        assert not allowed or check["status"] in allowed, (name, check_id, check["status"], check["message"][:300])
+    for check_id, diagnosis in expected.diagnoses.items():
+        assert checks[check_id]["diagnosis"] == diagnosis, (name, check_id)
+    texts = [c["message"] + c["hint"] for c in checks.values() if c["status"] in expected.message_in]
+    if expected.message and texts:
+        assert any(expected.message in text for text in texts), (name, texts)
+
+
+# ------------------------------------------------------------------------------------------ the class
+
+
+@pytest.mark.slow
+def test_class_batch_killed_midway_resumes_with_every_student_graded_once(tmp_path):
+    """45 students (correct, template, planted mistakes, hostile, slow; folders, zips, notebooks) on 2 workers:
+    kill -9 the batch once some students are committed, rerun it, and check the gradebook and the grades."""
+    expected = build_class(tmp_path / "class")
+    assert len(expected) >= 40
+    out = tmp_path / "results"
+    db = out / GRADEBOOK_NAME
+    with open(tmp_path / "first.log", "w") as log:
+        first = subprocess.Popen(batch_command(tmp_path / "class", out), cwd=ROOT, stderr=log, stdout=log)
+        try:
+            deadline = time.monotonic() + 120
+            while committed(db) < 8 and first.poll() is None and time.monotonic() < deadline:
+                time.sleep(0.05)
+            workers = descendants(first.pid)
+            first.send_signal(signal.SIGKILL)
+        finally:
+            first.wait()
+    assert first.returncode == -signal.SIGKILL, "the batch finished before it could be killed"
+    assert workers, "no worker processes were seen"
+    assert_gone(workers)
+
+    before = graded_rows(db)
+    assert 8 <= len(before) < len(expected)
+    ((state, graded),) = rows(db, "SELECT state, graded FROM runs")
+    assert state == "running" and graded == len(before)  # killed: never finished, nothing half-written
+
+    second = subprocess.run(batch_command(tmp_path / "class", out), cwd=ROOT, capture_output=True, text=True,
+                            timeout=300)
+    assert second.returncode == 0, second.stderr[-3000:]
+    progress = [line for line in second.stderr.splitlines() if line.startswith("[")]
+    assert len(progress) == len(expected) - len(before)
+    assert all(re.search(r"\d+/\d+ done .* ETA", line) for line in progress)
+
+    after = graded_rows(db)
+    assert sorted(name for name, _ in after) == sorted(expected)  # every student, once (problem 6 only)
+    assert rows(db, "SELECT count(*) FROM submissions GROUP BY student_id, problem HAVING count(*) > 1") == []
+    assert {k: after[k] for k in before} == before  # the first run's rows were not regraded
+    runs = rows(db, "SELECT id, state, graded, skipped FROM runs ORDER BY id")
+    assert [r[1:] for r in runs] == [("running", len(before), 0),
+                                     ("finished", len(expected) - len(before), len(before))]
+    assert {run for _, run, _ in after.values()} == {runs[0][0], runs[1][0]}
+
+    # the grades
+    submissions = {name: (score, outcome) for name, score, outcome in rows(
+        db, "SELECT st.name, s.score, s.outcome FROM submissions s JOIN students st ON st.id = s.student_id")}
+    checks = {}
+    for name, *values in rows(db, "SELECT st.name, c.check_id, c.status, c.score, c.max_score, c.diagnosis, "
+                                  "c.message, c.hint, c.duration FROM check_results c JOIN submissions s "
+                                  "ON s.id = c.submission_id JOIN students st ON st.id = s.student_id"):
+        keys = ("check_id", "status", "score", "max_score", "diagnosis", "message", "hint", "duration")
+        check = dict(zip(keys, values))
+        checks.setdefault(name, {})[check["check_id"]] = check
+    assert {len(c) for c in checks.values()} == {7}
+    for name, exp in expected.items():
+        assert_grade(exp, submissions[name], checks[name])
+    with open(out / "grades.csv") as handle:
+        grades = {row["student"]: row for row in csv.DictReader(handle)}
+    assert {name: float(row["total"]) for name, row in grades.items()} == {
+        name: score for name, (score, _) in submissions.items()}
+
+    # a hostile submission costs at most its limits
+    slowest = max(c["duration"] for c in checks["hostile_infinite_loop_call"].values())
+    assert slowest <= BATCH_LIMITS["call_timeout"] + BATCH_LIMITS["import_timeout"] + 2
+    durations = dict(rows(db, "SELECT st.name, s.duration FROM submissions s JOIN students st ON st.id = s.student_id"))
+    assert max(durations.values()) <= BATCH_LIMITS["student_timeout"] + 5
+
+    # unchanged submissions are not graded again
+    third = subprocess.run(batch_command(tmp_path / "class", out), cwd=ROOT, capture_output=True, text=True,
+                           timeout=120)
+    assert third.returncode == 0 and f"0 graded, {len(expected)} unchanged" in third.stderr
+    assert graded_rows(db) == after
+
+
+# ------------------------------------------------------------------------------------------ a small class
+
+
+@pytest.fixture(scope="module")
+def small_class(tmp_path_factory):
+    """Seven students graded in-process with the batch API: the exports and the class summary."""
+    root = tmp_path_factory.mktemp("small")
+    subs = root / "subs"
+    subs.mkdir()
+    copy_reference(subs / "alice")
+    zip_folder(copy_reference(root / "bob"), subs / "bob.zip", top="bob")
+    notebook_submission(subs / "carol")
+    build_planted(MISTAKES["p06-vectors-transpose"], subs / "dave")
+    build_planted(MISTAKES["p06-R1-degrees"], subs / "erin")
+    copy_template(subs / "frank")
+    (subs / "gina.zip").write_bytes(b"this is not a zip archive")
+    out = root / "results"
+    report = run_batch(subs, out, problems=[6], jobs=2, limits=LIMITS, progress=False)
+    return subs, out, report
+
+
+def test_small_class_grades_and_exports(small_class):
+    subs, out, report = small_class
+    assert (report.students, report.graded, report.skipped, report.interrupted) == (7, 7, 0, False)
+    with open(out / "grades.csv") as handle:
+        table = list(csv.reader(handle))
+    assert table[0] == ["student", "problem_6", "total", "possible"]
+    assert {row[0]: float(row[2]) for row in table[1:]} == {
+        "alice": 10, "bob": 10, "carol": 10, "dave": 8, "erin": 3, "frank": 0, "gina": 0}
+    for name in ("alice", "bob", "carol", "dave", "erin", "frank", "gina"):
+        results = json.loads((out / "students" / name / "results.json").read_text())
+        assert len(results["tests"]) == 7
+        assert "score" not in results  # Gradescope totals the tests, applying their visibility
+        assert sum(t["score"] for t in results["tests"]) == float(next(r[2] for r in table if r[0] == name))
+        html = (out / "students" / name / "report.html").read_text()
+        assert f"Grading report: {name}" in html and "Problem 6" in html
+    gina = (out / "students" / "gina" / "report.html").read_text()
+    assert "could not be loaded" in gina and "not a readable zip archive" in gina
+    with Gradebook.in_folder(out) as book:
+        stored = {g.student: g.report for g in book.current()}
+    assert stored["alice"].seed == stored["bob"].seed != stored["dave"].seed  # the seed follows the content
+    # the seed reproduces the randomized checks: the same minimal failing input, the same messages
+    (again,) = grade_submission(subs / "erin", [6], seed=stored["erin"].seed, limits=LIMITS)
+    assert [(r.status, r.message) for r in again.results] == [(r.status, r.message) for r in stored["erin"].results]
+    assert "(minimal failing input found by hypothesis" in again.results[2].message
+
+
+def test_class_summary_has_every_plot_and_table(small_class):
+    _, out, _ = small_class
+    html = (out / "summary.html").read_text()
+    images = re.findall(r'<img alt="([^"]+)" src="data:image/png;base64,([^"]+)"', html)
+    assert [alt for alt, _ in images] == ["Total score distribution", "Problem 6: score distribution",
+                                          "Checks failed most often"]
+    for _, data in images:
+        png = base64.b64decode(data)
+        assert png.startswith(b"\x89PNG\r\n\x1a\n") and len(png) > 2000
+    for table in ("problems", "failing-checks", "diagnoses", "trouble-table", "students"):
+        assert re.search(rf'<table id="{table}">.*?<tr>.*?</table>', html, re.S), table
+    gradebook = re.search(r'<table id="students">(.*?)</table>', html, re.S).group(1)
+    assert gradebook.count("<tr>") == 1 + 7
+    assert "14% of students</strong> transposed a rotation matrix (A_BI for A_IB) in problem 6" in html
+    assert "14% of students</strong> used degrees where radians are expected in problem 6" in html
+    trouble = re.search(r'<table id="trouble-table">(.*?)</table>', html, re.S).group(1)
+    assert "gina" in trouble and "alice" not in trouble and "frank" not in trouble
+
+
+def test_an_unchanged_class_is_skipped_a_changed_student_regraded_and_force_regrades_all(tmp_path):
+    subs = tmp_path / "subs"
+    build_planted(MISTAKES["p06-vectors-transpose"], subs / "dave")
+    copy_reference(subs / "alice")
+    out = tmp_path / "results"
+    first = run_batch(subs, out, problems=[6], jobs=1, limits=LIMITS, progress=False)
+    assert (first.graded, first.skipped) == (2, 0)
+    rows_first = graded_rows(out / GRADEBOOK_NAME)
+
+    copy_reference(tmp_path / "fixed")
+    (subs / "dave" / "problem_06.py").write_text((tmp_path / "fixed" / "problem_06.py").read_text())
+    second = run_batch(subs, out, problems=[6], jobs=1, limits=LIMITS, progress=False)
+    assert (second.graded, second.skipped) == (1, 1)
+    with Gradebook.in_folder(out) as book:
+        current = {g.student: g for g in book.current()}
+        assert book.db.execute("SELECT count(*) FROM submissions").fetchone()[0] == 3  # dave's first kept
+    assert current["dave"].report.score == 10 and current["dave"].run_id == second.run_id
+    assert current["alice"].run_id == first.run_id
+    assert "dave,10,10,10" in (out / "grades.csv").read_text()
+
+    forced = run_batch(subs, out, problems=[6], jobs=1, limits=LIMITS, progress=False, force=True)
+    assert (forced.graded, forced.skipped) == (2, 0)
+    rows_forced = graded_rows(out / GRADEBOOK_NAME)
+    assert len(rows_forced) == 2 and {run for _, run, _ in rows_forced.values()} == {forced.run_id}
+    assert rows_forced.keys() == rows_first.keys()
+
+
+def test_a_student_over_the_time_bound_is_stopped_and_recorded(tmp_path):
+    subs = tmp_path / "subs"
+    build_slow(subs / "slow_student")
+    copy_reference(subs / "ref_dir_01")
+    start = time.monotonic()
+    report = run_batch(subs, tmp_path / "out", problems=[6], jobs=2, limits=LIMITS, student_timeout=3,
+                       progress=False, export=False)
+    assert time.monotonic() - start < 20
+    assert report.timed_out == ["slow_student"] and report.graded == 2
+    with Gradebook.in_folder(tmp_path / "out") as book:
+        outcomes = {g.student: (g.outcome, g.report.score, {r.status.value for r in g.report.results})
+                    for g in book.current()}
+    assert outcomes == {"slow_student": ("timeout", 0, {"timeout"}), "ref_dir_01": ("graded", 10, {"passed"})}
+
+
+def test_ctrl_c_stops_the_batch_cleanly_keeping_what_was_graded(tmp_path):
+    subs = tmp_path / "subs"
+    copy_reference(subs / "alice")
+    build_slow(subs / "slow_student")
+    copy_reference(subs / "zoe")
+    out = tmp_path / "results"
+    batch = subprocess.Popen(batch_command(subs, out), cwd=ROOT, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not committed(out / GRADEBOOK_NAME) and time.monotonic() < deadline and batch.poll() is None:
+            time.sleep(0.05)
+        workers = descendants(batch.pid)
+        batch.send_signal(signal.SIGINT)
+        _, stderr = batch.communicate(timeout=30)
+    finally:
+        batch.kill()
+    assert batch.returncode == 130 and "rerun the same command to finish" in stderr
+    assert_gone(workers)
+    ((state, graded),) = rows(out / GRADEBOOK_NAME, "SELECT state, graded FROM runs")
+    assert state == "interrupted" and 1 <= graded < 3 and len(graded_rows(out / GRADEBOOK_NAME)) == graded
+    assert not (out / "grades.csv").exists()  # exports wait for a finished batch
+
+
+def test_a_worker_killed_midway_costs_only_its_student_who_is_graded_on_the_rerun(tmp_path):
+    subs = tmp_path / "subs"
+    names = [f"student_{i}" for i in range(8)]
+    for name in names:
+        copy_reference(subs / name)
+    out = tmp_path / "results"
+    command = batch_command(subs, out)
+    (tmp_path / "tmp").mkdir()  # what the killed workers leave behind (their private copies) stays in here
+    env = {**os.environ, "TMPDIR": str(tmp_path / "tmp")}
+    batch = subprocess.Popen(command, cwd=ROOT, stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        deadline = time.monotonic() + 60
+        while not committed(out / GRADEBOOK_NAME) and time.monotonic() < deadline and batch.poll() is None:
+            time.sleep(0.05)
+        for pid in descendants(batch.pid):
+            if b"spawn_main" in cmdline(pid):
+                os.kill(pid, signal.SIGKILL)  # as the kernel's OOM killer would
+        _, stderr = batch.communicate(timeout=60)
+    finally:
+        batch.kill()
+    assert batch.returncode == 3 and "not graded:" in stderr and "exit code -9" in stderr
+    first = graded_rows(out / GRADEBOOK_NAME)
+    lost = stderr.count("not graded:")
+    assert len(first) == 8 - lost  # the others went on with fresh workers; the lost ones are not recorded
+    rerun = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=120, env=env)
+    assert rerun.returncode == 0 and f"{lost} graded, {8 - lost} unchanged" in rerun.stderr
+    assert sorted(name for name, _ in graded_rows(out / GRADEBOOK_NAME)) == names
+
+
+# ------------------------------------------------------------------------------------------ visibility, manual
+
+
+@pytest.fixture
+def hidden_problem(monkeypatch):
+    """Problem 99: a visible check, a hidden check and a free-text question (a test-only check module)."""
+    monkeypatch.setitem(sys.modules, f"checks.problem_{HIDDEN_PROBLEM}", hidden_check_module())
+    problem_module.cache_clear()
+    yield HIDDEN_PROBLEM
+    problem_module.cache_clear()
+
+
+def grade_into(book, run, name, source):
+    versions = {HIDDEN_PROBLEM: grader_version(HIDDEN_PROBLEM)}
+    reports = grade_submission(source, [HIDDEN_PROBLEM], seed=7, limits=LIMITS)
+    book.record(name, name, versions, run, reports)
+    return reports
+
+
+def test_hidden_checks_count_for_the_instructor_and_stay_hidden_from_the_student(hidden_problem, tmp_path):
+    good = copy_reference(tmp_path / "good")
+    bad = build_planted(MISTAKES["p06-vectors-transpose"], tmp_path / "bad")
+    for folder, answer in ((good, "Its columns are unit vectors, orthogonal to each other."), (bad, "")):
+        with open(folder / "answers.toml", "a") as handle:
+            handle.write(f'\n[problem_{HIDDEN_PROBLEM}.free_text]\nwhy = "{answer}"\n')
+    out = tmp_path / "results"
+    with Gradebook.in_folder(out) as book:
+        run = book.start_run("subs", [HIDDEN_PROBLEM], 1)
+        (good_report,) = grade_into(book, run, "good", good)
+        (bad_report,) = grade_into(book, run, "bad", bad)
+        export_results(out, book)
+    assert [r.status.value for r in good_report.results] == ["passed", "passed"]
+    assert [r.status.value for r in bad_report.results] == ["passed", "failed"]
+
+    with open(out / "grades.csv") as handle:
+        totals = {row["student"]: (row["total"], row["possible"]) for row in csv.DictReader(handle)}
+    assert totals == {"bad": ("1", "6"), "good": ("4", "6")}  # hidden points count for the instructor
+
+    for name, visible in (("good", "1 / 4"), ("bad", "1 / 4")):
+        html = (out / "students" / name / "report.html").read_text()
+        assert f"<strong>{visible}</strong>" in html  # the visible score only
+        assert "1 hidden check worth 3 points" in html
+        assert "SECRET" not in html and "all passed" not in html.lower()
+        assert "transpose" not in html
+    results = json.loads((out / "students" / "bad" / "results.json").read_text())
+    secret = [t for t in results["tests"] if t["number"].endswith("secret_vector")]
+    assert [t["visibility"] for t in secret] == ["after_due_date"]
+
+    summary = (out / "summary.html").read_text()
+    assert "SECRET: the coordinates of V in I" in summary  # the instructor sees the hidden check fail
+    assert "Its columns are unit vectors" in summary  # and the free-text answers to score
+
+    view = student_view(bad_report)
+    hidden = [r for r in view.results if r.visibility == "hidden"]
+    assert [(r.title, r.message, r.score, r.diagnosis) for r in hidden] == [("hidden check", "", 0.0, "")]
+    assert view.auto_max_score == bad_report.auto_max_score
+
+
+def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, tmp_path, capsys):
+    good = copy_reference(tmp_path / "good")
+    with open(good / "answers.toml", "a") as handle:
+        handle.write(f'\n[problem_{HIDDEN_PROBLEM}.free_text]\nwhy = "Orthogonal unit columns."\n')
+    out = tmp_path / "results"
+    with Gradebook.in_folder(out) as book:
+        run = book.start_run("subs", [HIDDEN_PROBLEM], 1)
+        grade_into(book, run, "good", good)
+    assert main(["export", str(out)]) == 0
+    listed = list(csv.DictReader(io.StringIO((out / "manual_answers.csv").read_text())))
+    assert [(r["student"], r["key"], r["answer"], r["score"], r["max_score"]) for r in listed] == [
+        ("good", "why", "Orthogonal unit columns.", "", "2")]
+
+    scores = tmp_path / "scores.csv"
+    scores.write_text((out / "manual_answers.csv").read_text().replace(",why,,2,", ",why,9,2,"))
+    assert main(["import-manual", str(out), str(scores)]) == 2
+    assert "outside 0..2" in capsys.readouterr().err
+    scores.write_text((out / "manual_answers.csv").read_text().replace(",why,,2,", ",why,1.5,2,"))
+    assert main(["import-manual", str(out), str(scores)]) == 0
+    assert "good,5.5,5.5,6" in (out / "grades.csv").read_text()
+    assert sum(t["score"] for t in json.loads((out / "students" / "good" / "results.json").read_text())["tests"]) == 5.5
+    assert ",why,1.5,2," in (out / "manual_answers.csv").read_text()
+
+
+def export_hostile_text(tmp_path):
+    """Exports of a student whose free-text answer and printed output are markup."""
+    report = synthetic_report(6, failed=(1,), manual=True)
+    report = replace(report, stdout="<script>alert('out')</script>",
+                     manual=(replace(report.manual[0], answer="<script>alert('answer')</script>"),))
+    with Gradebook.in_folder(tmp_path) as book:
+        book.record("mallory", "h", VERSIONS, book.start_run("subs", [6], 1), [report])
+        export_results(tmp_path, book)
+    return tmp_path
+
+
+def test_the_class_summary_escapes_student_text(tmp_path):
+    summary = (export_hostile_text(tmp_path) / "summary.html").read_text()
+    assert "&lt;script&gt;alert(&#39;answer&#39;)&lt;/script&gt;" in summary and "<script>" not in summary
+
+
+def test_the_student_report_escapes_student_text(tmp_path):
+    report = (export_hostile_text(tmp_path) / "students" / "mallory" / "report.html").read_text()
+    assert "<script>" not in report
+
+
+# ------------------------------------------------------------------------------------------ pieces
+
+
+def test_discover_names_students_and_refuses_ambiguity(tmp_path):
+    subs = tmp_path / "subs"
+    (subs / "alice").mkdir(parents=True)
+    (subs / "alice" / "problem_06.py").write_text("x = 1\n")
+    (subs / "bob.zip").write_bytes(b"not a zip")
+    (subs / "carol.ipynb").write_text("{}")
+    (subs / "notes.txt").write_text("hello")
+    (subs / ".DS_Store").write_text("")
+    (subs / "results").mkdir()
+    entries, ignored = discover(subs, exclude=subs / "results")
+    assert [e.name for e in entries] == ["alice", "bob", "carol"] and ignored == ["notes.txt"]
+    assert entries[1].content_hash.startswith("unloadable-")
+    (subs / "alice.zip").write_bytes(b"")
+    with pytest.raises(SubmissionError, match="both be the student 'alice'"):
+        discover(subs)
+
+
+def test_one_writer_per_results_folder(tmp_path):
+    (tmp_path / "subs").mkdir()
+    Gradebook.in_folder(tmp_path / "out").close()
+    with _locked(tmp_path / "out"):
+        with pytest.raises(BatchLocked):
+            run_batch(tmp_path / "subs", tmp_path / "out", problems=[6], progress=False)
+        assert main(["export", str(tmp_path / "out")]) == 2
+
+
+def test_progress_redraws_on_a_terminal_and_writes_lines_otherwise():
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    terminal, log = Terminal(), io.StringIO()
+    for stream in (terminal, log):
+        bar = Progress(4, skipped=1, stream=stream)
+        bar.advance("alice", "10/10 (0.3 s)")
+        bar.advance("bob", "0/10 (0.1 s)")
+        bar.close()
+    assert terminal.getvalue().count("\r\033[K") == 2 and "2/4 done (1 unchanged, skipped)" in terminal.getvalue()
+    assert "ETA" in terminal.getvalue() and "█" in terminal.getvalue()
+    lines = log.getvalue().splitlines()
+    assert lines[0].startswith("[1/4] alice: 10/10 (0.3 s) · 1/4 done") and lines[1].startswith("[2/4] bob")
