@@ -1,0 +1,673 @@
+"""Shared checks of the kinematic-tree problems (24, 25, 31-35).
+
+* Random trees as plain data (``trees``, ``cases``): random joint types, parents, offsets, joint-frame orientations,
+  coordinate numbering, ``q``, ``qd``, ``qdd``.  The probe builds the same description with the student's classes
+  and, in the grader, with the reference's.
+* Mistaken copies of the reference recursion (``Model``, ``MODELS``): the reference's formulas with one known
+  mistake switched on, built from the same description, give the value a student with that mistake computes.
+* ``compare_states`` names the first body, in recursion order from the root, and the first quantity where the
+  student's kinematics depart from the reference; ``compare_jacobians`` and ``compare_path`` check the student's
+  Jacobians, velocities and accelerations against finite differences of the student's own kinematics.
+"""
+
+import functools
+from dataclasses import dataclass
+from types import SimpleNamespace
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    CheckFailure,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    assert_rotation,
+    close,
+    fail,
+    figure,
+    format_array,
+)
+from probes import _trees as probe_trees
+from reference.rotations import cardan, skew
+
+__all__ = [
+    "H",
+    "DIFFERENCES",
+    "ORDER",
+    "trees",
+    "cases",
+    "rich_case",
+    "compare_fixed",
+    "compare_trees",
+    "describe_case",
+    "describe_tree",
+    "RollingWrongWay",
+    "Model",
+    "MODELS",
+    "mistaken_state",
+    "candidates",
+    "bodies_of",
+    "compare_states",
+    "tree_comparison",
+    "compare_jacobians",
+    "compare_path",
+    "compare_jacobian_differences",
+    "compare_path_differences",
+    "configuration_figure",
+]
+
+#: step of the finite differences and their tolerance (central differences: error ~ h^2)
+H = 1e-5
+DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-6, 1e-6)
+#: the body quantities in the order the recursion computes them
+ORDER = probe_trees.POSE + probe_trees.MOTION
+NQ = {"rotational": 1, "translational": 1, "rolling_contact": 1, "virtual_3dof": 3, "rigid": 0}
+
+# ------------------------------------------------------------------------------------------ random trees
+
+_SEEDS = st.integers(0, 2**32 - 1)
+
+
+def _geometry(seed, kind, nq):
+    """A joint's offsets and frames (with ``r``, or ``c`` and ``U``, for its kind) and its successor's mass from
+    ``seed``; seed 0 gives the plainest joint: no offsets, aligned frames."""
+    if seed == 0:
+        joint = {"P_r_PDp": np.zeros(3), "A_PDp": np.eye(3), "S_r_SDs": np.zeros(3), "A_SDs": np.eye(3)}
+        r, c, U, m = 0.5, np.eye(1, nq).ravel(), np.eye(3, nq, 1), 1.0
+    else:
+        rng = np.random.default_rng(seed)
+        joint = {"P_r_PDp": rng.uniform(-1, 1, 3), "A_PDp": cardan(*rng.uniform(-np.pi, np.pi, 3)),
+                 "S_r_SDs": rng.uniform(-1, 1, 3), "A_SDs": cardan(*rng.uniform(-np.pi, np.pi, 3))}
+        r, c, U, m = rng.uniform(0.1, 1.0), rng.uniform(-1.5, 1.5, nq), rng.uniform(-1, 1, (3, nq)), rng.uniform(0.1, 5)
+    if kind == "rolling_contact":
+        joint["r"] = float(r)
+    if kind == "test":
+        joint.update(c=c, U=U)
+    return joint, float(m)
+
+
+def _values(seed, n):
+    return np.zeros(n) if seed == 0 else np.random.default_rng(seed).uniform(-2.0, 2.0, n)
+
+
+@st.composite
+def trees(draw, kinds, max_joints=4, masses=False):
+    """Tree descriptions: two to ``max_joints`` joints of the given ``kinds`` (``"test"`` is the probe's own joint),
+    each hanging at a random earlier body (shrinking towards a chain) with random offsets and joint frames (drawn
+    from a seed per joint, shrinking towards aligned frames without offsets); the coordinates are numbered in a
+    random order.  The first joint moves, so ``nq >= 1``."""
+    n = draw(st.integers(min(2, max_joints), max_joints))
+    joints, sizes, bodies = [], [], [{"name": "body_0", "m": 1.0}]
+    for k in range(n):
+        kind = draw(st.sampled_from([kind for kind in kinds if kind != "rigid"] if k == 0 else list(kinds)))
+        parent = k - draw(st.integers(0, k))
+        nq = draw(st.integers(1, 2)) if kind == "test" else NQ[kind]
+        geometry, mass = _geometry(draw(_SEEDS), kind, nq)
+        joints.append({"kind": kind, "parent": parent, **geometry})
+        sizes.append(nq)
+        bodies.append({"name": f"body_{k + 1}", "m": mass if masses else 1.0})
+    order = draw(st.permutations(range(sum(sizes))))
+    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
+        joint["q_index"] = [int(i) for i in order[start:start + size]]
+    return {"bodies": bodies, "joints": joints}
+
+
+def cases(kinds, motion=True, masses=False, extra=()):
+    """``(description, q[, qd, qdd], *extra)`` with coordinates, velocities and accelerations in [-2, 2] (each
+    drawn from a seed, shrinking towards zero)."""
+
+    @st.composite
+    def draw_case(draw):
+        description = draw(trees(kinds, masses=masses))
+        nq = sum(len(joint["q_index"]) for joint in description["joints"])
+        values = [_values(draw(_SEEDS), nq) for _ in range(3 if motion else 1)]
+        return (description, *values, *extra)
+
+    return draw_case()
+
+
+def rich_case(kinds, motion=True, masses=False, extra=(), seed=24):
+    """A fixed case in the format of ``cases`` that exercises every term: a chain through all ``kinds`` (after a
+    first joint of ``kinds[0]``) plus a branch at body 1, random geometry, coordinates numbered in random order and
+    values bounded away from zero."""
+    rng = np.random.default_rng(seed)
+    sequence = [kinds[0], *kinds, kinds[-1]]
+    joints, sizes = [], []
+    for k, kind in enumerate(sequence):
+        joint = {"kind": kind, "parent": 1 if k == len(sequence) - 1 else k, "P_r_PDp": rng.uniform(-1, 1, 3),
+                 "A_PDp": cardan(*rng.uniform(-np.pi, np.pi, 3)), "S_r_SDs": rng.uniform(-1, 1, 3),
+                 "A_SDs": cardan(*rng.uniform(-np.pi, np.pi, 3))}
+        nq = NQ.get(kind, 2)
+        if kind == "rolling_contact":
+            joint["r"] = 0.4
+        if kind == "test":
+            joint["c"], joint["U"] = rng.uniform(0.5, 1.5, 2) * [1, -1], rng.uniform(-1, 1, (3, 2))
+        joints.append(joint)
+        sizes.append(nq)
+    order = rng.permutation(sum(sizes))
+    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
+        joint["q_index"] = [int(i) for i in order[start:start + size]]
+    bodies = [{"name": f"body_{k}", "m": float(rng.uniform(0.5, 3.0)) if masses else 1.0}
+              for k in range(len(joints) + 1)]
+    values = [rng.uniform(0.3, 1.5, len(order)) * rng.choice([-1, 1], len(order)) for _ in range(3 if motion else 1)]
+    return ({"bodies": bodies, "joints": joints}, *values, *extra)
+
+
+def compare_fixed(ctx, probe, args, compare, describe=None):
+    """``compare`` the student's and the reference's ``probe`` on one fixed case; a failure names the case."""
+    got = ctx.student(probe, *args)
+    expected = ctx.reference(probe, *args)
+    try:
+        compare(got, expected, args)
+    except CheckFailure as exc:
+        first, _, rest = exc.message.partition("\n")
+        shown = (describe or describe_case)(args)
+        raise CheckFailure(f"{first}\non the fixed case {shown}\n{rest}", exc.hint, exc.diagnosis) from None
+
+
+def compare_trees(ctx, probe, kinds, compare, motion=True, masses=False, extra=(), examples=15, name="the tree"):
+    """``compare`` on the fixed rich case, then on random trees of the given ``kinds``."""
+    compare_fixed(ctx, probe, rich_case(kinds, motion, masses, extra), compare)
+    ctx.compare_random(probe, cases(kinds, motion, masses, extra), name=name, tol=EXACT, compare=compare,
+                       examples=examples, describe=describe_case)
+
+
+def _compact(a):
+    """Short text of a vector or matrix; a rotation as ``cardan(alpha, beta, gamma)`` (``R3 R2 R1``)."""
+    a = np.asarray(a, dtype=float)
+    if a.shape == (3, 3) and np.allclose(a, np.eye(3)):
+        return "E"
+    if a.shape == (3, 3) and np.allclose(a.T @ a, np.eye(3)) and abs(a[2, 0]) < 1.0:
+        angles = np.arctan2(a[2, 1], a[2, 2]), -np.arcsin(a[2, 0]), np.arctan2(a[1, 0], a[0, 0])
+        if np.allclose(cardan(*angles), a):
+            return "cardan({:.4f}, {:.4f}, {:.4f})".format(*angles)
+    return " ".join(format_array(a).split())
+
+
+_KIND_NAMES = {"test": "test joint (rotation c @ q about the Dp 3-axis, translation U @ q)",
+               "virtual_3dof": "virtual 3-DOF", "rolling_contact": "rolling contact"}
+
+
+def describe_case(args):
+    """A readable description of ``(description, q, ...)``."""
+    description, *values = args
+    names = [body["name"] for body in description["bodies"]]
+    lines = [f"a tree of {len(names)} bodies (joint k leads to body_k):"]
+    for k, joint in enumerate(description["joints"]):
+        extra = ""
+        if joint["kind"] == "rolling_contact":
+            extra = f", r = {joint['r']:.4g}"
+        elif joint["kind"] == "test":
+            extra = f", c = {_compact(joint['c'])}, U = {_compact(joint['U'])}"
+        lines.append(
+            f"  joint {k + 1}: {_KIND_NAMES.get(joint['kind'], joint['kind'])} {names[joint['parent']]} -> "
+            f"{names[k + 1]}, q_index {joint['q_index']}, P_r_PDp = {_compact(joint['P_r_PDp'])}, "
+            f"A_PDp = {_compact(joint['A_PDp'])}, S_r_SDs = {_compact(joint['S_r_SDs'])}, "
+            f"A_SDs = {_compact(joint['A_SDs'])}{extra}")
+    for label, value in zip(("q", "qd", "qdd"), values):
+        if isinstance(value, np.ndarray):
+            lines.append(f"  {label} = {_compact(value)}")
+    return "\n".join(lines)
+
+
+def describe_tree(tree):
+    """The plain-data description of a reference ``KinematicTree``."""
+    from reference import tree as reference_tree
+
+    kinds = {getattr(reference_tree, name): kind for kind, name in probe_trees.CLASSES.items()}
+    index = {id(body): k for k, body in enumerate(tree.bodies)}
+    joints = []
+    for body in tree.bodies[1:]:
+        joint = body.parent_joint
+        entry = {"kind": kinds[type(joint)], "parent": index[id(joint.predecessor)],
+                 "q_index": [int(i) for i in joint.q_index], "P_r_PDp": joint.P_r_PDp.copy(),
+                 "A_PDp": joint.A_PDp.copy(), "S_r_SDs": joint.S_r_SDs.copy(), "A_SDs": joint.A_SDs.copy()}
+        if entry["kind"] == "rolling_contact":
+            entry["r"] = joint.r
+        joints.append(entry)
+    return {"bodies": [{"name": body.name, "m": body.m} for body in tree.bodies], "joints": joints}
+
+
+# ------------------------------------------------------------------------------------------ mistaken copies
+
+
+def _pose(joint, A_DpDs, r_rel, transpose=False, ds_transpose=False, reverse="", offset_sign=-1.0,
+          offset_in_dp=False):
+    """``Joint.successor_pose`` of the reference with a mistake switched on (``reverse``: "all" products or the
+    "joint" rotation's product in the wrong order)."""
+    P = joint.predecessor
+    A_PDp = joint.A_PDp.T if transpose else joint.A_PDp
+    A_SDs = joint.A_SDs.T if ds_transpose else joint.A_SDs
+    if reverse == "all":
+        A_IS = A_SDs.T @ A_DpDs @ A_PDp @ P.A_IB
+    elif reverse == "joint":
+        A_IS = A_DpDs @ P.A_IB @ A_PDp @ A_SDs.T
+    else:
+        A_IS = P.A_IB @ A_PDp @ A_DpDs @ A_SDs.T
+    Dp_r_IDp = A_PDp.T @ P.B_r_IB + joint.P_r_PDp if offset_in_dp else A_PDp.T @ (P.B_r_IB + joint.P_r_PDp)
+    return A_IS, A_SDs @ (A_DpDs.T @ (Dp_r_IDp + r_rel)) + offset_sign * joint.S_r_SDs
+
+
+def _motion(joint, A_DpDs, r_rel, rel, transpose=False, coriolis=2.0, transport=1.0, centripetal_dp=1.0,
+            centripetal_ds=1.0, offset_sign=-1.0):
+    """``Joint.successor_motion`` of the reference with a mistake switched on."""
+    P = joint.predecessor
+    A_DpP = joint.A_PDp if transpose else joint.A_PDp.T
+    P_Om, P_dOm = skew(P.B_omega_B), skew(P.B_omegaDot_B)
+    Dp_omega, Dp_omegaDot = A_DpP @ P.B_omega_B, A_DpP @ P.B_omegaDot_B
+    Dp_v = A_DpP @ (P.B_v_B + P_Om @ joint.P_r_PDp)
+    Dp_a = A_DpP @ (P.B_a_B + (P_dOm + centripetal_dp * P_Om @ P_Om) @ joint.P_r_PDp)
+    Om, dOm = skew(Dp_omega), skew(Dp_omegaDot)
+    A_DsDp = A_DpDs.T
+    Ds_omega = A_DsDp @ (Dp_omega + rel.omega_rel)
+    Ds_v = A_DsDp @ (Dp_v + rel.r_rel_dot + Om @ r_rel)
+    Ds_omegaDot = A_DsDp @ (Dp_omegaDot + rel.omega_rel_dot + transport * Om @ rel.omega_rel)
+    Ds_a = A_DsDp @ (Dp_a + rel.r_rel_ddot + coriolis * Om @ rel.r_rel_dot + (dOm + Om @ Om) @ r_rel)
+    S_omega, S_omegaDot = joint.A_SDs @ Ds_omega, joint.A_SDs @ Ds_omegaDot
+    S_Om, S_dOm = skew(S_omega), skew(S_omegaDot)
+    S_v = joint.A_SDs @ Ds_v + offset_sign * S_Om @ joint.S_r_SDs
+    S_a = joint.A_SDs @ Ds_a + offset_sign * (S_dOm + centripetal_ds * S_Om @ S_Om) @ joint.S_r_SDs
+    return S_v, S_omega, S_a, S_omegaDot
+
+
+def _jacobians(joint, A_DpDs, r_rel, rel, transpose=False, shift=0, lever=1.0, offset_sign=-1.0):
+    """``Joint.successor_jacobians`` of the reference with a mistake switched on."""
+    P = joint.predecessor
+    nq = P.B_J_S.shape[1]
+    columns = (joint.q_index + shift) % nq
+    S, R = np.zeros((3, nq)), np.zeros((3, nq))
+    S[:, columns], R[:, columns] = rel.S, rel.R
+    A_PDp = joint.A_PDp.T if transpose else joint.A_PDp
+    A_SP = (A_PDp @ A_DpDs @ joint.A_SDs.T).T
+    S_J_R = A_SP @ (P.B_J_R + A_PDp @ R)
+    arm = lever * skew(joint.P_r_PDp + A_PDp @ r_rel)
+    S_J_S = A_SP @ (P.B_J_S + A_PDp @ S - arm @ P.B_J_R) - offset_sign * skew(joint.S_r_SDs) @ S_J_R
+    return S_J_S, S_J_R
+
+
+class _Mistaken:
+    """Generic recursion of the reference with the mistake's switches (class attributes of a subclass)."""
+
+    mistake_pose = mistake_motion = mistake_jacobians = {}
+
+    def successor_pose(self, A_DpDs, Dp_r_DpDs):
+        return _pose(self, A_DpDs, Dp_r_DpDs, **self.mistake_pose)
+
+    def successor_motion(self, A_DpDs, Dp_r_DpDs, rel):
+        return _motion(self, A_DpDs, Dp_r_DpDs, rel, **self.mistake_motion)
+
+    def successor_jacobians(self, A_DpDs, Dp_r_DpDs, rel):
+        return _jacobians(self, A_DpDs, Dp_r_DpDs, rel, **self.mistake_jacobians)
+
+
+class _RotationalSign:
+    """A rotational joint turning the wrong way: ``A_DpDs = R3(-gamma)``."""
+
+    def joint_pose(self, q):
+        A_DpDs, r_rel = super().joint_pose(q)
+        return A_DpDs.T, r_rel
+
+    def joint_motion(self, q, qd, qdd):
+        rel = super().joint_motion(q, qd, qdd)
+        return rel._replace(omega_rel=-rel.omega_rel, omega_rel_dot=-rel.omega_rel_dot, R=-rel.R)
+
+
+class _RollingMotionSign:
+    """A rolling contact whose relative motion has the wrong sign: ``S = (+r, 0, 0)``."""
+
+    def joint_motion(self, q, qd, qdd):
+        rel = super().joint_motion(q, qd, qdd)
+        return rel._replace(r_rel_dot=-rel.r_rel_dot, r_rel_ddot=-rel.r_rel_ddot, S=-rel.S)
+
+
+class RollingWrongWay(_RollingMotionSign):
+    """A rolling contact moving the wrong way: ``Dp_r_DpDs = (+r gamma, 0, 0)``."""
+
+    def joint_pose(self, q):
+        A_DpDs, r_rel = super().joint_pose(q)
+        return A_DpDs, -r_rel
+
+
+class _VirtualOrder:
+    """A virtual 3-DOF joint read as ``q = (gamma, dx, dy)``."""
+
+    def joint_pose(self, q):
+        return super().joint_pose(np.asarray(q)[[1, 2, 0]])
+
+    def joint_motion(self, q, qd, qdd):
+        order = [1, 2, 0]
+        rel = super().joint_motion(np.asarray(q)[order], np.asarray(qd)[order], np.asarray(qdd)[order])
+        return rel._replace(S=rel.S[:, [2, 0, 1]], R=rel.R[:, [2, 0, 1]])
+
+
+@dataclass(frozen=True)
+class Model:
+    """A known mistake: switches of the generic recursion (``pose``, ``motion``, ``jacobians``: pairs of keyword
+    arguments of ``_pose``, ``_motion``, ``_jacobians``), joint-type mixins (``joints``: pairs of kind and mixin),
+    or an ``edit`` of the tree's description."""
+
+    name: str
+    hint: str
+    pose: tuple = ()
+    motion: tuple = ()
+    jacobians: tuple = ()
+    joints: tuple = ()
+    edit: object = None
+
+
+@functools.lru_cache(maxsize=None)
+def _namespace(model):
+    """A stand-in for the ``tree`` module whose joint classes carry the model's mistake."""
+    from reference import tree
+
+    generic = type("Mistaken", (_Mistaken,), {"mistake_pose": dict(model.pose), "mistake_motion":
+                                              dict(model.motion), "mistake_jacobians": dict(model.jacobians)})
+    special = dict(model.joints)
+    classes = {name: type(name, tuple(b for b in (special.get(kind), generic) if b) + (getattr(tree, name),), {})
+               for kind, name in probe_trees.CLASSES.items()}
+    return SimpleNamespace(Body=tree.Body, KinematicTree=tree.KinematicTree, JointMotion=tree.JointMotion,
+                           Joint=type("Joint", (generic, tree.Joint), {}), **classes)
+
+
+def mistaken_state(model, description, q, qd=None, qdd=None):
+    """The state of every body as the mistaken recursion computes it (``None`` if it cannot)."""
+    if model.edit is not None:
+        description = model.edit(description)
+    try:
+        tree = probe_trees.build(_namespace(model), description)
+        tree.forward_kinematics(np.asarray(q, dtype=float), *(() if qd is None else (qd, qdd)))
+    except (ValueError, IndexError, np.linalg.LinAlgError):
+        return None
+    return probe_trees.state(tree, motion=qd is not None)
+
+
+_RECURSION = ("A_IS = A_IP A_PDp A_DpDs A_SDs.T, S_r_IS = A_SDs A_DpDs.T (A_PDp.T (P_r_IP + P_r_PDp) + Dp_r_DpDs) "
+              "- S_r_SDs")
+_DS_A = ("Ds_a = A_DpDs.T (Dp_a + r_rel_ddot + 2 skew(Dp_omega) r_rel_dot + (skew(Dp_omegaDot) + skew(Dp_omega)^2) "
+         "r_rel)")
+MODELS = (
+    Model("transpose", "The joint frame Dp is applied the wrong way round: A_PDp maps Dp- to P-coordinates, so "
+          "A_IDp = A_IP @ A_PDp and Dp_r_IDp = A_PDp.T @ (P_r_IP + P_r_PDp). You used its transpose A_DpP where "
+          "A_PDp belongs (Joint.successor_pose, problem 24).", pose=(("transpose", True),)),
+    Model("transpose", "The joint frame Ds is applied the wrong way round: A_SDs maps Ds- to S-coordinates, so "
+          "A_IS = A_IDs @ A_SDs.T and S_r_IS = A_SDs @ Ds_r_IDs - S_r_SDs (Joint.successor_pose, problem 24).",
+          pose=(("ds_transpose", True),)),
+    *(Model("rotation_order", "The rotations are multiplied in the wrong order: adjacent frame letters cancel, "
+            "A_IDs = A_IDp @ A_DpDs and A_IS = A_IP @ A_PDp @ A_DpDs @ A_SDs.T; each new rotation multiplies from "
+            "the right (Joint.successor_pose, problem 24).", pose=(("reverse", which),)) for which in ("joint", "all")),
+    Model("offset_sign", "S_r_SDs is added where it must be subtracted: it points from the body's origin S to Ds, "
+          "so S_r_IS = A_SDs @ Ds_r_IDs - S_r_SDs (Joint.successor_pose, problem 24).", pose=(("offset_sign", 1.0),)),
+    Model("offset_frame", "P_r_PDp is given in P-coordinates: add it to P_r_IP before rotating into Dp, "
+          "Dp_r_IDp = A_PDp.T @ (P_r_IP + P_r_PDp); you added it after the rotation (Joint.successor_pose, "
+          "problem 24).", pose=(("offset_in_dp", True),)),
+    Model("sign_flip", "The rotational joint turns the wrong way: A_DpDs = R3(gamma), a counter-clockwise rotation "
+          "about the Dp 3-axis; you have R3(-gamma) = R3(gamma).T (RotationalJoint.joint_pose, problem 24).",
+          joints=(("rotational", _RotationalSign),)),
+    Model("rolling_sign", "The rolling contact's relative motion has the wrong sign: r_rel_dot = (-r gamma_dot, 0, "
+          "0), r_rel_ddot = (-r gamma_ddot, 0, 0), S = (-r, 0, 0), the derivatives of Dp_r_DpDs = (-r gamma, 0, 0) "
+          "(RollingContactJoint.joint_motion, problem 33).", joints=(("rolling_contact", _RollingMotionSign),)),
+    Model("rolling_sign", "The rolling contact moves the wrong way: a circle turning counter-clockwise by gamma "
+          "without slipping rolls towards -x, Dp_r_DpDs = (-r gamma, 0, 0) (RollingContactJoint.joint_pose, "
+          "problem 25).", joints=(("rolling_contact", RollingWrongWay),)),
+    Model("coordinate_order", "The virtual 3-DOF joint's coordinates are q = (dx, dy, gamma): A_DpDs = R3(q[2]), "
+          "Dp_r_DpDs = (q[0], q[1], 0), S = [e1 e2 0], R = [0 0 e3] (Virtual3DOFJoint, problem 34).",
+          joints=(("virtual_3dof", _VirtualOrder),)),
+    Model("coriolis", f"The Coriolis term 2 skew(Dp_omega) r_rel_dot is missing: {_DS_A} (Joint.successor_motion, "
+          "problem 31).", motion=(("coriolis", 0.0),)),
+    Model("coriolis", f"The Coriolis term needs the factor 2: {_DS_A}. One skew(Dp_omega) r_rel_dot comes from "
+          "differentiating r_rel in the rotating frame Dp, the other from differentiating skew(Dp_omega) r_rel "
+          "(Joint.successor_motion, problem 31).", motion=(("coriolis", 1.0),)),
+    Model("transport", "The angular acceleration misses skew(Dp_omega) omega_rel: the relative angular velocity "
+          "turns with Dp, Ds_omegaDot = A_DpDs.T (Dp_omegaDot + omega_rel_dot + skew(Dp_omega) omega_rel) "
+          "(Joint.successor_motion, problem 31).", motion=(("transport", 0.0),)),
+    Model("centripetal", "Moving the predecessor's acceleration to Dp misses the centripetal term: Dp_a = A_PDp.T "
+          "(P_a + (skew(P_omegaDot) + skew(P_omega)^2) P_r_PDp) (Joint.successor_motion, problem 31).",
+          motion=(("centripetal_dp", 0.0),)),
+    Model("centripetal", "Moving the acceleration from Ds to the body misses the centripetal term: S_a = A_SDs Ds_a "
+          "- (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs (Joint.successor_motion, problem 31).",
+          motion=(("centripetal_ds", 0.0),)),
+    Model("offset_sign", "S_r_SDs enters the velocities with a minus sign (it points from S to Ds): S_v = A_SDs Ds_v "
+          "- skew(S_omega) S_r_SDs, S_a = A_SDs Ds_a - (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs and S_J_S = ... "
+          "+ skew(S_r_SDs) S_J_R (Joint.successor_motion and successor_jacobians, problem 31).",
+          motion=(("offset_sign", 1.0),), jacobians=(("offset_sign", 1.0),)),
+    Model("transpose", "The predecessor's motion is brought into Dp with A_DpP = A_PDp.T (Dp_omega = A_PDp.T "
+          "P_omega, Dp_v = A_PDp.T (P_v + skew(P_omega) P_r_PDp), ...); you used A_PDp (Joint.successor_motion, "
+          "problem 31).", motion=(("transpose", True),), jacobians=(("transpose", True),)),
+    Model("column_offset", "The joint's columns of the Jacobians are in the wrong place: S and R go into the columns "
+          "q_index of the 3 x nq matrices (S_full[:, q_index] = S); yours are shifted by one, and q_index is "
+          "0-based (Joint.successor_jacobians, problem 31).", jacobians=(("shift", -1),)),
+    Model("column_offset", "The joint's columns of the Jacobians are in the wrong place: S and R go into the columns "
+          "q_index of the 3 x nq matrices; yours are shifted by one (Joint.successor_jacobians, problem 31).",
+          jacobians=(("shift", 1),)),
+    Model("lever", "The translational Jacobian misses the lever of the predecessor's rotation: S_J_S = A_SP (P_J_S "
+          "+ A_PDp S - skew(P_r_PDp + A_PDp r_rel) P_J_R) + skew(S_r_SDs) S_J_R (Joint.successor_jacobians, "
+          "problem 31).", jacobians=(("lever", 0.0),)),
+)
+
+INERTIAL_HINT = ("B_r_IB holds the body's position in B-coordinates (its inertial position is A_IB @ B_r_IB); you "
+                 "stored the inertial position. Keep every body quantity in body coordinates "
+                 "(Joint.successor_pose, problem 24).")
+_GENERIC_HINTS = {
+    "A_IB": f"The orientation comes from the pass across the body's parent joint: {_RECURSION}.",
+    "B_r_IB": f"The position comes from the pass across the body's parent joint: {_RECURSION}.",
+    "B_v_B": "Velocities (problem 31, steps 1, 3, 6): Dp_v = A_PDp.T (P_v + skew(P_omega) P_r_PDp), Ds_v = A_DpDs.T "
+             "(Dp_v + r_rel_dot + skew(Dp_omega) r_rel), S_v = A_SDs Ds_v - skew(S_omega) S_r_SDs.",
+    "B_omega_B": "Angular velocities (problem 31): Ds_omega = A_DpDs.T (A_PDp.T P_omega + omega_rel), "
+                 "S_omega = A_SDs Ds_omega.",
+    "B_a_B": f"Accelerations (problem 31, steps 1, 5, 6): Dp_a = A_PDp.T (P_a + (skew(P_omegaDot) + skew(P_omega)^2) "
+             f"P_r_PDp), {_DS_A}, S_a = A_SDs Ds_a - (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs.",
+    "B_omegaDot_B": "Angular accelerations (problem 31, step 4): Ds_omegaDot = A_DpDs.T (Dp_omegaDot + omega_rel_dot "
+                    "+ skew(Dp_omega) omega_rel), S_omegaDot = A_SDs Ds_omegaDot.",
+    "B_J_S": "S_J_S = A_SP (P_J_S + A_PDp S - skew(P_r_PDp + A_PDp r_rel) P_J_R) + skew(S_r_SDs) S_J_R with A_SP = "
+             "(A_PDp A_DpDs A_SDs.T).T and the joint's S in the columns q_index (problem 31).",
+    "B_J_R": "S_J_R = A_SP (P_J_R + A_PDp R) with A_SP = (A_PDp A_DpDs A_SDs.T).T and the joint's R in the columns "
+             "q_index (problem 31).",
+}
+
+
+def candidates(description, q, qd=None, qdd=None, models=MODELS):
+    """A callable giving ``[(name, hint, state)]`` of the mistaken recursions for this case (computed on demand)."""
+    return lambda: [(model.name, model.hint, mistaken_state(model, description, q, qd, qdd)) for model in models]
+
+
+# ------------------------------------------------------------------------------------------ comparisons
+
+
+def bodies_of(got, names):
+    """The student's body states in the order of ``names``."""
+    if not isinstance(got, dict) or not isinstance(got.get("bodies"), list):
+        fail("the probe could not read the tree's bodies back.")
+    mine = dict(zip(got.get("names", []), got["bodies"]))
+    missing = [name for name in names if name not in mine]
+    if missing:
+        fail(f"your tree has no bodies named {missing} (it has {list(mine)}).",
+             "Keep the body names of the template.")
+    if list(got["names"]) != list(names):
+        fail(f"your tree lists its bodies as {list(got['names'])}, expected {list(names)} (depth first from the root).",
+             "Create the joints in the order of the template: KinematicTree lists the bodies in recursion order.")
+    return [mine[name] for name in names]
+
+
+def _with_hint(value, expected, name, tol, mistakes, hint, **kwargs):
+    """``assert_close`` that falls back to ``hint`` when no known mistake matches."""
+    try:
+        return assert_close(value, expected, name, tol, mistakes, **kwargs)
+    except CheckFailure as exc:
+        if exc.diagnosis or exc.hint or not hint:
+            raise
+        raise CheckFailure(exc.message, hint) from None
+
+
+def _where(expected, k, quantity):
+    names = expected["names"]
+    joint = expected["joints"][k]
+    if joint is None:
+        place = f"{names[k]} is the root: it sits at the origin, A_IB = E, at rest"
+    else:
+        place = (f"{names[k]} hangs at {joint['predecessor']} by a {joint['type']} with q_index "
+                 f"{joint['q_index']}")
+    before = f"the bodies before it ({', '.join(names[:k])}) agree with the reference" if k else "it is the first body"
+    return (f"First departure in recursion order from the root: {quantity} of {names[k]} (body {k + 1} of "
+            f"{len(names)}); {before}.\n{place}.")
+
+
+def _agrees_before(state, expected, k, quantity, tol):
+    """True if the mistaken ``state`` agrees with ``expected`` on everything computed before ``quantity`` of body
+    ``k`` (where the student's state agrees with the reference too)."""
+    if state is None:
+        return False
+    for j in range(k + 1):
+        for name in ORDER[:ORDER.index(quantity)] if j == k else ORDER:
+            value = expected["bodies"][j].get(name)
+            if value is not None and not close(state["bodies"][j][name], value, tol):
+                return False
+    return True
+
+
+def compare_states(got, expected, tol=EXACT, mistakes=lambda: (), context=""):
+    """Fail at the first body (recursion order) and quantity where ``got`` departs from ``expected``; ``mistakes``
+    gives the mistaken states ``[(name, hint, state)]`` to diagnose with."""
+    names = expected["names"]
+    bodies = bodies_of(got, names)
+    for k, name in enumerate(names):
+        ref = expected["bodies"][k]
+        for quantity in ORDER:
+            if ref.get(quantity) is None:
+                continue
+            value = bodies[k].get(quantity)
+            if value is None:
+                fail(f"{quantity} of {name} is not set after forward_kinematics.",
+                     "Every pass sets the successor's state from the joint's results (Joint.forward_kinematics).",
+                     "none")
+            if close(value, ref[quantity], tol):
+                continue
+            found = [Mistake(m_name, state["bodies"][k][quantity], m_hint)
+                     for m_name, m_hint, state in mistakes() if _agrees_before(state, expected, k, quantity, tol)]
+            if quantity == "B_r_IB":
+                found.append(Mistake("inertial_coordinates", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
+            _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],
+                       context=context, note=_where(expected, k, quantity))
+
+
+def tree_comparison(motion=True, models=MODELS):
+    """A ``compare`` for ``ctx.compare_random`` on ``(description, q[, qd, qdd])`` cases."""
+
+    def compare(got, expected, args):
+        compare_states(got, expected, mistakes=candidates(*args[:4 if motion else 2], models=models))
+
+    return compare
+
+
+def _unskew(W):
+    return 0.5 * np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]])
+
+
+def _pose_of(body, name):
+    A = as_array(body["A_IB"], f"A_IB of {name}", (3, 3))
+    return A, A @ as_array(body["B_r_IB"], f"B_r_IB of {name}", (3,))
+
+
+COLUMN_HINT = ("Your Jacobian's columns are shifted by one against the coordinates: the joint's S and R go into the "
+               "columns q_index (0-based) of the 3 x nq matrices (Joint.successor_jacobians, problem 31).")
+JACOBIAN_FRAME_HINT = ("Your Jacobian is in inertial coordinates: B_J_S and B_J_R are in body coordinates, "
+                       "B_v_B = B_J_S qd (the inertial Jacobian is A_IB @ B_J_S).")
+
+
+def compare_jacobians(got, h=H, tol=DIFFERENCES):
+    """Every body's ``B_J_S``, ``B_J_R`` are the derivatives of its own position ``A_IB @ B_r_IB`` and orientation
+    ``A_IB`` (``skew(B_J_R[:, i]) = A_IB.T dA_IB/dq_i``), from ``jacobian_differences``."""
+    at, shifted = got["state"], got["shifted"]
+    nq = len(shifted)
+    for k, name in enumerate(at["names"]):
+        body = at["bodies"][k]
+        A = assert_rotation(body["A_IB"], f"A_IB of {name}")
+        plus = [_pose_of(pair[0][k], name) for pair in shifted]
+        minus = [_pose_of(pair[1][k], name) for pair in shifted]
+        J_S = A.T @ np.column_stack([(p[1] - m[1]) / (2 * h) for p, m in zip(plus, minus)])
+        J_R = np.column_stack([_unskew(A.T @ (p[0] - m[0]) / (2 * h)) for p, m in zip(plus, minus)])
+        for quantity, fd, of in (("B_J_S", J_S, "position A_IB @ B_r_IB"), ("B_J_R", J_R, "orientation A_IB")):
+            before = f"the bodies before it ({', '.join(at['names'][:k])}) are consistent" if k else "the root"
+            _with_hint(body[quantity], fd, f"{quantity} of {name}", tol, [
+                Mistake("column_offset", np.roll(fd, -1, axis=1), COLUMN_HINT),
+                Mistake("column_offset", np.roll(fd, 1, axis=1), COLUMN_HINT),
+                Mistake("inertial_coordinates", A @ fd, JACOBIAN_FRAME_HINT),
+            ], _GENERIC_HINTS[quantity], context=f"(expected: the derivative of your own {of} by q, 3 x {nq})",
+                note=f"{name} is the first body, in recursion order, whose {quantity} is not the derivative of "
+                     f"its own kinematics ({before}).")
+
+
+_PATH_HINTS = {
+    "B_v_B": "Your velocity is not the time derivative of your own position A_IB @ B_r_IB. " + _GENERIC_HINTS["B_v_B"],
+    "B_omega_B": "Your angular velocity does not match how your own A_IB turns: skew(B_omega_B) = A_IB.T dA_IB/dt. "
+                 + _GENERIC_HINTS["B_omega_B"],
+    "B_a_B": "Your acceleration is not the time derivative of your own velocity (in I: d/dt (A_IB B_v_B)). "
+             + _GENERIC_HINTS["B_a_B"],
+    "B_omegaDot_B": "Your angular acceleration is not the time derivative of your own angular velocity. "
+                    + _GENERIC_HINTS["B_omegaDot_B"],
+}
+
+
+def compare_path(got, h=H, tol=DIFFERENCES):
+    """Along ``q(t)`` (states at ``-h, 0, +h`` from ``path_differences``) every body's velocities are the time
+    derivatives of its own pose, and its accelerations those of its own velocities."""
+    minus, at, plus = got
+    for k, name in enumerate(at["names"]):
+        A = assert_rotation(at["bodies"][k]["A_IB"], f"A_IB of {name}")
+
+        def rate(quantity):
+            def inertial(body):
+                A_b = as_array(body["A_IB"], f"A_IB of {name}", (3, 3))
+                return A_b if quantity is None else A_b @ as_array(body[quantity], f"{quantity} of {name}", (3,))
+
+            return (inertial(plus["bodies"][k]) - inertial(minus["bodies"][k])) / (2 * h)
+
+        expected = {"B_v_B": A.T @ rate("B_r_IB"), "B_omega_B": _unskew(A.T @ rate(None)),
+                    "B_a_B": A.T @ rate("B_v_B"), "B_omegaDot_B": A.T @ rate("B_omega_B")}
+        for quantity, fd in expected.items():
+            before = f"the bodies before it ({', '.join(at['names'][:k])}) are consistent" if k else "the root"
+            _with_hint(at["bodies"][k][quantity], fd, f"{quantity} of {name}", tol, [], _PATH_HINTS[quantity],
+                       context="(expected: the time derivative of your own kinematics along q(t) = q + qd t + "
+                               "qdd t^2/2)",
+                       note=f"{name} is the first body, in recursion order, whose {quantity} is not the time "
+                            f"derivative of its own kinematics ({before}).")
+
+
+def compare_jacobian_differences(ctx, probe, kinds, examples=10):
+    """Jacobians of random trees against finite differences of the student's own positions and orientations."""
+
+    def compare(got, expected, args):
+        compare_jacobians(got)
+
+    compare_fixed(ctx, probe, rich_case(kinds, motion=False, extra=(H,)), compare)
+    ctx.compare_random(probe, cases(kinds, motion=False, extra=(H,)), name="B_J_S, B_J_R", tol=DIFFERENCES,
+                       compare=compare, examples=examples, describe=describe_case)
+
+
+def compare_path_differences(ctx, probe, kinds, examples=10):
+    """Velocities and accelerations of random trees against time derivatives of the student's own kinematics."""
+
+    def compare(got, expected, args):
+        compare_path(got)
+
+    compare_fixed(ctx, probe, rich_case(kinds, extra=(H,)), compare)
+    ctx.compare_random(probe, cases(kinds, extra=(H,)), name="velocities and accelerations", tol=DIFFERENCES,
+                       compare=compare, examples=examples, describe=describe_case)
+
+
+def configuration_figure(title, got, expected, axes=(0, 1)):
+    """The student's tree drawn over the reference's (``outline`` of the probe, projected on two inertial axes), or
+    ``None`` if the student's outline cannot be drawn."""
+    try:
+        mine = np.asarray(got["outline"], dtype=float)
+    except (TypeError, ValueError, KeyError):
+        return None
+    if mine.ndim != 2 or mine.shape[1] != 3 or not np.all(np.isfinite(mine)):
+        return None
+    ours = np.asarray(expected["outline"], dtype=float)
+    i, j = axes
+    label = "xyz"
+    return figure(title, f"{label[i]} [m]", f"{label[j]} [m]", student=[("configuration", mine[:, i], mine[:, j])],
+                  reference=[("configuration", ours[:, i], ours[:, j])], equal_axes=True)

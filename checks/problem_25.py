@@ -1,0 +1,223 @@
+"""Checks of problem 25: the rolling-contact joint (``RollingContactJoint.joint_pose``), the passive dynamic walker
+(``build_walker``) and its symbolic positions and Jacobian (``cog_positions_symbolic``)."""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    SHEET,
+    STAGE_RANDOM,
+    STAGE_VALUES,
+    Mistake,
+    as_array,
+    assert_close,
+    check,
+    close,
+    fail,
+)
+
+from ._trees import (
+    DIFFERENCES,
+    MODELS,
+    H,
+    Model,
+    candidates,
+    compare_fixed,
+    compare_states,
+    compare_trees,
+    configuration_figure,
+    describe_tree,
+    tree_comparison,
+)
+
+TITLE = "Rolling Contact Joint"
+
+KINDS = ("rolling_contact", "rotational", "test")
+#: part (c) of the sheet (problem data: alpha = -30 deg, gamma = +60 deg), x = (x_st, y_st, gamma_st, x_sw, ...)
+SHEET_X = np.array([0.2051, 0.3018, -0.5236, 0.9051, 0.3518, 0.5236])
+ANGLES = (2, 5)
+LEGS = ("stance_leg", "swing_leg")
+ALPHA = st.floats(-1.2, 1.2, allow_nan=False)
+GAMMA = st.floats(-2.5, 2.5, allow_nan=False)
+
+
+def _without_contact_offset(description):
+    joints = [dict(joint) for joint in description["joints"]]
+    joints[0]["P_r_PDp"] = np.zeros(3)
+    return {**description, "joints": joints}
+
+
+def _foot_at_hip(description):
+    joints = [dict(joint) for joint in description["joints"]]
+    joints[0]["S_r_SDs"] = np.array(joints[1]["S_r_SDs"], dtype=float)
+    return {**description, "joints": joints}
+
+
+def _coordinates_swapped(description):
+    joints = [dict(joint) for joint in description["joints"]]
+    joints[0]["q_index"], joints[1]["q_index"] = joints[1]["q_index"], joints[0]["q_index"]
+    return {**description, "joints": joints}
+
+
+WALKER_MODELS = MODELS + (
+    Model("contact_height", "The rolling joint's frame Dp sits at the foot's centre when q = 0, a radius above the "
+          "ground: P_r_PDp = (0, r, 0) (build_walker).", edit=_without_contact_offset),
+    Model("foot_offset", "Ds of the rolling joint is the foot's centre, l - r below the hip: S_r_SDs = (-dx, dy - l "
+          "+ r, 0) for the stance leg; you used the hip's offset (-dx, dy, 0) (build_walker).", edit=_foot_at_hip),
+    Model("coordinate_order", "q = (alpha, gamma): the rolling contact has q_index [0], the hip q_index [1] "
+          "(build_walker).", edit=_coordinates_swapped),
+)
+BODY_HINT = ("x holds the legs' positions in inertial coordinates, I_r_IB = A_IB @ B_r_IB; yours are in the legs' "
+             "body coordinates (B_r_IB).")
+
+
+def _walker():
+    from reference.problem_25 import build_walker
+
+    return describe_tree(build_walker())
+
+
+def _wrap(angle):
+    return (np.asarray(angle) + np.pi) % (2 * np.pi) - np.pi
+
+
+def _x_of(state):
+    """``x = (x_st, y_st, gamma_st, x_sw, y_sw, gamma_sw)`` of a walker state."""
+    x = []
+    for name in LEGS:
+        body = state["bodies"][state["names"].index(name)]
+        A = np.asarray(body["A_IB"])
+        x += [*(A @ body["B_r_IB"])[:2], np.arctan2(A[1, 0], A[0, 0])]
+    return np.array(x)
+
+
+def _on_branch(x, target):
+    """``x`` with its leg angles moved by multiples of 2 pi next to ``target``'s."""
+    x = np.array(x, dtype=float)
+    x[list(ANGLES)] = target[list(ANGLES)] + _wrap(x[list(ANGLES)] - target[list(ANGLES)])
+    return x
+
+
+def _x_mistakes(alpha, gamma, target):
+    from reference.problem_25 import build_walker
+
+    found = [Mistake(name, _on_branch(_x_of(state), target), hint)
+             for name, hint, state in candidates(_walker(), [alpha, gamma], models=WALKER_MODELS)()
+             if state is not None]
+    tree = build_walker().forward_kinematics([alpha, gamma])
+    body = [v for name in LEGS for v in (*tree[name].B_r_IB[:2], np.arctan2(tree[name].A_IB[1, 0],
+                                                                             tree[name].A_IB[0, 0]))]
+    return [Mistake("body_coordinates", _on_branch(body, target), BODY_HINT), *found]
+
+
+# ------------------------------------------------------------------------------------ part (c)
+
+
+@check(2, title="part (c): at alpha = -30 deg, gamma = +60 deg the legs' centres of gravity are at x = (0.2051, "
+       "0.3018, -0.5236, 0.9051, 0.3518, 0.5236)", stage=STAGE_VALUES, group="sheet")
+def check_sheet_values(ctx):
+    from reference.problem_25 import ALPHA_C, GAMMA_C
+
+    got = ctx.student("problem_25.walker", ALPHA_C, GAMMA_C)
+    expected = ctx.reference("problem_25.walker", ALPHA_C, GAMMA_C)
+    drawing = configuration_figure("Problem 25: the walker at alpha = -30 deg, gamma = +60 deg", got, expected)
+    if drawing is not None:
+        ctx.add_figure(drawing)
+    x = as_array(got["x"], "cog_positions(alpha, gamma)", (6,)).copy()
+    for i in ANGLES:  # signed angles; the course printed acos(A11), which loses the sign
+        if abs(_wrap(x[i] - SHEET_X[i])) <= SHEET.atol or abs(x[i] - abs(SHEET_X[i])) <= SHEET.atol:
+            x[i] = SHEET_X[i]
+    if close(x, SHEET_X, SHEET):
+        return
+    assert_close(x, SHEET_X, "x = cog_positions(-30 deg, +60 deg)", SHEET, _x_mistakes(ALPHA_C, GAMMA_C, SHEET_X),
+                 context="(the sheet's values with the erratum's angles)",
+                 note="The leg angles may be signed (ours) or unsigned as the course printed them (acos(A11)).")
+
+
+@check(2, title="the walker of build_walker at random (alpha, gamma): A_IB and B_r_IB of every body",
+       stage=STAGE_RANDOM, group="walker")
+def check_walker_random(ctx):
+    def compare(got, expected, args):
+        compare_states(got, expected, mistakes=candidates(_walker(), list(args), models=WALKER_MODELS))
+
+    def describe(args):
+        return f"q = (alpha, gamma) = ({args[0]!r}, {args[1]!r})"
+
+    compare_fixed(ctx, "problem_25.walker", (0.4, -0.9), compare, describe)
+    ctx.compare_random("problem_25.walker", st.tuples(ALPHA, GAMMA), name="the walker", tol=EXACT, compare=compare,
+                       examples=10, describe=describe)
+
+
+@check(2, title="random trees with rolling contacts: A_IB and B_r_IB of every body, in recursion order",
+       stage=STAGE_RANDOM, group="trees")
+def check_rolling_trees(ctx):
+    compare_trees(ctx, "problem_25.tree_poses", KINDS, tree_comparison(motion=False), motion=False,
+                  name="the bodies' poses")
+
+
+# ------------------------------------------------------------------------------------ part (e): symbolic
+
+
+def _points(ctx):
+    from reference.problem_25 import ALPHA_C, GAMMA_C
+
+    ctx.last_seed = ctx.seed
+    rng = np.random.default_rng(ctx.seed)
+    return np.vstack([[ALPHA_C, GAMMA_C], rng.uniform([-1.2, -2.5], [1.2, 2.5], (7, 2))])
+
+
+def _symbolic(ctx, points):
+    got = ctx.student("problem_25.symbolic", points, H)
+    if "free_symbols" in got:
+        fail(f"x and J of cog_positions_symbolic() contain symbols other than q = ({', '.join(got['symbols'])}): "
+             f"{', '.join(got['free_symbols'])}, so they cannot be evaluated at a configuration.",
+             "Build x and J from the symbols you return in q only; the geometry enters as numbers.", "free_symbols")
+    return got
+
+
+def _at(point, ctx):
+    return f"at (alpha, gamma) = ({point[0]:.6g}, {point[1]:.6g}) (seed {ctx.seed})"
+
+
+def _reference_jacobian(alpha, gamma):
+    from reference.problem_25 import build_walker
+
+    tree = build_walker().forward_kinematics([alpha, gamma], np.zeros(2))
+    return np.vstack([np.vstack([tree[name].I_J_S[:2], tree[name].I_J_R[2:]]) for name in LEGS])
+
+
+@check(2, title="part (e): the symbolic x(alpha, gamma) equals the legs' inertial positions and orientations at "
+       "random configurations", stage=STAGE_VALUES, group="symbolic")
+def check_symbolic_positions(ctx):
+    from reference.problem_25 import cog_positions
+
+    points = _points(ctx)
+    got = _symbolic(ctx, points)
+    for point, value in zip(points, got["x"]):
+        value = np.asarray(value, dtype=float)
+        if value.size != 6:
+            as_array(value, "x", (6, 1))
+        expected = cog_positions(*point)
+        value = _on_branch(value.reshape(6), expected)
+        if not close(value, expected, EXACT):
+            assert_close(value, expected, f"x {_at(point, ctx)}", EXACT, _x_mistakes(*point, expected),
+                         note="Angles are compared modulo 2 pi.")
+
+
+@check(1, title="part (e): the symbolic Jacobian J is dx/dq (finite differences of your x) and matches the legs' "
+       "Jacobians", stage=STAGE_VALUES, group="symbolic")
+def check_symbolic_jacobian(ctx):
+    points = _points(ctx)
+    got = _symbolic(ctx, points)
+    for point, J, plus, minus in zip(points, got["J"], got["plus"], got["minus"]):
+        J = as_array(J, "J", (6, 2))
+        step = np.asarray(plus, dtype=float).reshape(2, 6) - np.asarray(minus, dtype=float).reshape(2, 6)
+        step[:, list(ANGLES)] = _wrap(step[:, list(ANGLES)])
+        fd = step.T / (2 * H)
+        assert_close(J, fd, f"J {_at(point, ctx)}", DIFFERENCES, [
+            Mistake("column_order", fd[:, ::-1], "J = dx/dq has one column per coordinate, in the order of "
+                    "q = (alpha, gamma); yours are swapped."),
+        ], context="(expected: the derivative of your own x)")
+        assert_close(J, _reference_jacobian(*point), f"J {_at(point, ctx)}", EXACT,
+                     context="(the legs' Jacobians: rows I_J_S[0:2] and I_J_R[2] of each leg)")

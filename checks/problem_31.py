@@ -1,0 +1,49 @@
+"""Checks of problem 31: velocities, accelerations and Jacobians across a joint (``Joint.successor_motion``,
+``Joint.successor_jacobians``, ``RotationalJoint.joint_motion``)."""
+
+from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, check
+
+from ._trees import (
+    candidates,
+    compare_jacobian_differences,
+    compare_path_differences,
+    compare_states,
+    compare_trees,
+    describe_tree,
+    tree_comparison,
+)
+
+TITLE = "Kinematics with Velocities, Accelerations, and Jacobians"
+
+#: rotational joints and the probe's test joint (relative translations exercise the Coriolis term)
+KINDS = ("rotational", "test")
+
+
+@check(2, title="the triple pendulum at the sheet's test case q = (pi/6, -pi/4, pi/3), qd = (1, 0, 0), qdd = "
+       "(0, 0, 1): velocities, accelerations and Jacobians of every body", stage=STAGE_VALUES, group="pendulum")
+def check_pendulum(ctx):
+    from reference.problem_24 import build_triple_pendulum
+    from reference.problem_31 import Q, QD, QDD
+
+    got = ctx.student("problem_31.pendulum", Q, QD, QDD)
+    expected = ctx.reference("problem_31.pendulum", Q, QD, QDD)
+    compare_states(got, expected, mistakes=candidates(describe_tree(build_triple_pendulum()), Q, QD, QDD),
+                   context="(the sheet's test case)")
+
+
+@check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "
+       "orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
+def check_jacobians(ctx):
+    compare_jacobian_differences(ctx, "problem_31.jacobians", KINDS)
+
+
+@check(2, title="along a path q(t), your velocities are the time derivatives of your positions and orientations, "
+       "and your accelerations those of your velocities", stage=STAGE_STRUCTURE, group="path")
+def check_path(ctx):
+    compare_path_differences(ctx, "problem_31.path", KINDS)
+
+
+@check(3, title="random trees: velocities, accelerations and Jacobians of every body, in recursion order",
+       stage=STAGE_RANDOM, group="trees")
+def check_random_trees(ctx):
+    compare_trees(ctx, "problem_31.tree_state", KINDS, tree_comparison(), name="the bodies' motion")

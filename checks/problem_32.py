@@ -1,0 +1,148 @@
+"""Checks of problem 32: the rigid joint (``RigidJoint``), generalized gravity (``generalized_gravity``) and the
+robot arm's gravity-compensating torques (``gravity_compensation``) along the desired trajectory."""
+
+import numpy as np
+
+from grader.checking import (
+    EXACT,
+    SHEET,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    Mistake,
+    as_array,
+    assert_close,
+    check,
+    close,
+    figure,
+)
+from probes import _trees as probe_trees
+
+from ._trees import (
+    DIFFERENCES,
+    H,
+    candidates,
+    cases,
+    compare_fixed,
+    compare_states,
+    compare_trees,
+    configuration_figure,
+    describe_case,
+    describe_tree,
+    rich_case,
+    tree_comparison,
+)
+
+TITLE = "Robotic Arm. 1 - Gravity compensation"
+
+KINDS = ("rotational", "rigid", "test")
+#: gravity of the random trees, off the axes so that a frame mix-up shows
+I_GRAV = np.array([0.3, -9.81, 0.5])
+#: the sheet's first point of the desired trajectory, and where it puts the end effector
+Q_DES_0 = np.array([-0.00369, -0.46218, -1.44917])
+
+SIGN_HINT = "The torque that holds the arm against gravity is tau = -g(q): with M qdd = f + g + tau, qdd = 0 at rest."
+FRAME_HINT = ("I_grav is given in inertial coordinates: bring it into the body first, g = sum(B_J_S.T @ (A_IB.T @ "
+              "I_grav) * m) (generalized_gravity, problem 32).")
+MASS_HINT = "Each body's gravity force is m * I_grav: g = sum(B_J_S.T @ (A_IB.T @ I_grav) * m)."
+
+
+def _gravity(tree, q, I_grav, frame=True, mass=True):
+    """``generalized_gravity`` of the reference, optionally without the frame change or without the masses."""
+    tree.forward_kinematics(q, np.zeros(tree.nq))
+    return sum(body.B_J_S.T @ ((body.A_IB.T if frame else np.eye(3)) @ I_grav) * (body.m if mass else 1.0)
+               for body in tree.bodies)
+
+
+def _gravity_mistakes(description, q, I_grav, expected):
+    from reference import tree
+
+    built = probe_trees.build(tree, description)
+    return [
+        Mistake("sign_flip", -np.asarray(expected), "g(q) is the generalized gravity force, sum(B_J_S.T @ (A_IB.T @ "
+                "I_grav) * m); yours has the opposite sign."),
+        Mistake("body_frame", _gravity(built, q, I_grav, frame=False), FRAME_HINT),
+        Mistake("missing_mass", _gravity(built, q, I_grav, mass=False), MASS_HINT),
+    ]
+
+
+def _robot():
+    from reference.problem_32 import build_robot
+
+    return describe_tree(build_robot())
+
+
+@check(2, title="random trees with rigid joints: the state of every body, in recursion order",
+       stage=STAGE_RANDOM, group="trees")
+def check_rigid_trees(ctx):
+    compare_trees(ctx, "problem_32.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+
+
+@check(2, title="the robot hangs with its end effector at (0, -3, 0) at q = 0, and at the sheet's q_des(0) = "
+       "(-0.00369, -0.46218, -1.44917) it is at the path's start (-1, -2, 0.5)", stage=STAGE_VALUES, group="robot")
+def check_end_effector(ctx):
+    from reference.problem_32 import X_START
+
+    for q, target, title in ((np.zeros(3), np.array([0.0, -3.0, 0.0]), ""),
+                             (Q_DES_0, X_START, "Problem 32: the robot at q_des(0), front view")):
+        got = ctx.student("problem_32.robot", q)
+        expected = ctx.reference("problem_32.robot", q)
+        drawing = configuration_figure(title, got, expected) if title else None
+        if drawing is not None:
+            ctx.add_figure(drawing)
+        compare_states(got, expected, mistakes=candidates(_robot(), q), context=f"(the robot at q = {q.tolist()})")
+        assert_close(got["end_effector"], target, f"end_effector_position(tree, {q.tolist()})", SHEET,
+                     context="(the sheet's value)")
+
+
+@check(1, title="generalized_gravity is minus the gradient of your own potential energy V(q) = -sum(m I_grav . "
+       "I_r_IB) (finite differences)", stage=STAGE_STRUCTURE, group="potential")
+def check_gravity_potential(ctx):
+    def compare(got, expected, args):
+        description = args[0]
+        masses = {body["name"]: body["m"] for body in description["bodies"]}
+
+        def potential(bodies):
+            return -sum(masses[name] * I_GRAV @ (as_array(body["A_IB"], f"A_IB of {name}", (3, 3))
+                                                 @ as_array(body["B_r_IB"], f"B_r_IB of {name}", (3,)))
+                        for name, body in zip(got["names"], bodies))
+
+        fd = -np.array([(potential(plus) - potential(minus)) / (2 * H) for plus, minus in got["shifted"]])
+        assert_close(got["g"], fd, "generalized_gravity(tree, q, I_grav)", DIFFERENCES, [
+            Mistake("sign_flip", -fd, "g(q) = -dV/dq points downhill, it is the generalized force of gravity."),
+        ], context=f"(expected: -dV/dq of your own positions, I_grav = {I_GRAV.tolist()})")
+
+    extra = (I_GRAV, H)
+    compare_fixed(ctx, "problem_32.potential", rich_case(KINDS, motion=False, masses=True, extra=extra), compare)
+    ctx.compare_random("problem_32.potential", cases(KINDS, motion=False, masses=True, extra=extra),
+                       name="generalized_gravity", tol=DIFFERENCES, compare=compare, examples=10,
+                       describe=describe_case)
+
+
+@check(2, title="generalized_gravity(tree, q, I_grav) on random trees with random masses", stage=STAGE_RANDOM,
+       group="gravity")
+def check_gravity_random(ctx):
+    def compare(got, expected, args):
+        if not close(got, expected, EXACT):
+            assert_close(got, expected, "generalized_gravity(tree, q, I_grav)", EXACT, _gravity_mistakes(
+                *args, expected), context=f"(I_grav = {I_GRAV.tolist()})")
+
+    compare_fixed(ctx, "problem_32.gravity", rich_case(KINDS, motion=False, masses=True, extra=(I_GRAV,)), compare)
+    ctx.compare_random("problem_32.gravity", cases(KINDS, motion=False, masses=True, extra=(I_GRAV,)),
+                       name="generalized_gravity", tol=EXACT, compare=compare, examples=15, describe=describe_case)
+
+
+@check(2, title="the gravity-compensating torques tau = -g(q) along the desired trajectory (209 points)",
+       stage=STAGE_VALUES, group="torques")
+def check_gravity_trajectory(ctx):
+    trajectory = ctx.reference("problem_32.trajectory", persist=True)
+    t, q = trajectory["t"], trajectory["q"]
+    got = as_array(ctx.student("problem_32.torques", q), "the torques along the trajectory", (t.size, 3))
+    expected = np.asarray(ctx.reference("problem_32.torques", q, persist=True))
+    ctx.add_figure(figure("Problem 32: gravity-compensating torques", "t [s]", "tau [Nm]",
+                          student=[(f"tau_{k + 1}", t, got[:, k]) for k in range(3)],
+                          reference=[(f"tau_{k + 1}", t, expected[:, k]) for k in range(3)]))
+    for k in range(t.size):
+        assert_close(got[k], expected[k], f"gravity_compensation(tree, q_des(t = {t[k]:.6g}))", EXACT,
+                     [Mistake("sign_flip", -expected[k], SIGN_HINT)],
+                     context=f"(q_des = {np.round(q[k], 5).tolist()}, the first time that differs)")

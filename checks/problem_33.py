@@ -1,0 +1,127 @@
+"""Checks of problem 33: the rolling contact's relative motion (``RollingContactJoint.joint_motion``) and the
+passive dynamic walker with velocities, accelerations and Jacobians."""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    check,
+    close,
+)
+
+from ._trees import (
+    bodies_of,
+    candidates,
+    compare_fixed,
+    compare_jacobian_differences,
+    compare_path_differences,
+    compare_states,
+    compare_trees,
+    configuration_figure,
+    describe_tree,
+    tree_comparison,
+)
+from .problem_25 import WALKER_MODELS
+
+TITLE = "Rolling Contact Joint (velocities, accelerations, Jacobians)"
+
+KINDS = ("rolling_contact", "rotational", "test")
+NO_SLIP = Tol("rolling without slipping", 1e-9, 1e-9)
+VALUES = st.lists(st.floats(-2.0, 2.0, allow_nan=False), min_size=6, max_size=6).map(
+    lambda v: (np.array(v[:2]), np.array(v[2:4]), np.array(v[4:])))
+
+
+def _walker():
+    from reference.problem_25 import build_walker
+
+    return describe_tree(build_walker())
+
+
+def _contact(state, q):
+    """Velocity and acceleration of the stance foot's material point that touches the ground, and the stance leg's
+    angular velocity, all inertial."""
+    from reference.problem_25 import FOOT_RADIUS
+
+    body = bodies_of(state, state["names"])[state["names"].index("stance_leg")]
+    A = as_array(body["A_IB"], "A_IB of stance_leg", (3, 3))
+    r, v, w, a, dw = (A @ as_array(body[name], f"{name} of stance_leg", (3,))
+                      for name in ("B_r_IB", "B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B"))
+    lever = np.array([-FOOT_RADIUS * q[0], 0.0, 0.0]) - r
+    return v + np.cross(w, lever), a + np.cross(dw, lever) + np.cross(w, np.cross(w, lever)), w
+
+
+def _same_pose(state, got):
+    return state is not None and all(
+        close(theirs[name], ours[name], EXACT) for theirs, ours in zip(state["bodies"], got["bodies"])
+        for name in ("A_IB", "B_r_IB"))
+
+
+@check(2, title="the walker at the sheet's test state q = (-30 deg, +60 deg), qd = (-0.5, +1), qdd = 0: velocities, "
+       "accelerations and Jacobians of both legs", stage=STAGE_VALUES, group="walker")
+def check_sheet(ctx):
+    from reference.problem_33 import Q, QD, QDD
+
+    got = ctx.student("problem_33.walker", Q, QD, QDD)
+    expected = ctx.reference("problem_33.walker", Q, QD, QDD)
+    drawing = configuration_figure("Problem 33: the walker at the test state", got, expected)
+    if drawing is not None:
+        ctx.add_figure(drawing)
+    compare_states(got, expected, mistakes=candidates(_walker(), Q, QD, QDD, models=WALKER_MODELS),
+                   context="(the sheet's test state)")
+
+
+@check(1, title="the stance foot rolls without slipping: the foot's point on the ground is at rest and accelerates "
+       "straight up by r omega^2", stage=STAGE_STRUCTURE, group="no_slip")
+def check_no_slip(ctx):
+    from reference.problem_25 import FOOT_RADIUS
+
+    def compare(got, expected, args):
+        q = args[0]
+        v, a, w = _contact(got, q)
+        expected_a = np.array([0.0, FOOT_RADIUS * w[2] ** 2, 0.0])
+        if close(v, np.zeros(3), NO_SLIP) and close(a, expected_a, NO_SLIP):
+            return
+        mistaken = [(name, hint, _contact(state, q)) for name, hint, state in
+                    candidates(_walker(), *args, models=WALKER_MODELS)()
+                    if name == "rolling_sign" and _same_pose(state, got)]
+        assert_close(v, np.zeros(3), "the velocity of the stance foot's contact point", NO_SLIP,
+                     [Mistake(name, c[0], hint) for name, hint, c in mistaken],
+                     context="(rolling without slipping)",
+                     note="The contact point is the foot's point right below its centre, I_r = (-r alpha, 0, 0).")
+        assert_close(a, expected_a, "the acceleration of the stance foot's contact point",
+                     NO_SLIP, [Mistake(name, c[1], hint) for name, hint, c in mistaken],
+                     context="(rolling without slipping: r omega^2 towards the foot's centre)")
+
+    def describe(args):
+        return "q = {}, qd = {}, qdd = {}".format(*(np.asarray(v).tolist() for v in args))
+
+    compare_fixed(ctx, "problem_33.walker", (np.array([0.4, -0.9]), np.array([1.2, -0.7]), np.array([-0.8, 1.5])),
+                  compare, describe)
+    ctx.compare_random("problem_33.walker", VALUES, name="the contact point", tol=NO_SLIP, compare=compare,
+                       examples=10, describe=describe)
+
+
+@check(1, title="the Jacobians of random trees with rolling contacts are the derivatives of your own positions and "
+       "orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
+def check_jacobians(ctx):
+    compare_jacobian_differences(ctx, "problem_33.jacobians", KINDS)
+
+
+@check(1, title="along a path q(t), the velocities and accelerations of random trees with rolling contacts are the "
+       "time derivatives of your own kinematics", stage=STAGE_STRUCTURE, group="path")
+def check_path(ctx):
+    compare_path_differences(ctx, "problem_33.path", KINDS)
+
+
+@check(2, title="random trees with rolling contacts: velocities, accelerations and Jacobians of every body",
+       stage=STAGE_RANDOM, group="trees")
+def check_random_trees(ctx):
+    compare_trees(ctx, "problem_33.tree_state", KINDS, tree_comparison(), name="the bodies' motion")

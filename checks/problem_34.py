@@ -1,0 +1,53 @@
+"""Checks of problem 34: the translational and the virtual 3-DOF joint (``TranslationalJoint``,
+``Virtual3DOFJoint``) and the biped that uses them."""
+
+from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, check
+
+from ._trees import (
+    candidates,
+    compare_jacobian_differences,
+    compare_path_differences,
+    compare_states,
+    compare_trees,
+    configuration_figure,
+    describe_tree,
+    tree_comparison,
+)
+
+TITLE = "Biped"
+
+KINDS = ("virtual_3dof", "translational", "rotational", "test")
+FRAME = 90
+
+
+@check(2, title="the biped at the 90th frame of its gait: positions, velocities, accelerations and Jacobians of every "
+       "body", stage=STAGE_VALUES, group="biped")
+def check_biped(ctx):
+    from reference.problem_34 import build_biped, frame_time, gait
+
+    t = frame_time(FRAME)
+    got = ctx.student("problem_34.biped", t)
+    expected = ctx.reference("problem_34.biped", t)
+    drawing = configuration_figure(f"Problem 34: the biped at frame {FRAME} (t = {t:g} s)", got, expected)
+    if drawing is not None:
+        ctx.add_figure(drawing)
+    compare_states(got, expected, mistakes=candidates(describe_tree(build_biped()), *gait(t)),
+                   context=f"(frame {FRAME}, t = {t:g} s)")
+
+
+@check(1, title="the Jacobians of random trees with translational and virtual 3-DOF joints are the derivatives of "
+       "your own positions and orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
+def check_jacobians(ctx):
+    compare_jacobian_differences(ctx, "problem_34.jacobians", KINDS)
+
+
+@check(1, title="along a path q(t), the velocities and accelerations of random trees with translational and "
+       "virtual 3-DOF joints are the time derivatives of your own kinematics", stage=STAGE_STRUCTURE, group="path")
+def check_path(ctx):
+    compare_path_differences(ctx, "problem_34.path", KINDS)
+
+
+@check(3, title="random trees with translational and virtual 3-DOF joints: the state of every body, in recursion "
+       "order", stage=STAGE_RANDOM, group="trees")
+def check_random_trees(ctx):
+    compare_trees(ctx, "problem_34.tree_state", KINDS, tree_comparison(), name="the bodies' motion")

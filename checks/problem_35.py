@@ -1,0 +1,144 @@
+"""Checks of problem 35: the symbolic joint functions of the four joint types, evaluated in the sandbox at the
+points the check sends and compared with the reference's numeric joint functions."""
+
+import numpy as np
+
+from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
+
+TITLE = "Specific Joint Functions"
+
+NQ = {"rotational": 1, "translational": 1, "virtual_3dof": 3, "rolling_contact": 1}
+NAMES = {"rotational": "(a) rotational", "translational": "(b) translational", "virtual_3dof": "(c) 3-DOF",
+         "rolling_contact": "(d) rolling contact"}
+VECTORS = ("Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "omega_rel", "omega_rel_dot")
+POINTS = 6
+
+SIGN_HINT = ("omega_rel comes from skew(omega_rel) = dA_DpDs/dt @ A_DpDs.T, read back as (W[2,1], W[0,2], W[1,0]); "
+             "yours has the opposite sign (the other off-diagonal entries, or A_DpDs @ dA_DpDs/dt.T).")
+QDD_HINT = ("The time derivative of an expression in q and qd has two parts: d/dt f(q, qd) = (df/dq) qd + (df/dqd) "
+            "qdd; yours misses the second.")
+ROLLING_HINT = ("The circle rolls the wrong way: turning counter-clockwise by gamma it rolls towards -x, "
+                "Dp_r_DpDs = (-r gamma, 0, 0), S = (-r, 0, 0).")
+TRANSPOSE_HINT = "A_DpDs maps Ds- to Dp-coordinates: R3(gamma); you have its transpose R3(-gamma)."
+
+
+def _points(ctx, kind):
+    ctx.last_seed = ctx.seed
+    rng = np.random.default_rng([ctx.seed, list(NQ).index(kind)])
+    nq = NQ[kind]
+    return [{"q": rng.uniform(-2, 2, nq), "qd": rng.uniform(-2, 2, nq), "qdd": rng.uniform(-2, 2, nq),
+             "r": float(rng.uniform(0.1, 2.0))} for _ in range(POINTS)]
+
+
+def _numeric(kind, point, rolling=None):
+    """The reference's joint function at ``point`` as a dict like the student's (``rolling``: a rolling-contact
+    class to use instead of the reference's)."""
+    from probes._trees import CLASSES
+    from reference import tree
+
+    cls = rolling or getattr(tree, CLASSES[kind])
+    extra = {"r": point["r"]} if kind == "rolling_contact" else {}
+    joint = cls(tree.Body("P"), tree.Body("S"), q_index=list(range(NQ[kind])), **extra)
+    A_DpDs, r_rel = joint.joint_pose(point["q"])
+    rel = joint.joint_motion(point["q"], point["qd"], point["qdd"])
+    return {"A_DpDs": A_DpDs, "Dp_r_DpDs": r_rel, **{name: getattr(rel, name) for name in VECTORS[1:]},
+            "S": rel.S, "R": rel.R}
+
+
+def _rolling_wrong_way():
+    from reference.tree import RollingContactJoint
+
+    from ._trees import RollingWrongWay
+
+    return type("RollingContactJoint", (RollingWrongWay, RollingContactJoint), {})
+
+
+def _evaluate(ctx, kind, points):
+    got = ctx.student("problem_35.joint_function", kind, points)
+    for name, problem in got["problems"].items():
+        what = f"{kind}_joint_function() has no entry {name!r}" if problem == "missing" else (
+            f"{name} of {kind}_joint_function() {problem}: it must depend on q, qd, qdd"
+            f"{' and r' if kind == 'rolling_contact' else ''} only")
+        fail(f"{what}, so it cannot be evaluated.",
+             "Use the symbols of the dict's q, qd, qdd (and r): derivatives d_<name>, dd_<name> are in qd, qdd.",
+             "free_symbols" if problem != "missing" else "missing")
+    return got["values"]
+
+
+def _entries(values, kind):
+    """The student's entries in the reference's shapes: 3-vectors, 3 x 3, 3 x nq."""
+    nq = NQ[kind]
+    shaped = {"A_DpDs": as_array(values["A_DpDs"], "A_DpDs", (3, 3))}
+    for name in VECTORS:
+        value = np.asarray(values[name], dtype=float)
+        shaped[name] = as_array(value.reshape(3) if value.size == 3 else value, name, (3,))
+    for name in ("S", "R"):
+        value = np.asarray(values[name], dtype=float)
+        shaped[name] = as_array(value.reshape(3, nq) if value.size == 3 * nq else value, name, (3, nq))
+    return shaped
+
+
+def _at(point, kind):
+    shown = ", ".join(f"{key} = {np.round(point[key], 6).tolist()}" for key in ("q", "qd", "qdd"))
+    return f"at {shown}" + (f", r = {point['r']:.6g}" if kind == "rolling_contact" else "")
+
+
+def _subspaces(ctx, kind):
+    points = _points(ctx, kind)
+    for point, values in zip(points, _evaluate(ctx, kind, points)):
+        entries = _entries(values, kind)
+        where = f"{_at(point, kind)} (seed {ctx.seed})"
+        assert_close(entries["r_rel_dot"], entries["S"] @ point["qd"], f"r_rel_dot {where}", EXACT,
+                     context="(expected: your S @ qd)",
+                     note="S is the motion subspace of the translation: r_rel_dot = S qd, S = d r_rel_dot / d qd.")
+        assert_close(entries["omega_rel"], entries["R"] @ point["qd"], f"omega_rel {where}", EXACT,
+                     context="(expected: your R @ qd)",
+                     note="R is the motion subspace of the rotation: omega_rel = R qd, R = d omega_rel / d qd.")
+
+
+def _mistakes(kind, point, name, target):
+    found = []
+    if kind == "rolling_contact":
+        found.append(Mistake("rolling_sign", _numeric(kind, point, _rolling_wrong_way())[name], ROLLING_HINT))
+    if name in ("omega_rel", "omega_rel_dot", "R"):
+        found.append(Mistake("sign_flip", -target, SIGN_HINT))
+    if name in ("r_rel_ddot", "omega_rel_dot"):
+        found.append(Mistake("missing_qdd", np.zeros(3), QDD_HINT))
+    if name == "A_DpDs":
+        found.append(Mistake("transpose", target.T, TRANSPOSE_HINT))
+    return found
+
+
+def _values(ctx, kind):
+    points = _points(ctx, kind)
+    for point, values in zip(points, _evaluate(ctx, kind, points)):
+        expected = _numeric(kind, point)
+        for name, value in _entries(values, kind).items():
+            target = np.asarray(expected[name], dtype=float)
+            if not close(value, target, EXACT):
+                assert_close(value, target, f"{name} {_at(point, kind)}", EXACT, _mistakes(kind, point, name, target),
+                             context=f"(the reference's {kind} joint function; seed {ctx.seed})")
+
+
+def _checks(kind):
+    label = NAMES[kind]
+
+    def subspaces(ctx):
+        _subspaces(ctx, kind)
+
+    def values(ctx):
+        _values(ctx, kind)
+
+    subspaces.__name__, values.__name__ = f"check_{kind}_subspaces", f"check_{kind}_values"
+    return (
+        check(1, title=f"{label} joint: r_rel_dot = S qd and omega_rel = R qd for your own S and R",
+              stage=STAGE_STRUCTURE, group=kind)(subspaces),
+        check(1, title=f"{label} joint: A_DpDs, Dp_r_DpDs, velocities, accelerations, S and R at random points",
+              stage=STAGE_RANDOM, group=kind)(values),
+    )
+
+
+check_rotational_subspaces, check_rotational_values = _checks("rotational")
+check_translational_subspaces, check_translational_values = _checks("translational")
+check_virtual_3dof_subspaces, check_virtual_3dof_values = _checks("virtual_3dof")
+check_rolling_contact_subspaces, check_rolling_contact_values = _checks("rolling_contact")

@@ -1,0 +1,19 @@
+"""Probes of problem 24: recursive forward kinematics (positions and orientations) of the triple pendulum and of
+random trees of rotational joints."""
+
+import numpy as np
+
+from . import _trees, module, probe
+
+
+@probe
+def pendulum(pkg, q):
+    """The triple pendulum of ``build_triple_pendulum`` after a positions-only pass at ``q``."""
+    tree = module(pkg, "problem_24").build_triple_pendulum()
+    tree.forward_kinematics(np.asarray(q, dtype=float))
+    return {**_trees.state(tree, motion=False), "outline": _trees.outline(tree)}
+
+
+@probe
+def tree_poses(pkg, description, q):
+    return _trees.tree_state(pkg, description, q)

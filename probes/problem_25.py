@@ -1,0 +1,59 @@
+"""Probes of problem 25: the passive dynamic walker (numeric and symbolic) and random trees with rolling
+contacts."""
+
+import numpy as np
+
+from . import _trees, module, probe
+
+_SYMBOLIC = {}
+
+
+@probe
+def walker(pkg, alpha, gamma):
+    """The walker of ``build_walker`` at ``q = (alpha, gamma)``: body states, outline and ``cog_positions``."""
+    p25 = module(pkg, "problem_25")
+    tree = p25.build_walker()
+    x = p25.cog_positions(alpha, gamma, tree)
+    tree.forward_kinematics(np.array([alpha, gamma], dtype=float))
+    return {**_trees.state(tree, motion=False), "outline": _trees.outline(tree), "x": x}
+
+
+@probe
+def tree_poses(pkg, description, q):
+    return _trees.tree_state(pkg, description, q)
+
+
+def _symbolic(pkg):
+    """``cog_positions_symbolic()`` as numeric functions of ``(alpha, gamma)`` (computed once per package), or the
+    symbols other than ``q`` that the expressions contain."""
+    if pkg.__name__ not in _SYMBOLIC:
+        import sympy as sp
+
+        q, x, J = module(pkg, "problem_25").cog_positions_symbolic()
+        symbols = list(sp.Matrix(q))
+        x, J = sp.Matrix(x), sp.Matrix(J)
+        free = sorted(str(s) for s in (x.free_symbols | J.free_symbols) - set(symbols))
+        functions = None if free else (sp.lambdify(symbols, x, "numpy"), sp.lambdify(symbols, J, "numpy"))
+        _SYMBOLIC[pkg.__name__] = (functions, free, [str(s) for s in symbols])
+    return _SYMBOLIC[pkg.__name__]
+
+
+@probe
+def symbolic(pkg, points, h):
+    """``x`` and ``J`` of ``cog_positions_symbolic`` at every point ``(alpha, gamma)``, and ``x`` at the points
+    shifted by ``+-h`` in each coordinate."""
+    functions, free, symbols = _symbolic(pkg)
+    if functions is None:
+        return {"free_symbols": free, "symbols": symbols}
+    x_of, J_of = functions
+
+    def x_at(point):
+        return np.array(x_of(*point), dtype=float)
+
+    result = {"x": [], "J": [], "plus": [], "minus": [], "symbols": symbols}
+    for point in np.asarray(points, dtype=float):
+        result["x"].append(x_at(point))
+        result["J"].append(np.array(J_of(*point), dtype=float))
+        result["plus"].append([x_at(point + h * e) for e in np.eye(2)])
+        result["minus"].append([x_at(point - h * e) for e in np.eye(2)])
+    return result

@@ -1,0 +1,28 @@
+"""Probes of problem 34: the biped on its virtual 3-DOF joint, and random trees with translational and virtual
+3-DOF joints."""
+
+from . import _trees, module, probe
+
+
+@probe
+def biped(pkg, t):
+    """The biped of ``build_biped`` following ``gait(t)``; the outline starts at the main body."""
+    p34 = module(pkg, "problem_34")
+    tree = p34.build_biped()
+    tree.forward_kinematics(*p34.gait(t))
+    return {**_trees.state(tree), "outline": _trees.outline(tree, tree["main_body"])}
+
+
+@probe
+def tree_state(pkg, description, q, qd, qdd):
+    return _trees.tree_state(pkg, description, q, qd, qdd)
+
+
+@probe
+def jacobians(pkg, description, q, h):
+    return _trees.jacobian_differences(pkg, description, q, h)
+
+
+@probe
+def path(pkg, description, q, qd, qdd, h):
+    return _trees.path_differences(pkg, description, q, qd, qdd, h)

@@ -1,0 +1,46 @@
+"""Probes of problem 35: the symbolic joint functions, evaluated here at the points the check sends."""
+
+import numpy as np
+
+from . import module, probe
+
+#: the entries of a joint-function dict, vectors as 3 x 1 and S, R as 3 x nq
+KEYS = ("A_DpDs", "Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "omega_rel", "omega_rel_dot", "S", "R")
+_FUNCTIONS = {}
+
+
+def _functions(pkg, kind):
+    """``({key: numeric function of (q, qd, qdd[, r])}, {key: what is wrong with it})`` for the joint function
+    ``<kind>_joint_function()`` of the package (computed once per package and kind)."""
+    key = (pkg.__name__, kind)
+    if key not in _FUNCTIONS:
+        import sympy as sp
+
+        result = getattr(module(pkg, "problem_35"), f"{kind}_joint_function")()
+        symbols = [s for name in ("q", "qd", "qdd") for s in sp.Matrix(result[name])]
+        if kind == "rolling_contact":
+            symbols.append(result["r"])
+        functions, problems = {}, {}
+        for name in KEYS:
+            if name not in result:
+                problems[name] = "missing"
+                continue
+            expr = sp.Matrix(result[name])
+            free = expr.free_symbols - set(symbols)
+            if free:
+                problems[name] = "contains the symbols " + ", ".join(sorted(map(str, free)))
+                continue
+            functions[name] = sp.lambdify(symbols, expr, "numpy")
+        _FUNCTIONS[key] = (functions, problems)
+    return _FUNCTIONS[key]
+
+
+@probe
+def joint_function(pkg, kind, points):
+    """The entries of ``<kind>_joint_function()`` at every point ``{"q", "qd", "qdd", "r"}``."""
+    functions, problems = _functions(pkg, kind)
+    values = []
+    for point in points:
+        args = [*point["q"], *point["qd"], *point["qdd"], *([point["r"]] if kind == "rolling_contact" else [])]
+        values.append({name: np.array(f(*args), dtype=float) for name, f in functions.items()})
+    return {"problems": problems, "values": values}
