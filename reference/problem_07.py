@@ -58,7 +58,7 @@ def derive():
         "A_IC2": clean(A_IC2),
         "A_IC3": clean(A_IC3),
         "A_C3I": clean(A_C3I),
-        "C3_omega_IC3": clean(omega).applyfunc(sp.trigsimp),
+        "C3_omega_IC3": clean(omega).applyfunc(lambda e: sp.trigsimp(sp.expand(e))),
     }
     # END SOLUTION
 
