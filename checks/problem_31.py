@@ -34,16 +34,16 @@ def check_pendulum(ctx):
 @check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "
        "orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
 def check_jacobians(ctx):
-    compare_jacobian_differences(ctx, "problem_31.jacobians", KINDS)
+    compare_jacobian_differences(ctx, "_trees.jacobian_differences", KINDS)
 
 
 @check(2, title="along a path q(t), your velocities are the time derivatives of your positions and orientations, "
        "and your accelerations those of your velocities", stage=STAGE_STRUCTURE, group="path")
 def check_path(ctx):
-    compare_path_differences(ctx, "problem_31.path", KINDS)
+    compare_path_differences(ctx, "_trees.path_differences", KINDS)
 
 
 @check(3, title="random trees: velocities, accelerations and Jacobians of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "problem_31.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")

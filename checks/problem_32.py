@@ -75,7 +75,7 @@ def _robot():
 @check(2, title="random trees with rigid joints: the state of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_rigid_trees(ctx):
-    compare_trees(ctx, "problem_32.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
 
 
 @check(2, title="the robot hangs with its end effector at (0, -3, 0) at q = 0, and at the sheet's q_des(0) = "

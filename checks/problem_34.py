@@ -38,16 +38,16 @@ def check_biped(ctx):
 @check(1, title="the Jacobians of random trees with translational and virtual 3-DOF joints are the derivatives of "
        "your own positions and orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
 def check_jacobians(ctx):
-    compare_jacobian_differences(ctx, "problem_34.jacobians", KINDS)
+    compare_jacobian_differences(ctx, "_trees.jacobian_differences", KINDS)
 
 
 @check(1, title="along a path q(t), the velocities and accelerations of random trees with translational and "
        "virtual 3-DOF joints are the time derivatives of your own kinematics", stage=STAGE_STRUCTURE, group="path")
 def check_path(ctx):
-    compare_path_differences(ctx, "problem_34.path", KINDS)
+    compare_path_differences(ctx, "_trees.path_differences", KINDS)
 
 
 @check(3, title="random trees with translational and virtual 3-DOF joints: the state of every body, in recursion "
        "order", stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "problem_34.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")

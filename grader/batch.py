@@ -17,7 +17,6 @@ RESULTS receives the gradebook (``gradebook.sqlite``), ``grades.csv``, ``summary
 
 from __future__ import annotations
 
-import base64
 import csv
 import fcntl
 import hashlib
@@ -556,19 +555,9 @@ def export_results(out: str | Path, book: Gradebook | None = None) -> dict[str, 
 
 
 def _png(draw, height: float = 3.4) -> str:
-    import matplotlib
+    from .render import png
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    figure, ax = plt.subplots(figsize=(6.4, height), dpi=90)
-    draw(ax)
-    ax.grid(True, alpha=0.3)
-    figure.tight_layout()
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png")
-    plt.close(figure)
-    return base64.b64encode(buffer.getvalue()).decode()
+    return png(draw, height)
 
 
 def _histogram(scores: list[float], top: float, title: str, xlabel: str) -> str:

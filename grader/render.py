@@ -54,30 +54,39 @@ def render_terminal(reports: list[ProblemReport], colour: bool = False, show_hid
     return template.render(reports=reports, paint=paint, bold=bold, show_hidden=show_hidden).strip("\n") + "\n"
 
 
-def _figure_png(fig) -> str:
-    """A figure as a base64 PNG (matplotlib, imported only when a report has figures)."""
+def png(draw, height: float = 4.2) -> str:
+    """A base64 PNG of what ``draw(ax)`` puts on one matplotlib axes (imported only when a plot is drawn)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    canvas, ax = plt.subplots(figsize=(6.4, 4.2), dpi=90)
-    for series in fig.series:
-        style = {"student": "-", "reference": "--"}.get(series.role, ":")
-        width = 2.2 if series.role == "student" else 1.4
-        ax.plot(series.x, series.y, style, linewidth=width, label=series.label)
-    ax.set_title(fig.title)
-    ax.set_xlabel(fig.xlabel)
-    ax.set_ylabel(fig.ylabel)
-    if fig.equal_axes:
-        ax.set_aspect("equal", adjustable="datalim")
+    canvas, ax = plt.subplots(figsize=(6.4, height), dpi=90)
+    draw(ax)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
-    buffer = io.BytesIO()
     canvas.tight_layout()
+    buffer = io.BytesIO()
     canvas.savefig(buffer, format="png")
     plt.close(canvas)
     return base64.b64encode(buffer.getvalue()).decode()
+
+
+def _figure_png(fig) -> str:
+    """A result's figure: the student's curves solid, the reference's dashed."""
+
+    def draw(ax):
+        for series in fig.series:
+            style = {"student": "-", "reference": "--"}.get(series.role, ":")
+            width = 2.2 if series.role == "student" else 1.4
+            ax.plot(series.x, series.y, style, linewidth=width, label=series.label)
+        ax.set_title(fig.title)
+        ax.set_xlabel(fig.xlabel)
+        ax.set_ylabel(fig.ylabel)
+        if fig.equal_axes:
+            ax.set_aspect("equal", adjustable="datalim")
+        ax.legend(fontsize="small")
+
+    return png(draw)
 
 
 def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report") -> str:

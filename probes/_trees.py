@@ -15,7 +15,7 @@ the generic recursion meets relative translations without any joint type the stu
 
 import numpy as np
 
-from . import module
+from . import module, probe
 
 __all__ = [
     "POSE",
@@ -135,6 +135,7 @@ def outline(tree, start=None):
     return np.array(points)
 
 
+@probe
 def tree_state(pkg, description, q, qd=None, qdd=None):
     """The state of the described tree, built with the package's classes, after ``forward_kinematics``."""
     tree = build(module(pkg, "tree"), description)
@@ -142,6 +143,7 @@ def tree_state(pkg, description, q, qd=None, qdd=None):
     return state(tree, motion=qd is not None)
 
 
+@probe
 def jacobian_differences(pkg, description, q, h):
     """The full state at ``q`` (at rest) and the poses at ``q +- h e_i`` for every coordinate ``i``."""
     tree = build(module(pkg, "tree"), description)
@@ -159,6 +161,7 @@ def jacobian_differences(pkg, description, q, h):
     return {"state": at, "shifted": shifted}
 
 
+@probe
 def path_differences(pkg, description, q, qd, qdd, h):
     """Full states at ``t = -h, 0, +h`` along ``q(t) = q + qd t + qdd t^2 / 2``."""
     tree = build(module(pkg, "tree"), description)

@@ -6,11 +6,6 @@ from . import _trees, module, probe
 
 
 @probe
-def tree_state(pkg, description, q, qd, qdd):
-    return _trees.tree_state(pkg, description, q, qd, qdd)
-
-
-@probe
 def robot(pkg, q):
     """The arm of ``build_robot`` at ``q``: body states, outline and ``end_effector_position``."""
     p32 = module(pkg, "problem_32")

@@ -12,18 +12,3 @@ def walker(pkg, q, qd, qdd):
     tree = module(pkg, "problem_25").build_walker()
     tree.forward_kinematics(*(np.asarray(v, dtype=float) for v in (q, qd, qdd)))
     return {**_trees.state(tree), "outline": _trees.outline(tree)}
-
-
-@probe
-def tree_state(pkg, description, q, qd, qdd):
-    return _trees.tree_state(pkg, description, q, qd, qdd)
-
-
-@probe
-def jacobians(pkg, description, q, h):
-    return _trees.jacobian_differences(pkg, description, q, h)
-
-
-@probe
-def path(pkg, description, q, qd, qdd, h):
-    return _trees.path_differences(pkg, description, q, qd, qdd, h)

@@ -11,18 +11,3 @@ def biped(pkg, t):
     tree = p34.build_biped()
     tree.forward_kinematics(*p34.gait(t))
     return {**_trees.state(tree), "outline": _trees.outline(tree, tree["main_body"])}
-
-
-@probe
-def tree_state(pkg, description, q, qd, qdd):
-    return _trees.tree_state(pkg, description, q, qd, qdd)
-
-
-@probe
-def jacobians(pkg, description, q, h):
-    return _trees.jacobian_differences(pkg, description, q, h)
-
-
-@probe
-def path(pkg, description, q, qd, qdd, h):
-    return _trees.path_differences(pkg, description, q, qd, qdd, h)
