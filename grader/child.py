@@ -202,7 +202,10 @@ class Child:
         reply = self._request(
             {"op": "call", "probe": probe, "args": encode(list(args))}, timeout or self.limits.call_timeout
         )
-        return decode(reply.get("value"))
+        try:
+            return decode(reply.get("value"))
+        except (RecursionError, ValueError, TypeError) as exc:  # only a forged reply can be malformed
+            raise StudentCodeError("bad_value", type(exc).__name__, f"the answer could not be read: {exc}")
 
     def output(self) -> tuple[str, str]:
         """The tails of what the child printed on stdout and stderr."""
