@@ -1,24 +1,14 @@
 """Problem 10: understanding rotation matrices.
 
-The keys of (a) and (b) are computed from the printed matrices' properties; (c) is read off a figure, so any
-proper rotation close to the course's approximate matrix is accepted.  The printed matrices carry three decimals,
+The keys of (a) and (b) are computed from the printed matrices' properties (in a reference-only block: the
+student answers in answers.toml); (c) is read off a figure, so any proper rotation close to the course's
+approximate matrix is accepted.  The printed matrices carry three decimals,
 so their properties hold to ``PRINT_TOL`` only.
 """
 
 import numpy as np
 
-__all__ = [
-    "PRINT_TOL",
-    "MATRICES_A",
-    "MATRICES_B",
-    "COURSE_C",
-    "orthonormality_defect",
-    "is_orthonormal",
-    "is_rotation",
-    "answer_a",
-    "answer_b",
-    "nearest_rotation",
-]
+__all__ = ["PRINT_TOL", "MATRICES_A", "MATRICES_B", "COURSE_C"]
 
 #: tolerance for properties of matrices printed with three decimals
 PRINT_TOL = 5e-3
@@ -39,6 +29,10 @@ MATRICES_B = (
 
 #: the course's approximate A_IC for (c) (columns: the axes of C in I); itself not orthonormal
 COURSE_C = np.array([[0.15, -0.6, -0.9], [-0.1, 0.9, 0.6], [0.95, 0.2, 0.1]])
+
+
+# BEGIN REFERENCE ONLY
+# The grader's computation of the keys: not part of the student's package.
 
 
 def orthonormality_defect(A):
@@ -65,16 +59,12 @@ def _only(indices, what):
 
 def answer_a():
     """1-based index of the matrix in (a) that is NOT orthonormal."""
-    # BEGIN SOLUTION problem 10
     return _only([k + 1 for k, A in enumerate(MATRICES_A) if not is_orthonormal(A)], "is not orthonormal")
-    # END SOLUTION
 
 
 def answer_b():
     """1-based index of the matrix in (b) that IS a rotation."""
-    # BEGIN SOLUTION problem 10
     return _only([k + 1 for k, A in enumerate(MATRICES_B) if is_rotation(A)], "is a rotation")
-    # END SOLUTION
 
 
 def nearest_rotation(A):
@@ -82,3 +72,4 @@ def nearest_rotation(A):
     U, _, Vt = np.linalg.svd(np.asarray(A, dtype=float))
     D = np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))])
     return U @ D @ Vt
+# END REFERENCE ONLY

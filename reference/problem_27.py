@@ -42,16 +42,8 @@ __all__ = [
     "revolute_column",
     "prismatic_column",
     "jacobian_a",
-    "velocity_residuals",
-    "bias_acceleration_residuals",
     "governor_jacobian",
     "frame_derivative_residuals",
-    "answer_a",
-    "answer_b",
-    "answer_c",
-    "answer_d",
-    "answer_e",
-    "answers",
 ]
 
 #: tolerance for matrices printed with two decimals
@@ -86,12 +78,6 @@ OPTIONS_D = {
 }
 
 
-def _only(options, what):
-    if len(options) != 1:
-        raise ValueError(f"expected exactly one option that {what}, found {options}")
-    return options[0]
-
-
 def revolute_column(p, p_e):
     """Column ``(x, y, gamma)`` of the planar Jacobian of the end effector at ``p_e`` for a revolute joint at ``p``."""
     # BEGIN SOLUTION problem 27
@@ -121,6 +107,7 @@ def jacobian_a():
     # END SOLUTION
 
 
+# BEGIN REFERENCE ONLY
 def _constraint(rheonomic):
     """Example explicit constraint ``x = f(q, t)``: a two-link arm, on a turning, moving base when rheonomic."""
     import sympy as sp
@@ -162,7 +149,6 @@ def _float_vector(expr, t, t0):
 
 def velocity_residuals():
     """``{option: |x_dot - (J q_dot + df)|}`` of (b), ``None`` when the option's type admits no explicit equality."""
-    # BEGIN SOLUTION problem 27
     import sympy as sp
 
     t0, q0, qd0, qdd0 = sp.Rational(*_T0), _rationals(_Q0), _rationals(_QD0), _rationals(_QDD0)
@@ -178,12 +164,10 @@ def velocity_residuals():
         predicted = f.jacobian(q).subs(along) * sp.Matrix(qd0) + df
         residuals[option] = float(np.linalg.norm(_float_vector(x_dot - predicted, t, t0)))
     return residuals
-    # END SOLUTION
 
 
 def bias_acceleration_residuals():
     """``{option: |sigma_option - sigma|}`` of (c) on the rheonomic example constraint."""
-    # BEGIN SOLUTION problem 27
     import sympy as sp
 
     t0, q0, qd0, qdd0 = sp.Rational(*_T0), _rationals(_Q0), _rationals(_QD0), _rationals(_QDD0)
@@ -202,7 +186,7 @@ def bias_acceleration_residuals():
         4: f.subs(along).diff(t, 2) - J_qdd,
     }
     return {k: float(np.linalg.norm(_float_vector(v - sigma, t, t0))) for k, v in options.items()}
-    # END SOLUTION
+# END REFERENCE ONLY
 
 
 def governor_jacobian():
@@ -269,42 +253,39 @@ def frame_derivative_residuals(seed=0, t=0.3):
     # END SOLUTION
 
 
+# BEGIN REFERENCE ONLY
+def _only(options, what):
+    if len(options) != 1:
+        raise ValueError(f"expected exactly one option that {what}, found {options}")
+    return options[0]
+
+
 def answer_a():
     """Key of (a): the option equal to the computed Jacobian."""
-    # BEGIN SOLUTION problem 27
     J = jacobian_a()
     return _only([k for k, option in OPTIONS_A.items() if np.allclose(option, J, atol=PRINT_TOL)], "matches J")
-    # END SOLUTION
 
 
 def answer_b(tol=1e-9):
     """Key of (b): the option whose formula reproduces ``x_dot`` for its constraint type."""
-    # BEGIN SOLUTION problem 27
     residuals = velocity_residuals()
     return _only([k for k, r in residuals.items() if r is not None and r < tol], "gives x_dot")
-    # END SOLUTION
 
 
 def answer_c(tol=1e-9):
     """Key of (c): the option that does NOT give the bias acceleration."""
-    # BEGIN SOLUTION problem 27
     return _only([k for k, r in bias_acceleration_residuals().items() if r > tol], "fails")
-    # END SOLUTION
 
 
 def answer_d():
     """Key of (d): the option equal to the computed Jacobian of the ball."""
-    # BEGIN SOLUTION problem 27
     J = governor_jacobian()
     return _only([k for k, option in OPTIONS_D.items() if np.allclose(option, J, atol=1e-12)], "matches J")
-    # END SOLUTION
 
 
 def answer_e(tol=1e-6):
     """Key of (e): the statement that is NOT correct on a random rigid motion."""
-    # BEGIN SOLUTION problem 27
     return _only([k for k, r in frame_derivative_residuals().items() if r > tol], "fails")
-    # END SOLUTION
 
 
 def answers():
@@ -316,3 +297,4 @@ def answers():
         "d": answer_d(),
         "e": answer_e(),
     }
+# END REFERENCE ONLY

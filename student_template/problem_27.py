@@ -42,16 +42,8 @@ __all__ = [
     "revolute_column",
     "prismatic_column",
     "jacobian_a",
-    "velocity_residuals",
-    "bias_acceleration_residuals",
     "governor_jacobian",
     "frame_derivative_residuals",
-    "answer_a",
-    "answer_b",
-    "answer_c",
-    "answer_d",
-    "answer_e",
-    "answers",
 ]
 
 #: tolerance for matrices printed with two decimals
@@ -86,12 +78,6 @@ OPTIONS_D = {
 }
 
 
-def _only(options, what):
-    if len(options) != 1:
-        raise ValueError(f"expected exactly one option that {what}, found {options}")
-    return options[0]
-
-
 def revolute_column(p, p_e):
     """Column ``(x, y, gamma)`` of the planar Jacobian of the end effector at ``p_e`` for a revolute joint at ``p``."""
     # TODO problem 27: write your solution here
@@ -110,55 +96,6 @@ def jacobian_a():
     raise NotImplementedError("Problem 27: jacobian_a is not implemented yet")
 
 
-def _constraint(rheonomic):
-    """Example explicit constraint ``x = f(q, t)``: a two-link arm, on a turning, moving base when rheonomic."""
-    import sympy as sp
-
-    t = sp.Symbol("t", real=True)
-    q = sp.symbols("q1 q2", real=True)
-    arm = sp.Matrix(
-        [
-            sp.cos(q[0]) + sp.Rational(7, 10) * sp.cos(q[0] + q[1]),
-            sp.sin(q[0]) + sp.Rational(7, 10) * sp.sin(q[0] + q[1]),
-        ]
-    )
-    if not rheonomic:
-        return t, q, arm
-    turn = sp.Matrix([[sp.cos(3 * t / 2), -sp.sin(3 * t / 2)], [sp.sin(3 * t / 2), sp.cos(3 * t / 2)]])
-    return t, q, turn * arm + sp.Matrix([sp.sin(2 * t) / 3, t**2 / 10])
-
-
-def _trajectory(t, t0, q0, qd0, qdd0):
-    """``q(t)`` with the given value, velocity and acceleration at ``t0``."""
-    tau = t - t0
-    return [a + b * tau + c * tau**2 / 2 for a, b, c in zip(q0, qd0, qdd0)]
-
-
-# example state at which (b) and (c) are evaluated: t0, q(t0), q_dot(t0), q_ddot(t0) as exact fractions
-_T0 = (2, 5)
-_Q0, _QD0, _QDD0 = ((1, 3), (-1, 2)), ((1, 2), (3, 4)), ((-2, 3), (5, 4))
-
-
-def _rationals(pairs):
-    import sympy as sp
-
-    return [sp.Rational(*pair) for pair in pairs]
-
-
-def _float_vector(expr, t, t0):
-    return np.array(expr.subs(t, t0).evalf(), dtype=float).reshape(-1)
-
-
-def velocity_residuals():
-    """``{option: |x_dot - (J q_dot + df)|}`` of (b), ``None`` when the option's type admits no explicit equality."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: velocity_residuals is not implemented yet")
-
-
-def bias_acceleration_residuals():
-    """``{option: |sigma_option - sigma|}`` of (c) on the rheonomic example constraint."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: bias_acceleration_residuals is not implemented yet")
 
 
 def governor_jacobian():
@@ -200,42 +137,3 @@ def frame_derivative_residuals(seed=0, t=0.3):
     raise NotImplementedError("Problem 27: frame_derivative_residuals is not implemented yet")
 
 
-def answer_a():
-    """Key of (a): the option equal to the computed Jacobian."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: answer_a is not implemented yet")
-
-
-def answer_b(tol=1e-9):
-    """Key of (b): the option whose formula reproduces ``x_dot`` for its constraint type."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: answer_b is not implemented yet")
-
-
-def answer_c(tol=1e-9):
-    """Key of (c): the option that does NOT give the bias acceleration."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: answer_c is not implemented yet")
-
-
-def answer_d():
-    """Key of (d): the option equal to the computed Jacobian of the ball."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: answer_d is not implemented yet")
-
-
-def answer_e(tol=1e-6):
-    """Key of (e): the statement that is NOT correct on a random rigid motion."""
-    # TODO problem 27: write your solution here
-    raise NotImplementedError("Problem 27: answer_e is not implemented yet")
-
-
-def answers():
-    """``{"a": ..., "e": ...}``: all five keys."""
-    return {
-        "a": answer_a(),
-        "b": answer_b(),
-        "c": answer_c(),
-        "d": answer_d(),
-        "e": answer_e(),
-    }

@@ -9,7 +9,7 @@ import pytest
 
 from grader import grade_submission, problems
 from grader.results import Status
-from tools.make_template import TemplateError, answers_template, stub_source
+from tools.make_template import TemplateError, answers_template, strip_reference_only, stub_source
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -20,9 +20,9 @@ def test_template_is_current():
     assert done.returncode == 0, done.stderr
 
 
-def _api(path: Path) -> dict:
+def _api(source: str) -> dict:
     """Public names and signatures: module __all__, functions, classes and their methods."""
-    tree = ast.parse(path.read_text())
+    tree = ast.parse(source)
     api = {}
     for node in tree.body:
         if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "__all__" for t in node.targets):
@@ -39,7 +39,36 @@ def _api(path: Path) -> dict:
 
 @pytest.mark.parametrize("name", sorted(p.name for p in (ROOT / "reference").glob("*.py")))
 def test_public_names_and_signatures_match(name):
-    assert _api(ROOT / "reference" / name) == _api(ROOT / "student_template" / name)
+    reference = strip_reference_only((ROOT / "reference" / name).read_text())
+    assert _api(reference) == _api((ROOT / "student_template" / name).read_text())
+
+
+def _defined(source: str) -> set[str]:
+    """Names bound at the top level of a module."""
+    names = set()
+    for node in ast.parse(source).body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, (ast.Assign, ast.AnnAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            names |= {n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name)}
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            names |= {(a.asname or a.name).split(".")[0] for a in node.names}
+    return names
+
+
+def test_reference_only_names_stay_out_of_the_public_api():
+    for path in (ROOT / "reference").glob("*.py"):
+        public = _api(path.read_text()).get("__all__", [])
+        kept = _defined(strip_reference_only(path.read_text()))
+        assert not [n for n in public if n not in kept], path.name
+
+
+def test_reference_only_blocks_are_dropped():
+    source = "x = 1\n# BEGIN REFERENCE ONLY\ndef key():\n    return 4\n# END REFERENCE ONLY\ny = 2\n"
+    assert stub_source(source) == "x = 1\ny = 2\n"
+    with pytest.raises(TemplateError):
+        stub_source("# BEGIN REFERENCE ONLY\nx = 1\n")
 
 
 def test_no_solution_survives_in_the_template():

@@ -5,7 +5,9 @@
 
 Every region between ``# BEGIN SOLUTION problem N`` and ``# END SOLUTION`` is replaced by a stub that raises
 ``NotImplementedError("Problem N: <name> is not implemented yet")``, where <name> is the enclosing function or
-method.  ``reference/answers.toml`` becomes ``answers.toml`` with every answer blank ("") and a comment saying
+method.  A top-level block between ``# BEGIN REFERENCE ONLY`` and ``# END REFERENCE ONLY`` (the grader's own
+computations, e.g. of multiple-choice keys) is left out of the template entirely; its names stay out of
+``__all__``.  ``reference/answers.toml`` becomes ``answers.toml`` with every answer blank ("") and a comment saying
 what kind of value is expected.  Everything else is copied verbatim.
 """
 
@@ -23,6 +25,8 @@ TEMPLATE = ROOT / "student_template"
 
 BEGIN = re.compile(r"^(?P<indent>\s*)# BEGIN SOLUTION problem (?P<problem>\d+)\s*$")
 END = re.compile(r"^\s*# END SOLUTION\s*$")
+REF_BEGIN = re.compile(r"^# BEGIN REFERENCE ONLY\s*$")
+REF_END = re.compile(r"^# END REFERENCE ONLY\s*$")
 DEF = re.compile(r"^(?P<indent>\s*)(?:async\s+)?def\s+(?P<name>\w+)")
 CLASS = re.compile(r"^(?P<indent>\s*)class\s+(?P<name>\w+)")
 
@@ -58,9 +62,30 @@ def _enclosing_name(lines: list[str], index: int, indent: int) -> str:
     return ".".join(reversed(names))
 
 
+def strip_reference_only(source: str, filename: str = "<source>") -> str:
+    """Remove the top-level ``REFERENCE ONLY`` blocks of ``source``."""
+    out: list[str] = []
+    inside = None
+    for number, line in enumerate(source.splitlines(keepends=True), 1):
+        if REF_BEGIN.match(line):
+            if inside is not None:
+                raise TemplateError(f"{filename}:{number}: nested BEGIN REFERENCE ONLY")
+            inside = number
+        elif REF_END.match(line):
+            if inside is None:
+                raise TemplateError(f"{filename}:{number}: END REFERENCE ONLY without BEGIN")
+            inside = None
+        elif inside is None:
+            out.append(line)
+    if inside is not None:
+        raise TemplateError(f"{filename}:{inside}: BEGIN REFERENCE ONLY without END")
+    return "".join(out)
+
+
 def stub_source(source: str, filename: str = "<source>") -> str:
-    """Replace every solution region of ``source`` by a ``NotImplementedError`` stub."""
-    lines = source.splitlines(keepends=True)
+    """Drop the reference-only blocks of ``source`` and replace every solution region by a
+    ``NotImplementedError`` stub."""
+    lines = strip_reference_only(source, filename).splitlines(keepends=True)
     out: list[str] = []
     i = 0
     while i < len(lines):
