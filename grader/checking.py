@@ -152,16 +152,20 @@ def format_array(a, digits: int = 4) -> str:
         return np.array2string(a, separator=", ")
 
 
+def _digits(got, expected, tol: Tol) -> int:
+    """Enough decimals for the smallest difference outside the tolerance to be visible (4 at least, 10 at most)."""
+    diffs = np.abs(got - expected)[~_within(got, expected, tol)]
+    smallest = float(diffs[diffs > 0].min()) if np.any(diffs > 0) else 1.0
+    return int(min(10, max(4, np.ceil(-np.log10(smallest)) + 1)))
+
+
 def mismatch_table(got, expected, tol: Tol, digits: int | None = None) -> str:
-    """Side-by-side table of the entries, marking those outside the tolerance.  By default enough decimals are
-    shown for the smallest marked difference to be visible (4 at least, 10 at most)."""
+    """Side-by-side table of the entries, marking those outside the tolerance."""
     got = np.atleast_1d(np.asarray(got, dtype=float))
     expected = np.atleast_1d(np.asarray(expected, dtype=float))
     bad = ~_within(got, expected, tol)
     if digits is None:
-        diffs = np.abs(got - expected)[bad]
-        smallest = float(diffs[diffs > 0].min()) if np.any(diffs > 0) else 1.0
-        digits = int(min(10, max(4, np.ceil(-np.log10(smallest)) + 1)))
+        digits = _digits(got, expected, tol)
     rows = ["  index        got          expected     |diff|"]
     for index in np.ndindex(expected.shape):
         mark = "  ✘" if bad[index] else ""
@@ -222,7 +226,9 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
     lines = [f"{name} is not the expected value{where}.", f"tolerance: {tol}"]
     if note:
         lines.append(note)
-    lines += ["got:", format_array(got), "expected:", format_array(expected), mismatch_table(got, expected, tol)]
+    digits = _digits(got, expected, tol)
+    lines += ["got:", format_array(got, digits), "expected:", format_array(expected, digits),
+              mismatch_table(got, expected, tol, digits)]
     for mistake in mistakes:
         try:
             matches = close(got, mistake.value, tol)
