@@ -3,7 +3,7 @@
 import numpy as np
 from hypothesis import strategies as st
 
-from checks.problem_12 import ROTATIONS, compact, vectors
+from checks._rigid import ROTATIONS, compact, vectors
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
 
 TITLE = "Bound Vectors and Coordinate Systems"

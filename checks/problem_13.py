@@ -7,7 +7,7 @@ parallel to omega) instead of comparing it with ours.  ``assert_screw`` is share
 import numpy as np
 from hypothesis import strategies as st
 
-from checks.problem_12 import STATES, describe_state
+from checks._rigid import STATES, describe_state
 from grader.checking import STAGE_RANDOM, Mistake, Tol, as_array, assert_close, check
 
 TITLE = "Twists and Screw Axis"

@@ -6,7 +6,7 @@ accepted); the motion itself is compared with the reference.
 
 import numpy as np
 
-from checks.problem_12 import SIMULATION, STATE, assert_traces, trace_array
+from checks._rigid import SIMULATION, STATE, assert_traces, trace_array
 from checks.problem_13 import assert_screw
 from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, fail
 

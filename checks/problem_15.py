@@ -8,7 +8,7 @@ of the integration step of problem 12) from the reference's state just before.
 import numpy as np
 from hypothesis import strategies as st
 
-from checks.problem_12 import (
+from checks._rigid import (
     FINITE,
     KINEMATIC_MISTAKES,
     MAX_POINTS,

@@ -7,7 +7,7 @@ Symbolic answers are evaluated inside the probe at points the check draws; the g
 import numpy as np
 from hypothesis import strategies as st
 
-from checks.problem_12 import FINITE, compact
+from checks._rigid import FINITE, compact
 from grader.checking import EXACT, STAGE_RANDOM, Mistake, as_array, assert_close, check, fail
 
 TITLE = "Computing Inertia Matrices"

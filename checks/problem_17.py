@@ -7,7 +7,7 @@ never by our numbers: eigenvector signs and orders, and so the points, legitimat
 import numpy as np
 from hypothesis import strategies as st
 
-from checks.problem_12 import FINITE, ROTATIONS, compact
+from checks._rigid import FINITE, ROTATIONS, compact
 from grader.checking import (
     STAGE_RANDOM,
     STAGE_STRUCTURE,

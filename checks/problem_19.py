@@ -4,7 +4,7 @@
 import numpy as np
 from hypothesis import strategies as st
 
-from checks.problem_12 import FINITE, ROTATIONS, compact, vectors
+from checks._rigid import FINITE, ROTATIONS, compact, vectors
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, check, fail
 
 TITLE = "Calculating Inertia Matrices"

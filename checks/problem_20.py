@@ -7,7 +7,7 @@ follows the physics: as printed, options 2, 3 and 4 are all not inertia matrices
 
 import numpy as np
 
-from checks.problem_12 import compact
+from checks._rigid import compact
 from grader.checking import STAGE_STRUCTURE, STAGE_VALUES, check, fail
 
 TITLE = "Understanding Inertia Matrices"

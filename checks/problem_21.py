@@ -4,10 +4,8 @@ The mistaken arms (``walk``) and the diagnoses of Jacobians (``swapped_columns``
 problems 22 and 26.
 """
 
-from itertools import combinations
 
 import numpy as np
-from hypothesis import strategies as st
 
 from grader.checking import (
     EXACT,
@@ -17,174 +15,32 @@ from grader.checking import (
     STAGE_VALUES,
     CheckFailure,
     Mistake,
-    Tol,
     as_array,
     assert_close,
     check,
     fail,
 )
 
-TITLE = "2D Kinematics"
-
-FINITE = dict(allow_nan=False, allow_infinity=False)
-LENGTHS = st.floats(0.05, 1.0, **FINITE)
-ANGLES = st.floats(-np.pi, np.pi, **FINITE)
-LINKS = st.floats(0.05, 1.0, **FINITE)
-CASES = {"a": st.tuples(LENGTHS, ANGLES), "b": st.tuples(LENGTHS, ANGLES, LENGTHS, ANGLES)}
-#: joints and rows of x per case: (number of joints, number of coordinates)
-SIZES = {"a": (2, 6), "b": (4, 9)}
-
-#: step and tolerance of the central differences of the student's own chain
-H = 1e-6
-CENTRAL_DIFFERENCES = Tol("central differences, h = 1e-6", 1e-6, 1e-6)
-#: configurations at which the Jacobians are differentiated (no special angles)
-CONFIGURATIONS = {
-    "a": [(0.3, 0.7), (0.15, -2.1)],
-    "b": [(0.3, 0.7, 0.2, -1.1), (0.1, -2.5, 0.45, 0.4)],
-}
-FD_LINK = 0.4
-
-DEGREES_HINT = ("The joint angles are in radians: your function treats them as degrees (np.deg2rad of an angle "
-                "that already is in radians).")
-HORIZONTAL_HINT = (
-    "The orientation gamma is measured from the VERTICAL, counter-clockwise positive: a segment of orientation "
-    "gamma and length s spans s * (-sin gamma, cos gamma), and the first (vertical) segment has gamma = 0. "
-    "You measured it from the horizontal."
+from ._planar import (
+    CENTRAL_DIFFERENCES,
+    CONFIGURATIONS,
+    DEGREES_HINT,
+    FD_LINK,
+    H,
+    JACOBIAN_SIGN_HINT,
+    SIGN_HINT,
+    SIZES,
+    _chain_mistakes,
+    _compare_chain,
+    _describe,
+    _jacobian_reference_mistakes,
+    _strategy,
+    as_degrees,
+    sign_flips,
+    swapped_columns,
 )
-SIGN_HINT = ("Angles are positive counter-clockwise, so a segment tilted by gamma > 0 leans to the LEFT: it spans "
-             "s * (-sin gamma, cos gamma).")
-JACOBIAN_SIGN_HINT = ("Remember d/dq cos(q) = -sin(q), d/dq sin(q) = +cos(q), and that a segment at gamma spans "
-                      "s * (-sin gamma, cos gamma).")
 
-
-# ------------------------------------------------------------------------------------ mistaken arms
-
-
-def direction(gamma, mistake=None):
-    """Unit vector of a segment of orientation ``gamma``, as the sheet defines it or as a mistake reads it."""
-    if mistake in ("horizontal", "horizontal_all"):
-        return np.array([np.cos(gamma), np.sin(gamma)])
-    return np.array([-np.sin(gamma), np.cos(gamma)])
-
-
-def walk(q, d, mistake=None):
-    """The arm of problems 21 and 22 with ``mistake`` applied: ``(points, end)``, ``points[k-1] = (x_k, y_k,
-    g_{k-1}, g_k)`` for ``k = 1..n`` and ``end = (xe, ye, g_n)``.  Complex ``q`` is kept (complex-step derivatives).
-
-    Mistakes: ``degrees`` (radians read as degrees), ``horizontal`` (segments along (cos g, sin g) after the
-    vertical first one), ``horizontal_all`` (every segment along (cos g, sin g)), ``horizontal_offset`` (right
-    positions, orientations from the horizontal: +90 deg), ``joint_order`` (each segment after its own rotation),
-    ``no_final_link`` (d left out).
-    """
-    pairs = np.asarray(q).reshape(-1, 2)
-    if mistake == "degrees":
-        pairs = pairs * np.array([1.0, np.pi / 180.0])
-    offset = np.pi / 2 if mistake == "horizontal_offset" else 0.0
-    point, gamma, points = np.zeros(2), 0.0, []
-    for k, (length, turn) in enumerate(pairs):
-        before = gamma
-        if mistake == "joint_order":
-            gamma = gamma + turn
-        along = np.array([0.0, 1.0]) if k == 0 and mistake == "horizontal" else direction(gamma, mistake)
-        point = point + length * along
-        if mistake != "joint_order":
-            gamma = gamma + turn
-        points.append(np.array([*point, before + offset, gamma + offset]))
-    link = 0.0 if mistake == "no_final_link" else d
-    return points, np.array([*(point + link * direction(gamma, mistake)), gamma + offset])
-
-
-def as_degrees(q):
-    """``q`` with its angles (q2, q4, ...) read as degrees."""
-    return np.asarray(q, dtype=float) * np.tile([1.0, np.pi / 180.0], len(q) // 2)
-
-
-def layout(q, d, mistake=None):
-    """``x_a`` / ``x_b`` of problem 21: each point with the orientation of the segment arriving there, then the end
-    effector."""
-    points, end = walk(q, d, mistake)
-    return np.concatenate([*(p[:3] for p in points), end])
-
-
-def complex_step(f, q):
-    """Jacobian of ``f`` at ``q`` by complex steps (exact to rounding)."""
-    q = np.asarray(q, dtype=float)
-    return np.column_stack([np.imag(f(q + 1e-30j * e)) / 1e-30 for e in np.eye(q.size)])
-
-
-def swapped_columns(J, names=None):
-    """``J`` with two columns swapped, for every pair of columns; ``names`` describes the joint variables (by
-    default those of the planar arm: prismatic and rotational joints alternating)."""
-    J = np.asarray(J, dtype=float)
-    names = names or [f"q{j + 1} ({'an angle' if j % 2 else 'a length'})" for j in range(J.shape[1])]
-    found = []
-    for i, j in combinations(range(J.shape[1]), 2):
-        swapped = J.copy()
-        swapped[:, [i, j]] = J[:, [j, i]]
-        found.append(Mistake("swapped_columns", swapped, (
-            f"Columns {i + 1} and {j + 1} are swapped: column j of J holds the derivatives with respect to the j-th "
-            f"joint variable (column {i + 1}: {names[i]}, column {j + 1}: {names[j]}).")))
-    return found
-
-
-def sign_flips(got, expected, tol, hint):
-    """The mistake "some entries of ``expected`` with the wrong sign" when that is what ``got`` is, naming them."""
-    try:
-        got = np.asarray(got, dtype=float)
-        expected = np.asarray(expected, dtype=float)
-    except (TypeError, ValueError):
-        return []
-    if got.shape != expected.shape:
-        return []
-    bound = tol.atol + tol.rtol * np.abs(expected)
-    flipped = (np.abs(got + expected) <= bound) & (np.abs(expected) > bound)
-    if not flipped.any():
-        return []
-    entries = ", ".join("[" + ",".join(map(str, index)) + "]" for index in zip(*np.nonzero(flipped)))
-    return [Mistake("sign_flip", np.where(flipped, -expected, expected),
-                    f"The entries {entries} have the wrong sign. {hint}")]
-
-
-def _chain_mistakes(q, d):
-    """Modelled mistakes of the constraint function (a sign flip is found from the student's value)."""
-    return [
-        Mistake("degrees", layout(q, d, "degrees"), DEGREES_HINT),
-        Mistake("horizontal", layout(q, d, "horizontal_offset"), HORIZONTAL_HINT
-                + " Your positions are right but every orientation is 90 deg too large."),
-        Mistake("horizontal", layout(q, d, "horizontal"), HORIZONTAL_HINT),
-    ]
-
-
-def _jacobian_reference_mistakes(case, q, d, expected):
-    from reference import planar
-
-    analytic = planar.jacobian_a if case == "a" else planar.jacobian_b
-    return [
-        *swapped_columns(expected),
-        Mistake("degrees", analytic(as_degrees(q), d), DEGREES_HINT),
-        Mistake("degrees", complex_step(lambda p: layout(p, d, "degrees"), q), DEGREES_HINT),
-        Mistake("horizontal", complex_step(lambda p: layout(p, d, "horizontal"), q), HORIZONTAL_HINT),
-    ]
-
-
-def _describe(function):
-    return lambda args: f"{function}(q={np.asarray(args[1]).tolist()!r}, d={args[2]!r})"
-
-
-def _strategy(case):
-    return st.tuples(st.just(case), CASES[case].map(np.array), LINKS)
-
-
-# ------------------------------------------------------------------------------------ the constraint functions
-
-
-def _compare_chain(ctx, case):
-    def compare(got, expected, args):
-        mistakes = _chain_mistakes(args[1], args[2]) + sign_flips(got, expected, EXACT, SIGN_HINT)
-        assert_close(got, expected, f"chain_{case}(q, d)", EXACT, mistakes)
-
-    ctx.compare_random("problem_21.chain", _strategy(case), name=f"chain_{case}(q, d)", tol=EXACT, compare=compare,
-                       describe=_describe(f"chain_{case}"))
+TITLE = "2D Kinematics"
 
 
 @check(2, title="chain_a(q, d) = (x1, y1, gamma1, xe, ye, gammae) on random q and d", stage=STAGE_RANDOM,

@@ -16,7 +16,7 @@ from grader.checking import (
     fail,
 )
 
-from .problem_21 import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips, walk
+from ._planar import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips, walk
 
 TITLE = "Recursive Kinematics"
 

@@ -5,18 +5,18 @@ from hypothesis import strategies as st
 
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
 
-from .problem_21 import (
+from ._planar import (
     ANGLES,
     CENTRAL_DIFFERENCES,
     DEGREES_HINT,
     FINITE,
     H,
     JACOBIAN_SIGN_HINT,
-    assert_derivative,
     complex_step,
     sign_flips,
     swapped_columns,
 )
+from .problem_21 import assert_derivative
 
 TITLE = "Chairoplane: position and constraint Jacobian"
 

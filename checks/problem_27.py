@@ -20,7 +20,7 @@ from grader.checking import (
     format_array,
 )
 
-from .problem_21 import FINITE, sign_flips, swapped_columns
+from ._planar import FINITE, sign_flips, swapped_columns
 
 TITLE = "Understanding Jacobians"
 

@@ -1,11 +1,11 @@
 """Checks of problem 28: the predicted output of main.m (answers.toml), and the port that prints it.
 
-The text comparison (``text_lines``, ``answer_text``, ``assert_same_text``) is shared with problem 36.
+The text comparison (``text_lines``, ``answer_text``, ``assert_same_text``) lives in ``checks/_answers.py``.
 """
 
-import difflib
+from grader.checking import STAGE_VALUES, Mistake, check
 
-from grader.checking import STAGE_VALUES, Mistake, check, fail
+from ._answers import answer_text, assert_same_text, text_lines
 
 TITLE = "Understanding Recursion"
 
@@ -13,69 +13,6 @@ TITLE = "Understanding Recursion"
 PROMPT = "Rainbow:"
 ORDER_HINT = ("The walk follows the child links, starting from red; the order in which the objects are created or "
               "linked does not matter.")
-
-
-def text_lines(text, caseless=()):
-    """The lines of ``text`` as they are compared: stripped, blank lines dropped, and a line equal to one of
-    ``caseless`` up to case written as that one."""
-    folded = {line.casefold(): line for line in caseless}
-    stripped = (line.strip() for line in text.splitlines())
-    return [folded.get(line.casefold(), line) for line in stripped if line]
-
-
-def answer_text(ctx, key):
-    """The answer ``key`` as text: a string, or a list of strings (one per line)."""
-    value = ctx.answer(key)
-    if isinstance(value, list) and all(isinstance(line, str) for line in value):
-        return "\n".join(value)
-    if not isinstance(value, str):
-        fail(f"answers.toml [problem_{ctx.problem:02d}] {key} must be text, got a {type(value).__name__}: "
-             f"{str(value)[:200]}", f'Write the lines in triple quotes:\n{key} = """\nfirst line\nsecond line\n"""',
-             "format")
-    return value
-
-
-def _first_difference(got, expected, reveal=False):
-    for i, (g, e) in enumerate(zip(got, expected)):
-        if g != e:
-            shown = f", expected {e!r}" if reveal else ""
-            return f"line {i + 1} is the first wrong line: you wrote {g!r}{shown}."
-    n = min(len(got), len(expected))
-    if len(got) < len(expected):
-        return f"your text stops after line {n}: {len(expected) - n} line(s) missing, from line {n + 1} on."
-    return f"your text has {len(got) - n} line(s) too many, from line {n + 1} on: {got[n]!r}."
-
-
-def assert_same_text(got, expected, name, caseless=(), mistakes=(), order_hint="", reveal=False):
-    """Fail unless ``got`` has the lines of ``expected``, in order, up to surrounding spaces, blank lines and the
-    case of the ``caseless`` lines.  The failure names the first wrong line and lists the student's lines with
-    each wrong one marked; the expected text itself is shown only with ``reveal`` (a prediction whose failure
-    printed the answer could be copied on the next attempt).  A
-    ``Mistake`` whose value is the text that mistake produces (or a predicate ``value(got_lines,
-    expected_lines)``) names the diagnosis, and lines in a wrong order are recognised as ``order``."""
-    mine, theirs = text_lines(got, caseless), text_lines(expected, caseless)
-    if mine == theirs:
-        return
-    ignored = ("ignoring surrounding spaces, blank lines and the case of " + ", ".join(map(repr, caseless))
-               if caseless else "ignoring surrounding spaces and blank lines")
-    if reveal:
-        diff = "\n".join(line.rstrip() for line in difflib.ndiff(theirs, mine))
-        shown = f"diff, line by line (- expected, + yours, ? marks the characters that differ):\n{diff}"
-    else:
-        marks = ["  ✘ " if i >= len(theirs) or line != theirs[i] else "    " for i, line in enumerate(mine)]
-        shown = "your lines (✘ marks a wrong line; the expected text is not shown):\n" + "\n".join(
-            f"{mark}{i + 1:>2}: {line}" for i, (mark, line) in enumerate(zip(marks, mine)))
-        if len(mine) < len(theirs):
-            shown += f"\n  ✘ ... {len(theirs) - len(mine)} line(s) missing"
-    message = (f"{name} is not the expected output ({ignored}).\n{_first_difference(mine, theirs, reveal)}\n"
-               f"{shown}")
-    for mistake in mistakes:
-        value = mistake.value
-        if value(mine, theirs) if callable(value) else text_lines(value, caseless) == mine:
-            fail(message, mistake.hint, mistake.name)
-    if sorted(mine) == sorted(theirs):
-        fail(message, f"Your lines are right but in the wrong order. {order_hint}".rstrip(), "order")
-    fail(message)
 
 
 def _mistakes(expected):

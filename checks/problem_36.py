@@ -3,8 +3,7 @@ port that prints them; the free-text questions (a) and (c) are scored by hand.""
 
 from grader.checking import STAGE_VALUES, Mistake, check
 
-from .problem_28 import answer_text, assert_same_text, text_lines
-from .problem_30 import assert_same_diagram, diagram_pairs
+from ._answers import answer_text, assert_same_diagram, assert_same_text, diagram_pairs, text_lines
 
 TITLE = "Understanding Inheritance"
 

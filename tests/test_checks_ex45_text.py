@@ -3,7 +3,7 @@ and order, and explicit about the first wrong line."""
 
 import pytest
 
-from checks.problem_28 import assert_same_text, text_lines
+from checks._answers import assert_same_text, text_lines
 from grader.checking import CheckFailure, Mistake
 
 EXPECTED = "Rainbow:\nred\nyellow\n"

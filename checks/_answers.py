@@ -1,0 +1,129 @@
+"""Comparison of written answers: predicted program output (problems 28, 36) and class diagrams (problems 30, 36)."""
+
+import difflib
+
+from grader.checking import fail
+
+
+def text_lines(text, caseless=()):
+    """The lines of ``text`` as they are compared: stripped, blank lines dropped, and a line equal to one of
+    ``caseless`` up to case written as that one."""
+    folded = {line.casefold(): line for line in caseless}
+    stripped = (line.strip() for line in text.splitlines())
+    return [folded.get(line.casefold(), line) for line in stripped if line]
+
+
+def answer_text(ctx, key):
+    """The answer ``key`` as text: a string, or a list of strings (one per line)."""
+    value = ctx.answer(key)
+    if isinstance(value, list) and all(isinstance(line, str) for line in value):
+        return "\n".join(value)
+    if not isinstance(value, str):
+        fail(f"answers.toml [problem_{ctx.problem:02d}] {key} must be text, got a {type(value).__name__}: "
+             f"{str(value)[:200]}", f'Write the lines in triple quotes:\n{key} = """\nfirst line\nsecond line\n"""',
+             "format")
+    return value
+
+
+def _first_difference(got, expected, reveal=False):
+    for i, (g, e) in enumerate(zip(got, expected)):
+        if g != e:
+            shown = f", expected {e!r}" if reveal else ""
+            return f"line {i + 1} is the first wrong line: you wrote {g!r}{shown}."
+    n = min(len(got), len(expected))
+    if len(got) < len(expected):
+        return f"your text stops after line {n}: {len(expected) - n} line(s) missing, from line {n + 1} on."
+    return f"your text has {len(got) - n} line(s) too many, from line {n + 1} on: {got[n]!r}."
+
+
+def assert_same_text(got, expected, name, caseless=(), mistakes=(), order_hint="", reveal=False):
+    """Fail unless ``got`` has the lines of ``expected``, in order, up to surrounding spaces, blank lines and the
+    case of the ``caseless`` lines.  The failure names the first wrong line and lists the student's lines with
+    each wrong one marked; the expected text itself is shown only with ``reveal`` (a prediction whose failure
+    printed the answer could be copied on the next attempt).  A
+    ``Mistake`` whose value is the text that mistake produces (or a predicate ``value(got_lines,
+    expected_lines)``) names the diagnosis, and lines in a wrong order are recognised as ``order``."""
+    mine, theirs = text_lines(got, caseless), text_lines(expected, caseless)
+    if mine == theirs:
+        return
+    ignored = ("ignoring surrounding spaces, blank lines and the case of " + ", ".join(map(repr, caseless))
+               if caseless else "ignoring surrounding spaces and blank lines")
+    if reveal:
+        diff = "\n".join(line.rstrip() for line in difflib.ndiff(theirs, mine))
+        shown = f"diff, line by line (- expected, + yours, ? marks the characters that differ):\n{diff}"
+    else:
+        marks = ["  ✘ " if i >= len(theirs) or line != theirs[i] else "    " for i, line in enumerate(mine)]
+        shown = "your lines (✘ marks a wrong line; the expected text is not shown):\n" + "\n".join(
+            f"{mark}{i + 1:>2}: {line}" for i, (mark, line) in enumerate(zip(marks, mine)))
+        if len(mine) < len(theirs):
+            shown += f"\n  ✘ ... {len(theirs) - len(mine)} line(s) missing"
+    message = (f"{name} is not the expected output ({ignored}).\n{_first_difference(mine, theirs, reveal)}\n"
+               f"{shown}")
+    for mistake in mistakes:
+        value = mistake.value
+        if value(mine, theirs) if callable(value) else text_lines(value, caseless) == mine:
+            fail(message, mistake.hint, mistake.name)
+    if sorted(mine) == sorted(theirs):
+        fail(message, f"Your lines are right but in the wrong order. {order_hint}".rstrip(), "order")
+    fail(message)
+
+
+EXAMPLE = '[["SubclassName", "BaseClassName"], ...]'
+
+
+def diagram_pairs(value, name):
+    """``value`` as a set of ``(subclass, base)`` pairs of class names, or a failure that says what is wrong."""
+    ok = isinstance(value, (list, tuple)) and all(
+        isinstance(pair, (list, tuple)) and len(pair) == 2 and all(isinstance(c, str) for c in pair)
+        for pair in value)
+    if not ok:
+        fail(f"{name} must be a list of [subclass, base] pairs of class names, got {str(value)[:200]}",
+             f"Write one pair per inheritance arrow: {EXAMPLE}.", "format")
+    return {(sub.strip(), base.strip()) for sub, base in value}
+
+
+def _bases(pairs, name):
+    """Every class that ``name`` inherits from in ``pairs``, directly or not."""
+    direct = {base for sub, base in pairs if sub == name}
+    return direct.union(*(_bases(pairs, base) for base in direct))
+
+
+def _arrows(pairs):
+    return "\n".join(f"    {sub} -> {base}" for sub, base in sorted(pairs)) or "    (none)"
+
+
+def _loose(name):
+    return name.casefold().removesuffix("_v2")
+
+
+def assert_same_diagram(got, expected, name, mistakes=()):
+    """Fail unless the set of ``(subclass, base)`` pairs ``got`` is ``expected``; name what is missing or extra and
+    recognise reversed pairs, misspelt names, a forgotten second base, a class left out and indirect bases.
+    ``mistakes`` are further ``(diagnosis, predicate(got, expected), hint)``, tried first after the names."""
+    if got == expected:
+        return
+    message = (f"{name} does not match the class diagram: {len(got & expected)} of your {len(got)} inheritance "
+               f"arrows (subclass -> base) are right, {len(expected)} are expected.\n"
+               f"missing:\n{_arrows(expected - got)}\nnot in the diagram:\n{_arrows(got - expected)}")
+    if {(base, sub) for sub, base in got} == expected:
+        fail(message, "Each pair is [subclass, base]: you wrote [base, subclass].", "reversed")
+    if {(_loose(sub), _loose(base)) for sub, base in got} == {(_loose(s), _loose(b)) for s, b in expected}:
+        fail(message, "Use the class names exactly as in the code (with the _v2 suffix and the same capitals).",
+             "class_names")
+    for diagnosis, predicate, hint in mistakes:
+        if predicate(got, expected):
+            fail(message, hint, diagnosis)
+    for sub in sorted({sub for sub, _ in expected}):
+        bases = {base for s, base in expected if s == sub}
+        if len(bases) > 1 and not bases <= {base for s, base in got if s == sub}:
+            fail(message, f"{sub} inherits from {len(bases)} classes: {', '.join(sorted(bases))}.",
+                 "multiple_inheritance")
+    absent = sorted({c for pair in expected for c in pair} - {c for pair in got for c in pair})
+    if absent:
+        fail(message, f"Your diagram leaves out {', '.join(absent)}: every class of the hierarchy has its place, "
+             f"with an arrow to each of its direct base classes.", "missing_class")
+    for sub, base in sorted(got - expected):
+        if base in _bases(expected, sub):
+            fail(message, f"List only DIRECT base classes: {sub} inherits from {base} only through another class.",
+                 "indirect")
+    fail(message)
