@@ -147,25 +147,28 @@ def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
     )
 
 
+def _not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
+    """The result of a check that did not run (an earlier stage failed, or the submission cannot be loaded)."""
+    return CheckResult(
+        check_id=f"p{problem:02d}.{spec.name}",
+        problem=problem,
+        title=spec.title,
+        status=status,
+        score=0.0,
+        max_score=spec.points,
+        message=message,
+        visibility=spec.visibility,
+        stage=spec.stage,
+    )
+
+
 def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     results = []
     blocked: dict[str, tuple[int, str]] = {}
     for spec in checks_of(module):
         block = blocked.get(spec.group)
         if block is not None and spec.stage > block[0]:
-            results.append(
-                CheckResult(
-                    check_id=f"p{problem:02d}.{spec.name}",
-                    problem=problem,
-                    title=spec.title,
-                    status=Status.SKIPPED,
-                    score=0.0,
-                    max_score=spec.points,
-                    message=f"not run: an earlier check failed first ({block[1]})",
-                    visibility=spec.visibility,
-                    stage=spec.stage,
-                )
-            )
+            results.append(_not_run(spec, problem, Status.SKIPPED, f"not run: an earlier check failed first ({block[1]})"))
             continue
         result = _run_check(spec, ctx, problem)
         results.append(result)
@@ -248,19 +251,7 @@ def grade_problem(problem: int, source: str | Path, **options) -> ProblemReport:
 
 
 def _unloadable(number, module, source, reason, mode, seed) -> ProblemReport:
-    results = tuple(
-        CheckResult(
-            check_id=f"p{number:02d}.{spec.name}",
-            problem=number,
-            title=spec.title,
-            status=Status.ERROR,
-            score=0.0,
-            max_score=spec.points,
-            message=f"the submission could not be loaded: {reason}",
-            visibility=spec.visibility,
-            stage=spec.stage,
-        )
-        for spec in checks_of(module)
-    )
+    message = f"the submission could not be loaded: {reason}"
+    results = tuple(_not_run(spec, number, Status.ERROR, message) for spec in checks_of(module))
     return ProblemReport(number, module.TITLE, results, sandbox=mode.note, isolated=mode.isolated, seed=seed,
                          submission=str(source), grader_version=__version__)
