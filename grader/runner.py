@@ -177,15 +177,20 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     return results
 
 
+@lru_cache(maxsize=1)
+def _model_answers() -> dict:
+    """The reference's answers.toml, read once per process (it holds the model answers of free-text questions)."""
+    from .context import _reference_package
+
+    answers, _ = read_answers(Path(_reference_package().__file__).parent)
+    return answers
+
+
 def _manual_items(module, ctx: Context, problem: int) -> list[ManualItem]:
     manual = getattr(module, "MANUAL", {})
     if not manual:
         return []
-    from .context import _reference_package
-
-    ref_path = Path(_reference_package().__file__).with_name("answers.toml")
-    ref_answers, _ = read_answers(ref_path.parent)
-    model = ref_answers.get(f"problem_{problem:02d}", {}).get("free_text", {})
+    model = _model_answers().get(f"problem_{problem:02d}", {}).get("free_text", {})
     texts = ctx.free_text()
     return [
         ManualItem(problem, key, question, str(texts.get(key, "") or ""), str(model.get(key, "")), float(points))
