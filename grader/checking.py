@@ -90,17 +90,21 @@ class CheckSpec:
     stage: int
     group: str
     visibility: str
+    secret: bool = False
 
 
-def check(points: float, *, title: str, stage: int = STAGE_VALUES, group: str = "", visibility: str = "visible"):
+def check(points: float, *, title: str, stage: int = STAGE_VALUES, group: str = "", visibility: str = "visible",
+          secret: bool = False):
     """Declare a check.  ``title`` states the property (first line of every message); checks of one ``group``
-    run in stage order and stop at the first failing stage."""
+    run in stage order and stop at the first failing stage.  ``secret`` marks a check whose key must stay with the
+    instructor (a multiple-choice key, a predicted output): the student kit records the answer and leaves the
+    verdict to the graded submission."""
     if visibility not in ("visible", "hidden"):
         raise ValueError(f"visibility must be 'visible' or 'hidden', not {visibility!r}")
 
     def decorate(func):
         name = func.__name__.removeprefix("check_")
-        func.check_spec = CheckSpec(func, name, title, float(points), stage, group or name, visibility)
+        func.check_spec = CheckSpec(func, name, title, float(points), stage, group or name, visibility, secret)
         return func
 
     return decorate
