@@ -49,7 +49,6 @@ __all__ = [
     "discover",
     "submission_hash",
     "student_seed",
-    "student_view",
     "run_batch",
     "export_results",
     "class_summary",
@@ -485,18 +484,6 @@ def run_batch(
 # ------------------------------------------------------------------------------------------ exports
 
 
-def student_view(report: ProblemReport) -> ProblemReport:
-    """The report as a student may see it: hidden checks keep only their count and points (not their score,
-    status, title or messages), so that nothing renders what they found."""
-    results = tuple(
-        r if r.visibility == "visible" else replace(
-            r, title="hidden check", status=Status.SKIPPED, score=0.0, message="", hint="", diagnosis="", seed=None,
-            figures=())
-        for r in report.results
-    )
-    return replace(report, results=results)
-
-
 def _write(path: Path, text: str) -> None:
     """Write atomically: a reader (or a crash) never sees half a file."""
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -546,7 +533,7 @@ def export_results(out: str | Path, book: Gradebook | None = None) -> dict[str, 
         reports = [g.report for g in items]
         folder = out / "students" / name
         _write(folder / "results.json", json.dumps(gradescope_results(reports), indent=2) + "\n")
-        _write(folder / "report.html", render_html([student_view(r) for r in reports], title=f"Grading report: {name}"))
+        _write(folder / "report.html", render_html(reports, title=f"Grading report: {name}"))
     _write(paths["summary"], class_summary(graded))
     return paths
 

@@ -10,7 +10,7 @@ from functools import lru_cache
 
 from jinja2 import Environment, PackageLoader, StrictUndefined
 
-from .results import ProblemReport, Status
+from .results import ProblemReport, Status, student_view
 
 __all__ = ["render_terminal", "render_html", "render_json", "gradescope_results", "render_gradescope"]
 
@@ -50,6 +50,8 @@ def render_terminal(reports: list[ProblemReport], colour: bool = False, show_hid
     def bold(text):
         return f"\033[1m{text}\033[0m" if colour else text
 
+    if not show_hidden:
+        reports = [student_view(r) for r in reports]
     template = _env(False).get_template("terminal.txt.j2")
     return template.render(reports=reports, paint=paint, bold=bold, show_hidden=show_hidden).strip("\n") + "\n"
 
@@ -90,6 +92,8 @@ def _figure_png(fig) -> str:
 
 
 def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report") -> str:
+    if not show_hidden:
+        reports = [student_view(r) for r in reports]
     images = {}
     for report in reports:
         for result in report.results:
@@ -101,8 +105,10 @@ def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: 
 
 
 def _visible_dict(report: ProblemReport, show_hidden: bool) -> dict:
-    data = report.to_dict()
+    data = report.to_dict() if show_hidden else student_view(report).to_dict()
     if not show_hidden:
+        for item in data["manual"]:
+            item.pop("model_answer")
         hidden = [r for r in data["results"] if r["visibility"] == "hidden"]
         data["results"] = [r for r in data["results"] if r["visibility"] != "hidden"]
         data["hidden_checks"] = {"count": len(hidden), "max_score": sum(r["max_score"] for r in hidden)}

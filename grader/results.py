@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from enum import Enum
 
-__all__ = ["Status", "Series", "Figure", "CheckResult", "ManualItem", "ProblemReport"]
+__all__ = ["Status", "Series", "Figure", "CheckResult", "ManualItem", "ProblemReport", "student_view"]
 
 
 class Status(str, Enum):
@@ -133,3 +133,16 @@ class ProblemReport:
         data["score"] = self.score
         data["max_score"] = self.max_score
         return data
+
+
+def student_view(report: ProblemReport) -> ProblemReport:
+    """The report as a student may see it, whatever the format: hidden checks keep only their count and points
+    (not their score, status, title or messages), and free-text items lose the course's model answer."""
+    results = tuple(
+        r if r.visibility == "visible" else replace(
+            r, title="hidden check", status=Status.SKIPPED, score=0.0, message="", hint="", diagnosis="", seed=None,
+            figures=())
+        for r in report.results
+    )
+    manual = tuple(replace(m, model_answer="") for m in report.manual)
+    return replace(report, results=results, manual=manual)

@@ -18,10 +18,11 @@ from pathlib import Path
 
 import pytest
 
-from grader.batch import BatchLocked, Progress, _locked, discover, export_results, run_batch, student_view
+from grader.batch import BatchLocked, Progress, _locked, discover, export_results, run_batch
 from grader.cli import main
 from grader.errors import SubmissionError
 from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
+from grader.results import student_view
 from grader.runner import grade_submission, problem_module
 from grader.sandbox import Limits
 

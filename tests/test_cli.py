@@ -108,3 +108,33 @@ def test_html_report_embeds_figures_and_hides_hidden_checks():
     data = json.loads(render_json([report], show_hidden=False))["reports"][0]
     assert data["hidden_checks"] == {"count": 1, "max_score": 2.0}
     assert all(r["check_id"] != "p99.b" for r in data["results"])
+
+
+def test_student_outputs_hold_the_same_things_and_never_the_model_answers(tmp_path, capsys):
+    """The student's view is the same in every format: no format carries the course's model answers of the
+    free-text questions (issue: --json once did)."""
+    import tomllib
+
+    model = tomllib.loads((ROOT / "reference" / "answers.toml").read_text())["problem_12"]["free_text"]
+    submission = copy_reference(tmp_path / "pkg")
+    answers = submission / "answers.toml"
+    head, _, rest = answers.read_text().partition("[problem_12.free_text]")
+    _, _, tail = rest.partition("\n[")
+    mine = "".join(f'{key} = "my own words on {key}"\n' for key in model)
+    answers.write_text(f"{head}[problem_12.free_text]\n{mine}\n[{tail}")
+    html, js, gs = tmp_path / "r.html", tmp_path / "r.json", tmp_path / "results.json"
+    main(["problem-12", "--submission", str(submission), "--seed", "3", "--html", str(html), "--json", str(js),
+          "--gradescope", str(gs)])
+    terminal = capsys.readouterr().out
+    outputs = {"terminal": terminal, "html": html.read_text(), "json": js.read_text(), "gradescope": gs.read_text()}
+    # the model answers are long sentences: a distinctive stretch of each must appear in no output
+    for key, answer in model.items():
+        probe = " ".join(answer.split())[:60]
+        assert len(probe) > 30
+        for name, text in outputs.items():
+            assert probe not in " ".join(text.split()), (key, name)
+    data = json.loads(js.read_text())["reports"][0]
+    assert {m["key"] for m in data["manual"]} == set(model)
+    assert all("model_answer" not in m for m in data["manual"])
+    shown = {t["number"] for t in json.loads(gs.read_text())["tests"]}
+    assert {r["check_id"] for r in data["results"]} <= shown
