@@ -37,7 +37,8 @@ from multiprocessing.connection import wait
 from pathlib import Path
 
 from .errors import SubmissionError
-from .gradebook import GRADEBOOK_NAME, Gradebook, Graded, ManualScoreError, grader_version, now
+from .gradebook import (GRADEBOOK_NAME, Gradebook, Graded, ManualScoreError, grader_version, now,
+                        spreadsheet_cell)
 from .results import CheckResult, ProblemReport, Status
 from .sandbox import Limits, SandboxMode, sandbox_mode
 
@@ -493,8 +494,10 @@ def _write(path: Path, text: str) -> None:
 
 
 def _csv(rows: list[list]) -> str:
+    """CSV text; every text cell is spreadsheet-safe (student names and answers are untrusted)."""
     buffer = io.StringIO()
-    csv.writer(buffer, lineterminator="\n").writerows(rows)
+    safe = [[spreadsheet_cell(cell) if isinstance(cell, str) else cell for cell in row] for row in rows]
+    csv.writer(buffer, lineterminator="\r\n").writerows(safe)  # RFC 4180: a cell holding \r or \n is quoted
     return buffer.getvalue()
 
 
@@ -724,9 +727,10 @@ def cmd_import_manual(args) -> int:
         return EXIT_USAGE
     try:
         with _locked(out), Gradebook.in_folder(out) as book:
-            count = book.import_manual(Path(args.scores).read_text(encoding="utf-8-sig"), source=str(args.scores))
+            with open(args.scores, encoding="utf-8-sig", newline="") as handle:  # csv reads its own line ends
+                count = book.import_manual(handle.read(), source=str(args.scores))
             export_results(out, book)
-    except (ManualScoreError, BatchLocked, OSError) as exc:
+    except (ManualScoreError, BatchLocked, OSError, UnicodeDecodeError) as exc:
         print(f"error: {args.scores}: nothing imported:\n{exc}", file=sys.stderr)
         return EXIT_USAGE
     print(f"imported {count} manual scores; the exports in {out}/ are updated", file=sys.stderr)

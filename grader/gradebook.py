@@ -34,6 +34,8 @@ __all__ = [
     "ManualScoreError",
     "grader_version",
     "now",
+    "spreadsheet_cell",
+    "spreadsheet_text",
 ]
 
 GRADEBOOK_NAME = "gradebook.sqlite"
@@ -122,6 +124,20 @@ SELECT s.*, st.name AS student FROM submissions s JOIN students st ON st.id = s.
 WHERE s.id = (SELECT max(t.id) FROM submissions t WHERE t.student_id = s.student_id AND t.problem = s.problem)
 ORDER BY st.name, s.problem
 """
+
+
+#: a cell beginning with one of these is a formula to a spreadsheet (OWASP's list for CSV injection)
+FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_cell(text: str) -> str:
+    """``text`` as a CSV cell that a spreadsheet shows as text: a leading apostrophe before a formula start."""
+    return "'" + text if text.startswith(FORMULA_START) else text
+
+
+def spreadsheet_text(cell: str) -> str:
+    """The inverse of ``spreadsheet_cell``, for files the grader wrote and an instructor filled in."""
+    return cell[1:] if cell.startswith("'") and cell[1:].startswith(FORMULA_START) else cell
 
 
 def now() -> str:
@@ -345,7 +361,8 @@ class Gradebook:
             if not (entry.get("score") or "").strip():
                 continue
             try:
-                key = (entry["student"].strip(), int(str(entry["problem"]).strip()), entry["key"].strip())
+                key = (spreadsheet_text(entry["student"].strip()), int(str(entry["problem"]).strip()),
+                       spreadsheet_text(entry["key"].strip()))
                 score = float(entry["score"])
             except ValueError as exc:
                 errors.append(f"line {line}: {exc}")
@@ -356,7 +373,7 @@ class Gradebook:
             elif not 0 <= score <= item.max_score:
                 errors.append(f"line {line}: score {score:g} is outside 0..{item.max_score:g}")
             else:
-                rows.append((*key, score, (entry.get("comment") or "").strip()))
+                rows.append((*key, score, spreadsheet_text((entry.get("comment") or "").strip())))
         if errors:
             raise ManualScoreError("\n".join(errors))
         stamp = now()

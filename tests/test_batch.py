@@ -510,3 +510,39 @@ def test_progress_redraws_on_a_terminal_and_writes_lines_otherwise():
     assert "ETA" in terminal.getvalue() and "█" in terminal.getvalue()
     lines = log.getvalue().splitlines()
     assert lines[0].startswith("[1/4] alice: 10/10 (0.3 s) · 1/4 done") and lines[1].startswith("[2/4] bob")
+
+
+def test_exports_neutralise_spreadsheet_formulas_and_imports_read_them_back(tmp_path):
+    """A free-text answer or a student's name that begins with =, +, -, @ (or a tab or carriage return) would be a
+    formula in the instructor's spreadsheet: every such cell is written with a leading apostrophe, and the manual
+    scores file still imports with the names it was written with."""
+    formulas = ['=HYPERLINK("http://x","y")', "+1+2", "-2+3", "@SUM(A1)", "\t=1", "\r=1"]
+    out = tmp_path / "results"
+    with Gradebook.in_folder(out) as book:
+        run = book.start_run("subs", [6], 1)
+        for index, text in enumerate(formulas):
+            report = synthetic_report(6, manual=True)
+            report = replace(report, manual=(replace(report.manual[0], answer=text),))
+            book.record(f"={index}+student" if index % 2 == 0 else f"student{index}", f"h{index}", VERSIONS, run,
+                        [report])
+        export_results(out, book)
+    def read(name):
+        with open(out / name, newline="", encoding="utf-8") as handle:
+            return handle.read()
+
+    for name in ("grades.csv", "manual_answers.csv"):
+        rows = list(csv.reader(io.StringIO(read(name))))
+        cells = [cell for row in rows[1:] for cell in row]
+        assert not [c for c in cells if c[:1] in ("=", "+", "-", "@", "\t", "\r")], name
+    listed = list(csv.DictReader(io.StringIO(read("manual_answers.csv"))))
+    assert sorted(r["answer"] for r in listed) == sorted("'" + text for text in formulas)
+    scored = io.StringIO()
+    writer = csv.DictWriter(scored, fieldnames=list(listed[0]))
+    writer.writeheader()
+    writer.writerows([dict(row, score="1", comment="=ok") for row in listed])
+    with Gradebook.in_folder(out) as book:
+        assert book.import_manual(scored.getvalue()) == len(formulas)
+        graded = book.current()
+        assert sorted(g.student for g in graded if g.report.manual[0].score == 1.0) == sorted(
+            f"={i}+student" if i % 2 == 0 else f"student{i}" for i in range(len(formulas)))
+        assert set(book.manual_comments().values()) == {"=ok"}
