@@ -153,3 +153,46 @@ def test_grader_version_follows_the_check_module(tmp_path, monkeypatch):
         assert grader_version(6) != before
     finally:
         problem_module.cache_clear()
+
+
+VERSIONS_SCRIPT = """
+import json
+from grader.gradebook import grader_version
+print(json.dumps({n: grader_version(n) for n in (6, 12, 24, 31)}))
+"""
+
+
+def test_editing_shared_code_regrades_exactly_the_problems_that_use_it(tmp_path):
+    """The version key covers every file that decides a verdict: shared check helpers, shared probes, the grader's
+    machinery and the reference, not only the problem's own check and probe modules."""
+    import json
+    import shutil
+
+    for package in ("grader", "checks", "probes", "reference", "student_template"):
+        shutil.copytree(ROOT / package, tmp_path / package, ignore=shutil.ignore_patterns("__pycache__"))
+
+    def versions():
+        done = subprocess.run([sys.executable, "-c", VERSIONS_SCRIPT], cwd=tmp_path, capture_output=True, text=True,
+                              env={**os.environ, "PYTHONPATH": str(tmp_path)}, timeout=120)
+        assert done.returncode == 0, done.stderr
+        return {int(k): v for k, v in json.loads(done.stdout).items()}
+
+    def edit(relative):
+        path = tmp_path / relative
+        path.write_text(path.read_text() + "\n# edited\n")
+
+    before = versions()
+    assert versions() == before  # stable
+    changes = {}
+    for relative in ("checks/_trees.py", "probes/_trees.py", "checks/_rigid.py", "reference/rotations.py",
+                     "reference/tree.py", "grader/checking.py"):
+        edit(relative)
+        after = versions()
+        changes[relative] = {n for n in before if after[n] != before[n]}
+        before = after
+    assert changes["checks/_trees.py"] == {24, 31}
+    assert changes["probes/_trees.py"] == {24, 31}
+    assert changes["checks/_rigid.py"] == {12}
+    assert changes["reference/rotations.py"] == {6, 12, 24, 31}
+    assert changes["reference/tree.py"] == {24, 31}
+    assert changes["grader/checking.py"] == {6, 12, 24, 31}
