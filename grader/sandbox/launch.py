@@ -416,9 +416,10 @@ def _landlock_rules(python: str, submission: Path, home: str) -> dict:
 
 def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: bool) -> list[str]:
     bound = [p for p in visible_paths(python) if not any(_inside(p, s) for s in SYSTEM_DIRS)]
-    if any(p in ("/", "/tmp") for p in bound):
-        raise SandboxError(f"the Python runtime lives directly in {' or '.join(p for p in bound if p in ('/', '/tmp'))}: "
-                           "the sandbox cannot show it without showing everything there; install it in its own folder")
+    shared = [p for p in bound if p in ("/", "/tmp")]
+    if shared:
+        raise SandboxError(f"the Python runtime lives directly in {shared[0]}: the sandbox cannot show it without "
+                           "showing everything there; install it in a folder of its own")
     namespaces = ["--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try"]
     if not root:  # as root, the worker switches to its uid itself (a user namespace would leave it unmapped)
         namespaces.append("--unshare-user")
@@ -442,6 +443,11 @@ def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: boo
     return [*argv, "--", python, "-I", "-B", "/grader/worker.py", *worker_args[:2], "/submission", worker_args[2]]
 
 
+def _worker_argv(python: str, submission: Path, request_fd: int, reply_fd: int, config: dict) -> list[str]:
+    worker = runtime_dir() / "worker.py"
+    return [python, "-I", "-B", str(worker), str(request_fd), str(reply_fd), str(submission), json.dumps(config)]
+
+
 def prepare(submission: Path, request_fd: int, reply_fd: int, limits: Limits, mode: SandboxMode,
             python: str | None = None) -> Launch:
     """The launch of a worker for ``submission``; the two fds are the protocol pipes.
@@ -452,30 +458,29 @@ def prepare(submission: Path, request_fd: int, reply_fd: int, limits: Limits, mo
     root = os.geteuid() == 0
     required = [name for name in REQUIRED if importlib.util.find_spec(name) is not None]
     config = {"limits": limits.for_worker(), "require": required}
-    if mode.isolated:
-        claim = users.claim_uid(sweeps=False) if root else None  # own uid: own process count
-        config["uid"] = claim.uid if claim else None
-        argv = _bwrap_argv(python, submission, [str(request_fd), str(reply_fd), json.dumps(config)], root)
-        return Launch(argv, child_env("/tmp"), tempfile.gettempdir(), claim)
-    runtime = runtime_dir()
-    if not root:
+    if not mode.isolated and not root:  # a student's own machine: their own uid, Landlock where available
         home = _private_home(None)
         config["landlock"] = _landlock_rules(python, submission, home)
-        argv = [python, "-I", "-B", str(runtime / "worker.py"), str(request_fd), str(reply_fd), str(submission),
-                json.dumps(config)]
-        return Launch(argv, child_env(home), home, None, home)
-    reason = refusal(python)
-    if reason:
-        raise SandboxError(reason)
-    _guard_cache()
-    claim = users.claim_uid(sweeps=True)
+        return Launch(_worker_argv(python, submission, request_fd, reply_fd, config), child_env(home), home, None,
+                      home)
+    if not mode.isolated:
+        reason = refusal(python)
+        if reason:
+            raise SandboxError(reason)
+        _guard_cache()
+    # as root, a uid of the child's own: its own files and its own process count
+    claim = users.claim_uid(sweeps=not mode.isolated) if root else None
     try:
+        config["uid"] = claim.uid if claim else None
+        if mode.isolated:
+            argv = _bwrap_argv(python, submission, [str(request_fd), str(reply_fd), json.dumps(config)], root)
+            return Launch(argv, child_env("/tmp"), tempfile.gettempdir(), claim)
         _share_with(submission, claim.uid)
         home = _private_home(claim.uid)
+        config.update(unshare_network=True, landlock=_landlock_rules(python, submission, home))
+        return Launch(_worker_argv(python, submission, request_fd, reply_fd, config), child_env(home), home, claim,
+                      home)
     except BaseException:
-        claim.release()
+        if claim is not None:
+            claim.release()
         raise
-    config.update(uid=claim.uid, unshare_network=True, landlock=_landlock_rules(python, submission, home))
-    argv = [python, "-I", "-B", str(runtime / "worker.py"), str(request_fd), str(reply_fd), str(submission),
-            json.dumps(config)]
-    return Launch(argv, child_env(home), home, claim, home)
