@@ -26,8 +26,6 @@ __all__ = ["Child", "canary", "probe_name"]
 
 #: how much of the child's stdout/stderr is kept for the report
 OUTPUT_TAIL = 4000
-#: the kinds of failure that are the student's (the others are the grader's)
-STUDENT_KINDS = ("not_implemented", "exception", "bad_value", "exit")
 #: seconds a worker has to exit when asked to
 EXIT_GRACE = 1.0
 
@@ -355,7 +353,7 @@ class Child:
                               f"{reply.get('message', '')} (its copy of the probes differs from the grader's, or "
                               "the submission tampered with them)")
         raise StudentCodeError(
-            kind if kind in STUDENT_KINDS else "exception",
+            kind if kind in protocol.STUDENT_KINDS else "exception",
             str(reply.get("type", "Exception")),
             str(reply.get("message", "")),
             str(reply.get("traceback", "")),

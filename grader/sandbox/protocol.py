@@ -9,8 +9,8 @@ The worker speaks first, before it imports the submission (nothing untrusted has
 Requests:  {"id": n, "op": "import"} | {"id": n, "op": "call", "probe": "problem_06.vectors", "args": [...]}
            | {"id": n, "op": "exit"}
 Replies:   {"id": n, "ok": true, "value": ...}
-           | {"id": n, "ok": false, "kind": KIND, "phase": "import" | "call", "type": ..., "message": ...,
-              "traceback": ...}
+           | {"id": n, "ok": false, "kind": one of STUDENT_KINDS or "probe", "phase": "import" | "call",
+              "type": ..., "message": ..., "traceback": ...}
 
 The parent trusts nothing it reads after the worker said ready: every read is bounded in size (checked before
 anything is allocated) and in time (one absolute deadline per call, whatever arrives in between).
@@ -27,7 +27,8 @@ import time
 __all__ = [
     "HEADER",
     "MAX_MESSAGE",
-    "KINDS",
+    "STUDENT_KINDS",
+    "GRADER_KINDS",
     "ProtocolError",
     "Deadline",
     "frame",
@@ -40,9 +41,10 @@ __all__ = [
 HEADER = struct.Struct(">I")
 #: the largest message either side accepts
 MAX_MESSAGE = 8 * 1024 * 1024
-#: why a request failed: the student's code (not_implemented, exception, bad_value, exit), the probe itself
-#: (probe: the grader's fault) or the worker's start-up (setup: the installation's fault)
-KINDS = ("not_implemented", "exception", "bad_value", "exit", "probe", "setup")
+#: why a request failed: the student's code ...
+STUDENT_KINDS = ("not_implemented", "exception", "bad_value", "exit")
+#: ... or the grader: a probe that cannot be found or cannot import what it needs, a worker that cannot start
+GRADER_KINDS = ("probe", "setup")
 #: bytes read at a time
 CHUNK = 1 << 16
 
