@@ -84,6 +84,11 @@ def processes_with(text: str) -> list[int]:
             and alive(int(p))]
 
 
+def new_processes(before: set[int]) -> list[int]:
+    """Live descendants of this process that were not there ``before`` (e.g. not multiprocessing's helpers)."""
+    return [p for p in descendants(os.getpid()) if p not in before and alive(p)]
+
+
 def wait_until(condition, seconds: float = GONE_WITHIN) -> bool:
     deadline = time.monotonic() + seconds
     while not condition():
@@ -165,6 +170,7 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch):
         if expect.get("other_uid") and os.geteuid() != 0:
             pytest.skip("without bubblewrap and without root, the child runs as the user who runs the tests")
     target = Target(submission, monkeypatch) if expect.get("target") else None
+    before = set(descendants(os.getpid()))
     try:
         start = time.monotonic()
         report = grade_problem(6, submission, seed=7, limits=limits, mode=mode)
@@ -191,7 +197,7 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch):
         bound = limits.setup_timeout + limits.import_timeout + len(report.results) * (limits.call_timeout + 5)
         assert elapsed < 2 * bound, elapsed
         # contained: nothing the grading started is left
-        assert wait_until(lambda: not [p for p in descendants(os.getpid()) if alive(p)]), descendants(os.getpid())
+        assert wait_until(lambda: not new_processes(before)), new_processes(before)
         if target is not None:
             target.verify(report.sandbox)
     finally:

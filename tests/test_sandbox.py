@@ -27,7 +27,7 @@ from grader.sandbox import BWRAP_FIX, Child, Limits, SandboxMode, canary, plain_
 from grader.sandbox import launch, users
 
 from .submissions import ROOT, build_hostile, copy_reference
-from .test_hostile import alive, assert_refused, descendants, wait_until
+from .test_hostile import assert_refused, descendants, new_processes, wait_until
 
 LIMITS = Limits(call_timeout=3.0, import_timeout=10.0)
 BWRAP = SandboxMode("bwrap", "bubblewrap (test)")
@@ -144,12 +144,13 @@ def test_a_child_that_closes_its_pipe_and_loops_is_a_crash_and_is_killed(tmp_pat
     if not mode.isolated and refusal() is not None:
         pytest.skip("covered by the refusal: no child runs here without bubblewrap")
     submission = materialize(build_hostile("closed_pipe_loop", tmp_path / "pkg"))
+    before = set(descendants(os.getpid()))
     try:
         with Child(submission.path, Limits(call_timeout=2.0), mode) as child:
             with pytest.raises(WorkerCrash, match="closed its connection"):
                 child.call("problem_06.frames")
             assert child._proc is None
-            assert wait_until(lambda: not [p for p in descendants(os.getpid()) if alive(p)])
+            assert wait_until(lambda: not new_processes(before)), new_processes(before)
             assert child.call("problem_06.elementary", 1, 0.5).shape == (3, 3)  # a fresh worker answers
     finally:
         shutil.rmtree(submission.path.parent, ignore_errors=True)
