@@ -11,6 +11,7 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import os
+import select
 import signal
 import subprocess
 import sys
@@ -153,14 +154,27 @@ class Child:
         return info.si_status if info.si_code == os.CLD_EXITED else -info.si_status
 
     def _wait_exit(self, deadline: float) -> int | None:
-        """The exit code once the worker ended, or None if it still runs at ``deadline``."""
-        pause = 0.001
-        while True:
-            code = self._exit_code()
-            if code is not None or time.monotonic() >= deadline:
-                return code
-            time.sleep(pause)
-            pause = min(0.05, pause * 2)
+        """The exit code once the worker ended, or None if it still runs at ``deadline`` (not reaped)."""
+        code = self._exit_code()
+        if code is not None or self._proc is None:
+            return code
+        try:
+            pidfd = os.pidfd_open(self._proc.pid)  # readable when the process ends (Linux 5.3)
+        except (AttributeError, OSError):
+            pidfd = None
+        try:
+            pause = 0.001
+            while code is None and time.monotonic() < deadline:
+                if pidfd is not None:
+                    select.select([pidfd], [], [], max(0.0, deadline - time.monotonic()))
+                else:
+                    time.sleep(pause)
+                    pause = min(0.05, pause * 2)
+                code = self._exit_code()
+            return code
+        finally:
+            if pidfd is not None:
+                os.close(pidfd)
 
     def _kill(self, final: bool = False) -> None:
         """Kill the worker and every process of its session (and, under its own uid, every process of that uid),
