@@ -36,11 +36,11 @@ from dataclasses import dataclass, field, replace
 from multiprocessing.connection import wait
 from pathlib import Path
 
-from .errors import SubmissionError
+from .errors import GraderFault, SandboxError, SubmissionError
 from .gradebook import (GRADEBOOK_NAME, Gradebook, Graded, ManualScoreError, grader_version, now,
                         spreadsheet_cell)
 from .results import CheckResult, ProblemReport, Status
-from .sandbox import Limits, SandboxMode, sandbox_mode
+from .sandbox import BWRAP_FIX, Limits, SandboxMode, canary, sandbox_mode
 
 __all__ = [
     "Entry",
@@ -183,7 +183,6 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
         conn.send(("fault", traceback.format_exc()))
         return
     conn.send(("ready", None))
-    limits = replace(limits, slot=slot)
     while True:
         try:
             task = conn.recv()
@@ -195,6 +194,8 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
             reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed, limits=limits,
                                        mode=mode)
             conn.send(("ok", reports))
+        except GraderFault as exc:  # this student is not recorded and is retried next run
+            conn.send(("fault", str(exc).strip().splitlines()[0]))
         except Exception:  # noqa: BLE001 - a grader fault: this student is not recorded and is retried next run
             conn.send(("fault", traceback.format_exc()))
 
@@ -417,8 +418,13 @@ def run_batch(
     student_timeout: float | None = None,
     progress: bool = True,
     export: bool = True,
+    no_sandbox: bool = False,
 ) -> BatchReport:
-    """Grade every student of ``submissions`` into the gradebook in ``out``, then write the exports."""
+    """Grade every student of ``submissions`` into the gradebook in ``out``, then write the exports.
+
+    Without bubblewrap, students' code runs as plain processes: only with ``no_sandbox`` (recorded in the run and
+    in every report), else ``SandboxError``.  One worker is started first (a canary): when it cannot start, the
+    batch stops with ``SandboxError`` before anyone is graded."""
     from .runner import problems as all_problems
 
     start = time.monotonic()
@@ -429,10 +435,18 @@ def run_batch(
     limits = limits or Limits()
     jobs = max(1, jobs or len(os.sched_getaffinity(0)))
     student_timeout = student_timeout or default_student_timeout(limits, numbers)
+    mode = sandbox_mode()
+    if not mode.isolated and not no_sandbox:
+        raise SandboxError(f"bubblewrap is not available, so students' code would run without a sandbox: install "
+                           f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
+                           "and in every report)")
     with _locked(out), Gradebook.in_folder(out) as book:
         entries, ignored = discover(submissions, exclude=out)
         versions = {n: grader_version(n) for n in numbers}
-        run_id = book.start_run(str(submissions), numbers, jobs, force)
+        if entries:
+            canary(limits, mode)
+        sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
+        run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
         report = BatchReport(run_id, len(entries), ignored=ignored)
         tasks = []
         for entry in entries:
@@ -446,6 +460,10 @@ def run_batch(
 
         def done(task: _Task, kind: str, payload, seconds: float) -> None:
             name = task.entry.name
+            faults = [r for rep in payload for r in rep.results if r.status is Status.GRADER_ERROR] \
+                if kind == "ok" else []
+            if faults:  # a grader fault is never stored as a grade: retried on the next run
+                kind, payload = "fault", faults[0].message.splitlines()[0]
             if kind == "ok":
                 reports, outcome = payload, "graded"
             elif kind == "timeout":
@@ -467,7 +485,7 @@ def run_batch(
         state = "interrupted"
         try:
             if tasks:
-                _run_pool(tasks, jobs, limits, sandbox_mode(), tuple(numbers), student_timeout, done)
+                _run_pool(tasks, jobs, limits, mode, tuple(numbers), student_timeout, done)
             state = "finished"
         except KeyboardInterrupt:
             report.interrupted = True
@@ -696,7 +714,8 @@ def cmd_batch(args) -> int:
     )
     try:
         report = run_batch(args.submissions, args.out, problems=args.problems, jobs=args.jobs, force=args.force,
-                           limits=limits, student_timeout=args.student_timeout, progress=not args.quiet)
+                           limits=limits, student_timeout=args.student_timeout, progress=not args.quiet,
+                           no_sandbox=args.no_sandbox)
     except (SubmissionError, BatchLocked) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_USAGE
@@ -777,6 +796,9 @@ def add_batch_parser(sub) -> None:
                    help="seconds for grading one student in all (default: the import time-out plus twice the call "
                         "time-out per check)")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress display")
+    p.add_argument("--no-sandbox", action="store_true",
+                   help="grade even when bubblewrap is not available: students' code runs as plain processes "
+                        "(under unprivileged uids when run as root); recorded in the gradebook and every report")
     p.set_defaults(func=cmd_batch)
 
     p = sub.add_parser("import-manual", help="merge a CSV of manual scores into a gradebook",

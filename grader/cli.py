@@ -19,6 +19,8 @@ import shutil
 import sys
 from pathlib import Path
 
+from .errors import GraderFault
+
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_GRADER = 0, 1, 2, 3
 
 
@@ -159,6 +161,9 @@ def main(argv: list[str] | None = None) -> int:
         return args.func(args)
     except SystemExit as exc:  # argparse's usage errors
         return EXIT_USAGE if exc.code not in (0, None) else EXIT_OK
+    except GraderFault as exc:  # the installation's fault (e.g. the sandbox cannot start): nothing was graded
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_GRADER
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130

@@ -59,7 +59,8 @@ CREATE TABLE IF NOT EXISTS runs (
     jobs            INTEGER NOT NULL,
     force           INTEGER NOT NULL DEFAULT 0,
     graded          INTEGER NOT NULL DEFAULT 0,
-    skipped         INTEGER NOT NULL DEFAULT 0
+    skipped         INTEGER NOT NULL DEFAULT 0,
+    sandbox         TEXT NOT NULL DEFAULT ''  -- how students' code ran ("--no-sandbox: ..." when chosen so)
 );
 CREATE TABLE IF NOT EXISTS students (
     id   INTEGER PRIMARY KEY,
@@ -304,6 +305,9 @@ class Gradebook:
             f"BEGIN IMMEDIATE; {SCHEMA} "
             f"INSERT OR IGNORE INTO meta VALUES ('schema_version', '{SCHEMA_VERSION}'); COMMIT;"
         )
+        columns = {row["name"] for row in self.db.execute("PRAGMA table_info(runs)")}
+        if "sandbox" not in columns:  # a gradebook written before runs recorded their sandbox
+            self.db.execute("ALTER TABLE runs ADD COLUMN sandbox TEXT NOT NULL DEFAULT ''")
 
     @classmethod
     def in_folder(cls, results_dir: str | Path) -> Gradebook:
@@ -332,11 +336,13 @@ class Gradebook:
 
     # ------------------------------------------------------------------ runs
 
-    def start_run(self, submissions_dir: str, problems: list[int], jobs: int, force: bool = False) -> int:
+    def start_run(self, submissions_dir: str, problems: list[int], jobs: int, force: bool = False,
+                  sandbox: str = "") -> int:
         with self.transaction() as db:
             cursor = db.execute(
-                "INSERT INTO runs (started_at, submissions_dir, problems, jobs, force) VALUES (?, ?, ?, ?, ?)",
-                (now(), str(submissions_dir), json.dumps(problems), jobs, int(force)),
+                "INSERT INTO runs (started_at, submissions_dir, problems, jobs, force, sandbox) "
+                "VALUES (?, ?, ?, ?, ?, ?)",
+                (now(), str(submissions_dir), json.dumps(problems), jobs, int(force), sandbox),
             )
         return cursor.lastrowid
 

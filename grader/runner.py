@@ -16,12 +16,11 @@ from pathlib import Path
 
 from . import __version__
 from .checking import CheckFailure, NotAnswered, checks_of
-from .child import Child
 from .context import Context
-from .errors import GraderFault, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
+from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .loader import cleanup, materialize, read_answers
 from .results import CheckResult, ManualItem, ProblemReport, Status
-from .sandbox import Limits, SandboxMode, sandbox_mode
+from .sandbox import Child, Limits, SandboxMode, sandbox_mode
 
 __all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission"]
 
@@ -124,6 +123,8 @@ def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
         status, message = Status.NOT_IMPLEMENTED, str(exc)
     except (StudentCodeError, StudentTimeout, WorkerCrash) as exc:
         status, message, hint = _student_error(exc)
+    except SandboxError:  # the installation's fault: no check can run, nothing is graded
+        raise
     except GraderFault as exc:
         status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {exc}"
     except Exception as exc:  # noqa: BLE001 - a crashing check is the grader's defect, reported as such
@@ -210,7 +211,10 @@ def grade_submission(
     mode: SandboxMode | None = None,
     workdir: str | Path | None = None,
 ) -> list[ProblemReport]:
-    """Grade the given problems of one submission with one sandboxed worker."""
+    """Grade the given problems of one submission with one sandboxed worker.
+
+    Raises ``SandboxError`` (a ``GraderFault``) when the worker cannot be started or cannot import its
+    dependencies: a fault of the installation, for which nothing is graded."""
     mode = mode or sandbox_mode()
     seed = random.randrange(2**31) if seed is None else seed
     modules = {n: problem_module(n) for n in numbers}
@@ -234,7 +238,7 @@ def grade_submission(
                         title=modules[number].TITLE,
                         results=tuple(results),
                         manual=tuple(_manual_items(modules[number], ctx, number)),
-                        sandbox=mode.note,
+                        sandbox=child.note,
                         isolated=mode.isolated,
                         seed=seed,
                         duration=time.perf_counter() - start,

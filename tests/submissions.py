@@ -4,7 +4,19 @@
 * planted mistakes: ``tests/planted/problem_NN.toml`` lists ``[[mistake]]`` entries, each a text replacement in
   one file of a reference copy, with the check it must fail and the diagnosis and message it must produce.
 * hostile submissions: ``tests/hostile/<name>/`` holds files laid over a reference copy, and ``expect.toml``
-  says what the grader must report.
+  says what the grader must report:
+
+  - ``status`` (one or a list) of the ``checks`` listed (default: every check that ran), each scoring 0 unless
+    the status is "passed"; ``message``: a text of their messages; ``max_score``: a bound of the total;
+    ``stdout``: a text of what the submission printed;
+  - ``limits``: fields of ``Limits`` that replace the tests' defaults (e.g. ``{ call_timeout = 60.0 }``);
+  - ``isolated_only``: the attack is contained only by bubblewrap's file-system view (plain processes skip it);
+  - ``other_uid``: the attack would harm the user who runs the grader: graded only where the child cannot be that
+    user (bubblewrap, or a plain process under a uid of its own);
+  - ``target``: the test writes ``target.txt`` into the submission (JSON: a ``nonce``, the ``port`` of a socket
+    the test listens on, the reference ``cache`` folder the grader uses) and checks afterwards that no process or
+    file named with the nonce is left, that the cache is untouched, and that a connection reached the port only
+    where the report says the network was not isolated.
 """
 
 from __future__ import annotations

@@ -1,58 +1,222 @@
 """Hostile submissions: each yields a clear student-facing error or a 0 for the attacked checks, within its
-limits, and the grader itself carries on."""
+limits, and the grader itself carries on; nothing the submission started or wrote outlives the grading.
 
+Every outcome is asserted, never a duration: the bounds on time are generous (a loaded machine passes), and the
+speed of the grader is measured by the benchmarks.  In the plain-process mode, a grader running as root whose
+Python runtime an unprivileged uid cannot read (e.g. under /root) must refuse: there the tests assert the refusal.
+"""
+
+import json
+import os
+import random
+import shutil
+import socket
+import tempfile
 import time
+from dataclasses import replace
+from pathlib import Path
 
 import pytest
 
 from grader import grade_problem
+from grader.errors import SandboxError
 from grader.results import Status
-from grader.sandbox import Limits, SandboxMode, sandbox_mode
+from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode
 
-from .submissions import build_hostile, hostile_expectation, hostile_names
+from .submissions import build_hostile, copy_reference, hostile_expectation, hostile_names
 
 LIMITS = Limits(call_timeout=3.0, import_timeout=5.0, memory_mb=1024)
 MODES = [pytest.param("bwrap", id="bwrap"), pytest.param("process", id="process")]
+#: seconds that the processes of a finished grading get to disappear (they are killed: this is only the kernel's)
+GONE_WITHIN = 20.0
+#: how a report says that Landlock restricted the files of a plain process
+LANDLOCK_FILES = "Landlock let it read only"
 
 
-def _mode(kind):
-    if kind == "bwrap" and not sandbox_mode().isolated:
-        pytest.skip("bubblewrap is not available here")
-    return SandboxMode(kind, f"{kind} (test)")
+def hostile_mode(kind: str) -> SandboxMode:
+    if kind == "bwrap":
+        if not sandbox_mode().isolated:
+            pytest.skip("bubblewrap is not available here")
+        return SandboxMode("bwrap", "bubblewrap: no network, no access to the reference or other submissions")
+    return plain_mode("bubblewrap not used (test)")
+
+
+def assert_refused(grade) -> None:
+    """As root, without bubblewrap, with a runtime that no other uid can read: a refusal that names the fix."""
+    with pytest.raises(SandboxError) as refused:
+        grade()
+    text = str(refused.value)
+    assert "never runs as root" in text and BWRAP_FIX in text and "cannot" in text, text
+
+
+# ------------------------------------------------------------------------------------------ processes
+
+
+def descendants(pid: int) -> list[int]:
+    found, todo = [], [pid]
+    while todo:
+        for task in Path(f"/proc/{todo.pop()}/task").glob("*"):
+            try:
+                children = [int(c) for c in (task / "children").read_text().split()]
+            except OSError:
+                continue
+            found += children
+            todo += children
+    return found
+
+
+def alive(pid: int) -> bool:
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] not in ("Z", "X")
+    except (OSError, IndexError):
+        return False
+
+
+def cmdline(pid: int) -> bytes:
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return b""
+
+
+def processes_with(text: str) -> list[int]:
+    return [int(p) for p in os.listdir("/proc") if p.isdigit() and text.encode() in cmdline(int(p))
+            and alive(int(p))]
+
+
+def new_processes(before: set[int]) -> list[int]:
+    """Live descendants of this process that were not there ``before`` (e.g. not multiprocessing's helpers)."""
+    return [p for p in descendants(os.getpid()) if p not in before and alive(p)]
+
+
+def wait_until(condition, seconds: float = GONE_WITHIN) -> bool:
+    deadline = time.monotonic() + seconds
+    while not condition():
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True
+
+
+# ------------------------------------------------------------------------------------------ the target
+
+
+class Target:
+    """What a ``target`` submission attacks: a nonce to name its leftovers, a port this test listens on, and a
+    reference cache opened to every user (a careless installation), with one planted entry."""
+
+    def __init__(self, submission: Path, monkeypatch):
+        self.nonce = f"{random.randrange(10**6, 10**7)}.{random.randrange(10**5, 10**6)}"  # a `sleep` duration
+        self.base = Path(tempfile.mkdtemp(prefix="grader-test-cache-"))
+        os.chmod(self.base, 0o755)
+        self.cache = self.base / "cache"
+        self.entry = self.cache / "0123456789abcdef" / "entry.json"
+        self.entry.parent.mkdir(parents=True)
+        self.entry.write_text('{"value": 1.0}')
+        for path, mode in ((self.cache, 0o777), (self.entry.parent, 0o777), (self.entry, 0o666)):
+            os.chmod(path, mode)
+        monkeypatch.setenv("GRADER_CACHE", str(self.cache))
+        self.server = socket.socket()
+        self.server.bind(("127.0.0.1", 0))
+        self.server.listen(8)
+        self.server.setblocking(False)
+        (submission / "target.txt").write_text(json.dumps(
+            {"nonce": self.nonce, "port": self.server.getsockname()[1], "cache": str(self.cache)}))
+
+    def connected(self) -> bool:
+        try:
+            self.server.accept()[0].close()
+        except BlockingIOError:
+            return False
+        return True
+
+    def leftover_files(self) -> list[str]:
+        return [str(p) for folder in ("/tmp", "/var/tmp", "/dev/shm") if os.path.isdir(folder)
+                for p in Path(folder).glob(f"*{self.nonce}*")]
+
+    def verify(self, note: str) -> None:
+        """Nothing left, the cache untouched, the network as the report says."""
+        assert wait_until(lambda: not processes_with(self.nonce)), processes_with(self.nonce)
+        assert not self.leftover_files(), self.leftover_files()
+        files = sorted(p for p in self.cache.rglob("*"))
+        assert files == [self.entry.parent, self.entry], files
+        assert self.entry.read_text() == '{"value": 1.0}'
+        claims_isolation = "no network" in note or "network isolated" in note
+        assert not (claims_isolation and self.connected()), note
+
+    def close(self) -> None:
+        self.server.close()
+        for pid in processes_with(self.nonce):  # only after a failed test: never leave them running
+            os.kill(pid, 9)
+        for path in self.leftover_files():
+            shutil.rmtree(path, ignore_errors=True) if os.path.isdir(path) else os.unlink(path)
+        shutil.rmtree(self.base, ignore_errors=True)
+
+
+# ------------------------------------------------------------------------------------------ the tests
 
 
 @pytest.mark.parametrize("kind", MODES)
 @pytest.mark.parametrize("name", hostile_names())
-def test_hostile_submission(name, kind, tmp_path):
+def test_hostile_submission(name, kind, tmp_path, monkeypatch):
     expect = hostile_expectation(name)
-    if expect.get("isolated_only") and kind != "bwrap":
-        pytest.skip("only a file-system sandbox can hide the reference's files; reports flag plain processes")
+    mode = hostile_mode(kind)
     submission = build_hostile(name, tmp_path / "pkg")
-    start = time.monotonic()
-    report = grade_problem(6, submission, seed=7, limits=LIMITS, mode=_mode(kind))
-    elapsed = time.monotonic() - start
-    by_id = {r.check_id: r for r in report.results}
-    statuses = expect["status"] if isinstance(expect["status"], list) else [expect["status"]]
-    targets = expect.get("checks") or [r.check_id for r in report.results if r.status is not Status.SKIPPED]
-    for check_id in targets:
-        result = by_id[check_id]
-        assert result.status.value in statuses, (check_id, result.status, result.message)
-        assert result.score == 0
-        if "message" in expect:
-            assert expect["message"] in result.message, result.message
-    assert not any(r.status is Status.GRADER_ERROR for r in report.results), report.results
-    if "max_score" in expect:
-        assert report.score <= expect["max_score"]
-    if "stdout" in expect:
-        assert expect["stdout"] in report.stdout
-    # every call is bounded: import and call time-outs, plus process start-up, per attacked check
-    assert elapsed < len(report.results) * (LIMITS.call_timeout + 2) + LIMITS.import_timeout
+    limits = replace(LIMITS, **expect.get("limits", {}))
+    if kind == "process":
+        if refusal() is not None:
+            assert_refused(lambda: grade_problem(6, submission, seed=7, limits=limits, mode=mode))
+            return
+        if expect.get("other_uid") and os.geteuid() != 0:
+            pytest.skip("without bubblewrap and without root, the child runs as the user who runs the tests")
+    target = Target(submission, monkeypatch) if expect.get("target") else None
+    before = set(descendants(os.getpid()))
+    try:
+        start = time.monotonic()
+        report = grade_problem(6, submission, seed=7, limits=limits, mode=mode)
+        elapsed = time.monotonic() - start
+        if expect.get("isolated_only") and not report.isolated and LANDLOCK_FILES not in report.sandbox:
+            pytest.skip("only a file-system sandbox (bubblewrap, or Landlock where the kernel has it) hides the "
+                        "reference's files; the report says that there was none")
+        by_id = {r.check_id: r for r in report.results}
+        statuses = expect["status"] if isinstance(expect["status"], list) else [expect["status"]]
+        targets = expect.get("checks") or [r.check_id for r in report.results if r.status is not Status.SKIPPED]
+        for check_id in targets:
+            result = by_id[check_id]
+            assert result.status.value in statuses, (check_id, result.status, result.message)
+            if result.status is not Status.PASSED:
+                assert result.score == 0
+            if "message" in expect:
+                assert expect["message"] in result.message, result.message
+        assert not any(r.status is Status.GRADER_ERROR for r in report.results), report.results
+        if "max_score" in expect:
+            assert report.score <= expect["max_score"]
+        if "stdout" in expect:
+            assert expect["stdout"] in report.stdout, report.stdout
+        # bounded: every call stops at its limit (the bound is generous: a loaded machine passes)
+        bound = limits.setup_timeout + limits.import_timeout + len(report.results) * (limits.call_timeout + 5)
+        assert elapsed < 2 * bound, elapsed
+        # contained: nothing the grading started is left
+        assert wait_until(lambda: not new_processes(before)), new_processes(before)
+        if target is not None:
+            target.verify(report.sandbox)
+    finally:
+        if target is not None:
+            target.close()
 
 
 def test_fallback_is_reported(tmp_path):
-    from .submissions import copy_reference
-
-    report = grade_problem(6, copy_reference(tmp_path / "pkg"), seed=1,
-                           mode=SandboxMode("process", "bubblewrap is not available: plain process"))
+    """Without bubblewrap: full marks under a uid of the child's own, or a refusal that says why; the report
+    says plainly how the submission ran."""
+    submission = copy_reference(tmp_path / "pkg")
+    mode = plain_mode("bubblewrap is not available")
+    if refusal() is not None:
+        assert_refused(lambda: grade_problem(6, submission, seed=1, mode=mode))
+        return
+    report = grade_problem(6, submission, seed=1, mode=mode)
     assert report.score == report.auto_max_score
     assert not report.isolated and "bubblewrap" in report.sandbox
+    if os.geteuid() == 0:
+        assert "unprivileged uid" in report.sandbox and "network" in report.sandbox
+    else:
+        assert "not sandboxed" in report.sandbox and "your own user" in report.sandbox

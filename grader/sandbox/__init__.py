@@ -1,0 +1,15 @@
+"""Running submissions in a child process: the launch (what the child may see, under which uid), the parent's
+handle on the child, the worker that runs inside it, and the protocol between the two.
+
+    launch.py    modes (bubblewrap or a plain process), limits, the child's view of the file system
+    users.py     unprivileged uids for children when the grader runs as root, and the sweep after each grading
+    child.py     the parent's handle: probe calls with absolute deadlines, restarts, the start-up check
+    worker.py    the child side (standard library only, plus protocol.py and the probes package)
+    protocol.py  framing and deadline-bound reads and writes (standard library only)
+"""
+
+from .child import Child, canary, probe_name
+from .launch import BWRAP_FIX, Limits, SandboxMode, child_env, plain_mode, refusal, runtime_dir, sandbox_mode
+
+__all__ = ["Limits", "SandboxMode", "sandbox_mode", "plain_mode", "Child", "canary", "probe_name", "runtime_dir", "child_env",
+           "refusal", "BWRAP_FIX"]

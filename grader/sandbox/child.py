@@ -1,0 +1,429 @@
+"""The parent's handle on a worker process: start it, call probes with absolute deadlines, restart after a crash.
+
+Everything the worker sends after it said ready is untrusted: every read has one absolute deadline per call,
+whatever arrives before it (replies with other ids, a header and half a body, nothing at all), and every size is
+checked before anything is stored.  Faults of the set-up (a worker that cannot start or cannot import its
+dependencies, a probe that does not exist) are the grader's: they raise ``GraderFault``, never a student error.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.util
+import os
+import select
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from ..errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
+from . import protocol
+from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
+
+__all__ = ["Child", "canary", "probe_name"]
+
+#: how much of the child's stdout/stderr is kept for the report
+OUTPUT_TAIL = 4000
+#: seconds a worker has to exit when asked to
+EXIT_GRACE = 1.0
+
+
+def probe_name(probe) -> str:
+    """The name of ``probe`` (``"problem_06.vectors"``, or the probe function itself), checked against the
+    probes package: a probe that does not exist is the grader's fault, found before anything is sent."""
+    if callable(probe):
+        module = getattr(probe, "__module__", "") or ""
+        name = f"{module.removeprefix('probes.')}.{getattr(probe, '__name__', '')}"
+    else:
+        name = str(probe)
+    if name in _KNOWN_PROBES:
+        return name
+    module_name, _, func_name = name.rpartition(".")
+    try:
+        module = importlib.import_module(f"probes.{module_name}") if module_name else None
+    except ImportError as exc:
+        raise GraderFault(f"a check asks for the probe {name!r}, but probes.{module_name} cannot be imported: "
+                          f"{exc}") from exc
+    target = getattr(module, func_name, None) if module is not None else None
+    if target is None or not getattr(target, "is_probe", False):
+        raise GraderFault(f"a check asks for the probe {name!r}, which does not exist (a typo in the check?)")
+    _KNOWN_PROBES.add(name)
+    return name
+
+
+_KNOWN_PROBES: set[str] = set()
+
+
+class Child:
+    """A worker process for one submission.  ``call`` runs a probe; a crash or time-out kills the process, and
+    the next call starts a fresh one (unless importing the submission itself failed: that failure is final)."""
+
+    def __init__(self, submission: Path, limits: Limits | None = None, mode: SandboxMode | None = None,
+                 python: str | None = None):
+        self.submission = Path(submission)
+        self.limits = limits or Limits()
+        self.mode = mode or sandbox_mode()
+        self.python = python
+        self.info: dict = {}
+        self._proc: subprocess.Popen | None = None
+        self._launch: Launch | None = None
+        self._reader: protocol.FrameReader | None = None
+        self._send_fd = -1
+        self._next_id = 0
+        self._ready = False
+        self._pending_import = False
+        self._import_failure: Exception | None = None
+        self._output = tempfile.TemporaryFile()
+        self._errors = tempfile.TemporaryFile()
+        self.calls = 0
+        self.restarts = 0
+
+    # ------------------------------------------------------------------ process life
+
+    def start(self) -> None:
+        """Start the worker and ask it to import the submission, without waiting: the parent's own work
+        overlaps with the child's start-up; the first ``call`` waits for the import to finish."""
+        if self._proc is None and self._import_failure is None:
+            self._spawn()
+            self._send_import()
+
+    def ready(self) -> dict:
+        """Start the worker if needed and wait until it said ready; returns what it reported about itself."""
+        if self._proc is None:
+            self._spawn()
+        self._await_ready()
+        return dict(self.info)
+
+    def _spawn(self) -> None:
+        to_child_r, to_child_w = os.pipe()
+        from_child_r, from_child_w = os.pipe()
+        try:
+            if self._launch is None:
+                self._launch = prepare(self.submission, to_child_r, from_child_w, self.limits, self.mode,
+                                       self.python)
+            launch = self._launch
+            self._proc = subprocess.Popen(
+                launch.argv,
+                stdin=subprocess.DEVNULL,
+                stdout=self._output,
+                stderr=self._errors,
+                pass_fds=(to_child_r, from_child_w),
+                env=launch.env,
+                cwd=launch.cwd,
+                start_new_session=True,
+            )
+        except OSError as exc:
+            for fd in (to_child_w, from_child_r):
+                os.close(fd)
+            raise self._setup_fault(f"the worker process cannot be started: {exc}") from exc
+        except BaseException:
+            for fd in (to_child_w, from_child_r):
+                os.close(fd)
+            raise
+        finally:
+            os.close(to_child_r)
+            os.close(from_child_w)
+        os.set_blocking(to_child_w, False)
+        self._send_fd = to_child_w
+        self._reader = protocol.FrameReader(from_child_r)
+        self._spawned_at = time.monotonic()
+        self._ready = False
+        self.restarts += 1
+
+    def _send_import(self) -> None:
+        self._next_id += 1
+        self._import_id = self._next_id
+        self._send({"op": "import", "id": self._import_id}, self.limits.setup_timeout, "import")
+        self._pending_import = True
+
+    def _exit_code(self) -> int | None:
+        """The worker's exit code once it ended (negative: the signal), without reaping it."""
+        if self._proc is None:
+            return None
+        if self._proc.returncode is not None:
+            return self._proc.returncode
+        try:
+            info = os.waitid(os.P_PID, self._proc.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT)
+        except ChildProcessError:
+            return self._proc.poll()
+        if info is None:
+            return None
+        return info.si_status if info.si_code == os.CLD_EXITED else -info.si_status
+
+    def _wait_exit(self, deadline: float) -> int | None:
+        """The exit code once the worker ended, or None if it still runs at ``deadline`` (not reaped)."""
+        code = self._exit_code()
+        if code is not None or self._proc is None:
+            return code
+        try:
+            pidfd = os.pidfd_open(self._proc.pid)  # readable when the process ends (Linux 5.3)
+        except (AttributeError, OSError):
+            pidfd = None
+        try:
+            pause = 0.001
+            while code is None and time.monotonic() < deadline:
+                if pidfd is not None:
+                    select.select([pidfd], [], [], max(0.0, deadline - time.monotonic()))
+                else:
+                    time.sleep(pause)
+                    pause = min(0.05, pause * 2)
+                code = self._exit_code()
+            return code
+        finally:
+            if pidfd is not None:
+                os.close(pidfd)
+
+    def _kill(self, final: bool = False) -> None:
+        """Kill the worker and every process of its session (and, under its own uid, every process of that uid),
+        even when it has already ended.  ``final``: no other worker follows (``close`` sweeps once, last)."""
+        self._pending_import = False
+        self._ready = False
+        proc, self._proc = self._proc, None
+        if proc is None:
+            return
+        for fd in (self._send_fd, self._reader.fd if self._reader else -1):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+        self._send_fd, self._reader = -1, None
+        if proc.returncode is None:
+            try:  # before the worker is reaped: its pid, the group's id, cannot have been reused
+                os.killpg(proc.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                pass
+            try:
+                proc.kill()
+            except OSError:
+                pass
+        try:
+            proc.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            pass
+        if self._launch is not None and not final:
+            self._launch.after_exit()
+
+    def close(self) -> None:
+        """Ask the worker to exit, then make sure it and everything it started have."""
+        try:
+            if self._proc is not None and self._exit_code() is None:
+                try:
+                    self._send({"id": -1, "op": "exit"}, EXIT_GRACE, "call")
+                    self._wait_exit(time.monotonic() + EXIT_GRACE)
+                except (StudentTimeout, WorkerCrash, GraderFault):
+                    pass
+            self._kill(final=True)
+        finally:
+            if self._launch is not None:
+                self._launch.release()
+                self._launch = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        self._output.close()
+        self._errors.close()
+
+    # ------------------------------------------------------------------ the start-up handshake
+
+    def _setup_fault(self, detail: str, missing: str | None = None) -> SandboxError:
+        where = "in the bubblewrap sandbox" if self.mode.isolated else "as a plain process"
+        stderr = self.output()[1].strip()
+        shown = f"\nits error output ends with:\n{stderr[-1500:]}" if stderr and stderr not in detail else ""
+        fix = ("Fix: reinstall the grader with its dependencies (`pip install -e .` in the project, or `pip install` "
+               "its wheel), then check the installation with `grade demo`.")
+        spec = importlib.util.find_spec(missing) if missing and self.python is None else None
+        if spec is not None and spec.origin:
+            where_installed = os.path.dirname(spec.origin)
+            if self.mode.isolated:
+                fix = (f"{missing} is installed for the grader ({where_installed}), but the sandbox does not show "
+                       "that folder: a defect of the grader, not of your installation. Please report it with the "
+                       f"output of `python -m pip show -f mbd-autograder {missing}`.")
+            else:
+                fix = (f"{missing} is installed for the grader ({where_installed}), but the worker's unprivileged "
+                       f"uid cannot read it. Fix: chmod -R o+rX {where_installed}")
+        return SandboxError(
+            f"grader installation fault: the worker that runs submissions cannot start {where}: {detail}{shown}\n"
+            f"Python: {self.python or sys.executable}. This is not the submission's fault; no grade was given.\n"
+            + fix
+        )
+
+    def _await_ready(self) -> None:
+        if self._ready:
+            return
+        deadline = self._spawned_at + self.limits.setup_timeout
+        try:
+            message = self._reader.read(deadline)
+        except protocol.Deadline:
+            self._kill()
+            raise self._setup_fault(f"it did not start within {self.limits.setup_timeout:g} s") from None
+        except (ValueError, RecursionError) as exc:
+            self._kill()
+            raise self._setup_fault(f"its first message could not be read: {exc}") from None
+        if message is None:
+            code = self._wait_exit(time.monotonic() + 5)
+            self._kill()
+            raise self._setup_fault(f"it ended (exit code {code}) before it was ready")
+        if not message.get("ok") or message.get("op") != "ready":
+            self._kill()
+            missing = message.get("missing") if isinstance(message.get("missing"), str) else None
+            raise self._setup_fault(str(message.get("message") or message)[:2000], missing)
+        self.info = message.get("info") if isinstance(message.get("info"), dict) else {}
+        self._ready = True
+
+    @property
+    def note(self) -> str:
+        """How the submission ran, for the report: the mode, and what the worker reported at start-up (before
+        any code of the submission ran)."""
+        if self.mode.isolated or not self.info:
+            return self.mode.note
+        parts = [self.mode.note]
+        landlock = self.info.get("landlock")
+        if landlock:
+            parts.append("Landlock let it read only the Python runtime and the submission and write only a "
+                         "private folder" + ("; it could not signal other processes" if landlock.get("signals")
+                                             else ""))
+        else:
+            parts.append("it could use every file its user may read or write (no Landlock in this kernel)")
+        if "network_isolated" in self.info and self.info["network_isolated"]:
+            parts.append("network isolated (a network namespace of its own)")
+        elif landlock and landlock.get("tcp"):
+            parts.append("TCP connections blocked (Landlock); the network was otherwise not isolated")
+        else:
+            parts.append("the network was NOT isolated")
+        return "; ".join(parts)
+
+    # ------------------------------------------------------------------ protocol
+
+    def _crash_detail(self, code) -> str:
+        if self.mode.isolated and code is not None and code > 128:
+            code = -(code - 128)  # bubblewrap reports a signal of its child as 128 + the signal
+        if code is not None and code < 0:
+            try:
+                name = signal.Signals(-code).name
+            except ValueError:
+                name = f"signal {-code}"
+            cause = {
+                "SIGKILL": "killed (a resource limit, e.g. memory or CPU time, or the grader's time-out)",
+                "SIGXCPU": "stopped by the CPU-time limit",
+                "SIGSEGV": "crashed (segmentation fault)",
+            }.get(name, f"stopped by {name}")
+            return f"the process running your code was {cause}"
+        return f"the process running your code ended unexpectedly with exit code {code} (did it call os._exit?)"
+
+    def _ended(self, deadline: float, phase: str) -> WorkerCrash:
+        """The worker closed its end of the reply pipe: wait (until the call's deadline) for it to end."""
+        code = self._wait_exit(deadline)
+        self._kill()
+        if code is None:
+            return WorkerCrash("the process running your code closed its connection to the grader and did not "
+                               "end; it was stopped at the time limit", phase)
+        return WorkerCrash(self._crash_detail(code), phase)
+
+    def _send(self, message: dict, timeout: float, phase: str, deadline: float | None = None) -> None:
+        deadline = time.monotonic() + timeout if deadline is None else deadline
+        try:
+            protocol.send_before(self._send_fd, message, deadline)
+        except protocol.Deadline:
+            self._kill()
+            raise StudentTimeout(timeout, phase) from None
+        except OSError:  # the worker closed its request pipe: it ended, or its code closed it
+            raise self._ended(deadline, phase) from None
+
+    def _request(self, message: dict | None, timeout: float, phase: str = "call") -> dict:
+        """Send ``message`` (None: only wait for the reply to the import request) and return the reply, all
+        before one deadline, ``timeout`` seconds from now."""
+        deadline = time.monotonic() + timeout
+        if message is not None:
+            self._next_id += 1
+            self._send(dict(message, id=self._next_id), timeout, phase, deadline)
+            expected = self._next_id
+        else:
+            expected = self._import_id
+        while True:
+            try:
+                reply = self._reader.read(deadline)
+            except protocol.Deadline:
+                self._kill()
+                raise StudentTimeout(timeout, phase) from None
+            except (ValueError, RecursionError) as exc:
+                self._kill()
+                raise StudentCodeError("bad_value", "ValueError", f"the answer could not be read: {exc}", "",
+                                       phase) from None
+            if reply is None:
+                raise self._ended(deadline, phase)
+            if reply.get("id") == expected:
+                break
+        if reply.get("ok"):
+            return reply
+        kind = str(reply.get("kind", "exception"))
+        if kind == "probe":
+            raise GraderFault(f"the worker could not run the probe {message and message.get('probe')!r}: "
+                              f"{reply.get('message', '')} (its copy of the probes differs from the grader's, or "
+                              "the submission tampered with them)")
+        raise StudentCodeError(
+            kind if kind in protocol.STUDENT_KINDS else "exception",
+            str(reply.get("type", "Exception")),
+            str(reply.get("message", "")),
+            str(reply.get("traceback", "")),
+            str(reply.get("phase", phase)),
+        )
+
+    def _ensure_imported(self) -> None:
+        if self._import_failure is not None:
+            raise self._import_failure
+        if self._proc is not None and not self._pending_import and self._exit_code() is not None:
+            self._kill()
+        if self._proc is None:
+            self._spawn()
+            self._send_import()
+        if not self._pending_import:
+            return
+        self._await_ready()
+        try:
+            self._pending_import = False
+            self._request(None, self.limits.import_timeout, phase="import")
+        except (StudentCodeError, StudentTimeout, WorkerCrash) as exc:
+            if exc.phase == "import" and not getattr(exc, "not_implemented", False):
+                self._import_failure = exc
+            raise
+
+    def call(self, probe, *args, timeout: float | None = None):
+        """Run ``probe`` (e.g. ``"problem_06.vectors"``) on the submission; return its decoded value."""
+        from probes._codec import decode, encode
+
+        name = probe_name(probe)
+        self._ensure_imported()
+        self.calls += 1
+        reply = self._request({"op": "call", "probe": name, "args": encode(list(args))},
+                              timeout or self.limits.call_timeout)
+        try:
+            return decode(reply.get("value"))
+        except (RecursionError, ValueError, TypeError) as exc:  # only a forged reply can be malformed
+            raise StudentCodeError("bad_value", type(exc).__name__, f"the answer could not be read: {exc}")
+
+    def output(self) -> tuple[str, str]:
+        """The tails of what the child printed on stdout and stderr."""
+
+        def tail(handle) -> str:
+            handle.flush()
+            size = handle.seek(0, os.SEEK_END)
+            handle.seek(max(0, size - OUTPUT_TAIL))
+            text = handle.read().decode("utf-8", "replace")
+            return ("…" + text) if size > OUTPUT_TAIL else text
+
+        return tail(self._output), tail(self._errors)
+
+
+def canary(limits: Limits | None = None, mode: SandboxMode | None = None, python: str | None = None) -> dict:
+    """Start one worker on an empty submission and wait until it is ready: the check of an installation that a
+    batch runs before grading anyone.  Returns what the worker reported; raises ``SandboxError``."""
+    with tempfile.TemporaryDirectory(prefix="grader-canary-") as empty:
+        os.chmod(empty, 0o755)
+        with Child(Path(empty), limits, mode, python) as child:
+            return child.ready()

@@ -1,0 +1,379 @@
+"""The child side of the grader: sets up its own confinement, imports its dependencies, then imports a submission
+and runs probes on it.
+
+This file runs inside the sandbox with the untrusted submission and must stay importable on its own: standard
+library only, plus ``protocol.py`` and the ``probes`` package, which the grader copies next to it.  It never sees
+the reference, the checks or the scoring code: it receives probe calls on a dedicated pipe and sends back plain
+data (see ``protocol`` for the messages).
+
+    python -I -B worker.py REQUEST_FD REPLY_FD SUBMISSION CONFIG_JSON
+
+Start-up, before any code of the submission runs: resource limits; as root, new network, IPC and UTS namespaces
+(where the kernel allows) and the switch to the unprivileged uid the grader claimed; then the imports of the
+dependencies (the probes package, numpy).  Only then does the worker say ready: a failure up to that point is a
+fault of the installation, never of the submission.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.util
+import json
+import os
+import sys
+import traceback
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+try:
+    from . import protocol
+except ImportError:  # run as a script from the runtime directory, next to protocol.py
+    import protocol  # type: ignore[no-redef]
+
+PACKAGE = "submission"
+RUNTIME = os.path.dirname(os.path.abspath(__file__))
+#: the grader's own packages: never importable here (the sandbox hides their files as well)
+BLOCKED = ("reference", "checks", "grader", "tests", "student_template", "tools")
+
+_codec = None  # probes._codec, imported at start-up
+
+
+# ---------------------------------------------------------------- replies
+
+
+def _student_traceback(exc: BaseException) -> str:
+    """The traceback restricted to frames of the submission."""
+    root = os.environ.get("GRADER_SUBMISSION", "")
+    frames = [f for f in traceback.extract_tb(exc.__traceback__) if root and f.filename.startswith(root)]
+    lines = traceback.format_list(frames[-8:])
+    lines += traceback.format_exception_only(type(exc), exc)
+    text = "".join(lines)
+    if root:
+        text = text.replace(root + os.sep, "")
+    return text[-4000:]
+
+
+def _error(req_id, kind: str, exc: BaseException, text: str | None = None) -> dict:
+    return {
+        "id": req_id,
+        "ok": False,
+        "kind": kind,
+        "type": type(exc).__name__,
+        "message": (str(exc) if text is None else text)[:2000],
+        "traceback": _student_traceback(exc),
+    }
+
+
+class ProbeLookupError(LookupError):
+    """The requested probe does not exist (or is not marked as one): a fault of the grader's checks."""
+
+
+def _raised_in_probes(exc: BaseException) -> bool:
+    """True when the innermost frame of ``exc`` is the grader's probe code, not the submission's."""
+    frames = traceback.extract_tb(exc.__traceback__)
+    probes_dir = os.path.join(RUNTIME, "probes") + os.sep
+    return bool(frames) and frames[-1].filename.startswith(probes_dir)
+
+
+# ---------------------------------------------------------------- the submission and the probes
+
+
+def _import_submission(path: str):
+    spec = importlib.util.spec_from_file_location(
+        PACKAGE, os.path.join(path, "__init__.py"), submodule_search_locations=[path]
+    )
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[PACKAGE] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def _probe(name: str):
+    module_name, _, func_name = str(name).rpartition(".")
+    if not module_name or not func_name:
+        raise ProbeLookupError(f"{name!r} does not name a probe (module.function)")
+    try:
+        probe_module = importlib.import_module(f"probes.{module_name}")
+    except ImportError as exc:
+        raise ProbeLookupError(f"the probe module probes.{module_name} cannot be imported: {exc}") from exc
+    probe = getattr(probe_module, func_name, None)
+    if probe is None or not getattr(probe, "is_probe", False):
+        raise ProbeLookupError(f"probes.{module_name} has no probe {func_name!r}")
+    return probe
+
+
+def _handle(request: dict, package, submission: str):
+    """The reply to ``request`` and the (possibly just imported) package."""
+    req_id = request.get("id")
+    phase = "import" if package is None else "call"
+    op = request.get("op")
+    try:
+        if op == "import":
+            package = _import_submission(submission)
+            reply = {"id": req_id, "ok": True, "value": None}
+        elif op == "call":
+            try:
+                probe = _probe(request.get("probe", ""))
+                args = _codec.decode(request.get("args", []))
+            except ProbeLookupError as exc:
+                return _error(req_id, "probe", exc), package
+            if package is None:
+                package = _import_submission(submission)
+            phase = "call"
+            value = probe(package, *args)
+            try:
+                reply = {"id": req_id, "ok": True, "value": _codec.encode(value)}
+            except (TypeError, ValueError) as exc:
+                reply = _error(req_id, "bad_value", exc)
+        else:
+            reply = _error(req_id, "probe", ValueError(f"unknown operation {op!r}"))
+    except NotImplementedError as exc:
+        reply = _error(req_id, "not_implemented", exc)
+    except SystemExit as exc:
+        reply = _error(req_id, "exit", exc)
+    except ImportError as exc:
+        # a probe importing a dependency the sandbox lacks is the installation's fault; the submission's own
+        # imports are the student's
+        kind = "probe" if _raised_in_probes(exc) else "exception"
+        reply = _error(req_id, kind, exc)
+    except BaseException as exc:  # noqa: BLE001 - every failure of student code is reported, not raised
+        reply = _error(req_id, "exception", exc)
+    reply["phase"] = phase
+    return reply, package
+
+
+def serve(request_fd: int, reply_fd: int, submission: str) -> int:
+    package = None
+    while True:
+        request = protocol.read_message(request_fd)
+        if request is None or request.get("op") == "exit":
+            return 0
+        reply, package = _handle(request, package, submission)
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+        try:
+            protocol.write_message(reply_fd, reply)
+        except protocol.ProtocolError as exc:  # a value too large to send
+            protocol.write_message(reply_fd, dict(_error(reply.get("id"), "bad_value", exc), phase=reply["phase"]))
+
+
+# ---------------------------------------------------------------- confinement
+
+
+def _libc():
+    import ctypes
+
+    return ctypes.CDLL(None, use_errno=True)
+
+
+def _die_with_parent(libc) -> None:
+    """Ask the kernel to kill this process when the grader that started it dies (Linux prctl)."""
+    import signal
+
+    PR_SET_PDEATHSIG = 1
+    libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+
+
+def _unshare_network(libc) -> bool:
+    """New network, IPC and UTS namespaces: no interface but a loopback of its own (needs root)."""
+    CLONE_NEWNET, CLONE_NEWIPC, CLONE_NEWUTS = 0x40000000, 0x08000000, 0x04000000
+    return libc.unshare(CLONE_NEWNET | CLONE_NEWIPC | CLONE_NEWUTS) == 0
+
+
+def _apply_limits(limits: dict, uid: int | None) -> None:
+    import resource
+    import signal
+
+    names = {
+        "memory": resource.RLIMIT_AS,
+        "cpu": resource.RLIMIT_CPU,
+        "file_size": resource.RLIMIT_FSIZE,
+        "processes": resource.RLIMIT_NPROC,
+        "core": resource.RLIMIT_CORE,
+    }
+    for key, value in limits.items():
+        if key in names and value is not None:
+            if key == "processes" and uid is None:
+                continue  # counted per user: only meaningful for a dedicated uid
+            resource.setrlimit(names[key], (value, value))
+    # Writes beyond the file-size limit fail with an OSError instead of killing the process.
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+
+
+# Landlock (Linux 5.13+): the kernel restricts which files this process and its children may use, for any uid.
+_FS_EXECUTE, _FS_WRITE_FILE, _FS_READ_FILE, _FS_READ_DIR = 1 << 0, 1 << 1, 1 << 2, 1 << 3
+_FS_TRUNCATE, _FS_IOCTL_DEV = 1 << 14, 1 << 15
+_FS_READ = _FS_EXECUTE | _FS_READ_FILE | _FS_READ_DIR
+_FILE_RIGHTS = _FS_EXECUTE | _FS_WRITE_FILE | _FS_READ_FILE | _FS_TRUNCATE | _FS_IOCTL_DEV
+_SYS_CREATE_RULESET, _SYS_ADD_RULE, _SYS_RESTRICT_SELF = 444, 445, 446
+_PR_SET_NO_NEW_PRIVS = 38
+
+
+def _readable_rules(roots: list[str], hidden: list[str]) -> list[tuple[str, int]]:
+    """Read rights on ``roots``, except below the ``hidden`` paths: a root that holds a hidden path may be listed,
+    and each of its entries is granted on its own (recursively where a hidden path lies deeper)."""
+    rules: list[tuple[str, int]] = []
+    hidden = [os.path.realpath(h) for h in hidden]
+    seen: set[str] = set()
+
+    def inside(path: str, base: str) -> bool:
+        return path == base or path.startswith(base.rstrip("/") + "/")
+
+    def grant(path: str) -> None:
+        path = os.path.realpath(path)  # a rule holds for the inode: a symbolic link grants its target
+        if path in seen or any(inside(path, h) for h in hidden):
+            return
+        seen.add(path)
+        deeper = [h for h in hidden if inside(h, path) and h != path]
+        if not deeper:
+            rules.append((path, _FS_READ))
+            return
+        rules.append((path, _FS_READ_DIR))
+        try:
+            entries = sorted(os.listdir(path))
+        except OSError:
+            return
+        for name in entries:
+            grant(os.path.join(path, name))
+
+    for root in roots:
+        if os.path.exists(root):
+            grant(root)
+    return rules
+
+
+def _landlock(rules: dict, libc) -> dict | None:
+    """Restrict this process (and what it starts) to reading ``rules["read"]`` (minus ``rules["hidden"]``),
+    writing ``rules["write"]`` and the ``rules["devices"]``; no TCP and no signals outside (where the kernel's
+    Landlock knows these).  None where the kernel has no Landlock."""
+    import ctypes
+
+    syscall = libc.syscall
+    syscall.restype = ctypes.c_long
+    abi = syscall(ctypes.c_long(_SYS_CREATE_RULESET), None, ctypes.c_size_t(0), ctypes.c_uint32(1))
+    if abi < 1:
+        return None
+    handled = (1 << 13) - 1 | (1 << 13 if abi >= 2 else 0) | (_FS_TRUNCATE if abi >= 3 else 0) | \
+        (_FS_IOCTL_DEV if abi >= 5 else 0)
+
+    class RulesetAttr(ctypes.Structure):
+        _fields_ = [("fs", ctypes.c_uint64), ("net", ctypes.c_uint64), ("scoped", ctypes.c_uint64)]
+
+    class PathBeneath(ctypes.Structure):
+        _pack_ = 1
+        _fields_ = [("allowed", ctypes.c_uint64), ("parent_fd", ctypes.c_int32)]
+
+    attr = RulesetAttr(handled, 0b11 if abi >= 4 else 0, 0b11 if abi >= 6 else 0)
+    size = 8 if abi < 4 else 16 if abi < 6 else 24
+    ruleset = syscall(ctypes.c_long(_SYS_CREATE_RULESET), ctypes.byref(attr), ctypes.c_size_t(size),
+                      ctypes.c_uint32(0))
+    if ruleset < 0:
+        raise OSError(ctypes.get_errno(), "landlock_create_ruleset failed")
+    try:
+        grants = _readable_rules(rules.get("read", []), rules.get("hidden", []))
+        grants += [(path, handled) for path in rules.get("write", [])]
+        grants += [(path, _FS_READ_FILE | _FS_WRITE_FILE) for path in rules.get("devices", [])]
+        for path, access in grants:
+            try:
+                fd = os.open(path, os.O_PATH | os.O_CLOEXEC)
+            except OSError:
+                continue
+            try:
+                if not os.path.isdir(path):
+                    access &= _FILE_RIGHTS
+                rule = PathBeneath(access & handled, fd)
+                if syscall(ctypes.c_long(_SYS_ADD_RULE), ctypes.c_int(ruleset), ctypes.c_int(1), ctypes.byref(rule),
+                           ctypes.c_uint32(0)) != 0:
+                    raise OSError(ctypes.get_errno(), f"landlock_add_rule failed for {path}")
+            finally:
+                os.close(fd)
+        if libc.prctl(_PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0:
+            raise OSError(ctypes.get_errno(), "PR_SET_NO_NEW_PRIVS failed")
+        if syscall(ctypes.c_long(_SYS_RESTRICT_SELF), ctypes.c_int(ruleset), ctypes.c_uint32(0)) != 0:
+            raise OSError(ctypes.get_errno(), "landlock_restrict_self failed")
+    finally:
+        os.close(ruleset)
+    return {"abi": abi, "files": True, "tcp": abi >= 4, "signals": abi >= 6}
+
+
+def _drop_privileges(uid: int) -> None:
+    os.setgroups([])
+    os.setgid(uid)
+    os.setuid(uid)
+    if os.geteuid() != uid or os.getuid() != uid:
+        raise OSError(f"could not switch to uid {uid}")
+    try:
+        os.setuid(0)
+    except PermissionError:
+        return
+    raise OSError("root privileges could be regained after dropping them")
+
+
+def confine(config: dict) -> dict:
+    """Everything that happens before the submission is imported; returns facts for the grader's report."""
+    info: dict = {"python": sys.executable, "version": sys.version.split()[0]}
+    uid = config.get("uid")
+    _apply_limits(config.get("limits", {}), uid)
+    libc = _libc()
+    _die_with_parent(libc)
+    if config.get("unshare_network") and os.geteuid() == 0:
+        info["network_isolated"] = _unshare_network(libc)
+    if uid is not None and os.geteuid() == 0:
+        _drop_privileges(uid)
+    elif os.geteuid() == 0:
+        raise OSError("the worker runs as root and was given no uid to switch to")
+    info["uid"] = os.getuid()
+    if config.get("landlock"):
+        info["landlock"] = _landlock(config["landlock"], libc)
+    return info
+
+
+def _import_dependencies(required: list[str]) -> None:
+    """Import what the probes need, so that a missing dependency shows now and not as the student's error."""
+    global _codec
+    importlib.import_module("probes")
+    _codec = importlib.import_module("probes._codec")
+    numpy = importlib.import_module("numpy")
+    if getattr(numpy, "__file__", None) is None:  # an empty folder of that name: not numpy
+        raise ModuleNotFoundError("No module named 'numpy' (only an empty folder of that name)", name="numpy")
+    missing = [name for name in required if getattr(importlib.util.find_spec(name), "origin", None) is None]
+    if missing:
+        raise ModuleNotFoundError(f"No module named {missing[0]!r} (missing: {', '.join(missing)})", name=missing[0])
+
+
+class _BlockTrustedPackages:
+    """Refuses imports of the grader's trusted packages."""
+
+    def find_spec(self, name, path=None, target=None):
+        if name.split(".")[0] in BLOCKED:
+            raise ModuleNotFoundError(f"No module named {name!r}", name=name)
+        return None
+
+
+def main(argv: list[str]) -> int:
+    request_fd, reply_fd = int(argv[1]), int(argv[2])
+    submission = argv[3]
+    config = json.loads(argv[4]) if len(argv) > 4 else {}
+    sys.stdin.close()
+    try:
+        info = confine(config)
+        _import_dependencies(config.get("require", []))
+    except BaseException as exc:  # noqa: BLE001 - reported to the grader as a fault of the set-up
+        reply = _error(0, "setup", exc, f"{type(exc).__name__}: {exc}")
+        reply["missing"] = getattr(exc, "name", None) if isinstance(exc, ImportError) else None
+        protocol.write_message(reply_fd, reply)
+        return 70
+    sys.meta_path.insert(0, _BlockTrustedPackages())
+    for name in [m for m in sys.modules if m.split(".")[0] in BLOCKED]:
+        del sys.modules[name]
+    os.environ["GRADER_SUBMISSION"] = submission
+    sys.setrecursionlimit(3000)
+    protocol.write_message(reply_fd, {"id": 0, "ok": True, "op": "ready", "info": info})
+    return serve(request_fd, reply_fd, submission)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
