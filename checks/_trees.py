@@ -72,7 +72,8 @@ _SEEDS = st.integers(0, 2**32 - 1)
 
 def rotation(rng):
     """A random rotation matrix (uniformly distributed): the rotation of a random unit quaternion."""
-    w, x, y, z = (quaternion := rng.normal(size=4)) / np.linalg.norm(quaternion)
+    quaternion = rng.normal(size=4)
+    w, x, y, z = quaternion / np.linalg.norm(quaternion)
     return np.array([
         [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],

@@ -119,10 +119,10 @@ def _x_mistakes(ctx, alpha, gamma, target):
        "0.3018, -0.5236, 0.9051, 0.3518, 0.5236)", stage=STAGE_VALUES, group="sheet")
 def check_sheet_values(ctx):
     case = _walker(ctx)
-    ALPHA_C, GAMMA_C = case["alpha_c"], case["gamma_c"]
-    mistakes = _x_mistakes(ctx, ALPHA_C, GAMMA_C, SHEET_X)
-    got = ctx.student("problem_25.walker", ALPHA_C, GAMMA_C)
-    expected = ctx.reference("problem_25.walker", ALPHA_C, GAMMA_C)
+    alpha, gamma = case["alpha_c"], case["gamma_c"]
+    mistakes = _x_mistakes(ctx, alpha, gamma, SHEET_X)
+    got = ctx.student("problem_25.walker", alpha, gamma)
+    expected = ctx.reference("problem_25.walker", alpha, gamma)
     drawing = configuration_figure("Problem 25: the walker at alpha = -30 deg, gamma = +60 deg", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
