@@ -4,6 +4,8 @@ import difflib
 
 from grader.checking import fail
 
+__all__ = ["text_lines", "answer_text", "assert_same_text", "EXAMPLE", "diagram_pairs", "assert_same_diagram"]
+
 
 def text_lines(text, caseless=()):
     """The lines of ``text`` as they are compared: stripped, blank lines dropped, and a line equal to one of
@@ -43,6 +45,8 @@ def assert_same_text(got, expected, name, caseless=(), mistakes=(), order_hint="
     printed the answer could be copied on the next attempt).  A
     ``Mistake`` whose value is the text that mistake produces (or a predicate ``value(got_lines,
     expected_lines)``) names the diagnosis, and lines in a wrong order are recognised as ``order``."""
+    if not isinstance(got, str):
+        fail(f"{name} must be text, got a value of type {type(got).__name__}: {str(got)[:200]}", diagnosis="format")
     mine, theirs = text_lines(got, caseless), text_lines(expected, caseless)
     if mine == theirs:
         return

@@ -1,11 +1,19 @@
-"""Shared by the checks of problems 21, 22, 26 and 27: strategies for planar arms, the arm with a known mistake
-switched on, and diagnoses of Jacobians (swapped columns, sign flips)."""
+"""Shared by the checks of problems 21, 22, 26 and 27: strategies for planar arms, the known mistakes of the arm
+(asked of the reference through the probe ``problem_21.mistakes``), and diagnoses of Jacobians (swapped columns,
+sign flips)."""
 
 from itertools import combinations
+
 import numpy as np
 from hypothesis import strategies as st
+
 from grader.checking import EXACT, Mistake, Tol, assert_close
 
+__all__ = [
+    "FINITE", "LENGTHS", "ANGLES", "LINKS", "CASES", "SIZES", "H", "CENTRAL_DIFFERENCES", "CONFIGURATIONS", "FD_LINK",
+    "DEGREES_HINT", "HORIZONTAL_HINT", "SIGN_HINT", "JACOBIAN_SIGN_HINT", "as_degrees", "swapped_columns",
+    "sign_flips", "_chain_mistakes", "_jacobian_reference_mistakes", "_describe", "_strategy", "_compare_chain",
+]
 
 FINITE = dict(allow_nan=False, allow_infinity=False)
 LENGTHS = st.floats(0.05, 1.0, **FINITE)
@@ -41,56 +49,9 @@ JACOBIAN_SIGN_HINT = ("Remember d/dq cos(q) = -sin(q), d/dq sin(q) = +cos(q), an
 # ------------------------------------------------------------------------------------ mistaken arms
 
 
-def direction(gamma, mistake=None):
-    """Unit vector of a segment of orientation ``gamma``, as the sheet defines it or as a mistake reads it."""
-    if mistake in ("horizontal", "horizontal_all"):
-        return np.array([np.cos(gamma), np.sin(gamma)])
-    return np.array([-np.sin(gamma), np.cos(gamma)])
-
-
-def walk(q, d, mistake=None):
-    """The arm of problems 21 and 22 with ``mistake`` applied: ``(points, end)``, ``points[k-1] = (x_k, y_k,
-    g_{k-1}, g_k)`` for ``k = 1..n`` and ``end = (xe, ye, g_n)``.  Complex ``q`` is kept (complex-step derivatives).
-
-    Mistakes: ``degrees`` (radians read as degrees), ``horizontal`` (segments along (cos g, sin g) after the
-    vertical first one), ``horizontal_all`` (every segment along (cos g, sin g)), ``horizontal_offset`` (right
-    positions, orientations from the horizontal: +90 deg), ``joint_order`` (each segment after its own rotation),
-    ``no_final_link`` (d left out).
-    """
-    pairs = np.asarray(q).reshape(-1, 2)
-    if mistake == "degrees":
-        pairs = pairs * np.array([1.0, np.pi / 180.0])
-    offset = np.pi / 2 if mistake == "horizontal_offset" else 0.0
-    point, gamma, points = np.zeros(2), 0.0, []
-    for k, (length, turn) in enumerate(pairs):
-        before = gamma
-        if mistake == "joint_order":
-            gamma = gamma + turn
-        along = np.array([0.0, 1.0]) if k == 0 and mistake == "horizontal" else direction(gamma, mistake)
-        point = point + length * along
-        if mistake != "joint_order":
-            gamma = gamma + turn
-        points.append(np.array([*point, before + offset, gamma + offset]))
-    link = 0.0 if mistake == "no_final_link" else d
-    return points, np.array([*(point + link * direction(gamma, mistake)), gamma + offset])
-
-
 def as_degrees(q):
     """``q`` with its angles (q2, q4, ...) read as degrees."""
     return np.asarray(q, dtype=float) * np.tile([1.0, np.pi / 180.0], len(q) // 2)
-
-
-def layout(q, d, mistake=None):
-    """``x_a`` / ``x_b`` of problem 21: each point with the orientation of the segment arriving there, then the end
-    effector."""
-    points, end = walk(q, d, mistake)
-    return np.concatenate([*(p[:3] for p in points), end])
-
-
-def complex_step(f, q):
-    """Jacobian of ``f`` at ``q`` by complex steps (exact to rounding)."""
-    q = np.asarray(q, dtype=float)
-    return np.column_stack([np.imag(f(q + 1e-30j * e)) / 1e-30 for e in np.eye(q.size)])
 
 
 def swapped_columns(J, names=None):
@@ -126,25 +87,25 @@ def sign_flips(got, expected, tol, hint):
                     f"The entries {entries} have the wrong sign. {hint}")]
 
 
-def _chain_mistakes(q, d):
-    """Modelled mistakes of the constraint function (a sign flip is found from the student's value)."""
+def _chain_mistakes(ctx, q, d):
+    """Modelled mistakes of the constraint function, asked of the reference (a sign flip is found from the
+    student's value)."""
+    found = ctx.reference("problem_21.mistakes", q, d)["chain"]
     return [
-        Mistake("degrees", layout(q, d, "degrees"), DEGREES_HINT),
-        Mistake("horizontal", layout(q, d, "horizontal_offset"), HORIZONTAL_HINT
+        Mistake("degrees", found["degrees"], DEGREES_HINT),
+        Mistake("horizontal", found["horizontal_offset"], HORIZONTAL_HINT
                 + " Your positions are right but every orientation is 90 deg too large."),
-        Mistake("horizontal", layout(q, d, "horizontal"), HORIZONTAL_HINT),
+        Mistake("horizontal", found["horizontal"], HORIZONTAL_HINT),
     ]
 
 
-def _jacobian_reference_mistakes(case, q, d, expected):
-    from reference import planar
-
-    analytic = planar.jacobian_a if case == "a" else planar.jacobian_b
+def _jacobian_reference_mistakes(ctx, case, q, d, expected):
+    found = ctx.reference("problem_21.mistakes", q, d)["jacobian"]
     return [
         *swapped_columns(expected),
-        Mistake("degrees", analytic(as_degrees(q), d), DEGREES_HINT),
-        Mistake("degrees", complex_step(lambda p: layout(p, d, "degrees"), q), DEGREES_HINT),
-        Mistake("horizontal", complex_step(lambda p: layout(p, d, "horizontal"), q), HORIZONTAL_HINT),
+        Mistake("degrees", ctx.reference("problem_21.jacobian", case, as_degrees(q), d), DEGREES_HINT),
+        Mistake("degrees", found["degrees"], DEGREES_HINT),
+        Mistake("horizontal", found["horizontal"], HORIZONTAL_HINT),
     ]
 
 
@@ -161,7 +122,7 @@ def _strategy(case):
 
 def _compare_chain(ctx, case):
     def compare(got, expected, args):
-        mistakes = _chain_mistakes(args[1], args[2]) + sign_flips(got, expected, EXACT, SIGN_HINT)
+        mistakes = _chain_mistakes(ctx, args[1], args[2]) + sign_flips(got, expected, EXACT, SIGN_HINT)
         assert_close(got, expected, f"chain_{case}(q, d)", EXACT, mistakes)
 
     ctx.compare_random("problem_21.chain", _strategy(case), name=f"chain_{case}(q, d)", tol=EXACT, compare=compare,

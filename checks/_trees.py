@@ -1,18 +1,17 @@
 """Shared checks of the kinematic-tree problems (24, 25, 31-35).
 
-* Random trees as plain data (``trees``, ``cases``): random joint types, parents, offsets, joint-frame orientations,
-  coordinate numbering, ``q``, ``qd``, ``qdd``.  The probe builds the same description with the student's classes
-  and, in the grader, with the reference's.
-* Mistaken copies of the reference recursion (``Model``, ``MODELS``): the reference's formulas with one known
-  mistake switched on, built from the same description, give the value a student with that mistake computes.
+* Random trees as plain data (``trees``, ``cases``): random joint types, parents, offsets, joint-frame orientations
+  (rotations from random unit quaternions), coordinate numbering, ``q``, ``qd``, ``qdd``.  The probe builds the same
+  description with the student's classes and, in the grader, with the reference's.
+* Known mistakes (``Model``, ``MODELS``): switches of the reference's recursion, joint types with a mistake, or an
+  edit of the tree's description.  ``candidates`` asks the reference (probe ``_trees.mistaken_states``) for the
+  state a student with each mistake computes on a case, eagerly, from the case alone.
 * ``compare_states`` names the first body, in recursion order from the root, and the first quantity where the
   student's kinematics depart from the reference; ``compare_jacobians`` and ``compare_path`` check the student's
   Jacobians, velocities and accelerations against finite differences of the student's own kinematics.
 """
 
-import functools
 from dataclasses import dataclass
-from types import SimpleNamespace
 
 import numpy as np
 from hypothesis import strategies as st
@@ -31,25 +30,25 @@ from grader.checking import (
     format_array,
 )
 from probes import _trees as probe_trees
-from reference.rotations import cardan, skew
+
+from ._shapes import as_dict, as_list
 
 __all__ = [
     "H",
     "DIFFERENCES",
     "ORDER",
+    "rotation",
     "trees",
     "cases",
     "rich_case",
     "compare_fixed",
     "compare_trees",
     "describe_case",
-    "describe_tree",
-    "RollingWrongWay",
     "Model",
     "MODELS",
-    "mistaken_state",
     "candidates",
     "bodies_of",
+    "bodies_list",
     "compare_states",
     "tree_comparison",
     "compare_jacobians",
@@ -71,6 +70,17 @@ NQ = {"rotational": 1, "translational": 1, "rolling_contact": 1, "virtual_3dof":
 _SEEDS = st.integers(0, 2**32 - 1)
 
 
+def rotation(rng):
+    """A random rotation matrix (uniformly distributed): the rotation of a random unit quaternion."""
+    quaternion = rng.normal(size=4)
+    w, x, y, z = quaternion / np.linalg.norm(quaternion)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ])
+
+
 def _geometry(seed, kind, nq):
     """A joint's offsets and frames (with ``r``, or ``c`` and ``U``, for its kind) and its successor's mass from
     ``seed``; seed 0 gives the plainest joint: no offsets, aligned frames."""
@@ -79,8 +89,8 @@ def _geometry(seed, kind, nq):
         r, c, U, m = 0.5, np.eye(1, nq).ravel(), np.eye(3, nq, 1), 1.0
     else:
         rng = np.random.default_rng(seed)
-        joint = {"P_r_PDp": rng.uniform(-1, 1, 3), "A_PDp": cardan(*rng.uniform(-np.pi, np.pi, 3)),
-                 "S_r_SDs": rng.uniform(-1, 1, 3), "A_SDs": cardan(*rng.uniform(-np.pi, np.pi, 3))}
+        joint = {"P_r_PDp": rng.uniform(-1, 1, 3), "A_PDp": rotation(rng), "S_r_SDs": rng.uniform(-1, 1, 3),
+                 "A_SDs": rotation(rng)}
         r, c, U, m = rng.uniform(0.1, 1.0), rng.uniform(-1.5, 1.5, nq), rng.uniform(-1, 1, (3, nq)), rng.uniform(0.1, 5)
     if kind == "rolling_contact":
         joint["r"] = float(r)
@@ -138,8 +148,7 @@ def rich_case(kinds, motion=True, masses=False, extra=(), seed=24):
     joints, sizes = [], []
     for k, kind in enumerate(sequence):
         joint = {"kind": kind, "parent": 1 if k == len(sequence) - 1 else k, "P_r_PDp": rng.uniform(-1, 1, 3),
-                 "A_PDp": cardan(*rng.uniform(-np.pi, np.pi, 3)), "S_r_SDs": rng.uniform(-1, 1, 3),
-                 "A_SDs": cardan(*rng.uniform(-np.pi, np.pi, 3))}
+                 "A_PDp": rotation(rng), "S_r_SDs": rng.uniform(-1, 1, 3), "A_SDs": rotation(rng)}
         nq = NQ.get(kind, 2)
         if kind == "rolling_contact":
             joint["r"] = 0.4
@@ -180,10 +189,10 @@ def _compact(a):
     a = np.asarray(a, dtype=float)
     if a.shape == (3, 3) and np.allclose(a, np.eye(3)):
         return "E"
-    if a.shape == (3, 3) and np.allclose(a.T @ a, np.eye(3)) and abs(a[2, 0]) < 1.0:
+    if a.shape == (3, 3) and np.allclose(a.T @ a, np.eye(3)) and np.linalg.det(a) > 0 and abs(a[2, 0]) < 1.0:
+        # a proper rotation with cos(beta) != 0 has exactly these Cardan angles
         angles = np.arctan2(a[2, 1], a[2, 2]), -np.arcsin(a[2, 0]), np.arctan2(a[1, 0], a[0, 0])
-        if np.allclose(cardan(*angles), a):
-            return "cardan({:.4f}, {:.4f}, {:.4f})".format(*angles)
+        return "cardan({:.4f}, {:.4f}, {:.4f})".format(*angles)
     return " ".join(format_array(a).split())
 
 
@@ -213,175 +222,44 @@ def describe_case(args):
     return "\n".join(lines)
 
 
-def describe_tree(tree):
-    """The plain-data description of a reference ``KinematicTree``."""
-    from reference import tree as reference_tree
-
-    kinds = {getattr(reference_tree, name): kind for kind, name in probe_trees.CLASSES.items()}
-    index = {id(body): k for k, body in enumerate(tree.bodies)}
-    joints = []
-    for body in tree.bodies[1:]:
-        joint = body.parent_joint
-        entry = {"kind": kinds[type(joint)], "parent": index[id(joint.predecessor)],
-                 "q_index": [int(i) for i in joint.q_index], "P_r_PDp": joint.P_r_PDp.copy(),
-                 "A_PDp": joint.A_PDp.copy(), "S_r_SDs": joint.S_r_SDs.copy(), "A_SDs": joint.A_SDs.copy()}
-        if entry["kind"] == "rolling_contact":
-            entry["r"] = joint.r
-        joints.append(entry)
-    return {"bodies": [{"name": body.name, "m": body.m} for body in tree.bodies], "joints": joints}
-
-
-# ------------------------------------------------------------------------------------------ mistaken copies
-
-
-def _pose(joint, A_DpDs, r_rel, transpose=False, ds_transpose=False, reverse="", offset_sign=-1.0,
-          offset_in_dp=False):
-    """``Joint.successor_pose`` of the reference with a mistake switched on (``reverse``: "all" products or the
-    "joint" rotation's product in the wrong order)."""
-    P = joint.predecessor
-    A_PDp = joint.A_PDp.T if transpose else joint.A_PDp
-    A_SDs = joint.A_SDs.T if ds_transpose else joint.A_SDs
-    if reverse == "all":
-        A_IS = A_SDs.T @ A_DpDs @ A_PDp @ P.A_IB
-    elif reverse == "joint":
-        A_IS = A_DpDs @ P.A_IB @ A_PDp @ A_SDs.T
-    else:
-        A_IS = P.A_IB @ A_PDp @ A_DpDs @ A_SDs.T
-    Dp_r_IDp = A_PDp.T @ P.B_r_IB + joint.P_r_PDp if offset_in_dp else A_PDp.T @ (P.B_r_IB + joint.P_r_PDp)
-    return A_IS, A_SDs @ (A_DpDs.T @ (Dp_r_IDp + r_rel)) + offset_sign * joint.S_r_SDs
-
-
-def _motion(joint, A_DpDs, r_rel, rel, transpose=False, coriolis=2.0, transport=1.0, centripetal_dp=1.0,
-            centripetal_ds=1.0, offset_sign=-1.0):
-    """``Joint.successor_motion`` of the reference with a mistake switched on."""
-    P = joint.predecessor
-    A_DpP = joint.A_PDp if transpose else joint.A_PDp.T
-    P_Om, P_dOm = skew(P.B_omega_B), skew(P.B_omegaDot_B)
-    Dp_omega, Dp_omegaDot = A_DpP @ P.B_omega_B, A_DpP @ P.B_omegaDot_B
-    Dp_v = A_DpP @ (P.B_v_B + P_Om @ joint.P_r_PDp)
-    Dp_a = A_DpP @ (P.B_a_B + (P_dOm + centripetal_dp * P_Om @ P_Om) @ joint.P_r_PDp)
-    Om, dOm = skew(Dp_omega), skew(Dp_omegaDot)
-    A_DsDp = A_DpDs.T
-    Ds_omega = A_DsDp @ (Dp_omega + rel.omega_rel)
-    Ds_v = A_DsDp @ (Dp_v + rel.r_rel_dot + Om @ r_rel)
-    Ds_omegaDot = A_DsDp @ (Dp_omegaDot + rel.omega_rel_dot + transport * Om @ rel.omega_rel)
-    Ds_a = A_DsDp @ (Dp_a + rel.r_rel_ddot + coriolis * Om @ rel.r_rel_dot + (dOm + Om @ Om) @ r_rel)
-    S_omega, S_omegaDot = joint.A_SDs @ Ds_omega, joint.A_SDs @ Ds_omegaDot
-    S_Om, S_dOm = skew(S_omega), skew(S_omegaDot)
-    S_v = joint.A_SDs @ Ds_v + offset_sign * S_Om @ joint.S_r_SDs
-    S_a = joint.A_SDs @ Ds_a + offset_sign * (S_dOm + centripetal_ds * S_Om @ S_Om) @ joint.S_r_SDs
-    return S_v, S_omega, S_a, S_omegaDot
-
-
-def _jacobians(joint, A_DpDs, r_rel, rel, transpose=False, shift=0, lever=1.0, offset_sign=-1.0):
-    """``Joint.successor_jacobians`` of the reference with a mistake switched on."""
-    P = joint.predecessor
-    nq = P.B_J_S.shape[1]
-    columns = (joint.q_index + shift) % nq
-    S, R = np.zeros((3, nq)), np.zeros((3, nq))
-    S[:, columns], R[:, columns] = rel.S, rel.R
-    A_PDp = joint.A_PDp.T if transpose else joint.A_PDp
-    A_SP = (A_PDp @ A_DpDs @ joint.A_SDs.T).T
-    S_J_R = A_SP @ (P.B_J_R + A_PDp @ R)
-    arm = lever * skew(joint.P_r_PDp + A_PDp @ r_rel)
-    S_J_S = A_SP @ (P.B_J_S + A_PDp @ S - arm @ P.B_J_R) - offset_sign * skew(joint.S_r_SDs) @ S_J_R
-    return S_J_S, S_J_R
-
-
-class _Mistaken:
-    """Generic recursion of the reference with the mistake's switches (class attributes of a subclass)."""
-
-    mistake_pose = mistake_motion = mistake_jacobians = {}
-
-    def successor_pose(self, A_DpDs, Dp_r_DpDs):
-        return _pose(self, A_DpDs, Dp_r_DpDs, **self.mistake_pose)
-
-    def successor_motion(self, A_DpDs, Dp_r_DpDs, rel):
-        return _motion(self, A_DpDs, Dp_r_DpDs, rel, **self.mistake_motion)
-
-    def successor_jacobians(self, A_DpDs, Dp_r_DpDs, rel):
-        return _jacobians(self, A_DpDs, Dp_r_DpDs, rel, **self.mistake_jacobians)
-
-
-class _RotationalSign:
-    """A rotational joint turning the wrong way: ``A_DpDs = R3(-gamma)``."""
-
-    def joint_pose(self, q):
-        A_DpDs, r_rel = super().joint_pose(q)
-        return A_DpDs.T, r_rel
-
-    def joint_motion(self, q, qd, qdd):
-        rel = super().joint_motion(q, qd, qdd)
-        return rel._replace(omega_rel=-rel.omega_rel, omega_rel_dot=-rel.omega_rel_dot, R=-rel.R)
-
-
-class _RollingMotionSign:
-    """A rolling contact whose relative motion has the wrong sign: ``S = (+r, 0, 0)``."""
-
-    def joint_motion(self, q, qd, qdd):
-        rel = super().joint_motion(q, qd, qdd)
-        return rel._replace(r_rel_dot=-rel.r_rel_dot, r_rel_ddot=-rel.r_rel_ddot, S=-rel.S)
-
-
-class RollingWrongWay(_RollingMotionSign):
-    """A rolling contact moving the wrong way: ``Dp_r_DpDs = (+r gamma, 0, 0)``."""
-
-    def joint_pose(self, q):
-        A_DpDs, r_rel = super().joint_pose(q)
-        return A_DpDs, -r_rel
-
-
-class _VirtualOrder:
-    """A virtual 3-DOF joint read as ``q = (gamma, dx, dy)``."""
-
-    def joint_pose(self, q):
-        return super().joint_pose(np.asarray(q)[[1, 2, 0]])
-
-    def joint_motion(self, q, qd, qdd):
-        order = [1, 2, 0]
-        rel = super().joint_motion(np.asarray(q)[order], np.asarray(qd)[order], np.asarray(qdd)[order])
-        return rel._replace(S=rel.S[:, [2, 0, 1]], R=rel.R[:, [2, 0, 1]])
+# ------------------------------------------------------------------------------------------ known mistakes
 
 
 @dataclass(frozen=True)
 class Model:
-    """A known mistake: switches of the generic recursion (``pose``, ``motion``, ``jacobians``: pairs of keyword
-    arguments of ``_pose``, ``_motion``, ``_jacobians``), joint-type mixins (``joints``: pairs of kind and mixin),
-    or an ``edit`` of the tree's description."""
+    """A known mistake: switches of the reference's generic recursion (``pose``, ``motion``, ``jacobians``: pairs
+    of keyword arguments of its mistaken ``successor_pose``, ``successor_motion``, ``successor_jacobians``), a joint
+    type with a mistake (``joint``: a name of the reference's joint mistakes), or an ``edit`` of the tree's
+    description (computed with the correct recursion)."""
 
     name: str
     hint: str
     pose: tuple = ()
     motion: tuple = ()
     jacobians: tuple = ()
-    joints: tuple = ()
+    joint: str = ""
     edit: object = None
 
 
-@functools.lru_cache(maxsize=None)
-def _namespace(model):
-    """A stand-in for the ``tree`` module whose joint classes carry the model's mistake."""
-    from reference import tree
-
-    generic = type("Mistaken", (_Mistaken,), {"mistake_pose": dict(model.pose), "mistake_motion":
-                                              dict(model.motion), "mistake_jacobians": dict(model.jacobians)})
-    special = dict(model.joints)
-    classes = {name: type(name, tuple(b for b in (special.get(kind), generic) if b) + (getattr(tree, name),), {})
-               for kind, name in probe_trees.CLASSES.items()}
-    return SimpleNamespace(Body=tree.Body, KinematicTree=tree.KinematicTree, JointMotion=tree.JointMotion,
-                           Joint=type("Joint", (generic, tree.Joint), {}), **classes)
+#: the joint type each joint mistake changes, and whether it changes positions (or only the motion)
+_JOINT_KINDS = {"rotational_sign": ("rotational", True), "rolling_motion_sign": ("rolling_contact", False),
+                "rolling_wrong_way": ("rolling_contact", True), "virtual_order": ("virtual_3dof", True)}
 
 
-def mistaken_state(model, description, q, qd=None, qdd=None):
-    """The state of every body as the mistaken recursion computes it (``None`` if it cannot)."""
-    if model.edit is not None:
-        description = model.edit(description)
-    try:
-        tree = probe_trees.build(_namespace(model), description)
-        tree.forward_kinematics(np.asarray(q, dtype=float), *(() if qd is None else (qd, qdd)))
-    except (ValueError, IndexError, np.linalg.LinAlgError):
-        return None
-    return probe_trees.state(tree, motion=qd is not None)
+def _spec(model):
+    """The model's mistake as plain data for the probe ``_trees.mistaken_states``."""
+    spec = {key: dict(value) for key, value in (("pose", model.pose), ("motion", model.motion),
+                                                 ("jacobians", model.jacobians)) if value}
+    return {**spec, "joint": model.joint} if model.joint else spec
+
+
+def _relevant(model, description, motion):
+    """False when the mistake cannot change this case (a joint type the tree does not have, or a mistake of the
+    velocities on a positions-only pass)."""
+    if model.joint:
+        kind, in_pose = _JOINT_KINDS[model.joint]
+        return any(joint["kind"] == kind for joint in description["joints"]) and (motion or in_pose)
+    return motion or bool(model.pose) or model.edit is not None
 
 
 _RECURSION = ("A_IS = A_IP A_PDp A_DpDs A_SDs.T, S_r_IS = A_SDs A_DpDs.T (A_PDp.T (P_r_IP + P_r_PDp) + Dp_r_DpDs) "
@@ -405,16 +283,16 @@ MODELS = (
           "problem 24).", pose=(("offset_in_dp", True),)),
     Model("sign_flip", "The rotational joint turns the wrong way: A_DpDs = R3(gamma), a counter-clockwise rotation "
           "about the Dp 3-axis; you have R3(-gamma) = R3(gamma).T (RotationalJoint.joint_pose, problem 24).",
-          joints=(("rotational", _RotationalSign),)),
+          joint="rotational_sign"),
     Model("rolling_sign", "The rolling contact's relative motion has the wrong sign: r_rel_dot = (-r gamma_dot, 0, "
           "0), r_rel_ddot = (-r gamma_ddot, 0, 0), S = (-r, 0, 0), the derivatives of Dp_r_DpDs = (-r gamma, 0, 0) "
-          "(RollingContactJoint.joint_motion, problem 33).", joints=(("rolling_contact", _RollingMotionSign),)),
+          "(RollingContactJoint.joint_motion, problem 33).", joint="rolling_motion_sign"),
     Model("rolling_sign", "The rolling contact moves the wrong way: a circle turning counter-clockwise by gamma "
           "without slipping rolls towards -x, Dp_r_DpDs = (-r gamma, 0, 0) (RollingContactJoint.joint_pose, "
-          "problem 25).", joints=(("rolling_contact", RollingWrongWay),)),
+          "problem 25).", joint="rolling_wrong_way"),
     Model("coordinate_order", "The virtual 3-DOF joint's coordinates are q = (dx, dy, gamma): A_DpDs = R3(q[2]), "
           "Dp_r_DpDs = (q[0], q[1], 0), S = [e1 e2 0], R = [0 0 e3] (Virtual3DOFJoint, problem 34).",
-          joints=(("virtual_3dof", _VirtualOrder),)),
+          joint="virtual_order"),
     Model("coriolis", f"The Coriolis term 2 skew(Dp_omega) r_rel_dot is missing: {_DS_A} (Joint.successor_motion, "
           "problem 31).", motion=(("coriolis", 0.0),)),
     Model("coriolis", f"The Coriolis term needs the factor 2: {_DS_A}. One skew(Dp_omega) r_rel_dot comes from "
@@ -468,27 +346,52 @@ _GENERIC_HINTS = {
 }
 
 
-def candidates(description, q, qd=None, qdd=None, models=MODELS):
-    """A callable giving ``[(name, hint, state)]`` of the mistaken recursions for this case (computed on demand)."""
-    return lambda: [(model.name, model.hint, mistaken_state(model, description, q, qd, qdd)) for model in models]
+def candidates(ctx, description, q, qd=None, qdd=None, models=MODELS):
+    """``[(name, hint, bodies)]``: the bodies' states that the mistaken recursions compute for this case, asked of
+    the reference now (from the case alone, whatever the student's answer), mistakes that change nothing left out."""
+    motion = qd is not None
+    values = (q,) if qd is None else (q, qd, qdd)
+    relevant = [model for model in models if _relevant(model, description, motion)]
+    switched = [model for model in relevant if model.edit is None]
+    states = ctx.reference("_trees.mistaken_states", [_spec(model) for model in switched], description, *values)
+    found = list(zip(switched, states))
+    found += [(model, ctx.reference("_trees.tree_state", model.edit(description), *values)["bodies"])
+              for model in relevant if model.edit is not None]
+    return [(model.name, model.hint, bodies) for model, bodies in found if bodies is not None]
 
 
 # ------------------------------------------------------------------------------------------ comparisons
 
 
 def bodies_of(got, names):
-    """The student's body states in the order of ``names``."""
-    if not isinstance(got, dict) or not isinstance(got.get("bodies"), list):
-        fail("the probe could not read the tree's bodies back.")
-    mine = dict(zip(got.get("names", []), got["bodies"]))
+    """The student's body states (dicts) in the order of ``names``; the reply must list exactly these bodies."""
+    unreadable = "the probe could not read the tree's bodies back."
+    if not isinstance(got, dict) or not isinstance(got.get("bodies"), list) or not isinstance(got.get("names"), list):
+        fail(unreadable)
+    theirs = got["names"]
+    if len(theirs) != len(got["bodies"]) or not all(isinstance(name, str) for name in theirs):
+        fail(unreadable)
+    mine = dict(zip(theirs, got["bodies"]))
     missing = [name for name in names if name not in mine]
     if missing:
         fail(f"your tree has no bodies named {missing} (it has {list(mine)}).",
              "Keep the body names of the template.")
-    if list(got["names"]) != list(names):
-        fail(f"your tree lists its bodies as {list(got['names'])}, expected {list(names)} (depth first from the root).",
+    if list(theirs) != list(names):
+        fail(f"your tree lists its bodies as {list(theirs)}, expected {list(names)} (depth first from the root).",
              "Create the joints in the order of the template: KinematicTree lists the bodies in recursion order.")
-    return [mine[name] for name in names]
+    bodies = [mine[name] for name in names]
+    if not all(isinstance(body, dict) for body in bodies):
+        fail(unreadable)
+    return bodies
+
+
+def bodies_list(value, names, what):
+    """A list of body states (dicts) with one entry per body of ``names`` (the probe's states at shifted
+    configurations, which carry no names)."""
+    bodies = as_list(value, f"the bodies' states {what}", len(names))
+    if not all(isinstance(body, dict) for body in bodies):
+        fail(f"the bodies' states {what} must be dicts of the bodies' quantities.", diagnosis="shape")
+    return bodies
 
 
 def _with_hint(value, expected, name, tol, mistakes, hint, **kwargs):
@@ -514,22 +417,20 @@ def _where(expected, k, quantity):
             f"{len(names)}); {before}.\n{place}.")
 
 
-def _agrees_before(state, expected, k, quantity, tol):
-    """True if the mistaken ``state`` agrees with ``expected`` on everything computed before ``quantity`` of body
+def _agrees_before(bodies, expected, k, quantity, tol):
+    """True if the mistaken ``bodies`` agree with ``expected`` on everything computed before ``quantity`` of body
     ``k`` (where the student's state agrees with the reference too)."""
-    if state is None:
-        return False
     for j in range(k + 1):
         for name in ORDER[:ORDER.index(quantity)] if j == k else ORDER:
             value = expected["bodies"][j].get(name)
-            if value is not None and not close(state["bodies"][j][name], value, tol):
+            if value is not None and not close(bodies[j][name], value, tol):
                 return False
     return True
 
 
-def compare_states(got, expected, tol=EXACT, mistakes=lambda: (), context=""):
+def compare_states(got, expected, tol=EXACT, mistakes=(), context=""):
     """Fail at the first body (recursion order) and quantity where ``got`` departs from ``expected``; ``mistakes``
-    gives the mistaken states ``[(name, hint, state)]`` to diagnose with."""
+    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with."""
     names = expected["names"]
     bodies = bodies_of(got, names)
     for k, name in enumerate(names):
@@ -544,19 +445,20 @@ def compare_states(got, expected, tol=EXACT, mistakes=lambda: (), context=""):
                      "none")
             if close(value, ref[quantity], tol):
                 continue
-            found = [Mistake(m_name, state["bodies"][k][quantity], m_hint)
-                     for m_name, m_hint, state in mistakes() if _agrees_before(state, expected, k, quantity, tol)]
+            found = [Mistake(m_name, state[k][quantity], m_hint)
+                     for m_name, m_hint, state in mistakes if _agrees_before(state, expected, k, quantity, tol)]
             if quantity == "B_r_IB":
                 found.append(Mistake("inertial_coordinates", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],
                        context=context, note=_where(expected, k, quantity))
 
 
-def tree_comparison(motion=True, models=MODELS):
-    """A ``compare`` for ``ctx.compare_random`` on ``(description, q[, qd, qdd])`` cases."""
+def tree_comparison(ctx, motion=True, models=MODELS):
+    """A ``compare`` for ``ctx.compare_random`` on ``(description, q[, qd, qdd])`` cases; the mistaken states of
+    each case are asked of the reference before the comparison."""
 
     def compare(got, expected, args):
-        compare_states(got, expected, mistakes=candidates(*args[:4 if motion else 2], models=models))
+        compare_states(got, expected, mistakes=candidates(ctx, *args[:4 if motion else 2], models=models))
 
     return compare
 
@@ -566,8 +468,8 @@ def _unskew(W):
 
 
 def _pose_of(body, name):
-    A = as_array(body["A_IB"], f"A_IB of {name}", (3, 3))
-    return A, A @ as_array(body["B_r_IB"], f"B_r_IB of {name}", (3,))
+    A = as_array(body.get("A_IB"), f"A_IB of {name}", (3, 3))
+    return A, A @ as_array(body.get("B_r_IB"), f"B_r_IB of {name}", (3,))
 
 
 COLUMN_HINT = ("Your Jacobian's columns are shifted by one against the coordinates: the joint's S and R go into the "
@@ -576,21 +478,27 @@ JACOBIAN_FRAME_HINT = ("Your Jacobian is in inertial coordinates: B_J_S and B_J_
                        "B_v_B = B_J_S qd (the inertial Jacobian is A_IB @ B_J_S).")
 
 
-def compare_jacobians(got, h=H, tol=DIFFERENCES):
+def compare_jacobians(got, expected, h=H, tol=DIFFERENCES):
     """Every body's ``B_J_S``, ``B_J_R`` are the derivatives of its own position ``A_IB @ B_r_IB`` and orientation
-    ``A_IB`` (``skew(B_J_R[:, i]) = A_IB.T dA_IB/dq_i``), from ``jacobian_differences``."""
-    at, shifted = got["state"], got["shifted"]
-    nq = len(shifted)
-    for k, name in enumerate(at["names"]):
-        body = at["bodies"][k]
-        A = assert_rotation(body["A_IB"], f"A_IB of {name}")
+    ``A_IB`` (``skew(B_J_R[:, i]) = A_IB.T dA_IB/dq_i``), from ``jacobian_differences``; ``expected`` (the
+    reference's reply) gives the bodies and the number of coordinates the reply must cover."""
+    names = expected["state"]["names"]
+    nq = len(expected["shifted"])
+    got = as_dict(got, "the reply of the Jacobian probe", ("state", "shifted"))
+    bodies = bodies_of(got["state"], names)
+    pairs = as_list(got["shifted"], "the poses at q +- h e_i, one pair per coordinate", nq)
+    shifted = [[bodies_list(side, names, f"at q {sign} h e_{i + 1}") for side, sign in
+                zip(as_list(pair, f"the poses at q +- h e_{i + 1}", 2), "+-")] for i, pair in enumerate(pairs)]
+    for k, name in enumerate(names):
+        body = bodies[k]
+        A = assert_rotation(body.get("A_IB"), f"A_IB of {name}")
         plus = [_pose_of(pair[0][k], name) for pair in shifted]
         minus = [_pose_of(pair[1][k], name) for pair in shifted]
-        J_S = A.T @ np.column_stack([(p[1] - m[1]) / (2 * h) for p, m in zip(plus, minus)])
-        J_R = np.column_stack([_unskew(A.T @ (p[0] - m[0]) / (2 * h)) for p, m in zip(plus, minus)])
+        J_S = A.T @ np.column_stack([(p[1] - m[1]) / (2 * h) for p, m in zip(plus, minus)]).reshape(3, nq)
+        J_R = np.column_stack([_unskew(A.T @ (p[0] - m[0]) / (2 * h)) for p, m in zip(plus, minus)]).reshape(3, nq)
         for quantity, fd, of in (("B_J_S", J_S, "position A_IB @ B_r_IB"), ("B_J_R", J_R, "orientation A_IB")):
-            before = f"the bodies before it ({', '.join(at['names'][:k])}) are consistent" if k else "the root"
-            _with_hint(body[quantity], fd, f"{quantity} of {name}", tol, [
+            before = f"the bodies before it ({', '.join(names[:k])}) are consistent" if k else "the root"
+            _with_hint(body.get(quantity), fd, f"{quantity} of {name}", tol, [
                 Mistake("column_offset", np.roll(fd, -1, axis=1), COLUMN_HINT),
                 Mistake("column_offset", np.roll(fd, 1, axis=1), COLUMN_HINT),
                 Mistake("inertial_coordinates", A @ fd, JACOBIAN_FRAME_HINT),
@@ -610,25 +518,27 @@ _PATH_HINTS = {
 }
 
 
-def compare_path(got, h=H, tol=DIFFERENCES):
+def compare_path(got, expected, h=H, tol=DIFFERENCES):
     """Along ``q(t)`` (states at ``-h, 0, +h`` from ``path_differences``) every body's velocities are the time
-    derivatives of its own pose, and its accelerations those of its own velocities."""
-    minus, at, plus = got
-    for k, name in enumerate(at["names"]):
-        A = assert_rotation(at["bodies"][k]["A_IB"], f"A_IB of {name}")
+    derivatives of its own pose, and its accelerations those of its own velocities; ``expected`` (the reference's
+    reply) gives the bodies the reply must cover."""
+    names = expected[1]["names"]
+    minus, at, plus = (bodies_of(state, names) for state in as_list(got, "the states at t = -h, 0, +h", 3))
+    for k, name in enumerate(names):
+        A = assert_rotation(at[k].get("A_IB"), f"A_IB of {name}")
 
         def rate(quantity):
             def inertial(body):
-                A_b = as_array(body["A_IB"], f"A_IB of {name}", (3, 3))
-                return A_b if quantity is None else A_b @ as_array(body[quantity], f"{quantity} of {name}", (3,))
+                A_b = as_array(body.get("A_IB"), f"A_IB of {name}", (3, 3))
+                return A_b if quantity is None else A_b @ as_array(body.get(quantity), f"{quantity} of {name}", (3,))
 
-            return (inertial(plus["bodies"][k]) - inertial(minus["bodies"][k])) / (2 * h)
+            return (inertial(plus[k]) - inertial(minus[k])) / (2 * h)
 
-        expected = {"B_v_B": A.T @ rate("B_r_IB"), "B_omega_B": _unskew(A.T @ rate(None)),
-                    "B_a_B": A.T @ rate("B_v_B"), "B_omegaDot_B": A.T @ rate("B_omega_B")}
-        for quantity, fd in expected.items():
-            before = f"the bodies before it ({', '.join(at['names'][:k])}) are consistent" if k else "the root"
-            _with_hint(at["bodies"][k][quantity], fd, f"{quantity} of {name}", tol, [], _PATH_HINTS[quantity],
+        expected_rates = {"B_v_B": A.T @ rate("B_r_IB"), "B_omega_B": _unskew(A.T @ rate(None)),
+                          "B_a_B": A.T @ rate("B_v_B"), "B_omegaDot_B": A.T @ rate("B_omega_B")}
+        for quantity, fd in expected_rates.items():
+            before = f"the bodies before it ({', '.join(names[:k])}) are consistent" if k else "the root"
+            _with_hint(at[k].get(quantity), fd, f"{quantity} of {name}", tol, [], _PATH_HINTS[quantity],
                        context="(expected: the time derivative of your own kinematics along q(t) = q + qd t + "
                                "qdd t^2/2)",
                        note=f"{name} is the first body, in recursion order, whose {quantity} is not the time "
@@ -639,7 +549,7 @@ def compare_jacobian_differences(ctx, probe, kinds, examples=10):
     """Jacobians of random trees against finite differences of the student's own positions and orientations."""
 
     def compare(got, expected, args):
-        compare_jacobians(got)
+        compare_jacobians(got, expected)
 
     compare_fixed(ctx, probe, rich_case(kinds, motion=False, extra=(H,)), compare)
     ctx.compare_random(probe, cases(kinds, motion=False, extra=(H,)), name="B_J_S, B_J_R", tol=DIFFERENCES,
@@ -650,7 +560,7 @@ def compare_path_differences(ctx, probe, kinds, examples=10):
     """Velocities and accelerations of random trees against time derivatives of the student's own kinematics."""
 
     def compare(got, expected, args):
-        compare_path(got)
+        compare_path(got, expected)
 
     compare_fixed(ctx, probe, rich_case(kinds, extra=(H,)), compare)
     ctx.compare_random(probe, cases(kinds, extra=(H,)), name="velocities and accelerations", tol=DIFFERENCES,

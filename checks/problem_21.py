@@ -1,7 +1,7 @@
 """Checks of problem 21: the constraint functions f_a, f_b of the planar arms and their Jacobians.
 
-The mistaken arms (``walk``) and the diagnoses of Jacobians (``swapped_columns``, ``sign_flips``) are shared with
-problems 22 and 26.
+The known mistakes of the arm (probe ``problem_21.mistakes``) and the diagnoses of Jacobians (``swapped_columns``,
+``sign_flips``) are shared with problems 22 and 26.
 """
 
 
@@ -39,6 +39,7 @@ from ._planar import (
     sign_flips,
     swapped_columns,
 )
+from ._shapes import as_dict, as_list
 
 TITLE = "2D Kinematics"
 
@@ -73,22 +74,22 @@ def assert_derivative(J, central, name, function, mistakes, hint, names=None):
 
 
 def _assert_derivative(ctx, case):
-    from reference import planar
-
     joints, rows = SIZES[case]
-    analytic = planar.jacobian_a if case == "a" else planar.jacobian_b
     for q in CONFIGURATIONS[case]:
         call = f"(q={list(q)}, d={FD_LINK})"
-        got = ctx.student("problem_21.jacobian_and_steps", case, q, FD_LINK, H)
-        J = as_array(got["J"], f"jacobian_{case}{call}", (rows, joints))
-        plus, minus = ([as_array(x, f"chain_{case}", (rows,)) for x in got[side]] for side in ("plus", "minus"))
-        central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])
         mistakes = [
-            Mistake("chain_wrong", analytic(q, FD_LINK), (
+            Mistake("chain_wrong", ctx.reference("problem_21.jacobian", case, q, FD_LINK), (
                 f"Your jacobian_{case} is right, but it is not the derivative of your chain_{case}: chain_{case} is "
                 f"wrong (see its check).")),
-            Mistake("degrees", analytic(as_degrees(q), FD_LINK), DEGREES_HINT),
+            Mistake("degrees", ctx.reference("problem_21.jacobian", case, as_degrees(q), FD_LINK), DEGREES_HINT),
         ]
+        got = as_dict(ctx.student("problem_21.jacobian_and_steps", case, q, FD_LINK, H), f"the reply for {call}",
+                      ("J", "plus", "minus"))
+        J = as_array(got["J"], f"jacobian_{case}{call}", (rows, joints))
+        plus, minus = ([as_array(x, f"chain_{case}", (rows,))
+                        for x in as_list(got[side], f"chain_{case} at q {sign} h e_j, one per joint", joints)]
+                       for side, sign in (("plus", "+"), ("minus", "-")))
+        central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])
         assert_derivative(J, central, f"jacobian_{case}{call}", f"chain_{case}", mistakes, (
             f"Column j of J_{case} holds the derivatives of all coordinates of x_{case} with respect to q_j: "
             f"differentiate each entry of your chain_{case} again."))
@@ -96,7 +97,7 @@ def _assert_derivative(ctx, case):
 
 def _compare_jacobian(ctx, case):
     def compare(got, expected, args):
-        mistakes = _jacobian_reference_mistakes(case, args[1], args[2], expected)
+        mistakes = _jacobian_reference_mistakes(ctx, case, args[1], args[2], expected)
         assert_close(got, expected, f"jacobian_{case}(q, d)", EXACT,
                      mistakes + sign_flips(got, expected, EXACT, JACOBIAN_SIGN_HINT))
 
@@ -132,12 +133,10 @@ def check_jacobian_b_values(ctx):
 @check(1, title="case (2), q_b: the end effector is at (-0.1799, 0.3616, 1.0472) as on the sheet",
        stage=STAGE_VALUES, group="sheet")
 def check_sheet_target(ctx):
-    from reference.problem_21 import CASES as SHEET_CASES
-    from reference.problem_21 import D, TARGET_END_EFFECTOR_CASE_2
-
-    q_b = SHEET_CASES[2][1]
-    x_b = as_array(ctx.student("problem_21.chain", "b", q_b, D), "chain_b(q_b, 0.15)", (9,))
-    mistakes = [Mistake(m.name, m.value[6:], m.hint) for m in _chain_mistakes(q_b, D)]
-    mistakes += sign_flips(x_b[6:], TARGET_END_EFFECTOR_CASE_2, SHEET, SIGN_HINT)
-    assert_close(x_b[6:], TARGET_END_EFFECTOR_CASE_2, "(xe, ye, gammae) of case (2) with q_b", SHEET, mistakes,
+    case = ctx.reference("problem_21.sheet_case")
+    q_b, d, target = case["q_b"], case["d"], np.asarray(case["target"], dtype=float)
+    mistakes = [Mistake(m.name, m.value[6:], m.hint) for m in _chain_mistakes(ctx, q_b, d)]
+    x_b = as_array(ctx.student("problem_21.chain", "b", q_b, d), f"chain_b(q_b, {d:g})", (9,))
+    mistakes += sign_flips(x_b[6:], target, SHEET, SIGN_HINT)
+    assert_close(x_b[6:], target, "(xe, ye, gammae) of case (2) with q_b", SHEET, mistakes,
                  context="(the sheet's value)")

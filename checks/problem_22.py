@@ -1,5 +1,6 @@
 """Checks of problem 22: the end effector of the 2n-joint arm by a loop and by recursion, and that the recursion
-really recurses."""
+really recurses (credited only once point_k's values are right, and when the recursive calls return the right
+poses)."""
 
 import numpy as np
 from hypothesis import strategies as st
@@ -8,17 +9,22 @@ from grader.checking import (
     EXACT,
     SHEET,
     STAGE_RANDOM,
-    STAGE_STRUCTURE,
     STAGE_VALUES,
+    CheckFailure,
     Mistake,
     assert_close,
     check,
     fail,
 )
 
-from ._planar import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips, walk
+from ._planar import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips
+from ._shapes import as_dict, as_list
 
 TITLE = "Recursive Kinematics"
+
+#: the recursion is credited after the randomized values of point_k (same group): a recursion that computes wrong
+#: poses earns nothing for recursing
+STAGE_AFTER_VALUES = STAGE_RANDOM + 1
 
 JOINT_VECTORS = st.lists(st.tuples(LENGTHS, ANGLES), min_size=1, max_size=8).map(
     lambda pairs: np.array(pairs, dtype=float).ravel()
@@ -47,21 +53,20 @@ def _name(model):
     return model.removesuffix("_offset").removesuffix("_all")
 
 
-def _end_mistakes(q, d):
-    return [Mistake(_name(model), walk(q, d, model)[1], hint) for model, hint in MODELS.items()]
+def _end_mistakes(ctx, q, d):
+    found = ctx.reference("problem_22.mistakes", q, d)
+    return [Mistake(_name(model), found[model]["end"], hint) for model, hint in MODELS.items()]
 
 
-def _point_mistakes(q, k):
-    """Modelled mistakes of ``point_k(q, k)``: the pose ``(x_k, y_k, g_k)`` of the mistaken arm."""
+def _point_mistakes(found, expected, k):
+    """Modelled mistakes of ``point_k(q, k)``: the pose ``(x_k, y_k, g_k)`` of the mistaken arms ``found`` (the
+    probe ``problem_22.mistakes``), and the orientation before the joint read off the reference's poses."""
     if k == 0:
         return []
-    found = []
-    for model, hint in MODELS.items():
-        if model != "no_final_link":
-            x, y, _, after = walk(q, 0.0, model)[0][k - 1]
-            found.append(Mistake(_name(model), (x, y, after), hint))
-    x, y, before, _ = walk(q, 0.0)[0][k - 1]
-    return found + [Mistake("orientation_before", (x, y, before), ORIENTATION_HINT)]
+    models = [model for model in MODELS if model != "no_final_link"]
+    x, y, before = *np.asarray(expected[k], dtype=float)[:2], float(np.asarray(expected[k - 1])[2])
+    return [Mistake(_name(model), np.asarray(found[model]["points"][k - 1])[[0, 1, 3]], MODELS[model])
+            for model in models] + [Mistake("orientation_before", (x, y, before), ORIENTATION_HINT)]
 
 
 def _describe(function):
@@ -74,7 +79,7 @@ def _describe(function):
 
 def _compare_end(ctx, probe, function):
     def compare(got, expected, args):
-        mistakes = _end_mistakes(*args) + sign_flips(got, expected, EXACT, SIGN_HINT)
+        mistakes = _end_mistakes(ctx, *args) + sign_flips(got, expected, EXACT, SIGN_HINT)
         assert_close(got, expected, f"{function}(q, d)", EXACT, mistakes)
 
     ctx.compare_random(probe, st.tuples(JOINT_VECTORS, LINKS), name=f"{function}(q, d)", tol=EXACT, compare=compare,
@@ -87,12 +92,12 @@ def _compare_end(ctx, probe, function):
 @check(1, title="q3 (12 joints, corrected in the problem data), d = 0.15: the end effector is at "
        "(0.8243, 0.3914, 0) as on the sheet", stage=STAGE_VALUES, group="sheet")
 def check_sheet_target(ctx):
-    from reference.problem_22 import D, TARGET_Q3, joint_vector
-
-    q3 = joint_vector("q3")
-    got = ctx.student("problem_22.loop", q3, D)
-    assert_close(got, TARGET_Q3, "end_effector_loop(q3, 0.15)", SHEET,
-                 _end_mistakes(q3, D) + sign_flips(got, TARGET_Q3, SHEET, SIGN_HINT),
+    case = ctx.reference("problem_22.sheet_case")
+    q3, d, target = case["q"], case["d"], np.asarray(case["target"], dtype=float)
+    mistakes = _end_mistakes(ctx, q3, d)
+    got = ctx.student("problem_22.loop", q3, d)
+    assert_close(got, target, f"end_effector_loop(q3, {d:g})", SHEET,
+                 mistakes + sign_flips(got, target, SHEET, SIGN_HINT),
                  context="(the sheet's value)",
                  note="q3 has 12 entries: the sheet lost two of them (problem data).")
 
@@ -113,11 +118,13 @@ def check_loop_values(ctx):
 def check_points_values(ctx):
     def compare(got, expected, args):
         (q,) = args
+        found = ctx.reference("problem_22.mistakes", q, 0.0)
+        got = as_list(got, f"[point_k(q, k) for k = 0..{len(expected) - 1}]", len(expected))
         for k, (pose, target) in enumerate(zip(got, expected)):
             right = {0: "", 1: "P_0 is right: "}.get(k, f"P_0 .. P_{k - 1} are right: ")
             where = f"{right}the step from P_{k - 1} to P_{k} is wrong." if k else "P_0 is the origin with g_0 = 0."
             assert_close(pose, target, f"point_k(q, {k})", EXACT,
-                         _point_mistakes(q, k) + sign_flips(pose, target, EXACT, SIGN_HINT), note=where)
+                         _point_mistakes(found, expected, k) + sign_flips(pose, target, EXACT, SIGN_HINT), note=where)
 
     ctx.compare_random("problem_22.points", st.tuples(JOINT_VECTORS), name="point_k(q, k)", tol=EXACT,
                        compare=compare, describe=_describe("point_k"))
@@ -129,14 +136,33 @@ def check_recursive_values(ctx):
     _compare_end(ctx, "problem_22.recursive", "end_effector_recursive")
 
 
-@check(2, title="point_k calls itself, from P_n down to the origin, and end_effector_recursive uses it",
-       stage=STAGE_STRUCTURE, group="recursion")
-def check_recursion(ctx):
-    from reference.problem_22 import D, joint_vector
+def _nesting(ctx, call, q, d):
+    got = as_dict(ctx.student("problem_22.nesting", call, q, d), f"the reply of the recursion probe ({call})",
+                  ("depth", "function", "value"))
+    if isinstance(got["depth"], bool) or not isinstance(got["depth"], (int, float)):
+        fail(f"the recursion probe ({call}) must report a depth, got {str(got['depth'])[:100]}.", diagnosis="shape")
+    return got
 
-    q = joint_vector("q3")
+
+def _assert_recursion_value(value, expected, name):
+    """The value a recursive call returned is the reference's: recursing alone earns nothing."""
+    try:
+        assert_close(value, expected, name, EXACT, context="(the value your recursion returned)")
+    except CheckFailure as exc:
+        fail(exc.message, "The recursion earns its points only when it computes the poses: point_k(q, k) returns "
+             "P_k = P_(k-1) + q_(2k-1) (-sin g_(k-1), cos g_(k-1)) with g_k = g_(k-1) + q_(2k), and "
+             "end_effector_recursive adds the final link to point_k(q, n).", "wrong_values")
+
+
+@check(2, title="point_k calls itself, from P_n down to the origin, and end_effector_recursive uses it; both return "
+       "the right poses", stage=STAGE_AFTER_VALUES, group="points")
+def check_recursion(ctx):
+    case = ctx.reference("problem_22.sheet_case")
+    q, d = case["q"], case["d"]
     n = q.size // 2
-    got = ctx.student("problem_22.nesting", "point_k", q, D)
+    expected_point = ctx.reference("problem_22.points", q)[n]
+    expected_end = ctx.reference("problem_22.recursive", q, d)
+    got = _nesting(ctx, "point_k", q, d)
     if got["depth"] < 2:
         fail(
             f"point_k(q3, {n}) does not call itself: no function of your package ran more than once at a time.",
@@ -152,11 +178,13 @@ def check_recursion(ctx):
             "Let each call handle one point: point_k(q, k) calls point_k(q, k - 1), down to k = 0.",
             "shallow_recursion",
         )
-    got = ctx.student("problem_22.nesting", "end_effector_recursive", q, D)
+    _assert_recursion_value(got["value"], expected_point, f"point_k(q3, {n})")
+    got = _nesting(ctx, "end_effector_recursive", q, d)
     if got["depth"] < n:
         fail(
-            f"end_effector_recursive(q3, {D}) does not recurse: the deepest nesting of a function of your package "
+            f"end_effector_recursive(q3, {d}) does not recurse: the deepest nesting of a function of your package "
             f"was {got['depth']}, expected at least {n}.",
             "end_effector_recursive must get P_n from point_k(q, n) (the recursion) and add the final link.",
             "no_recursion",
         )
+    _assert_recursion_value(got["value"], expected_end, f"end_effector_recursive(q3, {d})")

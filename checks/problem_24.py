@@ -11,7 +11,6 @@ from ._trees import (
     compare_trees,
     configuration_figure,
     describe_case,
-    describe_tree,
     rich_case,
     tree_comparison,
 )
@@ -22,10 +21,9 @@ TITLE = "Rotational Joint and Recursive Forward Kinematics"
 KINDS = ("rotational", "test")
 
 
-def _pendulum():
-    from reference.problem_24 import Q, build_triple_pendulum
-
-    return describe_tree(build_triple_pendulum()), Q
+def _pendulum(ctx):
+    case = ctx.reference("problem_24.pendulum_case")
+    return case["description"], case["q"]
 
 
 @check(1, title="the orientations A_IB of every body of random trees are proper rotations", stage=STAGE_STRUCTURE,
@@ -44,17 +42,18 @@ def check_orientations(ctx):
 @check(2, title="the triple pendulum at q = (pi/6, -pi/4, pi/3): A_IB and B_r_IB of every body",
        stage=STAGE_VALUES, group="pendulum")
 def check_pendulum(ctx):
-    description, q = _pendulum()
+    description, q = _pendulum(ctx)
+    mistakes = candidates(ctx, description, q)
     got = ctx.student("problem_24.pendulum", q)
     expected = ctx.reference("problem_24.pendulum", q)
     drawing = configuration_figure("Problem 24: the triple pendulum at q = (pi/6, -pi/4, pi/3)", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=candidates(description, q), context="(the sheet's configuration)")
+    compare_states(got, expected, mistakes=mistakes, context="(the sheet's configuration)")
 
 
 @check(3, title="random trees of rotational joints: A_IB and B_r_IB of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "problem_24.tree_poses", KINDS, tree_comparison(motion=False), motion=False,
+    compare_trees(ctx, "problem_24.tree_poses", KINDS, tree_comparison(ctx, motion=False), motion=False,
                   name="the bodies' poses")

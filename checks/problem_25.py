@@ -27,9 +27,9 @@ from ._trees import (
     compare_states,
     compare_trees,
     configuration_figure,
-    describe_tree,
     tree_comparison,
 )
+from ._shapes import as_dict, as_list
 
 TITLE = "Rolling Contact Joint"
 
@@ -72,23 +72,24 @@ BODY_HINT = ("x holds the legs' positions in inertial coordinates, I_r_IB = A_IB
              "body coordinates (B_r_IB).")
 
 
-def _walker():
-    from reference.problem_25 import build_walker
-
-    return describe_tree(build_walker())
+def _walker(ctx):
+    """``{"description", "alpha_c", "gamma_c"}`` of the reference's walker."""
+    return ctx.reference("problem_25.walker_case")
 
 
 def _wrap(angle):
     return (np.asarray(angle) + np.pi) % (2 * np.pi) - np.pi
 
 
-def _x_of(state):
-    """``x = (x_st, y_st, gamma_st, x_sw, y_sw, gamma_sw)`` of a walker state."""
+def _x_of(bodies, names, frame="inertial"):
+    """``x = (x_st, y_st, gamma_st, x_sw, y_sw, gamma_sw)`` of the walker's bodies (in the order of ``names``);
+    with ``frame="body"`` the positions are read in the legs' body coordinates (``B_r_IB``)."""
     x = []
     for name in LEGS:
-        body = state["bodies"][state["names"].index(name)]
+        body = bodies[names.index(name)]
         A = np.asarray(body["A_IB"])
-        x += [*(A @ body["B_r_IB"])[:2], np.arctan2(A[1, 0], A[0, 0])]
+        position = A @ body["B_r_IB"] if frame == "inertial" else np.asarray(body["B_r_IB"])
+        x += [*position[:2], np.arctan2(A[1, 0], A[0, 0])]
     return np.array(x)
 
 
@@ -99,15 +100,15 @@ def _on_branch(x, target):
     return x
 
 
-def _x_mistakes(alpha, gamma, target):
-    from reference.problem_25 import build_walker
-
-    found = [Mistake(name, _on_branch(_x_of(state), target), hint)
-             for name, hint, state in candidates(_walker(), [alpha, gamma], models=WALKER_MODELS)()
-             if state is not None]
-    tree = build_walker().forward_kinematics([alpha, gamma])
-    body = [v for name in LEGS for v in (*tree[name].B_r_IB[:2], np.arctan2(tree[name].A_IB[1, 0],
-                                                                             tree[name].A_IB[0, 0]))]
+def _x_mistakes(ctx, alpha, gamma, target):
+    """The known mistakes of ``x`` at ``(alpha, gamma)``, asked of the reference now (whatever the student's
+    answer)."""
+    description = _walker(ctx)["description"]
+    names = [body["name"] for body in description["bodies"]]
+    found = [Mistake(name, _on_branch(_x_of(bodies, names), target), hint)
+             for name, hint, bodies in candidates(ctx, description, [alpha, gamma], models=WALKER_MODELS)]
+    walker = ctx.reference("problem_25.walker", alpha, gamma)
+    body = _x_of(walker["bodies"], walker["names"], frame="body")
     return [Mistake("body_coordinates", _on_branch(body, target), BODY_HINT), *found]
 
 
@@ -117,20 +118,22 @@ def _x_mistakes(alpha, gamma, target):
 @check(2, title="part (c): at alpha = -30 deg, gamma = +60 deg the legs' centres of gravity are at x = (0.2051, "
        "0.3018, -0.5236, 0.9051, 0.3518, 0.5236)", stage=STAGE_VALUES, group="sheet")
 def check_sheet_values(ctx):
-    from reference.problem_25 import ALPHA_C, GAMMA_C
-
-    got = ctx.student("problem_25.walker", ALPHA_C, GAMMA_C)
-    expected = ctx.reference("problem_25.walker", ALPHA_C, GAMMA_C)
+    case = _walker(ctx)
+    alpha, gamma = case["alpha_c"], case["gamma_c"]
+    mistakes = _x_mistakes(ctx, alpha, gamma, SHEET_X)
+    got = ctx.student("problem_25.walker", alpha, gamma)
+    expected = ctx.reference("problem_25.walker", alpha, gamma)
     drawing = configuration_figure("Problem 25: the walker at alpha = -30 deg, gamma = +60 deg", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    x = as_array(got["x"], "cog_positions(alpha, gamma)", (6,)).copy()
+    x = as_array(as_dict(got, "the walker read back by the probe", ("x",))["x"], "cog_positions(alpha, gamma)",
+                 (6,)).copy()
     for i in ANGLES:  # signed angles; the course printed acos(A11), which loses the sign
         if abs(_wrap(x[i] - SHEET_X[i])) <= SHEET.atol or abs(x[i] - abs(SHEET_X[i])) <= SHEET.atol:
             x[i] = SHEET_X[i]
     if close(x, SHEET_X, SHEET):
         return
-    assert_close(x, SHEET_X, "x = cog_positions(-30 deg, +60 deg)", SHEET, _x_mistakes(ALPHA_C, GAMMA_C, SHEET_X),
+    assert_close(x, SHEET_X, "x = cog_positions(-30 deg, +60 deg)", SHEET, mistakes,
                  context="(the sheet's values with the erratum's angles)",
                  note="The leg angles may be signed (ours) or unsigned as the course printed them (acos(A11)).")
 
@@ -138,8 +141,10 @@ def check_sheet_values(ctx):
 @check(2, title="the walker of build_walker at random (alpha, gamma): A_IB and B_r_IB of every body",
        stage=STAGE_RANDOM, group="walker")
 def check_walker_random(ctx):
+    description = _walker(ctx)["description"]
+
     def compare(got, expected, args):
-        compare_states(got, expected, mistakes=candidates(_walker(), list(args), models=WALKER_MODELS))
+        compare_states(got, expected, mistakes=candidates(ctx, description, list(args), models=WALKER_MODELS))
 
     def describe(args):
         return f"q = (alpha, gamma) = ({args[0]!r}, {args[1]!r})"
@@ -152,7 +157,7 @@ def check_walker_random(ctx):
 @check(2, title="random trees with rolling contacts: A_IB and B_r_IB of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_rolling_trees(ctx):
-    compare_trees(ctx, "problem_25.tree_poses", KINDS, tree_comparison(motion=False), motion=False,
+    compare_trees(ctx, "problem_25.tree_poses", KINDS, tree_comparison(ctx, motion=False), motion=False,
                   name="the bodies' poses")
 
 
@@ -160,64 +165,65 @@ def check_rolling_trees(ctx):
 
 
 def _points(ctx):
-    from reference.problem_25 import ALPHA_C, GAMMA_C
-
+    case = _walker(ctx)
     ctx.last_seed = ctx.seed
     rng = np.random.default_rng(ctx.seed)
-    return np.vstack([[ALPHA_C, GAMMA_C], rng.uniform([-1.2, -2.5], [1.2, 2.5], (7, 2))])
+    return np.vstack([[case["alpha_c"], case["gamma_c"]], rng.uniform([-1.2, -2.5], [1.2, 2.5], (7, 2))])
 
 
 def _symbolic(ctx, points):
-    got = ctx.student("problem_25.symbolic", points, H)
+    got = as_dict(ctx.student("problem_25.symbolic", points, H), "the reply of the symbolic probe")
     if "free_symbols" in got:
         fail(f"x and J of cog_positions_symbolic() contain symbols other than q = ({', '.join(got['symbols'])}): "
              f"{', '.join(got['free_symbols'])}, so they cannot be evaluated at a configuration.",
              "Build x and J from the symbols you return in q only; the geometry enters as numbers.", "free_symbols")
-    return got
+    as_dict(got, "the reply of the symbolic probe", ("x", "J", "plus", "minus"))
+    return {key: as_list(got[key], f"{key} of cog_positions_symbolic() at the {len(points)} points", len(points))
+            for key in ("x", "J", "plus", "minus")}
 
 
 def _at(point, ctx):
     return f"at (alpha, gamma) = ({point[0]:.6g}, {point[1]:.6g}) (seed {ctx.seed})"
 
 
-def _reference_jacobian(alpha, gamma):
-    from reference.problem_25 import build_walker
-
-    tree = build_walker().forward_kinematics([alpha, gamma], np.zeros(2))
-    return np.vstack([np.vstack([tree[name].I_J_S[:2], tree[name].I_J_R[2:]]) for name in LEGS])
+def _shifted(value, name):
+    """The student's ``x`` at the two shifted points as a 2 x 6 array."""
+    value = as_array(value, name)
+    if value.size != 12:
+        fail(f"{name} must hold x at 2 points (2 x 6 entries), got shape {value.shape}.", diagnosis="shape")
+    return value.reshape(2, 6)
 
 
 @check(2, title="part (e): the symbolic x(alpha, gamma) equals the legs' inertial positions and orientations at "
        "random configurations", stage=STAGE_VALUES, group="symbolic")
 def check_symbolic_positions(ctx):
-    from reference.problem_25 import cog_positions
-
     points = _points(ctx)
+    expected_x = [np.asarray(ctx.reference("problem_25.walker", *point)["x"]) for point in points]
+    mistakes = [_x_mistakes(ctx, *point, expected) for point, expected in zip(points, expected_x)]
     got = _symbolic(ctx, points)
-    for point, value in zip(points, got["x"]):
-        value = np.asarray(value, dtype=float)
+    for point, value, expected, known in zip(points, got["x"], expected_x, mistakes):
+        value = as_array(value, f"x {_at(point, ctx)}")
         if value.size != 6:
             as_array(value, "x", (6, 1))
-        expected = cog_positions(*point)
         value = _on_branch(value.reshape(6), expected)
         if not close(value, expected, EXACT):
-            assert_close(value, expected, f"x {_at(point, ctx)}", EXACT, _x_mistakes(*point, expected),
-                         note="Angles are compared modulo 2 pi.")
+            assert_close(value, expected, f"x {_at(point, ctx)}", EXACT, known, note="Angles are compared modulo 2 pi.")
 
 
 @check(1, title="part (e): the symbolic Jacobian J is dx/dq (finite differences of your x) and matches the legs' "
        "Jacobians", stage=STAGE_VALUES, group="symbolic")
 def check_symbolic_jacobian(ctx):
     points = _points(ctx)
+    expected_J = [ctx.reference("problem_25.leg_jacobians", *point) for point in points]
     got = _symbolic(ctx, points)
-    for point, J, plus, minus in zip(points, got["J"], got["plus"], got["minus"]):
+    for point, J, plus, minus, expected in zip(points, got["J"], got["plus"], got["minus"], expected_J):
         J = as_array(J, "J", (6, 2))
-        step = np.asarray(plus, dtype=float).reshape(2, 6) - np.asarray(minus, dtype=float).reshape(2, 6)
+        step = _shifted(plus, "x at q + h e_j") - _shifted(minus, "x at q - h e_j")
         step[:, list(ANGLES)] = _wrap(step[:, list(ANGLES)])
         fd = step.T / (2 * H)
         assert_close(J, fd, f"J {_at(point, ctx)}", DIFFERENCES, [
             Mistake("column_order", fd[:, ::-1], "J = dx/dq has one column per coordinate, in the order of "
                     "q = (alpha, gamma); yours are swapped."),
         ], context="(expected: the derivative of your own x)")
-        assert_close(J, _reference_jacobian(*point), f"J {_at(point, ctx)}", EXACT,
+        assert_close(J, expected, f"J {_at(point, ctx)}", EXACT,
                      context="(the legs' Jacobians: rows I_J_S[0:2] and I_J_R[2] of each leg)")

@@ -12,10 +12,10 @@ from ._planar import (
     FINITE,
     H,
     JACOBIAN_SIGN_HINT,
-    complex_step,
     sign_flips,
     swapped_columns,
 )
+from ._shapes import as_dict, as_list
 from .problem_21 import assert_derivative
 
 TITLE = "Chairoplane: position and constraint Jacobian"
@@ -40,30 +40,18 @@ MODELS = {
 POSITION_SIGN_HINT = "Check the directions: x1 = r sin(beta), x2 = l1 - l3 cos(phi), x3 = r cos(beta)."
 
 
-def position(beta, phi, l1, l2, l3, mistake=None):
-    """The seat's position, or what ``mistake`` gives (complex arguments are kept)."""
-    if mistake == "degrees":
-        beta, phi = beta * np.pi / 180.0, phi * np.pi / 180.0
-    reach, drop = (l3 * np.cos(phi), l3 * np.sin(phi)) if mistake == "phi_sin_cos" else (
-        l3 * np.sin(phi), l3 * np.cos(phi))
-    radius = reach if mistake == "radius" else l2 + reach
-    height = l1 + drop if mistake == "sign_flip" else l1 - drop
-    across, along = (np.cos(beta), np.sin(beta)) if mistake == "beta_sin_cos" else (np.sin(beta), np.cos(beta))
-    return np.array([radius * across, height, radius * along])
+def _position_mistakes(ctx, args):
+    found = ctx.reference("problem_26.mistakes", *args)["position"]
+    return [Mistake(name, found[name], hint) for name, hint in MODELS.items()]
 
 
-def _position_mistakes(args):
-    return [Mistake(name, position(*args, name), hint) for name, hint in MODELS.items()]
-
-
-def _jacobian_mistakes(args, expected):
+def _jacobian_mistakes(ctx, args, expected):
     beta, phi, *lengths = args
-    from reference.problem_26 import jacobian
-
+    found = ctx.reference("problem_26.mistakes", *args)["jacobian"]
     return [
-        *[Mistake(name, complex_step(lambda q, name=name: position(*q, *lengths, name), (beta, phi)), hint)
-          for name, hint in MODELS.items()],
-        Mistake("degrees", jacobian(np.deg2rad(beta), np.deg2rad(phi), *lengths), DEGREES_HINT),
+        *[Mistake(name, found[name], hint) for name, hint in MODELS.items()],
+        Mistake("degrees", ctx.reference("problem_26.jacobian", np.deg2rad(beta), np.deg2rad(phi), *lengths),
+                DEGREES_HINT),
         *swapped_columns(expected, COLUMNS),
     ]
 
@@ -83,7 +71,7 @@ def _assert_not_transposed(J, expected, name, tol):
        group="position")
 def check_position_values(ctx):
     def compare(got, expected, args):
-        mistakes = _position_mistakes(args) + sign_flips(got, expected, EXACT, POSITION_SIGN_HINT)
+        mistakes = _position_mistakes(ctx, args) + sign_flips(got, expected, EXACT, POSITION_SIGN_HINT)
         assert_close(got, expected, "position(beta, phi, l1, l2, l3)", EXACT, mistakes)
 
     ctx.compare_random("problem_26.position", ARGUMENTS, name="position", tol=EXACT, compare=compare,
@@ -93,29 +81,31 @@ def check_position_values(ctx):
 @check(1, title="jacobian(beta, phi, l1, l2, l3) is the derivative of your own position (central differences)",
        stage=STAGE_STRUCTURE, group="jacobian")
 def check_jacobian_derivative(ctx):
-    from reference.problem_26 import jacobian
-
     for args in CONFIGURATIONS:
         call = _describe("jacobian")(args)
-        got = ctx.student("problem_26.jacobian_and_steps", *args, H)
-        plus, minus = ([as_array(x, "position", (3,)) for x in got[side]] for side in ("plus", "minus"))
+        known = [
+            Mistake("position_wrong", ctx.reference("problem_26.jacobian", *args), "Your jacobian is right, but it is "
+                    "not the derivative of your position: position is wrong (see its check)."),
+            Mistake("degrees", ctx.reference("problem_26.jacobian", *np.deg2rad(args[:2]), *args[2:]), DEGREES_HINT),
+        ]
+        got = as_dict(ctx.student("problem_26.jacobian_and_steps", *args, H), f"the reply for {call}",
+                      ("J", "plus", "minus"))
+        plus, minus = ([as_array(x, "position", (3,)) for x in as_list(got[side], f"position at q {sign} h e_j", 2)]
+                       for side, sign in (("plus", "+"), ("minus", "-")))
         central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])
         _assert_not_transposed(got["J"], central, call, CENTRAL_DIFFERENCES)
         J = as_array(got["J"], call, (3, 2))
-        assert_derivative(J, central, call, "position", [
-            Mistake("position_wrong", jacobian(*args), "Your jacobian is right, but it is not the derivative of "
-                    "your position: position is wrong (see its check)."),
-            Mistake("degrees", jacobian(*np.deg2rad(args[:2]), *args[2:]), DEGREES_HINT),
-        ], "Column 1 of J_f is d x / d beta, column 2 is d x / d phi: differentiate each entry of your position "
-           "again.", COLUMNS)
+        assert_derivative(J, central, call, "position", known, "Column 1 of J_f is d x / d beta, column 2 is d x / d "
+                          "phi: differentiate each entry of your position again.", COLUMNS)
 
 
 @check(2, title="jacobian(beta, phi, l1, l2, l3) = d f / d q on random angles and lengths", stage=STAGE_RANDOM,
        group="jacobian")
 def check_jacobian_values(ctx):
     def compare(got, expected, args):
+        known = _jacobian_mistakes(ctx, args, expected)
         _assert_not_transposed(got, expected, "jacobian(beta, phi, l1, l2, l3)", EXACT)
-        mistakes = _jacobian_mistakes(args, expected) + sign_flips(got, expected, EXACT, JACOBIAN_SIGN_HINT)
+        mistakes = known + sign_flips(got, expected, EXACT, JACOBIAN_SIGN_HINT)
         assert_close(got, expected, "jacobian(beta, phi, l1, l2, l3)", EXACT, mistakes)
 
     ctx.compare_random("problem_26.jacobian", ARGUMENTS, name="jacobian", tol=EXACT, compare=compare,

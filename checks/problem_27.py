@@ -3,6 +3,11 @@ columns and matrices behind (a), (d) and (e).
 
 A wrong choice is explained without naming the key: which columns of the chosen matrix disagree with the
 geometry, or on which example the chosen formula fails or holds.
+
+Secret checks (their keys stay with the instructor): the five choices, and the three values behind them —
+``jacobian_a()`` and ``governor_jacobian()`` equal one printed option each, and the residuals of (e) name the
+statement that fails, so recording any of them in the student kit would hand out the keys of (a), (d) and (e).
+The Jacobian columns on random geometry stay public.
 """
 
 import numpy as np
@@ -70,34 +75,46 @@ def _columns(option, expected, names, scale=""):
     ]
 
 
+def _options(ctx, key):
+    """The options of question ``key`` as typed from the sheet, by number."""
+    return {int(option): value for option, value in ctx.reference("problem_27.options", persist=True)[key].items()}
+
+
 def _residuals(ctx, probe, *args):
     return {int(k): v for k, v in ctx.reference(probe, *args, persist=True).items()}
 
 
-@check(1, title="(a) the chosen matrix is J_f of the arm", stage=STAGE_VALUES, group="a")
-def check_choice_a(ctx):
-    from reference.problem_27 import AXIS_2, END_EFFECTOR, JOINT_1, JOINT_3, OPTIONS_A, jacobian_a
+def _point(value):
+    return str(tuple(float(x) for x in value))
 
+
+@check(1, title="(a) the chosen matrix is J_f of the arm", stage=STAGE_VALUES, group="a", secret=True)
+def check_choice_a(ctx):
+    key, options = _key(ctx, "a"), _options(ctx, "a")
+    geometry = ctx.reference("problem_27.options", persist=True)["geometry"]
+    J = np.asarray(ctx.reference("problem_27.jacobian_a"))
     choice = _choice(ctx, "a")
-    if choice == _key(ctx, "a"):
+    if choice == key:
         return
-    names = [f"revolute joint 1 at {JOINT_1}", f"prismatic joint 2 along {AXIS_2}", f"revolute joint 3 at {JOINT_3}"]
-    lines = _columns(OPTIONS_A[choice], jacobian_a(), names)
+    names = [f"revolute joint 1 at {_point(geometry['joint_1'])}", f"prismatic joint 2 along "
+             f"{_point(geometry['axis_2'])}", f"revolute joint 3 at {_point(geometry['joint_3'])}"]
+    lines = _columns(options[choice], J, names)
     _wrong("a", choice, "\n".join(lines), (
-        f"With the end effector at {END_EFFECTOR}, a revolute joint at p contributes the column "
+        f"With the end effector at {_point(geometry['end_effector'])}, a revolute joint at p contributes the column "
         "(-(ye - py), xe - px, 1): the end effector moves perpendicular to its lever arm and turns with the joint; "
         "a prismatic joint along u contributes (ux, uy, 0)."), "wrong_column")
 
 
-@check(1, title="(b) the chosen velocity formula holds for its constraint type", stage=STAGE_VALUES, group="b")
+@check(1, title="(b) the chosen velocity formula holds for its constraint type", stage=STAGE_VALUES, group="b",
+       secret=True)
 def check_choice_b(ctx):
-    from reference.problem_27 import OPTIONS_B
-
+    key, options = _key(ctx, "b"), _options(ctx, "b")
+    residuals = _residuals(ctx, "problem_27.velocity_residuals")
     choice = _choice(ctx, "b")
-    if choice == _key(ctx, "b"):
+    if choice == key:
         return
-    derivative, kind = OPTIONS_B[choice]
-    residual = _residuals(ctx, "problem_27.velocity_residuals")[choice]
+    derivative, kind = options[choice]["derivative"], options[choice]["kind"]
+    residual = residuals[choice]
     if residual is None:
         _wrong("b", choice, f"Option {choice} is stated for {kind} constraints.", (
             "An explicit equality constraint x = f(q, t) is holonomic by construction: a non-holonomic constraint "
@@ -117,26 +134,28 @@ def _holds(key, choice, residual, where):
            "correct_statement")
 
 
-@check(1, title="(c) the chosen statement is the wrong one for the bias acceleration", stage=STAGE_VALUES, group="c")
+@check(1, title="(c) the chosen statement is the wrong one for the bias acceleration", stage=STAGE_VALUES, group="c",
+       secret=True)
 def check_choice_c(ctx):
+    key, residuals = _key(ctx, "c"), _residuals(ctx, "problem_27.bias_acceleration_residuals")
     choice = _choice(ctx, "c")
-    if choice == _key(ctx, "c"):
+    if choice == key:
         return
-    residual = _residuals(ctx, "problem_27.bias_acceleration_residuals")[choice]
+    residual = residuals[choice]
     if residual < HOLDS:
         _holds("c", choice, residual, "an example rheonomic constraint, sigma = x_ddot - J q_ddot")
     _wrong("c", choice, "", "", "wrong_choice")
 
 
-@check(1, title="(d) the chosen matrix is the Jacobian of the governor's ball", stage=STAGE_VALUES, group="d")
+@check(1, title="(d) the chosen matrix is the Jacobian of the governor's ball", stage=STAGE_VALUES, group="d",
+       secret=True)
 def check_choice_d(ctx):
-    from reference.problem_27 import OPTIONS_D
-
-    choice = _choice(ctx, "d")
-    if choice == _key(ctx, "d"):
-        return
+    key, options = _key(ctx, "d"), _options(ctx, "d")
     J = np.asarray(ctx.reference("problem_27.governor_jacobian", persist=True))
-    lines = _columns(OPTIONS_D[choice], J, ["d r / d phi", "d r / d gamma"], " * l")
+    choice = _choice(ctx, "d")
+    if choice == key:
+        return
+    lines = _columns(options[choice], J, ["d r / d phi", "d r / d gamma"], " * l")
     _wrong("d", choice, "\n".join(lines), (
         "The ball sits at I_r = R2(phi) (l sin gamma, -l cos gamma, 0): phi turns it about the vertical spindle "
         "(the y-axis), so it moves along z; gamma swings it in the x-y plane. Differentiate each coordinate."),
@@ -144,12 +163,13 @@ def check_choice_d(ctx):
 
 
 @check(1, title="(e) the chosen statement is the wrong one about derivatives in moving frames", stage=STAGE_VALUES,
-       group="e")
+       group="e", secret=True)
 def check_choice_e(ctx):
+    key, residuals = _key(ctx, "e"), _residuals(ctx, "problem_27.frame_derivative_residuals", 0, 0.3)
     choice = _choice(ctx, "e")
-    if choice == _key(ctx, "e"):
+    if choice == key:
         return
-    residual = _residuals(ctx, "problem_27.frame_derivative_residuals", 0, 0.3)[choice]
+    residual = residuals[choice]
     if residual < HOLDS:
         _holds("e", choice, residual, "a random rigid motion")
     _wrong("e", choice, "", "", "wrong_choice")
@@ -199,7 +219,8 @@ def check_columns(ctx):
                        describe=lambda args: f"prismatic_column(u={args[0]})")
 
 
-@check(1, title="jacobian_a() is J_f of the restated arm of (a)", stage=STAGE_VALUES, group="jacobian_a")
+@check(1, title="jacobian_a() is J_f of the restated arm of (a)", stage=STAGE_VALUES, group="jacobian_a",
+       secret=True)
 def check_jacobian_a(ctx):
     expected = ctx.reference("problem_27.jacobian_a")
     got = ctx.student("problem_27.jacobian_a")
@@ -213,7 +234,7 @@ def check_jacobian_a(ctx):
 
 
 @check(1, title="governor_jacobian() is J / l of the ball of (d) at phi = 0, gamma = 30 deg", stage=STAGE_VALUES,
-       group="governor")
+       group="governor", secret=True)
 def check_governor_jacobian(ctx):
     expected = np.asarray(ctx.reference("problem_27.governor_jacobian", persist=True))
     got = ctx.student("problem_27.governor_jacobian")
@@ -224,7 +245,7 @@ def check_governor_jacobian(ctx):
 
 
 @check(1, title="frame_derivative_residuals(seed, t) = |lhs - rhs| of the statements of (e) on random rigid motions",
-       stage=STAGE_VALUES, group="frames")
+       stage=STAGE_VALUES, group="frames", secret=True)
 def check_frame_residuals(ctx):
     for seed, t in ((0, 0.3), (3, -0.2)):
         expected = _residuals(ctx, "problem_27.frame_derivative_residuals", seed, t)

@@ -1,6 +1,9 @@
 """Checks of problem 28: the predicted output of main.m (answers.toml), and the port that prints it.
 
 The text comparison (``text_lines``, ``answer_text``, ``assert_same_text``) lives in ``checks/_answers.py``.
+
+Both checks are secret: their key is the output itself, which a recorded answer key would hand out; the port's
+check compares with the same text.
 """
 
 from grader.checking import STAGE_VALUES, Mistake, check
@@ -32,14 +35,14 @@ def _expected(ctx):
     return ctx.reference("problem_28.output")
 
 
-@check(3, title="[problem_28] output is what main.m prints", stage=STAGE_VALUES, group="prediction")
+@check(3, title="[problem_28] output is what main.m prints", stage=STAGE_VALUES, group="prediction", secret=True)
 def check_prediction(ctx):
     got = answer_text(ctx, "output")
     expected = _expected(ctx)
     assert_same_text(got, expected, "Your predicted output", (PROMPT,), _mistakes(expected), ORDER_HINT)
 
 
-@check(1, title="the port main() prints the output of main.m", stage=STAGE_VALUES, group="port")
+@check(1, title="the port main() prints the output of main.m", stage=STAGE_VALUES, group="port", secret=True)
 def check_port(ctx):
     got = ctx.student("problem_28.output")
     expected = _expected(ctx)

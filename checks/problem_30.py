@@ -2,6 +2,10 @@
 questions (c), (d), (e) are scored by hand.
 
 The comparison of class diagrams (``assert_same_diagram``) lives in ``checks/_answers.py``.
+
+Both checks are secret: the diagram is the answer of (a) itself, a fixed set of arrows that depends on no input,
+so recording it in the student kit would hand it out (and a failure names missing arrows of the key).
+``class_diagram()`` is compared with the same set.
 """
 
 from grader.checking import STAGE_VALUES, check
@@ -25,14 +29,14 @@ def _expected(ctx):
 
 
 @check(2, title="[problem_30] diagram: the inheritance arrows between the v2 classes", stage=STAGE_VALUES,
-       group="diagram")
+       group="diagram", secret=True)
 def check_diagram(ctx):
     got = diagram_pairs(ctx.answer("diagram"), "answers.toml [problem_30] diagram")
     assert_same_diagram(got, _expected(ctx), "Your diagram")
 
 
 @check(1, title="class_diagram() returns the inheritance arrows between the v2 classes", stage=STAGE_VALUES,
-       group="code")
+       group="code", secret=True)
 def check_class_diagram(ctx):
     got = diagram_pairs(ctx.student("problem_30.class_diagram"), "class_diagram()")
     assert_same_diagram(got, _expected(ctx), "class_diagram()")

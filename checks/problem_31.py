@@ -9,7 +9,6 @@ from ._trees import (
     compare_path_differences,
     compare_states,
     compare_trees,
-    describe_tree,
     tree_comparison,
 )
 
@@ -22,13 +21,12 @@ KINDS = ("rotational", "test")
 @check(2, title="the triple pendulum at the sheet's test case q = (pi/6, -pi/4, pi/3), qd = (1, 0, 0), qdd = "
        "(0, 0, 1): velocities, accelerations and Jacobians of every body", stage=STAGE_VALUES, group="pendulum")
 def check_pendulum(ctx):
-    from reference.problem_24 import build_triple_pendulum
-    from reference.problem_31 import Q, QD, QDD
-
-    got = ctx.student("problem_31.pendulum", Q, QD, QDD)
-    expected = ctx.reference("problem_31.pendulum", Q, QD, QDD)
-    compare_states(got, expected, mistakes=candidates(describe_tree(build_triple_pendulum()), Q, QD, QDD),
-                   context="(the sheet's test case)")
+    case = ctx.reference("problem_31.pendulum_case")
+    values = case["q"], case["qd"], case["qdd"]
+    mistakes = candidates(ctx, case["description"], *values)
+    got = ctx.student("problem_31.pendulum", *values)
+    expected = ctx.reference("problem_31.pendulum", *values)
+    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)")
 
 
 @check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "
@@ -46,4 +44,4 @@ def check_path(ctx):
 @check(3, title="random trees: velocities, accelerations and Jacobians of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")

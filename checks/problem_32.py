@@ -14,13 +14,15 @@ from grader.checking import (
     assert_close,
     check,
     close,
+    fail,
     figure,
 )
-from probes import _trees as probe_trees
 
+from ._shapes import as_dict, as_list
 from ._trees import (
     DIFFERENCES,
     H,
+    bodies_list,
     candidates,
     cases,
     compare_fixed,
@@ -28,7 +30,6 @@ from ._trees import (
     compare_trees,
     configuration_figure,
     describe_case,
-    describe_tree,
     rich_case,
     tree_comparison,
 )
@@ -47,51 +48,46 @@ FRAME_HINT = ("I_grav is given in inertial coordinates: bring it into the body f
 MASS_HINT = "Each body's gravity force is m * I_grav: g = sum(B_J_S.T @ (A_IB.T @ I_grav) * m)."
 
 
-def _gravity(tree, q, I_grav, frame=True, mass=True):
-    """``generalized_gravity`` of the reference, optionally without the frame change or without the masses."""
-    tree.forward_kinematics(q, np.zeros(tree.nq))
-    return sum(body.B_J_S.T @ ((body.A_IB.T if frame else np.eye(3)) @ I_grav) * (body.m if mass else 1.0)
-               for body in tree.bodies)
-
-
-def _gravity_mistakes(description, q, I_grav, expected):
-    from reference import tree
-
-    built = probe_trees.build(tree, description)
+def _gravity_mistakes(ctx, description, q, I_grav, expected):
+    """``generalized_gravity`` without the frame change, and without the masses, from the reference's Jacobians and
+    orientations at ``q`` (asked of the reference now, whatever the student's answer)."""
+    nq = len(q)
+    state = ctx.reference("_trees.tree_state", description, q, np.zeros(nq), np.zeros(nq))
+    masses = {body["name"]: float(body.get("m", 0.0)) for body in description["bodies"]}
+    bodies = [(body, masses[name]) for name, body in zip(state["names"], state["bodies"])]
+    I_grav = np.asarray(I_grav, dtype=float)
     return [
         Mistake("sign_flip", -np.asarray(expected), "g(q) is the generalized gravity force, sum(B_J_S.T @ (A_IB.T @ "
                 "I_grav) * m); yours has the opposite sign."),
-        Mistake("body_frame", _gravity(built, q, I_grav, frame=False), FRAME_HINT),
-        Mistake("missing_mass", _gravity(built, q, I_grav, mass=False), MASS_HINT),
+        Mistake("body_frame", sum(body["B_J_S"].T @ I_grav * m for body, m in bodies), FRAME_HINT),
+        Mistake("missing_mass", sum(body["B_J_S"].T @ (body["A_IB"].T @ I_grav) for body, _ in bodies), MASS_HINT),
     ]
 
 
-def _robot():
-    from reference.problem_32 import build_robot
-
-    return describe_tree(build_robot())
+def _robot(ctx):
+    return ctx.reference("problem_32.robot_case")
 
 
 @check(2, title="random trees with rigid joints: the state of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_rigid_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")
 
 
 @check(2, title="the robot hangs with its end effector at (0, -3, 0) at q = 0, and at the sheet's q_des(0) = "
        "(-0.00369, -0.46218, -1.44917) it is at the path's start (-1, -2, 0.5)", stage=STAGE_VALUES, group="robot")
 def check_end_effector(ctx):
-    from reference.problem_32 import X_START
-
+    robot = _robot(ctx)
     for q, target, title in ((np.zeros(3), np.array([0.0, -3.0, 0.0]), ""),
-                             (Q_DES_0, X_START, "Problem 32: the robot at q_des(0), front view")):
+                             (Q_DES_0, robot["x_start"], "Problem 32: the robot at q_des(0), front view")):
+        mistakes = candidates(ctx, robot["description"], q)
         got = ctx.student("problem_32.robot", q)
         expected = ctx.reference("problem_32.robot", q)
         drawing = configuration_figure(title, got, expected) if title else None
         if drawing is not None:
             ctx.add_figure(drawing)
-        compare_states(got, expected, mistakes=candidates(_robot(), q), context=f"(the robot at q = {q.tolist()})")
-        assert_close(got["end_effector"], target, f"end_effector_position(tree, {q.tolist()})", SHEET,
+        compare_states(got, expected, mistakes=mistakes, context=f"(the robot at q = {q.tolist()})")
+        assert_close(got.get("end_effector"), target, f"end_effector_position(tree, {q.tolist()})", SHEET,
                      context="(the sheet's value)")
 
 
@@ -99,15 +95,24 @@ def check_end_effector(ctx):
        "I_r_IB) (finite differences)", stage=STAGE_STRUCTURE, group="potential")
 def check_gravity_potential(ctx):
     def compare(got, expected, args):
-        description = args[0]
+        description, names, nq = args[0], expected["names"], len(args[1])
         masses = {body["name"]: body["m"] for body in description["bodies"]}
+        got = as_dict(got, "the reply of the potential probe", ("g", "names", "shifted"))
+        if got["names"] != names:
+            fail(f"your tree lists its bodies as {str(got['names'])[:200]}, expected {names} (depth first from the "
+                 "root).", "Create the joints in the order of the template: KinematicTree lists the bodies in "
+                 "recursion order.")
+        shifted = [[bodies_list(side, names, f"at q {sign} h e_{i + 1}")
+                    for side, sign in zip(as_list(pair, f"the poses at q +- h e_{i + 1}", 2), "+-")]
+                   for i, pair in enumerate(as_list(got["shifted"], "the poses at q +- h e_i, one pair per coordinate",
+                                                    nq))]
 
         def potential(bodies):
-            return -sum(masses[name] * I_GRAV @ (as_array(body["A_IB"], f"A_IB of {name}", (3, 3))
-                                                 @ as_array(body["B_r_IB"], f"B_r_IB of {name}", (3,)))
-                        for name, body in zip(got["names"], bodies))
+            return -sum(masses[name] * I_GRAV @ (as_array(body.get("A_IB"), f"A_IB of {name}", (3, 3))
+                                                 @ as_array(body.get("B_r_IB"), f"B_r_IB of {name}", (3,)))
+                        for name, body in zip(names, bodies))
 
-        fd = -np.array([(potential(plus) - potential(minus)) / (2 * H) for plus, minus in got["shifted"]])
+        fd = -np.array([(potential(plus) - potential(minus)) / (2 * H) for plus, minus in shifted])
         assert_close(got["g"], fd, "generalized_gravity(tree, q, I_grav)", DIFFERENCES, [
             Mistake("sign_flip", -fd, "g(q) = -dV/dq points downhill, it is the generalized force of gravity."),
         ], context=f"(expected: -dV/dq of your own positions, I_grav = {I_GRAV.tolist()})")
@@ -123,9 +128,10 @@ def check_gravity_potential(ctx):
        group="gravity")
 def check_gravity_random(ctx):
     def compare(got, expected, args):
+        mistakes = _gravity_mistakes(ctx, *args, expected)
         if not close(got, expected, EXACT):
-            assert_close(got, expected, "generalized_gravity(tree, q, I_grav)", EXACT, _gravity_mistakes(
-                *args, expected), context=f"(I_grav = {I_GRAV.tolist()})")
+            assert_close(got, expected, "generalized_gravity(tree, q, I_grav)", EXACT, mistakes,
+                         context=f"(I_grav = {I_GRAV.tolist()})")
 
     compare_fixed(ctx, "problem_32.gravity", rich_case(KINDS, motion=False, masses=True, extra=(I_GRAV,)), compare)
     ctx.compare_random("problem_32.gravity", cases(KINDS, motion=False, masses=True, extra=(I_GRAV,)),

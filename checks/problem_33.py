@@ -26,7 +26,6 @@ from ._trees import (
     compare_states,
     compare_trees,
     configuration_figure,
-    describe_tree,
     tree_comparison,
 )
 from .problem_25 import WALKER_MODELS
@@ -39,59 +38,57 @@ VALUES = st.lists(st.floats(-2.0, 2.0, allow_nan=False), min_size=6, max_size=6)
     lambda v: (np.array(v[:2]), np.array(v[2:4]), np.array(v[4:])))
 
 
-def _walker():
-    from reference.problem_25 import build_walker
+def _walker(ctx):
+    """``{"description", "q", "qd", "qdd", "foot_radius"}`` of the reference's walker at the sheet's test state."""
+    return ctx.reference("problem_33.walker_case")
 
-    return describe_tree(build_walker())
 
-
-def _contact(state, q):
+def _contact(bodies, names, q, radius):
     """Velocity and acceleration of the stance foot's material point that touches the ground, and the stance leg's
-    angular velocity, all inertial."""
-    from reference.problem_25 import FOOT_RADIUS
-
-    body = bodies_of(state, state["names"])[state["names"].index("stance_leg")]
-    A = as_array(body["A_IB"], "A_IB of stance_leg", (3, 3))
-    r, v, w, a, dw = (A @ as_array(body[name], f"{name} of stance_leg", (3,))
+    angular velocity, all inertial (``bodies`` in the order of ``names``)."""
+    body = bodies[names.index("stance_leg")]
+    A = as_array(body.get("A_IB"), "A_IB of stance_leg", (3, 3))
+    r, v, w, a, dw = (A @ as_array(body.get(name), f"{name} of stance_leg", (3,))
                       for name in ("B_r_IB", "B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B"))
-    lever = np.array([-FOOT_RADIUS * q[0], 0.0, 0.0]) - r
+    lever = np.array([-radius * q[0], 0.0, 0.0]) - r
     return v + np.cross(w, lever), a + np.cross(dw, lever) + np.cross(w, np.cross(w, lever)), w
 
 
-def _same_pose(state, got):
-    return state is not None and all(
-        close(theirs[name], ours[name], EXACT) for theirs, ours in zip(state["bodies"], got["bodies"])
-        for name in ("A_IB", "B_r_IB"))
+def _same_pose(bodies, mine):
+    return all(close(theirs[name], ours.get(name), EXACT) for theirs, ours in zip(bodies, mine)
+               for name in ("A_IB", "B_r_IB"))
 
 
 @check(2, title="the walker at the sheet's test state q = (-30 deg, +60 deg), qd = (-0.5, +1), qdd = 0: velocities, "
        "accelerations and Jacobians of both legs", stage=STAGE_VALUES, group="walker")
 def check_sheet(ctx):
-    from reference.problem_33 import Q, QD, QDD
-
-    got = ctx.student("problem_33.walker", Q, QD, QDD)
-    expected = ctx.reference("problem_33.walker", Q, QD, QDD)
+    case = _walker(ctx)
+    values = case["q"], case["qd"], case["qdd"]
+    mistakes = candidates(ctx, case["description"], *values, models=WALKER_MODELS)
+    got = ctx.student("problem_33.walker", *values)
+    expected = ctx.reference("problem_33.walker", *values)
     drawing = configuration_figure("Problem 33: the walker at the test state", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=candidates(_walker(), Q, QD, QDD, models=WALKER_MODELS),
-                   context="(the sheet's test state)")
+    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test state)")
 
 
 @check(1, title="the stance foot rolls without slipping: the foot's point on the ground is at rest and accelerates "
        "straight up by r omega^2", stage=STAGE_STRUCTURE, group="no_slip")
 def check_no_slip(ctx):
-    from reference.problem_25 import FOOT_RADIUS
+    case = _walker(ctx)
+    description, radius = case["description"], case["foot_radius"]
 
     def compare(got, expected, args):
-        q = args[0]
-        v, a, w = _contact(got, q)
-        expected_a = np.array([0.0, FOOT_RADIUS * w[2] ** 2, 0.0])
+        q, names = args[0], expected["names"]
+        known = candidates(ctx, description, *args, models=WALKER_MODELS)
+        mine = bodies_of(got, names)
+        v, a, w = _contact(mine, names, q, radius)
+        expected_a = np.array([0.0, radius * w[2] ** 2, 0.0])
         if close(v, np.zeros(3), NO_SLIP) and close(a, expected_a, NO_SLIP):
             return
-        mistaken = [(name, hint, _contact(state, q)) for name, hint, state in
-                    candidates(_walker(), *args, models=WALKER_MODELS)()
-                    if name == "rolling_sign" and _same_pose(state, got)]
+        mistaken = [(name, hint, _contact(bodies, names, q, radius)) for name, hint, bodies in known
+                    if name == "rolling_sign" and _same_pose(bodies, mine)]
         assert_close(v, np.zeros(3), "the velocity of the stance foot's contact point", NO_SLIP,
                      [Mistake(name, c[0], hint) for name, hint, c in mistaken],
                      context="(rolling without slipping)",
@@ -124,4 +121,4 @@ def check_path(ctx):
 @check(2, title="random trees with rolling contacts: velocities, accelerations and Jacobians of every body",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")

@@ -10,7 +10,6 @@ from ._trees import (
     compare_states,
     compare_trees,
     configuration_figure,
-    describe_tree,
     tree_comparison,
 )
 
@@ -23,16 +22,15 @@ FRAME = 90
 @check(2, title="the biped at the 90th frame of its gait: positions, velocities, accelerations and Jacobians of every "
        "body", stage=STAGE_VALUES, group="biped")
 def check_biped(ctx):
-    from reference.problem_34 import build_biped, frame_time, gait
-
-    t = frame_time(FRAME)
+    case = ctx.reference("problem_34.biped_case", FRAME)
+    t = case["t"]
+    mistakes = candidates(ctx, case["description"], case["q"], case["qd"], case["qdd"])
     got = ctx.student("problem_34.biped", t)
     expected = ctx.reference("problem_34.biped", t)
     drawing = configuration_figure(f"Problem 34: the biped at frame {FRAME} (t = {t:g} s)", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=candidates(describe_tree(build_biped()), *gait(t)),
-                   context=f"(frame {FRAME}, t = {t:g} s)")
+    compare_states(got, expected, mistakes=mistakes, context=f"(frame {FRAME}, t = {t:g} s)")
 
 
 @check(1, title="the Jacobians of random trees with translational and virtual 3-DOF joints are the derivatives of "
@@ -50,4 +48,4 @@ def check_path(ctx):
 @check(3, title="random trees with translational and virtual 3-DOF joints: the state of every body, in recursion "
        "order", stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")

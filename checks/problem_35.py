@@ -5,12 +5,17 @@ import numpy as np
 
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
 
+from ._shapes import as_dict, as_list
+
 TITLE = "Specific Joint Functions"
 
 NQ = {"rotational": 1, "translational": 1, "virtual_3dof": 3, "rolling_contact": 1}
 NAMES = {"rotational": "(a) rotational", "translational": "(b) translational", "virtual_3dof": "(c) 3-DOF",
          "rolling_contact": "(d) rolling contact"}
 VECTORS = ("Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "omega_rel", "omega_rel_dot")
+KEYS = ("A_DpDs", *VECTORS, "S", "R")
+#: the entries that change sign when the circle rolls the wrong way (Dp_r_DpDs = (+r gamma, 0, 0))
+ROLLING_WRONG_WAY = ("Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "S")
 POINTS = 6
 
 SIGN_HINT = ("omega_rel comes from skew(omega_rel) = dA_DpDs/dt @ A_DpDs.T, read back as (W[2,1], W[0,2], W[1,0]); "
@@ -30,39 +35,18 @@ def _points(ctx, kind):
              "r": float(rng.uniform(0.1, 2.0))} for _ in range(POINTS)]
 
 
-def _numeric(kind, point, rolling=None):
-    """The reference's joint function at ``point`` as a dict like the student's (``rolling``: a rolling-contact
-    class to use instead of the reference's)."""
-    from probes._trees import CLASSES
-    from reference import tree
-
-    cls = rolling or getattr(tree, CLASSES[kind])
-    extra = {"r": point["r"]} if kind == "rolling_contact" else {}
-    joint = cls(tree.Body("P"), tree.Body("S"), q_index=list(range(NQ[kind])), **extra)
-    A_DpDs, r_rel = joint.joint_pose(point["q"])
-    rel = joint.joint_motion(point["q"], point["qd"], point["qdd"])
-    return {"A_DpDs": A_DpDs, "Dp_r_DpDs": r_rel, **{name: getattr(rel, name) for name in VECTORS[1:]},
-            "S": rel.S, "R": rel.R}
-
-
-def _rolling_wrong_way():
-    from reference.tree import RollingContactJoint
-
-    from ._trees import RollingWrongWay
-
-    return type("RollingContactJoint", (RollingWrongWay, RollingContactJoint), {})
-
-
 def _evaluate(ctx, kind, points):
-    got = ctx.student("problem_35.joint_function", kind, points)
-    for name, problem in got["problems"].items():
+    got = as_dict(ctx.student("problem_35.joint_function", kind, points), f"the reply for {kind}_joint_function()",
+                  ("problems", "values"))
+    for name, problem in as_dict(got["problems"], f"the problems of {kind}_joint_function()").items():
         what = f"{kind}_joint_function() has no entry {name!r}" if problem == "missing" else (
             f"{name} of {kind}_joint_function() {problem}: it must depend on q, qd, qdd"
             f"{' and r' if kind == 'rolling_contact' else ''} only")
         fail(f"{what}, so it cannot be evaluated.",
              "Use the symbols of the dict's q, qd, qdd (and r): derivatives d_<name>, dd_<name> are in qd, qdd.",
              "free_symbols" if problem != "missing" else "missing")
-    return got["values"]
+    values = as_list(got["values"], f"the values of {kind}_joint_function() at the {len(points)} points", len(points))
+    return [as_dict(value, f"{kind}_joint_function() at a point", KEYS) for value in values]
 
 
 def _entries(values, kind):
@@ -96,10 +80,10 @@ def _subspaces(ctx, kind):
                      note="R is the motion subspace of the rotation: omega_rel = R qd, R = d omega_rel / d qd.")
 
 
-def _mistakes(kind, point, name, target):
+def _mistakes(kind, name, target):
     found = []
     if kind == "rolling_contact":
-        found.append(Mistake("rolling_sign", _numeric(kind, point, _rolling_wrong_way())[name], ROLLING_HINT))
+        found.append(Mistake("rolling_sign", -target if name in ROLLING_WRONG_WAY else target, ROLLING_HINT))
     if name in ("omega_rel", "omega_rel_dot", "R"):
         found.append(Mistake("sign_flip", -target, SIGN_HINT))
     if name in ("r_rel_ddot", "omega_rel_dot"):
@@ -111,12 +95,12 @@ def _mistakes(kind, point, name, target):
 
 def _values(ctx, kind):
     points = _points(ctx, kind)
-    for point, values in zip(points, _evaluate(ctx, kind, points)):
-        expected = _numeric(kind, point)
+    numeric = ctx.reference("problem_35.numeric_joint_function", kind, points)
+    for point, values, expected in zip(points, _evaluate(ctx, kind, points), numeric):
         for name, value in _entries(values, kind).items():
             target = np.asarray(expected[name], dtype=float)
             if not close(value, target, EXACT):
-                assert_close(value, target, f"{name} {_at(point, kind)}", EXACT, _mistakes(kind, point, name, target),
+                assert_close(value, target, f"{name} {_at(point, kind)}", EXACT, _mistakes(kind, name, target),
                              context=f"(the reference's {kind} joint function; seed {ctx.seed})")
 
 

@@ -1,5 +1,10 @@
 """Checks of problem 36: the class hierarchy, the predicted output of PART I and PART II (answers.toml), and the
-port that prints them; the free-text questions (a) and (c) are scored by hand."""
+port that prints them; the free-text questions (a) and (c) are scored by hand.
+
+Every check is secret: the hierarchy is the answer of (a) (a fixed pair of arrows), the predictions' key is the
+output itself, and the ports are compared with the same output, so recording any of them in the student kit would
+hand out a key.
+"""
 
 from grader.checking import STAGE_VALUES, Mistake, check
 
@@ -47,7 +52,7 @@ def _has_a(got, expected):
 
 
 @check(1, title="[problem_36] hierarchy: TweedleDum and TweedleDee and their base class", stage=STAGE_VALUES,
-       group="hierarchy")
+       group="hierarchy", secret=True)
 def check_hierarchy(ctx):
     got = diagram_pairs(ctx.answer("hierarchy"), "answers.toml [problem_36] hierarchy")
     expected = {tuple(pair) for pair in ctx.reference("problem_36.class_hierarchy")}
@@ -69,21 +74,21 @@ def _port(ctx, part):
                      _mistakes(part, expected), ORDER_HINTS[part])
 
 
-@check(2, title="[problem_36] part1 is what PART I prints", stage=STAGE_VALUES, group="part1")
+@check(2, title="[problem_36] part1 is what PART I prints", stage=STAGE_VALUES, group="part1", secret=True)
 def check_part1(ctx):
     _prediction(ctx, "part1", "PART I")
 
 
-@check(2, title="[problem_36] part2 is what PART II prints", stage=STAGE_VALUES, group="part2")
+@check(2, title="[problem_36] part2 is what PART II prints", stage=STAGE_VALUES, group="part2", secret=True)
 def check_part2(ctx):
     _prediction(ctx, "part2", "PART II")
 
 
-@check(1, title="the port part1() prints what PART I prints", stage=STAGE_VALUES, group="port1")
+@check(1, title="the port part1() prints what PART I prints", stage=STAGE_VALUES, group="port1", secret=True)
 def check_port_part1(ctx):
     _port(ctx, "part1")
 
 
-@check(1, title="the port part2() prints what PART II prints", stage=STAGE_VALUES, group="port2")
+@check(1, title="the port part2() prints what PART II prints", stage=STAGE_VALUES, group="port2", secret=True)
 def check_port_part2(ctx):
     _port(ctx, "part2")

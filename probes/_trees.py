@@ -24,7 +24,9 @@ __all__ = [
     "build",
     "state",
     "outline",
+    "describe",
     "tree_state",
+    "mistaken_states",
     "jacobian_differences",
     "path_differences",
 ]
@@ -86,6 +88,24 @@ def build(tree, description):
     return tree.KinematicTree(bodies[0])
 
 
+def describe(tree_module, tree):
+    """The plain-data description of a built tree (the inverse of ``build``) whose joints are of the joint types of
+    ``tree_module``."""
+    kinds = {getattr(tree_module, name): kind for kind, name in CLASSES.items()}
+    index = {id(body): k for k, body in enumerate(tree.bodies)}
+    joints = []
+    for body in tree.bodies[1:]:
+        joint = body.parent_joint
+        entry = {"kind": kinds[type(joint)], "parent": index[id(joint.predecessor)],
+                 "q_index": [int(i) for i in np.reshape(joint.q_index, -1)]}
+        entry.update({key: np.array(getattr(joint, key), dtype=float)
+                      for key in ("P_r_PDp", "A_PDp", "S_r_SDs", "A_SDs")})
+        if entry["kind"] == "rolling_contact":
+            entry["r"] = float(joint.r)
+        joints.append(entry)
+    return {"bodies": [{"name": body.name, "m": float(body.m)} for body in tree.bodies], "joints": joints}
+
+
 def _plain(value):
     return None if value is None else np.array(value, dtype=float)
 
@@ -141,6 +161,37 @@ def tree_state(pkg, description, q, qd=None, qdd=None):
     tree = build(module(pkg, "tree"), description)
     tree.forward_kinematics(np.asarray(q, dtype=float), *(() if qd is None else (qd, qdd)))
     return state(tree, motion=qd is not None)
+
+
+def _same_bodies(bodies, others):
+    """True if two lists of body states hold the same quantities, equal to 1e-12."""
+    mine = [value for body in bodies for value in body.values()]
+    theirs = [value for body in others for value in body.values()]
+    if len(mine) != len(theirs) or any((a is None) != (b is None) for a, b in zip(mine, theirs)):
+        return False
+    a = np.concatenate([np.ravel(value) for value in mine if value is not None] or [np.zeros(0)])
+    b = np.concatenate([np.ravel(value) for value in theirs if value is not None] or [np.zeros(0)])
+    return a.shape == b.shape and (a.size == 0 or float(np.max(np.abs(a - b))) <= 1e-12)
+
+
+@probe
+def mistaken_states(pkg, specs, description, q, qd=None, qdd=None):
+    """The bodies' states (``state(...)["bodies"]``) of the described tree as a recursion with a known mistake
+    computes them, one per mistake ``spec`` (see ``mistaken_classes`` of the package's ``tree`` module, which only
+    the reference has); ``None`` where the mistake cannot be computed or changes nothing on this tree."""
+    tree_module = module(pkg, "tree")
+    correct = tree_state(pkg, description, q, qd, qdd)["bodies"]
+    found = []
+    for spec in specs:
+        try:
+            tree = build(tree_module.mistaken_classes(spec), description)
+            tree.forward_kinematics(np.asarray(q, dtype=float), *(() if qd is None else (qd, qdd)))
+        except (ValueError, IndexError, np.linalg.LinAlgError):
+            found.append(None)
+            continue
+        bodies = state(tree, motion=qd is not None)["bodies"]
+        found.append(None if _same_bodies(bodies, correct) else bodies)
+    return found
 
 
 @probe

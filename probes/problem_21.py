@@ -25,3 +25,28 @@ def jacobian_and_steps(pkg, case, q, d, h):
     q = np.asarray(q, dtype=float)
     steps = h * np.eye(q.size)
     return {"J": J(q, d), "plus": [f(q + e, d) for e in steps], "minus": [f(q - e, d) for e in steps]}
+
+
+def _complex_step(f, q):
+    """Jacobian of ``f`` at ``q`` by complex steps (exact to rounding)."""
+    q = np.asarray(q, dtype=float)
+    return np.column_stack([np.imag(f(q + 1e-30j * e)) / 1e-30 for e in np.eye(q.size)])
+
+
+@probe
+def mistakes(pkg, q, d):
+    """What ``chain_a`` / ``chain_b`` (by the length of ``q``) and their Jacobians give with each known mistake
+    (``mistaken_layout``, which only the reference has): ``{"chain": {mistake: x}, "jacobian": {mistake: J}}``."""
+    planar = module(pkg, "planar")
+    return {
+        "chain": {mistake: planar.mistaken_layout(q, d, mistake) for mistake in planar.ARM_MISTAKES},
+        "jacobian": {mistake: _complex_step(lambda p, mistake=mistake: planar.mistaken_layout(p, d, mistake), q)
+                     for mistake in planar.ARM_MISTAKES},
+    }
+
+
+@probe
+def sheet_case(pkg):
+    """Case (2) of the sheet with ``q_b``: the joint coordinates, ``d`` and the printed end-effector pose."""
+    p21 = module(pkg, "problem_21")
+    return {"q_b": p21.CASES[2][1], "d": p21.D, "target": p21.TARGET_END_EFFECTOR_CASE_2}

@@ -24,9 +24,29 @@ def points(pkg, q):
 
 
 @probe
+def mistakes(pkg, q, d):
+    """The arm with each known mistake (``mistaken_walk``, which only the reference has): ``{mistake: {"points":
+    [(x_k, y_k, g_(k-1), g_k) for k = 1..n], "end": (xe, ye, g_n)}}``."""
+    planar = module(pkg, "planar")
+    found = {}
+    for mistake in planar.ARM_MISTAKES:
+        points, end = planar.mistaken_walk(q, d, mistake)
+        found[mistake] = {"points": points, "end": end}
+    return found
+
+
+@probe
+def sheet_case(pkg):
+    """The sheet's case q3 (corrected in the problem data), ``d`` and the printed end-effector pose."""
+    p22 = module(pkg, "problem_22")
+    return {"q": p22.joint_vector("q3"), "d": p22.D, "target": p22.TARGET_Q3}
+
+
+@probe
 def nesting(pkg, call, q, d):
     """Run ``point_k(q, n)`` or ``end_effector_recursive(q, d)`` and report the deepest nesting of one function of
-    the package: ``{"depth": calls of that function active at once, "function": its name}``.
+    the package and what the call returned: ``{"depth": calls of that function active at once, "function": its
+    name, "value": the result}``.
 
     A function that calls itself (directly, or through the module's global name) has several frames of its code
     alive at once; a loop has one.
@@ -51,12 +71,12 @@ def nesting(pkg, call, q, d):
     sys.setprofile(watch)
     try:
         if call == "point_k":
-            planar.point_k(q, len(q) // 2)
+            value = planar.point_k(q, len(q) // 2)
         else:
-            planar.end_effector_recursive(q, d)
+            value = planar.end_effector_recursive(q, d)
     finally:
         sys.setprofile(previous)
     if not deepest:
-        return {"depth": 0, "function": ""}
+        return {"depth": 0, "function": "", "value": value}
     code = max(deepest, key=deepest.get)
-    return {"depth": deepest[code], "function": code.co_name}
+    return {"depth": deepest[code], "function": code.co_name, "value": value}

@@ -17,3 +17,10 @@ def pendulum(pkg, q):
 @probe
 def tree_poses(pkg, description, q):
     return _trees.tree_state(pkg, description, q)
+
+
+@probe
+def pendulum_case(pkg):
+    """The sheet's case: the triple pendulum as a plain-data description and the test configuration ``Q``."""
+    p24 = module(pkg, "problem_24")
+    return {"description": _trees.describe(module(pkg, "tree"), p24.build_triple_pendulum()), "q": p24.Q}

@@ -57,3 +57,25 @@ def symbolic(pkg, points, h):
         result["plus"].append([x_at(point + h * e) for e in np.eye(2)])
         result["minus"].append([x_at(point - h * e) for e in np.eye(2)])
     return result
+
+
+@probe
+def walker_case(pkg):
+    """The walker of ``build_walker`` as a plain-data description, and part (c)'s configuration."""
+    p25 = module(pkg, "problem_25")
+    return {"description": _trees.describe(module(pkg, "tree"), p25.build_walker()), "alpha_c": p25.ALPHA_C,
+            "gamma_c": p25.GAMMA_C}
+
+
+@probe
+def leg_jacobians(pkg, alpha, gamma):
+    """Rows ``I_J_S[0:2]`` and ``I_J_R[2]`` of each leg's Jacobians at ``q = (alpha, gamma)`` (6 x 2), the
+    Jacobian of ``x = (x_st, y_st, gamma_st, x_sw, y_sw, gamma_sw)``."""
+    tree = module(pkg, "problem_25").build_walker()
+    tree.forward_kinematics(np.array([alpha, gamma], dtype=float), np.zeros(2))
+    rows = []
+    for name in ("stance_leg", "swing_leg"):
+        body = tree[name]
+        A_IB = np.asarray(body.A_IB, dtype=float)
+        rows += [(A_IB @ body.B_J_S)[:2], (A_IB @ body.B_J_R)[2:]]
+    return np.vstack(rows)

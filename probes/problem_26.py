@@ -25,3 +25,22 @@ def jacobian_and_steps(pkg, beta, phi, l1, l2, l3, h):
         "plus": [p26.position(beta + db, phi + dp, l1, l2, l3) for db, dp in steps],
         "minus": [p26.position(beta - db, phi - dp, l1, l2, l3) for db, dp in steps],
     }
+
+
+def _complex_step(f, q):
+    """Jacobian of ``f`` at ``q`` by complex steps (exact to rounding)."""
+    q = np.asarray(q, dtype=float)
+    return np.column_stack([np.imag(f(q + 1e-30j * e)) / 1e-30 for e in np.eye(q.size)])
+
+
+@probe
+def mistakes(pkg, beta, phi, l1, l2, l3):
+    """What the seat's position and its Jacobian are with each known mistake (``mistaken_position``, which only
+    the reference has): ``{"position": {mistake: x}, "jacobian": {mistake: J}}``."""
+    p26 = module(pkg, "problem_26")
+    found = {"position": {}, "jacobian": {}}
+    for mistake in p26.POSITION_MISTAKES:
+        found["position"][mistake] = p26.mistaken_position(beta, phi, l1, l2, l3, mistake)
+        found["jacobian"][mistake] = _complex_step(
+            lambda q, mistake=mistake: p26.mistaken_position(*q, l1, l2, l3, mistake), (beta, phi))
+    return found

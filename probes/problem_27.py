@@ -41,3 +41,16 @@ def bias_acceleration_residuals(pkg):
 @probe
 def answers(pkg):
     return module(pkg, "problem_27").answers()
+
+
+@probe
+def options(pkg):
+    """The options of (a), (b) and (d) as typed from the sheet, and the restated geometry of (a)."""
+    p27 = module(pkg, "problem_27")
+    return {
+        "a": p27.OPTIONS_A,
+        "b": {option: {"derivative": derivative, "kind": kind} for option, (derivative, kind) in p27.OPTIONS_B.items()},
+        "d": p27.OPTIONS_D,
+        "geometry": {"joint_1": p27.JOINT_1, "axis_2": p27.AXIS_2, "joint_3": p27.JOINT_3,
+                     "end_effector": p27.END_EFFECTOR},
+    }

@@ -11,3 +11,11 @@ def pendulum(pkg, q, qd, qdd):
     tree = module(pkg, "problem_24").build_triple_pendulum()
     tree.forward_kinematics(*(np.asarray(v, dtype=float) for v in (q, qd, qdd)))
     return {**_trees.state(tree), "outline": _trees.outline(tree)}
+
+
+@probe
+def pendulum_case(pkg):
+    """The sheet's test case: the triple pendulum as a plain-data description, ``Q``, ``QD`` and ``QDD``."""
+    p31 = module(pkg, "problem_31")
+    tree = module(pkg, "problem_24").build_triple_pendulum()
+    return {"description": _trees.describe(module(pkg, "tree"), tree), "q": p31.Q, "qd": p31.QD, "qdd": p31.QDD}

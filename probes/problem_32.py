@@ -51,3 +51,10 @@ def torques(pkg, qs):
     p32 = module(pkg, "problem_32")
     tree = p32.build_robot()
     return [p32.gravity_compensation(tree, q) for q in np.asarray(qs, dtype=float)]
+
+
+@probe
+def robot_case(pkg):
+    """The arm of ``build_robot`` as a plain-data description, and the start of the end effector's path."""
+    p32 = module(pkg, "problem_32")
+    return {"description": _trees.describe(module(pkg, "tree"), p32.build_robot()), "x_start": p32.X_START}

@@ -11,3 +11,14 @@ def biped(pkg, t):
     tree = p34.build_biped()
     tree.forward_kinematics(*p34.gait(t))
     return {**_trees.state(tree), "outline": _trees.outline(tree, tree["main_body"])}
+
+
+@probe
+def biped_case(pkg, frame):
+    """The biped of ``build_biped`` as a plain-data description, the time of the gait's ``frame`` and ``gait(t)``
+    there (``q``, ``qd``, ``qdd``)."""
+    p34 = module(pkg, "problem_34")
+    t = p34.frame_time(frame)
+    q, qd, qdd = p34.gait(t)
+    return {"description": _trees.describe(module(pkg, "tree"), p34.build_biped()), "t": t, "q": q, "qd": qd,
+            "qdd": qdd}

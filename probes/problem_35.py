@@ -44,3 +44,22 @@ def joint_function(pkg, kind, points):
         args = [*point["q"], *point["qd"], *point["qdd"], *([point["r"]] if kind == "rolling_contact" else [])]
         values.append({name: np.array(f(*args), dtype=float) for name, f in functions.items()})
     return {"problems": problems, "values": values}
+
+
+@probe
+def numeric_joint_function(pkg, kind, points):
+    """The package's numeric joint function of ``kind`` (the joint class of its ``tree`` module) at every point, as
+    dicts with the entries of ``KEYS`` (vectors as 3-vectors)."""
+    from ._trees import CLASSES
+
+    tree = module(pkg, "tree")
+    values = []
+    for point in points:
+        nq = len(point["q"])
+        extra = {"r": point["r"]} if kind == "rolling_contact" else {}
+        joint = getattr(tree, CLASSES[kind])(tree.Body("P"), tree.Body("S"), q_index=list(range(nq)), **extra)
+        A_DpDs, r_rel = joint.joint_pose(np.asarray(point["q"], dtype=float))
+        rel = joint.joint_motion(*(np.asarray(point[key], dtype=float) for key in ("q", "qd", "qdd")))
+        values.append({"A_DpDs": A_DpDs, "Dp_r_DpDs": r_rel, "r_rel_dot": rel.r_rel_dot, "r_rel_ddot": rel.r_rel_ddot,
+                       "omega_rel": rel.omega_rel, "omega_rel_dot": rel.omega_rel_dot, "S": rel.S, "R": rel.R})
+    return values

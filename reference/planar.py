@@ -129,3 +129,53 @@ def end_effector_recursive(q, d):
     x, y, gamma = point_k(q, q.size // 2)
     return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), gamma])
     # END SOLUTION
+# BEGIN REFERENCE ONLY
+
+
+# The arm with a known mistake switched on, for the grader's diagnoses only (reached through the probes of
+# problems 21 and 22, never shipped to students).  Complex ``q`` is kept, for complex-step derivatives.
+
+#: mistakes of ``mistaken_walk``
+ARM_MISTAKES = ("degrees", "horizontal", "horizontal_all", "horizontal_offset", "joint_order", "no_final_link")
+
+
+def _direction(gamma, mistake=None):
+    """Unit vector of a segment of orientation ``gamma``, as the sheet defines it or as a mistake reads it."""
+    if mistake in ("horizontal", "horizontal_all"):
+        return np.array([np.cos(gamma), np.sin(gamma)])
+    return np.array([-np.sin(gamma), np.cos(gamma)])
+
+
+def mistaken_walk(q, d, mistake=None):
+    """The 2n-joint arm with ``mistake`` applied: ``(points, end)``, ``points[k-1] = (x_k, y_k, g_{k-1}, g_k)``
+    for ``k = 1..n`` and ``end = (xe, ye, g_n)``.
+
+    Mistakes: ``degrees`` (radians read as degrees), ``horizontal`` (segments along (cos g, sin g) after the
+    vertical first one), ``horizontal_all`` (every segment along (cos g, sin g)), ``horizontal_offset`` (right
+    positions, orientations from the horizontal: +90 deg), ``joint_order`` (each segment after its own rotation),
+    ``no_final_link`` (d left out).
+    """
+    pairs = np.asarray(q).reshape(-1, 2)
+    if mistake == "degrees":
+        pairs = pairs * np.array([1.0, np.pi / 180.0])
+    offset = np.pi / 2 if mistake == "horizontal_offset" else 0.0
+    point, gamma, points = np.zeros(2), 0.0, []
+    for k, (length, turn) in enumerate(pairs):
+        before = gamma
+        if mistake == "joint_order":
+            gamma = gamma + turn
+        along = np.array([0.0, 1.0]) if k == 0 and mistake == "horizontal" else _direction(gamma, mistake)
+        point = point + length * along
+        if mistake != "joint_order":
+            gamma = gamma + turn
+        points.append(np.array([*point, before + offset, gamma + offset]))
+    link = 0.0 if mistake == "no_final_link" else d
+    return points, np.array([*(point + link * _direction(gamma, mistake)), gamma + offset])
+
+
+def mistaken_layout(q, d, mistake=None):
+    """``x_a`` / ``x_b`` of problem 21 with ``mistake`` applied: each point with the orientation of the segment
+    arriving there, then the end effector."""
+    points, end = mistaken_walk(q, d, mistake)
+    return np.concatenate([*(p[:3] for p in points), end])
+# END REFERENCE ONLY

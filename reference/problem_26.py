@@ -33,3 +33,23 @@ def jacobian(beta, phi, l1, l2, l3):
         ]
     )
     # END SOLUTION
+# BEGIN REFERENCE ONLY
+
+
+#: mistakes of ``mistaken_position``
+POSITION_MISTAKES = ("beta_sin_cos", "phi_sin_cos", "sign_flip", "radius", "degrees")
+
+
+def mistaken_position(beta, phi, l1, l2, l3, mistake=None):
+    """The seat's position with ``mistake`` applied, for the grader's diagnoses only (complex arguments are kept,
+    for complex-step derivatives): ``beta_sin_cos``, ``phi_sin_cos`` (sin and cos swapped), ``sign_flip`` (the
+    chain hanging up), ``radius`` (the arm l2 left out), ``degrees`` (the angles read as degrees)."""
+    if mistake == "degrees":
+        beta, phi = beta * np.pi / 180.0, phi * np.pi / 180.0
+    reach, drop = (l3 * np.cos(phi), l3 * np.sin(phi)) if mistake == "phi_sin_cos" else (
+        l3 * np.sin(phi), l3 * np.cos(phi))
+    radius = reach if mistake == "radius" else l2 + reach
+    height = l1 + drop if mistake == "sign_flip" else l1 - drop
+    across, along = (np.cos(beta), np.sin(beta)) if mistake == "beta_sin_cos" else (np.sin(beta), np.cos(beta))
+    return np.array([radius * across, height, radius * along])
+# END REFERENCE ONLY

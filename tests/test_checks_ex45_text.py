@@ -80,3 +80,10 @@ def test_mistakes_by_text_and_by_predicate():
 def test_no_diagnosis_without_a_match():
     exc = failure("Rainbow:\nred\nblue", mistakes=[Mistake("leaf", lambda got, expected: "green" in got, "")])
     assert (exc.diagnosis, exc.hint) == ("", "")
+
+
+@pytest.mark.parametrize("got", [None, ["Rainbow:", "red", "yellow"], 3])
+def test_a_reply_that_is_not_text_fails_as_the_students(got):
+    exc = failure(got)
+    assert exc.message.startswith("Your output must be text, got a value of type")
+    assert exc.diagnosis == "format"
