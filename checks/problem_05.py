@@ -5,8 +5,6 @@ the bodies, joints and the link of the broken one, and add only a small mass.  T
 fix and the question of energy are read and scored by hand.
 """
 
-import numpy as np
-
 from grader.checking import STAGE_DEFINED, STAGE_STRUCTURE, Tol, assert_close, check, fail
 
 from ._mujoco import model_of, reference_of
@@ -46,5 +44,3 @@ def check_fixed_minimal(ctx):
              f"at most {SMALL:g} of the link's {link['mass']:.3g} kg, repairs the model without changing its motion "
              "much.", "Give the massless body a small <inertial> (mass and diaginertia), or a small geom.",
              "mass_not_small")
-    if np.any(np.asarray(carrier["inertia"]).diagonal() <= 0):
-        fail("the body of the revolute joint needs a positive inertia as well.", "", "no_inertia")

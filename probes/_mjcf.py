@@ -123,7 +123,7 @@ def _integrator(model):
     import mujoco
 
     try:
-        return mujoco.mjtIntegrator(int(model.opt.integrator)).name.removeprefix("mjINT_")
+        return mujoco.mjtIntegrator(int(model.opt.integrator)).name.removeprefix("mjINT_").lower()
     except ValueError:
         return str(int(model.opt.integrator))
 

@@ -17,7 +17,7 @@ configuration, in which the linkage stays at rest (at least initially).  (c) Wit
 
 import numpy as np
 
-from .mjcf import LENGTH, number, vector
+from .mjcf import LENGTH, vector
 
 __all__ = [
     "FIXED_POINT",
