@@ -91,6 +91,7 @@ def load(xml):
     except ImportError as exc:
         raise ModelRefused(f"MuJoCo does not import here ({exc}): install it with `pip install mujoco` "
                            "(grade problem-1 checks the installation)") from None
+    _quiet(mujoco)
     try:
         model = mujoco.MjModel.from_xml_string(xml)
     except Exception as exc:  # noqa: BLE001 - MuJoCo's compile errors are the student's: report them
@@ -103,6 +104,16 @@ def load(xml):
         mujoco.mj_resetDataKeyframe(model, data, 0)
     mujoco.mj_forward(model, data)
     return model, data
+
+
+#: MuJoCo's warnings of this process (it would otherwise print them and append them to MUJOCO_LOG.TXT)
+WARNINGS: list = []
+
+
+def _quiet(mujoco) -> None:
+    """Collect MuJoCo's warnings in ``WARNINGS`` instead of letting it write a log file into the working directory."""
+    if hasattr(mujoco, "set_mju_user_warning"):
+        mujoco.set_mju_user_warning(lambda text: WARNINGS.append(str(text)[:300]) if len(WARNINGS) < 20 else None)
 
 
 def guarded(build):
@@ -267,6 +278,8 @@ def run(model, data, duration, sample, control=None) -> dict:
         if k % 50 == 49 or k == steps - 1:
             if np.any(data.warning.number) or not (np.all(np.isfinite(data.qpos)) and np.all(np.isfinite(data.qvel))):
                 reason = ", ".join(f"{name} x{n}" for name, n in _warnings(data).items()) or "NaN or infinite state"
+                if WARNINGS:
+                    reason += f"; {WARNINGS[-1]}"
                 diverged = {"time": float(data.time), "reason": reason}
                 break
         while crossing and nxt < len(times) and data.time >= times[nxt] - 1e-9:
