@@ -29,7 +29,7 @@ def test_hostile_submission(name, kind, tmp_path):
         pytest.skip("only a file-system sandbox can hide the reference's files; reports flag plain processes")
     submission = build_hostile(name, tmp_path / "pkg")
     start = time.monotonic()
-    report = grade_problem(6, submission, seed=7, limits=LIMITS, mode=_mode(kind))
+    report = grade_problem(expect.get("problem", 6), submission, seed=7, limits=LIMITS, mode=_mode(kind))
     elapsed = time.monotonic() - start
     by_id = {r.check_id: r for r in report.results}
     statuses = expect["status"] if isinstance(expect["status"], list) else [expect["status"]]
