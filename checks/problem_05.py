@@ -30,7 +30,7 @@ def check_fixed_loads(ctx):
        "tenth of the link's) where one was missing", stage=STAGE_STRUCTURE, group="fixed")
 def check_fixed_minimal(ctx):
     got = model_of(ctx.student("problem_05.fixed"), "fixed_model()")
-    ref = reference_of(ctx.reference("problem_05.fixed"), "fixed model")
+    ref = reference_of(ctx.reference("problem_05.fixed", persist=True), "fixed model")
     kinds, expected_kinds = [j["type"] for j in got["joints"]], [j["type"] for j in ref["joints"]]
     if kinds != expected_kinds:
         fail(f"fixed_model() has the joints {kinds}; the broken model has {expected_kinds}.",

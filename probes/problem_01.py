@@ -2,7 +2,7 @@
 
 from . import _mjcf, module, probe
 
-#: the smallest model that exercises MuJoCo: one hinged link falling under gravity
+#: the smallest model that exercises MuJoCo: one hinged link falling under gravity (problem 2b's pendulum)
 TINY_MODEL = """<mujoco model="tiny">
   <option gravity="0 -9.81 0" timestep="0.001" integrator="RK4"/>
   <worldbody>
