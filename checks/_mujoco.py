@@ -105,11 +105,12 @@ def body_of(desc, joint):
     return desc["bodies"][int(joint["body"]) - 1]
 
 
-def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis=""):
+def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", note=""):
     """Fail at the first sample with ``t <= window`` where a student's trace leaves the reference's.
 
     ``got`` and ``expected`` map a label (e.g. "q2 [rad]") to a 1-D trace on the times ``t``; ``tols`` maps the same
-    labels to a tolerance.  The message names the time and the trace, and lists the samples around it.
+    labels to a tolerance.  The message names the time and the trace (then ``note``: why the window ends where
+    it does), and lists the samples around it.
     """
     t = np.asarray(t, dtype=float)
     inside = t <= window + 1e-9
@@ -130,6 +131,7 @@ def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis=""):
         rows.append(f"  {t[i]:>9.2f}  {cells}{mark}")
     lines = [
         f"{label} {what} leaves the reference's at t = {t[first]:.2f} s (compared over 0 to {window:.2f} s).",
+        *([note] if note else []),
         f"tolerance: {tols[label]}",
         *rows,
     ]

@@ -83,7 +83,8 @@ def _inertia_mistakes(custom, density):
     """Known mistakes in a brick's custom inertia, from the reference's values."""
     m, com, I = custom["mass"], np.asarray(custom["com"]), np.asarray(custom["inertia"])
     return {
-        "one_third": ("The moments of a brick about its CENTRE are m/12 (...); m/3 is the moment about an end.",
+        "one_third": ("The moments of a brick about its CENTRE are m/12 (W^2 + H^2, L^2 + H^2, L^2 + W^2); m/3 (...) "
+                      "is the moment about an end.",
                       {"mass": m, "com": com, "inertia": 4 * I}),
         "about_the_joint": ("The inertia is about the centre of mass (MuJoCo's <inertial> takes it there), not "
                             "about the joint: drop the m (L/2)^2 terms.",
@@ -203,15 +204,15 @@ def _chaos_traces(ctx, variant, title):
     tols = {"q1 [rad]": ANGLE, "q1_dot [rad/s]": RATE_TOL, "q2 [rad]": ANGLE, "q2_dot [rad/s]": RATE_TOL}
     why = ""
     if horizon < duration:
-        why = (f" The double pendulum is chaotic: the reference's own ODE, started {perturbation:g} rad off, parts "
+        why = (f"The double pendulum is chaotic: the reference's own ODE, started {perturbation:g} rad off, parts "
                f"from itself by more than the tolerance after {horizon:.2f} s, so only the first {horizon:.2f} s "
                "can tell a wrong model from rounding (the sheet compared five seconds by eye).")
     coarse = got["integrator"] != "rk4"
     hint = (f"Your model integrates with {got['integrator']} at {got['timestep'] * 1000:g} ms, too coarse for a "
             'chaotic motion: declare <option integrator="RK4" timestep="0.001"/>.' if coarse else
             "The checks of what the model declares (above) name the likely cause.")
-    compare_traces(expected["t"], mine, ref, tols, horizon, f"of {VARIANTS[variant]}",
-                   hint + why, "integrator" if coarse else "")
+    compare_traces(expected["t"], mine, ref, tols, horizon, f"of {VARIANTS[variant]}", hint,
+                   "integrator" if coarse else "", note=why)
 
 
 @check(2, title="3(a): both joints' angles and rates follow the reference up to the chaos horizon",
