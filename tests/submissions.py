@@ -4,7 +4,7 @@
 * planted mistakes: ``tests/planted/problem_NN.toml`` lists ``[[mistake]]`` entries, each a text replacement in
   one file of a reference copy, with the check it must fail and the diagnosis and message it must produce.
 * hostile submissions: ``tests/hostile/<name>/`` holds files laid over a reference copy, and ``expect.toml``
-  says what the grader must report:
+  says what the grader must report (on problem 6, or on the problem its ``problem`` names):
 
   - ``status`` (one or a list) of the ``checks`` listed (default: every check that ran), each scoring 0 unless
     the status is "passed"; ``message``: a text of their messages; ``max_score``: a bound of the total;

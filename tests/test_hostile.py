@@ -163,9 +163,10 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch):
     mode = hostile_mode(kind)
     submission = build_hostile(name, tmp_path / "pkg")
     limits = replace(LIMITS, **expect.get("limits", {}))
+    problem = expect.get("problem", 6)
     if kind == "process":
         if refusal() is not None:
-            assert_refused(lambda: grade_problem(6, submission, seed=7, limits=limits, mode=mode))
+            assert_refused(lambda: grade_problem(problem, submission, seed=7, limits=limits, mode=mode))
             return
         if expect.get("other_uid") and os.geteuid() != 0:
             pytest.skip("without bubblewrap and without root, the child runs as the user who runs the tests")
@@ -173,7 +174,7 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch):
     before = set(descendants(os.getpid()))
     try:
         start = time.monotonic()
-        report = grade_problem(6, submission, seed=7, limits=limits, mode=mode)
+        report = grade_problem(problem, submission, seed=7, limits=limits, mode=mode)
         elapsed = time.monotonic() - start
         if expect.get("isolated_only") and not report.isolated and LANDLOCK_FILES not in report.sandbox:
             pytest.skip("only a file-system sandbox (bubblewrap, or Landlock where the kernel has it) hides the "

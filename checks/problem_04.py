@@ -1,0 +1,290 @@
+"""Checks of problem 4: the four-bar linkage, its assembly and its balance.
+
+The assembly must meet a single target and close the loop (on random reachable configurations, whichever
+branch it finds), and refuse over-specified targets and unreachable fixed points with the declared exceptions.
+A balanced configuration is accepted when the loop closes and gravity does no work along the linkage's only
+motion, whichever balanced configuration it is.  The MuJoCo model (inside the sandbox) must close the loop with an
+equality constraint at the fixed point, and its acceleration at rest along that motion must be the reference's
+(projected Newton-Euler, independent of MuJoCo) and vanish in the student's balanced configuration.
+"""
+
+import numpy as np
+from hypothesis import assume
+from hypothesis import strategies as st
+
+from grader.checking import (
+    STAGE_DEFINED,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    EXACT,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    check,
+    fail,
+    figure,
+)
+
+from ._mujoco import DIRECTION, EARTH, HDPE, LENGTH, POSITION, hinges, model_of, student_once
+
+TITLE = "A four-bar linkage: assembly and balance"
+MANUAL = {
+    "a": ("4(a): With state targets on all four joints the model does not run. Explain the error.", 1),
+    "c": ("4(c): With the fixed point at (1, 0, 0) the model cannot be assembled. Why?", 1),
+}
+
+FIXED_POINT = (0.5, 0.0, 0.0)
+UNREACHABLE_POINT = (1.0, 0.0, 0.0)
+#: 4(a): all four joint targets at 0; 4(c): one target (the trapezoid's q1) with the far fixed point
+ALL_ZERO = [0.0, 0.0, 0.0, 0.0]
+ONE_TARGET = [0.72273, None, None, None]
+#: an unbalanced configuration for the model's dynamics: joint 1 at 0.4 rad
+DYNAMICS_TARGETS = [0.4, None, None, None]
+#: the loop closes and the targets are met to the accuracy of a converged Newton solve
+CLOSURE = Tol("loop closure and targets", 1e-6)
+#: gravity's work along the unit motion of the joints, relative to L (0 in static equilibrium)
+BALANCE = Tol("static equilibrium, |d(sum of link heights)/ds| / L", 1e-4)
+#: MuJoCo's acceleration along the linkage's free motion against the reference's
+ALONG = Tol("acceleration along the free motion [rad/s^2]", 1e-3, 1e-3)
+#: at rest in a balanced configuration (about 1e-4 rad from balance gives 0.02 rad/s^2)
+AT_REST = Tol("at rest [rad/s^2]", 0.05)
+FINITE = dict(allow_nan=False, allow_infinity=False)
+ANGLES = st.floats(-np.pi, np.pi, **FINITE)
+
+EXCEPTIONS = {"overconstrained": "OverconstrainedError", "unreachable": "UnreachableError"}
+
+
+def loop_points(q):
+    """Joints 1-3 and the end of link 3 (x, y) for the angles ``q`` (q1, q2, q3 used)."""
+    phi = np.cumsum(np.asarray(q, dtype=float)[:3])
+    return np.vstack([np.zeros(2), np.cumsum(LENGTH * np.stack([np.cos(phi), np.sin(phi)], axis=1), axis=0)])
+
+
+def closure_jacobian(q):
+    phi = np.cumsum(np.asarray(q, dtype=float)[:3])
+    return np.array([[-LENGTH * np.sum(np.sin(phi[j:])) for j in range(3)],
+                     [LENGTH * np.sum(np.cos(phi[j:])) for j in range(3)]])
+
+
+def height_gradient(q):
+    """d/dq of the sum of the three links' centre heights (gravity's potential over m g)."""
+    phi = np.cumsum(np.asarray(q, dtype=float)[:3])
+    grad = np.zeros(3)
+    for i in range(3):
+        arms = np.full(i + 1, LENGTH)
+        arms[i] = LENGTH / 2
+        for j in range(i + 1):
+            grad[j] += np.sum(arms[j:] * np.cos(phi[j: i + 1]))
+    return grad
+
+
+def _wrapped(angle):
+    return float(np.angle(np.exp(1j * angle)))
+
+
+@st.composite
+def reachable_cases(draw):
+    """A configuration drawn at random, its end as the fixed point, and one of its joint angles as the target;
+    away from the singular (stretched or folded) configurations, where the assembly is ill-conditioned."""
+    q = np.array([draw(ANGLES), draw(st.floats(0.4, 2.7, **FINITE)) * draw(st.sampled_from([-1, 1])),
+                  draw(st.floats(0.4, 2.7, **FINITE)) * draw(st.sampled_from([-1, 1]))])
+    joint = draw(st.integers(0, 3))
+    end = loop_points(q)[-1]
+    row = -np.ones(3) if joint == 3 else np.eye(3)[joint]
+    system = np.vstack([closure_jacobian(q), row])
+    assume(0.15 <= np.linalg.norm(end) <= 0.55 and np.linalg.svd(system)[1][-1] > 0.05)
+    targets = [None] * 4
+    targets[joint] = float(q[joint]) if joint < 3 else _wrapped(-np.sum(q))
+    return targets, [float(end[0]), float(end[1]), 0.0]
+
+
+def _describe_targets(targets, point):
+    shown = ", ".join("None" if t is None else f"{t:.6g}" for t in targets)
+    return f"assemble([{shown}], ({point[0]:.6g}, {point[1]:.6g}, {point[2]:.6g}))"
+
+
+def _expect_raise(got, kind, call, reason):
+    name = EXCEPTIONS[kind]
+    if "q" in got:
+        fail(f"{call} returned q = {np.round(np.asarray(got['q'], dtype=float), 6).tolist()} instead of raising "
+             f"{name}: {reason}.", f"Raise problem_04.{name}, with a message that says why.", "no_error")
+    if got["kind"] != kind:
+        fail(f"{call} raised {got['raised']}: {got['message']}\nexpected problem_04.{name}: {reason}.",
+             f"Raise the exception the docstring declares (problem_04.{name}, a subclass of AssemblyError and of "
+             "ValueError), so that a caller can tell the two failures apart.", "wrong_error")
+    if len(got["message"].strip()) < 10:
+        fail(f"{call} raised {name} with the message {got['message']!r}, which does not say why.",
+             f"Name the reason and the numbers, e.g. that {reason}.", "no_message")
+
+
+# ------------------------------------------------------------------------------------ the assembly
+
+
+@check(2, title="4(a): targets on more joints than the one degree of freedom raise OverconstrainedError (all four "
+       "at 0, and random conflicting pairs)", stage=STAGE_VALUES, group="overconstrained")
+def check_overconstrained(ctx):
+    reason = "a four-bar has one degree of freedom, so four targets conflict"
+    _expect_raise(ctx.student("problem_04.assemble", ALL_ZERO, FIXED_POINT), "overconstrained",
+                  _describe_targets(ALL_ZERO, FIXED_POINT), reason)
+
+    def pairs(draw_args):
+        (j, k), (a, b) = draw_args
+        targets = [None] * 4
+        targets[j], targets[k] = a, b
+        return targets, list(FIXED_POINT)
+
+    strategy = st.tuples(st.sampled_from([(0, 1), (0, 2), (1, 3), (2, 3), (0, 3)]),
+                         st.tuples(ANGLES, ANGLES)).map(pairs)
+    ctx.compare_random("problem_04.assemble", strategy, name="assemble(...)", tol=EXACT, examples=5,
+                       compare=lambda got, expected, args: _expect_raise(
+                           got, "overconstrained", _describe_targets(*args),
+                           "two targets on a linkage with one degree of freedom conflict"),
+                       describe=lambda args: _describe_targets(*args))
+
+
+@check(2, title="4(c): a fixed point out of the links' reach raises UnreachableError ((1, 0, 0), and random far "
+       "points)", stage=STAGE_VALUES, group="unreachable")
+def check_unreachable(ctx):
+    reason = "three links of 0.2 m reach at most 0.6 m, and the fixed point is 1 m away"
+    _expect_raise(ctx.student("problem_04.assemble", ONE_TARGET, UNREACHABLE_POINT), "unreachable",
+                  _describe_targets(ONE_TARGET, UNREACHABLE_POINT), reason)
+
+    def far(args):
+        distance, angle, joint, target = args
+        targets = [None] * 4
+        targets[joint] = target
+        return targets, [distance * np.cos(angle), distance * np.sin(angle), 0.0]
+
+    strategy = st.tuples(st.floats(0.62, 2.0, **FINITE), ANGLES, st.integers(0, 3), ANGLES).map(far)
+    ctx.compare_random("problem_04.assemble", strategy, name="assemble(...)", tol=EXACT, examples=5,
+                       compare=lambda got, expected, args: _expect_raise(
+                           got, "unreachable", _describe_targets(*args),
+                           f"the fixed point is {np.linalg.norm(args[1]):.3f} m away, beyond the links' 0.6 m"),
+                       describe=lambda args: _describe_targets(*args))
+
+
+def _assert_assembled(q, targets, point, call):
+    q = as_array(q, f"the angles returned by {call}", (4,))
+    end = loop_points(q)[-1]
+    assert_close(end, np.asarray(point, dtype=float)[:2], f"the end of link 3 for the angles {np.round(q, 6).tolist()} "
+                 f"returned by {call}", CLOSURE, context="(the fixed point: the loop must close)")
+    assert_close(_wrapped(np.sum(q)), 0.0, f"q1 + q2 + q3 + q4 (mod 2 pi) returned by {call}", CLOSURE,
+                 note="q4 is the angle of the world frame relative to link 3, so the four angles add up to 0.")
+    for k, target in enumerate(targets):
+        if target is not None:
+            assert_close(_wrapped(q[k] - target), 0.0, f"q{k + 1} - its target {target:.6g} (mod 2 pi) in {call}",
+                         CLOSURE)
+    return q
+
+
+@check(2, title="4(b): with one target the assembly closes the loop and meets the target (random reachable "
+       "configurations, either branch)", stage=STAGE_RANDOM, group="assembly")
+def check_assembly(ctx):
+    def compare(got, expected, args):
+        targets, point = args
+        call = _describe_targets(targets, point)
+        if "q" not in got:
+            fail(f"{call} raised {got['raised']}: {got['message']}\nbut the linkage can be assembled there (the "
+                 "reference finds a configuration).", "Start Newton's method from several guesses (both branches), "
+                 "and take a least-squares step where the Jacobian is not square.", "not_assembled")
+        _assert_assembled(got["q"], targets, point, call)
+
+    ctx.compare_random("problem_04.assemble", reachable_cases(), name="assemble(...)", tol=EXACT, examples=10,
+                       compare=compare, describe=lambda args: _describe_targets(*args))
+
+
+# ------------------------------------------------------------------------------------ the balanced configuration
+
+
+def _drawing(q):
+    """The links from joint 1 to the end of link 3, then the ground from the fixed point back to joint 1."""
+    points = np.vstack([loop_points(q), np.asarray(FIXED_POINT)[:2], np.zeros(2)])
+    return points[:, 0], points[:, 1]
+
+
+@check(2, title="4(b): balanced_configuration() closes the loop and is in static equilibrium (gravity does no "
+       "work along the linkage's motion)", stage=STAGE_STRUCTURE, group="balance")
+def check_balanced(ctx):
+    q = as_array(ctx.student("problem_04.balanced", FIXED_POINT), "balanced_configuration()", (4,))
+    ref = ctx.reference("problem_04.balanced", FIXED_POINT)
+    ctx.add_figure(figure("Problem 4(b): the four-bar in your balanced configuration", "x [m]", "y [m]",
+                          student=[("links", *_drawing(q))], reference=[("links", *_drawing(ref))], equal_axes=True))
+    _assert_assembled(q, [None] * 4, FIXED_POINT, "balanced_configuration()")
+    t = np.linalg.svd(closure_jacobian(q))[2][-1]
+    work = float(t @ height_gradient(q)) / LENGTH
+    assert_close(work, 0.0, f"gravity's work along the unit motion, over m g L, at q = {np.round(q, 6).tolist()}",
+                 BALANCE, note="In static equilibrium the centre of gravity neither rises nor falls when the linkage "
+                               "moves (its only motion, with q1, q2, q3 along the null space of the closure "
+                               "Jacobian).")
+
+
+# ------------------------------------------------------------------------------------ the MuJoCo model
+
+
+def _model(ctx, q, what):
+    return model_of(student_once(ctx, "problem_04.model", HDPE, EARTH, q, FIXED_POINT), what)
+
+
+def _along(desc, what):
+    """The acceleration along the linkage's motion at rest, or a failure saying why MuJoCo's model has none."""
+    at_rest = desc["at_rest"]
+    if "error" in at_rest:
+        fail(f"{what}: {at_rest['error']}.", "Close the loop with one <connect> between the end of link 3 and the "
+             "world: three hinges and a connect leave one degree of freedom.", "no_connect")
+    return at_rest["alpha"]
+
+
+@check(1, title="four_bar(...): three hinges about +z at the joints of q, and an equality constraint joining the end "
+       "of link 3 to the world at the fixed point", stage=STAGE_DEFINED, group="model")
+def check_model_structure(ctx):
+    q = ctx.reference("problem_04.assemble", DYNAMICS_TARGETS, FIXED_POINT)["q"]
+    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
+    desc = _model(ctx, q, what)
+    joints = hinges(desc, 3, what)
+    points = loop_points(q)
+    for k, joint in enumerate(joints):
+        assert_close(joint["anchor"][:2], points[k], f"the position of joint {k + 1} in {what}", POSITION,
+                     mistakes=[Mistake("built_straight", [k * LENGTH, 0.0], "Build the model in the configuration q: "
+                                       "rotate each link's body by its joint angle (euler=\"0 0 q_i\" with "
+                                       "<compiler angle=\"radian\"/>).")])
+        assert_close(joint["axis"], [0.0, 0.0, 1.0], f"the axis of joint {k + 1} in {what}", DIRECTION)
+    connects = [e for e in desc["equalities"] if e["type"] == "connect" and e["active"]]
+    if len(connects) != 1 or not connects[0]["to_world"]:
+        fail(f"{what} must close the loop with one active <connect> between link 3 and the world; it has "
+             f"{len(desc['equalities'])} equality constraint(s): "
+             f"{', '.join(e['type'] for e in desc['equalities']) or 'none'}.",
+             '<equality><connect site1="tip" site2="fixed"/></equality>, with the site "fixed" on the world body.',
+             "no_connect")
+    p1, p2 = (np.asarray(connects[0][k], dtype=float) for k in ("point1", "point2"))
+    assert_close(p1, p2, f"the two points the connect joins in {what}", POSITION,
+                 context="(the loop closes in the model as written)")
+    assert_close(p2, FIXED_POINT, f"where the connect holds the end of link 3 in {what}", POSITION,
+                 note="A body-anchored connect holds the point where it is in the model as written: build the model "
+                      "in the assembled configuration, or join two sites.")
+
+
+@check(2, title="four_bar(...): released at rest in an unbalanced configuration, MuJoCo's acceleration along the "
+       "linkage's motion is the reference's", stage=STAGE_VALUES, group="model")
+def check_model_dynamics(ctx):
+    q = ctx.reference("problem_04.assemble", DYNAMICS_TARGETS, FIXED_POINT)["q"]
+    expected = ctx.reference("problem_04.tangent_acceleration", q, HDPE, EARTH)
+    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
+    alpha = _along(_model(ctx, q, what), what)
+    assert_close(alpha, expected["alpha"], f"the acceleration along the linkage's motion in {what}", ALONG,
+                 mistakes=[Mistake("no_gravity", 0.0, "Nothing accelerates the linkage: gravity must be "
+                                   "(0, -g, 0), in the plane of the motion.")],
+                 note="alpha = t.T qfrc_smooth / (t.T M t) with t the unit null vector of the constraint Jacobian: "
+                      "exact even though MuJoCo's soft constraint lets qacc itself differ from alpha t.")
+
+
+@check(1, title="4(b): in your balanced configuration your MuJoCo model stays at rest (no acceleration along the "
+       "linkage's motion)", stage=STAGE_VALUES, group="balance")
+def check_model_at_rest(ctx):
+    q = as_array(ctx.student("problem_04.balanced", FIXED_POINT), "balanced_configuration()", (4,))
+    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
+    alpha = _along(_model(ctx, q, what), what)
+    assert_close(alpha, 0.0, f"the acceleration along the linkage's motion in {what}", AT_REST,
+                 note="A balanced four-bar released at rest does not start to move (it is unstable, so it does "
+                      "after a while).")

@@ -1,0 +1,46 @@
+"""Checks of problem 5: debugging a model.
+
+MuJoCo refuses the broken model as Simscape did (a moving body without mass); the repaired model must load, keep
+the bodies, joints and the link of the broken one, and add only a small mass.  The description of the error, its
+fix and the question of energy are read and scored by hand.
+"""
+
+from grader.checking import STAGE_DEFINED, STAGE_STRUCTURE, Tol, assert_close, check, fail
+
+from ._mujoco import model_of, reference_of
+
+TITLE = "Debugging a model"
+MANUAL = {
+    "error": ("5: Find and describe the error in the model (the sheet's Figure 7, BROKEN_MODEL). How would you "
+              "fix it?", 2),
+    "energy": ("5: Is this an energy-conserving system? Why?", 1),
+}
+
+#: the added mass may be at most this fraction of the link's
+SMALL = 0.1
+SAME = Tol("the link as in the broken model", 1e-9, 1e-6)
+
+
+@check(1, title="fixed_model() loads in MuJoCo", stage=STAGE_DEFINED, group="fixed")
+def check_fixed_loads(ctx):
+    model_of(ctx.student("problem_05.fixed"), "fixed_model()")
+
+
+@check(2, title="fixed_model() keeps the broken model's joints and link, and adds only a small mass (at most a "
+       "tenth of the link's) where one was missing", stage=STAGE_STRUCTURE, group="fixed")
+def check_fixed_minimal(ctx):
+    got = model_of(ctx.student("problem_05.fixed"), "fixed_model()")
+    ref = reference_of(ctx.reference("problem_05.fixed", persist=True), "fixed model")
+    kinds, expected_kinds = [j["type"] for j in got["joints"]], [j["type"] for j in ref["joints"]]
+    if kinds != expected_kinds:
+        fail(f"fixed_model() has the joints {kinds}; the broken model has {expected_kinds}.",
+             "Keep the revolute joint and the spherical joint: the error is not in the joints.", "joints_changed")
+    link = ref["bodies"][int(ref["joints"][-1]["body"]) - 1]
+    mine = got["bodies"][int(got["joints"][-1]["body"]) - 1]
+    assert_close(mine["mass"], link["mass"], "the mass of the link (the body of the spherical joint)", SAME)
+    carrier = got["bodies"][int(got["joints"][0]["body"]) - 1]
+    if not 0 < carrier["mass"] <= SMALL * link["mass"]:
+        fail(f"the body of the revolute joint has a mass of {carrier['mass']:.3g} kg; a small mass, more than 0 and "
+             f"at most {SMALL:g} of the link's {link['mass']:.3g} kg, repairs the model without changing its motion "
+             "much.", "Give the massless body a small <inertial> (mass and diaginertia), or a small geom.",
+             "mass_not_small")

@@ -1,0 +1,35 @@
+"""Probes of problem 2: the pendulum's MJCF, loaded and run by MuJoCo in the sandbox; the reference's ODE."""
+
+from . import _mjcf, module, probe
+
+
+def _xml(pkg, density, gravity, damping, torque):
+    return module(pkg, "problem_02").pendulum(density, gravity, damping, torque)
+
+
+@probe
+def model(pkg, density, gravity, damping=0.0, torque=0.0):
+    """What ``pendulum(...)`` declares (``_mjcf.describe``), or ``{"error": ...}``."""
+    xml = _xml(pkg, density, gravity, damping, torque)
+    return _mjcf.guarded(lambda: _mjcf.describe(*_mjcf.load(xml)))
+
+
+@probe
+def run(pkg, density, gravity, damping, torque, duration, sample):
+    """``pendulum(...)`` run for ``duration`` seconds; every actuator gets the control sin(t) (the tutorial's
+    sine-wave source)."""
+    xml = _xml(pkg, density, gravity, damping, torque)
+    return _mjcf.guarded(lambda: _mjcf.run(*_mjcf.load(xml), duration, sample, control="sine"))
+
+
+# The reference's own computations (its ODE, independent of MuJoCo): called on the reference only.
+
+
+@probe
+def ode(pkg, density, gravity, damping, torque, duration, sample):
+    return module(pkg, "problem_02").pendulum_ode(density, gravity, damping, torque, duration, sample)
+
+
+@probe
+def period(pkg, density, gravity):
+    return module(pkg, "problem_02").pendulum_period(density, gravity)

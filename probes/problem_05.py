@@ -1,0 +1,15 @@
+"""Probes of problem 5: the repaired model (and the given broken one), loaded by MuJoCo in the sandbox."""
+
+from . import _mjcf, module, probe
+
+
+@probe
+def fixed(pkg):
+    xml = module(pkg, "problem_05").fixed_model()
+    return _mjcf.guarded(lambda: _mjcf.describe(*_mjcf.load(xml)))
+
+
+@probe
+def broken(pkg):
+    xml = module(pkg, "problem_05").BROKEN_MODEL
+    return _mjcf.guarded(lambda: _mjcf.describe(*_mjcf.load(xml)))
