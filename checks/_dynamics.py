@@ -47,6 +47,8 @@ __all__ = [
     "first_departure",
     "assert_run",
     "run_figure",
+    "run_array",
+    "assert_energy_conserved",
     "subsample",
 ]
 
@@ -377,18 +379,18 @@ def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note=""):
     ``expected`` (tolerance per key in ``tols``); the message names the time and shows both states."""
     t = np.asarray(expected["t"], dtype=float)
     run_array(got, "t", t.shape, what)
-    for key in keys:
-        mine = run_array(got, key, np.shape(expected[key]), what)
-        i = first_departure(mine, np.asarray(expected[key]), tols[key])
-        if i is None:
-            continue
-        try:
-            assert_close(mine[i], expected[key][i], f"{key} at t = {t[i]:.6g} s", tols[key],
-                         context=f"({what})",
-                         note=f"Your run first leaves the reference's at t = {t[i]:.6g} s (output {i + 1} of "
-                              f"{t.size}); up to there it agrees.{(' ' + note) if note else ''}")
-        except CheckFailure as exc:
-            raise CheckFailure(exc.message, hint, diagnosis) from None
+    mine = {key: run_array(got, key, np.shape(expected[key]), what) for key in keys}
+    departures = [(i, k, key) for k, key in enumerate(keys)
+                  if (i := first_departure(mine[key], np.asarray(expected[key]), tols[key])) is not None]
+    if not departures:
+        return
+    i, _, key = min(departures)
+    try:
+        assert_close(mine[key][i], expected[key][i], f"{key} at t = {t[i]:.6g} s", tols[key], context=f"({what})",
+                     note=f"Your run first leaves the reference's at t = {t[i]:.6g} s (output {i + 1} of {t.size}); "
+                          f"up to there it agrees.{(' ' + note) if note else ''}")
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, hint, diagnosis) from None
 
 
 def subsample(t, y, n=250):
@@ -406,3 +408,22 @@ def run_figure(title, ylabel, t_mine, mine, t_ours, ours, labels, extra=()):
                   student=[(label, *subsample(t_mine, mine[:, k])) for k, label in enumerate(labels)],
                   reference=[(label, *subsample(t_ours, ours[:, k])) for k, label in enumerate(labels)]
                   + [(label, *subsample(t, y)) for label, t, y in extra])
+
+
+def assert_energy_conserved(got, tol, what, hint):
+    """The energy ``T + V`` of the run ``got`` (``"t"``, ``"T"``, ``"V"``, from the student's own kinematics) stays
+    within ``tol`` of its start."""
+    t = run_array(got, "t", None, what)
+    T, V = run_array(got, "T", t.shape, what), run_array(got, "V", t.shape, what)
+    E = T + V
+    drift = np.abs(E - E[0])
+    if drift.max() > tol.atol:
+        i = int(np.argmax(drift > tol.atol))
+        try:
+            assert_close(E[i], E[0], f"the energy T + V at t = {t[i]:.4g} s", tol,
+                         context=f"(its value at t = 0: {what} is conservative)",
+                         note=f"T and V come from your own kinematics (T = sum(m v.v + omega.I omega) / 2 with your "
+                              f"Jacobians, V = -sum(m I_grav . I_r_IB)); the largest drift is {drift.max():.4g} at "
+                              f"t = {t[int(np.argmax(drift))]:.4g} s.")
+        except CheckFailure as exc:
+            raise CheckFailure(exc.message, hint, "energy_drift") from None

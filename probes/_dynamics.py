@@ -26,6 +26,7 @@ __all__ = [
     "lagrange",
     "forward_dynamics",
     "energies",
+    "trace",
     "pendulum_motion",
 ]
 
@@ -167,11 +168,20 @@ def energies(tree, q, qd, I_grav):
     return float(T), float(V)
 
 
-def _trace(run, n):
+def trace(run, n, what):
+    """``(t, q, qd)`` of a simulation's result ``{"t", "q", "qd"}`` as float arrays (``q``, ``qd``: one row of ``n``
+    values per output time), or a ValueError that says what is wrong."""
+    if not isinstance(run, dict) or not {"t", "q", "qd"} <= set(run):
+        raise ValueError(f"{what} must return a dict with the keys 't', 'q' and 'qd', got {str(run)[:200]}")
     t = np.asarray(run["t"], dtype=float).reshape(-1)
-    q = np.asarray(run["q"], dtype=float).reshape(t.size, n)
-    qd = np.asarray(run["qd"], dtype=float).reshape(t.size, n)
-    return t, q, qd
+    arrays = []
+    for key in ("q", "qd"):
+        value = np.asarray(run[key], dtype=float)
+        if value.shape != (t.size, n):
+            raise ValueError(f"{what}: {key!r} must have one row of {n} values per output time ({t.size} x {n}), "
+                             f"got shape {value.shape}")
+        arrays.append(value)
+    return t, arrays[0], arrays[1]
 
 
 @probe
@@ -179,7 +189,7 @@ def pendulum_motion(pkg, t_end, I_grav):
     """Problem 24: the package's ``problem_24.simulate(t_end)`` and, at every output time, the energies ``T`` and
     ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
     p24 = module(pkg, "problem_24")
-    t, q, qd = _trace(p24.simulate(t_end), 3)
+    t, q, qd = trace(p24.simulate(t_end), 3, "problem_24.simulate")
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}

@@ -4,6 +4,7 @@ simulation under each controller (with the end effector's motion from the packag
 import numpy as np
 
 from . import module, probe
+from ._dynamics import trace
 
 TABLE = ("t", "x", "xd", "q", "qd", "qdd")
 
@@ -40,21 +41,12 @@ def robot_ode(pkg, controller, table, cases):
             for t, y in cases]
 
 
-def _rows(value, n, name):
-    array = np.asarray(value, dtype=float)
-    if array.ndim != 2 or array.shape[1] != 3 or array.shape[0] != n:
-        raise ValueError(f"{name} must have one row of 3 values per output time ({n} x 3), got shape {array.shape}")
-    return array
-
-
 @probe
 def simulate(pkg, controller, table, t_end):
     """``simulate(controller, table, t_end)`` and the end effector's inertial position ``x`` and velocity ``xd`` at
     every output time, from the package's own kinematics."""
     p37 = module(pkg, "problem_37")
-    run = p37.simulate(controller, table, t_end)
-    t = np.asarray(run["t"], dtype=float).reshape(-1)
-    q, qd = _rows(run["q"], t.size, "q"), _rows(run["qd"], t.size, "qd")
+    t, q, qd = trace(p37.simulate(controller, table, t_end), 3, "problem_37.simulate")
     tree = p37.build_dynamic_robot()
     x, xd = [], []
     for a, b in zip(q, qd):
