@@ -48,5 +48,9 @@ def equations_of_motion_symbolic():
         M += m * J.T @ J
         f -= m * J.T @ sigma
         G += m * J.T @ sp.Matrix([0, -g])
-    return M.applyfunc(sp.simplify), f.applyfunc(sp.simplify), G.applyfunc(sp.simplify)
+
+    def tidy(expression):
+        return sp.factor_terms(sp.trigsimp(sp.expand(expression), method="fu"))
+
+    return M.applyfunc(tidy), f.applyfunc(tidy), G.applyfunc(tidy)
     # END SOLUTION
