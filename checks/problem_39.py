@@ -66,8 +66,8 @@ def _misaligned_mistakes(I1, alpha):
        group="I2")
 def check_inertia_misaligned(ctx):
     got = ctx.student("problem_39.inertia_misaligned", I1_SHEET, ALPHA)
-    assert_close(got, I2_SHEET, f"inertia_misaligned(I1, {ALPHA:g})", SMALL_ANGLE, _misaligned_mistakes(I1_SHEET, ALPHA),
-                 context="(the sheet's model answer; an exact rotation by alpha is accepted as well)")
+    assert_close(got, I2_SHEET, f"inertia_misaligned(I1, {ALPHA:g})", SMALL_ANGLE,
+                 _misaligned_mistakes(I1_SHEET, ALPHA), context="(the sheet's model answer; an exact rotation by alpha is accepted as well)")
 
 
 @st.composite

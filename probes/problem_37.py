@@ -18,17 +18,17 @@ def trajectory(pkg):
 
 
 @probe
-def torques(pkg, cases):
-    """For every case ``(M, f, g, q, qd, q_des, qd_des, qdd_des)``: ``{"gravity_compensation", "computed_torques"}``,
-    the torques of the two controllers."""
+def torques(pkg, controller, cases):
+    """The torques of ``gravity_compensation_torque`` or ``computed_torque`` (``controller``) for every case
+    ``(M, f, g, q, qd, q_des, qd_des, qdd_des)``."""
     p37 = module(pkg, "problem_37")
-    out = {"gravity_compensation": [], "computed_torques": []}
+    out = []
     for case in cases:
         M, f, g, q, qd, q_des, qd_des, qdd_des = (np.asarray(x, dtype=float) for x in case)
-        out["gravity_compensation"].append(np.array(p37.gravity_compensation_torque(g, q, qd, q_des, qd_des),
-                                                    dtype=float))
-        out["computed_torques"].append(np.array(p37.computed_torque(M, f, g, q, qd, q_des, qd_des, qdd_des),
-                                                dtype=float))
+        if controller == "gravity_compensation":
+            out.append(np.array(p37.gravity_compensation_torque(g, q, qd, q_des, qd_des), dtype=float))
+        else:
+            out.append(np.array(p37.computed_torque(M, f, g, q, qd, q_des, qd_des, qdd_des), dtype=float))
     return out
 
 
