@@ -303,7 +303,7 @@ def _simulation(ctx, controller):
     name = NAMES[controller]
     for key, label, unit in (("x", "position", "m"), ("xd", "velocity", "m/s")):
         ctx.add_figure(run_figure(
-            f"Problem 37, {name}: end-effector {label} (desired dotted in the course's plot)",
+            f"Problem 37, {name}: end-effector {label} against the desired one",
             f"I_{'r' if key == 'x' else 'v'}_E [{unit}]", got["t"], got[key], t, expected[key],
             [f"{axis}" for axis in "xyz"],
             extra=[(f"desired {axis}", table["t"][desired], table[key][desired][:, k])
