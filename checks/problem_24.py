@@ -57,3 +57,61 @@ def check_pendulum(ctx):
 def check_random_trees(ctx):
     compare_trees(ctx, "problem_24.tree_poses", KINDS, tree_comparison(ctx, motion=False), motion=False,
                   name="the bodies' poses")
+
+
+# ------------------------------------------------------------------------------------------ the motion
+# The sheet's second part animated a recorded Simscape run; the course's port simulates the pendulum instead
+# (problem_24.simulate, with the equations of motion of problem 37) and grades the motion by physics.  The block
+# is self-contained (its own imports) so that it stays apart from the kinematic checks above.
+
+import numpy as np  # noqa: E402
+
+from grader.checking import EXACT, CheckFailure, Tol, assert_close, close  # noqa: E402
+
+from ._dynamics import assert_energy_conserved, assert_run, run_array, run_figure  # noqa: E402
+
+#: problem data P24: released at rest from Q under gravity along -y
+SIMULATION_Q0 = (np.pi / 6, -np.pi / 4, np.pi / 3)
+SIMULATION_GRAV = np.array([0.0, -9.81, 0.0])
+SIMULATION_T_END = 2.0
+#: the motion is chaotic: runs are compared over the first second only
+HORIZON = 1.0
+#: any solve_ivp method at its default tolerances: energy drift <= 0.94 J over 2 s, within 0.015 rad and 0.15 rad/s
+#: of a tight run over the first second; a fixed-step Euler loop at dt = 0.01 s drifts by 51 J
+SIMULATION_ENERGY = Tol("energy drift (a reasonable integrator: 0.94 J of 389 J)", 4.0)
+SIMULATION_BAND = {"q": Tol("a reasonable integrator", 5e-2), "qd": Tol("a reasonable integrator", 0.5)}
+SIMULATION_TIMEOUT = 30.0
+
+
+@check(2, title="simulate(): released at rest from q = (pi/6, -pi/4, pi/3), the pendulum conserves its energy over "
+       "2 s and follows a tight reference run over the first second (uses the equations of motion of problem 37)",
+       stage=STAGE_VALUES, group="motion")
+def check_simulated_motion(ctx):
+    expected = ctx.reference("_dynamics.pendulum_motion", SIMULATION_T_END, SIMULATION_GRAV, persist=True)
+    got = ctx.student("_dynamics.pendulum_motion", SIMULATION_T_END, SIMULATION_GRAV, timeout=SIMULATION_TIMEOUT)
+    what = f"problem_24.simulate({SIMULATION_T_END:g})"
+    for key in ("t", "q", "qd"):
+        run_array(got, key, np.shape(expected[key]), what)
+    ctx.add_figure(run_figure("Problem 24: the triple pendulum's joint angles", "q [rad]", got["t"], got["q"],
+                              expected["t"], expected["q"], ["q1", "q2", "q3"]))
+    ctx.add_figure(run_figure("Problem 24: the energy T + V (conserved)", "E [J]", got["t"],
+                              np.column_stack([got["T"] + got["V"]]), expected["t"],
+                              np.column_stack([expected["T"] + expected["V"]]), ["T + V"]))
+    start = np.concatenate([SIMULATION_Q0, np.zeros(3)])
+    if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
+        assert_close(np.concatenate([got["q"][0], got["qd"][0]]), start, "(q, qd) at t = 0", EXACT,
+                     context="(the pendulum is released at rest from the sheet's configuration)")
+    assert_energy_conserved(got, SIMULATION_ENERGY, "the unactuated pendulum",
+                            "The energy of your own pendulum drifts: either M, f, g (problem 37) or the integration is "
+                            "off. With the checks of problem 37 passing, use scipy.integrate.solve_ivp (any method at "
+                            "its default tolerances conserves the energy well enough).")
+    within = np.asarray(expected["t"]) <= HORIZON
+    head = {key: np.asarray(got[key])[within] for key in ("t", "q", "qd")}
+    ours = {key: np.asarray(expected[key])[within] for key in ("t", "q", "qd")}
+    try:
+        assert_run(head, ours, ("q", "qd"), SIMULATION_BAND, "the first second of the run",
+                   note="Any solve_ivp method at its default tolerances stays within the band; later the motion is "
+                        "chaotic and accurate runs part.")
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, "The energy is conserved, yet the run leaves a tight one early: integrate "
+                           "with scipy.integrate.solve_ivp (default tolerances or tighter).", "integration") from None

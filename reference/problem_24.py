@@ -6,12 +6,16 @@ Geometry (problem data P24): ground m = 1, ``B_I_B = 1e-4 E``; links m = 10, ``B
 ``S_r_SDs = (-0.5, 0, 0)``; joints 2, 3: ``P_r_PDp = (0.5, 0, 0)``, ``A_PDp = E``, ``S_r_SDs = (-0.5, 0, 0)``;
 all ``A_SDs = E``.  Test configuration ``q = (pi/6, -pi/4, pi/3)``.
 
-The sheet's animation of a recorded Simscape run needs the pendulum's dynamics (problem 37 on); this module
-covers the kinematics.
+The sheet's second part animates a recorded Simscape run, which we do not have: ``simulate`` generates the motion
+instead, released at rest from ``Q`` under gravity ``I_grav = (0, -9.81, 0)``, with the equations of motion of
+problem 37 (``dynamics``).  The motion is chaotic: two accurate integrations agree only over the first seconds,
+but both conserve the energy.
 """
 
 import numpy as np
 
+from .conventions import GRAVITY
+from .dynamics import DynamicBody, equations_of_motion, forward_dynamics
 from .tree import Body, KinematicTree, RotationalJoint, inertial_state
 
 __all__ = [
@@ -22,9 +26,13 @@ __all__ = [
     "LINK_LENGTH",
     "A_PDP_FIRST",
     "Q",
+    "I_GRAV",
+    "T_SIMULATION",
     "build_triple_pendulum",
     "body_poses",
     "solve",
+    "pendulum_ode",
+    "simulate",
 ]
 
 GROUND_MASS = 1.0
@@ -36,16 +44,21 @@ LINK_LENGTH = 1.0
 A_PDP_FIRST = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 #: the sheet's test configuration
 Q = np.array([np.pi / 6, -np.pi / 4, np.pi / 3])
+#: gravity of the simulation: the links hang along -y at q = 0
+I_GRAV = np.array([0.0, -GRAVITY, 0.0])
+#: length of the simulated motion [s]
+T_SIMULATION = 2.0
 
 
-def build_triple_pendulum():
+def build_triple_pendulum(body_class=Body):
     """The triple pendulum as a ``KinematicTree``: bodies ``ground``, ``link_1``, ``link_2``, ``link_3``;
-    joint k has coordinate ``q[k-1]``."""
+    joint k has coordinate ``q[k-1]``.  ``body_class``: the class of the bodies (``dynamics.DynamicBody`` for a
+    tree with equations of motion)."""
     half = 0.5 * LINK_LENGTH
-    ground = Body("ground", GROUND_MASS, GROUND_INERTIA)
+    ground = body_class("ground", GROUND_MASS, GROUND_INERTIA)
     predecessor = ground
     for k in range(3):
-        link = Body(f"link_{k + 1}", LINK_MASS, LINK_INERTIA)
+        link = body_class(f"link_{k + 1}", LINK_MASS, LINK_INERTIA)
         RotationalJoint(
             predecessor,
             link,
@@ -67,3 +80,28 @@ def body_poses(tree, q):
 def solve(q=Q):
     """Inertial positions and orientations of the four bodies at ``q`` (default: the sheet's ``Q``)."""
     return body_poses(build_triple_pendulum(), q)
+
+
+def pendulum_ode(t, y, tree):
+    """The right-hand side ``dy/dt = (qd, qdd)`` of the unactuated triple pendulum, ``y = (q, qd)``, for a tree of
+    ``DynamicBody`` (``build_triple_pendulum(DynamicBody)``): ``M qdd = f + g``."""
+    # BEGIN SOLUTION problem 24
+    q, qd = y[:3], y[3:]
+    M, f, g = equations_of_motion(tree, q, qd, I_GRAV)
+    return np.concatenate([qd, forward_dynamics(M, f, g, np.zeros(3))])
+    # END SOLUTION
+
+
+def simulate(t_end=T_SIMULATION, q0=Q, qd0=(0.0, 0.0, 0.0), dt=0.01):
+    """The pendulum released at ``(q0, qd0)``, simulated to ``t_end`` with ``scipy.integrate.solve_ivp``; output
+    every ``dt``.  Returns ``{"t", "q", "qd"}`` (one row per time)."""
+    from scipy.integrate import solve_ivp
+
+    # BEGIN SOLUTION problem 24
+    tree = build_triple_pendulum(DynamicBody)
+    t_eval = np.linspace(0.0, t_end, int(round(t_end / dt)) + 1)
+    y0 = np.concatenate([np.asarray(q0, dtype=float), np.asarray(qd0, dtype=float)])
+    result = solve_ivp(pendulum_ode, (0.0, t_end), y0, method="DOP853", t_eval=t_eval, rtol=1e-9, atol=1e-9,
+                       args=(tree,))
+    return {"t": result.t, "q": result.y[:3].T, "qd": result.y[3:].T}
+    # END SOLUTION

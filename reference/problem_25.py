@@ -43,12 +43,13 @@ ALPHA_C = np.deg2rad(-30.0)
 GAMMA_C = np.deg2rad(60.0)
 
 
-def build_walker():
+def build_walker(body_class=Body):
     """The walker as a ``KinematicTree`` of the bodies ``ground``, ``stance_leg``, ``swing_leg``, with
-    ``q = (alpha, gamma)``."""
-    ground = Body("ground")
-    stance = Body("stance_leg", LEG_MASS, LEG_INERTIA)
-    swing = Body("swing_leg", LEG_MASS, LEG_INERTIA)
+    ``q = (alpha, gamma)``.  ``body_class``: the class of the bodies (``dynamics.DynamicBody`` for a tree with
+    equations of motion)."""
+    ground = body_class("ground")
+    stance = body_class("stance_leg", LEG_MASS, LEG_INERTIA)
+    swing = body_class("swing_leg", LEG_MASS, LEG_INERTIA)
     # BEGIN SOLUTION problem 25
     l, r = LEG_LENGTH, FOOT_RADIUS
     RollingContactJoint(

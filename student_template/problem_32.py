@@ -58,17 +58,18 @@ _A_PDP = (
 )
 
 
-def build_robot():
+def build_robot(body_class=Body):
     """The arm as a ``KinematicTree``: ``ground``, ``link_1``, ``link_2``, ``link_3``, ``end_effector``;
-    joint k has coordinate ``q[k-1]``."""
-    ground = Body("ground", 0.0)
+    joint k has coordinate ``q[k-1]``.  ``body_class``: the class of the bodies (``dynamics.DynamicBody`` for a
+    tree with equations of motion)."""
+    ground = body_class("ground", 0.0)
     predecessor = ground
     for k, A_PDp in enumerate(_A_PDP):
-        link = Body(f"link_{k + 1}", LINK_MASS, LINK_INERTIA)
+        link = body_class(f"link_{k + 1}", LINK_MASS, LINK_INERTIA)
         P_r_PDp = (0.0, 0.0, 0.0) if k == 0 else (0.0, -0.5, 0.0)
         RotationalJoint(predecessor, link, P_r_PDp=P_r_PDp, A_PDp=A_PDp, S_r_SDs=(0.0, 0.5, 0.0), q_index=[k])
         predecessor = link
-    RigidJoint(predecessor, Body("end_effector", 0.0), P_r_PDp=(0.0, -0.5, 0.0))
+    RigidJoint(predecessor, body_class("end_effector", 0.0), P_r_PDp=(0.0, -0.5, 0.0))
     return KinematicTree(ground)
 
 

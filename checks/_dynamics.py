@@ -1,0 +1,429 @@
+"""Shared checks of the dynamics problems (24, 37, 38, 46).
+
+* Random trees with masses and inertias as plain data (``tree_cases``, ``rich_case``), in the format of
+  ``probes._dynamics`` (numpy only: rotations from quaternions, inertias from second moments).
+* The sheet's robot (P32) and walker (P25) as plain data (``ROBOT``, ``WALKER``).
+* Physics checks that need no reference, on the ``_dynamics.lagrange`` probe: ``M`` symmetric positive-definite,
+  the kinetic energy of the student's own Jacobians, ``g`` as minus the gradient of the student's own potential
+  energy, Lagrange's equations for ``f`` with the student's own ``M``.
+* ``compare_mfg``: ``M``, ``f``, ``g`` against the reference with the mistake catalogue of ``_dynamics.mfg_mistakes``.
+* Runs (simulations): the first departure from a reference run, and figures.
+"""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    CheckFailure,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    close,
+    fail,
+    figure,
+    format_array,
+)
+
+__all__ = [
+    "H",
+    "DIFFERENCES",
+    "KINDS",
+    "I_GRAV",
+    "ROBOT",
+    "WALKER",
+    "MFG_HINTS",
+    "trees",
+    "tree_cases",
+    "rich_case",
+    "robot_cases",
+    "describe_case",
+    "check_spd",
+    "check_kinetic_energy",
+    "check_gravity_gradient",
+    "check_lagrange",
+    "compare_mfg",
+    "first_departure",
+    "assert_run",
+    "run_figure",
+    "run_array",
+    "assert_energy_conserved",
+    "subsample",
+]
+
+#: step of the finite differences of the physics checks and their tolerance (central differences: error ~ h^2)
+H = 1e-5
+DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-5, 1e-5)
+#: symmetry and positive definiteness of M
+SPD = Tol("symmetric positive-definite", 1e-9, 1e-9)
+KINDS = ("rotational", "translational", "rolling_contact", "virtual_3dof", "rigid")
+NQ = {"rotational": 1, "translational": 1, "rolling_contact": 1, "virtual_3dof": 3, "rigid": 0}
+#: gravity of the random trees, off the axes so that a frame mix-up shows
+I_GRAV = np.array([0.3, -9.81, 0.5])
+_SEEDS = st.integers(0, 2**32 - 1)
+
+
+def _rotation(quaternion):
+    w, x, y, z = np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def _random_rotation(rng):
+    return _rotation(rng.normal(size=4) + 1e-9)
+
+
+def _inertia(rng):
+    """An inertia matrix: principal moments from second moments (triangle inequality), randomly oriented."""
+    x2, y2, z2 = rng.uniform(0.05, 1.0, 3)
+    A = _random_rotation(rng)
+    return A @ np.diag([y2 + z2, x2 + z2, x2 + y2]) @ A.T
+
+
+def _joint(rng, kind, nq, plain=False):
+    if plain:
+        joint = {"P_r_PDp": np.zeros(3), "A_PDp": np.eye(3), "S_r_SDs": np.array([0.0, 0.5, 0.0]), "A_SDs": np.eye(3)}
+    else:
+        joint = {"P_r_PDp": rng.uniform(-1, 1, 3), "A_PDp": _random_rotation(rng), "S_r_SDs": rng.uniform(-1, 1, 3),
+                 "A_SDs": _random_rotation(rng)}
+    if kind == "rolling_contact":
+        joint["r"] = 0.5 if plain else float(rng.uniform(0.1, 1.0))
+    if kind == "test":
+        joint["c"], joint["U"] = rng.uniform(0.5, 1.5, nq), rng.uniform(-1, 1, (3, nq))
+    return joint
+
+
+def _body(rng, k, plain=False):
+    if plain:
+        return {"name": f"body_{k}", "m": 1.0, "I": np.diag([0.1, 0.2, 0.3])}
+    return {"name": f"body_{k}", "m": float(rng.uniform(0.2, 3.0)), "I": _inertia(rng)}
+
+
+@st.composite
+def trees(draw, kinds=KINDS, max_joints=4):
+    """Tree descriptions with masses and inertias: one to ``max_joints`` joints of the given ``kinds``, each at a
+    random earlier body (shrinking towards a chain), geometry, mass and inertia from a seed per joint (seed 0: no
+    offsets but the successor's centre of gravity, aligned frames, a unit mass); coordinates numbered in a random
+    order.  The first joint moves, so ``nq >= 1``; every moving body has mass and inertia, so ``M`` is positive
+    definite."""
+    n = draw(st.integers(1, max_joints))
+    root_seed = draw(_SEEDS)
+    bodies, joints, sizes = [_body(np.random.default_rng(root_seed), 0, root_seed == 0)], [], []
+    for k in range(n):
+        kind = draw(st.sampled_from([kind for kind in kinds if kind != "rigid"] if k == 0 else list(kinds)))
+        parent = k - draw(st.integers(0, k))
+        seed = draw(_SEEDS)
+        rng = np.random.default_rng(seed)
+        nq = NQ[kind]
+        joints.append({"kind": kind, "parent": parent, **_joint(rng, kind, nq, seed == 0)})
+        bodies.append(_body(rng, k + 1, seed == 0))
+        sizes.append(nq)
+    order = draw(st.permutations(range(sum(sizes))))
+    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
+        joint["q_index"] = [int(i) for i in order[start:start + size]]
+    return {"bodies": bodies, "joints": joints}
+
+
+def _values(seed, n, bound=2.0):
+    return np.zeros(n) if seed == 0 else np.random.default_rng(seed).uniform(-bound, bound, n)
+
+
+def tree_cases(kinds=KINDS, extra=(), max_joints=4):
+    """``(description, q, qd, I_grav, *extra)`` with coordinates and velocities in [-2, 2] (from seeds, shrinking
+    towards zero)."""
+
+    @st.composite
+    def draw_case(draw):
+        description = draw(trees(kinds, max_joints))
+        nq = sum(len(joint["q_index"]) for joint in description["joints"])
+        return (description, _values(draw(_SEEDS), nq), _values(draw(_SEEDS), nq), I_GRAV, *extra)
+
+    return draw_case()
+
+
+def rich_case(kinds=KINDS, extra=(), seed=37):
+    """A fixed case in the format of ``tree_cases`` that exercises every term: a chain through all ``kinds`` and a
+    branch at body 1, random geometry, masses and inertias, coordinates numbered in random order and values bounded
+    away from zero."""
+    rng = np.random.default_rng(seed)
+    sequence = [kinds[0], *kinds, kinds[-1]]
+    joints, sizes = [], []
+    for k, kind in enumerate(sequence):
+        joints.append({"kind": kind, "parent": 1 if k == len(sequence) - 1 else k, **_joint(rng, kind, NQ[kind])})
+        sizes.append(NQ[kind])
+    order = rng.permutation(sum(sizes))
+    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
+        joint["q_index"] = [int(i) for i in order[start:start + size]]
+    bodies = [_body(rng, k) for k in range(len(joints) + 1)]
+    n = len(order)
+    q, qd = (rng.uniform(0.3, 1.5, n) * rng.choice([-1, 1], n) for _ in range(2))
+    return ({"bodies": bodies, "joints": joints}, q, qd, I_GRAV, *extra)
+
+
+def _plain_joint(kind, parent, q_index, P_r_PDp=(0.0, 0.0, 0.0), A_PDp=np.eye(3), S_r_SDs=(0.0, 0.0, 0.0), **extra):
+    return {"kind": kind, "parent": parent, "q_index": list(q_index), "P_r_PDp": np.array(P_r_PDp, dtype=float),
+            "A_PDp": np.array(A_PDp, dtype=float), "S_r_SDs": np.array(S_r_SDs, dtype=float), "A_SDs": np.eye(3),
+            **extra}
+
+
+#: the robot arm of problem data P32: three links (m = 3, I = diag(0.2, 0.02, 0.2)) and a massless end effector
+ROBOT = {
+    "bodies": [{"name": "ground", "m": 0.0, "I": np.zeros((3, 3))},
+               *({"name": f"link_{k}", "m": 3.0, "I": np.diag([0.2, 0.02, 0.2])} for k in (1, 2, 3)),
+               {"name": "end_effector", "m": 0.0, "I": np.zeros((3, 3))}],
+    "joints": [
+        _plain_joint("rotational", 0, [0], S_r_SDs=(0.0, 0.5, 0.0)),
+        _plain_joint("rotational", 1, [1], P_r_PDp=(0.0, -0.5, 0.0), A_PDp=[[0, 0, 1], [0, 1, 0], [-1, 0, 0]],
+                     S_r_SDs=(0.0, 0.5, 0.0)),
+        _plain_joint("rotational", 2, [2], P_r_PDp=(0.0, -0.5, 0.0), A_PDp=[[0, 0, -1], [0, 1, 0], [1, 0, 0]],
+                     S_r_SDs=(0.0, 0.5, 0.0)),
+        _plain_joint("rigid", 3, [], P_r_PDp=(0.0, -0.5, 0.0)),
+    ],
+}
+#: the passive dynamic walker of problem data P25: l = 1, r = 0.5, dx = 0.05, dy = 0.7, legs m = 1,
+#: I = diag(0.03, 0.01, 0.03)
+WALKER = {
+    "bodies": [{"name": "ground", "m": 0.0, "I": np.zeros((3, 3))},
+               {"name": "stance_leg", "m": 1.0, "I": np.diag([0.03, 0.01, 0.03])},
+               {"name": "swing_leg", "m": 1.0, "I": np.diag([0.03, 0.01, 0.03])}],
+    "joints": [
+        _plain_joint("rolling_contact", 0, [0], P_r_PDp=(0.0, 0.5, 0.0), S_r_SDs=(-0.05, 0.2, 0.0), r=0.5),
+        _plain_joint("rotational", 1, [1], P_r_PDp=(-0.05, 0.7, 0.0), S_r_SDs=(-0.05, 0.7, 0.0)),
+    ],
+}
+
+
+def robot_cases(description, nq, I_grav, bound=2.0):
+    """``(description, q, qd, I_grav)`` for a fixed tree at random states."""
+
+    @st.composite
+    def draw_case(draw):
+        return (description, _values(draw(_SEEDS), nq, bound), _values(draw(_SEEDS), nq, bound), I_grav)
+
+    return draw_case()
+
+
+_KIND_NAMES = {"virtual_3dof": "virtual 3-DOF", "rolling_contact": "rolling contact", "rigid": "rigid"}
+
+
+def _compact(a):
+    a = np.asarray(a, dtype=float)
+    if a.shape == (3, 3) and np.allclose(a, np.eye(3)):
+        return "E"
+    return " ".join(format_array(a).split())
+
+
+def describe_case(args):
+    """A readable description of ``(description, q, qd, I_grav, ...)``."""
+    description, q, qd, I_grav = args[:4]
+    names = [body["name"] for body in description["bodies"]]
+    lines = [f"a tree of {len(names)} bodies:"]
+    for body in description["bodies"]:
+        lines.append(f"  {body['name']}: m = {body['m']:.4g}, B_I_B = {_compact(body['I'])}")
+    for k, joint in enumerate(description["joints"]):
+        extra = f", r = {joint['r']:.4g}" if joint["kind"] == "rolling_contact" else ""
+        lines.append(
+            f"  joint {k + 1}: {_KIND_NAMES.get(joint['kind'], joint['kind'])} {names[joint['parent']]} -> "
+            f"{names[k + 1]}, q_index {joint['q_index']}, P_r_PDp = {_compact(joint['P_r_PDp'])}, "
+            f"A_PDp = {_compact(joint['A_PDp'])}, S_r_SDs = {_compact(joint['S_r_SDs'])}, "
+            f"A_SDs = {_compact(joint['A_SDs'])}{extra}")
+    lines += [f"  q = {_compact(q)}", f"  qd = {_compact(qd)}", f"  I_grav = {_compact(I_grav)}"]
+    return "\n".join(lines)
+
+
+# ------------------------------------------------------------------------------------------ physics checks
+
+MFG_HINTS = {
+    "no_gyroscopic": "f misses the gyroscopic term: f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + skew(omega) I "
+                     "omega)); omega x (I omega) does no work, so only a comparison of the whole vector shows it "
+                     "(DynamicBody.mfg_contribution, problem 37).",
+    "gyroscopic_sign": "The gyroscopic term is skew(omega) I omega = omega x (I omega), not (I omega) x omega "
+                       "(DynamicBody.mfg_contribution, problem 37).",
+    "no_bias": "f misses the bias accelerations: f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + skew(omega) I "
+               "omega)) with sigma_S = B_a_B and sigma_R = B_omegaDot_B from the pass with qdd = 0 (the centripetal "
+               "and Coriolis accelerations; DynamicBody.mfg_contribution, problem 37).",
+    "gravity_sign": "g is the generalized force of gravity, g = sum(J_S.T A_IB.T I_grav m) with I_grav pointing "
+                    "down; yours has the opposite sign (M qdd = f + g + tau puts g on the right-hand side).",
+    "gravity_body_frame": "I_grav is given in inertial coordinates: bring it into the body first, g = sum(J_S.T "
+                          "(A_IB.T I_grav) m) (DynamicBody.mfg_contribution, problem 37).",
+    "transpose": "The Jacobians project onto the generalized coordinates with their transpose: M = J_S.T m J_S + "
+                 "J_R.T I J_R, f = -(J_S.T m sigma_S + ...), g = J_S.T ...; you used J where J.T belongs.",
+    "f_sign": "f carries a minus sign: M qdd = f + g + tau with f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + "
+              "skew(omega) I omega)) (DynamicBody.mfg_contribution, problem 37).",
+}
+
+
+def _bodies(got, nq):
+    bodies = got.get("bodies") if isinstance(got, dict) else None
+    if not isinstance(bodies, list):
+        fail("the probe could not read the tree's bodies back.")
+    out = []
+    for body in bodies:
+        name = body["name"]
+        out.append((name, float(body["m"]), as_array(body["I"], f"B_I_B of {name}", (3, 3)),
+                    as_array(body["B_J_S"], f"B_J_S of {name}", (3, nq)),
+                    as_array(body["B_J_R"], f"B_J_R of {name}", (3, nq))))
+    return out
+
+
+def _mfg_of(got, nq):
+    return (as_array(got["M"], "M", (nq, nq)), as_array(got["f"], "f", (nq,)), as_array(got["g"], "g", (nq,)))
+
+
+def check_spd(got, args):
+    """``M`` is symmetric and positive-definite."""
+    nq = len(args[1])
+    M = as_array(got["M"], "M", (nq, nq))
+    scale = max(1.0, float(np.abs(M).max()))
+    asymmetry = float(np.abs(M - M.T).max())
+    if asymmetry > SPD.atol * scale:
+        fail(f"M is not symmetric: max |M - M.T| = {asymmetry:.3g} (tolerance {SPD}).\ngot:\n{format_array(M)}",
+             "Every share J_S.T m J_S + J_R.T I J_R is symmetric; a sum of them is too. Look for a product in the "
+             "wrong order (J_S.T m J_R?).", "not_symmetric")
+    smallest = float(np.linalg.eigvalsh(0.5 * (M + M.T)).min())
+    if smallest <= SPD.atol * scale:
+        fail(f"M is not positive-definite: its smallest eigenvalue is {smallest:.4g} (tolerance {SPD}).\n"
+             f"got:\n{format_array(M)}",
+             "The kinetic energy qd.T M qd / 2 is positive for every motion: every body adds J_S.T m J_S + J_R.T I "
+             "J_R (with the transposes on the left).", "not_positive_definite")
+
+
+def check_kinetic_energy(got, args):
+    """``qd.T M qd / 2`` equals the kinetic energy of the bodies from the student's own Jacobians."""
+    description, q, qd = args[:3]
+    nq = len(q)
+    M = as_array(got["M"], "M", (nq, nq))
+    translation = rotation = 0.0
+    for _, m, I, J_S, J_R in _bodies(got, nq):
+        v, omega = J_S @ qd, J_R @ qd
+        translation += 0.5 * m * v @ v
+        rotation += 0.5 * omega @ I @ omega
+    mine = 0.5 * qd @ M @ qd
+    assert_close(mine, translation + rotation, "qd.T M qd / 2", EXACT, [
+        Mistake("missing_rotation", translation, "M misses the rotational part J_R.T I J_R of each body."),
+        Mistake("missing_translation", rotation, "M misses the translational part J_S.T m J_S of each body."),
+        Mistake("factor_two", 2 * (translation + rotation), "M qdd = ... has the kinetic energy qd.T M qd / 2: your "
+                "M is twice the mass matrix."),
+    ], context="(expected: sum(m v.v + omega.I omega) / 2 with v = B_J_S qd, omega = B_J_R qd from your own "
+               "Jacobians)")
+
+
+def check_gravity_gradient(got, args, h=H):
+    """``g = -dV/dq`` for the potential ``V = -sum(m I_grav . I_r_IB)`` of the student's own positions."""
+    description, q, _, I_grav = args[:4]
+    nq = len(q)
+    masses = {body["name"]: body["m"] for body in description["bodies"]}
+    names = [body["name"] for body in got["bodies"]]
+
+    def potential(positions):
+        return -sum(masses[name] * I_grav @ as_array(r, f"the position of {name}", (3,))
+                    for name, r in zip(names, positions))
+
+    fd = -np.array([(potential(plus) - potential(minus)) / (2 * h) for plus, minus in got["positions"]])
+    assert_close(got["g"], fd, "g", DIFFERENCES, [
+        Mistake("gravity_sign", -fd, MFG_HINTS["gravity_sign"]),
+    ], context=f"(expected: -dV/dq of V = -sum(m I_grav . I_r_IB) from your own positions, I_grav = "
+               f"{np.asarray(I_grav).tolist()})")
+
+
+def check_lagrange(got, args, h=H):
+    """Lagrange's equations with the student's own ``M``: ``f = -Mdot qd + d/dq (qd.T M qd / 2)``."""
+    q, qd = args[1], args[2]
+    nq = len(q)
+    M, f, _ = _mfg_of(got, nq)
+    plus, minus = (as_array(x, "M", (nq, nq)) for x in got["M_path"])
+    M_dot = (plus - minus) / (2 * h)
+    dT = np.array([qd @ (as_array(p, "M", (nq, nq)) - as_array(m, "M", (nq, nq))) @ qd / (4 * h)
+                   for p, m in got["M_coordinates"]])
+    lagrange = -M_dot @ qd + dT
+    gyroscopic = -sum(J_R.T @ np.cross(J_R @ qd, I @ (J_R @ qd)) for _, _, I, _, J_R in _bodies(got, nq))
+    assert_close(f, lagrange, "f", DIFFERENCES, [
+        Mistake("f_sign", -lagrange, MFG_HINTS["f_sign"]),
+        Mistake("no_gyroscopic", lagrange - gyroscopic, MFG_HINTS["no_gyroscopic"]),
+        Mistake("gyroscopic_sign", lagrange - 2 * gyroscopic, MFG_HINTS["gyroscopic_sign"]),
+    ], context="(expected: Lagrange's equations with your own M, f = -Mdot qd + d/dq (qd.T M qd / 2), "
+               "Mdot = dM/dt along qd; the gyroscopic terms from your own Jacobians)")
+
+
+def compare_mfg(got, expected, mistakes, context=""):
+    """``M``, ``f``, ``g`` of the student against the reference's, each with the known mistakes that change it."""
+    nq = np.asarray(expected["M"]).shape[0]
+    for key in ("M", "f", "g"):
+        found = [Mistake(name, value[key], MFG_HINTS[name]) for name, value in mistakes.items()
+                 if not close(value[key], expected[key], EXACT)]
+        assert_close(got[key] if isinstance(got, dict) else None, expected[key], key, EXACT, found,
+                     context=context or f"(nq = {nq})")
+
+
+# ------------------------------------------------------------------------------------------ runs
+
+
+def first_departure(got, expected, tol):
+    """Index of the first row where ``got`` leaves ``expected`` (entrywise ``tol``), or ``None``."""
+    bad = np.abs(got - expected) > tol.atol + tol.rtol * np.abs(expected)
+    rows = np.flatnonzero(bad.reshape(bad.shape[0], -1).any(axis=1))
+    return int(rows[0]) if rows.size else None
+
+
+def run_array(run, key, shape, what):
+    """``run[key]`` as a finite array of the given shape."""
+    if not isinstance(run, dict) or key not in run:
+        fail(f"{what} returned no {key!r}.", "Return a dict with the keys named in the docstring.", "format")
+    return as_array(run[key], f"{key} of {what}", shape)
+
+
+def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note=""):
+    """Fail at the first output time where one of ``keys`` of the run ``got`` leaves the reference run
+    ``expected`` (tolerance per key in ``tols``); the message names the time and shows both states."""
+    t = np.asarray(expected["t"], dtype=float)
+    run_array(got, "t", t.shape, what)
+    mine = {key: run_array(got, key, np.shape(expected[key]), what) for key in keys}
+    departures = [(i, k, key) for k, key in enumerate(keys)
+                  if (i := first_departure(mine[key], np.asarray(expected[key]), tols[key])) is not None]
+    if not departures:
+        return
+    i, _, key = min(departures)
+    try:
+        assert_close(mine[key][i], expected[key][i], f"{key} at t = {t[i]:.6g} s", tols[key], context=f"({what})",
+                     note=f"Your run first leaves the reference's at t = {t[i]:.6g} s (output {i + 1} of {t.size}); "
+                          f"up to there it agrees.{(' ' + note) if note else ''}")
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, hint, diagnosis) from None
+
+
+def subsample(t, y, n=250):
+    """At most ``n`` points of a curve, for the figures."""
+    t, y = np.asarray(t, dtype=float), np.asarray(y, dtype=float)
+    step = max(1, int(np.ceil(t.size / n)))
+    return t[::step], y[::step]
+
+
+def run_figure(title, ylabel, t_mine, mine, t_ours, ours, labels, extra=()):
+    """Curves of the student's run over the reference's (columns of ``mine``/``ours`` labelled by ``labels``);
+    ``extra``: more reference-side curves ``(label, t, y)`` such as the desired values."""
+    mine, ours = np.asarray(mine, dtype=float), np.asarray(ours, dtype=float)
+    return figure(title, "t [s]", ylabel,
+                  student=[(label, *subsample(t_mine, mine[:, k])) for k, label in enumerate(labels)],
+                  reference=[(label, *subsample(t_ours, ours[:, k])) for k, label in enumerate(labels)]
+                  + [(label, *subsample(t, y)) for label, t, y in extra])
+
+
+def assert_energy_conserved(got, tol, what, hint):
+    """The energy ``T + V`` of the run ``got`` (``"t"``, ``"T"``, ``"V"``, from the student's own kinematics) stays
+    within ``tol`` of its start."""
+    t = run_array(got, "t", None, what)
+    T, V = run_array(got, "T", t.shape, what), run_array(got, "V", t.shape, what)
+    E = T + V
+    drift = np.abs(E - E[0])
+    if drift.max() > tol.atol:
+        i = int(np.argmax(drift > tol.atol))
+        try:
+            assert_close(E[i], E[0], f"the energy T + V at t = {t[i]:.4g} s", tol,
+                         context=f"(its value at t = 0: {what} is conservative)",
+                         note=f"T and V come from your own kinematics (T = sum(m v.v + omega.I omega) / 2 with your "
+                              f"Jacobians, V = -sum(m I_grav . I_r_IB)); the largest drift is {drift.max():.4g} at "
+                              f"t = {t[int(np.argmax(drift))]:.4g} s.")
+        except CheckFailure as exc:
+            raise CheckFailure(exc.message, hint, "energy_drift") from None

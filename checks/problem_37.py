@@ -1,0 +1,397 @@
+"""Checks of problem 37: the equations of motion by projected Newton-Euler (``DynamicBody.mfg_contribution``,
+``forward_dynamics``), the three controllers and the robot's simulation under each.
+
+Physics first (no reference needed): ``M`` symmetric positive-definite, the kinetic energy and the potential energy
+of the student's own kinematics, Lagrange's equations for ``f`` with the student's own ``M``.  Then the values
+against the reference with a catalogue of known mistakes, on the robot (square Jacobians) and on random trees.  The
+controllers are judged by their torques at random states and by their behaviour: computed torques track the path,
+gravity compensation holds the arm still while it is not commanded to move, PD alone sags.  The student's
+simulations run once per grading, in the sandbox, on the reference's desired trajectory; the reference's runs are
+cached on disk.
+"""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    CheckFailure,
+    Mistake,
+    Tol,
+    assert_close,
+    check,
+    close,
+    fail,
+)
+
+from ._dynamics import (
+    H,
+    ROBOT,
+    assert_run,
+    check_gravity_gradient,
+    check_kinetic_energy,
+    check_lagrange,
+    check_spd,
+    compare_mfg,
+    describe_case,
+    rich_case,
+    robot_cases,
+    run_array,
+    run_figure,
+    tree_cases,
+)
+
+TITLE = "Robotic Arm. 2 - Controller Evaluation"
+
+#: the sheet's gains and gravity (problem data P32, P37)
+P_GAIN, D_GAIN = 10.0, 50.0
+ROBOT_GRAV = np.array([0.0, -9.81, 0.0])
+CONTROLLERS = ("pd", "gravity_compensation", "computed_torques")
+NAMES = {"pd": "PD", "gravity_compensation": "gravity compensation", "computed_torques": "computed torques"}
+#: how far a run may stray from the tight reference run: any solve_ivp method at its default tolerances stays within
+#: 0.004 rad and 0.02 rad/s; a fixed-step Euler loop with a step the fast mode (about 110 1/s) cannot follow does not
+BAND = {"q": Tol("a reasonable integrator", 1e-2), "qd": Tol("a reasonable integrator", 5e-2)}
+#: computed torques keep the end effector this close to the path [m] (the reference: 1e-6)
+TRACK = 0.02
+#: gravity compensation holds the joints this still until 0.25 s [rad] (the reference: 0)
+HOLD = 1e-3
+#: PD alone lets the end effector sink at least this far below the path by 0.25 s [m] (the reference: 0.096)
+SAG = 0.05
+T_REST = 0.25
+T_END = 2.0
+#: how long each controller's run is simulated [s]: computed torques over the whole path; PD and gravity
+#: compensation until the end of the acceleration phase, where their sag and lag have shown (keeps grading fast)
+T_RUN = {"computed_torques": T_END, "gravity_compensation": 0.75, "pd": 0.75}
+#: seconds allowed for one of the student's simulations (the reference takes about 1 s)
+SIMULATION_TIMEOUT = 30.0
+_SEEDS = st.integers(0, 2**32 - 1)
+
+INTEGRATION_HINT = ("Your right-hand side robot_ode agrees with the reference at three states of the reference's "
+                    "run, so the integration loses accuracy: use scipy.integrate.solve_ivp (any method at its default "
+                    "tolerances is accurate enough); a fixed-step Euler loop needs a step far below the 0.01 s of the "
+                    "table (the arm has a fast mode of about 110 1/s under D = 50).")
+INITIAL_HINT = ("The simulation starts on the desired trajectory at rest: y0 = (q_des(0), qd_des(0)), the first row "
+                "of the table passed to simulate.")
+ODE_HINT = ("Your robot_ode differs from the reference's (see the check of robot_ode above); fix it first, the "
+            "simulation follows.")
+
+
+# ------------------------------------------------------------------------------------------ physics
+
+
+def _physics(ctx, compare, examples=8):
+    extra = (H,)
+    args = rich_case(extra=extra)
+    compare(ctx.student("_dynamics.lagrange", *args), args)
+    ctx.compare_random("_dynamics.lagrange", tree_cases(extra=extra), name="M, f, g", tol=EXACT,
+                       compare=lambda got, expected, a: compare(got, a), examples=examples, describe=describe_case)
+
+
+@check(2, title="M is symmetric positive-definite on random trees (rotational, prismatic, rolling, 3-DOF and rigid "
+       "joints)", stage=STAGE_STRUCTURE, group="mass_matrix")
+def check_mass_matrix(ctx):
+    _physics(ctx, check_spd)
+
+
+@check(2, title="qd.T M qd / 2 is the kinetic energy sum(m v.v + omega.I omega) / 2 from your own Jacobians",
+       stage=STAGE_STRUCTURE, group="kinetic_energy")
+def check_kinetic_energy_matches(ctx):
+    _physics(ctx, check_kinetic_energy)
+
+
+@check(1, title="g is minus the gradient of your own potential energy V = -sum(m I_grav . I_r_IB) (finite "
+       "differences)", stage=STAGE_STRUCTURE, group="potential")
+def check_gravity_is_potential(ctx):
+    _physics(ctx, check_gravity_gradient)
+
+
+@check(2, title="f satisfies Lagrange's equations with your own M: f = -Mdot qd + d/dq (qd.T M qd / 2)",
+       stage=STAGE_STRUCTURE, group="lagrange")
+def check_lagrange_equations(ctx):
+    _physics(ctx, check_lagrange)
+
+
+# ------------------------------------------------------------------------------------------ values
+
+
+def _compare_mfg(ctx):
+    def compare(got, expected, args):
+        compare_mfg(got, expected, ctx.reference("_dynamics.mfg_mistakes", *args))
+
+    return compare
+
+
+@check(2, title="M, f, g of the robot arm (problem 32) at random states", stage=STAGE_RANDOM, group="robot")
+def check_robot_mfg(ctx):
+    ctx.compare_random("_dynamics.mfg", robot_cases(ROBOT, 3, ROBOT_GRAV), name="M, f, g", tol=EXACT,
+                       compare=_compare_mfg(ctx), examples=10, describe=describe_case)
+
+
+@check(3, title="M, f, g of random trees with masses and inertias", stage=STAGE_RANDOM, group="trees")
+def check_tree_mfg(ctx):
+    compare = _compare_mfg(ctx)
+    args = rich_case()
+    compare(ctx.student("_dynamics.mfg", *args), ctx.reference("_dynamics.mfg", *args), args)
+    ctx.compare_random("_dynamics.mfg", tree_cases(), name="M, f, g", tol=EXACT, compare=compare, examples=12,
+                       describe=describe_case)
+
+
+def _spd(rng, n=3):
+    A = rng.uniform(-1, 1, (n, n))
+    return A @ A.T + 0.5 * np.eye(n)
+
+
+@st.composite
+def _dynamics_cases(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return (_spd(rng), *rng.uniform(-3, 3, (3, 3)))
+
+
+@check(1, title="forward_dynamics(M, f, g, tau) solves M qdd = f + g + tau", stage=STAGE_RANDOM,
+       group="forward_dynamics")
+def check_forward_dynamics(ctx):
+    def mistakes(args, expected):
+        M, f, g, tau = args
+        return [
+            Mistake("multiplied_not_solved", M @ (f + g + tau), "Solve M qdd = f + g + tau for qdd "
+                    "(np.linalg.solve(M, f + g + tau)); you multiplied by M."),
+            Mistake("missing_torque", np.linalg.solve(M, f + g), "The torques act too: M qdd = f + g + tau."),
+            Mistake("sign_flip", np.linalg.solve(M, -(f + g + tau)), "M qdd = f + g + tau: f, g and tau are on the "
+                    "right-hand side with a plus sign."),
+        ]
+
+    ctx.compare_random("_dynamics.forward_dynamics", _dynamics_cases(), name="forward_dynamics(M, f, g, tau)",
+                       tol=EXACT, mistakes=mistakes, examples=10)
+
+
+# ------------------------------------------------------------------------------------------ controllers
+
+
+@st.composite
+def _controller_cases(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return ([(_spd(rng), *rng.uniform(-3, 3, (7, 3)))],)
+
+
+def _pd(case):
+    _, _, _, q, qd, q_des, qd_des, _ = case
+    return P_GAIN * (q_des - q) + D_GAIN * (qd_des - qd)
+
+
+def _describe_controller_case(args):
+    names = ("M", "f", "g", "q", "qd", "q_des", "qd_des", "qdd_des")
+    return ", ".join(f"{name} = {np.round(np.asarray(value), 4).tolist()}" for name, value in zip(names, args[0][0]))
+
+
+def _controller_check(ctx, controller, mistakes):
+    def compare(got, expected, args):
+        case = args[1][0]
+        assert_close(got[0] if isinstance(got, list) and got else got, expected[0],
+                     f"the torques of {NAMES[controller]}", EXACT,
+                     [Mistake(name, value, hint) for name, value, hint in mistakes(case)])
+
+    ctx.compare_random("problem_37.torques", _controller_cases().map(lambda args: (controller, *args)),
+                       name=NAMES[controller], tol=EXACT, compare=compare, examples=10,
+                       describe=lambda args: _describe_controller_case(args[1:]))
+
+
+@check(1, title="gravity_compensation_torque: tau = -g + P (q_des - q) + D (qd_des - qd) at random states",
+       stage=STAGE_RANDOM, group="gravity_compensation_torque")
+def check_gravity_compensation_torque(ctx):
+    def mistakes(case):
+        g, pd = case[2], _pd(case)
+        return [
+            ("gravity_sign", g + pd, "Gravity compensation cancels g: M qdd = f + g + tau needs tau = -g (problem "
+             "32), plus the PD torques."),
+            ("missing_pd", -g, "Controller 2 is the PD controller plus the gravity compensation: tau = -g + PD."),
+        ]
+
+    _controller_check(ctx, "gravity_compensation", mistakes)
+
+
+@check(2, title="computed_torque: tau = M qdd_des - f - g + P (q_des - q) + D (qd_des - qd) at random states",
+       stage=STAGE_RANDOM, group="computed_torque")
+def check_computed_torque(ctx):
+    def mistakes(case):
+        M, f, g, _, _, _, _, qdd_des = case
+        pd = _pd(case)
+        return [
+            ("f_sign", M @ qdd_des + f - g + pd, "M qdd = f + g + tau: to get qdd_des, tau = M qdd_des - f - g "
+             "(+ PD); yours adds f."),
+            ("missing_f", M @ qdd_des - g + pd, "Computed torques compensate Coriolis and centrifugal forces too: "
+             "tau = M qdd_des - f - g + PD."),
+            ("gravity_sign", M @ qdd_des - f + g + pd, "tau = M qdd_des - f - g + PD: the gravity term is -g."),
+            ("missing_mass_matrix", qdd_des - f - g + pd, "The desired accelerations need the torques M qdd_des."),
+            ("pd_through_mass_matrix", M @ (qdd_des + pd) - f - g, "The sheet adds the PD torques after the model: "
+             "tau = M qdd_des - f - g + P (q_des - q) + D (qd_des - qd), not M (qdd_des + PD) - f - g."),
+            ("missing_pd", M @ qdd_des - f - g, "Controller 3 keeps the PD part: tau = M qdd_des - f - g + PD."),
+        ]
+
+    _controller_check(ctx, "computed_torques", mistakes)
+
+
+def _table(ctx):
+    return ctx.reference("problem_37.trajectory", persist=True)
+
+
+def _rows_around(table, t):
+    """The rows of the table around ``t`` (two on each side): what linear interpolation at ``t`` needs, and small
+    enough to send with every random case."""
+    times = np.asarray(table["t"])
+    k = int(np.clip(np.searchsorted(times, t, side="right") - 1, 0, times.size - 2))
+    rows = slice(max(k - 1, 0), min(k + 3, times.size))
+    return {key: np.asarray(table[key])[rows] for key in ("t", "q", "qd", "qdd")}
+
+
+def _ode_cases(table):
+    @st.composite
+    def draw_case(draw):
+        controller = draw(st.sampled_from(CONTROLLERS))
+        rng = np.random.default_rng(draw(_SEEDS))
+        t = float(rng.uniform(0.0, T_END))
+        return controller, _rows_around(table, t), [(t, rng.uniform(-2, 2, 6))]
+
+    return draw_case()
+
+
+@check(2, title="robot_ode(t, y, tree, trajectory, controller) = (qd, qdd) at random times and states, for each "
+       "controller (the right-hand side of the simulations below)", stage=STAGE_STRUCTURE, group="runs")
+def check_robot_ode(ctx):
+    def compare(got, expected, args):
+        controller, rows, [(t, y)] = args
+        times = rows["t"]
+        nearest = float(times[np.argmin(np.abs(times - t))])
+        previous = float(times[max(np.searchsorted(times, t, side="right") - 1, 0)])
+        found = [Mistake("nearest_sample", ctx.reference("problem_37.robot_ode", controller, rows, [(nearest, y)])[0],
+                         "Interpolate the desired values linearly between the table's rows (np.interp per column); "
+                         "you took the nearest row."),
+                 Mistake("previous_sample", ctx.reference("problem_37.robot_ode", controller, rows,
+                                                          [(previous, y)])[0],
+                         "Interpolate the desired values linearly between the table's rows (np.interp per column); "
+                         "you took the row before t."),
+                 Mistake("state_order", np.concatenate([expected[0][3:], expected[0][:3]]),
+                         "dy/dt = (qd, qdd) for y = (q, qd): the velocities come first.")]
+        assert_close(got[0] if isinstance(got, list) and got else got, expected[0],
+                     f"robot_ode at t = {t:.6g} with the {NAMES[controller]} controller", EXACT, found)
+
+    ctx.compare_random("problem_37.robot_ode", _ode_cases(_table(ctx)), name="robot_ode", tol=EXACT, examples=10,
+                       compare=compare, describe=lambda args: f"controller {args[0]!r}, t = {args[2][0][0]:.6g}, "
+                       f"y = {np.round(args[2][0][1], 4).tolist()} (the desired trajectory of problem 32)")
+
+
+# ------------------------------------------------------------------------------------------ simulations
+
+
+def _simulation(ctx, controller):
+    """The student's run and the reference's under ``controller``, with figures of the end effector's position and
+    velocity against the desired ones."""
+    table = _table(ctx)
+    t_end = T_RUN[controller]
+    expected = ctx.reference("problem_37.simulate", controller, table, t_end, persist=True)
+    states = [int(i) for i in np.linspace(1, np.asarray(expected["t"]).size - 1, 3)]
+    probes = [(float(expected["t"][i]), np.concatenate([expected["q"][i], expected["qd"][i]])) for i in states]
+    ode = ctx.reference("problem_37.robot_ode", controller, table, probes)
+    got = ctx.student("problem_37.simulate", controller, table, t_end, timeout=SIMULATION_TIMEOUT)
+    t = np.asarray(expected["t"])
+    n = t.size
+    for key in ("t", "q", "qd", "x", "xd"):
+        run_array(got, key, np.shape(expected[key]), f"simulate({controller!r}, trajectory, {t_end:g})")
+    desired = np.asarray(table["t"]) <= t_end
+    name = NAMES[controller]
+    for key, label, unit in (("x", "position", "m"), ("xd", "velocity", "m/s")):
+        ctx.add_figure(run_figure(
+            f"Problem 37, {name}: end-effector {label} against the desired one",
+            f"I_{'r' if key == 'x' else 'v'}_E [{unit}]", got["t"], got[key], t, expected[key],
+            [f"{axis}" for axis in "xyz"],
+            extra=[(f"desired {axis}", table["t"][desired], table[key][desired][:, k])
+                   for k, axis in enumerate("xyz")]))
+    return table, got, expected, probes, ode, n
+
+
+def _diagnosis(ctx, controller, got, expected, probes, ode):
+    """``(hint, diagnosis)`` of a run that goes wrong: a wrong start, a right-hand side that differs from the
+    reference's at three states of the reference's run, or else the integration."""
+    start = np.concatenate([expected["q"][0], expected["qd"][0]])
+    if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
+        return INITIAL_HINT, "initial_state"
+    if not close(ctx.student("problem_37.robot_ode", controller, _table(ctx), probes), ode, EXACT):
+        return ODE_HINT, "ode"
+    return INTEGRATION_HINT, "integration"
+
+
+def _diagnosed(ctx, controller, got, expected, probes, ode, check):
+    """Run ``check()``; a failure gets the diagnosis of the run."""
+    try:
+        check()
+    except CheckFailure as exc:
+        hint, diagnosis = _diagnosis(ctx, controller, got, expected, probes, ode)
+        raise CheckFailure(exc.message, hint if diagnosis != "integration" or not exc.hint else exc.hint,
+                           diagnosis if diagnosis != "integration" or not exc.diagnosis else exc.diagnosis) from None
+
+
+def _follow_reference(got, expected, controller):
+    """The student's run stays within the bands of the reference's."""
+    assert_run(got, expected, ("q", "qd"), BAND, f"the {NAMES[controller]} run",
+               note="Any solve_ivp method at its default tolerances stays within the band.")
+
+
+@check(3, title="computed torques: the end effector tracks the path within 0.02 m over the 2 s, and the run "
+       "follows the reference's", stage=STAGE_VALUES, group="runs")
+def check_computed_torques_run(ctx):
+    controller = "computed_torques"
+    table, got, expected, probes, ode, n = _simulation(ctx, controller)
+
+    def tracks():
+        error = np.linalg.norm(got["x"] - np.asarray(table["x"])[:n], axis=1)
+        if error.max() > TRACK:
+            i = int(np.argmax(error > TRACK))
+            assert_close(got["x"][i], table["x"][i], f"the end effector at t = {got['t'][i]:.4g} s",
+                         Tol("tracking", TRACK), context="(the desired path: computed torques track it)",
+                         note=f"It is {error[i]:.4g} m away from the path; the figures show your run over the "
+                              f"reference's.")
+        _follow_reference(got, expected, controller)
+
+    _diagnosed(ctx, controller, got, expected, probes, ode, tracks)
+
+
+@check(2, title="gravity compensation: the arm stays at rest for the first 0.25 s (within 1e-3 rad), and the run "
+       "follows the reference's until 0.75 s", stage=STAGE_VALUES, group="runs")
+def check_gravity_compensation_run(ctx):
+    controller = "gravity_compensation"
+    table, got, expected, probes, ode, n = _simulation(ctx, controller)
+
+    def holds():
+        resting = np.asarray(got["t"]) <= T_REST
+        drift = np.abs(got["q"][resting] - got["q"][0]).max(axis=1)
+        if drift.max() > HOLD:
+            i = int(np.argmax(drift > HOLD))
+            assert_close(got["q"][i], got["q"][0], f"q at t = {got['t'][i]:.4g} s", Tol("at rest", HOLD),
+                         context="(the start: until 0.25 s the arm is not commanded to move, and gravity "
+                                 "compensation holds it still)",
+                         note="Gravity compensation cancels g exactly: with tau = -g(q) + PD and no error, qdd = 0.")
+        _follow_reference(got, expected, controller)
+
+    _diagnosed(ctx, controller, got, expected, probes, ode, holds)
+
+
+@check(2, title="PD alone: the end effector sags at least 0.05 m below the path by 0.25 s, and the run follows the "
+       "reference's until 0.75 s", stage=STAGE_VALUES, group="runs")
+def check_pd_run(ctx):
+    controller = "pd"
+    table, got, expected, probes, ode, n = _simulation(ctx, controller)
+
+    def sags():
+        i = int(np.argmin(np.abs(np.asarray(got["t"]) - T_REST)))
+        sag = float(table["x"][i][1] - got["x"][i][1])
+        if sag < SAG:
+            fail(f"with PD alone the end effector should sink below the path before the motion starts: at t = "
+                 f"{got['t'][i]:.4g} s it is {sag:.4g} m below the desired height (expected at least {SAG} m; the "
+                 f"reference: {table['x'][i][1] - expected['x'][i][1]:.4g} m).",
+                 "Controller 1 is PD only: tau = P (q_des - q) + D (qd_des - qd), without a gravity term; the PD "
+                 "torques act only once an error has built up, so the arm sags first.", "no_sag")
+        _follow_reference(got, expected, controller)
+
+    _diagnosed(ctx, controller, got, expected, probes, ode, sags)

@@ -1,0 +1,362 @@
+"""Checks of problem 46: the robot arm of problem 37 caught by a wire (``make_wire_event``, ``constraint_terms``,
+``plastic_impact``, ``constrained_dynamics``, ``constrained_ode``, ``simulate``).
+
+The pieces first, by physics where it decides (the constraint Jacobian is minus the gradient of the student's own
+event function; after a plastic impact ``J qd+ = 0`` and the impulse pulls, ``Lam > 0``; the constrained dynamics
+meet the constraint and the equations of motion) and against the reference at random states with a catalogue of
+known mistakes.  Then the run: the event, the impact and the constrained motion, against a tight reference run
+within the bands of the problem data's erratum (the sheet's digits come from MATLAB's loose ode45), and the
+constraint violation with and without Baumgarte stabilisation.  The run needs every piece: when one of them fails,
+the run's checks are not run (they share one group, the pieces at an earlier stage).
+"""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    CheckFailure,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    check,
+    close,
+    fail,
+    figure,
+)
+
+from ._dynamics import assert_run, run_array, subsample
+
+TITLE = "Robotic Arm. 3 - Event Detection"
+MANUAL = {"derivation": ("46: derive the constraint terms J_lambda and sigma_lambda (and the Baumgarte terms).", 2)}
+
+#: problem data P46
+ANCHOR = np.array([-1.0, -1.0, -1.0])
+WIRE_LENGTH = 2.0
+T_END = 2.0
+SHEET_EVENT_TIME = 0.93313
+SHEET_Q_PLUS = np.array([0.45214, -0.59389, -1.6775])
+SHEET_QD_PLUS = np.array([0.98849, 0.01024, -0.99379])
+#: the erratum's bands around a tight reference run
+EVENT_TIME = Tol("event time, erratum band", 2e-3)
+Q_PLUS = Tol("q_PLUS, erratum band", 1e-3)
+QD_PLUS = Tol("d_q_PLUS, erratum band", 5e-2)
+ERRATUM = ("The sheet's t = 0.93313, q_PLUS and d_q_PLUS come from MATLAB's ode45 at RelTol 1e-3: a tight "
+           "integration gives q_PLUS to 1e-5 and the event time to 2e-4, but d_q_PLUS differs by up to 0.04 per "
+           "component. Graded against a tight reference run with the bands of the problem data.")
+#: after the impact: the same bands as the free robot (problem 37); any solve_ivp method at default tolerances
+#: stays within 0.0021 rad and 0.015 rad/s
+BAND = {"q": Tol("a reasonable integrator", 1e-2), "qd": Tol("a reasonable integrator", 5e-2)}
+#: with Baumgarte stabilisation the wire stays taut to this [m] (solve_ivp at default tolerances: 4e-5)
+TAUT = Tol("constraint violation with Baumgarte", 1e-3)
+IMPACT = Tol("after a plastic impact", 1e-8, 1e-8)
+PHYSICS = Tol("constrained dynamics", 1e-8, 1e-8)
+H = 1e-6
+DIFFERENCES = Tol("finite differences, h = 1e-6", 1e-6, 1e-6)
+SIMULATION_TIMEOUT = 30.0
+_SEEDS = st.integers(0, 2**32 - 1)
+
+INTEGRATION_HINT = ("When the event function (checked above) is right, the event time and the state at the impact "
+                    "depend on the integration: use scipy.integrate.solve_ivp with events=[wire_stretched] (any "
+                    "method at its default tolerances lands within the bands), not a fixed-step loop.")
+CONSTRAINT_HINTS = {
+    "baumgarte_sign": "Baumgarte adds P_B c + D_B c_dot with c = wire_length - |anchor - I_r_E| and c_dot = -dir.T "
+                      "I_v_E, so that c_ddot + D_B c_dot + P_B c = 0 drives a violation back to zero; with the wrong "
+                      "sign it grows.",
+    "missing_baumgarte": "With baumgarte=True, sigma_lam gets the stabilisation P_B (wire_length - |anchor - I_r_E|) "
+                         "+ D_B (0 - dir.T I_v_E).",
+    "jacobian_sign": "J_lam = -dir.T A_IE B_J_S,E with dir = (I_r_E - anchor) / |I_r_E - anchor|: the constraint is "
+                     "c = wire_length - |anchor - I_r_E|, whose rate is -dir.T I_v_E.",
+    "constraint_sign": "The sheet writes the constraint as c = wire_length - |anchor - I_r_E| (J_lam = -dir.T A_IE "
+                       "B_J_S,E): then lambda > 0 is the wire's pull. Yours is the same constraint with the other sign "
+                       "(J and sigma both flipped).",
+    "body_frame": "B_J_S,E and B_a_E are in the end effector's coordinates: bring them to I with A_IE before the dot "
+                  "product with dir (which is in I).",
+    "no_centripetal": "sigma_lam = -dir.T A_IE B_a_E - |dir x I_v_E|^2 / wire_length: the second derivative of "
+                      "|anchor - I_r_E| has a centripetal part (the direction turns).",
+    "centripetal_sign": "The centripetal part of sigma_lam is -|dir x I_v_E|^2 / wire_length (c_ddot = J qdd + "
+                        "sigma with c = wire_length - |anchor - I_r_E|).",
+}
+
+
+def _robot_state(rng, spread=1.0):
+    return rng.uniform(-spread, spread, 3) + np.array([0.4, -0.6, -1.6]), rng.uniform(-1.5, 1.5, 3)
+
+
+# ------------------------------------------------------------------------------------------ the event
+
+
+@st.composite
+def _event_cases(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return ([np.concatenate(_robot_state(rng)) for _ in range(3)],)
+
+
+@check(2, title="make_wire_event: the residual |anchor - I_r_E| - wire_length at random states, terminal, direction "
+       "+1", stage=STAGE_STRUCTURE, group="wire")
+def check_event_function(ctx):
+    def compare(got, expected, args):
+        if not isinstance(got, dict):
+            fail(f"the probe could not evaluate your event function: {str(got)[:200]}")
+        values = np.asarray(expected["values"])
+        assert_close(got["values"], values, "wire_stretched(t, y)", EXACT, [
+            Mistake("event_sign", -values, "The residual is |anchor - I_r_E| - wire_length: negative while the wire "
+                    "is slack, zero when it is taut (with direction +1 the event fires as it becomes taut)."),
+        ], context="(three random states of the arm)")
+        if got["terminal"] is not True:
+            fail(f"wire_stretched.terminal is {got['terminal']!r}: the integration must stop when the wire becomes "
+                 f"taut (the impact follows).", "Set wire_stretched.terminal = True.", "not_terminal")
+        if got["direction"] != 1.0:
+            fail(f"wire_stretched.direction is {got['direction']!r}, expected +1: the residual crosses zero from - to "
+                 f"+ when the wire becomes taut.",
+                 "direction = +1 detects only crossings from - to +; -1 would wait for the wire to go slack again "
+                 "(it never does) and 0 also fires on that.", "event_direction")
+
+    ctx.compare_random("problem_46.event", _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
+                       describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}")
+
+
+# ------------------------------------------------------------------------------------------ constraint terms
+
+
+@st.composite
+def _states(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return (rng.uniform(-2, 2, 3),)
+
+
+@check(1, title="J_lam is minus the gradient of your own event residual |anchor - I_r_E| - wire_length (finite "
+       "differences)", stage=STAGE_STRUCTURE, group="wire")
+def check_constraint_jacobian(ctx):
+    def compare(got, expected, args):
+        J = as_array(got["J"], "J_lam", (1, 3))
+        fd = np.array([[(plus - minus) / (2 * H) for plus, minus in got["shifted"]]])
+        assert_close(J, -fd, "J_lam", DIFFERENCES, [
+            Mistake("jacobian_sign", fd, CONSTRAINT_HINTS["jacobian_sign"]),
+        ], context=f"at q = {np.round(args[0], 4).tolist()} (expected: -d/dq of your own event residual)")
+
+    ctx.compare_random("problem_46.event_differences", _states().map(lambda a: (a[0], H)), name="J_lam",
+                       tol=DIFFERENCES, compare=compare, examples=6,
+                       describe=lambda args: f"q = {np.round(args[0], 4).tolist()}")
+
+
+@st.composite
+def _term_cases(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    q, qd = _robot_state(rng, 2.0)
+    return ([(q, qd, draw(st.booleans()))],)
+
+
+@check(3, title="constraint_terms: J_lam and sigma_lam (with and without Baumgarte) at random states",
+       stage=STAGE_STRUCTURE, group="wire")
+def check_constraint_terms(ctx):
+    def compare(got, expected, args):
+        q, qd, baumgarte = args[0][0]
+        mistakes = ctx.reference("problem_46.constraint_mistakes", q, qd, baumgarte)
+        if not isinstance(got, list) or not got or not isinstance(got[0], dict):
+            fail(f"constraint_terms must return (J_lam, sigma_lam), got {str(got)[:200]}", diagnosis="format")
+        for key, name in (("J", "J_lam"), ("sigma", "sigma_lam")):
+            value = np.asarray(expected[0][key])
+            found = [Mistake(mistake, terms[key], CONSTRAINT_HINTS[mistake]) for mistake, terms in mistakes.items()
+                     if not close(terms[key], value, EXACT)]
+            assert_close(got[0][key], value, name, EXACT, found, context=f"(baumgarte = {baumgarte})")
+
+    ctx.compare_random("problem_46.constraint_terms", _term_cases(), name="J_lam, sigma_lam", tol=EXACT,
+                       compare=compare, examples=10,
+                       describe=lambda args: f"q = {np.round(args[0][0][0], 4).tolist()}, qd = "
+                       f"{np.round(args[0][0][1], 4).tolist()}, baumgarte = {args[0][0][2]}")
+
+
+# ------------------------------------------------------------------------------------------ impact
+
+
+def _spd(rng, n=3):
+    A = rng.uniform(-1, 1, (n, n))
+    return A @ A.T + 0.5 * np.eye(n)
+
+
+@st.composite
+def _impacts(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    M, J, qd = _spd(rng), rng.uniform(-1, 1, (1, 3)), rng.uniform(-2, 2, 3)
+    if (J @ qd)[0] > 0:  # closing: J qd- < 0 (c = wire_length - |anchor - I_r_E| decreasing)
+        qd = -qd
+    return ([(M, J, qd)],)
+
+
+@check(3, title="plastic_impact: J qd+ = 0, Lam > 0 and no energy gained on random closing impacts, and the values "
+       "of the reference", stage=STAGE_STRUCTURE, group="wire")
+def check_plastic_impact(ctx):
+    def compare(got, expected, args):
+        M, J, qd_minus = args[0][0]
+        if not isinstance(got, list) or not got or not isinstance(got[0], dict):
+            fail(f"plastic_impact must return (qd_plus, Lam), got {str(got)[:200]}", diagnosis="format")
+        qd_plus = as_array(got[0]["qd_plus"], "qd_plus", (3,))
+        Lam = as_array(got[0]["Lam"], "Lam", (1,))
+        expected_plus, expected_Lam = np.asarray(expected[0]["qd_plus"]), np.asarray(expected[0]["Lam"])
+        elastic = 2 * expected_plus - qd_minus
+        assert_close(J @ qd_plus, np.zeros(1), "J qd_plus", IMPACT, [
+            Mistake("elastic", J @ elastic, "A fully plastic impact stops the closing velocity: qd_plus = qd_minus + "
+                    "M^-1 J.T Lam with Lam = -(J M^-1 J.T)^-1 J qd_minus gives J qd_plus = 0; yours reverses it "
+                    "(restitution 1, elastic)."),
+            Mistake("unchanged", J @ qd_minus, "The impact changes the velocities: qd_plus = qd_minus + M^-1 J.T Lam."),
+        ], context="(after a plastic impact the constraint's velocity is zero)")
+        if Lam[0] <= 0:
+            assert_close(Lam, expected_Lam, "Lam", EXACT, [
+                Mistake("impulse_sign", -expected_Lam, "Lam = -(J M^-1 J.T)^-1 J qd_minus > 0 for a closing "
+                        "impact (J qd_minus < 0): the wire pulls; the impulse acts through +J.T Lam."),
+            ], context="(a plastic impulse on a closing impact is positive)")
+        energy = (qd_plus @ M @ qd_plus, qd_minus @ M @ qd_minus)
+        if energy[0] > energy[1] * (1 + 1e-9):
+            fail(f"the impact gained kinetic energy: qd_plus.T M qd_plus = {energy[0]:.6g} > qd_minus.T M qd_minus = "
+                 f"{energy[1]:.6g}.", "A plastic impact dissipates energy.", "energy_gain")
+        assert_close(qd_plus, expected_plus, "qd_plus", EXACT)
+        assert_close(Lam, expected_Lam, "Lam", EXACT)
+
+    ctx.compare_random("problem_46.impact", _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
+                       describe=lambda args: "M = {}, J = {}, qd_minus = {}".format(
+                           *(np.round(x, 4).tolist() for x in args[0][0])))
+
+
+@st.composite
+def _constrained_cases(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return ([(_spd(rng), *rng.uniform(-3, 3, (3, 3)), rng.uniform(-1, 1, (1, 3)), rng.uniform(-3, 3, 1))],)
+
+
+@check(2, title="constrained_dynamics: J qdd = -sigma on random systems, and qdd and lam (the force through "
+       "+J.T lam) of the reference", stage=STAGE_STRUCTURE, group="wire")
+def check_constrained_dynamics(ctx):
+    def compare(got, expected, args):
+        M, f, g, tau, J, sigma = args[0][0]
+        if not isinstance(got, list) or not got or not isinstance(got[0], dict):
+            fail(f"constrained_dynamics must return (qdd, lam), got {str(got)[:200]}", diagnosis="format")
+        qdd = as_array(got[0]["qdd"], "qdd", (3,))
+        lam = as_array(got[0]["lam"], "lam", (1,))
+        expected_qdd, expected_lam = np.asarray(expected[0]["qdd"]), np.asarray(expected[0]["lam"])
+        assert_close(J @ qdd, -sigma, "J qdd", PHYSICS, [
+            Mistake("sigma_sign", sigma, "The constraint acceleration is zero: J qdd + sigma = 0, so the lower "
+                    "block row is [J, 0] [qdd; lam] = -sigma."),
+        ], context="(the constraint holds: J qdd + sigma = 0)")
+        assert_close(lam, expected_lam, "lam", EXACT, [
+            Mistake("constraint_force_sign", -expected_lam, "The constraint force acts through +J.T lam: "
+                    "M qdd = f + g + tau + J.T lam, so the system is [[M, -J.T], [J, 0]] [qdd; lam] = "
+                    "[f + g + tau; -sigma]."),
+        ])
+        assert_close(qdd, expected_qdd, "qdd", EXACT)
+
+    ctx.compare_random("problem_46.constrained", _constrained_cases(), name="qdd, lam", tol=EXACT, compare=compare,
+                       examples=10, describe=lambda args: "M = {}, f = {}, g = {}, tau = {}, J = {}, sigma = {}".format(
+                           *(np.round(x, 4).tolist() for x in args[0][0])))
+
+
+# ------------------------------------------------------------------------------------------ the run
+
+
+def _run(ctx, baumgarte):
+    """The student's run and the reference's; the student's is simulated once per grading (kept on the context,
+    which lives for the checks of this problem)."""
+    table = ctx.reference("problem_37.trajectory", persist=True)
+    expected = ctx.reference("problem_46.simulate", table, baumgarte, T_END, persist=True)
+    runs = ctx.__dict__.setdefault("problem_46_runs", {})
+    if baumgarte not in runs:
+        runs[baumgarte] = ctx.student("problem_46.simulate", table, baumgarte, T_END, timeout=SIMULATION_TIMEOUT)
+    return runs[baumgarte], expected
+
+
+def _violation(run, what):
+    t = run_array(run, "t", None, what)
+    x = run_array(run, "x", (t.size, 3), what)
+    after = t >= run["t_event"]
+    return t[after], np.linalg.norm(ANCHOR - x[after], axis=1) - WIRE_LENGTH
+
+
+def _event(got, what):
+    if not isinstance(got, dict) or got.get("t_event") is None:
+        fail(f"{what}: no event, the wire never became taut (t_event is None); the reference's run hits it at "
+             f"t = 0.933 s.", "The residual |anchor - I_r_E| - wire_length rises through zero: the event needs "
+             "direction = +1 (and terminal = True).", "no_event")
+    return float(got["t_event"])
+
+
+def _aligned(got, expected, margin=0.01):
+    """Rows of both runs at their common output times away from both event times."""
+    t_mine, t_ours = np.asarray(got["t"]), np.asarray(expected["t"])
+    events = sorted([float(got["t_event"]), float(expected["t_event"])])
+    common = np.intersect1d(t_mine, t_ours)
+    keep = common[(common < events[0] - margin) | (common > events[1] + margin)]
+    mine, ours = np.isin(t_mine, keep), np.isin(t_ours, keep)
+    return ({"t": t_mine[mine], "q": np.asarray(got["q"])[mine], "qd": np.asarray(got["qd"])[mine]},
+            {"t": t_ours[ours], "q": np.asarray(expected["q"])[ours], "qd": np.asarray(expected["qd"])[ours]})
+
+
+@check(3, title="the run: the wire becomes taut at t = 0.933 s (within 2e-3 s of a tight run), q+ = q-, the impact "
+       "leaves J qd+ = 0 with Lam > 0, and q+, qd+ match within the erratum's bands", stage=STAGE_VALUES, group="wire")
+def check_event_and_impact(ctx):
+    got, expected = _run(ctx, True)
+    what = "simulate(trajectory, baumgarte=True)"
+    t_event = _event(got, what)
+    try:
+        assert_close(t_event, expected["t_event"], "t_event", EVENT_TIME, context=f"(a tight reference run; the "
+                     f"sheet prints {SHEET_EVENT_TIME})", note=ERRATUM)
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
+    q_minus, q_plus = (as_array(got[key], key, (3,)) for key in ("q_minus", "q_plus"))
+    assert_close(q_plus, q_minus, "q_plus", EXACT, context="(an impact changes velocities only: q_plus = q_minus)")
+    qd_plus, Lam = as_array(got["qd_plus"], "qd_plus", (3,)), as_array(got["Lam"], "Lam", (1,))
+    J = as_array(got["J_plus"], "J_lam at the impact (your constraint_terms)", (1, 3))
+    assert_close(J @ qd_plus, np.zeros(1), "J_lam qd_plus", Tol("after a plastic impact", 1e-6, 1e-6),
+                 context="(with your own constraint_terms at the impact: a plastic impact stops the wire's stretching)")
+    if Lam[0] <= 0:
+        fail(f"the impulse of the wire is Lam = {Lam[0]:.6g}: a taut wire pulls, Lam > 0 (J_lam = -dir.T A_IE "
+             f"B_J_S,E).", "Lam = -(J M^-1 J.T)^-1 J qd_minus with J qd_minus < 0 at the moment the wire becomes "
+             "taut.", "impulse_sign")
+    try:
+        assert_close(q_plus, expected["q_plus"], "q_plus", Q_PLUS, context=f"(a tight reference run; the sheet "
+                     f"prints {SHEET_Q_PLUS.tolist()})", note=ERRATUM)
+        assert_close(qd_plus, expected["qd_plus"], "qd_plus", QD_PLUS, context=f"(a tight reference run; the sheet "
+                     f"prints {SHEET_QD_PLUS.tolist()})", note=ERRATUM)
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
+
+
+@check(3, title="the constrained motion after the impact: with Baumgarte the wire stays taut (within 1e-3 m) and "
+       "the run follows the reference's; without it the violation is shown", stage=STAGE_VALUES, group="wire")
+def check_constrained_motion(ctx):
+    got, expected = _run(ctx, True)
+    plain, plain_expected = _run(ctx, False)
+    what = "simulate(trajectory, baumgarte=True)"
+    _event(got, what)
+    _event(plain, "simulate(trajectory, baumgarte=False)")
+    curves = {}
+    for label, run in (("with Baumgarte", got), ("without", plain)):
+        curves[label] = _violation(run, label)
+    ours = {label: _violation(run, label) for label, run in (("with Baumgarte", expected),
+                                                             ("without", plain_expected))}
+    ctx.add_figure(figure("Problem 46: constraint violation after the impact",
+                          "t [s]", "c [m]",
+                          student=[(label, *subsample(*curve)) for label, curve in curves.items()],
+                          reference=[(label, *subsample(*curve)) for label, curve in ours.items()]))
+    ctx.add_figure(figure("Problem 46: joint angles with Baumgarte", "t [s]", "q [rad]",
+                          student=[(f"q{k + 1}", *subsample(got["t"], np.asarray(got["q"])[:, k])) for k in range(3)],
+                          reference=[(f"q{k + 1}", *subsample(expected["t"], np.asarray(expected["q"])[:, k]))
+                                     for k in range(3)]))
+    t, violation = curves["with Baumgarte"]
+    if np.abs(violation).max() > TAUT.atol:
+        i = int(np.argmax(np.abs(violation) > TAUT.atol))
+        assert_close(violation[i], 0.0, f"the constraint violation at t = {t[i]:.4g} s", TAUT,
+                     context="(with Baumgarte stabilisation the wire stays taut)",
+                     note="The figure shows the violation with and without stabilisation, yours over the "
+                          "reference's.")
+    mine, reference = _aligned(got, expected)
+    try:
+        assert_run(mine, reference, ("q", "qd"), BAND, "the run with Baumgarte",
+                   note="Any solve_ivp method at its default tolerances stays within the band (output times near "
+                        "the event are left out).")
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, exc.hint or "When the pieces above agree with the reference, look at the "
+                           "integration: scipy.integrate.solve_ivp with the event, at its default tolerances or "
+                           "tighter, not a fixed-step loop.", exc.diagnosis or "integration") from None

@@ -1,0 +1,195 @@
+"""Shared probes of the dynamics problems (24, 37, 38, 46): kinematic trees with equations of motion.
+
+A tree travels as the plain data of ``probes._trees`` with each body's inertia added::
+
+    {"bodies": [{"name": "body_0", "m": 1.0, "I": [[...], ...]}, ...], "joints": [...]}
+
+``build`` creates it with the package's ``dynamics.DynamicBody`` in place of ``tree.Body`` (through
+``_trees.build``) and gives every body its ``B_I_B``.  The probes read back plain arrays: the package's ``M``, ``f``,
+``g``, and what the physics checks need from the package's own kinematics (Jacobians, velocities, positions at
+shifted coordinates).  ``mfg_mistakes`` computes, from the package's kinematics, the ``M``, ``f``, ``g`` that known
+mistakes give; the grader calls it on the reference only.
+"""
+
+from types import SimpleNamespace
+
+import numpy as np
+
+from . import _trees, module, probe
+
+__all__ = [
+    "MFG_MISTAKES",
+    "classes",
+    "build",
+    "mfg",
+    "mfg_mistakes",
+    "lagrange",
+    "forward_dynamics",
+    "energies",
+    "trace",
+    "pendulum_motion",
+]
+
+#: mistakes of a body's share of M, f, g (see ``_mistaken_share``)
+MFG_MISTAKES = ("no_gyroscopic", "no_bias", "gravity_sign", "gravity_body_frame", "transpose", "f_sign",
+                "gyroscopic_sign")
+
+
+def classes(pkg):
+    """The names of the package's ``tree`` module with ``Body`` replaced by ``dynamics.DynamicBody``."""
+    tree = module(pkg, "tree")
+    names = {name: getattr(tree, name) for name in dir(tree) if not name.startswith("_")}
+    return SimpleNamespace(**{**names, "Body": module(pkg, "dynamics").DynamicBody})
+
+
+def build(pkg, description):
+    """The described tree, built with the package's classes, bodies of ``DynamicBody`` with their inertias."""
+    tree = _trees.build(classes(pkg), description)
+    inertias = {body["name"]: body.get("I") for body in description["bodies"]}
+    for body in tree.bodies:
+        if inertias.get(body.name) is not None:
+            body.B_I_B = np.array(inertias[body.name], dtype=float).reshape(3, 3)
+    return tree
+
+
+def _vectors(q, qd):
+    return np.asarray(q, dtype=float), np.asarray(qd, dtype=float)
+
+
+def _mfg(pkg, tree, q, qd, I_grav):
+    M, f, g = module(pkg, "dynamics").equations_of_motion(tree, q, qd, np.asarray(I_grav, dtype=float))
+    return {"M": np.array(M, dtype=float), "f": np.array(f, dtype=float), "g": np.array(g, dtype=float)}
+
+
+@probe
+def mfg(pkg, description, q, qd, I_grav):
+    """``{"M", "f", "g"}`` of the described tree at ``(q, qd)`` (``equations_of_motion``)."""
+    return _mfg(pkg, build(pkg, description), *_vectors(q, qd), I_grav)
+
+
+def _skew(w):
+    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+
+def _mistaken_share(body, I_grav, mistake):
+    """A body's share of ``(M, f, g)`` from its state, with one mistake:
+
+    ``no_gyroscopic``       f without ``skew(omega) I omega``
+    ``gyroscopic_sign``     f with ``+skew(omega) I omega`` inside the bracket turned around (``(I omega) x omega``)
+    ``no_bias``             f without the bias accelerations ``sigma_S``, ``sigma_R`` (gyroscopic term only)
+    ``gravity_sign``        g with ``-I_grav``
+    ``gravity_body_frame``  g with ``I_grav`` taken as body coordinates (no ``A_IB.T``)
+    ``transpose``           ``J`` where ``J.T`` belongs (square Jacobians only: M = J m J.T, f, g projected by J)
+    ``f_sign``              f with the opposite sign
+    """
+    J_S, J_R, I, m = (np.asarray(x, dtype=float) for x in (body.B_J_S, body.B_J_R, body.B_I_B, body.m))
+    omega, sigma_S, sigma_R = (np.asarray(x, dtype=float) for x in (body.B_omega_B, body.B_a_B, body.B_omegaDot_B))
+    A_IB = np.asarray(body.A_IB, dtype=float)
+    P_S, P_R = (J_S, J_R) if mistake == "transpose" else (J_S.T, J_R.T)
+    gyroscopic = {"no_gyroscopic": 0.0, "gyroscopic_sign": -1.0}.get(mistake, 1.0) * _skew(omega) @ I @ omega
+    bias = 0.0 if mistake == "no_bias" else 1.0
+    gravity = -I_grav if mistake == "gravity_sign" else I_grav
+    B_grav = gravity if mistake == "gravity_body_frame" else A_IB.T @ gravity
+    M = m * P_S @ P_S.T + P_R @ I @ P_R.T
+    f = -(m * bias * P_S @ sigma_S + P_R @ (bias * I @ sigma_R + gyroscopic))
+    return M, (-f if mistake == "f_sign" else f), m * P_S @ B_grav
+
+
+@probe
+def mfg_mistakes(pkg, description, q, qd, I_grav):
+    """``{mistake: {"M", "f", "g"}}`` for the mistakes of ``MFG_MISTAKES`` (``transpose`` only when every Jacobian is
+    square), from the package's kinematics of the described tree at ``(q, qd)``."""
+    tree = build(pkg, description)
+    q, qd = _vectors(q, qd)
+    tree.forward_kinematics(q, qd, np.zeros(q.size))
+    I_grav = np.asarray(I_grav, dtype=float)
+    out = {}
+    for mistake in MFG_MISTAKES:
+        if mistake == "transpose" and q.size != 3:
+            continue
+        shares = [_mistaken_share(body, I_grav, mistake) for body in tree.bodies]
+        out[mistake] = {key: sum(share[k] for share in shares) for k, key in enumerate(("M", "f", "g"))}
+    return out
+
+
+def _positions(tree):
+    return [np.asarray(body.A_IB, dtype=float) @ np.asarray(body.B_r_IB, dtype=float).reshape(3)
+            for body in tree.bodies]
+
+
+@probe
+def lagrange(pkg, description, q, qd, I_grav, h):
+    """What the physics checks need from the package alone: ``M``, ``f``, ``g`` at ``(q, qd)``; every body's mass,
+    inertia and Jacobians after that pass (``"bodies"``); ``M`` at ``q +- h e_i`` (``"M_coordinates"``) and at
+    ``q +- h qd`` (``"M_path"``); the bodies' inertial positions at ``q +- h e_i`` (``"positions"``)."""
+    tree = build(pkg, description)
+    q, qd = _vectors(q, qd)
+    at = _mfg(pkg, tree, q, qd, I_grav)
+    bodies = [{"name": body.name, "m": float(body.m), "I": np.array(body.B_I_B, dtype=float),
+               "B_J_S": np.array(body.B_J_S, dtype=float), "B_J_R": np.array(body.B_J_R, dtype=float)}
+              for body in tree.bodies]
+    zero = np.zeros(q.size)
+
+    def mass_matrix(x):
+        return _mfg(pkg, tree, x, zero, I_grav)["M"]
+
+    shifted_M, positions = [], []
+    for e in np.eye(q.size):
+        shifted_M.append([mass_matrix(q + h * e), mass_matrix(q - h * e)])
+        pair = []
+        for sign in (1.0, -1.0):
+            tree.forward_kinematics(q + sign * h * e)
+            pair.append(_positions(tree))
+        positions.append(pair)
+    return {**at, "bodies": bodies, "M_coordinates": shifted_M, "M_path": [mass_matrix(q + h * qd),
+                                                                             mass_matrix(q - h * qd)],
+            "positions": positions}
+
+
+@probe
+def forward_dynamics(pkg, M, f, g, tau):
+    """``dynamics.forward_dynamics(M, f, g, tau)``."""
+    args = (np.asarray(x, dtype=float) for x in (M, f, g, tau))
+    return np.array(module(pkg, "dynamics").forward_dynamics(*args), dtype=float)
+
+
+def energies(tree, q, qd, I_grav):
+    """``(T, V)`` of a tree of the package at ``(q, qd)`` from its own kinematics: ``T = sum(m v.v + omega.I omega)
+    / 2`` with ``v = A_IB B_J_S qd``, ``omega = B_J_R qd``; ``V = -sum(m I_grav . A_IB B_r_IB)``."""
+    q, qd = _vectors(q, qd)
+    tree.forward_kinematics(q, qd, np.zeros(q.size))
+    T = V = 0.0
+    for body in tree.bodies:
+        v = np.asarray(body.B_J_S, dtype=float) @ qd
+        omega = np.asarray(body.B_J_R, dtype=float) @ qd
+        T += 0.5 * float(body.m) * v @ v + 0.5 * omega @ np.asarray(body.B_I_B, dtype=float) @ omega
+        V -= float(body.m) * np.asarray(I_grav, dtype=float) @ (np.asarray(body.A_IB, dtype=float)
+                                                                 @ np.asarray(body.B_r_IB, dtype=float))
+    return float(T), float(V)
+
+
+def trace(run, n, what):
+    """``(t, q, qd)`` of a simulation's result ``{"t", "q", "qd"}`` as float arrays (``q``, ``qd``: one row of ``n``
+    values per output time), or a ValueError that says what is wrong."""
+    if not isinstance(run, dict) or not {"t", "q", "qd"} <= set(run):
+        raise ValueError(f"{what} must return a dict with the keys 't', 'q' and 'qd', got {str(run)[:200]}")
+    t = np.asarray(run["t"], dtype=float).reshape(-1)
+    arrays = []
+    for key in ("q", "qd"):
+        value = np.asarray(run[key], dtype=float)
+        if value.shape != (t.size, n):
+            raise ValueError(f"{what}: {key!r} must have one row of {n} values per output time ({t.size} x {n}), "
+                             f"got shape {value.shape}")
+        arrays.append(value)
+    return t, arrays[0], arrays[1]
+
+
+@probe
+def pendulum_motion(pkg, t_end, I_grav):
+    """Problem 24: the package's ``problem_24.simulate(t_end)`` and, at every output time, the energies ``T`` and
+    ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
+    p24 = module(pkg, "problem_24")
+    t, q, qd = trace(p24.simulate(t_end), 3, "problem_24.simulate")
+    tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
+    T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
+    return {"t": t, "q": q, "qd": qd, "T": T, "V": V}

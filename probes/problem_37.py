@@ -1,0 +1,56 @@
+"""Probes of problem 37: the desired trajectory, the controllers' torques, the robot's right-hand side and its
+simulation under each controller (with the end effector's motion from the package's own kinematics)."""
+
+import numpy as np
+
+from . import module, probe
+from ._dynamics import trace
+
+TABLE = ("t", "x", "xd", "q", "qd", "qdd")
+
+
+@probe
+def trajectory(pkg):
+    """The desired trajectory of problem 32 (``{"t", "x", "xd", "q", "qd", "qdd"}``, one row per time); the grader
+    calls it on the reference and hands the table to the student's simulation, as the course's data file did."""
+    table = module(pkg, "problem_32").desired_trajectory()
+    return {key: np.array(table[key], dtype=float) for key in TABLE}
+
+
+@probe
+def torques(pkg, controller, cases):
+    """The torques of ``gravity_compensation_torque`` or ``computed_torque`` (``controller``) for every case
+    ``(M, f, g, q, qd, q_des, qd_des, qdd_des)``."""
+    p37 = module(pkg, "problem_37")
+    out = []
+    for case in cases:
+        M, f, g, q, qd, q_des, qd_des, qdd_des = (np.asarray(x, dtype=float) for x in case)
+        if controller == "gravity_compensation":
+            out.append(np.array(p37.gravity_compensation_torque(g, q, qd, q_des, qd_des), dtype=float))
+        else:
+            out.append(np.array(p37.computed_torque(M, f, g, q, qd, q_des, qd_des, qdd_des), dtype=float))
+    return out
+
+
+@probe
+def robot_ode(pkg, controller, table, cases):
+    """``robot_ode(t, y, build_dynamic_robot(), table, controller)`` for every ``(t, y)`` of ``cases``."""
+    p37 = module(pkg, "problem_37")
+    tree = p37.build_dynamic_robot()
+    return [np.array(p37.robot_ode(float(t), np.asarray(y, dtype=float), tree, table, controller), dtype=float)
+            for t, y in cases]
+
+
+@probe
+def simulate(pkg, controller, table, t_end):
+    """``simulate(controller, table, t_end)`` and the end effector's inertial position ``x`` and velocity ``xd`` at
+    every output time, from the package's own kinematics."""
+    p37 = module(pkg, "problem_37")
+    t, q, qd = trace(p37.simulate(controller, table, t_end), 3, "problem_37.simulate")
+    tree = p37.build_dynamic_robot()
+    x, xd = [], []
+    for a, b in zip(q, qd):
+        end_effector = tree.forward_kinematics(a, b, np.zeros(3))["end_effector"]
+        x.append(np.asarray(end_effector.A_IB, dtype=float) @ np.asarray(end_effector.B_r_IB, dtype=float))
+        xd.append(np.asarray(end_effector.A_IB, dtype=float) @ np.asarray(end_effector.B_v_B, dtype=float))
+    return {"t": t, "q": q, "qd": qd, "x": np.array(x).reshape(-1, 3), "xd": np.array(xd).reshape(-1, 3)}

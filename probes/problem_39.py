@@ -1,0 +1,22 @@
+"""Probes of problem 39: the turbine's inertias and the forces on its bearings."""
+
+import numpy as np
+
+from . import module, probe
+
+
+@probe
+def inertia_aligned(pkg, I_axial, I_transverse):
+    return np.array(module(pkg, "problem_39").inertia_aligned(I_axial, I_transverse), dtype=float)
+
+
+@probe
+def inertia_misaligned(pkg, I1, alpha):
+    return np.array(module(pkg, "problem_39").inertia_misaligned(np.asarray(I1, dtype=float), alpha), dtype=float)
+
+
+@probe
+def bearing_forces(pkg, I2, omega, m, g, d):
+    """``[F1, F2]`` of ``bearing_forces(I2, omega, m, g, d)``."""
+    F1, F2 = module(pkg, "problem_39").bearing_forces(np.asarray(I2, dtype=float), omega, m, g, d)
+    return [np.array(F1, dtype=float), np.array(F2, dtype=float)]

@@ -1,0 +1,48 @@
+"""Probes of problem 40: the symbolic equations of motion of the particle double pendulum, evaluated at points the
+grader sends (the grader never sees the expressions themselves)."""
+
+import numpy as np
+
+from . import module, probe
+
+#: the symbols the answer may use
+NAMES = ("q1", "q2", "dq1", "dq2", "l1", "l2", "m1", "m2", "g")
+SHAPES = {"M": (2, 2), "f": (2,), "g": (2,)}
+_ANSWERS = {}
+
+
+def _answer(pkg):
+    """``{"M", "f", "g"}`` as sympy matrices (computed once per package and process: simplifying takes a while)."""
+    import sympy as sp
+
+    p40 = module(pkg, "problem_40")
+    key = (pkg.__name__, id(p40))
+    if key not in _ANSWERS:
+        M, f, g = p40.equations_of_motion_symbolic()
+        _ANSWERS[key] = {"M": sp.Matrix(M), "f": sp.Matrix(f), "g": sp.Matrix(g)}
+    return _ANSWERS[key]
+
+
+@probe
+def evaluate(pkg, points):
+    """``{"M": [...], "f": [...], "g": [...]}``: the answer at every point ``{symbol name: value}``; or
+    ``{"problem": text}`` if an expression has the wrong shape or uses symbols outside ``NAMES``."""
+    import sympy as sp
+
+    answer = _answer(pkg)
+    for key, matrix in answer.items():
+        if matrix.shape not in (SHAPES[key], (SHAPES[key][0], 1), (1, SHAPES[key][0])) or (
+                key == "M" and matrix.shape != (2, 2)):
+            return {"problem": f"{key} has shape {matrix.shape}, expected {SHAPES[key]}"}
+        unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
+        if unknown:
+            return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
+    functions = {key: sp.lambdify([sp.Symbol(name) for name in NAMES],
+                                  matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
+                 for key, matrix in answer.items()}
+    out = {key: [] for key in answer}
+    for point in points:
+        values = [float(point[name]) for name in NAMES]
+        for key, function in functions.items():
+            out[key].append(np.array(function(*values), dtype=float).reshape(SHAPES[key]))
+    return out

@@ -1,0 +1,129 @@
+"""Probes of problem 46: the wire's event function, its constraint terms, the plastic impact, the constrained
+dynamics and the whole run (with the end effector's positions from the package's own kinematics)."""
+
+import numpy as np
+
+from . import module, probe
+from ._dynamics import trace
+
+
+def _robot(pkg):
+    return module(pkg, "problem_37").build_dynamic_robot()
+
+
+def _matrix(value, rows):
+    array = np.asarray(value, dtype=float)
+    return array.reshape(rows, -1) if array.size and array.size % rows == 0 else array
+
+
+@probe
+def event(pkg, states):
+    """The event function of ``make_wire_event(robot)`` at every state ``y``, and its ``terminal`` and
+    ``direction`` attributes (``None`` when missing)."""
+    function = module(pkg, "problem_46").make_wire_event(_robot(pkg))
+    values = [float(function(0.0, np.asarray(y, dtype=float))) for y in states]
+    terminal = getattr(function, "terminal", None)
+    direction = getattr(function, "direction", None)
+    return {"values": values, "terminal": None if terminal is None else bool(terminal),
+            "direction": None if direction is None else float(direction)}
+
+
+def _terms(pkg, tree, q, qd, baumgarte):
+    tree.forward_kinematics(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), np.zeros(3))
+    J, sigma = module(pkg, "problem_46").constraint_terms(tree["end_effector"], bool(baumgarte))
+    return {"J": _matrix(J, 1), "sigma": np.asarray(sigma, dtype=float).reshape(-1)}
+
+
+@probe
+def constraint_terms(pkg, cases):
+    """``{"J", "sigma"}`` of ``constraint_terms`` for every ``(q, qd, baumgarte)``."""
+    tree = _robot(pkg)
+    return [_terms(pkg, tree, q, qd, baumgarte) for q, qd, baumgarte in cases]
+
+
+@probe
+def constraint_mistakes(pkg, q, qd, baumgarte):
+    """``{mistake: {"J", "sigma"}}``: the constraint terms that known mistakes give, from the package's kinematics
+    and the sheet's data in its ``problem_46`` (called on the reference only)."""
+    p46 = module(pkg, "problem_46")
+    tree = _robot(pkg)
+    E = tree.forward_kinematics(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), np.zeros(3))["end_effector"]
+    A_IE, J_S, a_E = (np.asarray(x, dtype=float) for x in (E.A_IB, E.B_J_S, E.B_a_B))
+    I_r_E, I_v_E = A_IE @ np.asarray(E.B_r_IB, dtype=float), A_IE @ np.asarray(E.B_v_B, dtype=float)
+    anchor, length = np.asarray(p46.ANCHOR, dtype=float), float(p46.WIRE_LENGTH)
+    P_B, D_B = float(p46.P_BAUMGARTE), float(p46.D_BAUMGARTE)
+    distance = np.linalg.norm(I_r_E - anchor)
+    direction = (I_r_E - anchor) / distance
+    J = -(direction @ A_IE @ J_S).reshape(1, 3)
+    bias = -direction @ A_IE @ a_E
+    centripetal = -np.linalg.norm(np.cross(direction, I_v_E)) ** 2 / length
+    stabilisation = P_B * (length - distance) + D_B * (0.0 - direction @ I_v_E) if baumgarte else 0.0
+
+    def terms(J_, sigma_):
+        return {"J": J_, "sigma": np.array([sigma_])}
+
+    return {
+        "baumgarte_sign": terms(J, bias + centripetal - stabilisation),
+        "missing_baumgarte": terms(J, bias + centripetal),
+        "jacobian_sign": terms(-J, bias + centripetal + stabilisation),
+        "constraint_sign": terms(-J, -(bias + centripetal + stabilisation)),
+        "body_frame": terms(-(direction @ J_S).reshape(1, 3), -direction @ a_E + centripetal + stabilisation),
+        "no_centripetal": terms(J, bias + stabilisation),
+        "centripetal_sign": terms(J, bias - centripetal + stabilisation),
+    }
+
+
+@probe
+def event_differences(pkg, q, h):
+    """The constraint Jacobian at ``(q, qd = 0)`` and the event function at ``q +- h e_i`` (at rest)."""
+    tree = _robot(pkg)
+    q = np.asarray(q, dtype=float)
+    J = _terms(pkg, tree, q, np.zeros(3), False)["J"]
+    function = module(pkg, "problem_46").make_wire_event(_robot(pkg))
+    shifted = [[float(function(0.0, np.concatenate([q + sign * h * e, np.zeros(3)]))) for sign in (1.0, -1.0)]
+               for e in np.eye(3)]
+    return {"J": J, "shifted": shifted}
+
+
+@probe
+def impact(pkg, cases):
+    """``{"qd_plus", "Lam"}`` of ``plastic_impact(M, J, qd_minus)`` for every case."""
+    p46 = module(pkg, "problem_46")
+    out = []
+    for M, J, qd_minus in cases:
+        qd_plus, Lam = p46.plastic_impact(np.asarray(M, dtype=float), np.asarray(J, dtype=float),
+                                          np.asarray(qd_minus, dtype=float))
+        out.append({"qd_plus": np.asarray(qd_plus, dtype=float), "Lam": np.asarray(Lam, dtype=float).reshape(-1)})
+    return out
+
+
+@probe
+def constrained(pkg, cases):
+    """``{"qdd", "lam"}`` of ``constrained_dynamics(M, f, g, tau, J, sigma)`` for every case."""
+    p46 = module(pkg, "problem_46")
+    out = []
+    for case in cases:
+        qdd, lam = p46.constrained_dynamics(*(np.asarray(x, dtype=float) for x in case))
+        out.append({"qdd": np.asarray(qdd, dtype=float), "lam": np.asarray(lam, dtype=float).reshape(-1)})
+    return out
+
+
+@probe
+def simulate(pkg, table, baumgarte, t_end):
+    """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every
+    output time, and at the impact the constraint Jacobian from ``constraint_terms`` (``J_plus``)."""
+    p46 = module(pkg, "problem_46")
+    run = p46.simulate(table, bool(baumgarte), t_end)
+    t, q, qd = trace(run, 3, "problem_46.simulate")
+    tree = _robot(pkg)
+    x = np.array([np.asarray(E.A_IB, dtype=float) @ np.asarray(E.B_r_IB, dtype=float)
+                  for E in (tree.forward_kinematics(a)["end_effector"] for a in q)]).reshape(-1, 3)
+    out = {"t": t, "q": q, "qd": qd, "x": x, "t_event": run.get("t_event")}
+    if out["t_event"] is None:
+        return out
+    out["t_event"] = float(out["t_event"])
+    for key in ("q_minus", "qd_minus", "q_plus", "qd_plus"):
+        out[key] = np.asarray(run[key], dtype=float).reshape(3)
+    out["Lam"] = np.asarray(run["Lam"], dtype=float).reshape(-1)
+    out["J_plus"] = _terms(pkg, tree, out["q_plus"], out["qd_plus"], False)["J"]
+    return out
