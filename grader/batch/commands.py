@@ -1,0 +1,137 @@
+"""The batch commands: ``grade batch``, ``grade import-manual`` and ``grade export`` (their parsers and what they
+run).  Nothing heavy is imported until a command runs."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+__all__ = ["add_batch_parser", "cmd_batch", "cmd_import_manual", "cmd_export"]
+
+
+def cmd_batch(args) -> int:
+    from ..cli import EXIT_GRADER, EXIT_OK, EXIT_USAGE
+    from ..errors import SubmissionError
+    from ..runner import problem_module
+    from ..sandbox import Limits
+    from .run import BatchLocked, run_batch
+
+    for number in args.problems or ():
+        try:
+            problem_module(number)
+        except KeyError:
+            print(f"error: problem {number} has no checks (see `grade list`)", file=sys.stderr)
+            return EXIT_USAGE
+    defaults = Limits()
+    limits = Limits(
+        call_timeout=args.timeout or defaults.call_timeout,
+        import_timeout=args.import_timeout or defaults.import_timeout,
+    )
+    try:
+        report = run_batch(args.submissions, args.out, problems=args.problems, jobs=args.jobs, force=args.force,
+                           limits=limits, student_timeout=args.student_timeout, progress=not args.quiet,
+                           no_sandbox=args.no_sandbox)
+    except (SubmissionError, BatchLocked) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except RuntimeError as exc:  # the workers cannot start: a broken installation
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_GRADER
+    for name in report.ignored:
+        print(f"note: {name} is not a folder, a .zip archive or a .ipynb notebook: ignored", file=sys.stderr)
+    print(f"{report.students} students: {report.graded} graded, {report.skipped} unchanged (skipped), "
+          f"{len(report.timed_out)} stopped at the time limit, {len(report.not_graded)} not graded "
+          f"in {report.seconds:.1f} s.", file=sys.stderr)
+    for name, reason in report.not_graded.items():
+        print(f"  not graded: {name}: {reason}", file=sys.stderr)
+    if report.interrupted:
+        print("interrupted: every student graded so far is saved; rerun the same command to finish.",
+              file=sys.stderr)
+        return 130
+    print(f"results in {args.out}/: grades.csv, summary.html, manual_answers.csv, students/NAME/", file=sys.stderr)
+    return EXIT_GRADER if report.not_graded else EXIT_OK
+
+
+def cmd_import_manual(args) -> int:
+    from ..cli import EXIT_OK, EXIT_USAGE
+    from .exports import export_results
+    from .gradebook import GRADEBOOK_NAME, Gradebook, ManualScoreError
+    from .run import BatchLocked, _locked
+
+    out = Path(args.results)
+    if not (out / GRADEBOOK_NAME).exists():
+        print(f"error: {out} holds no gradebook (run `grade batch` first)", file=sys.stderr)
+        return EXIT_USAGE
+    try:
+        with _locked(out), Gradebook.in_folder(out) as book:
+            with open(args.scores, encoding="utf-8-sig", newline="") as handle:  # csv reads its own line ends
+                count = book.import_manual(handle.read(), source=str(args.scores))
+            export_results(out, book)
+    except (ManualScoreError, BatchLocked, OSError, UnicodeDecodeError) as exc:
+        print(f"error: {args.scores}: nothing imported:\n{exc}", file=sys.stderr)
+        return EXIT_USAGE
+    print(f"imported {count} manual scores; the exports in {out}/ are updated", file=sys.stderr)
+    return EXIT_OK
+
+
+def cmd_export(args) -> int:
+    from ..cli import EXIT_OK, EXIT_USAGE
+    from .exports import export_results
+    from .gradebook import GRADEBOOK_NAME
+    from .run import BatchLocked, _locked
+
+    out = Path(args.results)
+    if not (out / GRADEBOOK_NAME).exists():
+        print(f"error: {out} holds no gradebook (run `grade batch` first)", file=sys.stderr)
+        return EXIT_USAGE
+    try:
+        with _locked(out):
+            export_results(out)
+    except BatchLocked as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    print(f"wrote the exports in {out}/", file=sys.stderr)
+    return EXIT_OK
+
+
+def add_batch_parser(sub) -> None:
+    from ..cli import _problem_number
+
+    p = sub.add_parser(
+        "batch",
+        help="grade every submission of a folder",
+        description="Grade every student of a folder (one folder, .zip or .ipynb per student) in parallel into a "
+                    "gradebook; an interrupted batch resumes where it stopped when run again.",
+    )
+    p.add_argument("submissions", help="the folder of submissions")
+    p.add_argument("--out", required=True, help="the results folder (gradebook, grades.csv, reports, summary)")
+    p.add_argument("--problems", type=_problem_number, nargs="+", default=None, metavar="N",
+                   help="problems to grade (default: every problem with checks)")
+    p.add_argument("--jobs", "-j", type=int, default=None, metavar="N",
+                   help="parallel workers (default: the number of CPUs)")
+    p.add_argument("--force", action="store_true", help="regrade students whose submission is unchanged")
+    p.add_argument("--timeout", type=float, default=None, help="seconds per call of a student's code (default 10)")
+    p.add_argument("--import-timeout", type=float, default=None,
+                   help="seconds for importing a student's package (default 20)")
+    p.add_argument("--student-timeout", type=float, default=None,
+                   help="seconds for grading one student in all (default: the import time-out plus twice the call "
+                        "time-out per check)")
+    p.add_argument("--quiet", "-q", action="store_true", help="no progress display")
+    p.add_argument("--no-sandbox", action="store_true",
+                   help="grade even when bubblewrap is not available: students' code runs as plain processes "
+                        "(under unprivileged uids when run as root); recorded in the gradebook and every report")
+    p.set_defaults(func=cmd_batch)
+
+    p = sub.add_parser("import-manual", help="merge a CSV of manual scores into a gradebook",
+                       description="Merge manual scores (columns student, problem, key, score, optional comment; "
+                                   "the file manual_answers.csv with its score column filled in) into the gradebook "
+                                   "of RESULTS and update its exports.")
+    p.add_argument("results", help="the results folder of `grade batch`")
+    p.add_argument("scores", help="the CSV file of scores")
+    p.set_defaults(func=cmd_import_manual)
+
+    p = sub.add_parser("export", help="rewrite the exports of a gradebook",
+                       description="Rewrite grades.csv, the class summary and the students' reports from the "
+                                   "gradebook of RESULTS.")
+    p.add_argument("results", help="the results folder of `grade batch`")
+    p.set_defaults(func=cmd_export)

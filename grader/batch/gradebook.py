@@ -1,0 +1,509 @@
+"""The gradebook: an embedded SQLite database holding every check result of every student.
+
+One row of ``submissions`` is one problem of one student's work, graded once: its key is
+(student, content hash, grader version, problem), unique in the schema.  The parent process of a batch is the
+only writer, and it commits a student's whole result (every problem, every check) in one transaction, so that a
+batch killed at any point leaves each student either completely graded or not at all.  WAL mode with full
+synchronisation keeps committed students through a crash or a power loss, and lets readers (exports, a
+progress poll) read while a batch writes.
+
+The grader version of a problem is the package version plus a digest of every file that decides its verdicts (its
+check module and the shared check, probe, grader and reference code it reaches) and of the versions of the
+libraries that can change them: editing the checks of problem 6 regrades problem 6 and nothing else, editing
+``checks/_trees.py`` regrades every tree problem.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import json
+import sqlite3
+from contextlib import contextmanager
+from dataclasses import asdict, dataclass, replace
+from datetime import datetime, timezone
+from functools import lru_cache
+from pathlib import Path
+
+from .. import __version__
+from ..results import CheckResult, Figure, ManualItem, ProblemReport, Series, Status
+
+__all__ = [
+    "GRADEBOOK_NAME",
+    "SCHEMA",
+    "Gradebook",
+    "Graded",
+    "ManualScoreError",
+    "grader_version",
+    "now",
+    "spreadsheet_cell",
+    "spreadsheet_text",
+]
+
+GRADEBOOK_NAME = "gradebook.sqlite"
+SCHEMA_VERSION = 1
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS meta (
+    key   TEXT PRIMARY KEY,
+    value TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS runs (
+    id              INTEGER PRIMARY KEY,
+    started_at      TEXT NOT NULL,
+    finished_at     TEXT,
+    state           TEXT NOT NULL DEFAULT 'running' CHECK (state IN ('running', 'finished', 'interrupted')),
+    submissions_dir TEXT NOT NULL,
+    problems        TEXT NOT NULL,          -- JSON list of problem numbers
+    jobs            INTEGER NOT NULL,
+    force           INTEGER NOT NULL DEFAULT 0,
+    graded          INTEGER NOT NULL DEFAULT 0,
+    skipped         INTEGER NOT NULL DEFAULT 0,
+    sandbox         TEXT NOT NULL DEFAULT ''  -- how students' code ran ("--no-sandbox: ..." when chosen so)
+);
+CREATE TABLE IF NOT EXISTS students (
+    id   INTEGER PRIMARY KEY,
+    name TEXT NOT NULL UNIQUE
+);
+CREATE TABLE IF NOT EXISTS submissions (
+    id             INTEGER PRIMARY KEY,
+    student_id     INTEGER NOT NULL REFERENCES students (id),
+    content_hash   TEXT NOT NULL,
+    grader_version TEXT NOT NULL,
+    problem        INTEGER NOT NULL,
+    run_id         INTEGER NOT NULL REFERENCES runs (id),
+    graded_at      TEXT NOT NULL,
+    seed           INTEGER NOT NULL,
+    outcome        TEXT NOT NULL CHECK (outcome IN ('graded', 'timeout', 'crashed')),
+    score          REAL NOT NULL,           -- automatically graded points (hidden checks included)
+    max_score      REAL NOT NULL,
+    source         TEXT NOT NULL,
+    title          TEXT NOT NULL,
+    sandbox        TEXT NOT NULL,
+    isolated       INTEGER NOT NULL,
+    duration       REAL NOT NULL,
+    stdout         TEXT NOT NULL,
+    stderr         TEXT NOT NULL,
+    notes          TEXT NOT NULL,           -- JSON list
+    manual         TEXT NOT NULL,           -- JSON list of the free-text items (answers, no scores)
+    UNIQUE (student_id, content_hash, grader_version, problem)
+);
+CREATE TABLE IF NOT EXISTS check_results (
+    submission_id INTEGER NOT NULL REFERENCES submissions (id) ON DELETE CASCADE,
+    check_id      TEXT NOT NULL,
+    problem       INTEGER NOT NULL,
+    title         TEXT NOT NULL,
+    status        TEXT NOT NULL,
+    score         REAL NOT NULL,
+    max_score     REAL NOT NULL,
+    message       TEXT NOT NULL,
+    hint          TEXT NOT NULL,
+    diagnosis     TEXT NOT NULL,
+    visibility    TEXT NOT NULL CHECK (visibility IN ('visible', 'hidden')),
+    stage         INTEGER NOT NULL,
+    seed          INTEGER,
+    duration      REAL NOT NULL,
+    figures       TEXT NOT NULL,           -- JSON list
+    position      INTEGER NOT NULL,
+    PRIMARY KEY (submission_id, check_id)
+);
+CREATE TABLE IF NOT EXISTS manual_scores (
+    student_id  INTEGER NOT NULL REFERENCES students (id),
+    problem     INTEGER NOT NULL,
+    key         TEXT NOT NULL,
+    score       REAL NOT NULL,
+    comment     TEXT NOT NULL DEFAULT '',
+    imported_at TEXT NOT NULL,
+    source      TEXT NOT NULL,
+    PRIMARY KEY (student_id, problem, key)
+);
+CREATE INDEX IF NOT EXISTS submissions_current ON submissions (student_id, problem, id);
+CREATE INDEX IF NOT EXISTS check_results_check ON check_results (check_id, status);
+"""
+
+#: the latest graded row of every (student, problem), of every student or of one ({where})
+_CURRENT = """
+SELECT s.*, st.name AS student FROM submissions s JOIN students st ON st.id = s.student_id
+WHERE s.id = (SELECT max(t.id) FROM submissions t WHERE t.student_id = s.student_id AND t.problem = s.problem)
+{where}ORDER BY st.name, s.problem
+"""
+
+
+#: a cell beginning with one of these is a formula to a spreadsheet (OWASP's list for CSV injection)
+FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_cell(text: str) -> str:
+    """``text`` as a CSV cell that a spreadsheet shows as text: a leading apostrophe before a formula start."""
+    return "'" + text if text.startswith(FORMULA_START) else text
+
+
+def spreadsheet_text(cell: str) -> str:
+    """The inverse of ``spreadsheet_cell``, for files the grader wrote and an instructor filled in."""
+    return cell[1:] if cell.startswith("'") and cell[1:].startswith(FORMULA_START) else cell
+
+
+def now() -> str:
+    return datetime.now(timezone.utc).isoformat(timespec="microseconds")
+
+
+#: the grader's modules that run every check: the import graph from these reaches the rest of the machinery
+_MACHINERY = ("grader.runner", "grader.context", "grader.sandbox.worker")
+#: third-party packages whose versions can change a verdict (random inputs, numerics)
+_VERDICT_DEPENDENCIES = ("numpy", "scipy", "sympy", "hypothesis", "mujoco")
+_PROJECT_PACKAGES = ("grader", "checks", "probes", "reference")
+
+
+def _module_file(name: str) -> Path | None:
+    import importlib.util
+    import sys
+
+    loaded = sys.modules.get(name)
+    origin = getattr(loaded, "__file__", None) if loaded is not None else None
+    if origin is None:
+        try:
+            spec = importlib.util.find_spec(name)
+        except (ImportError, ValueError):
+            return None
+        origin = spec.origin if spec else None
+    return Path(origin) if origin and origin.endswith(".py") else None
+
+
+def _imports_and_strings(path: Path, package: str) -> tuple[set[str], set[str]]:
+    """The project modules ``path`` imports (anywhere in the file, relative ones resolved against ``package``)
+    and its string constants."""
+    return _parsed(path.read_bytes(), package)
+
+
+@lru_cache(maxsize=None)
+def _parsed(source: bytes, package: str) -> tuple[set[str], set[str]]:
+    import ast
+
+    tree = ast.parse(source)
+    names, strings = set(), set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names.update(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                parts = package.split(".")
+                base = ".".join(parts[: len(parts) - node.level + 1])
+                module = f"{base}.{node.module}" if node.module else base
+            else:
+                module = node.module or ""
+            names.add(module)
+            names.update(f"{module}.{alias.name}" for alias in node.names)
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) < 80:
+            strings.add(node.value)
+    return {n for n in names if n.split(".")[0] in _PROJECT_PACKAGES}, strings
+
+
+def verdict_sources(problem: int) -> list[Path]:
+    """Every file that decides a verdict of ``problem``: its check module and what it imports, the grader's
+    machinery, the probes the checks name (``"_trees.tree_state"``) or import, the reference modules those
+    probes reach (by import or by name, ``module(pkg, "tree")``), the matching student-template modules (laid
+    under every submission) and the reference's answers."""
+    from ..runner import problem_module
+
+    seeds = [problem_module(problem).__name__, *_MACHINERY, "probes", "probes._codec", "reference"]
+    seen: dict[str, Path] = {}
+    queue = list(seeds)
+    reference_names: set[str] = set()
+    while queue:
+        name = queue.pop()
+        if name in seen:
+            continue
+        path = _module_file(name)
+        if path is None:
+            continue
+        seen[name] = path
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        imported, strings = _imports_and_strings(path, package)
+        queue += sorted(imported)
+        top = name.split(".")[0]
+        for text in strings:
+            head = text.split(".")[0]
+            if top == "checks" and "." in text and _module_file(f"probes.{head}") is not None:
+                queue.append(f"probes.{head}")
+            if top in ("probes", "checks") and text.isidentifier():
+                reference_names.add(text)
+        if top == "reference":
+            reference_names.add(name.rpartition(".")[2])
+    for text in sorted(reference_names):
+        if _module_file(f"reference.{text}") is not None:
+            queue.append(f"reference.{text}")
+    while queue:  # the reference modules named by probes, and their own imports
+        name = queue.pop()
+        if name in seen or (path := _module_file(name)) is None:
+            continue
+        seen[name] = path
+        queue += sorted(_imports_and_strings(path, name.rpartition(".")[0])[0])
+    files = set(seen.values())
+    for name, path in seen.items():
+        if name.split(".")[0] == "reference":
+            files.add(path.with_name("answers.toml"))
+            template = _module_file("student_template" + name.removeprefix("reference"))
+            if template is not None:
+                files.add(template)
+    return sorted(p for p in files if p.is_file())
+
+
+def grader_version(problem: int) -> str:
+    """The package version and a digest of every file that decides the problem's verdicts
+    (``verdict_sources``) and of the versions of the libraries that can change them: editing shared check or
+    probe code regrades the problems that use it, and only those."""
+    import importlib.metadata
+    import sys
+
+    digest = hashlib.sha256(f"python {sys.version_info[0]}.{sys.version_info[1]}\0".encode())
+    for name in _VERDICT_DEPENDENCIES:
+        try:
+            digest.update(f"{name} {importlib.metadata.version(name)}\0".encode())
+        except importlib.metadata.PackageNotFoundError:
+            digest.update(f"{name} -\0".encode())
+    for path in verdict_sources(problem):
+        package = next((p for p in reversed(path.parts[:-1]) if p in (*_PROJECT_PACKAGES, "student_template")), "")
+        digest.update(f"{package}/{path.name}\0".encode() + hashlib.sha256(path.read_bytes()).digest())
+    return f"{__version__}+{digest.hexdigest()[:12]}"
+
+
+class ManualScoreError(ValueError):
+    """A manual-scores file that cannot be imported: every problem found, one per line."""
+
+
+@dataclass(frozen=True)
+class Graded:
+    """The current result of one problem of one student."""
+
+    student: str
+    content_hash: str
+    grader_version: str
+    run_id: int
+    graded_at: str
+    outcome: str
+    report: ProblemReport
+
+
+def _figure(data: dict) -> Figure:
+    series = tuple(Series(s["label"], tuple(s["x"]), tuple(s["y"]), s.get("role", "other")) for s in data["series"])
+    return Figure(data["title"], data["xlabel"], data["ylabel"], series, bool(data.get("equal_axes")))
+
+
+class Gradebook:
+    """The gradebook of one results folder.  Use as a context manager, or call ``close``."""
+
+    def __init__(self, path: str | Path):
+        self.path = Path(path)
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self.db = sqlite3.connect(self.path, isolation_level=None, timeout=30)
+        self.db.row_factory = sqlite3.Row
+        self.db.execute("PRAGMA journal_mode = WAL")
+        self.db.execute("PRAGMA synchronous = FULL")
+        self.db.execute("PRAGMA foreign_keys = ON")
+        self.db.executescript(
+            f"BEGIN IMMEDIATE; {SCHEMA} "
+            f"INSERT OR IGNORE INTO meta VALUES ('schema_version', '{SCHEMA_VERSION}'); COMMIT;"
+        )
+        columns = {row["name"] for row in self.db.execute("PRAGMA table_info(runs)")}
+        if "sandbox" not in columns:  # a gradebook written before runs recorded their sandbox
+            self.db.execute("ALTER TABLE runs ADD COLUMN sandbox TEXT NOT NULL DEFAULT ''")
+
+    @classmethod
+    def in_folder(cls, results_dir: str | Path) -> Gradebook:
+        return cls(Path(results_dir) / GRADEBOOK_NAME)
+
+    def close(self) -> None:
+        self.db.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @contextmanager
+    def transaction(self):
+        """One atomic write: committed entirely, or (on any exception, Ctrl-C included) not at all."""
+        self.db.execute("BEGIN IMMEDIATE")
+        try:
+            yield self.db
+        except BaseException:
+            if self.db.in_transaction:
+                self.db.execute("ROLLBACK")
+            raise
+        self.db.execute("COMMIT")
+
+    # ------------------------------------------------------------------ runs
+
+    def start_run(self, submissions_dir: str, problems: list[int], jobs: int, force: bool = False,
+                  sandbox: str = "") -> int:
+        with self.transaction() as db:
+            cursor = db.execute(
+                "INSERT INTO runs (started_at, submissions_dir, problems, jobs, force, sandbox) "
+                "VALUES (?, ?, ?, ?, ?, ?)",
+                (now(), str(submissions_dir), json.dumps(problems), jobs, int(force), sandbox),
+            )
+        return cursor.lastrowid
+
+    def finish_run(self, run_id: int, state: str, skipped: int) -> None:
+        with self.transaction() as db:
+            db.execute(
+                "UPDATE runs SET finished_at = ?, state = ?, skipped = ? WHERE id = ?",
+                (now(), state, skipped, run_id),
+            )
+
+    # ------------------------------------------------------------------ grading
+
+    def graded_problems(self, student: str, content_hash: str, versions: dict[int, str]) -> set[int]:
+        """The problems of ``versions`` whose result for this content and grader version is committed."""
+        rows = self.db.execute(
+            "SELECT s.problem, s.grader_version FROM submissions s JOIN students st ON st.id = s.student_id "
+            "WHERE st.name = ? AND s.content_hash = ?",
+            (student, content_hash),
+        )
+        return {row["problem"] for row in rows if versions.get(row["problem"]) == row["grader_version"]}
+
+    def record(
+        self,
+        student: str,
+        content_hash: str,
+        versions: dict[int, str],
+        run_id: int,
+        reports: list[ProblemReport],
+        outcome: str = "graded",
+        replace_existing: bool = False,
+    ) -> None:
+        """Commit a student's result: every problem and check in one transaction.
+
+        An existing result of the same key is an error (``sqlite3.IntegrityError``, nothing written) unless
+        ``replace_existing`` (a forced regrade), which replaces it in the same transaction."""
+        graded_at = now()
+        with self.transaction() as db:
+            db.execute("INSERT OR IGNORE INTO students (name) VALUES (?)", (student,))
+            (student_id,) = db.execute("SELECT id FROM students WHERE name = ?", (student,)).fetchone()
+            for report in reports:
+                key = (student_id, content_hash, versions[report.problem], report.problem)
+                if replace_existing:
+                    db.execute(
+                        "DELETE FROM submissions WHERE student_id = ? AND content_hash = ? AND grader_version = ? "
+                        "AND problem = ?",
+                        key,
+                    )
+                cursor = db.execute(
+                    "INSERT INTO submissions (student_id, content_hash, grader_version, problem, run_id, graded_at, "
+                    "seed, outcome, score, max_score, source, title, sandbox, isolated, duration, stdout, stderr, "
+                    "notes, manual) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                    (
+                        *key, run_id, graded_at, report.seed, outcome,
+                        sum(r.score for r in report.results), report.auto_max_score, report.submission,
+                        report.title, report.sandbox, int(report.isolated), report.duration, report.stdout,
+                        report.stderr, json.dumps(list(report.notes)),
+                        json.dumps([asdict(replace(m, score=None)) for m in report.manual]),
+                    ),
+                )
+                db.executemany(
+                    "INSERT INTO check_results (submission_id, check_id, problem, title, status, score, max_score, "
+                    "message, hint, diagnosis, visibility, stage, seed, duration, figures, position) "
+                    "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                    [
+                        (
+                            cursor.lastrowid, r.check_id, r.problem, r.title, r.status.value, r.score, r.max_score,
+                            r.message, r.hint, r.diagnosis, r.visibility, r.stage, r.seed, r.duration,
+                            json.dumps([asdict(f) for f in r.figures]), position,
+                        )
+                        for position, r in enumerate(report.results)
+                    ],
+                )
+            db.execute("UPDATE runs SET graded = graded + 1 WHERE id = ?", (run_id,))
+
+    # ------------------------------------------------------------------ reading
+
+    def current(self, student: str | None = None) -> list[Graded]:
+        """The latest result of every (student, problem), rebuilt as reports with the manual scores merged; only
+        ``student``'s when given."""
+        where, args = ("AND st.name = ? ", (student,)) if student is not None else ("", ())
+        manual = {
+            (row["name"], row["problem"], row["key"]): row["score"]
+            for row in self.db.execute(
+                "SELECT st.name, m.* FROM manual_scores m JOIN students st ON st.id = m.student_id " + where.replace(
+                    "AND", "WHERE"), args)
+        }
+        graded = []
+        for row in self.db.execute(_CURRENT.format(where=where), args).fetchall():
+            checks = self.db.execute(
+                "SELECT * FROM check_results WHERE submission_id = ? ORDER BY position", (row["id"],)
+            )
+            results = tuple(
+                CheckResult(
+                    check_id=c["check_id"], problem=c["problem"], title=c["title"], status=Status(c["status"]),
+                    score=c["score"], max_score=c["max_score"], message=c["message"], hint=c["hint"],
+                    diagnosis=c["diagnosis"], visibility=c["visibility"], stage=c["stage"], seed=c["seed"],
+                    figures=tuple(_figure(f) for f in json.loads(c["figures"])), duration=c["duration"],
+                )
+                for c in checks
+            )
+            items = tuple(
+                ManualItem(**dict(item, score=manual.get((row["student"], row["problem"], item["key"]))))
+                for item in json.loads(row["manual"])
+            )
+            report = ProblemReport(
+                problem=row["problem"], title=row["title"], results=results, manual=items, sandbox=row["sandbox"],
+                isolated=bool(row["isolated"]), seed=row["seed"], duration=row["duration"], stdout=row["stdout"],
+                stderr=row["stderr"], submission=row["source"], grader_version=row["grader_version"],
+                notes=tuple(json.loads(row["notes"])),
+            )
+            graded.append(
+                Graded(row["student"], row["content_hash"], row["grader_version"], row["run_id"], row["graded_at"],
+                       row["outcome"], report)
+            )
+        return graded
+
+    # ------------------------------------------------------------------ manual scores
+
+    def import_manual(self, text: str, source: str = "") -> int:
+        """Merge a CSV of manual scores (columns student, problem, key, score and optionally comment; rows with
+        a blank score are skipped).  All rows are checked first; nothing is imported if any is wrong."""
+        items = {
+            (g.student, g.report.problem, m.key): m for g in self.current() for m in g.report.manual
+        }
+        reader = csv.DictReader(io.StringIO(text))
+        missing = {"student", "problem", "key", "score"} - set(reader.fieldnames or ())
+        if missing:
+            raise ManualScoreError(f"the file has no column {', '.join(sorted(missing))}")
+        rows, errors = [], []
+        for line, entry in enumerate(reader, start=2):
+            if not (entry.get("score") or "").strip():
+                continue
+            try:
+                key = (spreadsheet_text(entry["student"].strip()), int(str(entry["problem"]).strip()),
+                       spreadsheet_text(entry["key"].strip()))
+                score = float(entry["score"])
+            except ValueError as exc:
+                errors.append(f"line {line}: {exc}")
+                continue
+            item = items.get(key)
+            if item is None:
+                errors.append(f"line {line}: {key[0]} has no free-text answer {key[2]!r} in problem {key[1]}")
+            elif not 0 <= score <= item.max_score:
+                errors.append(f"line {line}: score {score:g} is outside 0..{item.max_score:g}")
+            else:
+                rows.append((*key, score, spreadsheet_text((entry.get("comment") or "").strip())))
+        if errors:
+            raise ManualScoreError("\n".join(errors))
+        stamp = now()
+        with self.transaction() as db:
+            db.executemany(
+                "INSERT INTO manual_scores (student_id, problem, key, score, comment, imported_at, source) "
+                "SELECT id, ?, ?, ?, ?, ?, ? FROM students WHERE name = ? "
+                "ON CONFLICT (student_id, problem, key) DO UPDATE SET score = excluded.score, "
+                "comment = excluded.comment, imported_at = excluded.imported_at, source = excluded.source",
+                [(problem, key, score, comment, stamp, source, student)
+                 for student, problem, key, score, comment in rows],
+            )
+        return len(rows)
+
+    def manual_comments(self) -> dict[tuple[str, int, str], str]:
+        rows = self.db.execute("SELECT st.name, m.problem, m.key, m.comment FROM manual_scores m "
+                               "JOIN students st ON st.id = m.student_id")
+        return {(r["name"], r["problem"], r["key"]): r["comment"] for r in rows}

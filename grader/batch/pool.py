@@ -1,0 +1,212 @@
+"""The grading workers of a batch: one process per slot, each grading one student at a time.
+
+A worker is a spawned process that imports the checks once, starts a warm sandboxed child (a zygote, see
+``grader.sandbox.zygote``) from which every student's child is forked, and grades the students the parent sends
+with ``grade_submission``.  It sends back plain reports.  The parent bounds each student's total time: a worker
+that does not answer in time, or dies, is replaced by a fresh one, and its student is reported as stopped or not
+graded.  The same worker serves a Dask task (``grader.batch.cluster``): one slot per Dask worker process.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+import sys
+import time
+import traceback
+from collections import deque
+from dataclasses import dataclass
+from multiprocessing.connection import wait
+
+from ..errors import GraderFault
+from ..results import CheckResult, ProblemReport, Status
+from ..sandbox import Limits, SandboxMode
+from .discover import Entry
+
+__all__ = ["Task", "Slot", "run_pool", "stopped_reports", "STOP_GRACE"]
+
+#: seconds a worker has to stop after SIGTERM before it is killed
+STOP_GRACE = 3.0
+
+
+@dataclass(frozen=True)
+class Task:
+    entry: Entry
+    problems: tuple[int, ...]
+
+
+def _die_with_parent(parent: int) -> None:
+    """Receive SIGTERM when the parent dies, even by SIGKILL (Linux); exit now if it is gone already."""
+    try:
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        pass
+    if os.getppid() != parent:
+        sys.exit(0)
+
+
+class _Stopped(BaseException):
+    """Raised in a worker by SIGTERM: not an Exception (nor SystemExit, which hypothesis takes for a failing
+    example), so that nothing on the way catches it and the Child on the way kills the student's process."""
+
+
+def _stop(signum, frame):
+    raise _Stopped
+
+
+def _serve(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...], parent: int) -> None:
+    """A worker process: grade the tasks the parent sends, one at a time, and send back the reports."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    signal.signal(signal.SIGTERM, _stop)
+    try:
+        _die_with_parent(parent)
+        _work(conn, slot, limits, mode, problems)
+    except _Stopped:
+        pass
+
+
+def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...]) -> None:
+    try:
+        from ..runner import grade_submission, problem_module
+
+        for number in problems:
+            problem_module(number)
+    except Exception:  # noqa: BLE001 - reported to the parent, which stops the batch
+        conn.send(("fault", traceback.format_exc()))
+        return
+    conn.send(("ready", None))
+    while True:
+        try:
+            task = conn.recv()
+        except (EOFError, OSError):
+            return
+        if task is None:
+            return
+        try:
+            reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed, limits=limits,
+                                       mode=mode)
+            conn.send(("ok", reports))
+        except GraderFault as exc:  # this student is not recorded and is retried next run
+            conn.send(("fault", str(exc).strip().splitlines()[0]))
+        except Exception:  # noqa: BLE001 - a grader fault: this student is not recorded and is retried next run
+            conn.send(("fault", traceback.format_exc()))
+
+
+class Slot:
+    """One worker process and the task it grades."""
+
+    def __init__(self, context, index: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...]):
+        self.context, self.index, self.args = context, index, (limits, mode, problems)
+        self.task: Task | None = None
+        self.deadline = self.started = 0.0
+        self._start()
+
+    def _start(self) -> None:
+        self.conn, theirs = self.context.Pipe()
+        self.process = self.context.Process(
+            target=_serve, args=(theirs, self.index, *self.args, os.getpid()), name=f"grade-worker-{self.index}",
+            daemon=True,
+        )
+        self.process.start()
+        theirs.close()
+        self.ready = False
+
+    def restart(self) -> None:
+        self.stop()
+        self._start()
+
+    def stop(self) -> None:
+        if self.process.is_alive():
+            self.process.terminate()
+            self.process.join(STOP_GRACE)
+        if self.process.is_alive():
+            self.process.kill()
+            self.process.join()
+        self.conn.close()
+
+    def submit(self, task: Task, seconds: float) -> None:
+        self.conn.send(task)
+        self.task, self.started = task, time.monotonic()
+        self.deadline = self.started + seconds
+
+    def waitables(self) -> list:
+        return [self.conn, self.process.sentinel]
+
+    def poll(self) -> tuple[str, object] | None:
+        """``(kind, payload)`` once the worker answered, died or ran out of time; None while it works."""
+        if self.conn.poll():
+            try:
+                return self.conn.recv()
+            except (EOFError, OSError):
+                pass
+        elif self.process.is_alive():
+            if self.task is None or time.monotonic() < self.deadline:
+                return None
+            self.restart()
+            return "timeout", None
+        self.process.join(1)
+        code = self.process.exitcode
+        self.restart()
+        return "crashed", f"the grading process ended with exit code {code}"
+
+
+def run_pool(tasks: list[Task], jobs: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...],
+              student_timeout: float, done) -> None:
+    """Grade ``tasks`` on ``jobs`` workers; ``done(task, kind, payload, seconds)`` is called in this process."""
+    context = multiprocessing.get_context("spawn")
+    pending = deque(tasks)
+    slots = [Slot(context, index + 1, limits, mode, problems) for index in range(min(jobs, len(tasks)))]
+    try:
+        while pending or any(s.task for s in slots):
+            for slot in slots:
+                if slot.ready and slot.task is None and pending:
+                    try:
+                        slot.submit(pending[0], student_timeout)
+                        pending.popleft()
+                    except OSError:  # the idle worker died: start another
+                        slot.restart()
+            busy = [s for s in slots if s.task is not None]
+            timeout = max(0.0, min(s.deadline for s in busy) - time.monotonic()) if busy else None
+            wait([w for s in slots if s.task is not None or not s.ready for w in s.waitables()], timeout)
+            for slot in slots:
+                if not slot.ready:
+                    if slot.conn.poll() or not slot.process.is_alive():
+                        kind, payload = slot.poll() or ("crashed", "no answer")
+                        if kind != "ready":
+                            raise RuntimeError(f"a grading worker could not start: {payload}")
+                        slot.ready = True
+                    continue
+                if slot.task is None:
+                    continue
+                task, started = slot.task, slot.started
+                outcome = slot.poll()
+                if outcome is not None:
+                    slot.task = None
+                    done(task, *outcome, time.monotonic() - started)
+    finally:
+        for slot in slots:
+            slot.stop()
+
+
+def stopped_reports(task: Task, status: Status, message: str, seconds: float) -> list[ProblemReport]:
+    """Reports for a student whose grading the batch stopped after ``seconds``: every check with ``status``."""
+    from .. import __version__
+    from ..checking import checks_of
+    from ..runner import problem_module
+
+    reports = []
+    for number in task.problems:
+        module = problem_module(number)
+        results = tuple(
+            CheckResult(f"p{number:02d}.{spec.name}", number, spec.title, status, 0.0, spec.points, message,
+                        visibility=spec.visibility, stage=spec.stage)
+            for spec in checks_of(module)
+        )
+        reports.append(ProblemReport(number, module.TITLE, results, seed=task.entry.seed,
+                                     duration=seconds / len(task.problems), submission=str(task.entry.path),
+                                     grader_version=__version__))
+    return reports
+

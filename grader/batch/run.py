@@ -1,0 +1,166 @@
+"""Running a batch: the students to grade, the workers (or a Dask cluster) that grade them, and the gradebook that
+records each student in one transaction as their result arrives."""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import signal
+import threading
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..errors import SandboxError, SubmissionError
+from ..results import Status
+from ..sandbox import BWRAP_FIX, Limits, canary, sandbox_mode
+from .discover import discover
+from .exports import export_results, export_student
+from .gradebook import Gradebook, grader_version
+from .pool import Task, run_pool, stopped_reports
+from .progress import Progress
+
+__all__ = ["BatchReport", "BatchLocked", "run_batch", "default_student_timeout"]
+
+
+class BatchLocked(RuntimeError):
+    """Another process is writing to the results folder."""
+
+
+@dataclass
+class BatchReport:
+    run_id: int
+    students: int
+    graded: int = 0
+    skipped: int = 0
+    timed_out: list[str] = field(default_factory=list)
+    not_graded: dict[str, str] = field(default_factory=dict)  # grader faults: retried on the next run
+    ignored: list[str] = field(default_factory=list)
+    interrupted: bool = False
+    seconds: float = 0.0
+
+    @property
+    def per_minute(self) -> float:
+        return 60.0 * self.graded / self.seconds if self.seconds else 0.0
+
+
+@contextmanager
+def _locked(out: Path):
+    """One writer per results folder at a time (released by the kernel if the process dies)."""
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / ".lock", "w") as handle:
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            raise BatchLocked(f"another grade command is writing to {out}") from None
+        yield
+
+
+def _interrupt(signum, frame):
+    raise KeyboardInterrupt
+
+
+def default_student_timeout(limits: Limits, problems: list[int]) -> float:
+    """The import time-out plus twice the call time-out per check."""
+    from ..checking import checks_of
+    from ..runner import problem_module
+
+    checks = sum(len(checks_of(problem_module(n))) for n in problems)
+    return limits.import_timeout + 2 * limits.call_timeout * max(checks, 1)
+
+
+def run_batch(
+    submissions: str | Path,
+    out: str | Path,
+    *,
+    problems: list[int] | None = None,
+    jobs: int | None = None,
+    force: bool = False,
+    limits: Limits | None = None,
+    student_timeout: float | None = None,
+    progress: bool = True,
+    export: bool = True,
+    no_sandbox: bool = False,
+) -> BatchReport:
+    """Grade every student of ``submissions`` into the gradebook in ``out``, then write the exports.
+
+    Without bubblewrap, students' code runs as plain processes: only with ``no_sandbox`` (recorded in the run and
+    in every report), else ``SandboxError``.  One worker is started first (a canary): when it cannot start, the
+    batch stops with ``SandboxError`` before anyone is graded."""
+    from ..runner import problems as all_problems
+
+    start = time.monotonic()
+    out = Path(out)
+    if not Path(submissions).is_dir():
+        raise SubmissionError(f"{submissions} is not a folder")
+    numbers = sorted(problems or [p.number for p in all_problems()])
+    limits = limits or Limits()
+    jobs = max(1, jobs or len(os.sched_getaffinity(0)))
+    student_timeout = student_timeout or default_student_timeout(limits, numbers)
+    mode = sandbox_mode()
+    if not mode.isolated and not no_sandbox:
+        raise SandboxError(f"bubblewrap is not available, so students' code would run without a sandbox: install "
+                           f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
+                           "and in every report)")
+    with _locked(out), Gradebook.in_folder(out) as book:
+        entries, ignored = discover(submissions, exclude=out)
+        versions = {n: grader_version(n) for n in numbers}
+        if entries:
+            canary(limits, mode)
+        sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
+        run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
+        report = BatchReport(run_id, len(entries), ignored=ignored)
+        tasks = []
+        for entry in entries:
+            todo = set(numbers)
+            if not force:
+                todo -= book.graded_problems(entry.name, entry.content_hash, versions)
+            if todo:
+                tasks.append(Task(entry, tuple(sorted(todo))))
+        report.skipped = len(entries) - len(tasks)
+        bar = Progress(len(tasks), report.skipped, enabled=progress)
+
+        def done(task: Task, kind: str, payload, seconds: float) -> None:
+            name = task.entry.name
+            faults = [r for rep in payload for r in rep.results if r.status is Status.GRADER_ERROR] \
+                if kind == "ok" else []
+            if faults:  # a grader fault is never stored as a grade: retried on the next run
+                kind, payload = "fault", faults[0].message.splitlines()[0]
+            if kind == "ok":
+                reports, outcome = payload, "graded"
+            elif kind == "timeout":
+                message = (f"grading this submission took longer than the batch's limit of {student_timeout:g} s "
+                           "per student and was stopped: look for very slow or endless loops.")
+                reports, outcome = stopped_reports(task, Status.TIMEOUT, message, seconds), "timeout"
+                report.timed_out.append(name)
+            else:
+                report.not_graded[name] = str(payload).strip().splitlines()[-1] if payload else kind
+                bar.advance(name, f"not graded ({report.not_graded[name]}); retried on the next run")
+                return
+            book.record(name, task.entry.content_hash, versions, run_id, reports, outcome, replace_existing=force)
+            report.graded += 1
+            if export:  # the student's own files now, while the workers grade the next students
+                export_student(out, book, name)
+            score = sum(r.score for r in reports)
+            bar.advance(name, f"{score:g}/{sum(r.max_score for r in reports):g} ({seconds:.1f} s)")
+
+        in_main = threading.current_thread() is threading.main_thread()
+        previous = signal.signal(signal.SIGTERM, _interrupt) if in_main else None
+        state = "interrupted"
+        try:
+            if tasks:
+                run_pool(tasks, jobs, limits, mode, tuple(numbers), student_timeout, done)
+            state = "finished"
+        except KeyboardInterrupt:
+            report.interrupted = True
+        finally:
+            if in_main:
+                signal.signal(signal.SIGTERM, previous)
+            bar.close()
+            book.finish_run(run_id, state, report.skipped)
+        report.seconds = time.monotonic() - start
+        if export and not report.interrupted:
+            export_results(out, book, students=None)
+    return report
+
