@@ -210,22 +210,24 @@ def grade_submission(
     limits: Limits | None = None,
     mode: SandboxMode | None = None,
     workdir: str | Path | None = None,
+    zygote=None,
 ) -> list[ProblemReport]:
-    """Grade the given problems of one submission with one sandboxed worker.
+    """Grade the given problems of one submission with one sandboxed worker (forked from ``zygote``, a batch
+    slot's warm process, when given: see ``grader.sandbox.zygote``).
 
     Raises ``SandboxError`` (a ``GraderFault``) when the worker cannot be started or cannot import its
     dependencies: a fault of the installation, for which nothing is graded."""
-    mode = mode or sandbox_mode()
+    mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
     seed = random.randrange(2**31) if seed is None else seed
     modules = {n: problem_module(n) for n in numbers}
     try:
-        submission = materialize(source, workdir)
+        submission = materialize(source, workdir or (zygote.staging if zygote is not None else None))
     except SubmissionError as exc:
         return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
     answers, answers_error = read_answers(submission.path)
     reports = []
     try:
-        with Child(submission.path, limits, mode) as child:
+        with Child(submission.path, limits, mode, zygote=zygote) as child:
             child.start()
             for number in numbers:
                 start = time.perf_counter()

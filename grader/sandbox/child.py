@@ -22,6 +22,7 @@ from pathlib import Path
 from ..errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from . import protocol
 from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
+from .zygote import ForkedProcess
 
 __all__ = ["Child", "canary", "probe_name"]
 
@@ -62,11 +63,12 @@ class Child:
     the next call starts a fresh one (unless importing the submission itself failed: that failure is final)."""
 
     def __init__(self, submission: Path, limits: Limits | None = None, mode: SandboxMode | None = None,
-                 python: str | None = None):
+                 python: str | None = None, zygote=None):
         self.submission = Path(submission)
         self.limits = limits or Limits()
-        self.mode = mode or sandbox_mode()
-        self.python = python
+        self.zygote = zygote  # a warm process to fork workers from (``grader.sandbox.zygote``), or a fresh one each
+        self.mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
+        self.python = zygote.python if zygote is not None else python
         self.info: dict = {}
         self._proc: subprocess.Popen | None = None
         self._launch: Launch | None = None
@@ -82,6 +84,10 @@ class Child:
         self.restarts = 0
 
     # ------------------------------------------------------------------ process life
+
+    @property
+    def _forked(self) -> bool:
+        return isinstance(self._proc, ForkedProcess)
 
     def start(self) -> None:
         """Start the worker and ask it to import the submission, without waiting: the parent's own work
@@ -101,20 +107,12 @@ class Child:
         to_child_r, to_child_w = os.pipe()
         from_child_r, from_child_w = os.pipe()
         try:
-            if self._launch is None:
-                self._launch = prepare(self.submission, to_child_r, from_child_w, self.limits, self.mode,
-                                       self.python)
-            launch = self._launch
-            self._proc = subprocess.Popen(
-                launch.argv,
-                stdin=subprocess.DEVNULL,
-                stdout=self._output,
-                stderr=self._errors,
-                pass_fds=(to_child_r, from_child_w),
-                env=launch.env,
-                cwd=launch.cwd,
-                start_new_session=True,
-            )
+            if self.zygote is not None:
+                if self._launch is None:
+                    self._launch = self.zygote.prepare(self.submission, self.limits)
+                self._proc = self.zygote.fork(self._launch, to_child_r, from_child_w, self._output, self._errors)
+            else:
+                self._spawn_fresh(to_child_r, from_child_w)
         except OSError as exc:
             for fd in (to_child_w, from_child_r):
                 os.close(fd)
@@ -133,6 +131,21 @@ class Child:
         self._ready = False
         self.restarts += 1
 
+    def _spawn_fresh(self, to_child_r: int, from_child_w: int) -> None:
+        if self._launch is None:
+            self._launch = prepare(self.submission, to_child_r, from_child_w, self.limits, self.mode, self.python)
+        launch = self._launch
+        self._proc = subprocess.Popen(
+            launch.argv,
+            stdin=subprocess.DEVNULL,
+            stdout=self._output,
+            stderr=self._errors,
+            pass_fds=(to_child_r, from_child_w),
+            env=launch.env,
+            cwd=launch.cwd,
+            start_new_session=True,
+        )
+
     def _send_import(self) -> None:
         self._next_id += 1
         self._import_id = self._next_id
@@ -145,6 +158,8 @@ class Child:
             return None
         if self._proc.returncode is not None:
             return self._proc.returncode
+        if self._forked:
+            return self._proc.poll()
         try:
             info = os.waitid(os.P_PID, self._proc.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT)
         except ChildProcessError:
@@ -158,8 +173,8 @@ class Child:
         code = self._exit_code()
         if code is not None or self._proc is None:
             return code
-        try:
-            pidfd = os.pidfd_open(self._proc.pid)  # readable when the process ends (Linux 5.3)
+        try:  # readable when the process ends (Linux 5.3)
+            pidfd = os.dup(self._proc.pidfd) if self._forked else os.pidfd_open(self._proc.pid)
         except (AttributeError, OSError):
             pidfd = None
         try:
@@ -190,11 +205,13 @@ class Child:
             except OSError:
                 pass
         self._send_fd, self._reader = -1, None
-        if proc.returncode is None:
+        forked = isinstance(proc, ForkedProcess)
+        if proc.returncode is None and not forked:
             try:  # before the worker is reaped: its pid, the group's id, cannot have been reused
                 os.killpg(proc.pid, signal.SIGKILL)
             except (ProcessLookupError, PermissionError):
                 pass
+        if proc.returncode is None:
             try:
                 proc.kill()
             except OSError:
@@ -203,8 +220,13 @@ class Child:
             proc.wait(timeout=30)
         except subprocess.TimeoutExpired:
             pass
+        if forked:  # what the worker started is killed by the zygote's sweep
+            proc.close()
         if self._launch is not None and not final:
-            self._launch.after_exit()
+            if self.zygote is not None:
+                self.zygote.after_exit(self._launch)
+            else:
+                self._launch.after_exit()
 
     def close(self) -> None:
         """Ask the worker to exit, then make sure it and everything it started have."""
@@ -218,7 +240,10 @@ class Child:
             self._kill(final=True)
         finally:
             if self._launch is not None:
-                self._launch.release()
+                if self.zygote is not None:
+                    self.zygote.release(self._launch)
+                else:
+                    self._launch.release()
                 self._launch = None
 
     def __enter__(self):
@@ -300,8 +325,8 @@ class Child:
 
     # ------------------------------------------------------------------ protocol
 
-    def _crash_detail(self, code) -> str:
-        if self.mode.isolated and code is not None and code > 128:
+    def _crash_detail(self, code, forked: bool = False) -> str:
+        if self.mode.isolated and not forked and code is not None and code > 128:
             code = -(code - 128)  # bubblewrap reports a signal of its child as 128 + the signal
         if code is not None and code < 0:
             try:
@@ -319,11 +344,12 @@ class Child:
     def _ended(self, deadline: float, phase: str) -> WorkerCrash:
         """The worker closed its end of the reply pipe: wait (until the call's deadline) for it to end."""
         code = self._wait_exit(deadline)
+        forked = self._forked  # a forked worker's code comes from waitpid, not from bubblewrap
         self._kill()
         if code is None:
             return WorkerCrash("the process running your code closed its connection to the grader and did not "
                                "end; it was stopped at the time limit", phase)
-        return WorkerCrash(self._crash_detail(code), phase)
+        return WorkerCrash(self._crash_detail(code, forked), phase)
 
     def _send(self, message: dict, timeout: float, phase: str, deadline: float | None = None) -> None:
         deadline = time.monotonic() + timeout if deadline is None else deadline

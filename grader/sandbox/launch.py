@@ -42,6 +42,10 @@ __all__ = [
     "cache_root",
     "Launch",
     "prepare",
+    "prepare_zygote",
+    "ForkConfig",
+    "prepare_fork",
+    "renew_home",
     "plain_mode",
     "refusal",
     "HIDDEN_PACKAGES",
@@ -414,7 +418,10 @@ def _landlock_rules(python: str, submission: Path, home: str) -> dict:
     return {"read": read, "hidden": hidden_paths(read, python), "write": [home], "devices": list(DEVICES)}
 
 
-def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: bool) -> list[str]:
+def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: bool, zygote: bool = False) -> list[str]:
+    """The bubblewrap command of a worker for ``submission`` (shown at /submission); with ``zygote``, of the warm
+    process of a slot, ``submission`` being the slot's staging folder (shown at /slot, from which each forked
+    worker binds its own student's package at /submission)."""
     bound = [p for p in visible_paths(python) if not any(_inside(p, s) for s in SYSTEM_DIRS)]
     shared = [p for p in bound if p in ("/", "/tmp")]
     if shared:
@@ -423,6 +430,8 @@ def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: boo
     namespaces = ["--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try"]
     if not root:  # as root, the worker switches to its uid itself (a user namespace would leave it unmapped)
         namespaces.append("--unshare-user")
+        if zygote:  # the mounts of each forked worker, in the user namespace only; dropped before the student runs
+            namespaces += ["--cap-add", "CAP_SYS_ADMIN"]
     argv = [shutil.which("bwrap") or "bwrap", *namespaces, "--die-with-parent", "--new-session"]
     for system_dir in SYSTEM_DIRS:
         argv += ["--ro-bind-try", system_dir, system_dir]
@@ -439,7 +448,12 @@ def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: boo
     for path in hidden_paths(bound, python):
         argv += ["--tmpfs", path]
     runtime = runtime_dir()
-    argv += ["--ro-bind", str(runtime), "/grader", "--ro-bind", str(submission), "/submission", "--chdir", "/tmp"]
+    argv += ["--ro-bind", str(runtime), "/grader"]
+    if zygote:
+        argv += ["--ro-bind", str(submission), "/slot", "--dir", "/submission", "--chdir", "/tmp"]
+        return [*argv, "--", python, "-I", "-B", "/grader/worker.py", "zygote", worker_args[0], "/slot",
+                worker_args[1]]
+    argv += ["--ro-bind", str(submission), "/submission", "--chdir", "/tmp"]
     return [*argv, "--", python, "-I", "-B", "/grader/worker.py", *worker_args[:2], "/submission", worker_args[2]]
 
 
@@ -464,10 +478,7 @@ def prepare(submission: Path, request_fd: int, reply_fd: int, limits: Limits, mo
         return Launch(_worker_argv(python, submission, request_fd, reply_fd, config), child_env(home), home, None,
                       home)
     if not mode.isolated:
-        reason = refusal(python)
-        if reason:
-            raise SandboxError(reason)
-        _guard_cache()
+        _refuse_unsafe(python)
     # as root, a uid of the child's own: its own files and its own process count
     claim = users.claim_uid(sweeps=not mode.isolated) if root else None
     try:
@@ -484,3 +495,86 @@ def prepare(submission: Path, request_fd: int, reply_fd: int, limits: Limits, mo
         if claim is not None:
             claim.release()
         raise
+
+
+def _refuse_unsafe(python: str) -> None:
+    """As root without bubblewrap: refuse when an unprivileged uid could not read the runtime; guard the cache."""
+    reason = refusal(python)
+    if reason:
+        raise SandboxError(reason)
+    _guard_cache()
+
+
+# ------------------------------------------------------------------------------------------ warm forks
+
+
+def prepare_zygote(staging: Path, control_fd: int, mode: SandboxMode, preload: list[str],
+                   python: str | None = None) -> Launch:
+    """The launch of a slot's warm process (``grader.sandbox.zygote``), ``control_fd`` its end of the control
+    socket.  It runs no student code and keeps the grader's uid (or root, inside bubblewrap's namespaces or as a
+    plain process), so that it can confine each worker it forks."""
+    python = python or sys.executable
+    root = os.geteuid() == 0
+    required = [name for name in REQUIRED if importlib.util.find_spec(name) is not None]
+    config = {"require": required, "preload": list(preload), "pid_namespace": mode.isolated}
+    if mode.isolated:
+        argv = _bwrap_argv(python, staging, [str(control_fd), json.dumps(config)], root, zygote=True)
+        return Launch(argv, child_env("/tmp"), tempfile.gettempdir())
+    if root:
+        _refuse_unsafe(python)
+    worker = runtime_dir() / "worker.py"
+    argv = [python, "-I", "-B", str(worker), "zygote", str(control_fd), str(staging), json.dumps(config)]
+    return Launch(argv, child_env(str(staging)), str(staging))
+
+
+@dataclass
+class ForkConfig:
+    """What one worker forked from a zygote is given (its ``config``: limits, uid, mounts, Landlock, environment),
+    and what to clean after it: the uid it runs under (when the grader is root) and that uid's private home."""
+
+    config: dict
+    claim: users.UidClaim | None = None
+    home: str | None = None
+
+
+def prepare_fork(submission: Path, staging: Path, limits: Limits, mode: SandboxMode,
+                 python: str | None = None) -> ForkConfig:
+    """The confinement of one student's worker forked from a zygote: the same as ``prepare`` gives a fresh worker.
+    Under bubblewrap, ``submission`` lies inside the zygote's ``staging`` folder."""
+    python = python or sys.executable
+    root = os.geteuid() == 0
+    config: dict = {"limits": limits.for_worker()}
+    if mode.isolated:
+        relative = Path(os.path.realpath(submission)).relative_to(os.path.realpath(staging))
+        config.update(bind=f"/slot/{relative.as_posix()}", submission="/submission", cwd="/tmp",
+                      env=child_env("/tmp"))
+        claim = users.claim_uid(sweeps=False) if root else None
+        config["uid"] = claim.uid if claim else None
+        return ForkConfig(config, claim)
+    if not root:
+        home = _private_home(None)
+        config.update(submission=str(submission), cwd=home, env=child_env(home), uid=None,
+                      landlock=_landlock_rules(python, submission, home))
+        return ForkConfig(config, None, home)
+    _refuse_unsafe(python)
+    claim = users.claim_uid(sweeps=True)
+    try:
+        _share_with(submission, claim.uid)
+        home = _private_home(claim.uid)
+        config.update(submission=str(submission), cwd=home, env=child_env(home), uid=claim.uid,
+                      unshare_network=True, landlock=_landlock_rules(python, submission, home))
+        return ForkConfig(config, claim, home)
+    except BaseException:
+        claim.release()
+        raise
+
+
+def renew_home(fork: ForkConfig, python: str | None = None) -> None:
+    """A fresh private home for the next worker of the same student (plain processes)."""
+    if fork.home is None:
+        return
+    shutil.rmtree(fork.home, ignore_errors=True)
+    home = _private_home(fork.claim.uid if fork.claim else None)
+    fork.home = home
+    fork.config.update(cwd=home, env=child_env(home),
+                       landlock=_landlock_rules(python or sys.executable, Path(fork.config["submission"]), home))

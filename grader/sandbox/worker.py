@@ -12,6 +12,15 @@ Start-up, before any code of the submission runs: resource limits; as root, new 
 (where the kernel allows) and the switch to the unprivileged uid the grader claimed; then the imports of the
 dependencies (the probes package, numpy).  Only then does the worker say ready: a failure up to that point is a
 fault of the installation, never of the submission.
+
+    python -I -B worker.py zygote CONTROL_FD SLOT CONFIG_JSON
+
+The warm process of a batch slot (see ``grader.sandbox.zygote``): it imports the dependencies and what the batch's
+probes need (numpy, scipy, sympy, mujoco, the probes), never any submission, and on each request of the grader
+forks one student's worker, which confines itself exactly as a fresh worker does (its own mount and IPC namespaces
+with an empty ``/tmp`` and ``/dev/shm`` and only its submission at ``/submission`` under bubblewrap; limits; its
+uid; Landlock) before it says ready.  Nothing of an earlier student is in the fork: the zygote never ran student
+code, and whatever a student started is killed before the next one is forked.
 """
 
 from __future__ import annotations
@@ -344,6 +353,293 @@ def _import_dependencies(required: list[str]) -> None:
         raise ModuleNotFoundError(f"No module named {missing[0]!r} (missing: {', '.join(missing)})", name=missing[0])
 
 
+# ---------------------------------------------------------------- the warm process of a slot
+
+#: the mount point of the slot's staging folder inside the zygote's sandbox (bubblewrap)
+SLOT = "/slot"
+#: seconds the zygote spends killing what a student left before it gives up
+SWEEP_SECONDS = 10.0
+_CLONE_NEWNS, _CLONE_NEWIPC = 0x00020000, 0x08000000
+_MS_RDONLY, _MS_NOSUID, _MS_NODEV, _MS_REMOUNT, _MS_BIND, _MS_REC, _MS_PRIVATE = 1, 2, 4, 32, 4096, 16384, 1 << 18
+_MNT_DETACH = 2
+_PR_SET_DUMPABLE, _PR_CAP_AMBIENT, _PR_CAP_AMBIENT_CLEAR_ALL = 4, 47, 4
+
+
+def _check(result: int, what: str) -> None:
+    if result != 0:
+        import ctypes
+
+        errno = ctypes.get_errno()
+        raise OSError(errno, f"{what}: {os.strerror(errno)}")
+
+
+def _fresh_tmpfs(libc, path: str) -> None:
+    """An empty tmpfs on ``path`` with the owner and mode the sandbox gave ``path``."""
+    if not os.path.isdir(path):
+        return
+    info = os.stat(path)
+    options = f"mode={info.st_mode & 0o7777:o},uid={info.st_uid},gid={info.st_gid}".encode()
+    _check(libc.mount(b"tmpfs", path.encode(), b"tmpfs", _MS_NOSUID | _MS_NODEV, options), f"tmpfs on {path}")
+
+
+def _own_mounts(libc, submission: str) -> None:
+    """In a mount and an IPC namespace of this process's own: the student's package (inside the slot's staging
+    folder) read-only at /submission, the staging folder itself gone, empty /tmp and /dev/shm, no IPC object of
+    anyone else."""
+    _check(libc.unshare(_CLONE_NEWNS | _CLONE_NEWIPC), "unshare")
+    _check(libc.mount(b"none", b"/", None, _MS_REC | _MS_PRIVATE, None), "private mounts")
+    _check(libc.mount(submission.encode(), b"/submission", None, _MS_BIND | _MS_REC, None), "bind the submission")
+    _check(libc.mount(b"none", b"/submission", None, _MS_REMOUNT | _MS_BIND | _MS_RDONLY | _MS_NOSUID | _MS_NODEV,
+                      None), "read-only submission")
+    _check(libc.umount2(SLOT.encode(), _MNT_DETACH), "hide the staging folder")
+    for path in ("/tmp", "/dev/shm"):
+        _fresh_tmpfs(libc, path)
+
+
+def _drop_capabilities(libc) -> None:
+    """No capability left (a zygote in a user namespace of its own keeps CAP_SYS_ADMIN for the mounts above), and
+    none to be gained by executing anything."""
+    import ctypes
+
+    class Header(ctypes.Structure):
+        _fields_ = [("version", ctypes.c_uint32), ("pid", ctypes.c_int)]
+
+    class Data(ctypes.Structure):
+        _fields_ = [("effective", ctypes.c_uint32), ("permitted", ctypes.c_uint32), ("inheritable", ctypes.c_uint32)]
+
+    libc.prctl(_PR_CAP_AMBIENT, _PR_CAP_AMBIENT_CLEAR_ALL, 0, 0, 0)
+    data = (Data * 2)()
+    _check(libc.capset(ctypes.byref(Header(0x20080522, 0)), data), "capset")
+    _check(libc.prctl(_PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0), "no new privileges")
+
+
+def _close_other_fds(keep: set[int]) -> None:
+    for name in os.listdir("/proc/self/fd"):
+        fd = int(name)
+        if fd not in keep:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
+def _forked(request_fd: int, reply_fd: int, out_fd: int, err_fd: int, config: dict) -> int:
+    """One student's worker, in the child of a fork of the zygote: confine, forget the zygote, say ready, serve."""
+    import signal
+
+    started = False
+    try:
+        os.setsid()
+        devnull = os.open("/dev/null", os.O_RDONLY)
+        for source, target in ((devnull, 0), (out_fd, 1), (err_fd, 2)):
+            os.dup2(source, target)
+        _close_other_fds({0, 1, 2, request_fd, reply_fd})
+        for number in (signal.SIGINT, signal.SIGTERM, signal.SIGCHLD, signal.SIGPIPE):
+            signal.signal(number, signal.SIG_DFL if number != signal.SIGPIPE else signal.SIG_IGN)
+        libc = _libc()
+        submission = config["submission"]
+        if config.get("bind"):
+            _own_mounts(libc, config["bind"])
+        info = confine(config)
+        if os.geteuid() != 0:
+            _drop_capabilities(libc)
+        if config.get("uid") is None:  # as a fresh worker of the grader's own uid is (the zygote is not)
+            libc.prctl(_PR_SET_DUMPABLE, 1, 0, 0, 0)
+        info["warm"] = True
+        numpy = sys.modules.get("numpy")
+        if numpy is not None:  # the zygote's global random state is every fork's: a fresh child draws its own
+            numpy.random.seed()
+        os.environ.clear()
+        os.environ.update(config.get("env", {}))
+        os.environ["GRADER_SUBMISSION"] = submission
+        os.chdir(config.get("cwd", "/"))
+        sys.argv = [os.path.join(RUNTIME, "worker.py"), str(request_fd), str(reply_fd), submission, json.dumps(config)]
+        protocol.write_message(reply_fd, {"id": 0, "ok": True, "op": "ready", "info": info})
+        started = True
+        return serve(request_fd, reply_fd, submission)
+    except BaseException as exc:  # noqa: BLE001 - before ready: a fault of the set-up; after: the student's end
+        if not started:
+            try:
+                protocol.write_message(reply_fd, _error(0, "setup", exc, f"{type(exc).__name__}: {exc}"))
+            except BaseException:  # noqa: BLE001
+                pass
+            return 70
+        return 1
+
+
+def _preload(names: list[str]) -> list[str]:
+    """Import what the batch's probes and submissions will need; the names that could not be imported."""
+    missing = []
+    for name in names:
+        try:
+            importlib.import_module(name)
+        except Exception:  # noqa: BLE001 - imported again (and reported) where it is needed, if ever
+            missing.append(name)
+    return missing
+
+
+def _others(keep: set[int]) -> list[int]:
+    """The live processes of this pid namespace other than ``keep``."""
+    found = []
+    for name in os.listdir("/proc"):
+        if not name.isdigit() or int(name) in keep:
+            continue
+        try:
+            with open(f"/proc/{name}/stat", encoding="ascii", errors="replace") as handle:
+                state = handle.read().rsplit(")", 1)[1].split()[0]
+        except (OSError, IndexError):
+            continue
+        if state not in ("Z", "X"):
+            found.append(int(name))
+    return found
+
+
+class _Zygote:
+    """The zygote's state: the control socket and the forked students' workers (pid -> fork id, pidfd)."""
+
+    def __init__(self, control, config: dict):
+        self.control = control
+        self.config = config
+        self.children: dict[int, tuple[int, int]] = {}
+
+    def send(self, message: dict, fds: list[int] = ()) -> None:
+        import socket
+
+        socket.send_fds(self.control, [json.dumps(message).encode()], list(fds))
+
+    def fork(self, message: dict, fds: list[int]) -> None:
+        request_fd, reply_fd, out_fd, err_fd = fds
+        for stream in (sys.stdout, sys.stderr):
+            stream.flush()
+        pid = os.fork()
+        if pid == 0:
+            code = 70
+            try:
+                self.control.close()
+                for _, pidfd in self.children.values():
+                    os.close(pidfd)
+                code = _forked(request_fd, reply_fd, out_fd, err_fd, message["config"])
+            finally:
+                for stream in (sys.stdout, sys.stderr):
+                    try:
+                        stream.flush()
+                    except BaseException:  # noqa: BLE001
+                        pass
+                os._exit(code)
+        for fd in fds:
+            os.close(fd)
+        pidfd = os.pidfd_open(pid)
+        self.children[pid] = (message["id"], pidfd)
+        self.send({"op": "forked", "id": message["id"], "pid": pid}, [pidfd])
+
+    def reap(self, pid: int, block: bool = False) -> bool:
+        try:
+            done, status = os.waitpid(pid, 0 if block else os.WNOHANG)
+            code = os.waitstatus_to_exitcode(status) if done else None
+        except ChildProcessError:
+            done, code = pid, -9
+        if done == 0:
+            return False
+        fork_id, pidfd = self.children.pop(pid)
+        os.close(pidfd)
+        self.send({"op": "exited", "id": fork_id, "code": code})
+        return True
+
+    def sweep(self) -> int:
+        """Kill what the students left: in a pid namespace of the slot's own (bubblewrap), every process but this
+        one and the namespace's init; otherwise the process group of each forked worker.  Returns how many
+        processes were left when it gave up (0: all gone)."""
+        import signal
+        import time
+
+        keep = {1, os.getpid()}
+        deadline = time.monotonic() + SWEEP_SECONDS
+        while True:
+            if self.config.get("pid_namespace"):
+                left = _others(keep)
+                if left:
+                    try:
+                        os.kill(-1, signal.SIGKILL)  # every process of this namespace but this one and its init
+                    except ProcessLookupError:
+                        pass
+            else:
+                left = list(self.children)
+                for pid in left:
+                    for kill in (os.killpg, os.kill):
+                        try:
+                            kill(pid, signal.SIGKILL)
+                        except (ProcessLookupError, PermissionError):
+                            pass
+            for pid in list(self.children):
+                self.reap(pid, block=True)
+            if not left or time.monotonic() > deadline:
+                return len(left)
+            time.sleep(0.005)
+
+    def serve(self) -> int:
+        import select
+        import socket
+
+        while True:
+            pidfds = {pidfd: pid for pid, (_, pidfd) in self.children.items()}
+            ready, _, _ = select.select([self.control, *pidfds], [], [])
+            for fd in ready:
+                if fd in pidfds:
+                    self.reap(pidfds[fd])
+            if self.control not in ready:
+                continue
+            data, fds, _, _ = socket.recv_fds(self.control, 1 << 16, 8)
+            if not data:  # the grader is gone
+                self.sweep()
+                return 0
+            message = json.loads(data)
+            op = message.get("op")
+            if op == "fork" and len(fds) == 4:
+                self.fork(message, fds)
+            elif op == "sweep":
+                left = self.sweep()
+                self.send({"op": "swept", "id": message.get("id"), "left": left})
+            elif op == "exit":
+                self.sweep()
+                return 0
+            else:
+                for fd in fds:
+                    os.close(fd)
+                self.send({"op": "error", "id": message.get("id"), "message": f"unknown request {op!r}"})
+
+
+def zygote(control_fd: int, slot: str, config: dict) -> int:
+    """The warm process of a slot: import what the students' workers need, then fork one per request."""
+    import socket
+    import threading
+
+    control = socket.socket(fileno=control_fd)
+    sys.stdin.close()
+    state = _Zygote(control, config)
+    try:
+        libc = _libc()
+        _die_with_parent(libc)
+        libc.prctl(_PR_SET_DUMPABLE, 0, 0, 0, 0)  # no process of the same uid may read or write its memory
+        _import_dependencies(config.get("require", []))
+        missing = _preload(config.get("preload", []))
+        threads = len(os.listdir("/proc/self/task"))
+        if threads != 1 or threading.active_count() != 1:
+            raise RuntimeError(f"the warm process runs {threads} threads after its imports: it cannot fork safely")
+    except BaseException as exc:  # noqa: BLE001 - reported to the grader as a fault of the set-up
+        reply = _error(0, "setup", exc, f"{type(exc).__name__}: {exc}")
+        reply["missing"] = getattr(exc, "name", None) if isinstance(exc, ImportError) else None
+        state.send(reply)
+        return 70
+    sys.meta_path.insert(0, _BlockTrustedPackages())
+    for name in [m for m in sys.modules if m.split(".")[0] in BLOCKED]:
+        del sys.modules[name]
+    sys.setrecursionlimit(3000)
+    state.send({"id": 0, "ok": True, "op": "ready",
+                "info": {"python": sys.executable, "version": sys.version.split()[0], "uid": os.getuid(),
+                         "preloaded": [n for n in config.get("preload", []) if n not in missing]}})
+    return state.serve()
+
+
 class _BlockTrustedPackages:
     """Refuses imports of the grader's trusted packages."""
 
@@ -354,6 +650,8 @@ class _BlockTrustedPackages:
 
 
 def main(argv: list[str]) -> int:
+    if argv[1:2] == ["zygote"]:
+        return zygote(int(argv[2]), argv[3], json.loads(argv[4]))
     request_fd, reply_fd = int(argv[1]), int(argv[2])
     submission = argv[3]
     config = json.loads(argv[4]) if len(argv) > 4 else {}
