@@ -1,6 +1,10 @@
 """Hostile submissions: each yields a clear student-facing error or a 0 for the attacked checks, within its
 limits, and the grader itself carries on; nothing the submission started or wrote outlives the grading.
 
+Every attack runs four ways: a fresh worker and a worker forked from a batch slot's warm process (``-warm``: one
+zygote per mode for the whole module, so that the attacks also follow one another in the same slot), each in
+bubblewrap and as a plain process.
+
 Every outcome is asserted, never a duration: the bounds on time are generous (a loaded machine passes), and the
 speed of the grader is measured by the benchmarks.  In the plain-process mode, a grader running as root whose
 Python runtime an unprivileged uid cannot read (e.g. under /root) must refuse: there the tests assert the refusal.
@@ -22,11 +26,12 @@ from grader import grade_problem
 from grader.errors import SandboxError
 from grader.results import Status
 from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode
+from grader.sandbox.zygote import Zygote, warm_modules
 
 from .submissions import build_hostile, copy_reference, hostile_expectation, hostile_names
 
 LIMITS = Limits(call_timeout=3.0, import_timeout=5.0, memory_mb=1024)
-MODES = [pytest.param("bwrap", id="bwrap"), pytest.param("process", id="process")]
+MODES = [pytest.param(kind, id=kind) for kind in ("bwrap", "process", "bwrap-warm", "process-warm")]
 #: seconds that the processes of a finished grading get to disappear (they are killed: this is only the kernel's)
 GONE_WITHIN = 20.0
 #: how a report says that Landlock restricted the files of a plain process
@@ -34,7 +39,7 @@ LANDLOCK_FILES = "Landlock let it read only"
 
 
 def hostile_mode(kind: str) -> SandboxMode:
-    if kind == "bwrap":
+    if kind.startswith("bwrap"):
         if not sandbox_mode().isolated:
             pytest.skip("bubblewrap is not available here")
         return SandboxMode("bwrap", "bubblewrap: no network, no access to the reference or other submissions")
@@ -156,25 +161,54 @@ class Target:
 # ------------------------------------------------------------------------------------------ the tests
 
 
+@pytest.fixture(scope="module")
+def zygotes():
+    """One warm process per mode, started when first needed and shared by every test of the module."""
+    started: dict[str, Zygote] = {}
+
+    def get(kind: str) -> Zygote:
+        if kind not in started:
+            zygote = Zygote(LIMITS, hostile_mode(kind), warm_modules(sorted(HOSTILE_PROBLEMS)))
+            try:
+                zygote.start()
+            except BaseException:
+                zygote.close()
+                raise
+            started[kind] = zygote
+        return started[kind]
+
+    yield get
+    for zygote in started.values():
+        zygote.close()
+
+
+HOSTILE_PROBLEMS = {hostile_expectation(name).get("problem", 6) for name in hostile_names()}
+
+
 @pytest.mark.parametrize("kind", MODES)
 @pytest.mark.parametrize("name", hostile_names())
-def test_hostile_submission(name, kind, tmp_path, monkeypatch):
+def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes):
     expect = hostile_expectation(name)
     mode = hostile_mode(kind)
     submission = build_hostile(name, tmp_path / "pkg")
     limits = replace(LIMITS, **expect.get("limits", {}))
     problem = expect.get("problem", 6)
-    if kind == "process":
+    warm = kind.endswith("-warm")
+    if kind.startswith("process"):
         if refusal() is not None:
-            assert_refused(lambda: grade_problem(problem, submission, seed=7, limits=limits, mode=mode))
+            assert_refused(lambda: grade_problem(problem, submission, seed=7, limits=limits, mode=mode,
+                                                 zygote=zygotes(kind) if warm else None))
             return
         if expect.get("other_uid") and os.geteuid() != 0:
             pytest.skip("without bubblewrap and without root, the child runs as the user who runs the tests")
+    zygote = zygotes(kind) if warm else None
     target = Target(submission, monkeypatch) if expect.get("target") else None
     before = set(descendants(os.getpid()))
     try:
         start = time.monotonic()
-        report = grade_problem(problem, submission, seed=7, limits=limits, mode=mode)
+        report = grade_problem(problem, submission, seed=7, limits=limits, mode=mode, zygote=zygote)
+        if warm:
+            assert zygote.starts == 1, "the slot's warm process was killed"
         elapsed = time.monotonic() - start
         if expect.get("isolated_only") and not report.isolated and LANDLOCK_FILES not in report.sandbox:
             pytest.skip("only a file-system sandbox (bubblewrap, or Landlock where the kernel has it) hides the "

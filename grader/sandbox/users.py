@@ -69,10 +69,17 @@ def _account_exists(uid: int) -> bool:
     return True
 
 
+#: where this process looks for a free uid next: consecutive children (the students of one batch slot) get
+#: different uids, so that nothing a student might have left under its uid could ever meet the next student
+_next_offset = 0
+
+
 def claim_uid(sweeps: bool = True) -> UidClaim:
     """A uid for one child, unused by every other child and by every account of the system."""
+    global _next_offset
     directory = _lock_dir()
-    for uid in range(BASE_UID, BASE_UID + UID_COUNT):
+    for offset in range(UID_COUNT):
+        uid = BASE_UID + (_next_offset + offset) % UID_COUNT
         if _account_exists(uid):
             continue
         fd = os.open(os.path.join(directory, f"uid-{uid}.lock"), os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_CLOEXEC,
@@ -83,6 +90,7 @@ def claim_uid(sweeps: bool = True) -> UidClaim:
             os.close(fd)
             continue
         claim = UidClaim(uid, fd, sweeps)
+        _next_offset = (uid - BASE_UID + 1) % UID_COUNT
         try:
             sweep(uid, files=sweeps)
         except BaseException:

@@ -1,0 +1,104 @@
+"""Workers forked from a batch slot's warm process (``grader.sandbox.zygote``): one student cannot see or influence
+the next one graded by the same slot, and every student is graded as a fresh worker would grade them.
+
+The hostile suite runs on the warm path too (``tests/test_hostile.py``, modes ``*-warm``).
+"""
+
+import json
+import os
+import random
+import shutil
+
+import pytest
+
+from grader.results import Status
+from grader.runner import grade_submission
+from grader.sandbox import Limits, plain_mode, refusal, sandbox_mode
+from grader.sandbox.zygote import Zygote, warm_modules
+
+from .submissions import ROOT, copy_reference
+
+LIMITS = Limits(call_timeout=5.0, import_timeout=10.0)
+WARM = ROOT / "tests" / "warm"
+
+
+def slot_mode(kind: str):
+    if kind == "bwrap":
+        if not sandbox_mode().isolated:
+            pytest.skip("bubblewrap is not available here")
+        return sandbox_mode()
+    if refusal() is not None:
+        pytest.skip("as root, plain processes need a Python runtime that an unprivileged uid can read (the refusal "
+                    "is tested by tests/test_hostile.py)")
+    return plain_mode("bubblewrap not used (test)")
+
+
+@pytest.fixture(params=["bwrap", "process"])
+def zygote(request):
+    with Zygote(LIMITS, slot_mode(request.param), warm_modules([6])) as slot:
+        slot.start()
+        yield slot
+
+
+def student(name: str, dest, nonce: str):
+    """A reference copy with the package files of ``tests/warm/NAME`` laid over it and a marker file of its own."""
+    copy_reference(dest)
+    for path in (WARM / name).iterdir():
+        if path.is_file():
+            shutil.copy2(path, dest / path.name)
+    (dest / "target.txt").write_text(json.dumps({"nonce": nonce}))
+    (dest / f"{name}.txt").write_text(name)
+    return dest
+
+
+def printed(report, tag: str) -> dict:
+    (line,) = [line for line in report.stdout.splitlines() if line.startswith(tag + " ")]
+    return json.loads(line[len(tag) + 1:])
+
+
+def test_a_student_cannot_see_or_influence_the_next_one_in_the_same_slot(zygote, tmp_path):
+    nonce = f"{random.randrange(10**6, 10**7)}.{random.randrange(10**5, 10**6)}"  # a `sleep` duration
+    leaver = student("leaver", tmp_path / "leaver", nonce)
+    spy = student("spy", tmp_path / "spy", nonce)
+
+    (left,) = grade_submission(leaver, [6], seed=3, limits=LIMITS, zygote=zygote)
+    done = printed(left, "LEAVER")
+    # what the first student managed to leave behind (what its sandbox allowed it)
+    assert done["threads"] >= 2 and done["daemon"] is True and done["shm"] is True
+    assert done["killed_parent"] != True  # noqa: E712 - the warm process is not the student's to signal
+    (first, second) = [grade_submission(spy, [6], seed=3, limits=LIMITS, zygote=zygote)[0] for _ in range(2)]
+    seen, again = printed(first, "SPY"), printed(second, "SPY")
+
+    assert zygote.starts == 1  # the same warm process forked all three
+    for report in (first, second):  # the next students are graded as fresh workers grade them
+        assert report.score == report.auto_max_score, [(r.check_id, r.message) for r in report.results
+                                                       if r.status is not Status.PASSED]
+    assert seen["math_patched"] is False and seen["numpy_patched"] is False and seen["leftover_module"] is False
+    assert seen["environment"] is None
+    assert seen["threads"] == 1 and seen["tasks"] == 1
+    assert seen["rng_is_seeded_12345"] is False and seen["draw"] != again["draw"]  # reseeded in every fork
+    assert seen["files"] == [] and seen["daemons"] == [] and seen["shm"] is False
+    assert "spy.txt" in seen["package"] and "leaver.txt" not in seen["package"]  # its own files only
+    assert len(seen["fds"]) <= 6, seen["fds"]  # stdin, stdout, stderr, its two pipes (and the listing's own)
+    if zygote.mode.isolated:
+        assert not seen["slot"]  # the slot's staging folder is detached: at most an empty mount point
+        # an empty tmpfs of its own over the slot's /tmp (a mount of the sandbox) and /dev/shm (a folder in its /dev)
+        assert seen["mounted_on"]["/tmp"] >= 2 and seen["mounted_on"]["/dev/shm"] >= 1
+    if os.geteuid() == 0:  # a uid of each student's own, never root
+        assert len({done["uid"], seen["uid"], again["uid"]}) == 3 and 0 not in (done["uid"], seen["uid"])
+
+
+def test_a_killed_worker_is_forked_again_and_the_student_graded_to_the_end(zygote, tmp_path):
+    """A crash in one call costs that call only: the next call forks a fresh worker from the same zygote."""
+    submission = copy_reference(tmp_path / "pkg")
+    rotations = submission / "rotations.py"
+    text = rotations.read_text()
+    old = "def cardan(alpha, beta, gamma):\n"
+    assert text.count(old) == 1
+    rotations.write_text(text.replace(old, old + "    import os\n\n    os._exit(3)\n"))
+    (report,) = grade_submission(submission, [6], seed=3, limits=LIMITS, zygote=zygote)
+    assert zygote.starts == 1
+    by_id = {r.check_id: r for r in report.results}
+    assert by_id["p06.cardan_rotation"].status is Status.ERROR
+    assert "exit code 3" in by_id["p06.cardan_rotation"].message
+    assert {by_id[c].status for c in ("p06.elementary_values", "p06.frames", "p06.vectors")} == {Status.PASSED}
