@@ -69,50 +69,134 @@ def _serve(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[i
 
 
 def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...]) -> None:
+    from ..sandbox.zygote import Zygote, warm_modules
+
+    zygote = None
     try:
         from ..runner import grade_submission, problem_module
 
         for number in problems:
             problem_module(number)
-    except Exception:  # noqa: BLE001 - reported to the parent, which stops the batch
-        conn.send(("fault", traceback.format_exc()))
+        zygote = Zygote(limits, mode, warm_modules(problems))
+        zygote.start()
+    except Exception as exc:  # noqa: BLE001 - reported to the parent, which stops the batch
+        if zygote is not None:
+            zygote.close()
+        conn.send(("fault", str(exc) if isinstance(exc, GraderFault) else traceback.format_exc()))
         return
-    conn.send(("ready", None))
-    while True:
+    try:
+        conn.send(("ready", None))
+        while True:
+            try:
+                task = conn.recv()
+            except (EOFError, OSError):
+                return
+            if task is None:
+                return
+            try:
+                reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed,
+                                           limits=limits, zygote=zygote)
+                conn.send(("ok", reports))
+            except GraderFault as exc:  # this student is not recorded and is retried next run
+                conn.send(("fault", str(exc).strip().splitlines()[0]))
+            except Exception:  # noqa: BLE001 - a grader fault: this student is not recorded, retried next run
+                conn.send(("fault", traceback.format_exc()))
+    finally:
+        zygote.close()
+
+
+class _Subprocess:
+    """A worker process started with ``subprocess`` instead of ``multiprocessing`` (a Dask worker is a daemonic
+    process, which ``multiprocessing`` forbids to have children), with what ``Slot`` uses of a ``Process``."""
+
+    def __init__(self, fd: int, args: tuple):
+        import base64
+        import pickle
+        import subprocess
+
+        payload = base64.b64encode(pickle.dumps(args)).decode()
+        self._proc = subprocess.Popen([sys.executable, "-m", "grader.batch.pool", str(fd), payload],
+                                      pass_fds=(fd,), stdin=subprocess.DEVNULL)
+        self.sentinel = os.pidfd_open(self._proc.pid)
+
+    def start(self) -> None:
+        pass
+
+    def is_alive(self) -> bool:
+        return self._proc.poll() is None
+
+    @property
+    def exitcode(self) -> int | None:
+        return self._proc.poll()
+
+    def terminate(self) -> None:
+        if self.is_alive():
+            self._proc.terminate()
+
+    def kill(self) -> None:
+        if self.is_alive():
+            self._proc.kill()
+
+    def join(self, timeout: float | None = None) -> None:
+        import subprocess
+
         try:
-            task = conn.recv()
-        except (EOFError, OSError):
+            self._proc.wait(timeout)
+        except subprocess.TimeoutExpired:
             return
-        if task is None:
-            return
-        try:
-            reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed, limits=limits,
-                                       mode=mode)
-            conn.send(("ok", reports))
-        except GraderFault as exc:  # this student is not recorded and is retried next run
-            conn.send(("fault", str(exc).strip().splitlines()[0]))
-        except Exception:  # noqa: BLE001 - a grader fault: this student is not recorded and is retried next run
-            conn.send(("fault", traceback.format_exc()))
+        if self.sentinel >= 0:
+            os.close(self.sentinel)
+            self.sentinel = -1
 
 
 class Slot:
     """One worker process and the task it grades."""
 
     def __init__(self, context, index: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...]):
+        """``context``: a ``multiprocessing`` context to start the worker with, or None for a subprocess."""
         self.context, self.index, self.args = context, index, (limits, mode, problems)
         self.task: Task | None = None
         self.deadline = self.started = 0.0
         self._start()
 
     def _start(self) -> None:
-        self.conn, theirs = self.context.Pipe()
-        self.process = self.context.Process(
-            target=_serve, args=(theirs, self.index, *self.args, os.getpid()), name=f"grade-worker-{self.index}",
-            daemon=True,
-        )
-        self.process.start()
-        theirs.close()
+        if self.context is None:
+            import socket
+            from multiprocessing.connection import Connection
+
+            ours, theirs = socket.socketpair()
+            self.conn = Connection(ours.detach())
+            self.process = _Subprocess(theirs.fileno(), (self.index, *self.args, os.getpid()))
+            theirs.close()
+        else:
+            self.conn, theirs = self.context.Pipe()
+            self.process = self.context.Process(
+                target=_serve, args=(theirs, self.index, *self.args, os.getpid()),
+                name=f"grade-worker-{self.index}", daemon=True,
+            )
+            self.process.start()
+            theirs.close()
         self.ready = False
+
+    def wait_ready(self) -> None:
+        """Wait until the worker imported the checks and started its zygote; ``RuntimeError`` if it cannot."""
+        wait(self.waitables())
+        kind, payload = self.poll() or ("crashed", "no answer")
+        if kind != "ready":
+            raise RuntimeError(f"a grading worker could not start: {payload}")
+        self.ready = True
+
+    def outcome(self, task: Task, seconds: float) -> tuple[str, object, float]:
+        """Grade ``task`` within ``seconds``: ``(kind, payload, seconds taken)`` (blocking)."""
+        if not self.ready:
+            self.wait_ready()
+        self.submit(task, seconds)
+        while True:
+            wait(self.waitables(), max(0.0, self.deadline - time.monotonic()))
+            outcome = self.poll()
+            if outcome is not None:
+                self.task = None
+                return (*outcome, time.monotonic() - self.started)
 
     def restart(self) -> None:
         self.stop()
@@ -210,3 +294,17 @@ def stopped_reports(task: Task, status: Status, message: str, seconds: float) ->
                                      grader_version=__version__))
     return reports
 
+
+
+def _main(argv: list[str]) -> None:
+    """A worker started as a subprocess (``python -m grader.batch.pool FD ARGS``)."""
+    import base64
+    import pickle
+    from multiprocessing.connection import Connection
+
+    conn = Connection(int(argv[1]))
+    _serve(conn, *pickle.loads(base64.b64decode(argv[2])))
+
+
+if __name__ == "__main__":
+    _main(sys.argv)
