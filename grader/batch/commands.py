@@ -30,13 +30,16 @@ def cmd_batch(args) -> int:
     try:
         report = run_batch(args.submissions, args.out, problems=args.problems, jobs=args.jobs, force=args.force,
                            limits=limits, student_timeout=args.student_timeout, progress=not args.quiet,
-                           no_sandbox=args.no_sandbox)
+                           no_sandbox=args.no_sandbox, cluster=args.cluster)
     except (SubmissionError, BatchLocked) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except RuntimeError as exc:  # the workers cannot start: a broken installation
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_GRADER
+    except OSError as exc:  # the Dask scheduler cannot be reached
+        print(f"error: the Dask cluster {args.cluster} cannot be reached: {exc}", file=sys.stderr)
+        return EXIT_USAGE
     for name in report.ignored:
         print(f"note: {name} is not a folder, a .zip archive or a .ipynb notebook: ignored", file=sys.stderr)
     print(f"{report.students} students: {report.graded} graded, {report.skipped} unchanged (skipped), "
@@ -116,6 +119,9 @@ def add_batch_parser(sub) -> None:
     p.add_argument("--student-timeout", type=float, default=None,
                    help="seconds for grading one student in all (default: the import time-out plus twice the call "
                         "time-out per check)")
+    p.add_argument("--cluster", default=None, metavar="ADDRESS",
+                   help="grade on a Dask cluster: the scheduler's address (tcp://host:8786) or scheduler file, or "
+                        "local:N for N worker processes on this machine (see the README); instead of --jobs")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress display")
     p.add_argument("--no-sandbox", action="store_true",
                    help="grade even when bubblewrap is not available: students' code runs as plain processes "

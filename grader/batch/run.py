@@ -57,6 +57,23 @@ def _locked(out: Path):
         yield
 
 
+@contextmanager
+def _cluster_client(address: str | None):
+    """A Dask client of the cluster at ``address`` for the batch (None: no cluster)."""
+    if address is None:
+        yield None
+        return
+    from .cluster import open_client
+
+    client, cluster = open_client(address)
+    try:
+        yield client
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
 def _interrupt(signum, frame):
     raise KeyboardInterrupt
 
@@ -82,12 +99,15 @@ def run_batch(
     progress: bool = True,
     export: bool = True,
     no_sandbox: bool = False,
+    cluster: str | None = None,
 ) -> BatchReport:
     """Grade every student of ``submissions`` into the gradebook in ``out``, then write the exports.
 
     Without bubblewrap, students' code runs as plain processes: only with ``no_sandbox`` (recorded in the run and
     in every report), else ``SandboxError``.  One worker is started first (a canary): when it cannot start, the
-    batch stops with ``SandboxError`` before anyone is graded."""
+    batch stops with ``SandboxError`` before anyone is graded.  With ``cluster`` (a Dask scheduler's address, or
+    ``local:N``), the students are graded on that cluster's workers (``grader.batch.cluster``), which must all
+    have the same grader and, unless ``no_sandbox``, bubblewrap."""
     from ..runner import problems as all_problems
 
     start = time.monotonic()
@@ -98,17 +118,24 @@ def run_batch(
     limits = limits or Limits()
     jobs = max(1, jobs or len(os.sched_getaffinity(0)))
     student_timeout = student_timeout or default_student_timeout(limits, numbers)
-    mode = sandbox_mode()
-    if not mode.isolated and not no_sandbox:
+    mode = sandbox_mode() if cluster is None else None
+    if mode is not None and not mode.isolated and not no_sandbox:
         raise SandboxError(f"bubblewrap is not available, so students' code would run without a sandbox: install "
                            f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
                            "and in every report)")
-    with _locked(out), Gradebook.in_folder(out) as book:
+    with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster) as client:
         entries, ignored = discover(submissions, exclude=out)
         versions = {n: grader_version(n) for n in numbers}
-        if entries:
-            canary(limits, mode)
-        sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
+        if client is not None:
+            from .cluster import check_workers
+
+            note, isolated = check_workers(client, numbers, versions, no_sandbox)
+            sandbox = f"Dask cluster {cluster}: {note}" if isolated else f"--no-sandbox: Dask cluster {cluster}: {note}"
+            jobs = len(client.scheduler_info()["workers"])
+        else:
+            if entries:
+                canary(limits, mode)
+            sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
         run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
         report = BatchReport(run_id, len(entries), ignored=ignored)
         tasks = []
@@ -149,7 +176,12 @@ def run_batch(
         previous = signal.signal(signal.SIGTERM, _interrupt) if in_main else None
         state = "interrupted"
         try:
-            if tasks:
+            if tasks and client is not None:
+                from .cluster import run_cluster
+
+                run_cluster(client, tasks, limits=limits, problems=tuple(numbers), student_timeout=student_timeout,
+                            no_sandbox=no_sandbox, ship=not cluster.startswith("local:"), done=done)
+            elif tasks:
                 run_pool(tasks, jobs, limits, mode, tuple(numbers), student_timeout, done)
             state = "finished"
         except KeyboardInterrupt:
