@@ -165,14 +165,64 @@ def test_the_plain_process_tests_run_as_root_with_a_readable_runtime(venv, tmp_p
     xml = tmp_path / "junit.xml"
     done = subprocess.run(
         [str(venv / "bin" / "python"), "-m", "pytest", "-q", "-p", "no:cacheprovider", f"--junitxml={xml}",
-         "tests/test_hostile.py", "tests/test_sandbox.py", "-k", "process or fallback or without_bubblewrap or "
-         "uid or concurrent"],
+         "tests/test_hostile.py", "tests/test_sandbox.py", "tests/test_warm.py", "-k", "process or fallback or "
+         "without_bubblewrap or uid or concurrent"],
         cwd=ROOT, capture_output=True, text=True, timeout=1800)
     assert done.returncode == 0, done.stdout[-5000:]
     cases = ET.parse(xml).getroot().iter("testcase")
     skipped = {case.get("name"): case.find("skipped").get("message", "") for case in cases
                if case.find("skipped") is not None}
-    isolated_only = {f"test_hostile_submission[{n}-process]" for n in hostile_names()
-                     if hostile_expectation(n).get("isolated_only")}
+    isolated_only = {f"test_hostile_submission[{n}-{kind}]" for n in hostile_names() for kind in ("process",
+                     "process-warm") if hostile_expectation(n).get("isolated_only")}
     assert set(skipped) <= isolated_only, skipped
     assert "refusing" not in done.stdout
+
+
+#: grades a leaver and then a spy twice on one warm process (``tests/warm/``) and prints what came out
+SLOT_SCRIPT = """
+import json, sys
+from grader.runner import grade_submission
+from grader.sandbox import Limits, plain_mode, sandbox_mode
+from grader.sandbox.zygote import Zygote, warm_modules
+kind, leaver, spy = sys.argv[1:4]
+mode = sandbox_mode("bwrap") if kind == "bwrap" else plain_mode("test")
+with Zygote(Limits(call_timeout=5.0, import_timeout=10.0), mode, warm_modules([6])) as zygote:
+    zygote.start()
+    reports = [grade_submission(path, [6], seed=3, zygote=zygote)[0] for path in (leaver, spy, spy)]
+print(json.dumps([{"score": r.score, "max": r.auto_max_score, "stdout": r.stdout, "sandbox": r.sandbox,
+                   "isolated": r.isolated} for r in reports]))
+"""
+
+
+@pytest.mark.skipif(os.geteuid() != 0 or not shutil.which("setpriv"), reason="needs root to act as another user")
+@pytest.mark.parametrize("kind", ["bwrap", "process"])
+def test_warm_forks_of_an_unprivileged_user_keep_students_apart(venv, kind):
+    """The warm path of an instructor who is not root: the zygote in bubblewrap's user namespace (the mounts of
+    each fork need its CAP_SYS_ADMIN there, dropped before the student runs), or a plain process under the
+    instructor's uid with Landlock.  The next student sees nothing of the one before."""
+    from .test_warm import assert_isolated, nonce, student
+
+    if kind == "bwrap" and not sandbox_mode().isolated:
+        pytest.skip("bubblewrap is not available here")
+    nobody = 65534
+    base = Path(tempfile.mkdtemp(prefix="grader-install-warm-", dir="/tmp"))
+    try:
+        os.chmod(base, 0o755)
+        marker = nonce()
+        leaver, spy = student("leaver", base / "leaver", marker), student("spy", base / "spy", marker)
+        home = base / "home"
+        home.mkdir()
+        os.chown(home, nobody, nobody)
+        done = subprocess.run(
+            ["setpriv", f"--reuid={nobody}", f"--regid={nobody}", "--clear-groups", "--",
+             str(venv / "bin" / "python"), "-c", SLOT_SCRIPT, kind, str(leaver), str(spy)],
+            cwd=home, env={"PATH": "/usr/bin:/bin", "HOME": str(home), "LANG": "C.UTF-8"}, capture_output=True,
+            text=True, timeout=600)
+        assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+        reports = json.loads(done.stdout.splitlines()[-1])
+    finally:
+        shutil.rmtree(base, ignore_errors=True)
+    assert [r["isolated"] for r in reports] == [kind == "bwrap"] * 3
+    for report in reports[1:]:
+        assert report["score"] == report["max"] > 0, report
+    assert_isolated(*[r["stdout"] for r in reports], isolated=kind == "bwrap", root=False)
