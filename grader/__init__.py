@@ -1,12 +1,24 @@
 """The autograder of the multibody-dynamics course.
 
 ``grade_problem(problem, submission)`` grades one problem and returns a ``ProblemReport``; the ``grade``
-command (``grader.cli``) and the batch grader are thin layers over it.
+command (``grader.cli``) and the batch grader are thin layers over it.  The names below are imported when first
+used, so that ``grade`` starts without importing the grading machinery (numpy, the checks) it does not need.
 """
 
 __version__ = "0.1.0"
 
-from .results import CheckResult, ProblemReport, Status  # noqa: E402
-from .runner import grade_problem, grade_submission, problems  # noqa: E402
-
 __all__ = ["__version__", "grade_problem", "grade_submission", "problems", "ProblemReport", "CheckResult", "Status"]
+
+_WHERE = {"grade_problem": "runner", "grade_submission": "runner", "problems": "runner",
+          "ProblemReport": "results", "CheckResult": "results", "Status": "results"}
+
+
+def __getattr__(name: str):
+    module = _WHERE.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    globals()[name] = value
+    return value

@@ -1,0 +1,34 @@
+"""``grade list`` reads the problems' metadata from a cache keyed by the check sources: it imports no check module
+(nor numpy) while the checks are unchanged, and lists what importing them lists."""
+
+import json
+import os
+import subprocess
+import sys
+
+from grader.runner import problems
+
+from .submissions import ROOT
+
+PROBE = ("import sys; from grader.cli import main; main(['list']); "
+         "print('IMPORTED', sorted(m for m in sys.modules if m.startswith('checks.') or m == 'numpy'))")
+
+
+def list_in_subprocess(cache) -> tuple[str, list]:
+    env = {**os.environ, "GRADER_CACHE": str(cache)}
+    done = subprocess.run([sys.executable, "-c", PROBE], cwd=ROOT, env=env, capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    listing, _, imported = done.stdout.rpartition("IMPORTED ")
+    return listing, json.loads(imported.replace("'", '"'))
+
+
+def test_grade_list_imports_no_check_module_once_cached(tmp_path):
+    first, imported_first = list_in_subprocess(tmp_path)
+    second, imported_second = list_in_subprocess(tmp_path)
+    assert first == second
+    assert imported_first and imported_second == []  # computed once, then read from the cache
+    infos = problems()
+    assert f"{len(infos)} problems have checks; {sum(p.points for p in infos):g} points" in second
+    for info in infos:
+        assert f"{info.title}" in second
