@@ -200,7 +200,7 @@ def test_warm_forks_of_an_unprivileged_user_keep_students_apart(venv, kind):
     """The warm path of an instructor who is not root: the zygote in bubblewrap's user namespace (the mounts of
     each fork need its CAP_SYS_ADMIN there, dropped before the student runs), or a plain process under the
     instructor's uid with Landlock.  The next student sees nothing of the one before."""
-    from .test_warm import assert_isolated, nonce, student
+    from .test_warm import assert_isolated, assert_nothing_left, nonce, student
 
     if kind == "bwrap" and not sandbox_mode().isolated:
         pytest.skip("bubblewrap is not available here")
@@ -226,3 +226,4 @@ def test_warm_forks_of_an_unprivileged_user_keep_students_apart(venv, kind):
     for report in reports[1:]:
         assert report["score"] == report["max"] > 0, report
     assert_isolated(*[r["stdout"] for r in reports], isolated=kind == "bwrap", root=False)
+    assert_nothing_left(marker)

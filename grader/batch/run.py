@@ -39,6 +39,8 @@ class BatchReport:
     ignored: list[str] = field(default_factory=list)
     interrupted: bool = False
     seconds: float = 0.0
+    student_exports: float = 0.0  # seconds spent writing students' files as they were recorded
+    final_exports: float = 0.0  # seconds spent writing the class's files at the end
 
     @property
     def per_minute(self) -> float:
@@ -168,7 +170,9 @@ def run_batch(
             book.record(name, task.entry.content_hash, versions, run_id, reports, outcome, replace_existing=force)
             report.graded += 1
             if export:  # the student's own files now, while the workers grade the next students
+                began = time.monotonic()
                 export_student(out, book, name)
+                report.student_exports += time.monotonic() - began
             score = sum(r.score for r in reports)
             bar.advance(name, f"{score:g}/{sum(r.max_score for r in reports):g} ({seconds:.1f} s)")
 
@@ -191,8 +195,10 @@ def run_batch(
                 signal.signal(signal.SIGTERM, previous)
             bar.close()
             book.finish_run(run_id, state, report.skipped)
-        report.seconds = time.monotonic() - start
         if export and not report.interrupted:
+            began = time.monotonic()
             export_results(out, book, students=None)
+            report.final_exports = time.monotonic() - began
+        report.seconds = time.monotonic() - start
     return report
 

@@ -77,6 +77,7 @@ class Child:
         self._next_id = 0
         self._ready = False
         self._pending_import = False
+        self._import_unsent = False
         self._import_failure: Exception | None = None
         self._output = tempfile.TemporaryFile()
         self._errors = tempfile.TemporaryFile()
@@ -149,7 +150,14 @@ class Child:
     def _send_import(self) -> None:
         self._next_id += 1
         self._import_id = self._next_id
-        self._send({"op": "import", "id": self._import_id}, self.limits.setup_timeout, "import")
+        deadline = time.monotonic() + self.limits.setup_timeout
+        try:
+            protocol.send_before(self._send_fd, {"op": "import", "id": self._import_id}, deadline)
+        except protocol.Deadline:
+            self._kill()
+            raise StudentTimeout(self.limits.setup_timeout, "import") from None
+        except OSError:  # the worker ended before it read a word (a forked one may end that fast): its start-up
+            self._import_unsent = True  # message says why, read by ``_await_ready``, a fault of the set-up
         self._pending_import = True
 
     def _exit_code(self) -> int | None:
@@ -194,7 +202,7 @@ class Child:
     def _kill(self, final: bool = False) -> None:
         """Kill the worker and every process of its session (and, under its own uid, every process of that uid),
         even when it has already ended.  ``final``: no other worker follows (``close`` sweeps once, last)."""
-        self._pending_import = False
+        self._pending_import = self._import_unsent = False
         self._ready = False
         proc, self._proc = self._proc, None
         if proc is None:
@@ -411,6 +419,10 @@ class Child:
         if not self._pending_import:
             return
         self._await_ready()
+        if self._import_unsent:  # it said ready after all: ask again
+            self._import_unsent = False
+            self._pending_import = False
+            self._send_import()
         try:
             self._pending_import = False
             self._request(None, self.limits.import_timeout, phase="import")

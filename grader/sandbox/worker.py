@@ -361,8 +361,7 @@ SLOT = "/slot"
 SWEEP_SECONDS = 10.0
 _CLONE_NEWNS, _CLONE_NEWIPC = 0x00020000, 0x08000000
 _MS_RDONLY, _MS_NOSUID, _MS_NODEV, _MS_REMOUNT, _MS_BIND, _MS_REC, _MS_PRIVATE = 1, 2, 4, 32, 4096, 16384, 1 << 18
-_MNT_DETACH = 2
-_PR_SET_DUMPABLE, _PR_CAP_AMBIENT, _PR_CAP_AMBIENT_CLEAR_ALL = 4, 47, 4
+_PR_SET_DUMPABLE, _PR_CAP_AMBIENT, _PR_CAP_AMBIENT_CLEAR_ALL, _PR_SET_CHILD_SUBREAPER = 4, 47, 4, 36
 
 
 def _check(result: int, what: str) -> None:
@@ -373,27 +372,71 @@ def _check(result: int, what: str) -> None:
         raise OSError(errno, f"{what}: {os.strerror(errno)}")
 
 
-def _fresh_tmpfs(libc, path: str) -> None:
-    """An empty tmpfs on ``path`` with the owner and mode the sandbox gave ``path``."""
-    if not os.path.isdir(path):
+def _mount_points() -> set[str]:
+    points = set()
+    with open("/proc/self/mountinfo", encoding="utf-8", errors="surrogateescape") as handle:
+        for line in handle:
+            fields = line.split()
+            if len(fields) > 4:
+                points.add(fields[4].replace("\\040", " ").replace("\\011", "\t").replace("\\012", "\n"))
+    return points
+
+
+def _wipe(root: str) -> None:
+    """Remove everything in ``root`` but the mount points below it and the folders that lead to them (a Python
+    runtime under /tmp is bound there by bubblewrap)."""
+    import shutil
+    import stat
+
+    points = {p for p in _mount_points() if p.startswith(root.rstrip("/") + "/")}
+    keep = set(points)
+    for point in points:
+        parent = os.path.dirname(point)
+        while parent.startswith(root.rstrip("/") + "/"):
+            keep.add(parent)
+            parent = os.path.dirname(parent)
+
+    def writable(function, path, _):
+        try:  # a folder its owner closed (chmod 000): open it again, then retry
+            os.chmod(os.path.dirname(path), 0o700)
+            os.chmod(path, 0o700)
+            function(path)
+        except OSError:
+            pass
+
+    try:
+        entries = list(os.scandir(root))
+    except OSError:
         return
-    info = os.stat(path)
-    options = f"mode={info.st_mode & 0o7777:o},uid={info.st_uid},gid={info.st_gid}".encode()
-    _check(libc.mount(b"tmpfs", path.encode(), b"tmpfs", _MS_NOSUID | _MS_NODEV, options), f"tmpfs on {path}")
+    for entry in entries:
+        if entry.path in points:
+            continue
+        if entry.path in keep:
+            _wipe(entry.path)
+            continue
+        try:
+            if stat.S_ISDIR(entry.stat(follow_symlinks=False).st_mode):
+                shutil.rmtree(entry.path, onerror=writable)
+            else:
+                os.unlink(entry.path)
+        except OSError:
+            pass
 
 
 def _own_mounts(libc, submission: str) -> None:
     """In a mount and an IPC namespace of this process's own: the student's package (inside the slot's staging
-    folder) read-only at /submission, the staging folder itself gone, empty /tmp and /dev/shm, no IPC object of
-    anyone else."""
+    folder) read-only at /submission, the staging folder itself covered by an empty read-only tmpfs, no IPC
+    object of anyone else.  (/tmp and /dev/shm are the slot's, emptied by the zygote after every student: a fresh
+    tmpfs over /tmp would hide a Python runtime that bubblewrap bound below it.)"""
     _check(libc.unshare(_CLONE_NEWNS | _CLONE_NEWIPC), "unshare")
     _check(libc.mount(b"none", b"/", None, _MS_REC | _MS_PRIVATE, None), "private mounts")
     _check(libc.mount(submission.encode(), b"/submission", None, _MS_BIND | _MS_REC, None), "bind the submission")
     _check(libc.mount(b"none", b"/submission", None, _MS_REMOUNT | _MS_BIND | _MS_RDONLY | _MS_NOSUID | _MS_NODEV,
                       None), "read-only submission")
-    _check(libc.umount2(SLOT.encode(), _MNT_DETACH), "hide the staging folder")
-    for path in ("/tmp", "/dev/shm"):
-        _fresh_tmpfs(libc, path)
+    # Covered rather than unmounted: in the user namespace of an unprivileged zygote, the mounts that bubblewrap
+    # made are locked together and cannot be taken apart, but may be covered (and nothing can uncover them).
+    _check(libc.mount(b"tmpfs", SLOT.encode(), b"tmpfs", _MS_RDONLY | _MS_NOSUID | _MS_NODEV, b"mode=0,size=4k"),
+           "hide the staging folder")
 
 
 def _drop_capabilities(libc) -> None:
@@ -532,49 +575,75 @@ class _Zygote:
         self.children[pid] = (message["id"], pidfd)
         self.send({"op": "forked", "id": message["id"], "pid": pid}, [pidfd])
 
-    def reap(self, pid: int, block: bool = False) -> bool:
-        try:
-            done, status = os.waitpid(pid, 0 if block else os.WNOHANG)
-            code = os.waitstatus_to_exitcode(status) if done else None
-        except ChildProcessError:
-            done, code = pid, -9
-        if done == 0:
-            return False
-        fork_id, pidfd = self.children.pop(pid)
-        os.close(pidfd)
-        self.send({"op": "exited", "id": fork_id, "code": code})
-        return True
+    def reap(self) -> None:
+        """Collect every ended child: the forked workers (their exit codes go to the grader) and, as the subreaper
+        of its plain-process workers, whatever they left that ended."""
+        while True:
+            try:
+                pid, status = os.waitpid(-1, os.WNOHANG)
+            except ChildProcessError:
+                return
+            if pid == 0:
+                return
+            if pid in self.children:
+                fork_id, pidfd = self.children.pop(pid)
+                os.close(pidfd)
+                self.send({"op": "exited", "id": fork_id, "code": os.waitstatus_to_exitcode(status)})
+
+    def _descendants(self) -> list[int]:
+        """The live processes below this one (all of them: as subreaper, this process inherits every orphan)."""
+        parents: dict[int, list[int]] = {}
+        for name in os.listdir("/proc"):
+            if not name.isdigit():
+                continue
+            try:
+                with open(f"/proc/{name}/stat", encoding="ascii", errors="replace") as handle:
+                    fields = handle.read().rsplit(")", 1)[1].split()
+            except (OSError, IndexError):
+                continue
+            if fields[0] not in ("Z", "X"):
+                parents.setdefault(int(fields[1]), []).append(int(name))
+        found, todo = [], [os.getpid()]
+        while todo:
+            children = parents.get(todo.pop(), [])
+            found += children
+            todo += children
+        return found
 
     def sweep(self) -> int:
         """Kill what the students left: in a pid namespace of the slot's own (bubblewrap), every process but this
-        one and the namespace's init; otherwise the process group of each forked worker.  Returns how many
-        processes were left when it gave up (0: all gone)."""
+        one and the namespace's init; otherwise every process below this one (orphans come back to it: it is
+        their subreaper).  Returns how many processes were left when it gave up (0: all gone)."""
         import signal
         import time
 
         keep = {1, os.getpid()}
         deadline = time.monotonic() + SWEEP_SECONDS
+        pause = 0.001
         while True:
-            if self.config.get("pid_namespace"):
-                left = _others(keep)
-                if left:
-                    try:
-                        os.kill(-1, signal.SIGKILL)  # every process of this namespace but this one and its init
-                    except ProcessLookupError:
-                        pass
+            left = _others(keep) if self.config.get("pid_namespace") else self._descendants()
+            if left and self.config.get("pid_namespace"):
+                try:
+                    os.kill(-1, signal.SIGKILL)  # every process of this namespace but this one and its init
+                except ProcessLookupError:
+                    pass
             else:
-                left = list(self.children)
                 for pid in left:
-                    for kill in (os.killpg, os.kill):
-                        try:
-                            kill(pid, signal.SIGKILL)
-                        except (ProcessLookupError, PermissionError):
-                            pass
-            for pid in list(self.children):
-                self.reap(pid, block=True)
+                    try:
+                        os.kill(pid, signal.SIGKILL)
+                    except (ProcessLookupError, PermissionError):
+                        pass
+            self.reap()
             if not left or time.monotonic() > deadline:
+                if self.children:  # a forked worker that is gone without a word cannot stay pending
+                    time.sleep(0.01)
+                    self.reap()
+                if not left and self.config.get("pid_namespace"):  # the slot's own /tmp and /dev/shm
+                    for folder in ("/tmp", "/dev/shm"):
+                        _wipe(folder)
                 return len(left)
-            time.sleep(0.005)
+            time.sleep(pause)
+            pause = min(0.05, pause * 2)
 
     def serve(self) -> int:
         import select
@@ -583,9 +652,8 @@ class _Zygote:
         while True:
             pidfds = {pidfd: pid for pid, (_, pidfd) in self.children.items()}
             ready, _, _ = select.select([self.control, *pidfds], [], [])
-            for fd in ready:
-                if fd in pidfds:
-                    self.reap(pidfds[fd])
+            if any(fd in pidfds for fd in ready):
+                self.reap()
             if self.control not in ready:
                 continue
             data, fds, _, _ = socket.recv_fds(self.control, 1 << 16, 8)
@@ -620,6 +688,8 @@ def zygote(control_fd: int, slot: str, config: dict) -> int:
         libc = _libc()
         _die_with_parent(libc)
         libc.prctl(_PR_SET_DUMPABLE, 0, 0, 0, 0)  # no process of the same uid may read or write its memory
+        if not config.get("pid_namespace"):  # what its workers leave comes back to it when orphaned
+            libc.prctl(_PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
         _import_dependencies(config.get("require", []))
         missing = _preload(config.get("preload", []))
         threads = len(os.listdir("/proc/self/task"))

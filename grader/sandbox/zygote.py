@@ -7,7 +7,8 @@ runs (``worker._forked``):
 
 * files: under bubblewrap the zygote is started once per slot with the slot's *staging folder* at ``/slot`` (the
   grader materializes each student's package there, one student at a time).  Each forked worker enters a mount
-  and an IPC namespace of its own, binds its own package read-only at ``/submission``, detaches ``/slot``, and
+  and an IPC namespace of its own, binds its own package read-only at ``/submission``, covers ``/slot`` with an
+  empty read-only tmpfs (bubblewrap's mounts cannot be detached in an unprivileged user namespace), and
   mounts empty ``/tmp`` and ``/dev/shm``: it sees exactly what a fresh worker sees.  (The submission is not
   handed over as an open directory: a directory descriptor of the host's tree lets ``..`` climb to the host's
   root from inside the sandbox, and a mount from a descriptor of another mount namespace is refused by the

@@ -13,6 +13,14 @@ with open(os.path.join(os.path.dirname(__file__), "target.txt")) as _handle:
     _nonce = json.load(_handle)["nonce"]
 
 
+def _listing(folder: str, everything: bool = False):
+    """The earlier student's files in ``folder`` (all files), or why it cannot be listed (Landlock hides it)."""
+    try:
+        return sorted(p for p in os.listdir(folder) if everything or _nonce in p)
+    except OSError as exc:
+        return type(exc).__name__
+
+
 def _daemons() -> list:
     found = []
     for pid in os.listdir("/proc"):
@@ -27,8 +35,6 @@ def _daemons() -> list:
 
 seen = {
     "uid": os.getuid(),
-    "mounted_on": {where: sum(1 for line in open("/proc/self/mountinfo") if line.split()[4] == where)
-                   for where in ("/tmp", "/dev/shm")},
     "math_patched": math.sqrt(4.0) != 2.0,
     "numpy_patched": bool(np.allclose(0.0, 1.0)) or float(np.linalg.norm([3.0, 4.0])) != 5.0,
     "leftover_module": "leftover_module" in sys.modules,
@@ -37,12 +43,11 @@ seen = {
     "tasks": len(os.listdir("/proc/self/task")),
     "rng_is_seeded_12345": bool(np.all(np.random.get_state()[1][:8] == np.random.RandomState(12345).get_state()[1][:8])),
     "draw": float(np.random.random()),
-    "files": sorted(p for folder in ("/tmp", "/dev/shm", "/var/tmp") if os.path.isdir(folder)
-                    for p in os.listdir(folder) if _nonce in p),
+    "files": {folder: _listing(folder) for folder in ("/tmp", "/dev/shm", "/var/tmp") if os.path.isdir(folder)},
     "daemons": _daemons(),
     "shm": _sysv.exists(),
     "package": sorted(os.listdir(os.path.dirname(os.path.abspath(__file__)))),
-    "slot": os.listdir("/slot") if os.path.isdir("/slot") else None,
+    "slot": _listing("/slot", everything=True) if os.path.isdir("/slot") else [],
     "fds": sorted(int(fd) for fd in os.listdir("/proc/self/fd")),
 }
 print("SPY " + json.dumps(seen), flush=True)
