@@ -128,3 +128,13 @@ def test_a_killed_worker_is_forked_again_and_the_student_graded_to_the_end(zygot
     assert by_id["p06.cardan_rotation"].status is Status.ERROR
     assert "exit code 3" in by_id["p06.cardan_rotation"].message
     assert {by_id[c].status for c in ("p06.elementary_values", "p06.frames", "p06.vectors")} == {Status.PASSED}
+
+
+def test_one_submission_is_graded_by_one_forked_worker(zygote, tmp_path):
+    """Every problem of a submission in the same worker, as a fresh worker grades them: one fork, not one per
+    problem."""
+    submission = copy_reference(tmp_path / "pkg")
+    before = zygote.forks
+    reports = grade_submission(submission, [6, 8, 9], seed=3, limits=LIMITS, zygote=zygote)
+    assert zygote.forks == before + 1
+    assert [r.score for r in reports] == [r.auto_max_score for r in reports]

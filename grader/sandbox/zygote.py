@@ -131,7 +131,8 @@ class Zygote:
         self.staging = Path(tempfile.mkdtemp(prefix="grader-slot-"))
         os.chmod(self.staging, 0o755)
         self.info: dict = {}
-        self.starts = 0
+        self.starts = 0  # warm processes started (1 unless one died)
+        self.forks = 0  # workers forked
         self._proc: subprocess.Popen | None = None
         self._sock: socket.socket | None = None
         self._errors = tempfile.TemporaryFile()
@@ -260,6 +261,7 @@ class Zygote:
             self.start()
         self._next_id += 1
         fork_id = self._next_id
+        self.forks += 1
         self._send({"op": "fork", "id": fork_id, "config": fork.config},
                    [request_fd, reply_fd, stdout.fileno(), stderr.fileno()])
         message, fds = self._receive(time.monotonic() + self.limits.setup_timeout, ("forked",), fork_id)
