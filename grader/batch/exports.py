@@ -20,7 +20,7 @@ from pathlib import Path
 from ..results import Status
 from .gradebook import Gradebook, Graded, now, spreadsheet_cell
 
-__all__ = ["DIAGNOSES", "TROUBLE", "export_results", "export_student", "class_summary"]
+__all__ = ["DIAGNOSES", "TROUBLE", "export_results", "export_student", "StudentExporter", "class_summary"]
 
 #: how the class summary words a diagnosis: "31% of students transposed a rotation matrix ..."
 DIAGNOSES = {
@@ -76,6 +76,71 @@ def export_student(out: str | Path, book: Gradebook, name: str) -> None:
     items = book.current(student=name)
     if items:
         _student_files(Path(out), name, items)
+
+
+class StudentExporter:
+    """Writes each recorded student's files in a process of its own, while the batch goes on: the batch's own
+    process stays free to hand out students and record results (and, on a Dask client, to the scheduler's
+    threads).  Students whose files it could not write are written by ``export_results(..., students=None)``."""
+
+    def __init__(self, out: str | Path):
+        import multiprocessing
+
+        context = multiprocessing.get_context("spawn")
+        self.conn, theirs = context.Pipe()
+        self.process = context.Process(target=_export_loop, args=(theirs, str(out), os.getpid()), daemon=True,
+                                       name="grade-exporter")
+        self.process.start()
+        theirs.close()
+        self.out, self.failed = Path(out), False
+
+    def submit(self, name: str, book: Gradebook) -> None:
+        if not self.failed:
+            try:
+                self.conn.send(name)
+                return
+            except OSError:  # the exporter died: this process writes the files from now on
+                self.failed = True
+        export_student(self.out, book, name)
+
+    def close(self, finish: bool = True) -> float:
+        """Wait until every submitted student is written (``finish``) or stop now; the exporter's busy seconds."""
+        seconds = 0.0
+        try:
+            if finish and not self.failed:
+                self.conn.send(None)
+                seconds = self.conn.recv()
+        except (OSError, EOFError):
+            pass
+        finally:
+            if self.process.is_alive():
+                self.process.terminate()
+            self.process.join(5)
+            self.conn.close()
+        return seconds
+
+
+def _export_loop(conn, out: str, parent: int) -> None:
+    import signal
+    import time
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the batch's to handle
+    from .pool import _die_with_parent
+
+    _die_with_parent(parent)
+    busy = 0.0
+    with Gradebook.in_folder(out) as book:
+        while True:
+            try:
+                name = conn.recv()
+            except (EOFError, OSError):
+                return
+            if name is None:
+                conn.send(busy)
+                return
+            began = time.monotonic()
+            export_student(out, book, name)
+            busy += time.monotonic() - began
 
 
 def _stale(out: Path, name: str, items: list[Graded]) -> bool:

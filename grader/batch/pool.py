@@ -268,8 +268,15 @@ def run_pool(tasks: list[Task], jobs: int, limits: Limits, mode: SandboxMode, pr
                 task, started = slot.task, slot.started
                 outcome = slot.poll()
                 if outcome is not None:
+                    seconds = time.monotonic() - started
                     slot.task = None
-                    done(task, *outcome, time.monotonic() - started)
+                    if slot.ready and pending:  # the next student first: it is graded while this one is recorded
+                        try:
+                            slot.submit(pending[0], student_timeout)
+                            pending.popleft()
+                        except OSError:
+                            slot.restart()
+                    done(task, *outcome, seconds)
     finally:
         for slot in slots:
             slot.stop()

@@ -16,7 +16,7 @@ from ..errors import SandboxError, SubmissionError
 from ..results import Status
 from ..sandbox import BWRAP_FIX, Limits, canary, sandbox_mode
 from .discover import discover
-from .exports import export_results, export_student
+from .exports import StudentExporter, export_results
 from .gradebook import Gradebook, grader_version
 from .pool import Task, run_pool, stopped_reports
 from .progress import Progress
@@ -39,7 +39,7 @@ class BatchReport:
     ignored: list[str] = field(default_factory=list)
     interrupted: bool = False
     seconds: float = 0.0
-    student_exports: float = 0.0  # seconds spent writing students' files as they were recorded
+    student_exports: float = 0.0  # seconds spent writing students' files as they were recorded (its own process)
     final_exports: float = 0.0  # seconds spent writing the class's files at the end
 
     @property
@@ -169,13 +169,12 @@ def run_batch(
                 return
             book.record(name, task.entry.content_hash, versions, run_id, reports, outcome, replace_existing=force)
             report.graded += 1
-            if export:  # the student's own files now, while the workers grade the next students
-                began = time.monotonic()
-                export_student(out, book, name)
-                report.student_exports += time.monotonic() - began
+            if exporter is not None:  # the student's own files now, while the workers grade the next students
+                exporter.submit(name, book)
             score = sum(r.score for r in reports)
             bar.advance(name, f"{score:g}/{sum(r.max_score for r in reports):g} ({seconds:.1f} s)")
 
+        exporter = StudentExporter(out) if export and tasks else None
         in_main = threading.current_thread() is threading.main_thread()
         previous = signal.signal(signal.SIGTERM, _interrupt) if in_main else None
         state = "interrupted"
@@ -194,6 +193,8 @@ def run_batch(
             if in_main:
                 signal.signal(signal.SIGTERM, previous)
             bar.close()
+            if exporter is not None:
+                report.student_exports = exporter.close(finish=state == "finished")
             book.finish_run(run_id, state, report.skipped)
         if export and not report.interrupted:
             began = time.monotonic()
