@@ -10,12 +10,15 @@ from grader.checking import (
     STAGE_SHAPE,
     STAGE_STRUCTURE,
     STAGE_VALUES,
+    STRUCTURE,
     Mistake,
     as_array,
     assert_close,
     assert_rotation,
     check,
+    close,
     fail,
+    format_array,
 )
 
 TITLE = "Euler angles, Tait-Bryan/Cardan convention"
@@ -76,6 +79,15 @@ def _cardan_mistakes(ctx, args, expected):
     ]
 
 
+def assert_turns(A, name):
+    """Fail when the rotation ``A`` (by a non-zero angle) is the identity: it does not turn anything."""
+    if close(A, np.eye(3), STRUCTURE):
+        fail(f"{name} is the identity matrix: it does not rotate, although the angle is not zero.\n"
+             f"got:\n{format_array(A)}",
+             "A rotation by a non-zero angle changes the coordinates of every vector off its axis: compute the "
+             "matrix from the angle (cos and sin of it) instead of returning the identity.", "identity")
+
+
 # ------------------------------------------------------------------------------------ elementary rotations
 
 
@@ -90,7 +102,8 @@ def check_elementary_shape(ctx):
 def check_elementary_rotation(ctx):
     for axis in AXES:
         for angle in (0.3, -2.0):
-            assert_rotation(ctx.student("problem_06.elementary", axis, angle), f"R{axis}({angle})")
+            A = assert_rotation(ctx.student("problem_06.elementary", axis, angle), f"R{axis}({angle})")
+            assert_turns(A, f"R{axis}({angle})")
 
 
 @check(2, title="R1, R2, R3 equal the elementary rotations on random angles", stage=STAGE_RANDOM,
@@ -112,7 +125,8 @@ def check_elementary_values(ctx):
 
 @check(1, title="cardan(alpha, beta, gamma) is a proper rotation", stage=STAGE_STRUCTURE, group="cardan")
 def check_cardan_rotation(ctx):
-    assert_rotation(ctx.student("problem_06.cardan", 0.4, -0.3, 1.1), "cardan(0.4, -0.3, 1.1)")
+    A = assert_rotation(ctx.student("problem_06.cardan", 0.4, -0.3, 1.1), "cardan(0.4, -0.3, 1.1)")
+    assert_turns(A, "cardan(0.4, -0.3, 1.1)")
 
 
 @check(2, title="cardan(alpha, beta, gamma) = R3(gamma) R2(beta) R1(alpha) on random angles",

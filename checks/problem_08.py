@@ -6,6 +6,7 @@ from hypothesis import strategies as st
 from checks._rigid import ROTATIONS, expm_skew, skew
 from grader.checking import (
     EXACT,
+    STRUCTURE,
     STAGE_RANDOM,
     STAGE_STRUCTURE,
     STAGE_VALUES,
@@ -15,6 +16,7 @@ from grader.checking import (
     assert_close,
     assert_rotation,
     check,
+    close,
     fail,
     format_array,
 )
@@ -84,6 +86,16 @@ def check_exponential_orthonormal(ctx):
         fail(f"exponential_step(R3(90°), w, 0.5) is not orthonormal: it is the Euler step.\n"
              f"got:\n{format_array(got)}", EULER_HINT, "euler_not_exponential")
     assert_rotation(got, "exponential_step(R3(90°), w, 0.5)")
+    assert_moves(got, A0, "exponential_step(R3(90°), w, 0.5)")
+
+
+def assert_moves(got, start, name):
+    """Fail when one step with a non-zero angular velocity left ``A_IC`` where it was."""
+    if close(got, start, STRUCTURE):
+        fail(f"{name} returned A_IC unchanged: the body did not turn, although omega is not zero.\n"
+             f"got:\n{format_array(got)}",
+             "One step turns A_IC by the angle dt * |I_omega| about I_omega: A_IC(t + dt) = expm(dt * "
+             "skew(I_omega)) @ A_IC.", "no_motion")
 
 
 @check(2, title="exponential_step equals expm(dt * skew(I_omega)) @ A_IC on random inputs", stage=STAGE_RANDOM,
@@ -125,6 +137,11 @@ def check_part_b(ctx):
 def check_part_c(ctx):
     start = ctx.reference("problem_06.elementary", 3, np.pi / 2)
     euler = ctx.reference("problem_08.part", "a")
+    w, dt = np.sqrt(1 / 3) * np.ones(3), 2 * np.pi / 100
+    # a step that does not move would also "return" to the start: (c) counts only for a step that turns
+    one = as_array(ctx.student("problem_08.step", "exp", start, w, dt), "exponential_step(R3(90°), w, 2 pi / 100)",
+                   (3, 3))
+    assert_moves(one, start, "exponential_step(R3(90°), w, 2 pi / 100)")
     got = as_array(ctx.student("problem_08.part", "c"), "A_IC after (c)", (3, 3))
     assert_close(got, start, "A_IC after (c)", Tol("exact rotation", 1e-9), [
         Mistake("lost_orthonormality", euler, EULER_HINT),

@@ -14,6 +14,7 @@ from grader.checking import (
     STAGE_SHAPE,
     STAGE_STRUCTURE,
     STAGE_VALUES,
+    STRUCTURE,
     CheckFailure,
     Mistake,
     as_array,
@@ -23,6 +24,7 @@ from grader.checking import (
     close,
     fail,
     figure,
+    format_array,
 )
 
 from ._rigid import (
@@ -85,6 +87,11 @@ def check_integration_rotation(ctx):
         if close(A, simulate(GENERIC, DT, STEPS, "explicit_euler")["A_IB"], SHEET):
             fail(exc.message, KINEMATIC_MISTAKES["explicit_euler"], "explicit_euler")
         raise
+    if close(A, GENERIC["A_IB"], STRUCTURE):
+        fail(f"A_IB after 100 steps is still its initial value: the body did not turn, although B_omega_B = "
+             f"{compact(GENERIC['B_omega_B'])}.\ngot:\n{format_array(A)}",
+             "integration_step must turn A_IB every step: A_IB = expm(dt * I_Om) @ A_IB with I_Om = "
+             "skew(A_IB @ B_omega_B).", "no_motion")
 
 
 @check(3, title="the sheet's cases 1-3: A_IB and B_r_IB after 100 steps of 0.01 s", stage=STAGE_VALUES,

@@ -6,9 +6,10 @@ accepted); the motion itself is compared with the reference.
 
 import numpy as np
 
-from checks._rigid import SIMULATION, STATE, assert_traces, sheet_state, trace_array
+from checks._rigid import SIMULATION, STATE, assert_traces, compact, sheet_state, trace_array
 from checks.problem_13 import assert_screw
-from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, fail
+from checks.problem_12 import GENERIC
+from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, close, fail
 
 TITLE = "Visualizing Twists"
 
@@ -22,6 +23,12 @@ def _start(ctx):
 @check(1, title="screw_axis() without rotation (omega = 0) returns zero vectors, as its docstring says",
        stage=STAGE_STRUCTURE, group="at_rest")
 def check_screw_at_rest(ctx):
+    moving = ctx.student("problem_13.screw", GENERIC)
+    if close(moving, np.zeros((2, 3)), EXACT):
+        fail(f"screw_axis() returns zero vectors for a rotating body too (B_omega_B = {compact(GENERIC['B_omega_B'])}): "
+             "the zero answer is meant for omega = 0 only.",
+             "With rotation, T is on the screw axis: B_r_BT = (omega x v_B) / |omega|^2; return zeros only when "
+             "omega @ omega == 0.", "always_zero")
     state = {**_start(ctx), "B_v_B": np.array([1.0, -2.0, 0.5]), "B_omega_B": np.zeros(3)}
     try:
         assert_close(ctx.student("problem_13.screw", state), np.zeros((2, 3)), "screw_axis() with omega = 0",

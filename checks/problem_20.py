@@ -37,20 +37,38 @@ def _option(ctx, key):
     return given if isinstance(given, int) and not isinstance(given, bool) else repr(given)
 
 
+#: judged with every set of matrices, with the opposite verdict expected: a constant answer cannot pass a check
+CONTROLS = {
+    True: ("a matrix with a negative principal moment, diag(-1, 2, 2)", np.diag([-1.0, 2.0, 2.0])),
+    False: ("a valid inertia matrix, diag(2, 2.5, 3)", np.diag([2.0, 2.5, 3.0])),
+}
+
+
 def _judge(ctx, matrices, expected_ok, property_text, mistake=None):
     """Fail at the first matrix ``(label, I)`` that the student's ``is_inertia_matrix`` misjudges; ``mistake(label)``
-    gives the ``(hint, diagnosis)`` for it."""
-    results = ctx.student("problem_20.is_inertia", [I for _, I in matrices])
-    if not isinstance(results, list) or len(results) != len(matrices) or not all(
+    gives the ``(hint, diagnosis)`` for it.  A control matrix with the opposite verdict is judged too, so that an
+    answer that does not depend on the matrix earns nothing."""
+    control_label, control = CONTROLS[expected_ok]
+    results = ctx.student("problem_20.is_inertia", [I for _, I in matrices] + [control])
+    if not isinstance(results, list) or len(results) != len(matrices) + 1 or not all(
             isinstance(r, list) and len(r) == 2 for r in results):
         fail(f"is_inertia_matrix must return (ok, reason) for each matrix, got {str(results)[:200]}")
-    for (label, I), (ok, reason) in zip(matrices, results):
-        if ok is not expected_ok:
-            moments = np.linalg.eigvals(I).real if np.abs(I - I.T).max() > 0 else np.linalg.eigvalsh(I)
-            hint, diagnosis = mistake(label) if mistake else ("", "")
-            fail(f"is_inertia_matrix(I) returned {ok} (reason: {reason!r}) for {label}, which {property_text}.\n"
-                 f"I = {compact(I)}\neigenvalues: {compact(np.sort(moments))}\nexpected: {expected_ok}",
-                 hint, diagnosis)
+    judged = [(label, I, expected_ok, property_text, mistake) for label, I in matrices]
+    judged.append((control_label, control, not expected_ok,
+                   "is a valid inertia matrix" if not expected_ok else "is not an inertia matrix", None))
+    for (label, I, expected, text, diagnose), (ok, reason) in zip(judged, results):
+        if ok is expected:
+            continue
+        moments = np.linalg.eigvals(I).real if np.abs(I - I.T).max() > 0 else np.linalg.eigvalsh(I)
+        message = (f"is_inertia_matrix(I) returned {ok} (reason: {reason!r}) for {label}, which {text}.\n"
+                   f"I = {compact(I)}\neigenvalues: {compact(np.sort(moments))}\nexpected: {expected}")
+        if label == control_label and len({ok for ok, _ in results}) == 1:
+            fail(f"{message}\nIt returned {ok} for every matrix it was given.",
+                 "The answer must depend on the matrix: test symmetry, positive definiteness and the triangle "
+                 "inequality of the principal moments, and return True only when all three hold.",
+                 "constant_answer")
+        hint, diagnosis = diagnose(label) if diagnose else ("", "")
+        fail(message, hint, diagnosis)
 
 
 @check(1, title="is_inertia_matrix accepts valid inertia matrices (random orientations, the sheet's option 1, a "
