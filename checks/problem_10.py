@@ -47,10 +47,12 @@ def check_b(ctx):
 
 
 def nearest_rotation(A):
-    """The proper rotation closest to ``A`` in the Frobenius norm (SVD projection)."""
-    U, _, Vt = np.linalg.svd(np.asarray(A, dtype=float))
-    D = np.diag([1.0, 1.0, np.sign(np.linalg.det(U @ Vt))])
-    return U @ D @ Vt
+    """The rotation nearest to ``A`` (Frobenius norm): ``u @ vt`` of the singular value decomposition
+    ``A = u s vt``, with the last left singular vector reversed when that product is a reflection."""
+    u, _, vt = np.linalg.svd(np.asarray(A, dtype=float))
+    if np.linalg.det(u @ vt) < 0:
+        u[:, -1] = -u[:, -1]
+    return u @ vt
 
 
 @check(2, title="(c) A_IC read off the figure is a proper rotation close to the course's orientation",

@@ -87,25 +87,32 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
         raise KitError("grade kit needs the full project: the reference solution is not installed here")
     seed = random.randrange(2**31) if seed is None else int(seed)
     numbers = problems or [p.number for p in all_problems()]
-    oracle = RecordingOracle(seed)
-    child = ReferenceChild(oracle)
+    oracle = RecordingOracle(seed)  # the public checks: the key
+    shadow = RecordingOracle(seed, secret=True)  # the secret and hidden checks: what the key must not hold
     answers = _reference_answers()
     reports, failures = [], []
     for number in numbers:
         start = time.perf_counter()
         module = problem_module(number)
-        ctx = Context(number, child, answers, None, seed, oracle)
-        results = _run_checks(module, ctx, number)
+        results = _run_checks(module, Context(number, ReferenceChild(oracle), answers, None, seed, oracle), number)
+        secret = _run_checks(module, Context(number, ReferenceChild(shadow), answers, None, seed, shadow), number)
         failures += [f"{r.check_id} ({r.status.value}): {r.message.splitlines()[0] if r.message else ''}"
-                     for r in results if r.status not in (Status.PASSED, Status.DEFERRED)]
+                     for r in (*results, *secret) if r.status not in (Status.PASSED, Status.DEFERRED)]
         reports.append(ProblemReport(number, module.TITLE, tuple(results), sandbox="the reference, in process",
                                      seed=seed, duration=time.perf_counter() - start, grader_version=__version__))
         if progress:
             progress(number, time.perf_counter() - start)
     if failures:
-        raise KitError("the reference does not pass every public check, so no key is recorded:\n  "
+        raise KitError("the reference does not pass every check, so no key is recorded:\n  "
                        + "\n  ".join(failures))
-    return oracle.key, reports
+    key = oracle.key
+    # A public check that uses a value of a secret check would carry that value into the kit: withhold it too.
+    shared = set(shadow.key.calls) & set(key.calls)
+    key.withheld = sorted({check for call in shared for check in key.calls[call]["checks"]})
+    for call in shared:
+        del key.calls[call]
+    key.drop_checks(key.withheld)
+    return key, reports
 
 
 # ---------------------------------------------------------------------------------------------- the wheel
@@ -207,9 +214,12 @@ class Kit:
 
 
 def build_kit(out_dir: str | Path, *, seed: int | None = None, problems: list[int] | None = None,
-              progress=None) -> Kit:
-    """Record the answer key and write the kit's wheel into ``out_dir``."""
-    key, reports = record_key(problems, seed, progress)
+              progress=None, key: AnswerKey | None = None) -> Kit:
+    """Record the answer key (unless ``key`` is given, recorded already) and write the kit's wheel into
+    ``out_dir``."""
+    reports: list = []
+    if key is None:
+        key, reports = record_key(problems, seed, progress)
     data = key.dumps()
     files = kit_files()
     leaked = sorted(name for name in files if name.split("/")[0] == "reference")

@@ -131,6 +131,8 @@ class AnswerKey:
     ``calls``: ``call_key(probe, args)`` → ``{"value": encoded result, "checks": [check ids that made the call]}``;
     ``pools``: site (``"p06.cardan_values#0"``: check id and the index of the draw within the check) → the encoded
     argument tuples of a randomized comparison; ``draws``: site → the encoded data a check drew with ``ctx.draw``.
+    ``withheld``: public checks that use a value a secret or hidden check uses (a port that prints the predicted
+    output, say): the key holds nothing of theirs, and the kit defers them like the secret ones.
     ``fingerprint`` identifies the checks and probes the key was recorded with; ``seed`` is the kit's seed.
     """
 
@@ -140,6 +142,19 @@ class AnswerKey:
     calls: dict = field(default_factory=dict)
     pools: dict = field(default_factory=dict)
     draws: dict = field(default_factory=dict)
+    withheld: list = field(default_factory=list)
+
+    def drop_checks(self, check_ids) -> None:
+        """Remove everything recorded only for ``check_ids``: their calls (unless another check made them too),
+        their pools and their draws."""
+        check_ids = set(check_ids)
+        for key in list(self.calls):
+            if set(self.calls[key]["checks"]) <= check_ids:
+                del self.calls[key]
+        for table in (self.pools, self.draws):
+            for site in list(table):
+                if site.rpartition("#")[0] in check_ids:
+                    del table[site]
 
     def to_json(self) -> dict:
         return {
@@ -151,6 +166,7 @@ class AnswerKey:
             "calls": self.calls,
             "pools": self.pools,
             "draws": self.draws,
+            "withheld": self.withheld,
         }
 
     def dumps(self) -> bytes:
@@ -172,7 +188,7 @@ class AnswerKey:
         if not isinstance(raw, dict) or raw.get("format") != KEY_FORMAT or raw.get("version") != KEY_VERSION:
             raise GraderFault("the answer key has an unknown format: reinstall the kit your instructor gave you")
         return cls(int(raw["seed"]), str(raw["fingerprint"]), str(raw.get("grader_version", "")),
-                   dict(raw["calls"]), dict(raw["pools"]), dict(raw.get("draws", {})))
+                   dict(raw["calls"]), dict(raw["pools"]), dict(raw.get("draws", {})), list(raw.get("withheld", [])))
 
     @classmethod
     def load(cls, path: str | Path) -> "AnswerKey":
@@ -218,7 +234,7 @@ class Oracle:
 
         return _roundtrip(make(np.random.default_rng(_site_seed(seed, site))))
 
-    def runs(self, spec) -> bool:
+    def runs(self, spec, check_id: str) -> bool:
         """Whether a check runs here: the kit (and the recording of its key) leave out secret and hidden checks."""
         return True
 
@@ -387,16 +403,23 @@ class LiveOracle(Oracle):
             pass
 
 
+def _secret(spec) -> bool:
+    return spec.secret or spec.visibility == "hidden"
+
+
 class RecordingOracle(LiveOracle):
-    """A live oracle that records every reference call, pool and draw into an ``AnswerKey``."""
+    """A live oracle that records every reference call, pool and draw into an ``AnswerKey``.  It runs the public
+    checks (the key), or with ``secret=True`` only the secret and hidden ones (to learn which values the key must
+    not hold)."""
 
     mode = "record"
     pooled = True
 
-    def __init__(self, seed: int, fingerprint: str | None = None):
+    def __init__(self, seed: int, fingerprint: str | None = None, secret: bool = False):
         super().__init__()
         from . import __version__
 
+        self.secret = secret
         self.key = AnswerKey(int(seed), fingerprint or sources_fingerprint(), __version__)
 
     def reference(self, probe: str, args: tuple, persist: bool = False, check: str | None = None):
@@ -422,8 +445,8 @@ class RecordingOracle(LiveOracle):
             self.key.draws[site] = encode(make(np.random.default_rng(_site_seed(self.key.seed, site))))
         return decode(self.key.draws[site])
 
-    def runs(self, spec) -> bool:
-        return not spec.secret and spec.visibility != "hidden"
+    def runs(self, spec, check_id: str) -> bool:
+        return _secret(spec) == self.secret
 
 
 class KeyOracle(Oracle):
@@ -468,8 +491,12 @@ class KeyOracle(Oracle):
             raise GraderFault(f"the answer key holds no random draw for {site}")
         return decode(self.key.draws[site])
 
-    def runs(self, spec) -> bool:
-        return not spec.secret and spec.visibility != "hidden"
+    def runs(self, spec, check_id: str) -> bool:
+        return not _secret(spec) and check_id not in self._withheld
+
+    @property
+    def _withheld(self) -> set:
+        return set(self.key.withheld)
 
 
 # ---------------------------------------------------------------------------------------------- choosing one

@@ -170,7 +170,7 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     results = []
     blocked: dict[str, tuple[int, str]] = {}
     for spec in checks_of(module):
-        if not ctx.oracle.runs(spec):
+        if not ctx.oracle.runs(spec, f"p{problem:02d}.{spec.name}"):
             results.append(_not_run(spec, problem, Status.DEFERRED, DEFERRED_MESSAGE))
             continue
         block = blocked.get(spec.group)

@@ -31,13 +31,21 @@ def kit_oracle(answer_key):
     return KeyOracle(answer_key)
 
 
+@pytest.fixture(scope="session")
+def deferred_ids(answer_key):
+    """The checks the kit does not grade: secret and hidden ones, and public ones that share their values."""
+    from grader.kit import secret_check_ids
+
+    return secret_check_ids() | set(answer_key.withheld)
+
+
 def public_verdicts(report) -> dict:
     return {r.check_id: (r.status.value, r.diagnosis) for r in report.results if r.status is not Status.DEFERRED}
 
 
 def assert_same_verdicts(name: str, live, kit, secret: set[str]) -> None:
-    """The kit gives every public check of ``live`` the same status and diagnosis, and defers exactly the secret
-    and hidden ones (named in ``secret``)."""
+    """The kit gives every public check of ``live`` the same status and diagnosis, and defers exactly the ones
+    named in ``secret`` (secret, hidden, withheld)."""
     deferred = {r.check_id for r in kit.results if r.status is Status.DEFERRED}
     assert deferred == {r.check_id for r in live.results if r.check_id in secret}, name
     mine = {r.check_id: r for r in live.results}

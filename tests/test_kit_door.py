@@ -136,3 +136,28 @@ def test_simplicity_prefers_fewer_then_smaller_numbers():
     assert simplicity(short) < simplicity(longer)
     assert simplicity(small) < simplicity(large)
     assert sorted([large, small], key=simplicity) == [small, large]
+
+
+# ---------------------------------------------------------------------------------------------- item 12
+
+
+def test_grading_writes_nothing_where_it_runs(tmp_path):
+    """Hypothesis keeps an example database and a cache of the constants it collects from local source files (the
+    reference's included) in ``.hypothesis/`` of the current folder; grading must leave the folder untouched."""
+    import os
+    import subprocess
+    import sys
+
+    from .submissions import copy_reference
+
+    work = tmp_path / "mywork"
+    copy_reference(work)
+    before = sorted(p.relative_to(work) for p in work.rglob("*"))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]),
+               GRADER_ORACLE="live")
+    done = subprocess.run([sys.executable, "-m", "grader.cli", "problem-6", "problem-7", "--seed", "5"],
+                          cwd=work, env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "Problem 6" in done.stdout
+    after = sorted(p.relative_to(work) for p in work.rglob("*"))
+    assert after == before, f"grading wrote into the folder: {sorted(set(after) - set(before))}"

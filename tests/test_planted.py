@@ -8,10 +8,9 @@ same status and diagnosis as with the live reference (parity), and the secret an
 import pytest
 
 from grader import grade_problem, grade_submission, problems
-from grader.kit import secret_check_ids
 from grader.results import Status
 
-from .kit_support import SEED, answer_key, assert_same_verdicts, kit_oracle  # noqa: F401 (fixtures)
+from .kit_support import SEED, answer_key, assert_same_verdicts, deferred_ids, kit_oracle  # noqa: F401 (fixtures)
 from .submissions import (
     ROOT,
     build_planted,
@@ -22,7 +21,6 @@ from .submissions import (
 )
 
 PROBLEMS = [p.number for p in problems()]
-SECRET = secret_check_ids()
 
 
 @pytest.fixture(scope="module")
@@ -37,23 +35,23 @@ def grade_both(problem, submission, kit_oracle):
 
 
 @pytest.mark.parametrize("problem", PROBLEMS)
-def test_reference_scores_full_marks(problem, reference_copy, kit_oracle):
+def test_reference_scores_full_marks(problem, reference_copy, kit_oracle, deferred_ids):
     report, kit = grade_both(problem, reference_copy, kit_oracle)
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
     assert report.score == report.auto_max_score > 0
-    assert_same_verdicts(f"reference p{problem:02d}", report, kit, SECRET)
+    assert_same_verdicts(f"reference p{problem:02d}", report, kit, deferred_ids)
 
 
-def test_untouched_template_parity(kit_oracle):
+def test_untouched_template_parity(kit_oracle, deferred_ids):
     live = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED)
     kit = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED, oracle=kit_oracle)
     for one, other in zip(live, kit):
-        assert_same_verdicts(f"template p{one.problem:02d}", one, other, SECRET)
+        assert_same_verdicts(f"template p{one.problem:02d}", one, other, deferred_ids)
 
 
 @pytest.mark.parametrize("mistake", planted_mistakes(), ids=lambda m: m.name)
-def test_planted_mistake_is_caught(mistake, tmp_path, kit_oracle):
+def test_planted_mistake_is_caught(mistake, tmp_path, kit_oracle, deferred_ids):
     submission = build_planted(mistake, tmp_path / "pkg")
     report, kit = grade_both(mistake.problem, submission, kit_oracle)
     by_id = {r.check_id: r for r in report.results}
@@ -65,13 +63,13 @@ def test_planted_mistake_is_caught(mistake, tmp_path, kit_oracle):
                   if r.status not in (Status.PASSED, Status.SKIPPED) and r.check_id not in (mistake.check, *mistake.also)]
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
     assert report.score < report.auto_max_score
-    assert_same_verdicts(mistake.name, report, kit, SECRET)
+    assert_same_verdicts(mistake.name, report, kit, deferred_ids)
 
 
 @pytest.mark.parametrize("variant", correct_variants(), ids=lambda v: v["name"])
-def test_correct_variant_scores_full_marks(variant, tmp_path, kit_oracle):
+def test_correct_variant_scores_full_marks(variant, tmp_path, kit_oracle, deferred_ids):
     """Fairness: another valid answer, or a sound alternative computation, loses nothing."""
     report, kit = grade_both(variant["problem"], build_variant(variant, tmp_path / "pkg"), kit_oracle)
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
-    assert_same_verdicts(variant["name"], report, kit, SECRET)
+    assert_same_verdicts(variant["name"], report, kit, deferred_ids)
