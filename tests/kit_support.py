@@ -3,6 +3,8 @@ the comparison of a live report with a kit report."""
 
 from __future__ import annotations
 
+import copy
+
 import pytest
 
 from grader.oracle import KeyOracle
@@ -37,6 +39,61 @@ def deferred_ids(answer_key):
     from grader.kit import secret_check_ids
 
     return secret_check_ids() | set(answer_key.withheld)
+
+
+class SharedChild:
+    """One sandboxed child for the live and the kit grading of one submission: a probe call with the same
+    arguments (the sheet's cases, say) is answered once; the planted submissions are deterministic."""
+
+    def __init__(self, child):
+        self.child = child
+        self.answers: dict = {}
+
+    def call(self, probe, *args, timeout=None):
+        from grader.errors import StudentFault
+        from grader.oracle import call_key
+
+        key = call_key(probe, args)
+        if key not in self.answers:
+            try:
+                self.answers[key] = (False, self.child.call(probe, *args, timeout=timeout))
+            except StudentFault as exc:
+                self.answers[key] = (True, exc)
+        raised, value = self.answers[key]
+        if raised:
+            raise value
+        return copy.deepcopy(value)
+
+    def output(self):
+        return self.child.output()
+
+
+def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED):
+    """The live report and the kit's report of one problem of one submission, graded as ``grade_problem`` does
+    (materialized once, one sandboxed child), first with the live reference, then with the answer key."""
+    from grader.child import Child
+    from grader.context import Context
+    from grader.loader import cleanup, materialize, read_answers
+    from grader.oracle import LiveOracle
+    from grader.results import ProblemReport
+    from grader.runner import _manual_items, _run_checks, problem_module
+
+    module = problem_module(problem)
+    submission = materialize(source)
+    answers, answers_error = read_answers(submission.path)
+    reports = []
+    try:
+        with Child(submission.path) as child:
+            child.start()
+            shared = SharedChild(child)
+            for oracle in (LiveOracle(), kit_oracle):
+                ctx = Context(problem, shared, answers, answers_error, seed, oracle)
+                results = _run_checks(module, ctx, problem)
+                reports.append(ProblemReport(problem, module.TITLE, tuple(results),
+                                             tuple(_manual_items(module, ctx, problem)), seed=seed))
+    finally:
+        cleanup(submission)
+    return reports
 
 
 def public_verdicts(report) -> dict:

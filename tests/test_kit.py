@@ -309,3 +309,23 @@ def test_a_lookup_table_of_the_key_passes_in_the_kit_and_fails_live(answer_key, 
     failed = {r.check_id for r in live.results if r.status is Status.FAILED}
     assert {"p06.elementary_values", "p06.cardan_values"} <= failed
     assert live.score < live.auto_max_score
+
+
+def test_deferred_checks_are_rendered_and_do_not_fail_the_exit_code(kit_oracle, tmp_path):
+    from grader import grade_submission
+    from grader.cli import EXIT_OK, _exit_code
+    from grader.render import render_html, render_json, render_terminal
+
+    submission = copy_reference(tmp_path / "pkg")
+    reports = grade_submission(submission, [10, 20], seed=SEED, oracle=kit_oracle)
+    deferred = {r.check_id for report in reports for r in report.results if r.status is Status.DEFERRED}
+    assert deferred == {"p10.a", "p10.b", "p20.part_a", "p20.part_b"}
+    assert all(r.score == 0 for report in reports for r in report.results if r.status is Status.DEFERRED)
+    assert _exit_code(reports) == EXIT_OK
+    text = render_terminal(reports)
+    assert text.count("graded when you submit]") == 4 and "◇ 2 checks worth 2 points are graded when you submit" in text
+    html = render_html(reports)
+    assert 'class="deferred"' in html and "graded when you submit" in html
+    statuses = {r["check_id"]: r["status"] for report in json.loads(render_json(reports, show_hidden=False))["reports"]
+                for r in report["results"]}
+    assert {statuses[c] for c in deferred} == {"deferred"}

@@ -10,7 +10,14 @@ import pytest
 from grader import grade_problem, grade_submission, problems
 from grader.results import Status
 
-from .kit_support import SEED, answer_key, assert_same_verdicts, deferred_ids, kit_oracle  # noqa: F401 (fixtures)
+from .kit_support import (  # noqa: F401 (fixtures)
+    SEED,
+    answer_key,
+    assert_same_verdicts,
+    deferred_ids,
+    grade_live_and_kit,
+    kit_oracle,
+)
 from .submissions import (
     ROOT,
     build_planted,
@@ -29,14 +36,14 @@ def reference_copy(tmp_path_factory):
 
 
 def grade_both(problem, submission, kit_oracle):
-    """The live report and the kit's report of one problem of one submission."""
-    return (grade_problem(problem, submission, seed=SEED),
-            grade_problem(problem, submission, seed=SEED, oracle=kit_oracle))
+    """The live report and the kit's report of one problem of one submission (one sandboxed child)."""
+    return grade_live_and_kit(problem, submission, kit_oracle)
 
 
 @pytest.mark.parametrize("problem", PROBLEMS)
 def test_reference_scores_full_marks(problem, reference_copy, kit_oracle, deferred_ids):
-    report, kit = grade_both(problem, reference_copy, kit_oracle)
+    report = grade_problem(problem, reference_copy, seed=SEED)
+    kit = grade_problem(problem, reference_copy, seed=SEED, oracle=kit_oracle)
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
     assert report.score == report.auto_max_score > 0
