@@ -1,5 +1,9 @@
-"""Shared by the checks of problems 11-20: random kinematic states, the integration step with a known mistake
-switched on, and the comparison of traces that names the first departing step."""
+"""Shared by the checks of problems 11-20: random rotations and kinematic states, the integration step with a
+known mistake switched on, and the comparison of traces that names the first departing step.
+
+Nothing here uses the reference: rotations are drawn from quaternions, and the mistaken steps are computed with
+numpy from the values the reference gave (through ``ctx.reference``) and the inputs.
+"""
 
 import numpy as np
 from hypothesis import strategies as st
@@ -27,13 +31,49 @@ def vectors(bound):
     return st.tuples(*[st.floats(-bound, bound, **FINITE)] * 3).map(np.array)
 
 
-def _cardan(angles):
-    from reference.rotations import cardan
+def skew(w):
+    """The matrix of ``x -> w x x`` (numpy, for the mistake catalogues)."""
+    return np.cross(np.asarray(w, dtype=float).reshape(3), np.eye(3) * -1.0)
 
-    return cardan(*angles)
+
+def expm_skew(W):
+    """``expm(W)`` of a skew matrix by the Rodrigues formula (numpy, for the mistake catalogues)."""
+    W = np.asarray(W, dtype=float)
+    theta = float(np.sqrt(0.5 * np.sum(W * W)))
+    if theta < 1e-10:
+        return np.eye(3) + W + W @ W / 2.0
+    return np.eye(3) + (np.sin(theta) / theta) * W + ((1.0 - np.cos(theta)) / theta**2) * (W @ W)
 
 
-ROTATIONS = st.tuples(ANGLES, st.floats(-np.pi / 2, np.pi / 2, **FINITE), ANGLES).map(_cardan)
+def quaternion_rotation(q):
+    """The rotation matrix of the quaternion ``q = (w, x, y, z)`` (normalized here)."""
+    w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ])
+
+
+#: the inertia of each body of problem 16 is FACTOR * m * diag(b² + c², a² + c², a² + b²) for its dimensions
+#: a, b, c (full edges or full axes; problem data)
+BODY_FACTORS = {"cuboid": 1 / 12, "ellipsoid": 1 / 20, "particles": 1 / 12}
+
+
+def body_inertia(body, m, a, b, c):
+    """The inertia matrix of a body of problem 16 (cuboid, ellipsoid, six face-centre particles)."""
+    return BODY_FACTORS[body] * m * np.diag([b**2 + c**2, a**2 + c**2, a**2 + b**2])
+
+
+#: the quaternion that random rotations shrink towards: a generic rotation (the identity or a half turn would make
+#: different mistakes give the same matrix, and a minimal failing input would lose its diagnosis)
+GENERIC_QUATERNION = np.array([0.8, 0.3, -0.5, 0.4])
+#: random rotations: quaternions GENERIC_QUATERNION + d with d in [-1, 1]^4 (every direction occurs, since the box
+#: contains the origin), normalized
+ROTATIONS = (st.tuples(*[st.floats(-1.0, 1.0, **FINITE)] * 4)
+             .map(lambda d: GENERIC_QUATERNION + np.asarray(d))
+             .filter(lambda q: float(q @ q) > 0.01)
+             .map(quaternion_rotation))
 #: kinematic states: a random orientation, bounded velocities and accelerations
 STATES = st.fixed_dictionaries({
     "A_IB": ROTATIONS,
@@ -93,8 +133,6 @@ KINEMATIC_MISTAKES = {
 
 def kinematic_step(state, dt, mistake=None):
     """One integration step of the problem data, or with the named mistake of ``KINEMATIC_MISTAKES`` applied."""
-    from reference.rotations import expm_skew, skew
-
     A, r, v, w, a, wd = (np.asarray(state[k], dtype=float) for k in (*STATE, "B_a_B", "B_omegaDot_B"))
     if mistake == "update_order":
         w = w + dt * wd
@@ -120,10 +158,14 @@ def simulate(state, dt, n, mistake=None):
     return state
 
 
-def initial(case):
-    from reference.problem_12 import CASES
+def sheet_state(values):
+    """A body at rest at the origin (``A_IB = E``, ``B_r_IB = 0``) with the sheet's velocities and accelerations."""
+    return {"A_IB": np.eye(3), "B_r_IB": np.zeros(3), **{k: np.array(v, dtype=float) for k, v in values.items()}}
 
-    return {"A_IB": np.eye(3), "B_r_IB": np.zeros(3), **{k: np.array(v, dtype=float) for k, v in CASES[case].items()}}
+
+def initial(ctx, case):
+    """The initial state of the sheet's case ``case`` of problem 12(a) (the package's ``CASES``)."""
+    return sheet_state(ctx.reference("problem_12.constants")["CASES"][str(case)])
 
 
 # ------------------------------------------------------------------------------------ traces

@@ -10,12 +10,15 @@ from grader.checking import (
     STAGE_SHAPE,
     STAGE_STRUCTURE,
     STAGE_VALUES,
+    STRUCTURE,
     Mistake,
     as_array,
     assert_close,
     assert_rotation,
     check,
+    close,
     fail,
+    format_array,
 )
 
 TITLE = "Euler angles, Tait-Bryan/Cardan convention"
@@ -29,6 +32,8 @@ SHEET_VECTORS = {
     "C3_v": (1.0, 1.0, 1.0),
 }
 AXES = (1, 2, 3)
+#: the sheet's yaw gamma, pitch beta and roll alpha [deg]
+SHEET_ANGLES_DEG = (30.0, 45.0, 60.0)
 
 TRANSPOSE_HINT = (
     "Your matrix is the transpose of the expected one: it maps the original frame to the rotated frame "
@@ -38,38 +43,49 @@ TRANSPOSE_HINT = (
 DEGREES_HINT = "The angles are in radians: did you treat them as degrees (np.deg2rad inside the function)?"
 
 
-def _elementary_mistakes(axis, angle, expected):
-    from reference.rotations import R1, R2, R3
+def _elementary_mistakes(ctx, axis, angle, expected):
+    def R(k, x):
+        return ctx.reference("problem_06.elementary", k, x)
 
-    R = {1: R1, 2: R2, 3: R3}[axis]
     return [
         Mistake("transpose", np.asarray(expected).T, TRANSPOSE_HINT + " (A sign flip of the angle gives the same.)"),
-        Mistake("degrees", R(np.deg2rad(angle)), DEGREES_HINT),
+        Mistake("degrees", R(axis, float(np.deg2rad(angle))), DEGREES_HINT),
         *[
-            Mistake("wrong_axis", other(angle), f"This is the rotation about another axis: R{axis} turns about "
+            Mistake("wrong_axis", R(other, angle), f"This is the rotation about another axis: R{axis} turns about "
                     f"the {axis}-axis, which stays fixed (row and column {axis} are those of the identity).")
-            for other in (R1, R2, R3) if other is not R
+            for other in AXES if other != axis
         ],
     ]
 
 
-def _cardan_mistakes(args, expected):
-    from reference.rotations import R1, R2, R3
+def _cardan_mistakes(ctx, args, expected):
+    def R(k, x):
+        return ctx.reference("problem_06.elementary", k, x)
 
     a, b, g = args
     return [
         Mistake("transpose", np.asarray(expected).T, TRANSPOSE_HINT),
         Mistake(
             "rotation_order",
-            R1(a) @ R2(b) @ R3(g),
+            R(1, a) @ R(2, b) @ R(3, g),
             "The rotations are multiplied in the wrong order: the Cardan sequence is yaw about 3 first, then "
             "pitch about the NEW 2-axis, then roll about the NEWEST 1-axis: A_IC3 = R3(gamma) @ R2(beta) @ "
             "R1(alpha).",
         ),
-        Mistake("argument_order", R3(a) @ R2(b) @ R1(g),
+        Mistake("argument_order", ctx.reference("problem_06.cardan", g, b, a),
                 "alpha and gamma are swapped: the signature is cardan(alpha, beta, gamma), alpha being the roll."),
-        Mistake("degrees", R3(np.deg2rad(g)) @ R2(np.deg2rad(b)) @ R1(np.deg2rad(a)), DEGREES_HINT),
+        Mistake("degrees", ctx.reference("problem_06.cardan", *(float(x) for x in np.deg2rad([a, b, g]))),
+                DEGREES_HINT),
     ]
+
+
+def assert_turns(A, name):
+    """Fail when the rotation ``A`` (by a non-zero angle) is the identity: it does not turn anything."""
+    if close(A, np.eye(3), STRUCTURE):
+        fail(f"{name} is the identity matrix: it does not rotate, although the angle is not zero.\n"
+             f"got:\n{format_array(A)}",
+             "A rotation by a non-zero angle changes the coordinates of every vector off its axis: compute the "
+             "matrix from the angle (cos and sin of it) instead of returning the identity.", "identity")
 
 
 # ------------------------------------------------------------------------------------ elementary rotations
@@ -86,7 +102,8 @@ def check_elementary_shape(ctx):
 def check_elementary_rotation(ctx):
     for axis in AXES:
         for angle in (0.3, -2.0):
-            assert_rotation(ctx.student("problem_06.elementary", axis, angle), f"R{axis}({angle})")
+            A = assert_rotation(ctx.student("problem_06.elementary", axis, angle), f"R{axis}({angle})")
+            assert_turns(A, f"R{axis}({angle})")
 
 
 @check(2, title="R1, R2, R3 equal the elementary rotations on random angles", stage=STAGE_RANDOM,
@@ -98,7 +115,7 @@ def check_elementary_values(ctx):
             ANGLES.map(lambda angle, axis=axis: (axis, angle)),
             name=f"R{axis}",
             tol=EXACT,
-            mistakes=lambda args, expected: _elementary_mistakes(args[0], args[1], expected),
+            mistakes=lambda args, expected: _elementary_mistakes(ctx, args[0], args[1], expected),
             describe=lambda args: f"R{args[0]}({args[1]!r})",
         )
 
@@ -108,7 +125,8 @@ def check_elementary_values(ctx):
 
 @check(1, title="cardan(alpha, beta, gamma) is a proper rotation", stage=STAGE_STRUCTURE, group="cardan")
 def check_cardan_rotation(ctx):
-    assert_rotation(ctx.student("problem_06.cardan", 0.4, -0.3, 1.1), "cardan(0.4, -0.3, 1.1)")
+    A = assert_rotation(ctx.student("problem_06.cardan", 0.4, -0.3, 1.1), "cardan(0.4, -0.3, 1.1)")
+    assert_turns(A, "cardan(0.4, -0.3, 1.1)")
 
 
 @check(2, title="cardan(alpha, beta, gamma) = R3(gamma) R2(beta) R1(alpha) on random angles",
@@ -119,7 +137,7 @@ def check_cardan_values(ctx):
         st.tuples(ANGLES, ANGLES, ANGLES),
         name="cardan(alpha, beta, gamma)",
         tol=EXACT,
-        mistakes=_cardan_mistakes,
+        mistakes=lambda args, expected: _cardan_mistakes(ctx, args, expected),
         describe=lambda args: "cardan(alpha={!r}, beta={!r}, gamma={!r})".format(*args),
     )
 
@@ -130,14 +148,18 @@ def check_cardan_values(ctx):
 @check(1, title="the frames C1, C2, C3 of the sheet (gamma = 30, beta = 45, alpha = 60 deg)",
        stage=STAGE_VALUES, group="sheet")
 def check_frames(ctx):
-    got = ctx.student("problem_06.frames")
+    def R(k, x):
+        return ctx.reference("problem_06.elementary", k, x)
+
     expected = ctx.reference("problem_06.frames")
+    g, b, a = (float(x) for x in np.deg2rad(SHEET_ANGLES_DEG))
+    wrong_order = {"A_IC1": R(3, g), "A_IC2": R(2, b) @ R(3, g), "A_IC3": R(1, a) @ R(2, b) @ R(3, g)}
+    degrees = {"A_IC1": R(3, SHEET_ANGLES_DEG[0])}
+    degrees["A_IC2"] = degrees["A_IC1"] @ R(2, SHEET_ANGLES_DEG[1])
+    degrees["A_IC3"] = degrees["A_IC2"] @ R(1, SHEET_ANGLES_DEG[2])
+    got = ctx.student("problem_06.frames")
     if not isinstance(got, dict):
         fail(f"frames() must return a dict with keys A_IC1, A_IC2, A_IC3, got {type(got).__name__}.")
-    from reference.rotations import R1, R2, R3
-
-    g, b, a = np.deg2rad([30.0, 45.0, 60.0])
-    wrong_order = {"A_IC1": R3(g), "A_IC2": R2(b) @ R3(g), "A_IC3": R1(a) @ R2(b) @ R3(g)}
     for key in ("A_IC1", "A_IC2", "A_IC3"):
         if key not in got:
             fail(f"frames() has no entry {key!r} (keys: {sorted(got)}).")
@@ -147,31 +169,16 @@ def check_frames(ctx):
             Mistake("rotation_order", wrong_order[key],
                     "Each new rotation multiplies from the right (about the NEW axes): "
                     "A_IC2 = A_IC1 @ A_C1C2, not A_C1C2 @ A_IC1."),
-            Mistake("degrees", _degrees_as_radians(key), DEGREES_HINT + " np.deg2rad(30) is the angle to use."),
+            Mistake("degrees", degrees[key], DEGREES_HINT + " np.deg2rad(30) is the angle to use."),
         ])
-
-
-def _degrees_as_radians(key):
-    from reference.rotations import R1, R2, R3
-
-    chain = {"A_IC1": R3(30.0)}
-    chain["A_IC2"] = chain["A_IC1"] @ R2(45.0)
-    chain["A_IC3"] = chain["A_IC2"] @ R1(60.0)
-    return chain[key]
 
 
 @check(2, title="the coordinates of V in I, C1, C2, C3 match the sheet", stage=STAGE_VALUES, group="sheet")
 def check_vectors(ctx):
-    got = ctx.student("problem_06.vectors")
-    if not isinstance(got, dict):
-        fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}, got {type(got).__name__}.")
-    from reference.problem_06 import frames
-
-    A = frames()
+    A = ctx.reference("problem_06.frames")
     v = np.ones(3)
-    transposed_I = A["A_IC3"].T @ v
     mistakes = {
-        "I_v": [Mistake("transpose", transposed_I,
+        "I_v": [Mistake("transpose", A["A_IC3"].T @ v,
                         "You used A_C3I instead of A_IC3: I_v = A_IC3 @ C3_v maps C3-coordinates to I.")],
         "C1_v": [Mistake("transpose", A["A_IC1"] @ (A["A_IC3"] @ v),
                          "C1_v = A_C1I @ I_v with A_C1I = A_IC1.T: did you multiply by A_IC1 instead?")],
@@ -179,6 +186,9 @@ def check_vectors(ctx):
                          "C2_v = A_C2I @ I_v with A_C2I = A_IC2.T: did you multiply by A_IC2 instead?")],
         "C3_v": [],
     }
+    got = ctx.student("problem_06.vectors")
+    if not isinstance(got, dict):
+        fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}, got {type(got).__name__}.")
     for key, target in SHEET_VECTORS.items():
         if key not in got:
             fail(f"vectors() has no entry {key!r} (keys: {sorted(got)}).")

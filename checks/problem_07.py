@@ -3,6 +3,7 @@
 import numpy as np
 from hypothesis import strategies as st
 
+from checks._rigid import ROTATIONS, skew
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,
@@ -21,19 +22,17 @@ TITLE = "Derivatives of transformations"
 
 FLOATS = st.floats(-5, 5, allow_nan=False, allow_infinity=False)
 VECTORS = st.tuples(FLOATS, FLOATS, FLOATS).map(np.array)
-ANGLES = st.floats(-np.pi, np.pi, allow_nan=False, allow_infinity=False)
 SYMBOLIC = Tol("symbolic evaluation", 1e-9, 1e-9)
 KEYS = ("A_IC1", "A_IC2", "A_IC3", "A_C3I", "C3_omega_IC3")
+#: the animation's start (alpha, beta, gamma) [deg], as on the sheet
+START_DEG = (60.0, 45.0, 30.0)
 
 
-def _rotation_and_rate(draw_angles, w):
-    from reference.rotations import cardan, skew
-
-    A = cardan(*draw_angles)
+def _rotation_and_rate(A, w):
     return A, skew(w) @ A  # dA_IC/dt for the inertial angular velocity w
 
 
-MOTIONS = st.tuples(st.tuples(ANGLES, ANGLES, ANGLES), VECTORS).map(lambda t: _rotation_and_rate(*t))
+MOTIONS = st.tuples(ROTATIONS, VECTORS).map(lambda t: _rotation_and_rate(*t))
 
 SIGN_HINT = ("Your result has the opposite sign: skew(w) has -w3 at [0, 1], +w2 at [0, 2] and -w1 at [1, 2], so "
              "that skew(w) @ x == np.cross(w, x).")
@@ -56,8 +55,6 @@ def check_skew_values(ctx):
 
 @check(1, title="unskew inverts skew on random vectors", stage=STAGE_RANDOM, group="skew")
 def check_unskew_values(ctx):
-    from reference.rotations import skew
-
     ctx.compare_random(
         "problem_07.unskew", VECTORS.map(lambda w: (skew(w),)), name="unskew(W)", tol=EXACT,
         mistakes=lambda args, expected: [
@@ -97,44 +94,29 @@ def check_omega_inertial(ctx):
                        mistakes=_omega_mistakes("inertial"))
 
 
-def _points(seed, n=4):
-    rng = np.random.default_rng(seed)
+def _points(rng, n=4):
     names = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
     return [dict(zip(names, map(float, rng.uniform(-2, 2, 6)))) for _ in range(n)]
-
-
-def _numeric(points):
-    """The expressions' values from the reference's numeric rotations (no sympy needed in the grader)."""
-    from reference.rotations import R2, R3, cardan, cardan_rate_matrix
-
-    out = {key: [] for key in KEYS}
-    for p in points:
-        a, b, g = p["alpha"], p["beta"], p["gamma"]
-        rates = np.array([p["alpha_dot"], p["beta_dot"], p["gamma_dot"]])
-        A3 = cardan(a, b, g)
-        for key, value in (("A_IC1", R3(g)), ("A_IC2", R3(g) @ R2(b)), ("A_IC3", A3), ("A_C3I", A3.T),
-                           ("C3_omega_IC3", (cardan_rate_matrix(a, b, g) @ rates).reshape(3, 1))):
-            out[key].append(value)
-    return out
 
 
 @check(3, title="derive(): the symbolic A_IC1, A_IC2, A_IC3, A_C3I and C3_omega_IC3 evaluate to the right values",
        stage=STAGE_VALUES, group="symbolic")
 def check_symbolic(ctx):
-    points = _points(ctx.seed)
+    points = ctx.draw(_points)
+    expected = ctx.reference("problem_07.expressions", points)
     got = ctx.student("problem_07.symbolic", points, timeout=60)
-    expected = _numeric(points)
     missing = [k for k in KEYS if k not in got]
     if missing:
         fail(f"derive() lacks the entries {missing} (it returned {sorted(got)}).")
-    from reference.rotations import cardan
-
     for key in KEYS:
-        for point, g, e in zip(points, got[key], expected[key]):
+        values = got[key]
+        if not isinstance(values, list) or len(values) != len(points):
+            fail(f"{key} could not be evaluated at the {len(points)} points (got {str(values)[:200]}).")
+        for i, (point, g, e) in enumerate(zip(points, values, expected[key])):
             shape = np.shape(e)
             mistakes = []
             if key == "C3_omega_IC3":
-                A = cardan(point["alpha"], point["beta"], point["gamma"])
+                A = np.asarray(expected["A_IC3"][i])
                 mistakes = [
                     Mistake("wrong_frame", (A @ np.ravel(e)).reshape(shape),
                             "This is the angular velocity in inertial coordinates: C3_omega comes from "
@@ -150,19 +132,21 @@ def check_symbolic(ctx):
 @check(1, title="the animation ends at the right orientation (100 Euler steps of the Cardan angles)",
        stage=STAGE_VALUES, group="animation")
 def check_animation(ctx):
-    got = ctx.student("problem_07.animate")
+    def cardan(angles):
+        return ctx.reference("problem_06.cardan", *(float(x) for x in angles))
+
     expected = ctx.reference("problem_07.animate")
+    start = np.deg2rad(START_DEG)
+    mistakes = [
+        Mistake("step_count", cardan(start + np.pi * (1 + 1 / 100)),
+                "One step too many: run exactly n = 100 steps of dt = pi / n."),
+        Mistake("step_count", cardan(start + np.pi * (1 - 1 / 100)),
+                "One step too few: run exactly n = 100 steps of dt = pi / n."),
+        Mistake("degrees", cardan(np.deg2rad(np.asarray(START_DEG) + np.pi)),
+                "The angles and the step are in radians: add dt = pi / n to angles in radians."),
+    ]
+    got = ctx.student("problem_07.animate")
     if not isinstance(got, dict) or "A_IC3" not in got:
         fail("animate() must return a dict with the entries 'angles' and 'A_IC3'.")
-    from reference.rotations import cardan
-
-    start = np.deg2rad([60.0, 45.0, 30.0])
     A = assert_rotation(got["A_IC3"], "A_IC3")
-    assert_close(A, expected["A_IC3"], "A_IC3 at t = pi", EXACT, [
-        Mistake("step_count", cardan(*(start + np.pi * (1 + 1 / 100))),
-                "One step too many: run exactly n = 100 steps of dt = pi / n."),
-        Mistake("step_count", cardan(*(start + np.pi * (1 - 1 / 100))),
-                "One step too few: run exactly n = 100 steps of dt = pi / n."),
-        Mistake("degrees", cardan(*np.deg2rad(np.rad2deg(start) + np.pi)),
-                "The angles and the step are in radians: add dt = pi / n to angles in radians."),
-    ])
+    assert_close(A, expected["A_IC3"], "A_IC3 at t = pi", EXACT, mistakes)

@@ -3,8 +3,10 @@
 import numpy as np
 from hypothesis import strategies as st
 
+from checks._rigid import ROTATIONS, expm_skew, skew
 from grader.checking import (
     EXACT,
+    STRUCTURE,
     STAGE_RANDOM,
     STAGE_STRUCTURE,
     STAGE_VALUES,
@@ -14,6 +16,7 @@ from grader.checking import (
     assert_close,
     assert_rotation,
     check,
+    close,
     fail,
     format_array,
 )
@@ -33,21 +36,12 @@ EULER_HINT = ("This is an explicit Euler step (A + dt * skew(w) @ A), which does
               "exponential step is A_IC(t + dt) = expm(dt * skew(I_omega)) @ A_IC.")
 
 
-def _rotations():
-    from reference.rotations import cardan
-
-    return st.tuples(ANGLES, PITCH, ANGLES).map(lambda a: cardan(*a))
-
-
-def _step_mistakes(which):
+def _step_mistakes(ctx, which):
     def mistakes(args, expected):
-        from reference.rotations import expm_skew, skew
-
         x, w, dt = (np.asarray(a, dtype=float) for a in args)
         if which == "cardan":
-            from reference.rotations import cardan_rate_matrix
-
-            body = x + dt * np.linalg.solve(cardan_rate_matrix(*x), w)
+            B = ctx.reference("problem_08.rate_matrix", *(float(angle) for angle in x))
+            body = x + dt * np.linalg.solve(B, w)
             return [Mistake("wrong_frame", body, "You used I_omega as if it were C_omega: the rates are "
                             "(A_IC @ B)^-1 @ I_omega, with A_IC from the current angles.")]
         found = [
@@ -78,30 +72,38 @@ def check_rate_matrix(ctx):
 @check(2, title="euler_matrix_step is one explicit Euler step of dA_IC/dt = skew(I_omega) @ A_IC",
        stage=STAGE_RANDOM, group="euler")
 def check_euler_step(ctx):
-    ctx.compare_random("problem_08.step", st.tuples(_rotations(), VECTORS, STEPS).map(lambda t: ("euler", *t)),
+    ctx.compare_random("problem_08.step", st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("euler", *t)),
                        name="A_IC after one Euler step", tol=EXACT,
-                       mistakes=lambda args, e: _step_mistakes("euler")(args[1:], e))
+                       mistakes=lambda args, e: _step_mistakes(ctx, "euler")(args[1:], e))
 
 
 @check(1, title="exponential_step keeps A_IC orthonormal (even for a large step)", stage=STAGE_STRUCTURE,
        group="exp")
 def check_exponential_orthonormal(ctx):
-    from reference.rotations import R3, skew
-
-    A0, w, dt = R3(np.pi / 2), np.sqrt(1 / 3) * np.ones(3), 0.5
+    A0, w, dt = ctx.reference("problem_06.elementary", 3, np.pi / 2), np.sqrt(1 / 3) * np.ones(3), 0.5
     got = as_array(ctx.student("problem_08.step", "exp", A0, w, dt), "exponential_step(R3(90°), w, 0.5)", (3, 3))
     if np.allclose(got, A0 + dt * skew(w) @ A0, atol=1e-9):
         fail(f"exponential_step(R3(90°), w, 0.5) is not orthonormal: it is the Euler step.\n"
              f"got:\n{format_array(got)}", EULER_HINT, "euler_not_exponential")
     assert_rotation(got, "exponential_step(R3(90°), w, 0.5)")
+    assert_moves(got, A0, "exponential_step(R3(90°), w, 0.5)")
+
+
+def assert_moves(got, start, name):
+    """Fail when one step with a non-zero angular velocity left ``A_IC`` where it was."""
+    if close(got, start, STRUCTURE):
+        fail(f"{name} returned A_IC unchanged: the body did not turn, although omega is not zero.\n"
+             f"got:\n{format_array(got)}",
+             "One step turns A_IC by the angle dt * |I_omega| about I_omega: A_IC(t + dt) = expm(dt * "
+             "skew(I_omega)) @ A_IC.", "no_motion")
 
 
 @check(2, title="exponential_step equals expm(dt * skew(I_omega)) @ A_IC on random inputs", stage=STAGE_RANDOM,
        group="exp")
 def check_exponential_step(ctx):
-    ctx.compare_random("problem_08.step", st.tuples(_rotations(), VECTORS, STEPS).map(lambda t: ("exp", *t)),
+    ctx.compare_random("problem_08.step", st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("exp", *t)),
                        name="A_IC after one exponential step", tol=EXACT,
-                       mistakes=lambda args, e: _step_mistakes("exp")(args[1:], e))
+                       mistakes=lambda args, e: _step_mistakes(ctx, "exp")(args[1:], e))
 
 
 @check(2, title="cardan_euler_step advances the angles by dt * (A_IC @ B)^-1 @ I_omega", stage=STAGE_RANDOM,
@@ -110,31 +112,37 @@ def check_cardan_step(ctx):
     angles = st.tuples(ANGLES, PITCH, ANGLES).map(np.array)
     ctx.compare_random("problem_08.step", st.tuples(angles, VECTORS, STEPS).map(lambda t: ("cardan", *t)),
                        name="angles after one step", tol=EXACT,
-                       mistakes=lambda args, e: _step_mistakes("cardan")(args[1:], e))
+                       mistakes=lambda args, e: _step_mistakes(ctx, "cardan")(args[1:], e))
 
 
 @check(1, title="(a) after 100 Euler steps the matrix has grown (not orthonormal) exactly as Euler predicts",
        stage=STAGE_VALUES, group="runs")
 def check_part_a(ctx):
+    expected = ctx.reference("problem_08.part", "a")
     got = ctx.student("problem_08.part", "a")
-    assert_close(got, ctx.reference("problem_08.part", "a"), "A_IC after (a)", RUN)
+    assert_close(got, expected, "A_IC after (a)", RUN)
 
 
 @check(1, title="(b) after 100 Euler steps of the Cardan angles", stage=STAGE_VALUES, group="runs")
 def check_part_b(ctx):
+    expected = ctx.reference("problem_08.part", "b")
     got = ctx.student("problem_08.part", "b")
     if not isinstance(got, dict) or "A_IC" not in got:
         fail("part_b() must return a dict with the entries 'angles' and 'A_IC'.")
-    assert_close(got["A_IC"], ctx.reference("problem_08.part", "b")["A_IC"], "A_IC after (b)", RUN)
+    assert_close(got["A_IC"], expected["A_IC"], "A_IC after (b)", RUN)
 
 
 @check(2, title="(c) the exponential returns exactly to A_IC(t0) = R3(90°) after 2 pi", stage=STAGE_VALUES,
        group="runs")
 def check_part_c(ctx):
-    from reference.rotations import R3
-
-    got = as_array(ctx.student("problem_08.part", "c"), "A_IC after (c)", (3, 3))
+    start = ctx.reference("problem_06.elementary", 3, np.pi / 2)
     euler = ctx.reference("problem_08.part", "a")
-    assert_close(got, R3(np.pi / 2), "A_IC after (c)", Tol("exact rotation", 1e-9), [
+    w, dt = np.sqrt(1 / 3) * np.ones(3), 2 * np.pi / 100
+    # a step that does not move would also "return" to the start: (c) counts only for a step that turns
+    one = as_array(ctx.student("problem_08.step", "exp", start, w, dt), "exponential_step(R3(90°), w, 2 pi / 100)",
+                   (3, 3))
+    assert_moves(one, start, "exponential_step(R3(90°), w, 2 pi / 100)")
+    got = as_array(ctx.student("problem_08.part", "c"), "A_IC after (c)", (3, 3))
+    assert_close(got, start, "A_IC after (c)", Tol("exact rotation", 1e-9), [
         Mistake("lost_orthonormality", euler, EULER_HINT),
     ])

@@ -3,20 +3,12 @@
 import numpy as np
 from hypothesis import strategies as st
 
+from checks._rigid import ROTATIONS
 from grader.checking import EXACT, SHEET, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
 
 TITLE = "A better coordinate-system class (relative transformations)"
 
-ANGLES = st.floats(-np.pi, np.pi, allow_nan=False, allow_infinity=False)
-
-
-def _rotation():
-    from reference.rotations import cardan
-
-    return st.tuples(ANGLES, ANGLES, ANGLES).map(lambda a: cardan(*a))
-
-
-CHAINS = st.lists(st.deferred(_rotation), min_size=2, max_size=4).map(lambda rs: (rs,))
+CHAINS = st.lists(ROTATIONS, min_size=2, max_size=4).map(lambda rs: (rs,))
 SHEET_VECTORS = {"I_v": (1.6319, 0.5195, 0.2588), "C1_v": (1.6730, -0.3660, 0.2588),
                  "C2_v": (1.0, -0.3660, 1.3660), "C3_v": (1.0, 1.0, 1.0)}
 
@@ -35,11 +27,21 @@ def _reversed_product(relatives):
     return {"to_inertial": absolute, "pairs": [[b.T @ c for b in absolute] for c in absolute]}
 
 
+def _list_of(value, n, what):
+    """``value`` as a list of ``n`` entries, or a failure that says what came back instead."""
+    if not isinstance(value, list) or len(value) != n:
+        fail(f"{what} must give {n} entries (one per frame of the chain), got {str(value)[:200]}")
+    return value
+
+
 def _compare_chain(got, expected, args):
-    if not isinstance(got, dict) or "pairs" not in got:
-        fail("the probe could not read the chain's transformations.")
     absolute, reversed_ = _absolute(args[0]), _reversed_product(args[0])
     n = len(expected["to_inertial"])
+    if not isinstance(got, dict) or "pairs" not in got or "to_inertial" not in got:
+        fail("the probe could not read the chain's transformations.")
+    _list_of(got["to_inertial"], n, "get_transform() over the chain")
+    for row in _list_of(got["pairs"], n, "get_transform(B) over the chain"):
+        _list_of(row, n, "get_transform(B) over the chain")
     for i in range(n):
         assert_close(got["to_inertial"][i], expected["to_inertial"][i], f"C{i + 1}.get_transform()", EXACT, [
             Mistake("ignores_parent", absolute["to_inertial"][i],
@@ -68,13 +70,15 @@ def check_chain(ctx):
 def check_set_transform(ctx):
     def compare(got, expected, args):
         A_IB, A_BC = (np.asarray(a) for a in args)
+        if not isinstance(got, dict) or "A_IC" not in got or "A_BC" not in got:
+            fail(f"the probe could not read A_IC and A_BC after set_transform, got {str(got)[:200]}")
         assert_close(got["A_IC"], expected["A_IC"], "A_IC after set_transform(A_BC, B)", EXACT, [
             Mistake("ignores_parent", A_BC, "set_transform ignored B: A_IC = B.A_IC @ A_BC."),
             Mistake("rotation_order", A_BC @ A_IB, "The product is reversed: A_IC = A_IB @ A_BC."),
         ])
         assert_close(got["A_BC"], expected["A_BC"], "get_transform(B) after set_transform(A_BC, B)", EXACT)
 
-    ctx.compare_random("problem_09.set_later", st.tuples(st.deferred(_rotation), st.deferred(_rotation)),
+    ctx.compare_random("problem_09.set_later", st.tuples(ROTATIONS, ROTATIONS),
                        name="set_transform", tol=EXACT, compare=compare, examples=10)
 
 

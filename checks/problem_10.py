@@ -1,4 +1,8 @@
-"""Checks of problem 10: properties of rotation matrices (multiple choice and a matrix read off a figure)."""
+"""Checks of problem 10: properties of rotation matrices (multiple choice and a matrix read off a figure).
+
+The multiple-choice checks (a) and (b) are secret: their keys stay with the instructor (the student kit defers
+them to the graded submission).
+"""
 
 import numpy as np
 
@@ -20,35 +24,41 @@ def _choice(ctx, key, options):
     return value
 
 
-@check(1, title="(a) the matrix that is NOT orthonormal", stage=STAGE_VALUES)
+@check(1, title="(a) the matrix that is NOT orthonormal", stage=STAGE_VALUES, secret=True)
 def check_a(ctx):
-    from reference.problem_10 import MATRICES_A, answer_a, orthonormality_defect
-
-    choice, key = _choice(ctx, "a", range(1, 5)), answer_a()
-    if choice != key:
-        fail(f"option {choice} is orthonormal: max |A.T A - E| = {orthonormality_defect(MATRICES_A[choice - 1]):.3f} "
+    key = ctx.reference("problem_10.key_a")
+    choice = _choice(ctx, "a", range(1, 5))
+    if choice != key["key"]:
+        fail(f"option {choice} is orthonormal: max |A.T A - E| = {key['defects'][choice - 1]:.3f} "
              f"(zero up to the printed three decimals).",
              "Check A.T @ A for each option: only one has a column that is not a unit vector.", "wrong_choice")
 
 
-@check(1, title="(b) the matrix that IS a rotation", stage=STAGE_VALUES)
+@check(1, title="(b) the matrix that IS a rotation", stage=STAGE_VALUES, secret=True)
 def check_b(ctx):
-    from reference.problem_10 import MATRICES_B, answer_b, is_orthonormal
-
-    choice, key = _choice(ctx, "b", range(1, 5)), answer_b()
-    if choice != key:
-        A = MATRICES_B[choice - 1]
-        why = (f"it is orthonormal but det = {np.linalg.det(A):+.3f}: a reflection"
-               if is_orthonormal(A) else "it is not orthonormal")
+    key = ctx.reference("problem_10.key_b")
+    choice = _choice(ctx, "b", range(1, 5))
+    if choice != key["key"]:
+        orthonormal = key["orthonormal"][choice - 1]
+        why = (f"it is orthonormal but det = {key['det'][choice - 1]:+.3f}: a reflection"
+               if orthonormal else "it is not orthonormal")
         fail(f"option {choice} is not a rotation: {why}.",
-             "A rotation is orthonormal AND has determinant +1.", "reflection" if is_orthonormal(A) else "wrong_choice")
+             "A rotation is orthonormal AND has determinant +1.", "reflection" if orthonormal else "wrong_choice")
+
+
+def nearest_rotation(A):
+    """The rotation nearest to ``A`` (Frobenius norm): ``u @ vt`` of the singular value decomposition
+    ``A = u s vt``, with the last left singular vector reversed when that product is a reflection."""
+    u, _, vt = np.linalg.svd(np.asarray(A, dtype=float))
+    if np.linalg.det(u @ vt) < 0:
+        u[:, -1] = -u[:, -1]
+    return u @ vt
 
 
 @check(2, title="(c) A_IC read off the figure is a proper rotation close to the course's orientation",
        stage=STAGE_VALUES)
 def check_c(ctx):
-    from reference.problem_10 import COURSE_C, nearest_rotation
-
+    target = nearest_rotation(ctx.reference("problem_10.course_c"))
     A = as_array(ctx.answer("c"), "[problem_10] c", (3, 3))
     defect = float(np.max(np.abs(A.T @ A - np.eye(3))))
     if defect > READ_OFF:
@@ -59,7 +69,6 @@ def check_c(ctx):
     if np.linalg.det(A) < 0:
         fail(f"your A_IC is a reflection (det = {np.linalg.det(A):+.2f}), not a rotation.",
              "One axis points the wrong way: C is a right-handed frame.", "reflection")
-    target = nearest_rotation(COURSE_C)
     R = nearest_rotation(A)
     angle = np.degrees(np.arccos(np.clip((np.trace(target.T @ R) - 1) / 2, -1, 1)))
     if angle > C_ANGLE_DEG:

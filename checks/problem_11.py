@@ -30,19 +30,19 @@ def _assert_entries(got, expected, keys, mistakes, what):
 @check(2, title="the test file's vector (C = R3(30°) at (1, 2, 0), C_v = (0, -2, 0) from C_r_CO = (1, 0, 0)) in I "
        "and in C", stage=STAGE_VALUES, group="test_values")
 def check_test_values(ctx):
-    from reference.problem_11 import make_test_objects
-
-    C, v = make_test_objects()
+    test = ctx.reference("problem_11.test_objects")
+    A_IC, I_r_IC, C_v, C_r_CO = (test[k] for k in ("A_IC", "I_r_IC", "C_v", "C_r_CO"))
     mistakes = {
-        "I_v": [Mistake("transpose", C.A_IC.T @ v.C_v, TRANSPOSE_HINT)],
-        "I_r_IO": [Mistake("offset_not_rotated", C.I_r_IC + v.C_r_CO, OFFSET_HINT),
-                   Mistake("transpose", C.I_r_IC + C.A_IC.T @ v.C_r_CO, TRANSPOSE_HINT)],
-        "C_coords": [Mistake("transpose", C.A_IC @ C.A_IC @ v.C_v, TRANSPOSE_HINT + " get_coords(X) returns "
+        "I_v": [Mistake("transpose", A_IC.T @ C_v, TRANSPOSE_HINT)],
+        "I_r_IO": [Mistake("offset_not_rotated", I_r_IC + C_r_CO, OFFSET_HINT),
+                   Mistake("transpose", I_r_IC + A_IC.T @ C_r_CO, TRANSPOSE_HINT)],
+        "C_coords": [Mistake("transpose", A_IC @ A_IC @ C_v, TRANSPOSE_HINT + " get_coords(X) returns "
                              "X_v = A_IX.T @ I_v.")],
     }
-    args = (C.A_IC, C.I_r_IC, v.C_v, v.C_r_CO)
-    _assert_entries(ctx.student("problem_11.vector", *args), ctx.reference("problem_11.vector", *args),
-                    KEYS_SOLVE, mistakes, "(the test file's values)")
+    args = (A_IC, I_r_IC, C_v, C_r_CO)
+    expected = ctx.reference("problem_11.vector", *args)
+    _assert_entries(ctx.student("problem_11.vector", *args), expected, KEYS_SOLVE, mistakes,
+                    "(the test file's values)")
 
 
 #: a fixed example (A_IC, I_r_IC, C_v, C_r_CO, A_new, I_r_new), run before the random ones

@@ -14,6 +14,7 @@ from grader.checking import (
     STAGE_SHAPE,
     STAGE_STRUCTURE,
     STAGE_VALUES,
+    STRUCTURE,
     CheckFailure,
     Mistake,
     as_array,
@@ -23,6 +24,7 @@ from grader.checking import (
     close,
     fail,
     figure,
+    format_array,
 )
 
 from ._rigid import (
@@ -43,6 +45,8 @@ from ._rigid import (
     describe_state,
     initial,
     kinematic_mistakes_at,
+    sheet_state,
+    skew,
     simulate,
     subsample,
     trace_array,
@@ -59,7 +63,7 @@ MANUAL = {
 @check(1, title="integration_step keeps A_IB (3 x 3) and B_r_IB, B_v_B, B_omega_B (3-vectors) numeric",
        stage=STAGE_SHAPE, group="integration")
 def check_integration_shape(ctx):
-    got = ctx.student("problem_12.integrate", initial(2), DT, 1)
+    got = ctx.student("problem_12.integrate", initial(ctx, 2), DT, 1)
     shapes = {"A_IB": (2, 3, 3), "B_r_IB": (2, 3), "B_v_B": (2, 3), "B_omega_B": (2, 3)}
     for key, shape in shapes.items():
         as_array(trace_array(got, key, shape)[1], f"{key} after one step", shape[1:])
@@ -83,20 +87,26 @@ def check_integration_rotation(ctx):
         if close(A, simulate(GENERIC, DT, STEPS, "explicit_euler")["A_IB"], SHEET):
             fail(exc.message, KINEMATIC_MISTAKES["explicit_euler"], "explicit_euler")
         raise
+    if close(A, GENERIC["A_IB"], STRUCTURE):
+        fail(f"A_IB after 100 steps is still its initial value: the body did not turn, although B_omega_B = "
+             f"{compact(GENERIC['B_omega_B'])}.\ngot:\n{format_array(A)}",
+             "integration_step must turn A_IB every step: A_IB = expm(dt * I_Om) @ A_IB with I_Om = "
+             "skew(A_IB @ B_omega_B).", "no_motion")
 
 
 @check(3, title="the sheet's cases 1-3: A_IB and B_r_IB after 100 steps of 0.01 s", stage=STAGE_VALUES,
        group="integration")
 def check_sheet_cases(ctx):
     for case, (A_target, r_target) in SHEET_TARGETS.items():
-        got = ctx.student("problem_12.integrate", initial(case), DT, STEPS, STEPS)
+        start = initial(ctx, case)
+        got = ctx.student("problem_12.integrate", start, DT, STEPS, STEPS)
         for key, target in (("A_IB", A_target), ("B_r_IB", r_target)):
             final = trace_array(got, key, (2, *np.shape(target)))[-1]
             if close(final, target, SHEET):
                 continue
-            final_state = {k: trace_array(got, k, (2, *np.shape(initial(case)[k])))[-1] for k in STATE}
+            final_state = {k: trace_array(got, k, (2, *np.shape(start[k])))[-1] for k in STATE}
             mistakes = [Mistake(name, mistaken[key], hint) for name, hint in KINEMATIC_MISTAKES.items()
-                        if _explains(mistaken := simulate(initial(case), DT, STEPS, name), final_state)]
+                        if _explains(mistaken := simulate(start, DT, STEPS, name), final_state)]
             assert_close(final, target, f"{key} at t = 1 s", SHEET, mistakes,
                          context=f"in case {case} (the sheet's value)")
 
@@ -127,8 +137,6 @@ POINTS = vectors(2.0)
 
 
 def _point_mistakes(method, state, q):
-    from reference.rotations import skew
-
     A, r, v, a = (np.asarray(state[k], dtype=float) for k in ("A_IB", "B_r_IB", "B_v_B", "B_a_B"))
     Om, Omd = skew(state["B_omega_B"]), skew(state["B_omegaDot_B"])
     body = "The result must be in inertial coordinates: multiply the body-frame vector by A_IB."
@@ -177,12 +185,10 @@ def check_acceleration_of_point(ctx):
 @check(2, title="part (b): the x-y traces of B and Q over 3 s (3001 steps of 1 ms) follow the reference",
        stage=STAGE_VALUES, group="wheel")
 def check_wheel(ctx):
-    from reference.problem_12 import B_R_BQ, PART_B
-
-    state = {"A_IB": np.eye(3), "B_r_IB": np.zeros(3), **{k: np.array(v, dtype=float) for k, v in PART_B.items()}}
-    args = (state, WHEEL_DT, WHEEL_STEPS, B_R_BQ, WHEEL_EVERY)
-    got = ctx.student("problem_12.wheel", *args, timeout=20)
+    sheet = ctx.reference("problem_12.constants")
+    args = (sheet_state(sheet["PART_B"]), WHEEL_DT, WHEEL_STEPS, sheet["B_R_BQ"], WHEEL_EVERY)
     expected = ctx.reference("problem_12.wheel", *args, persist=True)
+    got = ctx.student("problem_12.wheel", *args, timeout=20)
     keys = ("I_r_IB", "I_r_IQ")
     traces = {key: trace_array(got, key, expected[key].shape) for key in keys}
     ctx.add_figure(figure(

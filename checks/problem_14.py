@@ -6,25 +6,30 @@ accepted); the motion itself is compared with the reference.
 
 import numpy as np
 
-from checks._rigid import SIMULATION, STATE, assert_traces, trace_array
+from checks._rigid import SIMULATION, STATE, assert_traces, compact, sheet_state, trace_array
 from checks.problem_13 import assert_screw
-from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, fail
+from checks.problem_12 import GENERIC
+from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, close, fail
 
 TITLE = "Visualizing Twists"
 
 DT, STEPS = 0.01, 100  # t_end = 1 s with the course's loop
 
 
-def _start():
-    from reference.problem_14 import INITIAL
-
-    return {"A_IB": np.eye(3), "B_r_IB": np.zeros(3), **{k: np.array(v, dtype=float) for k, v in INITIAL.items()}}
+def _start(ctx):
+    return sheet_state(ctx.reference("problem_14.constants")["INITIAL"])
 
 
 @check(1, title="screw_axis() without rotation (omega = 0) returns zero vectors, as its docstring says",
        stage=STAGE_STRUCTURE, group="at_rest")
 def check_screw_at_rest(ctx):
-    state = {**_start(), "B_v_B": np.array([1.0, -2.0, 0.5]), "B_omega_B": np.zeros(3)}
+    moving = ctx.student("problem_13.screw", GENERIC)
+    if close(moving, np.zeros((2, 3)), EXACT):
+        fail(f"screw_axis() returns zero vectors for a rotating body too (B_omega_B = {compact(GENERIC['B_omega_B'])}): "
+             "the zero answer is meant for omega = 0 only.",
+             "With rotation, T is on the screw axis: B_r_BT = (omega x v_B) / |omega|^2; return zeros only when "
+             "omega @ omega == 0.", "always_zero")
+    state = {**_start(ctx), "B_v_B": np.array([1.0, -2.0, 0.5]), "B_omega_B": np.zeros(3)}
     try:
         assert_close(ctx.student("problem_13.screw", state), np.zeros((2, 3)), "screw_axis() with omega = 0",
                      EXACT)
@@ -36,8 +41,9 @@ def check_screw_at_rest(ctx):
 @check(1, title="the sheet's run (100 steps of 0.01 s): the body's state follows the reference",
        stage=STAGE_VALUES, group="run")
 def check_run_state(ctx):
-    got = ctx.student("problem_12.integrate", _start(), DT, STEPS)
-    expected = ctx.reference("problem_12.integrate", _start(), DT, STEPS)
+    start = _start(ctx)
+    expected = ctx.reference("problem_12.integrate", start, DT, STEPS)
+    got = ctx.student("problem_12.integrate", start, DT, STEPS)
     try:
         assert_traces(got, expected, STATE, SIMULATION, dt=DT)
     except CheckFailure as exc:
@@ -48,7 +54,7 @@ def check_run_state(ctx):
 @check(3, title="the sheet's run: at every step T lies on the screw axis and moves parallel to omega",
        stage=STAGE_VALUES, group="run")
 def check_run_screw(ctx):
-    got = ctx.student("problem_14.screw_run", _start(), DT, STEPS)
+    got = ctx.student("problem_14.screw_run", _start(ctx), DT, STEPS)
     n = STEPS + 1
     screws = trace_array(got, "screw", (n, 2, 3))
     w, v = trace_array(got, "B_omega_B", (n, 3)), trace_array(got, "B_v_B", (n, 3))

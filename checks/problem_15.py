@@ -20,6 +20,7 @@ from checks._rigid import (
     first_departure,
     kinematic_mistakes_at,
     kinematic_step,
+    skew,
     subsample,
     trace_array,
     vectors,
@@ -77,8 +78,6 @@ DYNAMIC_MISTAKES = {
 
 def natural_dynamics(state, mistake=None):
     """``(B_a_B, B_omegaDot_B)`` of the problem data, or with the named mistake of ``DYNAMIC_MISTAKES``."""
-    from reference.rotations import skew
-
     I, w = np.asarray(state["B_I_B"], dtype=float), np.asarray(state["B_omega_B"], dtype=float)
     gyroscopic = -skew(w) @ I @ w
     omega_dot = {
@@ -101,11 +100,11 @@ def dynamic_step(state, dt, mistake=None):
 STEP_MISTAKES = {**DYNAMIC_MISTAKES, **KINEMATIC_MISTAKES}
 
 
-def case_state(k):
-    from reference.problem_15 import CASES, INERTIA, MASS
-
-    v, w = (np.array(x, dtype=float) for x in CASES[k])
-    return {"m": MASS, "B_I_B": INERTIA, "B_v_B": v, "B_omega_B": w}
+def case_state(ctx, k):
+    """The sheet's case ``k``: the body (mass, inertia) with its initial velocities (the package's constants)."""
+    sheet = ctx.reference("problem_15.constants")
+    v, w = (np.array(x, dtype=float) for x in sheet["CASES"][str(k)])
+    return {"m": sheet["MASS"], "B_I_B": sheet["INERTIA"], "B_v_B": v, "B_omega_B": w}
 
 
 def full_state(state):
@@ -139,7 +138,7 @@ STATES = st.fixed_dictionaries({
 @check(3, title="compute_natural_dynamics: B_a_B = 0 and B_I_B omegaDot = -omega x (B_I_B omega) on random states",
        stage=STAGE_RANDOM, group="natural_dynamics")
 def check_natural_dynamics(ctx):
-    ctx.student("problem_15.accelerations", case_state(3))
+    ctx.student("problem_15.accelerations", case_state(ctx, 3))
 
     def compare(got, expected, args):
         state = args[0]
@@ -162,7 +161,7 @@ def check_angular_momentum(ctx):
         return [Mistake("inertial_frame", state["A_IB"] @ expected, "B_L_B is the angular momentum in BODY "
                         "coordinates: B_I_B @ B_omega_B, without A_IB (the check maps it to I itself).")]
 
-    ctx.student("problem_15.angular_momentum", case_state(3))
+    ctx.student("problem_15.angular_momentum", case_state(ctx, 3))
     ctx.compare_random("problem_15.angular_momentum", st.tuples(STATES), name="angular_momentum()", tol=EXACT,
                        mistakes=mistakes, examples=10, describe=lambda args: describe_state(args[0]))
 
@@ -196,9 +195,9 @@ def _diagnose_run(exc, got, expected, state, limit=1000):
 @check(3, title="the sheet's case 6 after 30 s (30000 steps of 1 ms): A_IB and B_r_IB as printed",
        stage=STAGE_VALUES, group="simulation")
 def check_case_6(ctx):
-    state, every = full_state(case_state(6)), 100
-    got = ctx.student("problem_15.simulate", state, DT, LONG, every, timeout=30)
+    state, every = full_state(case_state(ctx, 6)), 100
     expected = ctx.reference("problem_15.simulate", state, DT, LONG, every, persist=True)
+    got = ctx.student("problem_15.simulate", state, DT, LONG, every, timeout=30)
     n = len(expected["step"])
     final = {key: trace_array(got, key, (n, *np.shape(state[key])))[-1] for key in ("A_IB", "B_r_IB")}
     try:
@@ -212,12 +211,14 @@ def check_case_6(ctx):
        stage=STAGE_VALUES, group="simulation")
 def check_other_cases(ctx):
     for k in (1, 2, 4, 5):
-        state = full_state(case_state(k))
-        got = ctx.student("problem_15.simulate", state, DT, SHORT, SHORT, timeout=20)
+        state = full_state(case_state(ctx, k))
         expected = ctx.reference("problem_15.simulate", state, DT, SHORT, SHORT, persist=True)
+        # the trace every 10 steps, to localize a departure (fetched whether or not it is needed)
+        traced = ctx.reference("problem_15.simulate", state, DT, SHORT, 10, persist=True)
+        got = ctx.student("problem_15.simulate", state, DT, SHORT, SHORT, timeout=20)
         if first_departure(got, expected, STATE, SIMULATION) is None:
             continue
-        got, expected = (call("problem_15.simulate", state, DT, SHORT, 10) for call in (ctx.student, ctx.reference))
+        got, expected = ctx.student("problem_15.simulate", state, DT, SHORT, 10), traced
         try:
             assert_traces(got, expected, STATE, SIMULATION, what=f"in case {k}", dt=DT)
         except CheckFailure as exc:
@@ -227,10 +228,10 @@ def check_other_cases(ctx):
 @check(2, title="case 3 over 5 s: the inertial angular momentum A_IB B_L_B stays constant (and follows the "
        "reference)", stage=STAGE_VALUES, group="momentum")
 def check_momentum_case_3(ctx):
-    state = full_state(case_state(3))
+    state = full_state(case_state(ctx, 3))
     args = (state, DT, MOMENTUM_STEPS, MOMENTUM_EVERY, True)
-    got = ctx.student("problem_15.simulate", *args, timeout=30)
     expected = ctx.reference("problem_15.simulate", *args, persist=True)
+    got = ctx.student("problem_15.simulate", *args, timeout=30)
     n = len(expected["step"])
     A, L = trace_array(got, "A_IB", (n, 3, 3)), trace_array(got, "B_L_B", (n, 3))
     I_L = np.einsum("nij,nj->ni", A, L)

@@ -7,7 +7,7 @@ Symbolic answers are evaluated inside the probe at points the check draws; the g
 import numpy as np
 from hypothesis import strategies as st
 
-from checks._rigid import FINITE, compact
+from checks._rigid import FINITE, body_inertia, compact
 from grader.checking import EXACT, STAGE_RANDOM, Mistake, as_array, assert_close, check, fail
 
 TITLE = "Computing Inertia Matrices"
@@ -27,6 +27,7 @@ AXES_HINT = "The moment about the 1-axis involves the extents along the OTHER tw
 
 def _diag(m, a, b, c, factor):
     return factor * m * np.diag([b**2 + c**2, a**2 + c**2, a**2 + b**2])
+
 
 
 def body_mistakes(name, m, a, b, c):
@@ -126,19 +127,17 @@ def check_particles(ctx):
 
 
 def _symbolic_check(ctx, name):
-    from reference import inertia
-
-    rng = np.random.default_rng(ctx.seed)
-    points = rng.uniform(0.2, 3.0, size=(5, 4))
+    points = ctx.draw(lambda rng: rng.uniform(0.2, 3.0, size=(5, 4)))
+    expected = [ctx.reference("problem_16.body", name, *map(float, point)) for point in points]
     got = ctx.student("problem_16.symbolic", name, points)
     if isinstance(got, str):
         fail(f"{name}_inertia_symbolic() cannot be evaluated: {got}.",
              "Return a 3 x 3 sympy.Matrix in the symbols m, a, b, c (sympy.symbols('m a b c', positive=True)).")
     values = as_array(got, f"{name}_inertia_symbolic() evaluated at {len(points)} points", (len(points), 3, 3))
-    for point, value in zip(points, values):
+    for point, value, target in zip(points, values, expected):
         m, a, b, c = point
-        assert_close(value, getattr(inertia, f"{name}_inertia")(m, a, b, c), f"{name}_inertia_symbolic()",
-                     EXACT, body_mistakes(name, m, a, b, c), context=f"at (m, a, b, c) = {compact(point)}")
+        assert_close(value, target, f"{name}_inertia_symbolic()", EXACT, body_mistakes(name, m, a, b, c),
+                     context=f"at (m, a, b, c) = {compact(point)}")
 
 
 @check(1, title="cuboid_inertia_symbolic() equals the cuboid's inertia at random (m, a, b, c)",
@@ -172,8 +171,6 @@ def moments(draw):
 @check(2, title="part (b): the dimensions of each body reproduce diag(I1, I2, I3) (random moments)",
        stage=STAGE_RANDOM, group="dimensions")
 def check_dimensions(ctx):
-    from reference import inertia
-
     halved = {"cuboid": ("one_third", ONE_THIRD_HINT), "ellipsoid": ("semi_axes", SEMI_AXES_HINT),
               "particles": ("positions", PARTICLE_POSITION_HINT)}
 
@@ -183,7 +180,7 @@ def check_dimensions(ctx):
             fail(f"part_b must return a dict with the keys cuboid, ellipsoid, particles, got {str(got)[:200]}")
         for name in ("cuboid", "ellipsoid", "particles"):
             dims = as_array(got.get(name), f"the dimensions (a, b, c) of the {name}", (3,))
-            reproduced = getattr(inertia, f"{name}_inertia")(m, *dims)
+            reproduced = body_inertia(name, m, *dims)
             mistakes = [Mistake(*halved[name][:1], np.diag(I) / 4, halved[name][1])]
             if name == "particles":
                 mistakes.append(Mistake("mass_per_particle", np.diag(I) / 6, PARTICLE_MASS_HINT))

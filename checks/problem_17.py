@@ -7,7 +7,7 @@ never by our numbers: eigenvector signs and orders, and so the points, legitimat
 import numpy as np
 from hypothesis import strategies as st
 
-from checks._rigid import FINITE, ROTATIONS, compact
+from checks._rigid import FINITE, ROTATIONS, body_inertia, compact
 from grader.checking import (
     STAGE_RANDOM,
     STAGE_STRUCTURE,
@@ -26,13 +26,12 @@ TITLE = "Visualize Inertia Matrices"
 
 #: eigen-decompositions and square roots of well-separated moments
 REPRODUCE = Tol("reproduced inertia", 1e-8, 1e-8)
-MASS = 10.0
 
 
-def sheet_matrices():
-    from reference.problem_17 import MATRICES
-
-    return [MATRICES[k] for k in sorted(MATRICES)]
+def sheet_matrices(ctx):
+    """The sheet's four inertia matrices and the mass (the package's constants)."""
+    sheet = ctx.reference("problem_17.constants")
+    return [sheet["MATRICES"][k] for k in sorted(sheet["MATRICES"], key=int)], float(sheet["MASS"])
 
 
 @st.composite
@@ -52,9 +51,7 @@ ORIENTATION_HINT = ("Your body has the right principal moments but the wrong ori
 
 def assert_reproduces(J, B_I_G, name, note, scale_hints=(), where=""):
     """Fail unless the inertia ``J`` of the student's body equals ``B_I_G``; name the known mistakes."""
-    from reference.inertia import principal_axes
-
-    moments, _ = principal_axes(B_I_G)
+    moments = np.linalg.eigvalsh(B_I_G)
     mistakes = [Mistake("not_rotated", np.diag(moments), NOT_ROTATED_HINT),
                 *(Mistake(mistake, B_I_G * factor, hint) for mistake, factor, hint in scale_hints)]
     try:
@@ -88,25 +85,24 @@ def assert_points(got, B_I_G, m, key, n, scale_hints=(), where=""):
                       "Your points must reproduce the inertia matrix.", scale_hints, where)
 
 
-def assert_solid(got, B_I_G, m, key, size, formula, scale_hints=(), where=""):
-    from reference import inertia
-
+def assert_solid(got, B_I_G, m, key, size, body, scale_hints=(), where=""):
     entry = _entry(got, key)
     assert_close(entry.get("mass"), m, f"{key}['mass']", REPRODUCE, context=where)
     dims = as_array(entry.get(size), f"{key}[{size!r}]", (3,))
     V = as_array(entry.get("V"), f"{key}['V']", (3, 3))
     if abs(abs(np.linalg.det(V)) - 1.0) > 1e-6:
         assert_rotation(V, f"{key}['V']")
-    assert_reproduces(V @ getattr(inertia, formula)(m, *dims) @ V.T, B_I_G,
+    assert_reproduces(V @ body_inertia(body, m, *dims) @ V.T, B_I_G,
                       f"the inertia of your {key} (V @ I_body @ V.T)", f"The {key} with {size} {compact(dims)} "
                       "along the columns of V must reproduce the inertia matrix.", scale_hints, where)
 
 
 def _representation_check(ctx, assertion):
     """``assertion(got, B_I_G, m, where)`` on the sheet's four matrices, then on random ones."""
-    for k, B_I_G in enumerate(sheet_matrices(), 1):
-        assertion(ctx.student("problem_17.representations", B_I_G, MASS), B_I_G, MASS,
-                  f"for the sheet's matrix {k} (m = {MASS:g})")
+    matrices, mass = sheet_matrices(ctx)
+    for k, B_I_G in enumerate(matrices, 1):
+        assertion(ctx.student("problem_17.representations", B_I_G, mass), B_I_G, mass,
+                  f"for the sheet's matrix {k} (m = {mass:g})")
     ctx.compare_random(
         "problem_17.representations", st.tuples(inertias(), st.floats(0.5, 20.0, **FINITE)),
         name="inertia_representations", tol=REPRODUCE, examples=10,
@@ -138,7 +134,7 @@ def check_principal_axes(ctx):
                      "them as rows.", "transpose")
             raise
 
-    ctx.student("problem_17.principal_axes", sheet_matrices()[2])
+    ctx.student("problem_17.principal_axes", sheet_matrices(ctx)[0][2])
     ctx.compare_random("problem_17.principal_axes", st.tuples(inertias()), name="principal_axes", tol=REPRODUCE,
                        compare=compare, examples=10, describe=lambda args: f"B_I_G = {compact(args[0])}")
 
@@ -162,7 +158,7 @@ def check_four_points(ctx):
 def check_ellipsoid(ctx):
     hints = [("semi_axes", 0.25, "axes are the FULL axes of the ellipsoid (problem data): twice the semi-axes.")]
     _representation_check(ctx, lambda got, I, m, where: assert_solid(got, I, m, "ellipsoid", "axes",
-                                                                      "ellipsoid_inertia", hints, where))
+                                                                      "ellipsoid", hints, where))
 
 
 @check(1, title="case 4: the cuboid (edges along V) reproduces the inertia (sheet's and random matrices)",
@@ -171,4 +167,4 @@ def check_cuboid(ctx):
     hints = [("one_third", 0.25, "Your edges are half as long as needed: the cuboid's moments are m/12 (b² + c²), "
               "cyclic, so a = sqrt(6/m (-I1 + I2 + I3)).")]
     _representation_check(ctx, lambda got, I, m, where: assert_solid(got, I, m, "cuboid", "edges",
-                                                                      "cuboid_inertia", hints, where))
+                                                                      "cuboid", hints, where))

@@ -65,6 +65,12 @@ def check_zero_acceleration(ctx):
 @check(1, title="non_accelerating_point raises ValueError when no omega exists (a . r < 0) or Q coincides with B",
        stage=STAGE_STRUCTURE, group="no_solution")
 def check_no_solution(ctx):
+    solvable = (1.0, 2.0, 0.5, 0.5)
+    got = ctx.student("problem_18.non_accelerating", *solvable)
+    if isinstance(got, str):
+        fail(f"non_accelerating_point{solvable} raised {got}, but a solution exists (a . r = 1.5 >= 0): raising "
+             "ValueError counts only where there is no solution.",
+             "Raise ValueError only when a . r < 0 or r = 0; otherwise return (omega, omega_dot).", "always_raises")
     for args, why in (((1.0, 0.0, -1.0, 0.5), "a . r < 0: omega² would be negative"),
                       ((1.0, 2.0, 0.0, 0.0), "Q coincides with B (r = 0)")):
         got = ctx.student("problem_18.non_accelerating", *args)

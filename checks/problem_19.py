@@ -76,12 +76,10 @@ def check_composite_inertia(ctx):
                        mistakes=mistakes, examples=10)
 
 
-def _figure_21(steiner_sign=1.0, own_factor=1.0):
-    """I3 / (m/120) of the object of Figure 21 from the reference's blocks, with a mistake applied: the sign of
-    the parallel-axis term, or a factor on each block's own moment (4 for m/3 instead of m/12)."""
-    from reference.problem_19 import blocks
-
-    masses, centres, inertias = blocks()
+def _figure_21(blocks, steiner_sign=1.0, own_factor=1.0):
+    """I3 / (m/120) of the object of Figure 21 from the package's blocks (m = 1), with a mistake applied: the sign
+    of the parallel-axis term, or a factor on each block's own moment (4 for m/3 instead of m/12)."""
+    masses, centres, inertias = (np.asarray(x, dtype=float) for x in blocks)
     r_G = masses @ centres / masses.sum()
     I = sum(own_factor * I_k + steiner_sign * m * _steiner(r - r_G) for m, r, I_k in zip(masses, centres, inertias))
     return 120 * I[2, 2]
@@ -90,24 +88,23 @@ def _figure_21(steiner_sign=1.0, own_factor=1.0):
 @check(2, title="answers.toml: I3 of the object of Figure 21 as a multiple of m/120", stage=STAGE_VALUES,
        group="answer")
 def check_answer(ctx):
-    from reference.problem_19 import answer
-
+    expected = ctx.reference("problem_19.answer")
+    blocks = ctx.reference("problem_19.blocks")
     given = ctx.answer("I3_in_m_over_120")
     try:
         value = float(given)
     except (TypeError, ValueError):
         fail(f"[problem_19] I3_in_m_over_120 must be a number, got {given!r}.")
-    expected = answer()
     if abs(value - expected) <= INTEGER.atol:
         return
     message = (f"I3 / (m/120) is not the expected value.\ntolerance: {INTEGER}\ngot: {value:g}\nexpected: "
                f"{expected:g} (the parallel-axis theorem over the central 4 x 2 block of 0.8 m and the two 1 x 1 "
                "blocks of 0.1 m at (±1.5, ±1.5))")
     for name, mistaken, hint in (
-        ("parallel_axis_sign", _figure_21(steiner_sign=-1.0), SIGN_HINT),
-        ("no_parallel_axis", _figure_21(steiner_sign=0.0), "The small blocks are off the centre of gravity: add "
-         "m_k |r_k|² (parallel-axis theorem) to their own moments."),
-        ("one_third", _figure_21(own_factor=4.0), "A block's own moment is m/12 (w² + d²), not m/3."),
+        ("parallel_axis_sign", _figure_21(blocks, steiner_sign=-1.0), SIGN_HINT),
+        ("no_parallel_axis", _figure_21(blocks, steiner_sign=0.0), "The small blocks are off the centre of gravity: "
+         "add m_k |r_k|² (parallel-axis theorem) to their own moments."),
+        ("one_third", _figure_21(blocks, own_factor=4.0), "A block's own moment is m/12 (w² + d²), not m/3."),
     ):
         if abs(value - mistaken) <= INTEGER.atol:
             fail(message, f"{hint} (That gives {mistaken:g}.)", name)

@@ -7,7 +7,7 @@ follows the physics: as printed, options 2, 3 and 4 are all not inertia matrices
 
 import numpy as np
 
-from checks._rigid import compact
+from checks._rigid import compact, quaternion_rotation
 from grader.checking import STAGE_STRUCTURE, STAGE_VALUES, check, fail
 
 TITLE = "Understanding Inertia Matrices"
@@ -15,10 +15,8 @@ MANUAL = {"a": ("20(a): Why is the matrix you chose not an inertia matrix?", 1)}
 
 
 def _rotation(seed):
-    from reference.rotations import cardan
-
     rng = np.random.default_rng(seed)
-    return cardan(*rng.uniform(-np.pi, np.pi, 3))
+    return quaternion_rotation(rng.normal(size=4))
 
 
 def _rotated(moments, seed):
@@ -26,10 +24,9 @@ def _rotated(moments, seed):
     return A @ np.diag(moments) @ A.T
 
 
-def _sheet(k):
-    from reference.problem_20 import MATRICES_A
-
-    return MATRICES_A[k]
+def _sheet(ctx, k):
+    """The sheet's matrix of option ``k`` of (a), as printed (the package's constants)."""
+    return ctx.reference("problem_20.sheet_matrices")[str(k)]
 
 
 def _option(ctx, key):
@@ -40,19 +37,38 @@ def _option(ctx, key):
     return given if isinstance(given, int) and not isinstance(given, bool) else repr(given)
 
 
+#: judged with every set of matrices, with the opposite verdict expected: a constant answer cannot pass a check
+CONTROLS = {
+    True: ("a matrix with a negative principal moment, diag(-1, 2, 2)", np.diag([-1.0, 2.0, 2.0])),
+    False: ("a valid inertia matrix, diag(2, 2.5, 3)", np.diag([2.0, 2.5, 3.0])),
+}
+
+
 def _judge(ctx, matrices, expected_ok, property_text, mistake=None):
     """Fail at the first matrix ``(label, I)`` that the student's ``is_inertia_matrix`` misjudges; ``mistake(label)``
-    gives the ``(hint, diagnosis)`` for it."""
-    results = ctx.student("problem_20.is_inertia", [I for _, I in matrices])
-    if not isinstance(results, list) or len(results) != len(matrices):
+    gives the ``(hint, diagnosis)`` for it.  A control matrix with the opposite verdict is judged too, so that an
+    answer that does not depend on the matrix earns nothing."""
+    control_label, control = CONTROLS[expected_ok]
+    results = ctx.student("problem_20.is_inertia", [I for _, I in matrices] + [control])
+    if not isinstance(results, list) or len(results) != len(matrices) + 1 or not all(
+            isinstance(r, list) and len(r) == 2 for r in results):
         fail(f"is_inertia_matrix must return (ok, reason) for each matrix, got {str(results)[:200]}")
-    for (label, I), (ok, reason) in zip(matrices, results):
-        if ok is not expected_ok:
-            moments = np.linalg.eigvals(I).real if np.abs(I - I.T).max() > 0 else np.linalg.eigvalsh(I)
-            hint, diagnosis = mistake(label) if mistake else ("", "")
-            fail(f"is_inertia_matrix(I) returned {ok} (reason: {reason!r}) for {label}, which {property_text}.\n"
-                 f"I = {compact(I)}\neigenvalues: {compact(np.sort(moments))}\nexpected: {expected_ok}",
-                 hint, diagnosis)
+    judged = [(label, I, expected_ok, property_text, mistake) for label, I in matrices]
+    judged.append((control_label, control, not expected_ok,
+                   "is a valid inertia matrix" if not expected_ok else "is not an inertia matrix", None))
+    for (label, I, expected, text, diagnose), (ok, reason) in zip(judged, results):
+        if ok is expected:
+            continue
+        moments = np.linalg.eigvals(I).real if np.abs(I - I.T).max() > 0 else np.linalg.eigvalsh(I)
+        message = (f"is_inertia_matrix(I) returned {ok} (reason: {reason!r}) for {label}, which {text}.\n"
+                   f"I = {compact(I)}\neigenvalues: {compact(np.sort(moments))}\nexpected: {expected}")
+        if label == control_label and len({ok for ok, _ in results}) == 1:
+            fail(f"{message}\nIt returned {ok} for every matrix it was given.",
+                 "The answer must depend on the matrix: test symmetry, positive definiteness and the triangle "
+                 "inequality of the principal moments, and return True only when all three hold.",
+                 "constant_answer")
+        hint, diagnosis = diagnose(label) if diagnose else ("", "")
+        fail(message, hint, diagnosis)
 
 
 @check(1, title="is_inertia_matrix accepts valid inertia matrices (random orientations, the sheet's option 1, a "
@@ -61,7 +77,7 @@ def check_accepts_valid(ctx):
     rng = np.random.default_rng(ctx.seed)
     matrices = [(f"a random inertia matrix (principal moments {compact(m)})", _rotated(m, rng.integers(2**31)))
                 for m in (np.array([y + z, x + z, x + y]) for x, y, z in rng.uniform(0.2, 2.0, (4, 3)))]
-    matrices += [("the sheet's option 1", _sheet(1)), ("a flat plate diag(1, 1, 2)", np.diag([1.0, 1.0, 2.0]))]
+    matrices += [("the sheet's option 1", _sheet(ctx, 1)), ("a flat plate diag(1, 1, 2)", np.diag([1.0, 1.0, 2.0]))]
 
     def mistake(label):
         if "plate" in label:
@@ -78,7 +94,7 @@ def check_accepts_valid(ctx):
 def check_rejects_non_symmetric(ctx):
     skew = np.array([[0.0, -0.1, 0.05], [0.1, 0.0, -0.08], [-0.05, 0.08, 0.0]])
     matrices = [("a rotated diag(2, 2.5, 3) plus a small skew-symmetric part", _rotated([2.0, 2.5, 3.0], 7) + skew),
-                ("the sheet's option 2", _sheet(2))]
+                ("the sheet's option 2", _sheet(ctx, 2))]
     hint = ("An inertia matrix is symmetric (I_ij = I_ji). np.linalg.eigvalsh reads only one triangle of the "
             "matrix, so test the symmetry first: np.allclose(I, I.T).")
     _judge(ctx, matrices, False, "is not symmetric", lambda label: (hint, "forgot_symmetry"))
@@ -100,7 +116,7 @@ def check_rejects_triangle(ctx):
     matrices = [("diag(1, 1.5, 3)", np.diag([1.0, 1.5, 3.0])),
                 ("a rotated diag(1, 1.5, 3) whose diagonal entries satisfy the triangle inequality",
                  _rotated([1.0, 1.5, 3.0], 3)),
-                ("the sheet's option 3", _sheet(3)), ("the sheet's option 4", _sheet(4))]
+                ("the sheet's option 3", _sheet(ctx, 3)), ("the sheet's option 4", _sheet(ctx, 4))]
 
     def mistake(label):
         if label.startswith("diag"):
@@ -114,15 +130,14 @@ def check_rejects_triangle(ctx):
 
 
 @check(1, title="20(a): an option that is not an inertia matrix (as printed, options 2, 3 and 4 all qualify)",
-       stage=STAGE_VALUES, group="part_a")
+       stage=STAGE_VALUES, group="part_a", secret=True)
 def check_part_a(ctx):
-    from reference.problem_20 import classify, key_a
-
+    key = ctx.reference("problem_20.key_a")
     given = _option(ctx, "a")
-    keys = key_a()
+    keys = key["keys"]
     if given in keys:
         return
-    reasons = "; ".join(f"({k}) {reason}" for k, (ok, reason) in classify().items())
+    reasons = "; ".join(f"({k}) {reason}" for k, (ok, reason) in key["classify"].items())
     fail(f"[problem_20] a = {given} is not an option whose matrix fails to be an inertia matrix.\n"
          f"As printed, the matrices make several options correct (physics wins): any of {keys} is accepted.\n"
          f"{reasons}",
@@ -131,12 +146,9 @@ def check_part_a(ctx):
 
 
 @check(1, title="20(b): the statement that is not necessarily correct for the object of Figure 22",
-       stage=STAGE_VALUES, group="part_b")
+       stage=STAGE_VALUES, group="part_b", secret=True)
 def check_part_b(ctx):
-    import tomllib
-    from importlib import resources
-
-    key = tomllib.loads(resources.files("reference").joinpath("answers.toml").read_text())["problem_20"]["b"]
+    key = ctx.reference("problem_20.key_b")
     given = _option(ctx, "b")
     if given != key:
         fail(f"[problem_20] b = {given} is not the expected option.",

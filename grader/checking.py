@@ -9,7 +9,6 @@ student's code is reached only through ``ctx.student(probe, *args)`` (sandboxed 
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 
 import numpy as np
@@ -276,9 +275,3 @@ def figure(title: str, xlabel: str, ylabel: str, student, reference, equal_axes:
                for label, x, y in reference]
     return Figure(title, xlabel, ylabel, tuple(series), equal_axes)
 
-
-def encode_key(probe: str, args: tuple) -> str:
-    """A stable text key for a probe call (used by the reference cache)."""
-    from probes._codec import encode
-
-    return probe + json.dumps(encode(list(args)), sort_keys=True)

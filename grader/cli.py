@@ -4,6 +4,7 @@
     grade problem-N [--submission P]   grade problem N of the submission in P (default: the current folder)
     grade list                         every problem, its points, and whether checks exist for it
     grade demo                         grade the bundled sample submissions
+    grade kit OUT_DIR                  build the student kit (grader, checks, template, answer key; no reference)
     grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
 
 Exit codes: 0 all checks passed, 1 some checks did not pass, 2 usage error or a submission that cannot be
@@ -70,7 +71,7 @@ def _exit_code(reports) -> int:
     statuses = {r.status for report in reports for r in report.results}
     if Status.GRADER_ERROR in statuses:
         return EXIT_GRADER
-    return EXIT_OK if statuses <= {Status.PASSED} else EXIT_FAILED
+    return EXIT_OK if statuses <= {Status.PASSED, Status.DEFERRED} else EXIT_FAILED
 
 
 def cmd_problem(args) -> int:
@@ -103,9 +104,34 @@ def cmd_problem(args) -> int:
 
 
 def cmd_demo(args) -> int:
+    from .oracle import current
+
+    if current().mode == "kit":
+        print("grade demo needs the full project (the reference solution and the sample submissions): this is the "
+              "student kit, which holds neither.\nGrade your own work with `grade problem-6` in your folder "
+              "(`grade init mywork` makes one).", file=sys.stderr)
+        return EXIT_USAGE
     from .demo import run_demo
 
     return run_demo(args)
+
+
+def cmd_kit(args) -> int:
+    from .kit import KitError, build_kit
+
+    def progress(number, seconds):
+        print(f"  recorded problem {number} in {seconds:.1f} s", file=sys.stderr)
+
+    try:
+        kit = build_kit(args.out_dir, seed=args.seed, problems=args.problems, progress=progress)
+    except KitError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    key = kit.key
+    print(f"wrote {kit.wheel}\nanswer key: {len(key.calls)} reference values, {len(key.pools)} pools of random "
+          f"inputs, {len(key.draws)} random draws, {kit.key_bytes / 1024:.0f} KiB compressed (kit seed {key.seed})."
+          f"\nStudents install it with `pip install {kit.wheel.name}`; it holds no reference code.")
+    return EXIT_OK
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -128,6 +154,13 @@ def build_parser() -> argparse.ArgumentParser:
                         help="problems to grade (default: those with checks)")
     p_demo.add_argument("--out", default=None, help="also write the demo's reports into this folder")
     p_demo.set_defaults(func=cmd_demo)
+
+    p_kit = sub.add_parser("kit", help="build the student kit (a wheel without the reference) into OUT_DIR")
+    p_kit.add_argument("out_dir", help="the folder to write the wheel into")
+    p_kit.add_argument("--seed", type=int, default=None, help="the kit's seed (pools of random inputs)")
+    p_kit.add_argument("--problems", type=_problem_number, nargs="+", default=None,
+                       help="problems whose public checks the key covers (default: all)")
+    p_kit.set_defaults(func=cmd_kit)
 
     from .batch import add_batch_parser
 

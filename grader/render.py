@@ -22,6 +22,7 @@ COLOURS = {
     "not_implemented": "33",
     "skipped": "90",
     "grader_error": "35",
+    "deferred": "34",
     "hint": "36",
 }
 

@@ -16,6 +16,7 @@ class Status(str, Enum):
     NOT_IMPLEMENTED = "not_implemented"  # still the template's stub, or an unanswered question
     SKIPPED = "skipped"  # not run because an earlier stage failed
     GRADER_ERROR = "grader_error"  # a defect of the grader: not the student's fault
+    DEFERRED = "deferred"  # not graded here: its key stays with the instructor (graded on submission)
 
     @property
     def symbol(self) -> str:
@@ -27,6 +28,7 @@ class Status(str, Enum):
             "not_implemented": "…",
             "skipped": "-",
             "grader_error": "?",
+            "deferred": "◇",
         }[self.value]
 
 
@@ -118,6 +120,11 @@ class ProblemReport:
         """The score a student may see before the deadline: the visible checks' points (reports show it out of
         the full maximum, with the hidden checks' count and points beside it)."""
         return sum(r.score for r in self.results if r.visibility == "visible")
+
+    @property
+    def deferred(self) -> tuple[CheckResult, ...]:
+        """The checks not graded here (student kit): graded when the work is submitted."""
+        return tuple(r for r in self.results if r.status is Status.DEFERRED)
 
     @property
     def pending_manual(self) -> float:

@@ -110,8 +110,7 @@ def _student_error(exc) -> tuple[Status, str, str]:
 
 
 def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
-    ctx.figures = []
-    ctx.last_seed = None
+    ctx.begin(f"p{problem:02d}.{spec.name}")
     start = time.perf_counter()
     hint = diagnosis = ""
     try:
@@ -148,6 +147,11 @@ def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
     )
 
 
+#: the message of a check that the student kit does not grade
+DEFERRED_MESSAGE = ("graded when you submit: the key of this check stays with your instructor (your answer is "
+                    "taken from your submission)")
+
+
 def _not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
     """The result of a check that did not run (an earlier stage failed, or the submission cannot be loaded)."""
     return CheckResult(
@@ -167,6 +171,9 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     results = []
     blocked: dict[str, tuple[int, str]] = {}
     for spec in checks_of(module):
+        if not ctx.oracle.runs(spec, f"p{problem:02d}.{spec.name}"):
+            results.append(_not_run(spec, problem, Status.DEFERRED, DEFERRED_MESSAGE))
+            continue
         block = blocked.get(spec.group)
         if block is not None and spec.stage > block[0]:
             results.append(_not_run(spec, problem, Status.SKIPPED, f"not run: an earlier check failed first ({block[1]})"))
@@ -178,20 +185,18 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     return results
 
 
-@lru_cache(maxsize=1)
-def _model_answers() -> dict:
-    """The reference's answers.toml, read once per process (it holds the model answers of free-text questions)."""
-    from .context import _reference_package
-
-    answers, _ = read_answers(Path(_reference_package().__file__).parent)
-    return answers
+@lru_cache(maxsize=4)
+def _model_answers(oracle) -> dict:
+    """The reference's answers.toml, read once per process (it holds the model answers of free-text questions;
+    the student kit has none)."""
+    return oracle.model_answers()
 
 
 def _manual_items(module, ctx: Context, problem: int) -> list[ManualItem]:
     manual = getattr(module, "MANUAL", {})
     if not manual:
         return []
-    model = _model_answers().get(f"problem_{problem:02d}", {}).get("free_text", {})
+    model = _model_answers(ctx.oracle).get(f"problem_{problem:02d}", {}).get("free_text", {})
     texts = ctx.free_text()
     return [
         ManualItem(problem, key, question, str(texts.get(key, "") or ""), str(model.get(key, "")), float(points))
@@ -211,9 +216,11 @@ def grade_submission(
     mode: SandboxMode | None = None,
     workdir: str | Path | None = None,
     zygote=None,
+    oracle=None,
 ) -> list[ProblemReport]:
     """Grade the given problems of one submission with one sandboxed worker (forked from ``zygote``, a batch
-    slot's warm process, when given: see ``grader.sandbox.zygote``).
+    slot's warm process, when given: see ``grader.sandbox.zygote``); ``oracle`` answers for the reference
+    (default: the process's, see ``grader.oracle.current``).
 
     Raises ``SandboxError`` (a ``GraderFault``) when the worker cannot be started or cannot import its
     dependencies: a fault of the installation, for which nothing is graded."""
@@ -231,7 +238,7 @@ def grade_submission(
             child.start()
             for number in numbers:
                 start = time.perf_counter()
-                ctx = Context(number, child, answers, answers_error, seed)
+                ctx = Context(number, child, answers, answers_error, seed, oracle)
                 results = _run_checks(modules[number], ctx, number)
                 stdout, stderr = child.output()
                 reports.append(

@@ -52,3 +52,23 @@ def symbolic(pkg, points):
 @probe
 def animate(pkg):
     return module(pkg, "problem_07").animate()
+
+
+@probe
+def expressions(pkg, points):
+    """The values of ``derive()``'s expressions at the given points, from the package's numeric rotations
+    (``R3``, ``R2``, ``cardan``, ``cardan_rate_matrix``): what a correct derivation evaluates to."""
+    import numpy as np
+
+    rotations = module(pkg, "rotations")
+    out = {key: [] for key in ("A_IC1", "A_IC2", "A_IC3", "A_C3I", "C3_omega_IC3")}
+    for p in points:
+        a, b, g = p["alpha"], p["beta"], p["gamma"]
+        rates = np.array([p["alpha_dot"], p["beta_dot"], p["gamma_dot"]])
+        A3 = rotations.cardan(a, b, g)
+        out["A_IC1"].append(rotations.R3(g))
+        out["A_IC2"].append(rotations.R3(g) @ rotations.R2(b))
+        out["A_IC3"].append(A3)
+        out["A_C3I"].append(A3.T)
+        out["C3_omega_IC3"].append((rotations.cardan_rate_matrix(a, b, g) @ rates).reshape(3, 1))
+    return out

@@ -1,6 +1,6 @@
 """Probes of problem 11: bound coordinate systems and bound vectors driven through their setters."""
 
-from . import probe
+from . import module, probe
 from ._scenario import run
 
 COSYS, VECTOR = "bound.BoundCoSys", "bound.BoundVector"
@@ -44,3 +44,11 @@ def coords(pkg, A_IC, C_v, A_IX):
     """``get_coords(X)`` and ``get_coords()`` of a vector on C."""
     read = [("X_v", "v.get_coords", ["@X"]), ("C_v", "v.get_coords", [])]
     return run(pkg, _objects(A_IC, [0, 0, 0], C_v, [0, 0, 0], A_IX), read=read)["final"]
+
+
+@probe
+def test_objects(pkg):
+    """The course's test objects (``make_test_objects()``) as plain data: C's ``A_IC``, ``I_r_IC`` and the
+    vector's ``C_v``, ``C_r_CO``."""
+    C, v = module(pkg, "problem_11").make_test_objects()
+    return {"A_IC": C.A_IC, "I_r_IC": C.I_r_IC, "C_v": v.C_v, "C_r_CO": v.C_r_CO}

@@ -1,6 +1,6 @@
 """Probes of problem 12: a kinematic rigid body integrated from a state, and the motion of its points."""
 
-from . import probe
+from . import module, probe
 from ._scenario import body_run
 
 BODY = "rigid_body.RigidBodyKinematics"
@@ -26,3 +26,10 @@ def wheel(pkg, state, dt, n, B_r_BQ, every=1):
     trace = [("I_r_IB", "position_of_point", [[0.0, 0.0, 0.0]]), ("I_r_IQ", "position_of_point", [B_r_BQ])]
     out = body_run(pkg, BODY, state, [("integration_step", [dt])], n, trace=trace, every=every)
     return {"step": out["step"], **out["trace"]}
+
+
+@probe
+def constants(pkg):
+    """The sheet's data of problem 12: the cases of part (a), the state of part (b) and the point Q."""
+    p12 = module(pkg, "problem_12")
+    return {"CASES": p12.CASES, "PART_B": p12.PART_B, "B_R_BQ": p12.B_R_BQ}

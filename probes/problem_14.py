@@ -1,6 +1,6 @@
 """Probes of problem 14: the screw axis traced along a simulated motion."""
 
-from . import probe
+from . import module, probe
 from ._scenario import body_run
 
 STATE = ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")
@@ -12,3 +12,9 @@ def screw_run(pkg, state, dt, n):
     trace = [(k, k) for k in STATE] + [("screw", "screw_axis", [])]
     out = body_run(pkg, "rigid_body.RigidBodyKinematics", state, [("integration_step", [dt])], n, trace=trace)
     return {"step": out["step"], **out["trace"]}
+
+
+@probe
+def constants(pkg):
+    """The sheet's initial velocities and accelerations of problem 14."""
+    return {"INITIAL": module(pkg, "problem_14").INITIAL}

@@ -1,6 +1,6 @@
 """Probes of problem 15: the torque-free rigid body, one evaluation of its dynamics or a whole simulation."""
 
-from . import probe
+from . import module, probe
 from ._scenario import body_run
 
 BODY = "rigid_body.RigidBodyDynamics"
@@ -27,3 +27,10 @@ def simulate(pkg, state, dt, n, every=1, momentum=False):
     steps = [("compute_natural_dynamics", []), ("integration_step", [dt])]
     out = body_run(pkg, BODY, state, steps, n, trace=trace, every=every)
     return {"step": out["step"], **out["trace"]}
+
+
+@probe
+def constants(pkg):
+    """The sheet's body (mass, inertia) and its six cases of initial velocities."""
+    p15 = module(pkg, "problem_15")
+    return {"MASS": p15.MASS, "INERTIA": p15.INERTIA, "CASES": p15.CASES}

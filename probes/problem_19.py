@@ -11,3 +11,16 @@ def parallel_axis(pkg, I_G, m, r):
 @probe
 def composite(pkg, masses, centres, inertias):
     return module(pkg, "inertia").composite_inertia(masses, centres, list(inertias))
+
+
+@probe
+def blocks(pkg):
+    """The blocks of the object of Figure 21 (mass m = 1): ``[masses, centres, inertias]``."""
+    masses, centres, inertias = module(pkg, "problem_19").blocks()
+    return [masses, centres, list(inertias)]
+
+
+@probe
+def answer(pkg):
+    """I3 of the object of Figure 21 as a multiple of m/120."""
+    return module(pkg, "problem_19").answer()

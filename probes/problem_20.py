@@ -12,3 +12,26 @@ def is_inertia(pkg, matrices):
         ok, reason = result if isinstance(result, (tuple, list)) else (result, "")
         out.append([bool(ok), str(reason)])
     return out
+
+
+@probe
+def sheet_matrices(pkg):
+    """The four matrices of part (a) as printed."""
+    return module(pkg, "problem_20").MATRICES_A
+
+
+@probe
+def key_a(pkg):
+    """The options of (a) that are not inertia matrices, and the verdict on every option."""
+    p20 = module(pkg, "problem_20")
+    return {"keys": p20.key_a(), "classify": {k: [bool(ok), str(reason)] for k, (ok, reason) in p20.classify().items()}}
+
+
+@probe
+def key_b(pkg):
+    """The key of (b), from the package's answers.toml."""
+    import tomllib
+    from pathlib import Path
+
+    answers = tomllib.loads(Path(pkg.__file__).with_name("answers.toml").read_text())
+    return answers["problem_20"]["b"]

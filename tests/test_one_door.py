@@ -12,24 +12,9 @@ import pytest
 
 CHECKS = Path(__file__).resolve().parents[1] / "checks"
 
-#: Modules still converted on another branch (problems 6-20). This list must be emptied when that branch is merged;
-#: the test fails for an entry that no longer imports ``reference``, so a stale entry cannot stay behind.
-KNOWN_EXCEPTIONS = {
-    "_rigid.py",
-    "problem_06.py",
-    "problem_07.py",
-    "problem_08.py",
-    "problem_09.py",
-    "problem_10.py",
-    "problem_11.py",
-    "problem_12.py",
-    "problem_14.py",
-    "problem_15.py",
-    "problem_16.py",
-    "problem_17.py",
-    "problem_19.py",
-    "problem_20.py",
-}
+#: Modules allowed to import ``reference``: none. The test fails for an entry that no longer imports it, so a
+#: stale entry cannot stay behind.
+KNOWN_EXCEPTIONS: set[str] = set()
 
 _IMPORTERS = {("importlib", "import_module"), (None, "import_module"), (None, "__import__")}
 

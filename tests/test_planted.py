@@ -1,12 +1,31 @@
 """Every check is proven: the reference passes it, and each planted mistake is caught by the intended check with
-the intended diagnosis and message."""
+the intended diagnosis and message.
+
+Each submission is also graded with the student kit's answer key (kit mode): every public check must give the
+same status and diagnosis as with the live reference (parity), and the secret and hidden checks are deferred.
+"""
 
 import pytest
 
-from grader import grade_problem, problems
+from grader import grade_problem, grade_submission, problems
 from grader.results import Status
 
-from .submissions import build_planted, build_variant, copy_reference, correct_variants, planted_mistakes
+from .kit_support import (  # noqa: F401 (fixtures)
+    SEED,
+    answer_key,
+    assert_same_verdicts,
+    deferred_ids,
+    grade_live_and_kit,
+    kit_oracle,
+)
+from .submissions import (
+    ROOT,
+    build_planted,
+    build_variant,
+    copy_reference,
+    correct_variants,
+    planted_mistakes,
+)
 
 PROBLEMS = [p.number for p in problems()]
 
@@ -16,18 +35,32 @@ def reference_copy(tmp_path_factory):
     return copy_reference(tmp_path_factory.mktemp("ref") / "pkg")
 
 
+def grade_both(problem, submission, kit_oracle):
+    """The live report and the kit's report of one problem of one submission (one sandboxed child)."""
+    return grade_live_and_kit(problem, submission, kit_oracle)
+
+
 @pytest.mark.parametrize("problem", PROBLEMS)
-def test_reference_scores_full_marks(problem, reference_copy):
-    report = grade_problem(problem, reference_copy, seed=12345)
+def test_reference_scores_full_marks(problem, reference_copy, kit_oracle, deferred_ids):
+    report = grade_problem(problem, reference_copy, seed=SEED)
+    kit = grade_problem(problem, reference_copy, seed=SEED, oracle=kit_oracle)
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
     assert report.score == report.auto_max_score > 0
+    assert_same_verdicts(f"reference p{problem:02d}", report, kit, deferred_ids)
+
+
+def test_untouched_template_parity(kit_oracle, deferred_ids):
+    live = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED)
+    kit = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED, oracle=kit_oracle)
+    for one, other in zip(live, kit):
+        assert_same_verdicts(f"template p{one.problem:02d}", one, other, deferred_ids)
 
 
 @pytest.mark.parametrize("mistake", planted_mistakes(), ids=lambda m: m.name)
-def test_planted_mistake_is_caught(mistake, tmp_path):
+def test_planted_mistake_is_caught(mistake, tmp_path, kit_oracle, deferred_ids):
     submission = build_planted(mistake, tmp_path / "pkg")
-    report = grade_problem(mistake.problem, submission, seed=12345)
+    report, kit = grade_both(mistake.problem, submission, kit_oracle)
     by_id = {r.check_id: r for r in report.results}
     target = by_id[mistake.check]
     assert target.status is Status(mistake.status), target.message
@@ -37,11 +70,13 @@ def test_planted_mistake_is_caught(mistake, tmp_path):
                   if r.status not in (Status.PASSED, Status.SKIPPED) and r.check_id not in (mistake.check, *mistake.also)]
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
     assert report.score < report.auto_max_score
+    assert_same_verdicts(mistake.name, report, kit, deferred_ids)
 
 
 @pytest.mark.parametrize("variant", correct_variants(), ids=lambda v: v["name"])
-def test_correct_variant_scores_full_marks(variant, tmp_path):
+def test_correct_variant_scores_full_marks(variant, tmp_path, kit_oracle, deferred_ids):
     """Fairness: another valid answer, or a sound alternative computation, loses nothing."""
-    report = grade_problem(variant["problem"], build_variant(variant, tmp_path / "pkg"), seed=12345)
+    report, kit = grade_both(variant["problem"], build_variant(variant, tmp_path / "pkg"), kit_oracle)
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
+    assert_same_verdicts(variant["name"], report, kit, deferred_ids)

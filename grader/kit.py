@@ -1,0 +1,239 @@
+"""``grade kit OUT_DIR``: the student kit.
+
+The kit is a wheel holding the grader, the checks, the probes, the student template and an *answer key*, and no
+reference code.  The key is recorded by grading the reference itself (in this process: it is trusted) with a
+``RecordingOracle``: every reference call of the public checks, the pool of random inputs of every randomized
+comparison (drawn once per kit from the kit's seed) and every random draw.  Secret checks (multiple choice,
+predicted output) and hidden checks do not run while recording, so nothing of their keys is in the kit; the
+reference's answers.toml (model answers) is not in it either.
+
+The wheel is written with ``zipfile`` (a wheel is a zip with a ``.dist-info`` folder: METADATA, WHEEL,
+entry_points.txt, RECORD), so building it needs neither a network nor a build backend.
+"""
+
+from __future__ import annotations
+
+import base64
+import csv
+import hashlib
+import importlib.util
+import io
+import random
+import time
+import tomllib
+import zipfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from . import __version__
+from .checking import checks_of
+from .context import Context
+from .errors import GraderFault
+from .oracle import KEY_FILE, AnswerKey, RecordingOracle, reference_available
+from .results import ProblemReport, Status
+
+__all__ = ["ReferenceChild", "Kit", "record_key", "build_kit", "write_wheel", "kit_files", "secret_check_ids",
+           "KitError", "KIT_NAME", "KIT_PACKAGES"]
+
+#: the distribution name of the kit
+KIT_NAME = "mbd_autograder_kit"
+#: the packages the kit holds (never ``reference``)
+KIT_PACKAGES = ("grader", "checks", "probes", "student_template")
+#: files of those packages that are not copied
+SKIPPED_SUFFIXES = (".pyc", ".pyo", ".tmp")
+PROJECT_ROOT = Path(__file__).resolve().parents[1]
+
+
+class KitError(Exception):
+    """The kit cannot be built (no reference, or the reference fails a public check)."""
+
+
+class ReferenceChild:
+    """The "student" side while the key is recorded: the probes run on the reference in this process (the
+    reference is trusted; no sandbox is needed).  Its calls share the oracle's caches but are not recorded."""
+
+    def __init__(self, oracle: RecordingOracle):
+        self.oracle = oracle
+        self.calls = 0
+
+    def call(self, probe: str, *args, timeout: float | None = None):
+        from probes._codec import decode
+
+        self.calls += 1
+        _, encoded, _ = self.oracle.compute(probe, args)
+        return decode(encoded)
+
+    def output(self) -> tuple[str, str]:
+        return "", ""
+
+
+def _reference_answers() -> dict:
+    from .loader import read_answers
+
+    spec = importlib.util.find_spec("reference")
+    answers, error = read_answers(Path(spec.origin).parent)
+    if error:
+        raise KitError(f"the reference's answers.toml cannot be read: {error}")
+    return answers
+
+
+def record_key(problems: list[int] | None = None, seed: int | None = None,
+               progress=None) -> tuple[AnswerKey, list[ProblemReport]]:
+    """Grade the reference on ``problems`` (default: every problem) while recording the answer key.  Every public
+    check must pass: a key recorded from a failing reference would grade students wrongly."""
+    from .runner import _run_checks, problem_module, problems as all_problems
+
+    if not reference_available():
+        raise KitError("grade kit needs the full project: the reference solution is not installed here")
+    seed = random.randrange(2**31) if seed is None else int(seed)
+    numbers = problems or [p.number for p in all_problems()]
+    oracle = RecordingOracle(seed)  # the public checks: the key
+    shadow = RecordingOracle(seed, secret=True)  # the secret and hidden checks: what the key must not hold
+    answers = _reference_answers()
+    reports, failures = [], []
+    for number in numbers:
+        start = time.perf_counter()
+        module = problem_module(number)
+        results = _run_checks(module, Context(number, ReferenceChild(oracle), answers, None, seed, oracle), number)
+        secret = _run_checks(module, Context(number, ReferenceChild(shadow), answers, None, seed, shadow), number)
+        failures += [f"{r.check_id} ({r.status.value}): {r.message.splitlines()[0] if r.message else ''}"
+                     for r in (*results, *secret) if r.status not in (Status.PASSED, Status.DEFERRED)]
+        reports.append(ProblemReport(number, module.TITLE, tuple(results), sandbox="the reference, in process",
+                                     seed=seed, duration=time.perf_counter() - start, grader_version=__version__))
+        if progress:
+            progress(number, time.perf_counter() - start)
+    if failures:
+        raise KitError("the reference does not pass every check, so no key is recorded:\n  "
+                       + "\n  ".join(failures))
+    key = oracle.key
+    # A public check that uses a value of a secret check would carry that value into the kit: withhold it too.
+    shared = set(shadow.key.calls) & set(key.calls)
+    key.withheld = sorted({check for call in shared for check in key.calls[call]["checks"]})
+    for call in shared:
+        del key.calls[call]
+    key.drop_checks(key.withheld)
+    return key, reports
+
+
+# ---------------------------------------------------------------------------------------------- the wheel
+
+
+def _package_root(name: str) -> Path:
+    here = PROJECT_ROOT / name
+    if (here / "__init__.py").is_file():
+        return here
+    spec = importlib.util.find_spec(name)
+    if spec is None or spec.origin is None:
+        raise KitError(f"the package {name} is not installed")
+    return Path(spec.origin).parent
+
+
+def kit_files() -> dict[str, bytes]:
+    """The files of the kit's packages, by their path in the wheel (no caches, no answer key of another kit)."""
+    files = {}
+    for package in KIT_PACKAGES:
+        root = _package_root(package)
+        for path in sorted(root.rglob("*")):
+            relative = path.relative_to(root)
+            if not path.is_file() or "__pycache__" in relative.parts or path.suffix in SKIPPED_SUFFIXES:
+                continue
+            if package == "grader" and relative.as_posix() == KEY_FILE:
+                continue
+            files[f"{package}/{relative.as_posix()}"] = path.read_bytes()
+    return files
+
+
+def runtime_dependencies() -> list[str]:
+    """The project's runtime dependencies (``[project] dependencies`` of pyproject.toml)."""
+    pyproject = PROJECT_ROOT / "pyproject.toml"
+    if pyproject.is_file():
+        return list(tomllib.loads(pyproject.read_text())["project"]["dependencies"])
+    from importlib.metadata import PackageNotFoundError, requires
+
+    for name in ("mbd-autograder", KIT_NAME):
+        try:
+            return [r for r in (requires(name) or []) if "extra ==" not in r]
+        except PackageNotFoundError:
+            continue
+    raise KitError("the project's dependencies are unknown (no pyproject.toml, no installed metadata)")
+
+
+def _record_hash(data: bytes) -> str:
+    return "sha256=" + base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
+
+
+def _metadata(dependencies: list[str]) -> str:
+    lines = [
+        "Metadata-Version: 2.1",
+        f"Name: {KIT_NAME}",
+        f"Version: {__version__}",
+        "Summary: Student kit of the multibody-dynamics course: the grader, its checks and the student template "
+        "(no reference solution)",
+        "Requires-Python: >=3.11",
+        *(f"Requires-Dist: {dependency}" for dependency in dependencies),
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def write_wheel(out_dir: str | Path, files: dict[str, bytes], dependencies: list[str]) -> Path:
+    """Write ``files`` (path in the wheel → bytes) as a pure-Python wheel with the ``grade`` command."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    dist_info = f"{KIT_NAME}-{__version__}.dist-info"
+    files = dict(files)
+    files[f"{dist_info}/METADATA"] = _metadata(dependencies).encode()
+    files[f"{dist_info}/WHEEL"] = (
+        "Wheel-Version: 1.0\nGenerator: mbd-autograder grade kit\nRoot-Is-Purelib: true\nTag: py3-none-any\n"
+    ).encode()
+    files[f"{dist_info}/entry_points.txt"] = b"[console_scripts]\ngrade = grader.cli:main\n"
+    files[f"{dist_info}/top_level.txt"] = ("\n".join(KIT_PACKAGES) + "\n").encode()
+    record = io.StringIO()
+    writer = csv.writer(record, lineterminator="\n")
+    for name in sorted(files):
+        writer.writerow([name, _record_hash(files[name]), len(files[name])])
+    writer.writerow([f"{dist_info}/RECORD", "", ""])
+    files[f"{dist_info}/RECORD"] = record.getvalue().encode()
+    path = out_dir / f"{KIT_NAME}-{__version__}-py3-none-any.whl"
+    tmp = path.with_suffix(".tmp")
+    with zipfile.ZipFile(tmp, "w", compression=zipfile.ZIP_DEFLATED) as wheel:
+        for name in sorted(files, key=lambda n: (n.startswith(dist_info), n)):  # the .dist-info folder last
+            info = zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0))
+            info.external_attr = 0o644 << 16
+            info.compress_type = zipfile.ZIP_DEFLATED
+            wheel.writestr(info, files[name])
+    tmp.replace(path)
+    return path
+
+
+@dataclass(frozen=True)
+class Kit:
+    wheel: Path
+    key: AnswerKey
+    key_bytes: int
+    reports: tuple[ProblemReport, ...]
+
+
+def build_kit(out_dir: str | Path, *, seed: int | None = None, problems: list[int] | None = None,
+              progress=None, key: AnswerKey | None = None) -> Kit:
+    """Record the answer key (unless ``key`` is given, recorded already) and write the kit's wheel into
+    ``out_dir``."""
+    reports: list = []
+    if key is None:
+        key, reports = record_key(problems, seed, progress)
+    data = key.dumps()
+    files = kit_files()
+    leaked = sorted(name for name in files if name.split("/")[0] == "reference")
+    if leaked:
+        raise GraderFault(f"the kit would hold reference files: {leaked}")
+    files[f"grader/{KEY_FILE}"] = data
+    wheel = write_wheel(out_dir, files, runtime_dependencies())
+    return Kit(wheel, key, len(data), tuple(reports))
+
+
+def secret_check_ids(problems: list[int] | None = None) -> set[str]:
+    """The checks whose verdicts the kit leaves to the graded submission (secret or hidden)."""
+    from .runner import problem_module, problems as all_problems
+
+    numbers = problems or [p.number for p in all_problems()]
+    return {f"p{n:02d}.{spec.name}" for n in numbers for spec in checks_of(problem_module(n))
+            if spec.secret or spec.visibility == "hidden"}

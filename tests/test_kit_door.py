@@ -1,0 +1,163 @@
+"""The one door to the reference: check modules never import ``reference``, the oracle's disk cache verifies what
+it reads back, and randomized comparisons in kit mode show the simplest failing input of the recorded pool."""
+
+import ast
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from grader.context import simplicity
+from grader.oracle import AnswerKey, KeyOracle, LiveOracle, call_key
+from grader.errors import GraderFault
+
+ROOT = Path(__file__).resolve().parents[1]
+CHECK_MODULES = sorted(p.stem for p in (ROOT / "checks").glob("*.py") if p.stem != "__init__")
+#: check modules converted to the one-door rule on another branch (remove them here as they are merged)
+PENDING = {"_planar", "_trees", *(f"problem_{n}" for n in (21, 22, 24, 25, 26, 27, 31, 32, 33, 34, 35))}
+
+
+def _imports_reference(source: str) -> list[int]:
+    lines = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Import) and any(a.name.split(".")[0] == "reference" for a in node.names):
+            lines.append(node.lineno)
+        elif isinstance(node, ast.ImportFrom) and (node.module or "").split(".")[0] == "reference":
+            lines.append(node.lineno)
+        elif isinstance(node, ast.Call) and getattr(node.func, "attr", getattr(node.func, "id", "")) in (
+                "import_module", "files", "__import__") and any(
+                isinstance(a, ast.Constant) and str(a.value).split(".")[0] == "reference" for a in node.args):
+            lines.append(node.lineno)
+    return lines
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(
+    strict=True, reason="converted on another branch")) if n in PENDING else n for n in CHECK_MODULES])
+def test_check_modules_never_import_the_reference(name):
+    lines = _imports_reference((ROOT / "checks" / f"{name}.py").read_text())
+    assert not lines, f"checks/{name}.py reaches the reference outside ctx.reference (lines {lines})"
+
+
+def test_the_import_finder_sees_the_forms_checks_used():
+    assert _imports_reference("def f():\n    from reference.rotations import R1\n") == [2]
+    assert _imports_reference("import reference.inertia as x\n") == [1]
+    assert _imports_reference("resources.files('reference').joinpath('answers.toml')\n") == [1]
+    assert not _imports_reference("ctx.reference('problem_06.frames')\n")
+
+
+# ---------------------------------------------------------------------------------------------- the disk cache
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("GRADER_CACHE", str(tmp_path / "cache"))
+    return tmp_path / "cache"
+
+
+def _entry(cache):
+    entries = list(cache.rglob("*.json"))
+    assert len(entries) == 1
+    return entries[0]
+
+
+def test_disk_cache_round_trip_and_poisoned_payload_is_recomputed(cache):
+    value = LiveOracle().reference("problem_06.frames", (), persist=True)
+    path = _entry(cache)
+    entry = json.loads(path.read_text())
+    assert entry["key"] == call_key("problem_06.frames", ())
+    # A poisoned payload (the digest no longer matches): discarded and recomputed, never trusted.
+    forged = json.loads(entry["payload"])
+    forged["A_IC1"]["data"] = [0.0] * 9
+    entry["payload"] = json.dumps(forged)
+    path.write_text(json.dumps(entry))
+    again = LiveOracle().reference("problem_06.frames", (), persist=True)
+    assert np.allclose(again["A_IC1"], value["A_IC1"]) and not np.allclose(again["A_IC1"], 0.0)
+    # The recomputed entry was written back and verifies.
+    assert json.loads(_entry(cache).read_text())["payload"] != entry["payload"]
+
+
+def test_disk_cache_entry_moved_to_another_call_is_not_trusted(cache):
+    LiveOracle().reference("problem_06.cardan", (0.1, 0.2, 0.3), persist=True)
+    source = _entry(cache)
+    other = LiveOracle()._entry_path(call_key("problem_06.cardan", (0.4, 0.5, 0.6)))
+    source.rename(other)  # a valid entry of another call, under this call's name
+    value = LiveOracle().reference("problem_06.cardan", (0.4, 0.5, 0.6), persist=True)
+    expected = LiveOracle().reference("problem_06.cardan", (0.4, 0.5, 0.6))
+    assert np.allclose(value, expected)
+
+
+def test_disk_cache_unreadable_entry_is_recomputed(cache):
+    LiveOracle().reference("problem_06.frames", (), persist=True)
+    path = _entry(cache)
+    path.write_text("{not json")
+    value = LiveOracle().reference("problem_06.frames", (), persist=True)
+    assert set(value) == {"A_IC1", "A_IC2", "A_IC3"}
+    json.loads(_entry(cache).read_text())
+
+
+def test_disk_cache_digest_needs_the_private_secret(cache):
+    LiveOracle().reference("problem_06.frames", (), persist=True)
+    secret = cache / "cache.secret"
+    assert secret.stat().st_mode & 0o077 == 0  # readable by its owner only
+    secret.write_bytes(b"x" * 32)  # another secret: every entry becomes unverifiable
+    path = _entry(cache)
+    before = path.read_text()
+    LiveOracle().reference("problem_06.frames", (), persist=True)
+    assert _entry(cache).read_text() != before
+
+
+# ---------------------------------------------------------------------------------------------- the key
+
+
+def test_key_oracle_answers_recorded_calls_and_refuses_others():
+    key = AnswerKey(seed=1, fingerprint="x")
+    key.calls[call_key("problem_06.cardan", (0.0, 0.0, 0.0))] = {"value": {"__array__": [3, 3],
+                                                                            "data": list(np.eye(3).ravel())},
+                                                                  "checks": ["p06.cardan_rotation"]}
+    oracle = KeyOracle(key, check_fingerprint=False)
+    assert np.allclose(oracle.reference("problem_06.cardan", (0.0, 0.0, 0.0)), np.eye(3))
+    with pytest.raises(GraderFault, match="no value"):
+        oracle.reference("problem_06.cardan", (0.0, 0.0, 0.1))
+    again = AnswerKey.loads(key.dumps())
+    assert again.calls == key.calls and again.seed == 1
+
+
+def test_key_recorded_with_other_checks_is_refused():
+    with pytest.raises(GraderFault, match="other checks"):
+        KeyOracle(AnswerKey(seed=1, fingerprint="not these checks"))
+
+
+def test_simplicity_prefers_fewer_then_smaller_numbers():
+    short = ([np.eye(3)], 0.1)
+    longer = ([np.eye(3), np.eye(3)], 0.1)
+    small = ({"B_omega_B": np.array([0.0, 0.0, 1.0])}, 0.01, 1)
+    large = ({"B_omega_B": np.array([0.0, 3.0, 1.0])}, 0.01, 1)
+    assert simplicity(short) < simplicity(longer)
+    assert simplicity(small) < simplicity(large)
+    assert sorted([large, small], key=simplicity) == [small, large]
+
+
+# ---------------------------------------------------------------------------------------------- item 12
+
+
+def test_grading_writes_nothing_where_it_runs(tmp_path):
+    """Hypothesis keeps an example database and a cache of the constants it collects from local source files (the
+    reference's included) in ``.hypothesis/`` of the current folder; grading must leave the folder untouched."""
+    import os
+    import subprocess
+    import sys
+
+    from .submissions import copy_reference
+
+    work = tmp_path / "mywork"
+    copy_reference(work)
+    before = sorted(p.relative_to(work) for p in work.rglob("*"))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]),
+               GRADER_ORACLE="live")
+    done = subprocess.run([sys.executable, "-m", "grader.cli", "problem-6", "problem-7", "--seed", "5"],
+                          cwd=work, env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "Problem 6" in done.stdout
+    after = sorted(p.relative_to(work) for p in work.rglob("*"))
+    assert after == before, f"grading wrote into the folder: {sorted(set(after) - set(before))}"
