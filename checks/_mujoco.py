@@ -11,7 +11,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from grader.checking import Tol, encode_key, fail, figure
+from grader.checking import Tol, fail, figure
+from grader.oracle import call_key
 from grader.results import Series
 
 __all__ = [
@@ -43,7 +44,7 @@ _ONCE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 def student_once(ctx, probe, *args, timeout=None):
     """``ctx.student(probe, *args)``, run once per graded submission: several checks read the same run."""
     cache = _ONCE.setdefault(ctx.child, {})
-    key = encode_key(probe, args)
+    key = call_key(probe, args)
     if key not in cache:
         cache[key] = ctx.student(probe, *args, timeout=timeout)
     return cache[key]

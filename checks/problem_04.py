@@ -57,27 +57,30 @@ EXCEPTIONS = {"overconstrained": "OverconstrainedError", "unreachable": "Unreach
 
 
 def loop_points(q):
-    """Joints 1-3 and the end of link 3 (x, y) for the angles ``q`` (q1, q2, q3 used)."""
-    phi = np.cumsum(np.asarray(q, dtype=float)[:3])
+    """Joints 1-3 and the end of link 3 (x, y) for the angles ``q`` (q1, q2, q3 used; complex angles allowed, for
+    the complex-step derivatives below)."""
+    phi = np.cumsum(np.asarray(q)[:3])
     return np.vstack([np.zeros(2), np.cumsum(LENGTH * np.stack([np.cos(phi), np.sin(phi)], axis=1), axis=0)])
 
 
+def _complex_step(function, q, h=1e-30):
+    """d function / dq (one column per angle) by the complex step, exact to rounding: the checks differentiate the
+    given geometry rather than carry a closed form of their own."""
+    q = np.asarray(q, dtype=float)[:3]
+    return np.stack([np.imag(function(q + 1j * h * e)) / h for e in np.eye(3)], axis=-1)
+
+
 def closure_jacobian(q):
-    phi = np.cumsum(np.asarray(q, dtype=float)[:3])
-    return np.array([[-LENGTH * np.sum(np.sin(phi[j:])) for j in range(3)],
-                     [LENGTH * np.sum(np.cos(phi[j:])) for j in range(3)]])
+    """d(end of link 3)/dq: the 2 x 3 Jacobian of the loop's closure."""
+    return _complex_step(lambda x: loop_points(x)[-1], q)
 
 
 def height_gradient(q):
     """d/dq of the sum of the three links' centre heights (gravity's potential over m g)."""
-    phi = np.cumsum(np.asarray(q, dtype=float)[:3])
-    grad = np.zeros(3)
-    for i in range(3):
-        arms = np.full(i + 1, LENGTH)
-        arms[i] = LENGTH / 2
-        for j in range(i + 1):
-            grad[j] += np.sum(arms[j:] * np.cos(phi[j: i + 1]))
-    return grad
+    def heights(x):
+        points = loop_points(x)
+        return np.sum((points[:-1, 1] + points[1:, 1]) / 2)
+    return _complex_step(heights, q)
 
 
 def _wrapped(angle):

@@ -31,8 +31,10 @@ TRANSPOSE_HINT = ("I2 = A I1 A.T with A the small rotation about the 3-axis, A =
 
 
 def _rot3(alpha):
-    c, s = np.cos(alpha), np.sin(alpha)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    """The exact rotation about the 3-axis (scipy's, so that no line of problem 6's solution is in the checks)."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_rotvec([0.0, 0.0, alpha]).as_matrix()
 
 
 def _small(alpha):

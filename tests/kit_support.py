@@ -19,16 +19,6 @@ SEED = 12345
 #: randomized comparison whose failure the kit's fixed pool does not reproduce.
 KNOWN_DIVERGENT: dict[tuple[str, str], str] = {}
 
-#: multiple-choice and predicted-output checks of problems 21-36 that are declared secret on another branch (the
-#: kit will defer them); until then their diagnoses read reference values that the key does not hold
-PENDING_SECRET = {
-    **{f"p27.choice_{q}": "multiple choice (problem 27)" for q in "abcde"},
-    "p28.prediction": "predicted output (problem 28)",
-    "p36.part1": "predicted output (problem 36)",
-    "p36.part2": "predicted output (problem 36)",
-}
-
-
 @pytest.fixture(scope="session")
 def answer_key():
     from grader.kit import record_key
@@ -117,7 +107,7 @@ def assert_same_verdicts(name: str, live, kit, secret: set[str]) -> None:
     mine = {r.check_id: r for r in live.results}
     different = []
     for check_id, verdict in public_verdicts(kit).items():
-        if (name, check_id) in KNOWN_DIVERGENT or check_id in PENDING_SECRET:
+        if (name, check_id) in KNOWN_DIVERGENT:
             continue
         expected = (mine[check_id].status.value, mine[check_id].diagnosis)
         if verdict != expected:

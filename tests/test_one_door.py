@@ -16,7 +16,8 @@ CHECKS = Path(__file__).resolve().parents[1] / "checks"
 #: stale entry cannot stay behind.
 KNOWN_EXCEPTIONS: set[str] = set()
 
-_IMPORTERS = {("importlib", "import_module"), (None, "import_module"), (None, "__import__")}
+_IMPORTERS = {("importlib", "import_module"), (None, "import_module"), (None, "__import__"), ("resources", "files"),
+              (None, "files")}
 
 
 def _is_reference(name: str | None) -> bool:
@@ -66,6 +67,7 @@ def test_check_module_does_not_import_reference(name):
     ("class C:\n    def m(self):\n        from reference import planar\n", 1),
     ("import importlib\nimportlib.import_module('reference.tree')\n", 1),
     ("__import__('reference')\n", 1),
+    ("resources.files('reference').joinpath('answers.toml')\n", 1),
     ("from . import _trees\nfrom probes import _trees as p\nimport references_notes\n", 0),
 ])
 def test_every_form_of_import_is_found(source, expected):
