@@ -18,22 +18,10 @@ import pytest
 
 from grader.sandbox import sandbox_mode
 
+from .environments import base_python, public_tmp_dir
 from .submissions import ROOT, build_hostile, copy_reference, hostile_expectation, hostile_names
 
 pytestmark = pytest.mark.slow
-
-#: the interpreter of the environment: a system Python every user can read, when it is recent enough
-SYSTEM_PYTHON = "/usr/bin/python3"
-
-
-def _base_python() -> str:
-    try:
-        done = subprocess.run([SYSTEM_PYTHON, "-c", "import sys, venv, ensurepip; print(sys.version_info >= (3, 11))"],
-                              capture_output=True, text=True, timeout=60)
-    except OSError:
-        return sys.executable
-    return SYSTEM_PYTHON if done.stdout.strip() == "True" else sys.executable
-
 
 def _run(argv, **kwargs):
     kwargs.setdefault("timeout", 900)
@@ -45,9 +33,7 @@ def _run(argv, **kwargs):
 @pytest.fixture(scope="module")
 def venv():
     """A wheel of the project, installed with its dependencies into a fresh virtual environment under /tmp."""
-    base = Path(tempfile.mkdtemp(prefix="grader-install-", dir="/tmp"))
-    os.chmod(base, 0o755)
-    try:
+    with public_tmp_dir("grader-install-") as base:
         source = base / "source"  # a copy: building in place would leave build/ and *.egg-info in the checkout
         shutil.copytree(ROOT, source, ignore=shutil.ignore_patterns(
             ".git", "__pycache__", "*.egg-info", "build", "dist", ".hypothesis", "results", "mywork"))
@@ -55,12 +41,10 @@ def venv():
         _run([sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", *offline, "-w", str(base / "dist"),
               str(source)])
         (wheel,) = (base / "dist").glob("mbd_autograder-*.whl")
-        _run([_base_python(), "-m", "venv", str(base / "venv")])
+        _run([base_python(), "-m", "venv", str(base / "venv")])
         _run([str(base / "venv" / "bin" / "python"), "-m", "pip", "install", "-q", f"{wheel}[dev]"])
         shutil.rmtree(source)
         yield base / "venv"
-    finally:
-        shutil.rmtree(base, ignore_errors=True)
 
 
 def _has_setuptools() -> bool:

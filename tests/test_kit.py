@@ -14,7 +14,6 @@ import io
 import json
 import os
 import subprocess
-import sys
 import tomllib
 import zipfile
 from pathlib import Path
@@ -27,6 +26,7 @@ from grader.kit import KIT_NAME, build_kit, record_key, runtime_dependencies
 from grader.oracle import KEY_FILE, LiveOracle
 from grader.results import Status
 
+from .environments import base_python, public_tmp_dir
 from .kit_support import KIT_SEED, SEED, answer_key, deferred_ids, kit_oracle  # noqa: F401 (fixtures)
 from .submissions import ROOT, copy_reference
 
@@ -207,13 +207,17 @@ def _run(argv, cwd, env, timeout=600):
 
 
 @pytest.mark.slow
-def test_the_kit_installs_and_grades_problem_6(kit, tmp_path):
+def test_the_kit_installs_and_grades_problem_6(kit):
+    with public_tmp_dir("grader-kit-") as tmp_path:
+        _kit_installed_grades_problem_6(kit, tmp_path)
+
+
+def _kit_installed_grades_problem_6(kit, tmp_path):
+    """The kit in a fresh virtual environment (of a Python the sandbox's unprivileged uid can read, in a folder it can
+    enter), graded in whatever sandbox this machine has."""
     venv = tmp_path / "venv"
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
-    # The bubblewrap sandbox of a wheel installed in a /tmp virtual environment is issue 8 (items 1 and 2),
-    # fixed on another branch; this test is about what the kit holds and grades, so the child is a plain process.
-    env["GRADER_SANDBOX"] = "process"
-    done = _run([sys.executable, "-m", "venv", str(venv)], tmp_path, env)
+    done = _run([base_python(), "-m", "venv", str(venv)], tmp_path, env)
     assert done.returncode == 0, done.stderr
     python, grade = venv / "bin" / "python", venv / "bin" / "grade"
     done = _run([str(python), "-m", "pip", "install", "-q", str(kit.wheel)], tmp_path, env, timeout=1200)
