@@ -166,9 +166,8 @@ def check_rolling_trees(ctx):
 
 def _points(ctx):
     case = _walker(ctx)
-    ctx.last_seed = ctx.seed
-    rng = np.random.default_rng(ctx.seed)
-    return np.vstack([[case["alpha_c"], case["gamma_c"]], rng.uniform([-1.2, -2.5], [1.2, 2.5], (7, 2))])
+    drawn = ctx.draw(lambda rng: rng.uniform([-1.2, -2.5], [1.2, 2.5], (7, 2)))
+    return np.vstack([[case["alpha_c"], case["gamma_c"]], np.asarray(drawn, dtype=float)])
 
 
 def _symbolic(ctx, points):

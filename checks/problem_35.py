@@ -28,11 +28,10 @@ TRANSPOSE_HINT = "A_DpDs maps Ds- to Dp-coordinates: R3(gamma); you have its tra
 
 
 def _points(ctx, kind):
-    ctx.last_seed = ctx.seed
-    rng = np.random.default_rng([ctx.seed, list(NQ).index(kind)])
     nq = NQ[kind]
-    return [{"q": rng.uniform(-2, 2, nq), "qd": rng.uniform(-2, 2, nq), "qdd": rng.uniform(-2, 2, nq),
-             "r": float(rng.uniform(0.1, 2.0))} for _ in range(POINTS)]
+    return ctx.draw(lambda rng: [{"q": rng.uniform(-2, 2, nq), "qd": rng.uniform(-2, 2, nq),
+                                  "qdd": rng.uniform(-2, 2, nq), "r": float(rng.uniform(0.1, 2.0))}
+                                 for _ in range(POINTS)])
 
 
 def _evaluate(ctx, kind, points):
