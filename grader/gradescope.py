@@ -247,7 +247,7 @@ def fault_results(reason: str, *, execution_time: float = 0.0) -> dict:
             "output_format": "text",
             "visibility": "visible",
             "tags": ["grader_error"],
-            "extra_data": {"grader_fault": True},
+            "extra_data": {"grader_fault": True, "status": Status.GRADER_ERROR.value},
         }],
     }
 
