@@ -266,10 +266,11 @@ def find_student(folder: Path) -> Path:
     return folder
 
 
-def check_installation(problems: list[int], *, sandbox: bool = False) -> str:
+def check_installation(problems: list[int], *, sandbox: bool = False, reference: bool = False) -> str:
     """Raise ``GraderFault`` unless this installation can grade ``problems``: the reference is importable, no
-    answer key replaces it (that is the student kit), every problem has checks, and (``sandbox``) a sandboxed
-    worker starts.  Returns a line that says what was checked."""
+    answer key replaces it (that is the student kit), every problem has checks, (``sandbox``) a sandboxed worker
+    starts and (``reference``) the reference solution, graded as a submission, passes every check (which also
+    fills the grader's cache with the values of the sheet's cases).  Returns a line that says what was checked."""
     from .oracle import current, reference_available
 
     if not reference_available():
@@ -289,6 +290,20 @@ def check_installation(problems: list[int], *, sandbox: bool = False) -> str:
         mode = sandbox_mode()
         canary(mode=mode)
         line += f"; a sandboxed worker starts ({mode.note})"
+    if reference:
+        import importlib.util
+
+        from .runner import grade_submission
+
+        folder = Path(importlib.util.find_spec("reference").origin).parent
+        reports = grade_submission(folder, problems)
+        failures = [f"{r.check_id} ({r.status.value}): {r.message.splitlines()[0] if r.message else ''}"
+                    for report in reports for r in report.results if r.status is not Status.PASSED]
+        if failures:
+            raise GraderFault("the reference solution does not pass every check in this installation:\n  "
+                              + "\n  ".join(failures))
+        line += (f"; the reference scores {sum(r.score for r in reports):g} of "
+                 f"{sum(r.auto_max_score for r in reports):g}")
     return line
 
 
@@ -430,7 +445,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.command == "check":
         try:
-            print(check_installation(_config(args.config), sandbox=True))
+            print(check_installation(_config(args.config), sandbox=True, reference=True))
         except GraderFault as exc:
             print(f"the autograder's installation is broken: {exc}", file=sys.stderr)
             return EXIT_FAULT

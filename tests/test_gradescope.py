@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import stat
 import subprocess
@@ -227,7 +228,7 @@ def test_the_zip_holds_what_gradescope_needs_and_nothing_it_forbids(autograder):
     assert "apt-get install -y bubblewrap" in setup and 'pip install -q "$WHEEL"' in setup
     assert f"/{autograder.wheel}" in setup and "chmod -R go-rwx" in setup
     run = data[RUN].decode()
-    assert "/results/results.json" in run and f"$SOURCE/{FAULT}" in run and "grader.gradescope run" in run
+    assert "/results/results.json" in run and f"$SOURCE/{FAULT}" in run and "-I -m grader.gradescope run" in run
     config = json.loads(data[CONFIG])
     assert config["problems"] == PROBLEMS and config["withheld"] == WITHHELD
     validate(json.loads(data[FAULT]))
@@ -314,6 +315,8 @@ def test_setup_installs_the_grader_with_a_private_reference(installed):
     venv = installed["base"] / "opt" / "venv"
     site = next(venv.glob("lib/python3*/site-packages"))
     assert f"grader 0.1.0 at {site}/grader, live reference" in installed["setup"]
+    scores = re.search(r"the reference scores (\S+) of (\S+)", installed["setup"])
+    assert scores and float(scores[1]) == float(scores[2]) > 0, installed["setup"]
     reference = site / "reference"
     assert (reference / "rotations.py").is_file()
     for path in (reference, reference / "rotations.py", reference / "answers.toml"):
@@ -412,3 +415,43 @@ def test_a_broken_installation_is_never_the_students_zero(installed, tmp_path):
     assert code == 3, log
     assert data["extra_data"]["grader_fault"] is True and "no checks for problem 98" in data["output"]
     assert data["score"] == 0 and "not a verdict" in data["output"]
+
+
+@pytest.mark.slow
+def test_a_defect_of_the_installed_grader_fails_setup_and_is_never_the_students_fault(installed, tmp_path):
+    """A check that crashes in this installation: setup.sh's last step (the reference graded as a submission)
+    fails, so the build fails before any student submits; a submission graded anyway is told that the check is
+    the grader's fault, and run_autograder exits with code 3."""
+    site = next((installed["base"] / "opt" / "venv").glob("lib/python3*/site-packages"))
+    module = site / "checks" / "problem_06.py"
+    saved = module.read_text()
+    head = "def check_elementary_rotation(ctx):\n"
+    assert saved.count(head) == 1
+    try:
+        module.write_text(saved.replace(head, head + "    raise RuntimeError('a defect of this installation')\n"))
+        done = subprocess.run([str(site.parents[2] / "bin" / "python"), "-I", "-m", "grader.gradescope", "check",
+                               "--config", str(installed["root"] / "source" / CONFIG)],
+                              cwd=ROOT, env=installed["env"], capture_output=True, text=True, timeout=900)
+        code, data, log = _grade(installed, copy_reference(tmp_path / "reference"))
+    finally:
+        module.write_text(saved)
+    assert done.returncode == 3, done.stdout + done.stderr
+    assert "the reference solution does not pass every check in this installation" in done.stderr
+    assert "p06.elementary_rotation (grader_error)" in done.stderr
+    assert code == 3, log
+    broken_id = "p06.elementary_rotation"
+    broken = _by_check(data)[broken_id]
+    assert broken["status"] == "failed" and broken["score"] == 0 and broken["visibility"] == "visible"
+    assert broken["output"].startswith("Not graded: a fault of the grader, not of your work.")
+    assert "a defect of this installation" in broken["output"]
+    assert "fault of the grader, not of your work: p06.elementary_rotation" in data["output"]
+    assert "skipped" not in {t["extra_data"]["status"] for t in _by_check(data).values()}
+    # the checks after it in its group did not run either: the grader's fault too, never "an earlier check failed"
+    checks = _by_check(data)
+    later = {c for c, t in checks.items() if t["extra_data"]["status"] == "grader_error"} - {broken_id}
+    assert "p06.elementary_values" in later  # the next stage of the same group
+    assert data["extra_data"]["grader_errors"] == [broken_id, *sorted(later, key=list(checks).index)]
+    for check in later:
+        assert checks[check]["output"].startswith("Not graded: a fault of the grader"), checks[check]["output"]
+        assert "the earlier check could not run" in checks[check]["output"]
+    assert {t["status"] for c, t in checks.items() if c not in later | {broken_id}} == {"passed"}
