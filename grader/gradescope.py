@@ -62,8 +62,6 @@ GRADER_HOME = "/opt/mbd-autograder"
 PYTHON_MIN = (3, 11)
 #: run_autograder's exit codes (Gradescope reads results.json; the code is for the log)
 EXIT_GRADED, EXIT_FAULT = 0, 3
-#: the submission files a student may upload instead of a folder
-SUBMISSION_SUFFIXES = (".zip", ".ipynb")
 
 
 # ---------------------------------------------------------------------------------------------- problems
@@ -258,6 +256,8 @@ def fault_results(reason: str, *, execution_time: float = 0.0) -> dict:
 def find_student(folder: Path) -> Path:
     """What a student submitted: the one ``.zip`` or ``.ipynb`` they uploaded, else the folder itself (the loader
     takes a folder, one folder inside it, or notebooks in it)."""
+    from .batch.discover import SUBMISSION_SUFFIXES
+
     entries = [p for p in folder.iterdir() if not p.name.startswith(".") and p.name != "__MACOSX"] \
         if folder.is_dir() else []
     if len(entries) == 1 and entries[0].is_file() and not entries[0].is_symlink() \

@@ -246,6 +246,24 @@ def test_the_zip_holds_what_gradescope_needs_and_nothing_it_forbids(autograder):
         assert "grader/templates/gradescope/setup.sh.j2" in names
 
 
+def test_grade_gradescope_command(tmp_path, capsys, monkeypatch):
+    from grader.cli import EXIT_OK, EXIT_USAGE, main
+
+    out = tmp_path / "out" / "autograder.zip"
+    assert main(["gradescope", str(out), "--problems", "6", "10-12"]) == EXIT_OK
+    printed = capsys.readouterr().out
+    assert f"wrote {out} (problems 6, 10, 11, 12;" in printed and "autograder points" in printed
+    with zipfile.ZipFile(out) as archive:
+        assert json.loads(archive.read(CONFIG))["problems"] == [6, 10, 11, 12]
+    assert main(["gradescope", str(tmp_path / "x.zip"), "--problems", "6,98"]) == EXIT_USAGE
+    assert "no checks for problem 98" in capsys.readouterr().err
+    # the student kit holds no reference: it cannot build the autograder, and says so
+    monkeypatch.setattr("grader.oracle.reference_available", lambda: False)
+    assert main(["gradescope", str(tmp_path / "y.zip")]) == EXIT_USAGE
+    assert "needs the full project" in capsys.readouterr().err
+    assert not (tmp_path / "x.zip").exists() and not (tmp_path / "y.zip").exists()
+
+
 # ---------------------------------------------------------------------------------------------- end to end
 
 
