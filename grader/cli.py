@@ -5,6 +5,7 @@
     grade list                         every problem, its points, and whether checks exist for it
     grade demo                         grade the bundled sample submissions
     grade kit OUT_DIR                  build the student kit (grader, checks, template, answer key; no reference)
+    grade gradescope OUT.zip           build Gradescope's autograder (grader with the reference, setup.sh, ...)
     grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
 
 Exit codes: 0 all checks passed, 1 some checks did not pass, 2 usage error or a submission that cannot be
@@ -134,6 +135,23 @@ def cmd_kit(args) -> int:
     return EXIT_OK
 
 
+def cmd_gradescope(args) -> int:
+    from .gradescope import build_autograder, parse_problems
+    from .kit import KitError
+
+    try:
+        built = build_autograder(args.out_zip, parse_problems(args.problems))
+    except (KitError, ValueError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    manual = (f"\nFree-text answers worth {built.manual_points:g} points are scored by hand: add them to the "
+              "assignment as manually graded questions." if built.manual_points else "")
+    print(f"wrote {built.zip} (problems {', '.join(map(str, built.problems))}; {', '.join(built.files)})\n"
+          f"Upload it as the autograder of a Gradescope programming assignment worth {built.points:g} autograder "
+          f"points.{manual}\nIt holds the reference solution: keep it on the instructors' side.")
+    return EXIT_OK
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="grade",
@@ -161,6 +179,12 @@ def build_parser() -> argparse.ArgumentParser:
     p_kit.add_argument("--problems", type=_problem_number, nargs="+", default=None,
                        help="problems whose public checks the key covers (default: all)")
     p_kit.set_defaults(func=cmd_kit)
+
+    p_gs = sub.add_parser("gradescope", help="build Gradescope's autograder zip (it holds the reference)")
+    p_gs.add_argument("out_zip", help="the zip to write, e.g. autograder.zip")
+    p_gs.add_argument("--problems", nargs="+", default=None, metavar="LIST",
+                      help="the assigned problems, e.g. 6,7,10 or 6-20 (default: every problem with checks)")
+    p_gs.set_defaults(func=cmd_gradescope)
 
     from .batch import add_batch_parser
 

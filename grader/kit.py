@@ -128,10 +128,11 @@ def _package_root(name: str) -> Path:
     return Path(spec.origin).parent
 
 
-def kit_files() -> dict[str, bytes]:
-    """The files of the kit's packages, by their path in the wheel (no caches, no answer key of another kit)."""
+def kit_files(packages: tuple[str, ...] = KIT_PACKAGES) -> dict[str, bytes]:
+    """The files of ``packages`` (default: the kit's), by their path in the wheel (no caches, no answer key of
+    another kit)."""
     files = {}
-    for package in KIT_PACKAGES:
+    for package in packages:
         root = _package_root(package)
         for path in sorted(root.rglob("*")):
             relative = path.relative_to(root)
@@ -162,38 +163,43 @@ def _record_hash(data: bytes) -> str:
     return "sha256=" + base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
 
 
-def _metadata(dependencies: list[str]) -> str:
+KIT_SUMMARY = ("Student kit of the multibody-dynamics course: the grader, its checks and the student template "
+               "(no reference solution)")
+
+
+def _metadata(dependencies: list[str], name: str = KIT_NAME, summary: str = KIT_SUMMARY) -> str:
     lines = [
         "Metadata-Version: 2.1",
-        f"Name: {KIT_NAME}",
+        f"Name: {name}",
         f"Version: {__version__}",
-        "Summary: Student kit of the multibody-dynamics course: the grader, its checks and the student template "
-        "(no reference solution)",
+        f"Summary: {summary}",
         "Requires-Python: >=3.11",
         *(f"Requires-Dist: {dependency}" for dependency in dependencies),
     ]
     return "\n".join(lines) + "\n"
 
 
-def write_wheel(out_dir: str | Path, files: dict[str, bytes], dependencies: list[str]) -> Path:
-    """Write ``files`` (path in the wheel → bytes) as a pure-Python wheel with the ``grade`` command."""
+def write_wheel(out_dir: str | Path, files: dict[str, bytes], dependencies: list[str], *, name: str = KIT_NAME,
+                packages: tuple[str, ...] = KIT_PACKAGES, summary: str = KIT_SUMMARY) -> Path:
+    """Write ``files`` (path in the wheel → bytes) as a pure-Python wheel ``name`` (default: the kit) of the
+    top-level ``packages``, with the ``grade`` command."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    dist_info = f"{KIT_NAME}-{__version__}.dist-info"
+    dist_info = f"{name}-{__version__}.dist-info"
+    path = out_dir / f"{name}-{__version__}-py3-none-any.whl"
     files = dict(files)
-    files[f"{dist_info}/METADATA"] = _metadata(dependencies).encode()
+    files[f"{dist_info}/METADATA"] = _metadata(dependencies, name, summary).encode()
     files[f"{dist_info}/WHEEL"] = (
         "Wheel-Version: 1.0\nGenerator: mbd-autograder grade kit\nRoot-Is-Purelib: true\nTag: py3-none-any\n"
     ).encode()
     files[f"{dist_info}/entry_points.txt"] = b"[console_scripts]\ngrade = grader.cli:main\n"
-    files[f"{dist_info}/top_level.txt"] = ("\n".join(KIT_PACKAGES) + "\n").encode()
+    files[f"{dist_info}/top_level.txt"] = ("\n".join(packages) + "\n").encode()
     record = io.StringIO()
     writer = csv.writer(record, lineterminator="\n")
     for name in sorted(files):
         writer.writerow([name, _record_hash(files[name]), len(files[name])])
     writer.writerow([f"{dist_info}/RECORD", "", ""])
     files[f"{dist_info}/RECORD"] = record.getvalue().encode()
-    path = out_dir / f"{KIT_NAME}-{__version__}-py3-none-any.whl"
     tmp = path.with_suffix(".tmp")
     with zipfile.ZipFile(tmp, "w", compression=zipfile.ZIP_DEFLATED) as wheel:
         for name in sorted(files, key=lambda n: (n.startswith(dist_info), n)):  # the .dist-info folder last

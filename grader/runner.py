@@ -169,19 +169,24 @@ def _not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
 
 def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     results = []
-    blocked: dict[str, tuple[int, str]] = {}
+    blocked: dict[str, tuple[int, str, bool]] = {}  # group → (stage, title, whether the grader was at fault)
     for spec in checks_of(module):
         if not ctx.oracle.runs(spec, f"p{problem:02d}.{spec.name}"):
             results.append(_not_run(spec, problem, Status.DEFERRED, DEFERRED_MESSAGE))
             continue
         block = blocked.get(spec.group)
         if block is not None and spec.stage > block[0]:
-            results.append(_not_run(spec, problem, Status.SKIPPED, f"not run: an earlier check failed first ({block[1]})"))
+            if block[2]:  # the earlier check is the grader's fault: so is this one's not running
+                results.append(_not_run(spec, problem, Status.GRADER_ERROR, "internal grader error (not your "
+                                        f"fault): not run, the earlier check could not run ({block[1]})"))
+            else:
+                results.append(_not_run(spec, problem, Status.SKIPPED,
+                                        f"not run: an earlier check failed first ({block[1]})"))
             continue
         result = _run_check(spec, ctx, problem)
         results.append(result)
         if not result.passed and (block is None or spec.stage < block[0]):
-            blocked[spec.group] = (spec.stage, spec.title)
+            blocked[spec.group] = (spec.stage, spec.title, result.status is Status.GRADER_ERROR)
     return results
 
 

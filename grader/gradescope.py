@@ -1,0 +1,464 @@
+"""``grade gradescope OUT.zip``: the autograder that Gradescope runs, and the ``results.json`` it writes.
+
+The zip follows Gradescope's autograder specification: ``setup.sh`` and ``run_autograder`` at its root, the rest
+unpacked next to them in ``/autograder/source``.  It holds
+
+* ``setup.sh``: run once, as root, while Gradescope builds the image: installs bubblewrap, a Python recent enough,
+  and a wheel of this project *with* the reference solution (the grader runs on the instructor's side) into a
+  virtual environment of its own, makes the reference readable by root alone, and checks the installation;
+* ``run_autograder``: run for every submission: grades ``/autograder/submission`` (a folder, or the one ``.zip``
+  or ``.ipynb`` a student uploaded, as ``grade batch`` takes a student) on the assigned problems with a fresh
+  seed and every check, and writes ``/autograder/results/results.json``;
+* the wheel, ``autograder.json`` (the assigned problems) and ``fault_results.json`` (what ``run_autograder`` puts
+  in place when the grader cannot even start).
+
+What a student sees (``results.json``), following the student's view of every other report
+(``grader.results.student_view``):
+
+* a public check is a test with ``visibility: "visible"``: its score, status and message;
+* a *secret* check (multiple choice, predicted output: its message would give the key away) and a *hidden* check
+  are graded at once but their tests have ``visibility: "after_published"``: shown to students only when the
+  instructor publishes the grades (``after_due_date`` would show them when the due date passes, while students
+  with an extension may still be working).  Gradescope then also hides the total score until publication.  The
+  visible top-level output names the secret checks and counts the hidden ones with their points, as every
+  student report does;
+* a free-text answer is an informational test (no score: it is scored by hand), without the model answer;
+* a fault of the grader is never a silent 0: a check the grader could not run says so in its test and in the
+  top-level output, and a grader that cannot grade at all writes a results.json that says so plainly (score 0,
+  ``extra_data.grader_fault``) and exits with code 3.  Gradescope's specification asks for a results.json in
+  every case (without one the student only reads "The autograder failed to execute correctly").
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import random
+import sys
+import time
+import traceback
+import zipfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from . import __version__
+from .errors import GraderFault
+from .results import CheckResult, ManualItem, ProblemReport, Status, student_view
+
+__all__ = ["parse_problems", "build_autograder", "Autograder", "results_json", "fault_results",
+           "find_student", "check_installation", "run", "main", "WHEEL_NAME", "WHEEL_PACKAGES", "WITHHELD",
+           "SETUP", "RUN", "CONFIG", "FAULT", "GRADER_HOME", "PYTHON_MIN", "EXIT_GRADED", "EXIT_FAULT"]
+
+#: the distribution of the wheel in the zip: the whole project, reference included
+WHEEL_NAME = "mbd_autograder"
+WHEEL_PACKAGES = ("grader", "checks", "probes", "reference", "student_template")
+#: the visibility of the tests a student may not see before the grades are published (secret and hidden checks)
+WITHHELD = "after_published"
+#: the files of the zip
+SETUP, RUN, CONFIG, FAULT = "setup.sh", "run_autograder", "autograder.json", "fault_results.json"
+#: where setup.sh puts the grader's virtual environment (outside /autograder, readable by every user)
+GRADER_HOME = "/opt/mbd-autograder"
+PYTHON_MIN = (3, 11)
+#: run_autograder's exit codes (Gradescope reads results.json; the code is for the log)
+EXIT_GRADED, EXIT_FAULT = 0, 3
+
+
+# ---------------------------------------------------------------------------------------------- problems
+
+
+def parse_problems(texts: list[str] | str | None) -> list[int] | None:
+    """``["6,7", "10-12"]`` → ``[6, 7, 10, 11, 12]`` (sorted, each once); None or empty: None (every problem)."""
+    if texts is None:
+        return None
+    if isinstance(texts, str):
+        texts = [texts]
+    numbers: set[int] = set()
+    for text in texts:
+        for part in text.replace(" ", ",").split(","):
+            if not part:
+                continue
+            first, dash, last = part.partition("-")
+            try:
+                low = int(first.lower().removeprefix("problem").removeprefix("p"))
+                high = int(last) if dash else low
+            except ValueError:
+                raise ValueError(f"{part!r} is not a problem or a range of problems (write e.g. 6,7 or 6-20)")
+            if high < low:
+                raise ValueError(f"{part!r} is an empty range")
+            numbers.update(range(low, high + 1))
+    return sorted(numbers) or None
+
+
+def _assigned(problems: list[int] | None) -> list[int]:
+    from .runner import problem_module, problems as all_problems
+
+    if not problems:
+        return [p.number for p in all_problems()]
+    missing = []
+    for number in problems:
+        try:
+            problem_module(number)
+        except KeyError:
+            missing.append(number)
+    if missing:
+        raise ValueError(f"no checks for problem{'s' if len(missing) > 1 else ''} "
+                         f"{', '.join(map(str, missing))} (see `grade list`)")
+    return list(problems)
+
+
+def _withheld_ids(numbers: list[int]) -> set[str]:
+    """The checks whose tests students see only when grades are published: secret and hidden ones."""
+    from .kit import secret_check_ids
+
+    return secret_check_ids(numbers)
+
+
+# ---------------------------------------------------------------------------------------------- results.json
+
+
+def _fmt(x: float) -> str:
+    return f"{x:g}"
+
+
+def _env():
+    from .render import _env as render_env
+
+    return render_env(False)
+
+
+def _check_output(r: CheckResult) -> str:
+    if r.status is Status.GRADER_ERROR:
+        head = ("Not graded: a fault of the grader, not of your work. It counts 0 until your course staff "
+                "regrade this submission.")
+        return "\n".join(part for part in (head, r.message) if part)
+    parts = [r.message or ("passed" if r.passed else r.status.value.replace("_", " "))]
+    if r.diagnosis:
+        parts.append(f"likely mistake: {r.diagnosis}")
+    if r.hint:
+        parts.append(f"hint: {r.hint}")
+    return "\n".join(parts)
+
+
+def _test(r: CheckResult, number: str, withheld: bool) -> dict:
+    return {
+        "name": f"Problem {r.problem}: {r.title}",
+        "number": number,
+        "score": float(r.score),
+        "max_score": float(r.max_score),
+        "status": "passed" if r.status is Status.PASSED else "failed",
+        "output": _check_output(r),
+        "output_format": "text",
+        "visibility": WITHHELD if withheld else "visible",
+        "tags": [f"problem-{r.problem}", r.status.value] + ([r.diagnosis] if r.diagnosis else []),
+        "extra_data": {"check_id": r.check_id, "status": r.status.value, "diagnosis": r.diagnosis,
+                       "seed": r.seed, "withheld": withheld},
+    }
+
+
+def _manual_test(m: ManualItem, number: str) -> dict:
+    """A free-text answer: informational (no score, no status; scored by hand), never with the model answer."""
+    return {
+        "name": f"Problem {m.problem}: {m.question} (scored by hand, {_fmt(m.max_score)} points)",
+        "number": number,
+        "output": f"Your answer:\n{m.answer or '(blank)'}\n\nScored by hand by your course staff; "
+                  "it counts 0 until then.",
+        "output_format": "text",
+        "visibility": "visible",
+        "tags": [f"problem-{m.problem}", "manual"],
+        "extra_data": {"free_text": m.key, "max_score": float(m.max_score)},
+    }
+
+
+def results_json(reports: list[ProblemReport], *, withheld_ids: set[str], seed: int,
+                 execution_time: float = 0.0) -> dict:
+    """Gradescope's results.json of one graded submission (see the module's docstring for what a student sees)."""
+    tests = []
+    withheld, grader_errors = [], []
+    for report in reports:
+        for index, r in enumerate(report.results, 1):
+            hide = r.check_id in withheld_ids or r.visibility == "hidden"
+            tests.append(_test(r, f"{report.problem}.{index}", hide))
+            if hide and r.visibility != "hidden":
+                withheld.append(r)
+            if r.status is Status.GRADER_ERROR:
+                grader_errors.append(r.check_id)
+        for index, m in enumerate(student_view(report).manual, len(report.results) + 1):
+            tests.append(_manual_test(m, f"{report.problem}.{index}"))
+    views = [student_view(r) for r in reports]
+    hidden = [r for report in reports for r in report.results if r.visibility == "hidden"]
+    # per problem: the points of the checks a student sees now (neither secret nor hidden)
+    shown = [(report, [r for r in report.results if r.visibility == "visible" and r.check_id not in withheld_ids])
+             for report in reports]
+    lines = [{"problem": report.problem, "title": report.title, "score": sum(r.score for r in public),
+              "max_score": sum(r.max_score for r in public)} for report, public in shown]
+    notes = sorted({n for report in reports for n in report.notes}
+                   | {report.sandbox for report in reports if not report.isolated and report.sandbox})
+    output = _env().get_template("gradescope/output.txt.j2").render(
+        problems=[r.problem for r in reports], seed=seed, lines=lines,
+        withheld=withheld, withheld_points=sum(r.max_score for r in withheld),
+        hidden_count=len(hidden), hidden_points=sum(r.max_score for r in hidden),
+        manual=[m for report in views for m in report.manual], grader_errors=grader_errors, notes=notes,
+        fmt=_fmt).strip() + "\n"
+    score = sum(r.score for report in reports for r in report.results)
+    return {
+        "score": float(score),
+        "execution_time": int(round(execution_time)),
+        "output": output,
+        "output_format": "text",
+        "visibility": "visible",
+        "stdout_visibility": "hidden",
+        "extra_data": {
+            "grader_version": __version__,
+            "seed": seed,
+            "problems": [r.problem for r in reports],
+            "max_score": float(sum(r.max_score for report in reports for r in report.results)),
+            "manual_points": float(sum(m.max_score for report in reports for m in report.manual)),
+            "sandbox": sorted({r.sandbox for r in reports}),
+            "isolated": all(r.isolated for r in reports),
+            "grader_errors": grader_errors,
+            "grader_fault": False,
+        },
+        "tests": tests,
+    }
+
+
+def fault_results(reason: str, *, execution_time: float = 0.0) -> dict:
+    """The results.json of a submission the grader could not grade at all (its installation is broken): said
+    plainly, score 0 (Gradescope needs a score), marked as the grader's fault for the course staff."""
+    output = _env().get_template("gradescope/fault.txt.j2").render(reason=reason).strip() + "\n"
+    return {
+        "score": 0.0,
+        "execution_time": int(round(execution_time)),
+        "output": output,
+        "output_format": "text",
+        "visibility": "visible",
+        "stdout_visibility": "hidden",
+        "extra_data": {"grader_version": __version__, "grader_fault": True, "reason": reason},
+        "tests": [{
+            "name": "The grader's installation (a fault of the grader, not of your work)",
+            "number": "0.1",
+            "score": 0.0,
+            "max_score": 0.0,
+            "status": "failed",
+            "output": output,
+            "output_format": "text",
+            "visibility": "visible",
+            "tags": ["grader_error"],
+            "extra_data": {"grader_fault": True, "status": Status.GRADER_ERROR.value},
+        }],
+    }
+
+
+# ---------------------------------------------------------------------------------------------- the run
+
+
+def find_student(folder: Path) -> Path:
+    """What a student submitted: the one ``.zip`` or ``.ipynb`` they uploaded, else the folder itself (the loader
+    takes a folder, one folder inside it, or notebooks in it)."""
+    from .batch.discover import SUBMISSION_SUFFIXES
+
+    entries = [p for p in folder.iterdir() if not p.name.startswith(".") and p.name != "__MACOSX"] \
+        if folder.is_dir() else []
+    if len(entries) == 1 and entries[0].is_file() and not entries[0].is_symlink() \
+            and entries[0].suffix in SUBMISSION_SUFFIXES:
+        return entries[0]
+    return folder
+
+
+def check_installation(problems: list[int], *, sandbox: bool = False, reference: bool = False) -> str:
+    """Raise ``GraderFault`` unless this installation can grade ``problems``: the reference is importable, no
+    answer key replaces it (that is the student kit), every problem has checks, (``sandbox``) a sandboxed worker
+    starts and (``reference``) the reference solution, graded as a submission, passes every check (which also
+    fills the grader's cache with the values of the sheet's cases).  Returns a line that says what was checked."""
+    from .oracle import current, reference_available
+
+    if not reference_available():
+        raise GraderFault("the reference solution is not installed with the grader (the autograder's setup.sh "
+                          "installs the wheel of the full project)")
+    if current().mode != "live":
+        raise GraderFault("an answer key is installed: this is the student kit, which cannot grade submissions "
+                          "(the autograder needs the full project)")
+    try:
+        _assigned(problems)
+    except ValueError as exc:
+        raise GraderFault(f"the assigned problems cannot be graded: {exc}") from exc
+    line = f"grader {__version__} at {Path(__file__).parent}, live reference, problems {problems}"
+    if sandbox:
+        from .sandbox import canary, sandbox_mode
+
+        mode = sandbox_mode()
+        canary(mode=mode)
+        line += f"; a sandboxed worker starts ({mode.note})"
+    if reference:
+        import importlib.util
+
+        from .runner import grade_submission
+
+        folder = Path(importlib.util.find_spec("reference").origin).parent
+        reports = grade_submission(folder, problems)
+        failures = [f"{r.check_id} ({r.status.value}): {r.message.splitlines()[0] if r.message else ''}"
+                    for report in reports for r in report.results if r.status is not Status.PASSED]
+        if failures:
+            raise GraderFault("the reference solution does not pass every check in this installation:\n  "
+                              + "\n  ".join(failures))
+        line += (f"; the reference scores {sum(r.score for r in reports):g} of "
+                 f"{sum(r.auto_max_score for r in reports):g}")
+    return line
+
+
+def _write_json(path: Path, data: dict) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+    tmp.replace(path)
+
+
+def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
+    """Grade ``root/submission`` on ``problems`` and write ``root/results/results.json``; returns the exit code
+    (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed on any check or could not grade)."""
+    from .runner import grade_submission
+
+    start = time.monotonic()
+    results_path = root / "results" / "results.json"
+    seed = random.SystemRandom().randrange(2**31) if seed is None else int(seed)
+    try:
+        print(check_installation(problems))
+        student = find_student(root / "submission")
+        print(f"grading {student} with seed {seed}")
+        reports = grade_submission(student, problems, seed=seed)
+        data = results_json(reports, withheld_ids=_withheld_ids(problems), seed=seed,
+                            execution_time=time.monotonic() - start)
+    except GraderFault as exc:
+        print(f"grader fault: {exc}")
+        _write_json(results_path, fault_results(str(exc), execution_time=time.monotonic() - start))
+        return EXIT_FAULT
+    except Exception as exc:  # noqa: BLE001 - anything unforeseen is the grader's fault, never the student's
+        traceback.print_exc(file=sys.stdout)
+        reason = f"internal error of the grader ({type(exc).__name__}); the course staff have its log"
+        _write_json(results_path, fault_results(reason, execution_time=time.monotonic() - start))
+        return EXIT_FAULT
+    _write_json(results_path, data)
+    for report in reports:
+        print(f"problem {report.problem}: {report.score:g} / {report.auto_max_score:g} ({report.sandbox})")
+    errors = data["extra_data"]["grader_errors"]
+    if errors:
+        print(f"grader errors (the student was told, and gets 0 for them until a regrade): {errors}")
+        return EXIT_FAULT
+    return EXIT_GRADED
+
+
+# ---------------------------------------------------------------------------------------------- the zip
+
+
+@dataclass(frozen=True)
+class Autograder:
+    zip: Path
+    problems: tuple[int, ...]
+    wheel: str
+    points: float  # the automatically graded points: the autograder's points in Gradescope
+    manual_points: float  # free-text answers, scored by hand
+    files: tuple[str, ...]
+
+
+def _points(problems: list[int]) -> tuple[float, float]:
+    from .listing import problem_list
+
+    infos = {p["number"]: p for p in problem_list()}
+    return (sum(infos[n]["points"] for n in problems if n in infos),
+            sum(infos[n]["manual_points"] or 0 for n in problems if n in infos))
+
+
+def _zip_entry(name: str, mode: int) -> zipfile.ZipInfo:
+    info = zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0))
+    info.external_attr = (0o100000 | mode) << 16  # a regular file with these permissions (run_autograder: 0755)
+    info.create_system = 3  # Unix, so that unzip applies the permissions
+    info.compress_type = zipfile.ZIP_DEFLATED
+    return info
+
+
+def build_autograder(out: str | Path, problems: list[int] | None = None) -> Autograder:
+    """Write Gradescope's autograder zip for ``problems`` (default: every problem with checks) to ``out``."""
+    import tempfile
+
+    from .kit import KitError, kit_files, runtime_dependencies, write_wheel
+    from .oracle import KEY_FILE, reference_available
+
+    if not reference_available():
+        raise KitError("grade gradescope needs the full project: the reference solution is not installed here "
+                       "(the student kit cannot build the autograder)")
+    numbers = _assigned(problems)
+    files = kit_files(WHEEL_PACKAGES)
+    if f"grader/{KEY_FILE}" in files or not any(name.startswith("reference/") for name in files):
+        raise GraderFault("the autograder's wheel must hold the reference and no answer key")
+    with tempfile.TemporaryDirectory(prefix="grader-gradescope-") as tmp:
+        wheel = write_wheel(tmp, files, runtime_dependencies(), name=WHEEL_NAME, packages=WHEEL_PACKAGES,
+                            summary="The multibody-dynamics course's grader with its reference solution "
+                                    "(instructors only: Gradescope's autograder)")
+        wheel_bytes, wheel_name = wheel.read_bytes(), wheel.name
+    values = {"wheel": wheel_name, "version": __version__, "problems": ", ".join(map(str, numbers)),
+              "config": CONFIG, "fault": FAULT, "grader_home": GRADER_HOME,
+              "python_min": ".".join(map(str, PYTHON_MIN)), "python_min_tuple": ", ".join(map(str, PYTHON_MIN))}
+    env = _env()
+    config = {"problems": numbers, "grader_version": __version__, "wheel": wheel_name, "withheld": WITHHELD}
+    fault = fault_results("the grader did not start in the autograder (its installation is broken; the "
+                          "autograder's log says why)")
+    contents = [
+        (SETUP, env.get_template("gradescope/setup.sh.j2").render(**values).encode(), 0o755),
+        (RUN, env.get_template("gradescope/run_autograder.j2").render(**values).encode(), 0o755),
+        (wheel_name, wheel_bytes, 0o644),
+        (CONFIG, (json.dumps(config, indent=2) + "\n").encode(), 0o644),
+        (FAULT, (json.dumps(fault, indent=2) + "\n").encode(), 0o644),
+    ]
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    tmp_zip = out.with_name(out.name + ".tmp")
+    with zipfile.ZipFile(tmp_zip, "w", compression=zipfile.ZIP_DEFLATED) as archive:
+        for name, data, mode in contents:
+            archive.writestr(_zip_entry(name, mode), data)
+    tmp_zip.replace(out)
+    points, manual = _points(numbers)
+    return Autograder(out, tuple(numbers), wheel_name, points, manual, tuple(name for name, _, _ in contents))
+
+
+# ---------------------------------------------------------------------------------------------- entry point
+
+
+def _config(path: str) -> list[int]:
+    try:
+        data = json.loads(Path(path).read_text(encoding="utf-8"))
+        return [int(n) for n in data["problems"]]
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise GraderFault(f"the autograder's configuration {path} cannot be read: {exc}") from exc
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m grader.gradescope run|check``: what run_autograder and setup.sh call."""
+    parser = argparse.ArgumentParser(prog="python -m grader.gradescope")
+    sub = parser.add_subparsers(dest="command", required=True)
+    p_run = sub.add_parser("run", help="grade ROOT/submission and write ROOT/results/results.json")
+    p_run.add_argument("--root", default=os.environ.get("AUTOGRADER_ROOT", "/autograder"))
+    p_run.add_argument("--config", required=True)
+    p_run.add_argument("--seed", type=int, default=None, help="reproduce a run (default: a fresh seed)")
+    p_check = sub.add_parser("check", help="check the installation (setup.sh's last step)")
+    p_check.add_argument("--config", required=True)
+    args = parser.parse_args(argv)
+    if args.command == "check":
+        try:
+            print(check_installation(_config(args.config), sandbox=True, reference=True))
+        except GraderFault as exc:
+            print(f"the autograder's installation is broken: {exc}", file=sys.stderr)
+            return EXIT_FAULT
+        return EXIT_GRADED
+    root = Path(args.root)
+    try:
+        problems = _config(args.config)
+    except GraderFault as exc:
+        print(f"grader fault: {exc}")
+        _write_json(root / "results" / "results.json", fault_results(str(exc)))
+        return EXIT_FAULT
+    return run(root, problems, seed=args.seed)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
