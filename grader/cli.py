@@ -98,7 +98,7 @@ def cmd_problem(args) -> int:
         _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))
     _write(args.json, render_json(reports, show_hidden=False))
     _write(args.gradescope, render_gradescope(reports))
-    if any("could not be loaded" in r.message for rep in reports for r in rep.results):
+    if any(report.load_error for report in reports):  # said once in the report, with the fix
         return EXIT_USAGE
     return _exit_code(reports)
 
