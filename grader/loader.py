@@ -148,7 +148,7 @@ def _printable(name: str) -> str:
     try:
         name.encode("utf-8")
     except UnicodeEncodeError:
-        return repr(os.fsencode(name))[1:]
+        return repr(os.fsencode(name))[2:-1]
     return name
 
 
@@ -193,9 +193,10 @@ def _visible(name: str) -> bool:
     return name not in IGNORED_DIRS and not name.startswith(".")
 
 
-def _recognised(root: Path) -> bool:
+def _recognised(root: Path, wrapped: bool = True) -> bool:
     """Whether ``root`` looks like a work folder: a module of the template, answers.toml or a notebook at its
-    top, or a single folder that does (a submission wrapped in a folder).  Only the top level is listed."""
+    top, or (``wrapped``) a single folder that does (a submission wrapped in one folder).  Only the top level
+    and that one folder are listed."""
     try:
         with os.scandir(root) as listing:
             entries = [e for _, e in zip(range(MAX_ENTRIES), listing) if _visible(e.name)]
@@ -203,8 +204,8 @@ def _recognised(root: Path) -> bool:
         return False
     if any(e.is_file(follow_symlinks=False) and _is_submission_file(e.name) for e in entries):
         return True
-    return (len(entries) == 1 and entries[0].is_dir(follow_symlinks=False) and _valid_name(entries[0].name)
-            and _recognised(root / entries[0].name))
+    return (wrapped and len(entries) == 1 and entries[0].is_dir(follow_symlinks=False)
+            and _valid_name(entries[0].name) and _recognised(root / entries[0].name, wrapped=False))
 
 
 def _collect_dir(root: Path) -> tuple[dict[str, bytes], list[str]]:

@@ -73,7 +73,7 @@ def discover(folder: str | Path, exclude: Path | None = None) -> tuple[list[Entr
         if path.name.startswith((".", "__")) or (exclude is not None and path.resolve() == exclude.resolve()):
             continue
         if not _valid_name(path.name):
-            ignored.append(f"{repr(os.fsencode(path.name))[1:]}{BAD_NAME}")
+            ignored.append(f"{repr(os.fsencode(path.name))[2:-1]}{BAD_NAME}")
             continue
         if not (path.is_dir() or path.suffix in SUBMISSION_SUFFIXES):
             ignored.append(path.name)
