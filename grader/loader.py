@@ -76,6 +76,7 @@ class Submission:
     files: tuple[str, ...]  # the student's files, as laid over the template
     notes: tuple[str, ...] = ()
     notebooks: tuple[NotebookPlan, ...] = ()
+    template_copies: tuple[str, ...] = ()  # the student's files that are the template's, unchanged
 
 
 def template_dir() -> Path:
@@ -427,7 +428,7 @@ def problem_notes(submission: Submission, number: int) -> tuple[str, ...]:
     needed = template_index()[1].get(number, ())
     given = {(target, name) for plan in submission.notebooks for name, targets in plan.placed.items()
              for target in targets}
-    files = {PurePosixPath(f).as_posix() for f in submission.files}
+    files = set(submission.files) - set(submission.template_copies)
     missing = [(m, n) for m, n in needed if (m, n) not in given and f"{m}.py" not in files]
     if missing:
         found = [n for plan in submission.notebooks for n in plan.defined if not n.startswith("__")]
@@ -497,18 +498,23 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
     source = Path(source)
     files, notes = _student_files(source)
     digest = content_hash(files)
-    plans = [notebook_plan(name, data, f"_notebook_{index}")
-             for index, (name, data) in enumerate(sorted((n, d) for n, d in files.items() if n.endswith(".ipynb")), 1)]
+    books = sorted((n, d) for n, d in files.items() if n.endswith(".ipynb") and not _template_notebook(n, d))
+    plans = [notebook_plan(name, data, f"_notebook_{index}") for index, (name, data) in enumerate(books, 1)]
     root = Path(tempfile.mkdtemp(prefix="submission-", dir=workdir))
     try:
         target = root / "pkg"
         shutil.copytree(template_dir(), target, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
         laid: list[str] = []
+        copies: list[str] = []
         for name, data in files.items():
             if name.endswith(".ipynb"):
                 laid.append(name)
+                if _template_notebook(name, data):
+                    copies.append(name)
                 continue
             out = target / PurePosixPath(name)
+            if out.is_file() and out.read_bytes() == data:
+                copies.append(name)
             out.parent.mkdir(parents=True, exist_ok=True)
             out.write_bytes(data)
             laid.append(name)
@@ -526,7 +532,8 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
     except BaseException:
         shutil.rmtree(root, ignore_errors=True)
         raise
-    return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans))
+    return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans),
+                      tuple(sorted(copies)))
 
 
 def _overlaps(plans: list[NotebookPlan]) -> list[str]:
@@ -541,6 +548,94 @@ def _overlaps(plans: list[NotebookPlan]) -> list[str]:
                                  f"{plan.file}'s is graded")
                 owner[(target, name)] = plan.file
     return notes
+
+
+# ------------------------------------------------------------------------------------------ grade init --notebook
+
+
+def _jupyter_import(stmt: ast.stmt, defined: set[str]) -> str | None:
+    """An import of a template module as a notebook writes it: ``from .rotations import R1`` becomes ``from
+    rotations import R1`` (the work folder is the notebook's working folder), without the names the notebook
+    defines itself."""
+    if isinstance(stmt, ast.Import):
+        return ast.unparse(stmt)
+    if not isinstance(stmt, ast.ImportFrom):
+        return None
+    names = [a for a in stmt.names if (a.asname or a.name) not in defined]
+    if not names:
+        return None
+    module = stmt.module if stmt.level == 0 else (stmt.module or "")
+    if stmt.level and not module:  # "from . import x": x is a module of the package
+        return "\n".join(f"import {a.name}" + (f" as {a.asname}" if a.asname else "") for a in names)
+    return ast.unparse(ast.ImportFrom(module=module, names=names, level=0))
+
+
+def template_notebooks() -> dict[str, object]:
+    """The student template as notebooks, one per problem that has functions to write (``problem_06.ipynb``:
+    the problem's text, the imports its code needs, the problem's constants and a cell per function or class to
+    write, each with its docstring and stub)."""
+    from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
+
+    _, required = template_index()
+    sources = {p.stem: p.read_text(encoding="utf-8") for p in template_dir().glob("*.py")}
+    trees = {name: ast.parse(text) for name, text in sources.items()}
+    books = {}
+    for number, names in required.items():
+        own = f"problem_{number:02d}"
+        modules = list(dict.fromkeys([own, *(m for m, _ in names)]))
+        defined = {n for _, n in names}
+        constants = []
+        if own in trees:
+            for stmt in trees[own].body:
+                if isinstance(stmt, (ast.Assign, ast.AnnAssign)) and not any(
+                        isinstance(t, ast.Name) and t.id.startswith("__")
+                        for t in getattr(stmt, "targets", [getattr(stmt, "target", None)])):
+                    constants.append(ast.get_source_segment(sources[own], stmt))
+                    defined |= {t.id for t in getattr(stmt, "targets", [getattr(stmt, "target", None)])
+                                if isinstance(t, ast.Name)}
+        imports = []
+        for module in modules:
+            for stmt in trees.get(module, ast.Module(body=[])).body:
+                line = _jupyter_import(stmt, defined)
+                if line and line not in imports:
+                    imports.append(line)
+        doc = (ast.get_docstring(trees[own]) if own in trees else "") or f"Problem {number}"
+        title, _, text = doc.partition("\n")
+        cells = [new_markdown_cell(f"# {title}\n{text}\n\nWrite your solution in the cells below, "
+                                   f"keeping the names and signatures. `grade problem-{number}` in this folder "
+                                   "grades this notebook: it takes the definitions (functions, classes, constants, "
+                                   "imports) of its code cells; prints, plots and other statements are yours.")]
+        if imports:
+            cells.append(new_code_cell("\n".join(imports)))
+        if constants:
+            cells.append(new_code_cell("\n".join(constants)))
+        for module, name in names:
+            stmt = next(s for s in trees[module].body if getattr(s, "name", None) == name)
+            cells.append(new_markdown_cell(f"`{name}` (goes to `{module}.py`)"))
+            cells.append(new_code_cell(ast.get_source_segment(sources[module], stmt)))
+        books[f"{own}.ipynb"] = new_notebook(cells=cells)
+    return books
+
+
+@lru_cache(maxsize=1)
+def _template_code() -> dict[str, tuple[str, ...]]:
+    return {name: tuple(c.source for c in book.cells if c.cell_type == "code")
+            for name, book in template_notebooks().items()}
+
+
+def _template_notebook(name: str, data: bytes) -> bool:
+    """Whether the notebook ``name`` is one of ``grade init --notebook``'s, its code unchanged (nothing of it
+    needs to run: the template's modules hold the same stubs)."""
+    expected = _template_code().get(name)
+    if expected is None:
+        return False
+    try:
+        cells = json.loads(data.decode("utf-8")).get("cells", [])
+        code = tuple("".join(c["source"]) if isinstance(c["source"], list) else c["source"]
+                     for c in cells if c.get("cell_type") == "code")
+    except (ValueError, UnicodeDecodeError, AttributeError, KeyError, TypeError):
+        return False
+    return code == expected
 
 
 def read_answers(package: Path) -> tuple[dict, str | None]:
