@@ -1,6 +1,6 @@
 """The ``grade`` command.
 
-    grade init DIR                     copy the student template to DIR
+    grade init DIR [--notebook]        copy the student template to DIR (and write it as notebooks)
     grade problem-N [--submission P]   grade problem N of the submission in P (default: the current folder)
     grade list                         every problem, its points, and whether checks exist for it
     grade demo                         grade the bundled sample submissions
@@ -48,6 +48,17 @@ def cmd_init(args) -> int:
         print(f"error: {target} exists and is not empty; choose a new folder", file=sys.stderr)
         return EXIT_USAGE
     shutil.copytree(template_dir(), target, dirs_exist_ok=True, ignore=shutil.ignore_patterns("__pycache__"))
+    if args.notebook:
+        import nbformat
+
+        from .loader import template_notebooks
+
+        for name, book in template_notebooks().items():
+            nbformat.write(book, target / name)
+        print(f"Created {target}/ from the student template, with a notebook per problem (problem_06.ipynb, ...): "
+              f"write your solutions in the notebooks (or in the .py files).\nNext: cd {target} && jupyter lab, "
+              "then grade problem-6")
+        return EXIT_OK
     print(f"Created {target}/ from the student template.\nNext: cd {target} && grade problem-6")
     return EXIT_OK
 
@@ -99,7 +110,7 @@ def cmd_problem(args) -> int:
         _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))
     _write(args.json, render_json(reports, show_hidden=False))
     _write(args.gradescope, render_gradescope(reports))
-    if any("could not be loaded" in r.message for rep in reports for r in rep.results):
+    if any(report.load_error for report in reports):  # said once in the report, with the fix
         return EXIT_USAGE
     return _exit_code(reports)
 
@@ -162,6 +173,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     p_init = sub.add_parser("init", help="copy the student template to a new folder")
     p_init.add_argument("dir", help="the folder to create")
+    p_init.add_argument("--notebook", action="store_true",
+                        help="also write the template as Jupyter notebooks, one per problem (problem_06.ipynb, ...)")
     p_init.set_defaults(func=cmd_init)
 
     p_list = sub.add_parser("list", help="list the problems, their points and checks")

@@ -1,33 +1,71 @@
-"""Turning a submission (a directory, a zip archive or Jupyter notebooks) into a private package directory.
+"""Turning a submission (a folder, a zip archive or Jupyter notebooks) into a private package directory.
 
 The copy starts from the student template, so that a submission that lacks a module still imports (and its
-functions report "not implemented yet"); the student's files are laid over it.  Notebooks become modules: the
-code cells of ``problem_06.ipynb`` become ``problem_06.py``.  Nothing of the submission runs here.
+functions report "not implemented yet"); the student's files are laid over it.  Nothing of the submission runs
+here: files are read (never through a symbolic link, which is refused) and notebooks parsed, not executed.
+
+Notebooks: the definitions of a notebook's code cells (see ``grader.sandbox.notebook`` for what counts) are placed
+into the template's modules by name, whatever the notebook is called: ``R1`` goes to ``rotations``, ``frames`` to
+``problem_06``.  A name that several modules define (``solve``, ``vectors``) goes to the problem of the section it
+is written in (the nearest markdown heading above it that names a problem), else to the problem the notebook's
+file name names (``problem_06.ipynb``, ``Problem 6.ipynb``), else to every module that defines it.  The worker
+runs the definitions in the sandbox and puts them into those modules (``_notebooks.json`` tells it what goes
+where); the report says which name went where and which names a problem needs that no file or notebook defines.
 """
 
 from __future__ import annotations
 
+import ast
 import hashlib
+import json
 import os
 import re
 import shutil
 import stat
 import tempfile
 import zipfile
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path, PurePosixPath
 
 from .errors import SubmissionError
+from .sandbox.notebook import clean_cell, definitions
 
-__all__ = ["Submission", "materialize", "submission_digest", "template_dir", "content_hash", "read_answers",
-           "MAX_FILES", "MAX_BYTES"]
+__all__ = ["Submission", "NotebookPlan", "materialize", "submission_digest", "template_dir", "template_index",
+           "content_hash", "read_answers", "notebook_plan", "problem_notes", "MAX_FILES", "MAX_BYTES", "FIX",
+           "NOTEBOOK_MANIFEST"]
 
 MAX_FILES = 500
 MAX_BYTES = 50 * 2**20
+#: entries of a folder looked at (kept or not) before it is refused as not a work folder, and its deepest nesting
+MAX_ENTRIES = 5000
+MAX_DEPTH = 8
+#: the code of one notebook's cells (its outputs do not count)
+MAX_NOTEBOOK_CODE = 2 * 2**20
 MAX_ANSWERS_BYTES = 2**20
 IGNORED_DIRS = {"__pycache__", ".git", ".ipynb_checkpoints", "__MACOSX", ".venv", "venv", "node_modules"}
 KEPT_SUFFIXES = {".py", ".toml", ".ipynb", ".md", ".txt"}
 MODULE_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+#: what to do when the folder graded is not a work folder
+FIX = "Run `grade` inside the folder that `grade init` made, or pass `--submission PATH`."
+#: the file of the materialized package that tells the worker where the notebooks' definitions go
+NOTEBOOK_MANIFEST = "_notebooks.json"
+#: a problem named in a notebook's file name or in a markdown heading: "problem_06", "Problem 6", "P6"
+PROBLEM_NAME = re.compile(r"(?:problem|aufgabe|prob|p)[\s_-]*0*(\d{1,2})(?!\d)", re.IGNORECASE)
+#: the template's stub of a function that the student writes: NotImplementedError("Problem 6: ...")
+_STUB = re.compile(r"^Problem (\d+):")
+
+
+@dataclass(frozen=True)
+class NotebookPlan:
+    """Where the definitions of one notebook go."""
+
+    file: str  # the notebook's name in the submission
+    module: str  # the private module its code runs as, e.g. "_notebook_1"
+    cells: tuple[tuple[int, str], ...]  # (cell number, code without IPython lines)
+    defined: tuple[str, ...]  # every name its definitions bind, in order
+    placed: dict = field(default_factory=dict)  # name -> tuple of template modules
+    notes: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -37,6 +75,8 @@ class Submission:
     digest: str  # sha256 of the student's files (names and contents)
     files: tuple[str, ...]  # the student's files, as laid over the template
     notes: tuple[str, ...] = ()
+    notebooks: tuple[NotebookPlan, ...] = ()
+    template_copies: tuple[str, ...] = ()  # the student's files that are the template's, unchanged
 
 
 def template_dir() -> Path:
@@ -51,6 +91,52 @@ def template_dir() -> Path:
     return Path(spec.origin).parent
 
 
+def _stub_problem(func: ast.AST) -> int | None:
+    """The problem of a template function whose body is the stub ``raise NotImplementedError("Problem N: ...")``."""
+    for node in ast.walk(func):
+        if isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call) and node.exc.args:
+            arg = node.exc.args[0]
+            if isinstance(arg, ast.Constant) and isinstance(arg.value, str):
+                match = _STUB.match(arg.value)
+                if match:
+                    return int(match.group(1))
+    return None
+
+
+@lru_cache(maxsize=1)
+def template_index() -> tuple[dict[str, tuple[str, ...]], dict[int, tuple[tuple[str, str], ...]]]:
+    """The template's top-level names (name -> the modules that define it) and, per problem, the names a student
+    writes for it (``(module, name)`` of every stub ``raise NotImplementedError("Problem N: ...")``)."""
+    names: dict[str, list[str]] = {}
+    required: dict[int, list[tuple[str, str]]] = {}
+    for path in sorted(template_dir().glob("*.py")):
+        module = path.stem
+        if module == "__init__":
+            continue
+        for stmt in ast.parse(path.read_text(encoding="utf-8")).body:
+            if isinstance(stmt, (ast.FunctionDef, ast.ClassDef)):
+                bound = [stmt.name]
+                number = _stub_problem(stmt)
+                if number is not None:
+                    required.setdefault(number, []).append((module, stmt.name))
+            elif isinstance(stmt, ast.Assign):
+                bound = [t.id for t in stmt.targets if isinstance(t, ast.Name)]
+            elif isinstance(stmt, ast.AnnAssign) and isinstance(stmt.target, ast.Name):
+                bound = [stmt.target.id]
+            else:
+                bound = []
+            for name in bound:
+                if not name.startswith("__"):
+                    names.setdefault(name, []).append(module)
+    return ({k: tuple(dict.fromkeys(v)) for k, v in names.items()},
+            {k: tuple(v) for k, v in sorted(required.items())})
+
+
+@lru_cache(maxsize=1)
+def template_modules() -> frozenset[str]:
+    return frozenset(p.stem for p in template_dir().glob("*.py"))
+
+
 def content_hash(files: dict[str, bytes]) -> str:
     digest = hashlib.sha256()
     for name in sorted(files):
@@ -58,27 +144,138 @@ def content_hash(files: dict[str, bytes]) -> str:
     return digest.hexdigest()
 
 
-def _collect_dir(root: Path) -> dict[str, bytes]:
+def _printable(name: str) -> str:
+    """A file name as the report shows it: as is when it is valid UTF-8, else its bytes."""
+    try:
+        name.encode("utf-8")
+    except UnicodeEncodeError:
+        return repr(os.fsencode(name))[2:-1]
+    return name
+
+
+def _valid_name(name: str) -> bool:
+    try:
+        name.encode("utf-8")
+    except UnicodeEncodeError:  # os.fsdecode turned bytes that are not UTF-8 into surrogates
+        return False
+    return True
+
+
+def _refuse_links(links: list[str]) -> None:
+    if links:
+        shown = ", ".join(links[:5]) + (f" and {len(links) - 5} more" if len(links) > 5 else "")
+        raise SubmissionError(f"the submission holds symbolic links, which the grader never follows: {shown}. "
+                              "Put the files themselves in their place.")
+
+
+def _read_regular(name: str, dir_fd: int, limit: int) -> bytes | None:
+    """The bytes of the regular file ``name`` in ``dir_fd``, never through a link (None for anything else: a
+    link, a FIFO, a device)."""
+    try:
+        fd = os.open(name, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC, dir_fd=dir_fd)
+    except OSError:
+        return None
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return None
+        with os.fdopen(os.dup(fd), "rb") as handle:
+            return handle.read(limit + 1)
+    finally:
+        os.close(fd)
+
+
+def _is_submission_file(name: str) -> bool:
+    path = PurePosixPath(name)
+    return (path.suffix == ".ipynb" or name in ("answers.toml", "__init__.py")
+            or (path.suffix == ".py" and path.stem in template_modules()))
+
+
+def _visible(name: str) -> bool:
+    return name not in IGNORED_DIRS and not name.startswith(".")
+
+
+def _recognised(root: Path, wrapped: bool = True) -> bool:
+    """Whether ``root`` looks like a work folder: a module of the template, answers.toml or a notebook at its
+    top, or (``wrapped``) a single folder that does (a submission wrapped in one folder).  Only the top level
+    and that one folder are listed."""
+    try:
+        with os.scandir(root) as listing:
+            entries = [e for _, e in zip(range(MAX_ENTRIES), listing) if _visible(e.name)]
+    except OSError:
+        return False
+    if any(e.is_file(follow_symlinks=False) and _is_submission_file(e.name) for e in entries):
+        return True
+    return (wrapped and len(entries) == 1 and entries[0].is_dir(follow_symlinks=False)
+            and _valid_name(entries[0].name) and _recognised(root / entries[0].name, wrapped=False))
+
+
+def _collect_dir(root: Path) -> tuple[dict[str, bytes], list[str]]:
+    """The student's files under ``root`` and notes on what was left out.  Never follows a symbolic link (a
+    link is refused), reads regular files only, and stops at ``MAX_ENTRIES`` entries."""
     files: dict[str, bytes] = {}
-    total = 0
-    for dirpath, dirnames, filenames in os.walk(root, followlinks=False):
-        dirnames[:] = sorted(d for d in dirnames if d not in IGNORED_DIRS and not d.startswith("."))
-        for name in sorted(filenames):
-            path = Path(dirpath) / name
-            if path.is_symlink() or Path(name).suffix not in KEPT_SUFFIXES:
+    notes: list[str] = []
+    links: list[str] = []
+    total = seen = 0
+
+    def walk(dir_fd: int, prefix: str, depth: int) -> None:
+        nonlocal total, seen
+        with os.scandir(dir_fd) as listing:
+            entries = sorted(listing, key=lambda e: e.name)
+        for entry in entries:
+            seen += 1
+            if seen > MAX_ENTRIES or depth > MAX_DEPTH:
+                raise SubmissionError(f"{root} holds more than {MAX_ENTRIES} entries or folders nested deeper than "
+                                      f"{MAX_DEPTH}: it is not a work folder. {FIX}")
+            if not _visible(entry.name):
                 continue
-            rel = path.relative_to(root).as_posix()
-            size = path.stat().st_size
-            total += size
+            rel = prefix + entry.name
+            if not _valid_name(entry.name):
+                notes.append(f"left out {_printable(rel)}: its name is not valid UTF-8 (rename it with plain "
+                             "letters, digits and _)")
+                continue
+            if entry.is_symlink():
+                target = os.readlink(entry.name, dir_fd=dir_fd)
+                links.append(f"{rel} → {_printable(target)}")
+                continue
+            if entry.is_dir(follow_symlinks=False):
+                try:
+                    sub = os.open(entry.name, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC,
+                                  dir_fd=dir_fd)
+                except OSError as exc:
+                    notes.append(f"left out the folder {rel}: it cannot be read ({exc.strerror})")
+                    continue
+                try:
+                    walk(sub, rel + "/", depth + 1)
+                finally:
+                    os.close(sub)
+                continue
+            if PurePosixPath(entry.name).suffix not in KEPT_SUFFIXES:
+                continue
+            data = _read_regular(entry.name, dir_fd, MAX_BYTES)
+            if data is None:
+                notes.append(f"left out {rel}: it is not a regular file that can be read")
+                continue
+            total += len(data)
             if len(files) >= MAX_FILES or total > MAX_BYTES:
                 raise SubmissionError(f"the submission is too large (more than {MAX_FILES} files or "
                                       f"{MAX_BYTES // 2**20} MB of source)")
-            files[rel] = path.read_bytes()
-    return files
+            files[rel] = data
+
+    try:
+        top = os.open(root, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC)
+    except OSError as exc:
+        raise SubmissionError(f"{root} cannot be read: {exc.strerror}") from exc
+    try:
+        walk(top, "", 0)
+    finally:
+        os.close(top)
+    _refuse_links(links)
+    return files, notes
 
 
 def _collect_zip(path: Path) -> dict[str, bytes]:
     files: dict[str, bytes] = {}
+    links: list[str] = []
     total = 0
     try:
         with zipfile.ZipFile(path) as archive:
@@ -88,7 +285,10 @@ def _collect_zip(path: Path) -> dict[str, bytes]:
                 name = PurePosixPath(info.filename.replace("\\", "/"))
                 if name.is_absolute() or ".." in name.parts or any(p in IGNORED_DIRS for p in name.parts):
                     continue
-                if stat.S_ISLNK(info.external_attr >> 16) or name.suffix not in KEPT_SUFFIXES:
+                if stat.S_ISLNK(info.external_attr >> 16):
+                    links.append(name.as_posix())
+                    continue
+                if name.suffix not in KEPT_SUFFIXES:
                     continue
                 total += info.file_size
                 if len(files) >= MAX_FILES or total > MAX_BYTES:
@@ -99,8 +299,10 @@ def _collect_zip(path: Path) -> dict[str, bytes]:
                 if len(data) > info.file_size:
                     raise SubmissionError(f"{name} in the archive is larger than its header says")
                 files[name.as_posix()] = data
-    except (zipfile.BadZipFile, OSError, RuntimeError, NotImplementedError) as exc:
-        raise SubmissionError(f"{path.name} is not a readable zip archive: {exc}") from exc
+    except (zipfile.BadZipFile, OSError, RuntimeError, NotImplementedError, EOFError, ValueError) as exc:
+        raise SubmissionError(f"{path.name} is not a readable zip archive: {exc}. Make the archive again from the "
+                              "folder that `grade init` made (or submit the folder itself).") from exc
+    _refuse_links(links)
     return files
 
 
@@ -115,83 +317,325 @@ def _strip_common_folder(files: dict[str, bytes]) -> dict[str, bytes]:
     return files
 
 
-def notebook_to_source(data: bytes, name: str) -> str:
-    """The code cells of a notebook as one module; IPython magics and shell lines are commented out."""
+# ------------------------------------------------------------------------------------------ notebooks
+
+
+def _read_notebook(data: bytes, name: str):
     import nbformat
 
     try:
-        notebook = nbformat.reads(data.decode("utf-8"), as_version=4)
+        return nbformat.reads(data.decode("utf-8"), as_version=4)
     except Exception as exc:  # noqa: BLE001 - nbformat raises many kinds of errors for malformed input
-        raise SubmissionError(f"the notebook {name} cannot be read: {exc}") from exc
-    chunks = [f"# Generated from the notebook {name}: its code cells, in order.\n"]
-    for index, cell in enumerate(notebook.cells):
+        reason = str(exc).strip().splitlines()[0][:300] if str(exc).strip() else type(exc).__name__
+        raise SubmissionError(f"the notebook {name} cannot be read ({reason}). Open it in Jupyter, save it "
+                              "again (File → Save) and submit that file.") from exc
+
+
+def _problem_in(text: str) -> int | None:
+    match = PROBLEM_NAME.search(text)
+    return int(match.group(1)) if match else None
+
+
+def _section_problem(cell) -> int | None:
+    """The problem that a markdown heading (or a code cell's first comment) names."""
+    source = str(cell.get("source", ""))
+    if cell.get("cell_type") == "markdown":
+        lines = [line for line in source.splitlines() if line.lstrip().startswith("#")]
+    elif cell.get("cell_type") == "code":
+        lines = source.lstrip().splitlines()[:1]
+        lines = [line for line in lines if line.startswith("#")]
+    else:
+        lines = []
+    for line in lines:
+        number = _problem_in(line)
+        if number is not None:
+            return number
+    return None
+
+
+def _place(name: str, modules: tuple[str, ...], section: int | None, file_problem: int | None) -> tuple[str, ...]:
+    if len(modules) == 1:
+        return modules
+    for number in (section, file_problem):
+        if number is not None and f"problem_{number:02d}" in modules:
+            return (f"problem_{number:02d}",)
+    return modules
+
+
+def notebook_plan(file: str, data: bytes, module: str) -> NotebookPlan:
+    """Where the definitions of the notebook ``file`` go (its code is parsed, never run here)."""
+    notebook = _read_notebook(data, file)
+    names_index, _ = template_index()
+    file_problem = _problem_in(PurePosixPath(file).stem)
+    section = None
+    cells: list[tuple[int, str]] = []
+    defined: dict[str, int | None] = {}  # name -> the section it was (last) defined in
+    notes: list[str] = []
+    size = dropped = 0
+    for number, cell in enumerate(notebook.get("cells", []), 1):
+        section = _section_problem(cell) or section
         if cell.get("cell_type") != "code":
             continue
-        lines = []
-        for line in str(cell.get("source", "")).splitlines():
-            stripped = line.lstrip()
-            if stripped.startswith(("%", "!")) or "get_ipython()" in stripped:
-                line = line[: len(line) - len(stripped)] + "# (notebook magic) " + stripped
-            lines.append(line)
-        chunks.append(f"# --- cell {index + 1}\n" + "\n".join(lines) + "\n")
-    return "\n".join(chunks)
+        code, lines = clean_cell(str(cell.get("source", "")))
+        dropped += lines
+        size += len(code)
+        if size > MAX_NOTEBOOK_CODE:
+            raise SubmissionError(f"the notebook {file} holds more than {MAX_NOTEBOOK_CODE // 2**20} MB of code")
+        try:
+            names = definitions(code)
+        except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
+            where = f", line {exc.lineno}" if isinstance(exc, SyntaxError) and exc.lineno else ""
+            notes.append(f"notebook {file}: cell {number} was left out: it does not parse ({type(exc).__name__}"
+                         f"{where}: {getattr(exc, 'msg', exc)})")
+            continue
+        cells.append((number, code))
+        for name in names:
+            defined.pop(name, None)
+            defined[name] = section
+    placed: dict[str, tuple[str, ...]] = {}
+    for name, where in defined.items():
+        if name.startswith("__") or name not in names_index:
+            continue
+        placed[name] = _place(name, names_index[name], where, file_problem)
+    by_module: dict[str, list[str]] = {}
+    for name, modules in placed.items():
+        for target in modules:
+            by_module.setdefault(target, []).append(name)
+    for target in sorted(by_module):
+        notes.append(f"notebook {file} → {target}.py: {', '.join(sorted(by_module[target]))}")
+    several = sorted(n for n, m in placed.items() if len(m) > 1)
+    if several:
+        notes.append(f"notebook {file}: {', '.join(several)} went to every module that has the name, as neither "
+                     "a heading above it (\"## Problem 9\") nor the notebook's name says which problem it is for")
+    others = [n for n in defined if n not in placed and not n.startswith("_")]
+    if others:
+        notes.append(f"notebook {file}: also defined (not names of the template; your functions may use them): "
+                     f"{', '.join(others[:20])}{' …' if len(others) > 20 else ''}")
+    if dropped:
+        notes.append(f"notebook {file}: {dropped} IPython line{'s' if dropped != 1 else ''} (magics, shell "
+                     "commands) left out")
+    if not cells:
+        notes.append(f"notebook {file}: no code cell holds a definition")
+    return NotebookPlan(file, module, tuple(cells), tuple(defined), placed, tuple(notes))
 
 
-def _student_files(source: Path) -> dict[str, bytes]:
+def problem_notes(submission: Submission, number: int) -> tuple[str, ...]:
+    """What the report of problem ``number`` says about the submission: its notes, and, for a submission with
+    notebooks, the names the problem needs that neither a notebook nor a file of the student defines."""
+    notes = list(submission.notes)
+    if not submission.notebooks:
+        return tuple(notes)
+    needed = template_index()[1].get(number, ())
+    given = {(target, name) for plan in submission.notebooks for name, targets in plan.placed.items()
+             for target in targets}
+    files = set(submission.files) - set(submission.template_copies)
+    missing = [(m, n) for m, n in needed if (m, n) not in given and f"{m}.py" not in files]
+    if missing:
+        found = [n for plan in submission.notebooks for n in plan.defined if not n.startswith("__")]
+        shown = ", ".join(f"{n} ({m})" for m, n in missing)
+        notes.append(f"problem {number} needs {shown}, which none of your notebooks or files defines; your "
+                     f"notebooks define: {', '.join(dict.fromkeys(found)) or 'nothing'}")
+    return tuple(notes)
+
+
+# ------------------------------------------------------------------------------------------ the submission
+
+
+def _single_file(source: Path) -> dict[str, bytes]:
+    try:
+        fd = os.open(source, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+    except OSError as exc:
+        raise SubmissionError(f"{source} cannot be read: {exc.strerror}") from exc
+    with os.fdopen(fd, "rb") as handle:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise SubmissionError(f"{source} is not a regular file")
+        data = handle.read(MAX_BYTES + 1)
+    if len(data) > MAX_BYTES:
+        raise SubmissionError(f"{source.name} is larger than {MAX_BYTES // 2**20} MB")
+    return {source.name: data}
+
+
+def _student_files(source: Path) -> tuple[dict[str, bytes], list[str]]:
+    """The student's files (name -> bytes) and notes on what was left out."""
+    shown = os.path.abspath(source)
+    if source.is_symlink():
+        raise SubmissionError(f"{shown} is a symbolic link, which the grader never follows: submit the folder or "
+                              "file itself")
     if not source.exists():
-        raise SubmissionError(f"{source} does not exist")
+        raise SubmissionError(f"{shown} does not exist. {FIX}")
+    notes: list[str] = []
     if source.is_dir():
-        files = _collect_dir(source)
+        if not _recognised(source):
+            try:
+                empty = not any(_visible(name) for name in os.listdir(source))
+            except OSError:
+                empty = False
+            what = "is empty" if empty else ("holds no module of the template (such as rotations.py or "
+                                             "problem_06.py), no answers.toml and no notebook")
+            raise SubmissionError(f"{shown} is not a work folder: it {what}. {FIX}")
+        files, notes = _collect_dir(source)
     elif source.suffix == ".zip":
         files = _collect_zip(source)
     elif source.suffix in (".ipynb", ".py", ".toml"):
-        files = {source.name: source.read_bytes()}
+        files = _single_file(source)
     else:
         raise SubmissionError(f"{source.name}: expected a folder, a .zip archive or a .ipynb notebook")
     files = _strip_common_folder(files)
     if not files:
-        raise SubmissionError(f"{source.name} contains no Python files, notebooks or answers.toml")
-    return files
+        raise SubmissionError(f"{source.name} holds no Python files, notebooks or answers.toml. {FIX}")
+    return files, notes
 
 
 def submission_digest(source: str | Path) -> str:
     """The content hash of a submission as ``materialize`` would compute it (names and contents of the
     student's files), without copying anything."""
-    return content_hash(_student_files(Path(source)))
+    return content_hash(_student_files(Path(source))[0])
 
 
 def materialize(source: str | Path, workdir: str | Path | None = None) -> Submission:
-    """Copy the template and lay the submission over it in a fresh private directory."""
+    """Copy the template and lay the submission over it in a fresh private directory; a notebook's definitions
+    are planned into the template's modules (``NOTEBOOK_MANIFEST``), to be run by the sandboxed worker."""
     source = Path(source)
-    files = _student_files(source)
+    files, notes = _student_files(source)
     digest = content_hash(files)
+    books = sorted((n, d) for n, d in files.items() if n.endswith(".ipynb") and not _template_notebook(n, d))
+    plans = [notebook_plan(name, data, f"_notebook_{index}") for index, (name, data) in enumerate(books, 1)]
     root = Path(tempfile.mkdtemp(prefix="submission-", dir=workdir))
-    target = root / "pkg"
-    shutil.copytree(template_dir(), target, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
-    notes = []
-    laid: list[str] = []
-    for name, data in files.items():
-        rel = PurePosixPath(name)
-        if rel.suffix == ".ipynb":
-            module = rel.stem.replace("-", "_").replace(" ", "_")
-            if not MODULE_NAME.match(module):
-                notes.append(f"skipped the notebook {name}: {module!r} is not a valid module name")
+    try:
+        target = root / "pkg"
+        shutil.copytree(template_dir(), target, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+        laid: list[str] = []
+        copies: list[str] = []
+        for name, data in files.items():
+            if name.endswith(".ipynb"):
+                laid.append(name)
+                if _template_notebook(name, data):
+                    copies.append(name)
                 continue
-            out = target / rel.parent / f"{module}.py"
+            out = target / PurePosixPath(name)
+            if out.is_file() and out.read_bytes() == data:
+                copies.append(name)
             out.parent.mkdir(parents=True, exist_ok=True)
-            out.write_text(notebook_to_source(data, name))
-            notes.append(f"notebook {name} → {module}.py")
+            out.write_bytes(data)
             laid.append(name)
-            continue
-        out = target / rel
-        out.parent.mkdir(parents=True, exist_ok=True)
-        out.write_bytes(data)
-        laid.append(name)
-    for dirpath, dirnames, filenames in os.walk(root):
-        os.chmod(dirpath, 0o755)
-        for fname in filenames:
-            os.chmod(os.path.join(dirpath, fname), 0o644)
-    return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes))
+        if plans:
+            manifest = [{"file": p.file, "module": p.module, "cells": [list(c) for c in p.cells],
+                         "defined": list(p.defined), "placed": {k: list(v) for k, v in p.placed.items()}}
+                        for p in plans]
+            (target / NOTEBOOK_MANIFEST).write_text(json.dumps({"notebooks": manifest}), encoding="utf-8")
+            notes += [note for p in plans for note in p.notes]
+            notes += _overlaps(plans)
+        for dirpath, dirnames, filenames in os.walk(root):
+            os.chmod(dirpath, 0o755)
+            for fname in filenames:
+                os.chmod(os.path.join(dirpath, fname), 0o644)
+    except BaseException:
+        shutil.rmtree(root, ignore_errors=True)
+        raise
+    return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans),
+                      tuple(sorted(copies)))
+
+
+def _overlaps(plans: list[NotebookPlan]) -> list[str]:
+    """Names that several notebooks put into the same module: the last notebook (by name) is graded."""
+    owner: dict[tuple[str, str], str] = {}
+    notes = []
+    for plan in plans:
+        for name, targets in plan.placed.items():
+            for target in targets:
+                if (target, name) in owner:
+                    notes.append(f"{name} ({target}) is defined in {owner[(target, name)]} and in {plan.file}: "
+                                 f"{plan.file}'s is graded")
+                owner[(target, name)] = plan.file
+    return notes
+
+
+# ------------------------------------------------------------------------------------------ grade init --notebook
+
+
+def _jupyter_import(stmt: ast.stmt, defined: set[str]) -> str | None:
+    """An import of a template module as a notebook writes it: ``from .rotations import R1`` becomes ``from
+    rotations import R1`` (the work folder is the notebook's working folder), without the names the notebook
+    defines itself."""
+    if isinstance(stmt, ast.Import):
+        return ast.unparse(stmt)
+    if not isinstance(stmt, ast.ImportFrom):
+        return None
+    names = [a for a in stmt.names if (a.asname or a.name) not in defined]
+    if not names:
+        return None
+    module = stmt.module if stmt.level == 0 else (stmt.module or "")
+    if stmt.level and not module:  # "from . import x": x is a module of the package
+        return "\n".join(f"import {a.name}" + (f" as {a.asname}" if a.asname else "") for a in names)
+    return ast.unparse(ast.ImportFrom(module=module, names=names, level=0))
+
+
+def template_notebooks() -> dict[str, object]:
+    """The student template as notebooks, one per problem that has functions to write (``problem_06.ipynb``:
+    the problem's text, the imports its code needs, the problem's constants and a cell per function or class to
+    write, each with its docstring and stub)."""
+    from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
+
+    _, required = template_index()
+    sources = {p.stem: p.read_text(encoding="utf-8") for p in template_dir().glob("*.py")}
+    trees = {name: ast.parse(text) for name, text in sources.items()}
+    books = {}
+    for number, names in required.items():
+        own = f"problem_{number:02d}"
+        modules = list(dict.fromkeys([own, *(m for m, _ in names)]))
+        defined = {n for _, n in names}
+        constants = []
+        if own in trees:
+            for stmt in trees[own].body:
+                if isinstance(stmt, (ast.Assign, ast.AnnAssign)) and not any(
+                        isinstance(t, ast.Name) and t.id.startswith("__")
+                        for t in getattr(stmt, "targets", [getattr(stmt, "target", None)])):
+                    constants.append(ast.get_source_segment(sources[own], stmt))
+                    defined |= {t.id for t in getattr(stmt, "targets", [getattr(stmt, "target", None)])
+                                if isinstance(t, ast.Name)}
+        imports = []
+        for module in modules:
+            for stmt in trees.get(module, ast.Module(body=[])).body:
+                line = _jupyter_import(stmt, defined)
+                if line and line not in imports:
+                    imports.append(line)
+        doc = (ast.get_docstring(trees[own]) if own in trees else "") or f"Problem {number}"
+        title, _, text = doc.partition("\n")
+        cells = [new_markdown_cell(f"# {title}\n{text}\n\nWrite your solution in the cells below, "
+                                   f"keeping the names and signatures. `grade problem-{number}` in this folder "
+                                   "grades this notebook: it takes the definitions (functions, classes, constants, "
+                                   "imports) of its code cells; prints, plots and other statements are yours.")]
+        if imports:
+            cells.append(new_code_cell("\n".join(imports)))
+        if constants:
+            cells.append(new_code_cell("\n".join(constants)))
+        for module, name in names:
+            stmt = next(s for s in trees[module].body if getattr(s, "name", None) == name)
+            cells.append(new_markdown_cell(f"`{name}` (goes to `{module}.py`)"))
+            cells.append(new_code_cell(ast.get_source_segment(sources[module], stmt)))
+        books[f"{own}.ipynb"] = new_notebook(cells=cells)
+    return books
+
+
+@lru_cache(maxsize=1)
+def _template_code() -> dict[str, tuple[str, ...]]:
+    return {name: tuple(c.source for c in book.cells if c.cell_type == "code")
+            for name, book in template_notebooks().items()}
+
+
+def _template_notebook(name: str, data: bytes) -> bool:
+    """Whether the notebook ``name`` is one of ``grade init --notebook``'s, its code unchanged (nothing of it
+    needs to run: the template's modules hold the same stubs)."""
+    expected = _template_code().get(name)
+    if expected is None:
+        return False
+    try:
+        cells = json.loads(data.decode("utf-8")).get("cells", [])
+        code = tuple("".join(c["source"]) if isinstance(c["source"], list) else c["source"]
+                     for c in cells if c.get("cell_type") == "code")
+    except (ValueError, UnicodeDecodeError, AttributeError, KeyError, TypeError):
+        return False
+    return code == expected
 
 
 def read_answers(package: Path) -> tuple[dict, str | None]:

@@ -132,6 +132,8 @@ def gradescope_results(reports: list[ProblemReport]) -> dict:
     for report in reports:
         for r in report.results:
             output = "\n".join(part for part in (r.message, f"hint: {r.hint}" if r.hint else "") if part)
+            if report.load_error:
+                output = "not run: the submission could not be loaded (the reason is at the top)"
             tests.append(
                 {
                     "name": f"Problem {r.problem}: {r.title}",
@@ -157,10 +159,11 @@ def gradescope_results(reports: list[ProblemReport]) -> dict:
                 }
             )
     notes = sorted({r.sandbox for r in reports if not r.isolated})
+    load_errors = list(dict.fromkeys(r.load_error for r in reports if r.load_error))
     # No top-level "score": Gradescope then totals the tests itself and applies each test's visibility.
     return {
-        "output": "Automatically graded checks; free-text answers are scored by hand." + (
-            " " + " ".join(notes) if notes else ""),
+        "output": "".join(f"Your submission could not be loaded: {e}\n\n" for e in load_errors)
+        + "Automatically graded checks; free-text answers are scored by hand." + (" " + " ".join(notes) if notes else ""),
         "visibility": "visible",
         "stdout_visibility": "hidden",
         "tests": tests,

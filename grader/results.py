@@ -101,6 +101,8 @@ class ProblemReport:
     submission: str = ""
     grader_version: str = ""
     notes: tuple[str, ...] = field(default=())
+    #: why the submission could not be loaded ("" when it was): said once, for the whole problem; no check ran
+    load_error: str = ""
 
     @property
     def score(self) -> float:

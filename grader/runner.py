@@ -18,7 +18,7 @@ from . import __version__
 from .checking import CheckFailure, NotAnswered, checks_of
 from .context import Context
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
-from .loader import cleanup, materialize, read_answers
+from .loader import cleanup, materialize, problem_notes, read_answers
 from .results import CheckResult, ManualItem, ProblemReport, Status
 from .sandbox import Child, Limits, SandboxMode, sandbox_mode
 
@@ -260,7 +260,7 @@ def grade_submission(
                         stderr=stderr,
                         submission=str(source),
                         grader_version=__version__,
-                        notes=submission.notes,
+                        notes=problem_notes(submission, number) + child.import_notes,
                     )
                 )
     finally:
@@ -274,7 +274,8 @@ def grade_problem(problem: int, source: str | Path, **options) -> ProblemReport:
 
 
 def _unloadable(number, module, source, reason, mode, seed) -> ProblemReport:
-    message = f"the submission could not be loaded: {reason}"
-    results = tuple(_not_run(spec, number, Status.ERROR, message) for spec in checks_of(module))
+    """The report of a submission that could not be loaded: the reason once, for the problem (``load_error``);
+    every check scores 0 with the status of the student's error and no message of its own."""
+    results = tuple(_not_run(spec, number, Status.ERROR, "") for spec in checks_of(module))
     return ProblemReport(number, module.TITLE, results, sandbox=mode.note, isolated=mode.isolated, seed=seed,
-                         submission=str(source), grader_version=__version__)
+                         submission=str(source), grader_version=__version__, load_error=reason)

@@ -13,6 +13,12 @@
   - ``isolated_only``: the attack is contained only by bubblewrap's file-system view (plain processes skip it);
   - ``other_uid``: the attack would harm the user who runs the grader: graded only where the child cannot be that
     user (bubblewrap, or a plain process under a uid of its own);
+  - ``load_error``: a text of why the submission could not be loaded (said once, for the whole problem);
+  - ``note``: a text of one of the report's notes;
+  - ``links``: symbolic links to create in the submission, ``{ "NAME" = "TARGET" }``, a target starting with
+    ``@`` naming a path of this project (``"@reference/rotations.py"``);
+  - ``odd_names``: files to create whose names are not valid UTF-8, written with ``\\xNN`` escapes of their bytes
+    (each holds ``x = 1``);
   - ``target``: the test writes ``target.txt`` into the submission (JSON: a ``nonce``, the ``port`` of a socket
     the test listens on, the reference ``cache`` folder the grader uses) and checks afterwards that no process or
     file named with the nonce is left, that the cache is untouched, and that a connection reached the port only
@@ -21,6 +27,7 @@
 
 from __future__ import annotations
 
+import os
 import shutil
 import tomllib
 from dataclasses import dataclass, field
@@ -109,4 +116,14 @@ def build_hostile(name: str, dest: Path) -> Path:
             target = dest / path.relative_to(HOSTILE / name)
             target.parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(path, target)
+    expect = hostile_expectation(name)
+    for link, target in expect.get("links", {}).items():
+        path = dest / link
+        if path.exists() or path.is_symlink():
+            path.unlink()
+        path.symlink_to(ROOT / target[1:] if target.startswith("@") else target)
+    for odd in expect.get("odd_names", ()):
+        raw = odd.encode("latin-1").decode("unicode_escape").encode("latin-1")
+        with open(os.path.join(os.fsencode(dest), raw), "w") as handle:
+            handle.write("x = 1\n")
     return dest

@@ -194,13 +194,14 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes):
     limits = replace(LIMITS, **expect.get("limits", {}))
     problem = expect.get("problem", 6)
     warm = kind.endswith("-warm")
-    if kind.startswith("process"):
+    if kind.startswith("process") and "load_error" not in expect:  # refused before any child starts
         if refusal() is not None:
             assert_refused(lambda: grade_problem(problem, submission, seed=7, limits=limits, mode=mode,
                                                  zygote=zygotes(kind) if warm else None))
             return
         if expect.get("other_uid") and os.geteuid() != 0:
             pytest.skip("without bubblewrap and without root, the child runs as the user who runs the tests")
+    warm = warm and "load_error" not in expect  # a submission refused by the loader starts no child at all
     zygote = zygotes(kind) if warm else None
     target = Target(submission, monkeypatch) if expect.get("target") else None
     before = set(descendants(os.getpid()))
@@ -224,6 +225,13 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes):
             if "message" in expect:
                 assert expect["message"] in result.message, result.message
         assert not any(r.status is Status.GRADER_ERROR for r in report.results), report.results
+        if "load_error" in expect:  # said once, for the problem: not under every check
+            assert expect["load_error"] in report.load_error, report.load_error
+            assert not any(r.message for r in report.results), report.results
+        else:
+            assert not report.load_error, report.load_error
+        if "note" in expect:
+            assert any(expect["note"] in note for note in report.notes), report.notes
         if "max_score" in expect:
             assert report.score <= expect["max_score"]
         if "stdout" in expect:

@@ -14,6 +14,7 @@ def cmd_batch(args) -> int:
     from ..errors import SubmissionError
     from ..runner import problem_module
     from ..sandbox import Limits
+    from .discover import BAD_NAME
     from .run import BatchLocked, run_batch
 
     for number in args.problems or ():
@@ -41,7 +42,8 @@ def cmd_batch(args) -> int:
         print(f"error: the Dask cluster {args.cluster} cannot be reached: {exc}", file=sys.stderr)
         return EXIT_USAGE
     for name in report.ignored:
-        print(f"note: {name} is not a folder, a .zip archive or a .ipynb notebook: ignored", file=sys.stderr)
+        why = "" if name.endswith(BAD_NAME) else " (not a folder, a .zip archive or a .ipynb notebook)"
+        print(f"note: ignored {name}{why}", file=sys.stderr)
     print(f"{report.students} students: {report.graded} graded, {report.skipped} unchanged (skipped), "
           f"{len(report.timed_out)} stopped at the time limit, {len(report.not_graded)} not graded "
           f"in {report.seconds:.1f} s.", file=sys.stderr)

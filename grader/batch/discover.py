@@ -4,14 +4,17 @@ that decides whether a student is graded again, and the seed of their randomized
 from __future__ import annotations
 
 import hashlib
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import SubmissionError
 
-__all__ = ["Entry", "SUBMISSION_SUFFIXES", "student_seed", "submission_hash", "discover"]
+__all__ = ["Entry", "SUBMISSION_SUFFIXES", "BAD_NAME", "student_seed", "submission_hash", "discover"]
 
 SUBMISSION_SUFFIXES = (".zip", ".ipynb")
+#: follows an ignored entry whose name is not valid UTF-8
+BAD_NAME = " (its name is not valid UTF-8: rename it)"
 
 @dataclass(frozen=True)
 class Entry:
@@ -32,18 +35,36 @@ def student_seed(content_hash: str) -> int:
 
 
 def submission_hash(path: Path) -> str:
-    """The content hash of a submission (its files' names and contents), as the loader computes it."""
-    from ..loader import submission_digest
+    """The content hash of a submission (its files' names and contents), as the loader computes it; for a
+    submission that cannot be loaded, a hash of why (and of the file, when it is a regular one), so that a
+    corrected submission is graded again."""
+    from ..loader import MAX_BYTES, submission_digest
 
     try:
         return submission_digest(path)
     except SubmissionError as exc:
-        data = path.read_bytes() if path.is_file() else str(exc).encode()
-        return "unloadable-" + hashlib.sha256(data).hexdigest()
+        digest = hashlib.sha256(str(exc).encode("utf-8", "replace"))
+        if not path.is_symlink() and path.is_file():
+            try:
+                with open(path, "rb") as handle:
+                    digest.update(handle.read(MAX_BYTES + 1))
+            except OSError:
+                pass
+        return "unloadable-" + digest.hexdigest()
+
+
+def _valid_name(name: str) -> bool:
+    try:
+        name.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 def discover(folder: str | Path, exclude: Path | None = None) -> tuple[list[Entry], list[str]]:
-    """The students of ``folder`` and the names of the entries that are not submissions."""
+    """The students of ``folder`` and the names of the entries that are not submissions (a name that is not
+    valid UTF-8 is shown as its bytes, followed by ``BAD_NAME``).  A symbolic link
+    is a student whose submission is refused (the loader never follows links), not a reason to stop."""
     folder = Path(folder)
     if not folder.is_dir():
         raise SubmissionError(f"{folder} is not a folder")
@@ -51,13 +72,15 @@ def discover(folder: str | Path, exclude: Path | None = None) -> tuple[list[Entr
     for path in sorted(folder.iterdir()):
         if path.name.startswith((".", "__")) or (exclude is not None and path.resolve() == exclude.resolve()):
             continue
+        if not _valid_name(path.name):
+            ignored.append(f"{repr(os.fsencode(path.name))[2:-1]}{BAD_NAME}")
+            continue
         if not (path.is_dir() or path.suffix in SUBMISSION_SUFFIXES):
             ignored.append(path.name)
             continue
-        name = path.name if path.is_dir() else path.stem
+        name = path.stem if path.suffix in SUBMISSION_SUFFIXES and not path.is_dir() else path.name
         if name in seen:
             raise SubmissionError(f"{seen[name]} and {path.name} would both be the student {name!r}")
         seen[name] = path.name
         entries.append(Entry(name, path, submission_hash(path)))
     return entries, ignored
-

@@ -291,7 +291,9 @@ def _trouble(graded: list[Graded]) -> list[dict]:
     for g in graded:
         bad = [r for r in g.report.results if r.status in TROUBLE]
         if bad or g.outcome != "graded":
-            message = bad[0].message.strip() if bad else ""
+            message = g.report.load_error or (bad[0].message.strip() if bad else "")
+            if g.report.load_error:
+                message = f"could not be loaded: {message}"
             trouble.append({
                 "student": g.student, "problem": g.report.problem, "outcome": g.outcome,
                 "statuses": ", ".join(sorted({r.status.value for r in bad})),

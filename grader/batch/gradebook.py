@@ -87,6 +87,7 @@ CREATE TABLE IF NOT EXISTS submissions (
     stderr         TEXT NOT NULL,
     notes          TEXT NOT NULL,           -- JSON list
     manual         TEXT NOT NULL,           -- JSON list of the free-text items (answers, no scores)
+    load_error     TEXT NOT NULL DEFAULT '',  -- why the submission could not be loaded ('' when it was)
     UNIQUE (student_id, content_hash, grader_version, problem)
 );
 CREATE TABLE IF NOT EXISTS check_results (
@@ -308,6 +309,9 @@ class Gradebook:
         columns = {row["name"] for row in self.db.execute("PRAGMA table_info(runs)")}
         if "sandbox" not in columns:  # a gradebook written before runs recorded their sandbox
             self.db.execute("ALTER TABLE runs ADD COLUMN sandbox TEXT NOT NULL DEFAULT ''")
+        columns = {row["name"] for row in self.db.execute("PRAGMA table_info(submissions)")}
+        if "load_error" not in columns:  # a gradebook written before unloadable submissions were said once
+            self.db.execute("ALTER TABLE submissions ADD COLUMN load_error TEXT NOT NULL DEFAULT ''")
 
     @classmethod
     def in_folder(cls, results_dir: str | Path) -> Gradebook:
@@ -393,13 +397,13 @@ class Gradebook:
                 cursor = db.execute(
                     "INSERT INTO submissions (student_id, content_hash, grader_version, problem, run_id, graded_at, "
                     "seed, outcome, score, max_score, source, title, sandbox, isolated, duration, stdout, stderr, "
-                    "notes, manual) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                    "notes, manual, load_error) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                     (
                         *key, run_id, graded_at, report.seed, outcome,
                         sum(r.score for r in report.results), report.auto_max_score, report.submission,
                         report.title, report.sandbox, int(report.isolated), report.duration, report.stdout,
                         report.stderr, json.dumps(list(report.notes)),
-                        json.dumps([asdict(replace(m, score=None)) for m in report.manual]),
+                        json.dumps([asdict(replace(m, score=None)) for m in report.manual]), report.load_error,
                     ),
                 )
                 db.executemany(
@@ -451,7 +455,7 @@ class Gradebook:
                 problem=row["problem"], title=row["title"], results=results, manual=items, sandbox=row["sandbox"],
                 isolated=bool(row["isolated"]), seed=row["seed"], duration=row["duration"], stdout=row["stdout"],
                 stderr=row["stderr"], submission=row["source"], grader_version=row["grader_version"],
-                notes=tuple(json.loads(row["notes"])),
+                notes=tuple(json.loads(row["notes"])), load_error=row["load_error"],
             )
             graded.append(
                 Graded(row["student"], row["content_hash"], row["grader_version"], row["run_id"], row["graded_at"],

@@ -58,6 +58,15 @@ def probe_name(probe) -> str:
 _KNOWN_PROBES: set[str] = set()
 
 
+def _notes(value) -> tuple[str, ...]:
+    """The notes of an import reply (the worker's account of a notebook's definitions that raised), bounded:
+    the reply comes from a process that ran student code."""
+    notes = value.get("notes") if isinstance(value, dict) else None
+    if not isinstance(notes, list):
+        return ()
+    return tuple(str(note)[:500] for note in notes[:50] if isinstance(note, str))
+
+
 class Child:
     """A worker process for one submission.  ``call`` runs a probe; a crash or time-out kills the process, and
     the next call starts a fresh one (unless importing the submission itself failed: that failure is final)."""
@@ -83,6 +92,7 @@ class Child:
         self._errors = tempfile.TemporaryFile()
         self.calls = 0
         self.restarts = 0
+        self.import_notes: tuple[str, ...] = ()  # what the worker said about the submission's notebooks
 
     # ------------------------------------------------------------------ process life
 
@@ -425,7 +435,8 @@ class Child:
             self._send_import()
         try:
             self._pending_import = False
-            self._request(None, self.limits.import_timeout, phase="import")
+            reply = self._request(None, self.limits.import_timeout, phase="import")
+            self.import_notes = _notes(reply.get("value"))
         except (StudentCodeError, StudentTimeout, WorkerCrash) as exc:
             if exc.phase == "import" and not getattr(exc, "not_implemented", False):
                 self._import_failure = exc

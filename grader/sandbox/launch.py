@@ -166,7 +166,7 @@ def runtime_dir() -> Path:
     root = Path(tempfile.mkdtemp(prefix="grader-runtime-"))
     atexit.register(shutil.rmtree, root, True)
     here = Path(__file__).parent
-    for name in ("worker.py", "protocol.py"):
+    for name in ("worker.py", "protocol.py", "notebook.py"):
         shutil.copy2(here / name, root / name)
     probes = Path(importlib.import_module("probes").__file__).parent
     shutil.copytree(probes, root / "probes", ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))

@@ -2,7 +2,7 @@
 and runs probes on it.
 
 This file runs inside the sandbox with the untrusted submission and must stay importable on its own: standard
-library only, plus ``protocol.py`` and the ``probes`` package, which the grader copies next to it.  It never sees
+library only, plus ``protocol.py``, ``notebook.py`` and the ``probes`` package, which the grader copies next to it.  It never sees
 the reference, the checks or the scoring code: it receives probe calls on a dedicated pipe and sends back plain
 data (see ``protocol`` for the messages).
 
@@ -35,8 +35,9 @@ import traceback
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 try:
-    from . import protocol
+    from . import notebook, protocol
 except ImportError:  # run as a script from the runtime directory, next to protocol.py
+    import notebook  # type: ignore[no-redef]
     import protocol  # type: ignore[no-redef]
 
 PACKAGE = "submission"
@@ -87,14 +88,95 @@ def _raised_in_probes(exc: BaseException) -> bool:
 # ---------------------------------------------------------------- the submission and the probes
 
 
+class _OwnModules:
+    """Jupyter-style imports of the submission's own modules: ``import rotations`` or ``from rotations import R1``
+    (as a notebook or a script run inside the work folder writes them) find ``submission.rotations``.  Asked only
+    for names that no other finder knows (it comes last), never for the grader's own packages."""
+
+    def __init__(self, root: str):
+        self.root = root
+
+    def internal(self, name: str) -> bool:
+        top = name.partition(".")[0]
+        return bool(top) and top.isidentifier() and top not in BLOCKED and top != PACKAGE and (
+            os.path.isfile(os.path.join(self.root, top + ".py"))
+            or os.path.isfile(os.path.join(self.root, top, "__init__.py")))
+
+    def find_spec(self, fullname, path=None, target=None):
+        if path is not None or "." in fullname or not self.internal(fullname):
+            return None
+        return importlib.util.spec_from_loader(fullname, self)
+
+    def create_module(self, spec):
+        return importlib.import_module(f"{PACKAGE}.{spec.name}")
+
+    def exec_module(self, module):
+        pass
+
+
 def _import_submission(path: str):
+    """Import the submission as the package ``submission``; returns it and what the report should say about its
+    notebooks (the definitions of a notebook that raised)."""
+    own = _OwnModules(path)
+    if not any(isinstance(f, _OwnModules) for f in sys.meta_path):
+        sys.meta_path.append(own)
     spec = importlib.util.spec_from_file_location(
         PACKAGE, os.path.join(path, "__init__.py"), submodule_search_locations=[path]
     )
     module = importlib.util.module_from_spec(spec)
     sys.modules[PACKAGE] = module
     spec.loader.exec_module(module)
-    return module
+    return module, _place_notebooks(path, own)
+
+
+#: written by the loader next to the submission's modules (students cannot submit .json files)
+NOTEBOOK_MANIFEST = "_notebooks.json"
+
+
+def _place_notebooks(path: str, own: _OwnModules) -> list[str]:
+    """Run the definitions of the submission's notebooks (each as a module of its own) and put each name into
+    the template's modules the loader chose; a function or class of the template that a module had imported
+    from another (``from .rotations import R1``) is replaced there too."""
+    manifest = os.path.join(path, NOTEBOOK_MANIFEST)
+    if not os.path.isfile(manifest):
+        return []
+    import types
+
+    with open(manifest, encoding="utf-8") as handle:
+        books = json.load(handle)["notebooks"]
+    notes: list[str] = []
+    replaced: dict[int, tuple[object, object]] = {}
+    for book in books:
+        file = str(book["file"])
+        name = f"{PACKAGE}.{book['module']}"
+        module = types.ModuleType(name, f"The definitions of the notebook {file}.")
+        module.__package__ = PACKAGE
+        module.__file__ = os.path.join(path, file)
+        sys.modules[name] = module
+        cells = [(int(number), str(code)) for number, code in book["cells"]]
+        notes += [f"notebook {file}: {note}" for note in notebook.run_cells(
+            cells, module.__dict__, set(book["defined"]), lambda n, f=file: os.path.join(path, f"{f}, cell {n}"),
+            own.internal)]
+        for defined, targets in book["placed"].items():
+            if defined not in module.__dict__:
+                notes.append(f"notebook {file}: {defined} is not defined after its cells ran (see above), so the "
+                             "template's stays")
+                continue
+            value = module.__dict__[defined]
+            for target in targets:
+                target_module = importlib.import_module(f"{PACKAGE}.{target}")
+                old = target_module.__dict__.get(defined)
+                if isinstance(old, (types.FunctionType, type)) and old is not value:
+                    replaced[id(old)] = (old, value)
+                setattr(target_module, defined, value)
+    for module_name, module in list(sys.modules.items()):
+        if module is None or not (module_name == PACKAGE or module_name.startswith(PACKAGE + ".")):
+            continue
+        for key, value in list(vars(module).items()):
+            entry = replaced.get(id(value))
+            if entry is not None and entry[0] is value:
+                setattr(module, key, entry[1])
+    return notes
 
 
 def _probe(name: str):
@@ -118,8 +200,8 @@ def _handle(request: dict, package, submission: str):
     op = request.get("op")
     try:
         if op == "import":
-            package = _import_submission(submission)
-            reply = {"id": req_id, "ok": True, "value": None}
+            package, notes = _import_submission(submission)
+            reply = {"id": req_id, "ok": True, "value": {"notes": notes[:50]}}
         elif op == "call":
             try:
                 probe = _probe(request.get("probe", ""))
@@ -127,7 +209,7 @@ def _handle(request: dict, package, submission: str):
             except ProbeLookupError as exc:
                 return _error(req_id, "probe", exc), package
             if package is None:
-                package = _import_submission(submission)
+                package, _ = _import_submission(submission)
             phase = "call"
             value = probe(package, *args)
             try:
