@@ -427,3 +427,44 @@ def test_concurrent_children_run_under_different_unprivileged_uids(tmp_path):
         assert first.info.get("network_isolated") is not None
     for path in paths:
         shutil.rmtree(path.parent, ignore_errors=True)
+
+
+@pytest.mark.parametrize("mode", ["bwrap", "process"])
+def test_student_code_that_plots_can_import_matplotlib(reference_copy, mode):
+    """The child's private /tmp (its HOME) is writable by its uid: matplotlib, which needs a writable config
+    folder, imports in student code as it does on the student's machine."""
+    if mode == "bwrap" and not sandbox_mode().isolated:
+        pytest.skip("bubblewrap is not available here")
+    chosen = sandbox_mode() if mode == "bwrap" else plain_mode()
+    if mode == "process" and refusal():
+        pytest.skip(refusal())
+    rotations = reference_copy / "rotations.py"
+    rotations.write_text("import matplotlib\nmatplotlib.use('Agg')\nimport matplotlib.pyplot as plt\n"
+                         "plt.figure()\n" + rotations.read_text())
+    (report,) = grade_submission(reference_copy, [6], seed=1, mode=chosen)
+    failed = [(r.check_id, r.message[:300]) for r in report.results if not r.passed]
+    assert not failed
+
+
+def test_the_private_tmp_is_bounded(reference_copy):
+    """The child's /tmp is writable, and a tmpfs holds memory: a submission that floods it stops at its size."""
+    if not sandbox_mode().isolated:
+        pytest.skip("bubblewrap is not available here")
+    init = reference_copy / "__init__.py"
+    init.write_text(init.read_text() + """
+import os as _os
+_written, _error = 0, "none"
+try:
+    while _written < 512:
+        with open(_os.path.join("/tmp", f"flood-{_written}"), "wb") as _handle:
+            _handle.write(b"x" * 2**20)
+        _written += 1
+except OSError as _exc:
+    _error = _exc.__class__.__name__
+print(f"flood: {_written} MiB, stopped by {_error}")
+""")
+    (report,) = grade_submission(reference_copy, [6], seed=1)
+    assert "stopped by OSError" in report.stdout, report.stdout
+    written = int(report.stdout.split("flood: ")[1].split(" MiB")[0])
+    assert written <= launch.TMP_SIZE_MB, report.stdout
+    assert report.score == report.auto_max_score

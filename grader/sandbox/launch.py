@@ -88,6 +88,10 @@ class Limits:
         }
 
 
+#: the size of the private /tmp of a bubblewrap child [MiB] (a tmpfs, held in memory)
+TMP_SIZE_MB = 64
+
+
 @dataclass(frozen=True)
 class SandboxMode:
     """How children are isolated: ``"bwrap"`` or ``"process"`` (limits only, under an unprivileged uid when
@@ -436,7 +440,9 @@ def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: boo
     for system_dir in SYSTEM_DIRS:
         argv += ["--ro-bind-try", system_dir, system_dir]
     # The private /tmp first: a runtime that lives under /tmp is bound on top of it afterwards.
-    argv += ["--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp"]
+    # Writable by the child's uid (its HOME: matplotlib and others need one), and bounded: a tmpfs is memory.
+    argv += ["--proc", "/proc", "--dev", "/dev", "--perms", "1777", "--size", str(TMP_SIZE_MB * 2**20), "--tmpfs",
+             "/tmp"]
     made = {"/", "/tmp", "/proc", "/dev"}
     for path in bound:  # parents traversable by the child's uid even where the host's are not (e.g. /root)
         for parent in reversed(Path(path).parents):
