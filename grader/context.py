@@ -55,6 +55,22 @@ class Context:
         """Run ``probe`` on the student's package in the sandbox."""
         return self.child.call(probe, *args, timeout=timeout)
 
+    def student_later(self, probe: str, *args, timeout: float | None = None):
+        """Send the call of ``probe`` to the student's code now; returns a function that waits for its value, so
+        that the grader's own work in between (the reference, a catalogue of mistakes) overlaps the student's
+        code.  A child without ``call_later`` is called at once."""
+        later = getattr(self.child, "call_later", None)
+        if later is not None:
+            return later(probe, *args, timeout=timeout)
+        try:
+            value = self.child.call(probe, *args, timeout=timeout)
+        except StudentFault as exc:
+            def raise_later():
+                raise exc
+
+            return raise_later
+        return lambda: value
+
     def reference(self, probe: str, *args, persist: bool = False):
         """Run ``probe`` on the reference (cached in memory, and on disk when ``persist``); in the kit, the value
         recorded in the answer key."""
@@ -110,12 +126,13 @@ class Context:
         ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer."""
 
         def evaluate(args):
-            got = self.student(probe, *args)
+            got = self.student_later(probe, *args)  # the reference and the catalogue meanwhile
             expected = self.reference(probe, *args)
+            found = mistakes(args, expected) if mistakes and compare is None else ()
+            got = got()
             if compare is not None:
                 compare(got, expected, args)
             else:
-                found = mistakes(args, expected) if mistakes else ()
                 assert_close(got, expected, name, tol, found)
 
         site = self._site()
