@@ -65,8 +65,10 @@ class Context:
         try:
             value = self.child.call(probe, *args, timeout=timeout)
         except StudentFault as exc:
+            failure = exc
+
             def raise_later():
-                raise exc
+                raise failure
 
             return raise_later
         return lambda: value

@@ -150,3 +150,19 @@ def test_a_mistake_matching_only_on_the_degenerate_input_is_not_named():
                            mistakes=lambda args, expected: catalogue(args, expected))
     assert caught.value.diagnosis == ""
     assert caught.value.hint == ""
+
+
+def test_a_child_without_call_later_is_called_at_once_and_its_failure_raised_when_asked():
+    from grader.errors import StudentCodeError
+
+    class Plain:
+        def call(self, probe, *args, timeout=None):
+            if args[0] < 0:
+                raise StudentCodeError("exception", "ValueError", "negative", "", "call")
+            return args[0] * 2
+
+    ctx = Context(99, Plain(), {}, None, 1, StubOracle())
+    assert ctx.student_later("f", 2)() == 4
+    later = ctx.student_later("f", -1)
+    with pytest.raises(StudentCodeError, match="negative"):
+        later()
