@@ -5,8 +5,8 @@ sign flips)."""
 from itertools import combinations
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import EXACT, Mistake, Tol, assert_close
 
 __all__ = [

@@ -6,8 +6,8 @@ numpy from the values the reference gave (through ``ctx.reference``) and the inp
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     Mistake,
     Tol,

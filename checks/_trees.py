@@ -14,8 +14,8 @@
 from dataclasses import dataclass
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     CheckFailure,

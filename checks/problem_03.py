@@ -8,8 +8,8 @@ itself after about two seconds, so a comparison beyond that would test rounding,
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_DEFINED,

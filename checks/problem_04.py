@@ -9,9 +9,9 @@ equality constraint at the fixed point, and its acceleration at rest along that 
 """
 
 import numpy as np
-from hypothesis import assume
-from hypothesis import strategies as st
 
+from grader import strategies as st
+from grader.strategies import assume
 from grader.checking import (
     STAGE_DEFINED,
     STAGE_RANDOM,

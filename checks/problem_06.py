@@ -1,8 +1,8 @@
 """Checks of problem 6: elementary rotations and the Cardan (yaw-pitch-roll) sequence."""
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     SHEET,

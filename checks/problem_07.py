@@ -1,9 +1,9 @@
 """Checks of problem 7: skew matrices, angular velocity from a transformation, the symbolic derivation."""
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import ROTATIONS, skew
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,

@@ -1,9 +1,9 @@
 """Checks of problem 8: integrating a constant angular velocity three ways."""
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import ROTATIONS, expm_skew, skew
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STRUCTURE,

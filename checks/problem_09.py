@@ -1,9 +1,9 @@
 """Checks of problem 9: coordinate systems defined relative to each other."""
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import ROTATIONS
+from grader import strategies as st
 from grader.checking import EXACT, SHEET, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
 
 TITLE = "A better coordinate-system class (relative transformations)"

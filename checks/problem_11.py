@@ -1,9 +1,9 @@
 """Checks of problem 11: bound coordinate systems and bound vectors, driven through their setters."""
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import ROTATIONS, compact, vectors
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
 
 TITLE = "Bound Vectors and Coordinate Systems"

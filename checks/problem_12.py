@@ -5,8 +5,8 @@ the first departing step) live in ``checks/_rigid.py``, shared with problems 11 
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     SHEET,

@@ -5,9 +5,9 @@ parallel to omega) instead of comparing it with ours.  ``assert_screw`` is share
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import STATES, describe_state
+from grader import strategies as st
 from grader.checking import STAGE_RANDOM, Mistake, Tol, as_array, assert_close, check
 
 TITLE = "Twists and Screw Axis"

@@ -6,7 +6,6 @@ of the integration step of problem 12) from the reference's state just before.
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import (
     FINITE,
@@ -25,6 +24,7 @@ from checks._rigid import (
     trace_array,
     vectors,
 )
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     SHEET,

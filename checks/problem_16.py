@@ -5,9 +5,9 @@ Symbolic answers are evaluated inside the probe at points the check draws; the g
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import FINITE, body_inertia, compact
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, Mistake, as_array, assert_close, check, fail
 
 TITLE = "Computing Inertia Matrices"
@@ -27,7 +27,6 @@ AXES_HINT = "The moment about the 1-axis involves the extents along the OTHER tw
 
 def _diag(m, a, b, c, factor):
     return factor * m * np.diag([b**2 + c**2, a**2 + c**2, a**2 + b**2])
-
 
 
 def body_mistakes(name, m, a, b, c):

@@ -5,9 +5,9 @@ never by our numbers: eigenvector signs and orders, and so the points, legitimat
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import FINITE, ROTATIONS, body_inertia, compact
+from grader import strategies as st
 from grader.checking import (
     STAGE_RANDOM,
     STAGE_STRUCTURE,

@@ -5,9 +5,9 @@ the defining property, I_a_Q = 0.
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import FINITE
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, assert_close, as_array, check, fail
 
 TITLE = "Acceleration of a Point on a Rigid Body"

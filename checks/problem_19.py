@@ -2,9 +2,9 @@
 (about the 3-axis, as a multiple of m/120)."""
 
 import numpy as np
-from hypothesis import strategies as st
 
 from checks._rigid import FINITE, ROTATIONS, compact, vectors
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, check, fail
 
 TITLE = "Calculating Inertia Matrices"

@@ -3,8 +3,8 @@ really recurses (credited only once point_k's values are right, and when the rec
 poses)."""
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     SHEET,

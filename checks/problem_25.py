@@ -2,8 +2,8 @@
 (``build_walker``) and its symbolic positions and Jacobian (``cog_positions_symbolic``)."""
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     SHEET,

@@ -1,8 +1,8 @@
 """Checks of problem 26: position of the chairoplane's seat and its constraint Jacobian."""
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
 
 from ._planar import (

@@ -11,8 +11,8 @@ The Jacobian columns on random geometry stay public.
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,

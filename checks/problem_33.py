@@ -2,8 +2,8 @@
 passive dynamic walker with velocities, accelerations and Jacobians."""
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,

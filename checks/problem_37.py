@@ -11,8 +11,8 @@ cached on disk.
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,

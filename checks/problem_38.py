@@ -8,8 +8,8 @@ default tolerances meets.
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, Mistake, Tol, assert_close, check, close
 
 from ._dynamics import WALKER, assert_energy_conserved, assert_run, run_array, run_figure

@@ -6,8 +6,8 @@ gravity is the gyroscopic moment ``omega x (I2 omega)``.
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, assert_close, check, close, fail
 
 TITLE = "Turbine"

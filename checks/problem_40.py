@@ -6,8 +6,8 @@ student's own ``M`` by Lagrange's equations), then the values against the refere
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,

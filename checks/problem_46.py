@@ -11,8 +11,8 @@ the run's checks are not run (they share one group, the pieces at an earlier sta
 """
 
 import numpy as np
-from hypothesis import strategies as st
 
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_STRUCTURE,

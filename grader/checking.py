@@ -32,6 +32,7 @@ __all__ = [
     "CheckFailure",
     "NotAnswered",
     "Mistake",
+    "diagnose",
     "fail",
     "as_array",
     "assert_close",
@@ -120,21 +121,24 @@ def checks_of(module) -> list[CheckSpec]:
 
 
 class CheckFailure(Exception):
-    """The property does not hold.  ``message`` explains got/expected; ``hint`` names the likely mistake."""
+    """The property does not hold.  ``message`` explains got/expected; ``hint`` names the likely mistake.
+    ``candidates``: the known mistakes whose value the student's matched (None when no catalogue was consulted),
+    which a randomized comparison narrows down with a second failing input."""
 
-    def __init__(self, message: str, hint: str = "", diagnosis: str = ""):
+    def __init__(self, message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None):
         super().__init__(message)
         self.message = message
         self.hint = hint
         self.diagnosis = diagnosis
+        self.candidates = candidates
 
 
 class NotAnswered(Exception):
     """A question in answers.toml is still blank."""
 
 
-def fail(message: str, hint: str = "", diagnosis: str = ""):
-    raise CheckFailure(message, hint, diagnosis)
+def fail(message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None):
+    raise CheckFailure(message, hint, diagnosis, candidates)
 
 
 @dataclass(frozen=True)
@@ -144,6 +148,24 @@ class Mistake:
     name: str
     value: object
     hint: str
+
+
+def diagnose(matches) -> tuple[str, str]:
+    """``(hint, diagnosis)`` for the known mistakes that match: none, the one that matches, or, when several
+    different mistakes give the student's value, all of them ("could be X or Y") rather than the first."""
+    unique: dict[str, Mistake] = {}
+    for mistake in matches:
+        unique.setdefault(mistake.name, mistake)
+    if not unique:
+        return "", ""
+    if len(unique) == 1:
+        mistake = next(iter(unique.values()))
+        return mistake.hint, mistake.name
+    names = list(unique)
+    hint = (f"{len(names)} known mistakes give exactly your value here, so it could be "
+            f"{' or '.join(n.replace('_', ' ') for n in names)}:\n"
+            + "\n".join(f"- {m.hint}" for m in unique.values()))
+    return hint, " or ".join(names)
 
 
 # ---------------------------------------------------------------------------------------------- formatting
@@ -220,7 +242,8 @@ def as_array(value, name: str, shape: tuple | None = None) -> np.ndarray:
 
 
 def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str = "", note: str = ""):
-    """Fail unless ``got`` matches ``expected`` within ``tol``; name the first matching known mistake."""
+    """Fail unless ``got`` matches ``expected`` within ``tol``; name the known mistake that matches (every one
+    that matches, when several do)."""
     expected = np.asarray(expected, dtype=float)
     got = as_array(got, name, expected.shape)
     if close(got, expected, tol):
@@ -232,14 +255,17 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
     digits = _digits(got, expected, tol)
     lines += ["got:", format_array(got, digits), "expected:", format_array(expected, digits),
               mismatch_table(got, expected, tol, digits)]
-    for mistake in mistakes:
-        try:
-            matches = close(got, mistake.value, tol)
-        except Exception:  # noqa: BLE001 - a candidate that cannot be compared simply does not match
-            matches = False
-        if matches:
-            fail("\n".join(lines), mistake.hint, mistake.name)
-    fail("\n".join(lines))
+    mistakes = list(mistakes or ())
+    matches = tuple(mistake for mistake in mistakes if _matches(got, mistake, tol))
+    hint, diagnosis = diagnose(matches)
+    fail("\n".join(lines), hint, diagnosis, matches if mistakes else None)
+
+
+def _matches(got, mistake: Mistake, tol: Tol) -> bool:
+    try:
+        return close(got, mistake.value, tol)
+    except Exception:  # noqa: BLE001 - a candidate that cannot be compared simply does not match
+        return False
 
 
 def assert_rotation(A, name: str, tol: Tol = STRUCTURE):

@@ -86,16 +86,41 @@ def _exit_code(reports) -> int:
     return EXIT_OK if statuses <= {Status.PASSED, Status.DEFERRED} else EXIT_FAILED
 
 
+def _has_checks(number: int) -> bool:
+    import importlib.util
+
+    return importlib.util.find_spec(f"checks.problem_{number:02d}") is not None
+
+
+def _start_worker(source: Path, limits):
+    """Materialize the submission and start its sandboxed worker before the grader imports what grading needs
+    (numpy, the checks): the worker's start-up overlaps those imports.  ``(submission, child)``, or None when
+    the submission cannot be loaded (grading then says why)."""
+    from .errors import SubmissionError
+    from .loader import cleanup, materialize
+    from .sandbox import Child, sandbox_mode
+
+    try:
+        submission = materialize(source)
+    except SubmissionError:
+        return None
+    child = Child(submission.path, limits, sandbox_mode())
+    try:
+        child.start()
+    except BaseException:
+        child.__exit__(None, None, None)
+        cleanup(submission)
+        raise
+    _LEFT_TO_REMOVE.append(submission)
+    return submission, child
+
+
 def cmd_problem(args) -> int:
-    from .render import render_gradescope, render_html, render_json, render_terminal
-    from .runner import grade_submission, problem_module
     from .sandbox import Limits
 
     numbers = args.problems
     for number in numbers:
-        try:
-            problem_module(number)
-        except KeyError:
+        if not _has_checks(number):
             print(f"error: problem {number} has no checks (see `grade list`)", file=sys.stderr)
             return EXIT_USAGE
     submission = Path(args.submission)
@@ -103,7 +128,11 @@ def cmd_problem(args) -> int:
         print(f"error: {submission} does not exist", file=sys.stderr)
         return EXIT_USAGE
     limits = Limits(call_timeout=args.timeout) if args.timeout else None
-    reports = grade_submission(submission, numbers, seed=args.seed, limits=limits)
+    started = _start_worker(submission, limits)
+    from .render import render_gradescope, render_html, render_json, render_terminal
+    from .runner import grade_submission
+
+    reports = grade_submission(submission, numbers, seed=args.seed, limits=limits, started=started)
     colour = sys.stdout.isatty() and "NO_COLOR" not in os.environ
     print(render_terminal(reports, colour=colour), end="")
     if args.html:
@@ -219,8 +248,28 @@ def _problem_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: materialized submissions that the command removes when it is done
+_LEFT_TO_REMOVE: list = []
+#: commands that hold nothing to wind down at exit (no pools, threads or clients): run as the ``grade`` command,
+#: they leave without the interpreter's shutdown
+_QUICK_EXIT = ("cmd_problem", "cmd_list")
+
+
 def main(argv: list[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else list(argv)
+    """Run the ``grade`` command on ``argv``.  Run as the command itself (``argv`` None: the ``grade`` script,
+    ``python -m grader.cli``), ``grade problem-N`` and ``grade list`` end the process as soon as their output is
+    written (``_leave``)."""
+    try:
+        code, command = _run(sys.argv[1:] if argv is None else list(argv))
+        if argv is None and command in _QUICK_EXIT:
+            _leave(code)
+    finally:
+        _remove_now()
+    return code
+
+
+def _run(argv: list[str]) -> tuple[int, str | None]:
+    command = None
     try:
         if argv and re.fullmatch(r"(problem-?|p)\d{1,2}", argv[0].lower()):
             args = _problem_parser().parse_args(argv)
@@ -229,16 +278,71 @@ def main(argv: list[str] | None = None) -> int:
             args = parser.parse_args(argv)
             if args.command is None:
                 parser.print_help()
-                return EXIT_USAGE
-        return args.func(args)
+                return EXIT_USAGE, None
+        command = getattr(args.func, "__name__", None)
+        return args.func(args), command
     except SystemExit as exc:  # argparse's usage errors
-        return EXIT_USAGE if exc.code not in (0, None) else EXIT_OK
+        return (EXIT_USAGE if exc.code not in (0, None) else EXIT_OK), command
     except GraderFault as exc:  # the installation's fault (e.g. the sandbox cannot start): nothing was graded
         print(f"error: {exc}", file=sys.stderr)
-        return EXIT_GRADER
+        return EXIT_GRADER, command
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
-        return 130
+        return 130, command
+
+
+def _remove_now() -> None:
+    from .loader import cleanup
+
+    while _LEFT_TO_REMOVE:
+        cleanup(_LEFT_TO_REMOVE.pop())
+
+
+def _leave(code: int) -> None:
+    """End the process now that the output is written: its temporary folders (the submission's copy, the
+    worker's runtime folder, hypothesis's home) are removed by a detached process of their own, and the
+    interpreter's shutdown (module teardown, exit handlers) is skipped.  Every worker has ended already."""
+    import shutil
+
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):
+            pass
+    paths = [str(Path(s.path).parent) for s in _LEFT_TO_REMOVE]
+    paths += _temporary_folders()
+    if paths:
+        try:
+            pid = os.fork()
+        except OSError:
+            pid = -1
+        if pid == 0:  # the remover: detached from the terminal and from whoever waits for the command's output
+            try:
+                os.setsid()
+                null = os.open(os.devnull, os.O_RDWR)
+                for fd in (0, 1, 2):
+                    os.dup2(null, fd)
+                for path in paths:
+                    shutil.rmtree(path, ignore_errors=True)
+            finally:
+                os._exit(0)
+        if pid < 0:
+            for path in paths:
+                shutil.rmtree(path, ignore_errors=True)
+    os._exit(code)
+
+
+def _temporary_folders() -> list[str]:
+    """The process's own temporary folders that exit handlers would remove: the worker's runtime folder and
+    hypothesis's home, where they were made."""
+    folders = []
+    launch = sys.modules.get("grader.sandbox.launch")
+    if launch is not None and launch.runtime_dir.cache_info().currsize:
+        folders.append(str(launch.runtime_dir()))
+    oracle = sys.modules.get("grader.oracle")
+    if oracle is not None and oracle._HYPOTHESIS_HOME is not None:
+        folders.append(str(oracle._HYPOTHESIS_HOME))
+    return folders
 
 
 if __name__ == "__main__":

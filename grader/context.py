@@ -2,14 +2,18 @@
 reference or the kit's answer key), the student's answers, the seed, and a randomized comparison.
 
 A randomized comparison (``compare_random``) runs in three steps: obtain the inputs, evaluate the student's code on
-them, and on a failure pick the input to show.  Live, the inputs are fresh hypothesis draws from the run's seed and
-a failure is shrunk by hypothesis to a minimal input; in the kit (and while its key is recorded) the inputs are the
-pool recorded for that call site, and a failure shows the simplest failing input of the pool (``simplicity``).
+them, and on a failure pick the input to show and name the mistake.  Live, the inputs are fresh draws from the
+run's seed (``grader.strategies``: no hypothesis while everything passes) and a failure brings hypothesis in to
+shrink it to a minimal input; in the kit (and while its key is recorded) the inputs are the pool recorded for that
+call site, and a failure shows the simplest failing input of the pool (``simplicity``).  The diagnosis is checked on
+a second failing input, drawn rather than shrunk: a minimal input is often degenerate (zero angles, an axis-aligned
+angular velocity) where several known mistakes give the same value; a mistake is named only when it matches on
+both, and when several still do, all of them are ("could be X or Y").
 """
 
 from __future__ import annotations
 
-from .checking import CheckFailure, NotAnswered, Tol, assert_close
+from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 
@@ -50,6 +54,24 @@ class Context:
     def student(self, probe: str, *args, timeout: float | None = None):
         """Run ``probe`` on the student's package in the sandbox."""
         return self.child.call(probe, *args, timeout=timeout)
+
+    def student_later(self, probe: str, *args, timeout: float | None = None):
+        """Send the call of ``probe`` to the student's code now; returns a function that waits for its value, so
+        that the grader's own work in between (the reference, a catalogue of mistakes) overlaps the student's
+        code.  A child without ``call_later`` is called at once."""
+        later = getattr(self.child, "call_later", None)
+        if later is not None:
+            return later(probe, *args, timeout=timeout)
+        try:
+            value = self.child.call(probe, *args, timeout=timeout)
+        except StudentFault as exc:
+            failure = exc
+
+            def raise_later():
+                raise failure
+
+            return raise_later
+        return lambda: value
 
     def reference(self, probe: str, *args, persist: bool = False):
         """Run ``probe`` on the reference (cached in memory, and on disk when ``persist``); in the kit, the value
@@ -98,39 +120,46 @@ class Context:
         describe=None,
         compare=None,
     ) -> None:
-        """Compare the student's ``probe`` with the reference's on inputs drawn from ``strategy`` (a hypothesis
-        strategy of argument tuples).  The failure names the input (minimal, or the simplest of the kit's pool)
-        and the seed.  ``mistakes(args, expected)`` lists known mistakes for the diagnosis; ``compare(got,
+        """Compare the student's ``probe`` with the reference's on inputs drawn from ``strategy`` (a strategy of
+        argument tuples from ``grader.strategies``, or a hypothesis strategy).  The failure names the input
+        (minimal, or the simplest of the kit's pool) and the seed, and a known mistake that matches there and on a
+        second failing input.  ``mistakes(args, expected)`` lists known mistakes for the diagnosis; ``compare(got,
         expected, args)`` replaces the default entrywise comparison.  Both may reach the reference through
         ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer."""
 
         def evaluate(args):
-            got = self.student(probe, *args)
+            got = self.student_later(probe, *args)  # the reference and the catalogue meanwhile
             expected = self.reference(probe, *args)
+            found = mistakes(args, expected) if mistakes and compare is None else ()
+            got = got()
             if compare is not None:
                 compare(got, expected, args)
             else:
-                found = mistakes(args, expected) if mistakes else ()
                 assert_close(got, expected, name, tol, found)
 
         site = self._site()
         if self.oracle.pooled:
             inputs = self.oracle.pool(site, strategy, examples, check=self.check_id)
-            failure = _simplest_failure(inputs, evaluate)
-            if failure is None:
+            failures = _failures(inputs, evaluate)
+            if not failures:
                 return
-            args, exc, count = failure
-            where = (f"(the simplest of the {count} failing input{'s' * (count != 1)} among the {len(inputs)} "
-                     f"recorded random inputs of this check)")
+            shown = _simplest(failures)
+            where = (f"(the simplest of the {len(failures)} failing input{'s' * (len(failures) != 1)} among the "
+                     f"{len(inputs)} recorded random inputs of this check)")
         else:
             self.last_seed = self.seed
             inputs = self._fresh_inputs(strategy, examples)
-            failure = _first_failure(inputs, evaluate)
-            if failure is None:
+            failures = _failures(inputs, evaluate, until_generic=True)
+            if not failures:
                 return
-            args, exc = self._shrink(strategy, examples, evaluate) or failure
-            where = f"(minimal failing input found by hypothesis; seed {self.seed})"
-        _raise_at(args, exc, describe, where)
+            shown = self._shrink(strategy, examples, evaluate)
+            if shown is not None:
+                where = f"(minimal failing input found by hypothesis; seed {self.seed})"
+            else:
+                shown = _simplest(failures)
+                where = f"(the simplest failing input of the {len(inputs)} random inputs drawn; seed {self.seed})"
+        args, exc = shown
+        _raise_at(args, _narrowed(exc, _generic(failures)[1]), describe, where)
 
     def _fresh_inputs(self, strategy, examples: int) -> list:
         try:
@@ -139,16 +168,18 @@ class Context:
             raise GraderFault(f"randomized inputs could not be drawn: {type(exc).__name__}: {exc}") from exc
 
     def _shrink(self, strategy, examples: int, evaluate):
-        """Let hypothesis find (again, from the same seed) and shrink a failing input: ``(args, exc)``, or None
-        when it finds none (the first failure found is then shown as it is)."""
+        """Bring hypothesis in to find (from the run's seed) and shrink a failing input: ``(args, exc)`` of the
+        minimal one, or None when it finds none in its examples (the failure found is then shown as it is)."""
         from hypothesis import HealthCheck, Phase, Verbosity, given, settings
         from hypothesis import seed as hyp_seed
+
+        from .strategies import to_hypothesis
 
         private_hypothesis_home()
         state: dict = {"last": None, "fatal": None}
 
         @settings(
-            max_examples=examples,
+            max_examples=SHRINK_SEARCH * examples + 10,
             database=None,
             deadline=None,
             derandomize=False,
@@ -159,7 +190,7 @@ class Context:
             print_blob=False,
         )
         @hyp_seed(self.seed)
-        @given(strategy)
+        @given(to_hypothesis(strategy))
         def run(args):
             if state["fatal"] is not None:  # no more calls of the student's code: let hypothesis give up
                 raise state["fatal"]
@@ -184,6 +215,10 @@ class Context:
         return state["last"]
 
 
+#: hypothesis looks for a failure to shrink among this many times the check's examples (plus ten)
+SHRINK_SEARCH = 2
+
+
 def _fatal(exc) -> bool:
     return isinstance(exc, (StudentTimeout, WorkerCrash)) or getattr(exc, "not_implemented", False)
 
@@ -200,12 +235,47 @@ def _attempt(evaluate, args):
     return None
 
 
-def _first_failure(inputs, evaluate):
-    for args in inputs:
+def _failures(inputs, evaluate, until_generic: bool = False) -> list:
+    """``(index, args, exc)`` of the inputs that fail, in order: all of them, or (``until_generic``) up to the
+    first one after the first input, the simplest one that the draws begin with."""
+    failures = []
+    for index, args in enumerate(inputs):
         exc = _attempt(evaluate, args)
         if exc is not None:
-            return args, exc
-    return None
+            failures.append((index, args, exc))
+            if until_generic and index > 0:
+                break
+    return failures
+
+
+def _generic(failures) -> tuple:
+    """``(args, exc)`` of a failing input on which the mistakes of a catalogue are told apart: the first failing
+    one after the simplest input the draws begin with (all zeros, say), else that one."""
+    index, args, exc = next((f for f in failures if f[0] > 0), failures[0])
+    return args, exc
+
+
+def _simplest(failures) -> tuple:
+    """``(args, exc)`` of the simplest failing input (``simplicity``; ties keep the order of the draws)."""
+    _, args, exc = min(failures, key=lambda f: (simplicity(f[1]), f[0]))
+    return args, exc
+
+
+def _narrowed(shown, other):
+    """The failure to report on the input ``shown`` was raised for, its diagnosis checked on a second failing
+    input ``other`` (the failure a shrunk, often degenerate input, gives): a known mistake is named when it
+    matches on both; when several still match, all of them are ("could be X or Y").  Failures of different
+    properties, or without a catalogue, are reported as they are."""
+    if other is shown or not isinstance(shown, CheckFailure) or not isinstance(other, CheckFailure):
+        return shown
+    if shown.candidates is None or other.candidates is None:
+        return shown
+    if shown.message.partition("\n")[0] != other.message.partition("\n")[0]:
+        return shown
+    names = {mistake.name for mistake in other.candidates}
+    common = tuple(mistake for mistake in shown.candidates if mistake.name in names)
+    hint, diagnosis = diagnose(common)
+    return CheckFailure(shown.message, hint, diagnosis, common)
 
 
 def simplicity(args) -> tuple:
@@ -242,26 +312,12 @@ def simplicity(args) -> tuple:
     return count, size
 
 
-def _simplest_failure(inputs, evaluate):
-    """Evaluate every input of a pool: ``(args, exc, number of failing inputs)`` of the simplest failing input,
-    or None when all pass."""
-    failures = []
-    for index, args in enumerate(inputs):
-        exc = _attempt(evaluate, args)
-        if exc is not None:
-            failures.append((simplicity(args), index, args, exc))
-    if not failures:
-        return None
-    _, _, args, exc = min(failures, key=lambda f: (f[0], f[1]))
-    return args, exc, len(failures)
-
-
 def _raise_at(args, exc, describe, where: str):
     shown = describe(args) if describe else _describe_args(args)
     where = f"on the randomized input {shown}\n{where}"
     if isinstance(exc, CheckFailure):
         first, _, rest = exc.message.partition("\n")
-        raise CheckFailure(f"{first}\n{where}\n{rest}", exc.hint, exc.diagnosis)
+        raise CheckFailure(f"{first}\n{where}\n{rest}", exc.hint, exc.diagnosis, exc.candidates)
     if isinstance(exc, StudentCodeError) and not exc.not_implemented:
         raise StudentCodeError(exc.kind, exc.type_name, f"{exc.message}\n{where}", exc.traceback, exc.phase)
     raise exc

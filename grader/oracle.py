@@ -93,8 +93,13 @@ def private_hypothesis_home() -> Path:
 
 
 def draw_pool(strategy, examples: int, seed: int) -> list:
-    """``examples`` argument tuples drawn from a hypothesis ``strategy`` with ``seed`` (generation only: no test
-    runs, nothing shrinks, nothing is stored)."""
+    """``examples`` argument tuples drawn from ``strategy`` with ``seed``.  A strategy of ``grader.strategies``
+    draws them itself (no hypothesis); a hypothesis strategy runs hypothesis's generation only (no test runs,
+    nothing shrinks, nothing is stored)."""
+    from .strategies import Strategy, draw_examples
+
+    if isinstance(strategy, Strategy):
+        return draw_examples(strategy, examples, seed)
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hyp_seed
 

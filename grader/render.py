@@ -8,7 +8,7 @@ import io
 import json
 from functools import lru_cache
 
-from jinja2 import Environment, PackageLoader, StrictUndefined
+from jinja2 import Environment, FileSystemBytecodeCache, PackageLoader, StrictUndefined
 
 from .results import ProblemReport, Status, student_view
 
@@ -33,8 +33,12 @@ def _fmt(x) -> str:
 
 @lru_cache(maxsize=2)
 def _env(autoescape: bool) -> Environment:
+    """The templates' environment.  Compiled templates are kept in jinja2's own per-user cache (a folder under the
+    temporary directory that jinja2 makes readable by its owner only and refuses if anyone else owns it), so that a
+    command compiles a template once rather than at every run."""
     env = Environment(
         loader=PackageLoader("grader", "templates"),
+        bytecode_cache=FileSystemBytecodeCache(),
         autoescape=autoescape,
         undefined=StrictUndefined,
         trim_blocks=False,

@@ -222,30 +222,41 @@ def grade_submission(
     workdir: str | Path | None = None,
     zygote=None,
     oracle=None,
+    started=None,
 ) -> list[ProblemReport]:
     """Grade the given problems of one submission with one sandboxed worker (forked from ``zygote``, a batch
     slot's warm process, when given: see ``grader.sandbox.zygote``); ``oracle`` answers for the reference
-    (default: the process's, see ``grader.oracle.current``).
+    (default: the process's, see ``grader.oracle.current``).  ``started``: the submission already materialized
+    and its worker already started (``grader.cli`` does), so that the worker's start-up overlapped the caller's
+    imports; the caller then removes the submission's copy.  The worker is ended as soon as the last check has
+    its last reply.
 
     Raises ``SandboxError`` (a ``GraderFault``) when the worker cannot be started or cannot import its
     dependencies: a fault of the installation, for which nothing is graded."""
-    mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
     seed = random.randrange(2**31) if seed is None else seed
     modules = {n: problem_module(n) for n in numbers}
-    try:
-        submission = materialize(source, workdir or (zygote.staging if zygote is not None else None))
-    except SubmissionError as exc:
-        return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
+    if started is not None:
+        submission, child = started
+        mode = child.mode
+    else:
+        mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
+        try:
+            submission = materialize(source, workdir or (zygote.staging if zygote is not None else None))
+        except SubmissionError as exc:
+            return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
+        child = Child(submission.path, limits, mode, zygote=zygote)
     answers, answers_error = read_answers(submission.path)
     reports = []
     try:
-        with Child(submission.path, limits, mode, zygote=zygote) as child:
+        with child:
             child.start()
-            for number in numbers:
+            for position, number in enumerate(numbers):
                 start = time.perf_counter()
                 ctx = Context(number, child, answers, answers_error, seed, oracle)
                 results = _run_checks(modules[number], ctx, number)
                 stdout, stderr = child.output()
+                if position == len(numbers) - 1:
+                    child.close()  # its last reply is in: nothing more to ask it
                 reports.append(
                     ProblemReport(
                         problem=number,
@@ -264,7 +275,8 @@ def grade_submission(
                     )
                 )
     finally:
-        cleanup(submission)
+        if started is None:
+            cleanup(submission)
     return reports
 
 

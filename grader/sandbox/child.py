@@ -28,8 +28,6 @@ __all__ = ["Child", "canary", "probe_name"]
 
 #: how much of the child's stdout/stderr is kept for the report
 OUTPUT_TAIL = 4000
-#: seconds a worker has to exit when asked to
-EXIT_GRACE = 1.0
 
 
 def probe_name(probe) -> str:
@@ -247,14 +245,9 @@ class Child:
                 self._launch.after_exit()
 
     def close(self) -> None:
-        """Ask the worker to exit, then make sure it and everything it started have."""
+        """End the worker and everything it started, at once: every reply it owed is in, and it flushed what it
+        printed before each reply, so nothing is lost by not waiting for its interpreter to shut down."""
         try:
-            if self._proc is not None and self._exit_code() is None:
-                try:
-                    self._send({"id": -1, "op": "exit"}, EXIT_GRACE, "call")
-                    self._wait_exit(time.monotonic() + EXIT_GRACE)
-                except (StudentTimeout, WorkerCrash, GraderFault):
-                    pass
             self._kill(final=True)
         finally:
             if self._launch is not None:
@@ -382,6 +375,11 @@ class Child:
     def _request(self, message: dict | None, timeout: float, phase: str = "call") -> dict:
         """Send ``message`` (None: only wait for the reply to the import request) and return the reply, all
         before one deadline, ``timeout`` seconds from now."""
+        return self._reply(*self._post(message, timeout, phase))
+
+    def _post(self, message: dict | None, timeout: float, phase: str = "call") -> tuple:
+        """Send ``message`` (None: nothing, the reply awaited is the import's): what ``_reply`` needs to read its
+        reply before one deadline, ``timeout`` seconds from now."""
         deadline = time.monotonic() + timeout
         if message is not None:
             self._next_id += 1
@@ -389,6 +387,14 @@ class Child:
             expected = self._next_id
         else:
             expected = self._import_id
+        return message, expected, deadline, timeout, phase, self._proc
+
+    def _reply(self, message: dict | None, expected: int, deadline: float, timeout: float, phase: str,
+               proc=None) -> dict:
+        """The reply with id ``expected``, read before ``deadline`` (replies to abandoned requests are skipped)
+        from the worker ``proc`` the request went to."""
+        if self._reader is None or self._proc is not proc:  # that worker was stopped since
+            raise WorkerCrash("the process running your code was stopped before it replied", phase)
         while True:
             try:
                 reply = self._reader.read(deadline)
@@ -444,13 +450,25 @@ class Child:
 
     def call(self, probe, *args, timeout: float | None = None):
         """Run ``probe`` (e.g. ``"problem_06.vectors"``) on the submission; return its decoded value."""
-        from probes._codec import decode, encode
+        return self.call_later(probe, *args, timeout=timeout)()
+
+    def call_later(self, probe, *args, timeout: float | None = None):
+        """Send the call of ``probe`` now; returns a function that waits for its value (or raises what ``call``
+        raises), so that the grader's own work in between overlaps the student's code.  The call's deadline runs
+        from now; the next call is sent after this one's value was asked for (or the value abandoned)."""
+        from probes._codec import encode
 
         name = probe_name(probe)
         self._ensure_imported()
         self.calls += 1
-        reply = self._request({"op": "call", "probe": name, "args": encode(list(args))},
-                              timeout or self.limits.call_timeout)
+        pending = self._post({"op": "call", "probe": name, "args": encode(list(args))},
+                             timeout or self.limits.call_timeout)
+        return lambda: self._value(self._reply(*pending))
+
+    @staticmethod
+    def _value(reply: dict):
+        from probes._codec import decode
+
         try:
             return decode(reply.get("value"))
         except (RecursionError, ValueError, TypeError) as exc:  # only a forged reply can be malformed
