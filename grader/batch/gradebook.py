@@ -286,8 +286,11 @@ class Graded:
 
 
 def _figure(data: dict) -> Figure:
-    series = tuple(Series(s["label"], tuple(s["x"]), tuple(s["y"]), s.get("role", "other")) for s in data["series"])
-    return Figure(data["title"], data["xlabel"], data["ylabel"], series, bool(data.get("equal_axes")))
+    """A figure read back from the gradebook (rows written before figures had panels or a third axis lack them)."""
+    series = tuple(Series(s["label"], tuple(s["x"]), tuple(s["y"]), s.get("role", "other"), tuple(s.get("z", ())),
+                          s.get("colour", ""), s.get("marker", ""), int(s.get("panel", 0))) for s in data["series"])
+    return Figure(data["title"], data["xlabel"], data["ylabel"], series, bool(data.get("equal_axes")),
+                  data.get("zlabel", ""), tuple(data.get("panels", ())))
 
 
 class Gradebook:
