@@ -367,6 +367,11 @@ class Gradebook:
         )
         return {row["problem"] for row in rows if versions.get(row["problem"]) == row["grader_version"]}
 
+    def stopped(self, student: str) -> bool:
+        """Whether the student's latest result of some problem was stopped at the batch's time limit."""
+        row = self.db.execute(_CURRENT.format(where="AND st.name = ? AND s.outcome = 'timeout' "), (student,))
+        return row.fetchone() is not None
+
     def record(
         self,
         student: str,
