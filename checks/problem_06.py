@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from checks._figures import add_frames, add_vectors
 from grader import strategies as st
 from grader.checking import (
     EXACT,
@@ -158,6 +159,7 @@ def check_frames(ctx):
     degrees["A_IC2"] = degrees["A_IC1"] @ R(2, SHEET_ANGLES_DEG[1])
     degrees["A_IC3"] = degrees["A_IC2"] @ R(1, SHEET_ANGLES_DEG[2])
     got = ctx.student("problem_06.frames")
+    add_frames(ctx, "Problem 6: the frames C1, C2, C3 in I", got, expected, ("A_IC1", "A_IC2", "A_IC3"))
     if not isinstance(got, dict):
         fail(f"frames() must return a dict with keys A_IC1, A_IC2, A_IC3, got {type(got).__name__}.")
     for key in ("A_IC1", "A_IC2", "A_IC3"):
@@ -187,6 +189,7 @@ def check_vectors(ctx):
         "C3_v": [],
     }
     got = ctx.student("problem_06.vectors")
+    add_vectors(ctx, "Problem 6: V from its coordinates in I, C1, C2, C3 (mapped to I)", got, A, SHEET_VECTORS["I_v"])
     if not isinstance(got, dict):
         fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}, got {type(got).__name__}.")
     for key, target in SHEET_VECTORS.items():

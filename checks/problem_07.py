@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from checks._figures import add_frames
 from checks._rigid import ROTATIONS, skew
 from grader import strategies as st
 from grader.checking import (
@@ -148,5 +149,6 @@ def check_animation(ctx):
     got = ctx.student("problem_07.animate")
     if not isinstance(got, dict) or "A_IC3" not in got:
         fail("animate() must return a dict with the entries 'angles' and 'A_IC3'.")
+    add_frames(ctx, "Problem 7: the frame C3 at the end of the animation", got, expected, ("A_IC3",), ["C3 at t = pi"])
     A = assert_rotation(got["A_IC3"], "A_IC3")
     assert_close(A, expected["A_IC3"], "A_IC3 at t = pi", EXACT, mistakes)

@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from checks._figures import add_integrator_paths, student_or_none
 from checks._rigid import ROTATIONS, expm_skew, skew
 from grader import strategies as st
 from grader.checking import (
@@ -137,6 +138,9 @@ def check_part_b(ctx):
 def check_part_c(ctx):
     start = ctx.reference("problem_06.elementary", 3, np.pi / 2)
     euler = ctx.reference("problem_08.part", "a")
+    paths = ctx.reference("problem_08.paths")
+    add_integrator_paths(ctx, "Problem 8: the body's axes along the three runs",
+                         student_or_none(ctx, "problem_08.paths"), paths)
     w, dt = np.sqrt(1 / 3) * np.ones(3), 2 * np.pi / 100
     # a step that does not move would also "return" to the start: (c) counts only for a step that turns
     one = as_array(ctx.student("problem_08.step", "exp", start, w, dt), "exponential_step(R3(90°), w, 2 pi / 100)",

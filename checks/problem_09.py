@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from checks._figures import add_vectors
 from checks._rigid import ROTATIONS
 from grader import strategies as st
 from grader.checking import EXACT, SHEET, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
@@ -86,6 +87,8 @@ def check_set_transform(ctx):
        group="sheet")
 def check_vectors(ctx):
     got = ctx.student("problem_09.vectors")
+    add_vectors(ctx, "Problem 9: V from its coordinates in I, C1, C2, C3 (mapped to I by problem 6's frames)", got,
+                ctx.reference("problem_06.frames"), SHEET_VECTORS["I_v"])
     if not isinstance(got, dict):
         fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}.")
     for key, target in SHEET_VECTORS.items():

@@ -6,6 +6,7 @@ accepted); the motion itself is compared with the reference.
 
 import numpy as np
 
+from checks._figures import add_screw_run
 from checks._rigid import SIMULATION, STATE, assert_traces, compact, sheet_state, trace_array
 from checks.problem_13 import assert_screw
 from checks.problem_12 import GENERIC
@@ -55,6 +56,8 @@ def check_run_state(ctx):
        stage=STAGE_VALUES, group="run")
 def check_run_screw(ctx):
     got = ctx.student("problem_14.screw_run", _start(ctx), DT, STEPS)
+    add_screw_run(ctx, "Problem 14: the body's path and its screw axis at t = 0, 0.25, 0.5, 0.75, 1 s", got,
+                  ctx.reference("problem_14.screw_run", _start(ctx), DT, STEPS))
     n = STEPS + 1
     screws = trace_array(got, "screw", (n, 2, 3))
     w, v = trace_array(got, "B_omega_B", (n, 3)), trace_array(got, "B_v_B", (n, 3))

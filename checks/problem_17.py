@@ -6,6 +6,7 @@ never by our numbers: eigenvector signs and orders, and so the points, legitimat
 
 import numpy as np
 
+from checks._figures import ellipsoid_drawer
 from checks._rigid import FINITE, ROTATIONS, body_inertia, compact
 from grader import strategies as st
 from grader.checking import (
@@ -157,8 +158,9 @@ def check_four_points(ctx):
        stage=STAGE_RANDOM, group="ellipsoid")
 def check_ellipsoid(ctx):
     hints = [("semi_axes", 0.25, "axes are the FULL axes of the ellipsoid (problem data): twice the semi-axes.")]
-    _representation_check(ctx, lambda got, I, m, where: assert_solid(got, I, m, "ellipsoid", "axes",
-                                                                      "ellipsoid", hints, where))
+    _representation_check(ctx, ellipsoid_drawer(ctx, "Problem 17: the ellipsoids of the sheet's matrices",
+                                                lambda got, I, m, where: assert_solid(got, I, m, "ellipsoid", "axes",
+                                                                                      "ellipsoid", hints, where)))
 
 
 @check(1, title="case 4: the cuboid (edges along V) reproduces the inertia (sheet's and random matrices)",

@@ -21,6 +21,7 @@ from grader.checking import (
     fail,
 )
 
+from ._figures import add_planar_arm
 from ._planar import (
     CENTRAL_DIFFERENCES,
     CONFIGURATIONS,
@@ -136,7 +137,9 @@ def check_sheet_target(ctx):
     case = ctx.reference("problem_21.sheet_case")
     q_b, d, target = case["q_b"], case["d"], np.asarray(case["target"], dtype=float)
     mistakes = [Mistake(m.name, m.value[6:], m.hint) for m in _chain_mistakes(ctx, q_b, d)]
-    x_b = as_array(ctx.student("problem_21.chain", "b", q_b, d), f"chain_b(q_b, {d:g})", (9,))
+    got = ctx.student("problem_21.chain", "b", q_b, d)
+    add_planar_arm(ctx, "Problem 21: the arm of case (2) with q_b", got, ctx.reference("problem_21.chain", "b", q_b, d))
+    x_b = as_array(got, f"chain_b(q_b, {d:g})", (9,))
     mistakes += sign_flips(x_b[6:], target, SHEET, SIGN_HINT)
     assert_close(x_b[6:], target, "(xe, ye, gammae) of case (2) with q_b", SHEET, mistakes,
                  context="(the sheet's value)")

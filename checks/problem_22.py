@@ -17,6 +17,7 @@ from grader.checking import (
     fail,
 )
 
+from ._figures import add_planar_arm
 from ._planar import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips
 from ._shapes import as_dict, as_list
 
@@ -96,6 +97,8 @@ def check_sheet_target(ctx):
     q3, d, target = case["q"], case["d"], np.asarray(case["target"], dtype=float)
     mistakes = _end_mistakes(ctx, q3, d)
     got = ctx.student("problem_22.loop", q3, d)
+    arm = [*ctx.reference("problem_22.points", q3)[1:], ctx.reference("problem_22.loop", q3, d)]
+    add_planar_arm(ctx, "Problem 22: the arm at q3 (reference) and your end effector", got, arm, end_only=True)
     assert_close(got, target, f"end_effector_loop(q3, {d:g})", SHEET,
                  mistakes + sign_flips(got, target, SHEET, SIGN_HINT),
                  context="(the sheet's value)",

@@ -5,6 +5,7 @@ import numpy as np
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
 
+from ._figures import add_chairoplane, seat_between
 from ._planar import (
     ANGLES,
     CENTRAL_DIFFERENCES,
@@ -90,6 +91,9 @@ def check_jacobian_derivative(ctx):
         ]
         got = as_dict(ctx.student("problem_26.jacobian_and_steps", *args, H), f"the reply for {call}",
                       ("J", "plus", "minus"))
+        if args == CONFIGURATIONS[0]:
+            add_chairoplane(ctx, f"Problem 26: the chairoplane at beta = {args[0]:g}, phi = {args[1]:g}",
+                            seat_between(got), ctx.reference("problem_26.position", *args), args[0], args[2], args[3])
         plus, minus = ([as_array(x, "position", (3,)) for x in as_list(got[side], f"position at q {sign} h e_j", 2)]
                        for side, sign in (("plus", "+"), ("minus", "-")))
         central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])

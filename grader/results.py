@@ -34,21 +34,37 @@ class Status(str, Enum):
 
 @dataclass(frozen=True)
 class Series:
-    """One curve of a figure: ``role`` is "student", "reference" or "other"."""
+    """One curve of a figure: ``role`` is "student", "reference" or "other".  A curve in space has ``z`` too (the
+    figure is then drawn on 3-D axes); ``colour`` fixes its colour (the x, y, z axes of a frame in red, green,
+    blue), ``marker`` draws its points ("o"), and ``panel`` is the panel it belongs to in a figure of panels side
+    by side."""
 
     label: str
     x: tuple[float, ...]
     y: tuple[float, ...]
     role: str = "other"
+    z: tuple[float, ...] = ()
+    colour: str = ""
+    marker: str = ""
+    panel: int = 0
 
 
 @dataclass(frozen=True)
 class Figure:
+    """A figure of a check: the student's curves over the reference's.  ``panels`` names the panels drawn side by
+    side (none: one panel); ``zlabel`` is set for a figure in space."""
+
     title: str
     xlabel: str
     ylabel: str
     series: tuple[Series, ...]
     equal_axes: bool = False
+    zlabel: str = ""
+    panels: tuple[str, ...] = ()
+
+    @property
+    def spatial(self) -> bool:
+        return bool(self.zlabel) or any(s.z for s in self.series)
 
 
 @dataclass(frozen=True)

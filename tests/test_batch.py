@@ -311,6 +311,23 @@ def test_a_student_over_the_time_bound_is_stopped_and_recorded(tmp_path):
     assert outcomes == {"slow_student": ("timeout", 0, {"timeout"}), "ref_dir_01": ("graded", 10, {"passed"})}
 
 
+def test_the_end_line_counts_each_student_once(tmp_path):
+    """The line `grade batch` ends with sorts every student into one kind: a student stopped at the time limit is
+    not also counted as graded, and on a rerun the unchanged students say how many of them were stopped."""
+    subs = tmp_path / "subs"
+    build_slow(subs / "slow_student")
+    copy_reference(subs / "alice")
+    out = tmp_path / "out"
+    first = subprocess.run(batch_command(subs, out, "--student-timeout", "3"), cwd=ROOT, capture_output=True,
+                           text=True, timeout=120)
+    assert ("2 students: 1 graded, 0 unchanged (skipped), 1 stopped at the time limit, 0 not graded"
+            in first.stderr), first.stderr
+    again = subprocess.run(batch_command(subs, out, "--student-timeout", "3"), cwd=ROOT, capture_output=True,
+                           text=True, timeout=120)
+    assert ("2 students: 0 graded, 2 unchanged (skipped; 1 of them was stopped at the time limit when graded: "
+            "--force grades it again), 0 stopped at the time limit, 0 not graded" in again.stderr), again.stderr
+
+
 def test_ctrl_c_stops_the_batch_cleanly_keeping_what_was_graded(tmp_path):
     subs = tmp_path / "subs"
     copy_reference(subs / "alice")

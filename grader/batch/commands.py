@@ -44,9 +44,7 @@ def cmd_batch(args) -> int:
     for name in report.ignored:
         why = "" if name.endswith(BAD_NAME) else " (not a folder, a .zip archive or a .ipynb notebook)"
         print(f"note: ignored {name}{why}", file=sys.stderr)
-    print(f"{report.students} students: {report.graded} graded, {report.skipped} unchanged (skipped), "
-          f"{len(report.timed_out)} stopped at the time limit, {len(report.not_graded)} not graded "
-          f"in {report.seconds:.1f} s.", file=sys.stderr)
+    print(report.end_line, file=sys.stderr)
     for name, reason in report.not_graded.items():
         print(f"  not graded: {name}: {reason}", file=sys.stderr)
     if report.interrupted:

@@ -302,7 +302,31 @@ def _trouble(graded: list[Graded]) -> list[dict]:
     return trouble
 
 
-def class_summary(graded: list[Graded], top_checks: int = 12) -> str:
+def _ranges(numbers: list[int]) -> str:
+    """Problem numbers as runs: "1–5, 8, 10–12"."""
+    runs: list[list[int]] = []
+    for n in numbers:
+        if runs and n == runs[-1][-1] + 1:
+            runs[-1].append(n)
+        else:
+            runs.append([n])
+    return ", ".join(f"{r[0]}–{r[-1]}" if len(r) > 2 else ", ".join(map(str, r)) for r in runs)
+
+
+def _versions(graded: list[Graded]) -> dict:
+    """The grader's versions, folded: the releases (what a reader needs), and per problem the versions of its
+    checks (a digest each), flagging a problem whose students were graded by different versions of its checks."""
+    by_problem: dict[int, Counter] = defaultdict(Counter)
+    for g in graded:
+        by_problem[g.report.problem][g.grader_version] += 1
+    return {
+        "releases": sorted({version.split("+")[0] for version in (g.grader_version for g in graded)}),
+        "problems": [{"number": n, "versions": dict(sorted(c.items()))} for n, c in sorted(by_problem.items())],
+        "mixed": [n for n, c in sorted(by_problem.items()) if len(c) > 1],
+    }
+
+
+def class_summary(graded: list[Graded], top_checks: int = 12, top_mistakes: int = 8) -> str:
     """The class summary (HTML): score distributions, the checks failed most often and their diagnoses, the
     students whose grading errored or timed out, the free-text answers to score, and the gradebook."""
     from jinja2 import Environment, PackageLoader, StrictUndefined
@@ -314,11 +338,13 @@ def class_summary(graded: list[Graded], top_checks: int = 12) -> str:
               "total": sum(g.report.score for g in items)} for name, items in _by_student(graded).items()]
     env = Environment(loader=PackageLoader("grader", "templates"), autoescape=True, undefined=StrictUndefined)
     env.globals["fmt"] = lambda x: f"{x:g}"
+    trouble = _trouble(graded)
     return env.get_template("class_summary.html.j2").render(
         generated=now(), students=len(table), problems=problems, numbers=[p["number"] for p in problems],
-        possible=possible, images=images, failing=failing, mistakes=mistakes, trouble=_trouble(graded),
+        problem_runs=_ranges([p["number"] for p in problems]),
+        possible=possible, images=images, failing=failing, mistakes=mistakes, top_mistakes=top_mistakes,
+        trouble=trouble, trouble_students=len({t["student"] for t in trouble}), version=_versions(graded),
         answers=[{"student": g.student, "item": m} for g in graded for m in g.report.manual], table=table,
-        versions=sorted({g.grader_version for g in graded}),
         sandboxes=sorted({g.report.sandbox for g in graded if not g.report.isolated}),
     )
 

@@ -287,8 +287,11 @@ class Graded:
 
 
 def _figure(data: dict) -> Figure:
-    series = tuple(Series(s["label"], tuple(s["x"]), tuple(s["y"]), s.get("role", "other")) for s in data["series"])
-    return Figure(data["title"], data["xlabel"], data["ylabel"], series, bool(data.get("equal_axes")))
+    """A figure read back from the gradebook (rows written before figures had panels or a third axis lack them)."""
+    series = tuple(Series(s["label"], tuple(s["x"]), tuple(s["y"]), s.get("role", "other"), tuple(s.get("z", ())),
+                          s.get("colour", ""), s.get("marker", ""), int(s.get("panel", 0))) for s in data["series"])
+    return Figure(data["title"], data["xlabel"], data["ylabel"], series, bool(data.get("equal_axes")),
+                  data.get("zlabel", ""), tuple(data.get("panels", ())))
 
 
 class Gradebook:
@@ -367,6 +370,11 @@ class Gradebook:
             (student, content_hash),
         )
         return {row["problem"] for row in rows if versions.get(row["problem"]) == row["grader_version"]}
+
+    def stopped(self, student: str) -> bool:
+        """Whether the student's latest result of some problem was stopped at the batch's time limit."""
+        row = self.db.execute(_CURRENT.format(where="AND st.name = ? AND s.outcome = 'timeout' "), (student,))
+        return row.fetchone() is not None
 
     def record(
         self,

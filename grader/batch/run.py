@@ -32,15 +32,30 @@ class BatchLocked(RuntimeError):
 class BatchReport:
     run_id: int
     students: int
-    graded: int = 0
+    graded: int = 0  # recorded in this run, including those stopped at the time limit
     skipped: int = 0
-    timed_out: list[str] = field(default_factory=list)
+    timed_out: list[str] = field(default_factory=list)  # recorded in this run as stopped at the time limit
+    skipped_timed_out: list[str] = field(default_factory=list)  # unchanged, and stopped when they were graded
     not_graded: dict[str, str] = field(default_factory=dict)  # grader faults: retried on the next run
     ignored: list[str] = field(default_factory=list)
     interrupted: bool = False
     seconds: float = 0.0
     student_exports: float = 0.0  # seconds spent writing students' files as they were recorded (its own process)
     final_exports: float = 0.0  # seconds spent writing the class's files at the end
+
+    @property
+    def end_line(self) -> str:
+        """Every student counted once: graded, unchanged, stopped at the time limit, not graded (and, when
+        interrupted, not reached)."""
+        stopped = len(self.skipped_timed_out)
+        one = stopped == 1
+        before = (f"; {stopped} of them {'was' if one else 'were'} stopped at the time limit when graded: --force "
+                  f"grades {'it' if one else 'them'} again") if stopped else ""
+        reached = self.graded + self.skipped + len(self.not_graded)
+        left = f", {self.students - reached} not reached" if self.interrupted and reached < self.students else ""
+        return (f"{self.students} students: {self.graded - len(self.timed_out)} graded, {self.skipped} unchanged "
+                f"(skipped{before}), {len(self.timed_out)} stopped at the time limit, {len(self.not_graded)} not "
+                f"graded{left} in {self.seconds:.1f} s.")
 
     @property
     def per_minute(self) -> float:
@@ -147,6 +162,8 @@ def run_batch(
                 todo -= book.graded_problems(entry.name, entry.content_hash, versions)
             if todo:
                 tasks.append(Task(entry, tuple(sorted(todo))))
+            elif book.stopped(entry.name):
+                report.skipped_timed_out.append(entry.name)
         report.skipped = len(entries) - len(tasks)
         bar = Progress(len(tasks), report.skipped, enabled=progress)
 

@@ -1,0 +1,88 @@
+"""Figures of the problems whose answer is a motion, a shape or a configuration: drawn for the reference and for a
+wrong answer alike (the student's over the reference's), kept by the gradebook, rendered as PNGs; never a change
+of verdict."""
+
+from __future__ import annotations
+
+import base64
+import re
+from dataclasses import asdict
+
+import pytest
+
+from grader.results import Figure, Series
+
+from .submissions import build_planted, copy_reference, planted_mistakes
+
+#: the figure each problem draws, by check
+FIGURES = {
+    6: {"p06.frames": "Problem 6: the frames C1, C2, C3 in I",
+        "p06.vectors": "Problem 6: V from its coordinates in I, C1, C2, C3 (mapped to I)"},
+    7: {"p07.animation": "Problem 7: the frame C3 at the end of the animation"},
+    8: {"p08.part_c": "Problem 8: the body's axes along the three runs"},
+    9: {"p09.vectors": "Problem 9: V from its coordinates in I, C1, C2, C3 (mapped to I by problem 6's frames)"},
+    14: {"p14.run_screw": "Problem 14: the body's path and its screw axis at t = 0, 0.25, 0.5, 0.75, 1 s"},
+    17: {"p17.ellipsoid": "Problem 17: the ellipsoids of the sheet's matrices"},
+    21: {"p21.sheet_target": "Problem 21: the arm of case (2) with q_b"},
+    22: {"p22.sheet_target": "Problem 22: the arm at q3 (reference) and your end effector"},
+    26: {"p26.jacobian_derivative": "Problem 26: the chairoplane at beta = 0.7, phi = 0.4"},
+}
+
+
+def spatial_figure():
+    return Figure("frames", "x", "y", (
+        Series("reference: x-axis", (0.0, 1.0), (0.0, 0.0), "reference", (0.0, 0.0), "tab:red", "", 0),
+        Series("yours: x-axis", (0.0, 0.0), (0.0, 1.0), "student", (0.0, 0.0), "tab:red", "o", 1),
+    ), True, "z", ("C1", "C2"))
+
+
+def test_a_figure_in_space_with_panels_renders_and_survives_the_gradebook():
+    from grader.batch.gradebook import _figure
+    from grader.render import _figure_png
+
+    fig = spatial_figure()
+    assert fig.spatial and _figure(asdict(fig)) == fig
+    png = base64.b64decode(_figure_png(fig))
+    assert png.startswith(b"\x89PNG\r\n\x1a\n") and len(png) > 5000
+    old = {"title": "q(t)", "xlabel": "t", "ylabel": "q", "equal_axes": False,
+           "series": [{"label": "yours", "x": [0.0, 1.0], "y": [0.0, 0.5], "role": "student"}]}
+    assert not _figure(old).spatial and _figure(old).series[0].panel == 0  # rows written before 3-D figures
+
+
+def _figures(report):
+    return {r.check_id: [f.title for f in r.figures] for r in report.results if r.figures}
+
+
+@pytest.mark.slow
+def test_every_problem_with_a_shape_draws_it_for_the_reference(tmp_path):
+    from grader.render import render_html
+    from grader.runner import grade_submission
+
+    reports = grade_submission(copy_reference(tmp_path / "ref"), sorted(FIGURES))
+    for report in reports:
+        assert report.score == report.auto_max_score, report.problem
+        drawn = _figures(report)
+        for check_id, title in FIGURES[report.problem].items():
+            assert drawn.get(check_id) == [title], (check_id, drawn)
+            fig = next(f for r in report.results if r.check_id == check_id for f in r.figures)
+            roles = {s.role for s in fig.series}
+            assert {"student", "reference"} <= roles, (check_id, roles)
+            assert "could not be drawn" not in fig.title + " ".join(fig.panels)
+    html = render_html(reports)
+    assert len(re.findall(r'src="data:image/png;base64,', html)) == sum(len(f) for f in FIGURES.values())
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["p06-frames-order", "p14-screw-sign-flip", "p17-ellipsoid-semi-axes",
+                                  "p22-sheet-degrees"])
+def test_a_wrong_answer_is_drawn_beside_its_failure(name, tmp_path):
+    from grader.runner import grade_submission
+
+    (mistake,) = [m for m in planted_mistakes() if m.name == name]
+    (report,) = grade_submission(build_planted(mistake, tmp_path / "pkg"), [mistake.problem])
+    failed = {r.check_id for r in report.results if not r.passed}
+    assert mistake.check in failed
+    drawn = _figures(report)
+    assert drawn.get(mistake.check) == [FIGURES[mistake.problem][mistake.check]], drawn
+    fig = next(f for r in report.results if r.check_id == mistake.check for f in r.figures)
+    assert "student" in {s.role for s in fig.series}  # the wrong answer is drawn, over the reference's
