@@ -351,6 +351,32 @@ def test_ctrl_c_stops_the_batch_cleanly_keeping_what_was_graded(tmp_path):
     assert not (out / "grades.csv").exists()  # exports wait for a finished batch
 
 
+def test_a_worker_killed_while_it_starts_is_started_again(tmp_path):
+    """A worker killed from outside before it is ready (the OOM killer on a loaded machine) is not a broken
+    installation: the batch starts another and grades everyone."""
+    subs = tmp_path / "subs"
+    names = [f"student_{i}" for i in range(3)]
+    for name in names:
+        copy_reference(subs / name)
+    out = tmp_path / "results"
+    batch = subprocess.Popen(batch_command(subs, out), cwd=ROOT, stderr=subprocess.PIPE, text=True)
+    killed = set()
+    try:
+        deadline = time.monotonic() + 60
+        while not killed and time.monotonic() < deadline and batch.poll() is None:
+            for pid in descendants(batch.pid):
+                if b"spawn_main" in cmdline(pid):
+                    os.kill(pid, signal.SIGKILL)
+                    killed.add(pid)
+            time.sleep(0.01)
+        _, stderr = batch.communicate(timeout=300)
+    finally:
+        batch.kill()
+    assert killed, "no worker was seen starting"
+    assert batch.returncode == 0, stderr
+    assert sorted(name for name, _ in graded_rows(out / GRADEBOOK_NAME)) == names
+
+
 def test_a_worker_killed_midway_costs_only_its_student_who_is_graded_on_the_rerun(tmp_path):
     subs = tmp_path / "subs"
     names = [f"student_{i}" for i in range(8)]

@@ -149,6 +149,11 @@ class _Subprocess:
             self.sentinel = -1
 
 
+#: how often a worker may be killed by a signal while it starts before the batch gives up on the slot (a worker
+#: that fails to start by itself is a broken installation at once)
+START_KILLS = 3
+
+
 class Slot:
     """One worker process and the task it grades."""
 
@@ -157,6 +162,8 @@ class Slot:
         self.context, self.index, self.args = context, index, (limits, mode, problems)
         self.task: Task | None = None
         self.deadline = self.started = 0.0
+        self.killed = False  # the last worker ended by a signal (the OOM killer, an operator), not by itself
+        self.kills_while_starting = 0
         self._start()
 
     def _start(self) -> None:
@@ -233,6 +240,7 @@ class Slot:
             return "timeout", None
         self.process.join(1)
         code = self.process.exitcode
+        self.killed = code is not None and code < 0
         self.restart()
         return "crashed", f"the grading process ended with exit code {code}"
 
@@ -259,6 +267,9 @@ def run_pool(tasks: list[Task], jobs: int, limits: Limits, mode: SandboxMode, pr
                 if not slot.ready:
                     if slot.conn.poll() or not slot.process.is_alive():
                         kind, payload = slot.poll() or ("crashed", "no answer")
+                        if kind == "crashed" and slot.killed and slot.kills_while_starting < START_KILLS:
+                            slot.kills_while_starting += 1  # killed from outside while starting: poll started another
+                            continue
                         if kind != "ready":
                             raise RuntimeError(f"a grading worker could not start: {payload}")
                         slot.ready = True
