@@ -1,18 +1,14 @@
 """Problem 45: the falling bar of problem 43 hits the second support: does the first contact open?
 
 Problem data P45: at the impact ``q- = (l-, d, 0)`` (the bar lies flat, its centre of gravity at ``l-`` from the
-first support); the second support is at the distance ``s`` from the first, ``c2 = y cos phi - (x - s) sin phi -
-d``.  Both contacts closed after the impact::
-
-    J = [[0, 1, -l-], [0, 1, s - l-]]        (the Jacobians of c1 and c2 at q-)
-
-With the left contact closed before the impact, ``c_dot- = J qd- = (0, s phid-)`` with ``phid- < 0`` (the right
-end falls onto the second support).  A fully plastic impact (restitution 0)::
+first support); the second support is at the distance ``s`` from the first, at the same height, with the
+constraint ``c2 = y cos phi - (x - s) sin phi - d`` (``c1`` is the constraint of problem 43).  Assume both contacts
+closed after the impact, the left one closed before it (its part of ``c_dot-`` is 0), the right one closing
+(``phid- < 0``), and a fully plastic impact (restitution 0)::
 
     Lam = -M_lam c_dot-,    M_lam = (J M^-1 J.T)^-1,    M = diag(m, m, theta)
 
-The left contact opens during the impact when its impulse would have to pull, ``Lam1 < 0``: iff
-``s < l- + theta / (m l-)``.
+The left contact opens during the impact when its impulse would have to pull, ``Lam1 < 0``.
 
 The answers are symbolic (sympy) in the symbols of ``symbols()``: ``s l d m theta phid`` (``l`` for ``l-``,
 ``phid`` for ``phid-``).

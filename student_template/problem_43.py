@@ -1,21 +1,17 @@
 """Problem 43: a bar on a frictionless support, equations of motion with an implicit constraint.
 
 Problem data P43: ``q = (x, y, phi)``, the position and orientation of the bar's centre of gravity in inertial
-coordinates; mass ``m``, inertia ``theta``, width ``2 d``.  Unconstrained: ``M = diag(m, m, theta)``, ``f = 0``,
-``g = (0, -m g, 0)``.  The bar rests on a frictionless point support at the origin O; the constraint is the
-bar's lower edge through O::
+coordinates; mass ``m``, inertia ``theta``, width ``2 d``; gravity ``g`` along ``-y``.  The bar rests with its
+lower edge on a frictionless point support at the origin O.  The constraint ``c`` is the distance of O below the
+bar's lower edge, measured along the bar's normal ``(-sin phi, cos phi)``: zero while the edge runs through O,
+positive when the bar is above it.  ``c_dot = J qd``, ``c_ddot = J qdd + sigma``.  The support pushes with the
+force ``lam`` through ``+J.T lam``::
 
-    c = y cos phi - x sin phi - d
-    J = (-sin phi, cos phi, -x cos phi - y sin phi)                                   (1 x 3, c_dot = J qd)
-    sigma = -2 phid (xd cos phi + yd sin phi) + phid^2 (x sin phi - y cos phi)        (c_ddot = J qdd + sigma)
+    M qdd = f + g + J.T lam,    J qdd + sigma = 0
 
-The support pushes along the bar's normal with the force ``lam`` through ``+J.T lam``::
-
-    [[M, -J.T], [J, 0]] [qdd; lam] = [f + g; -sigma]
-
-At ``q = (1, 1, 45 deg)`` at rest with ``m = 0.5``, ``theta = 1``, ``d = 0``, ``g = 9.81``:
-``qdd = (-2.4525, -7.3575, -2.4525)``.  *Erratum* (problem data): the sheet prints ``lambda = 1.742``; the correct
-value is ``9.81 * 0.7071 / 4 = 1.7342``.
+At ``q = (1, 1, 45 deg)`` at rest with ``m = 0.5``, ``theta = 1``, ``d = 0``, ``g = 9.81`` the sheet gives
+``qdd = (-2.4525, -7.3575, -2.4525)`` and ``lambda = 1.742``.  *Erratum* (problem data): the correct value is
+``lambda = 9.81 * 0.7071 / 4 = 1.7342``.
 """
 
 import numpy as np

@@ -1,19 +1,12 @@
 """Problem 47: the bowling pin falling onto the greased (frictionless) lane, a plastic impact.
 
 Problem data P47: ``q = (x, y, phi)``, the centre of gravity in inertial coordinates and the rotation ``phi`` from
-vertical; mass ``m``, inertia ``theta``; the centre of gravity at ``(x_cog, y_cog)`` from the pin's lower left
-corner, which touches the lane.  The constraint is the height of that corner::
+vertical; mass ``m``, inertia ``theta``, ``M = diag(m, m, theta)``; the centre of gravity at ``(x_cog, y_cog)``
+from the pin's lower left corner (in the pin's frame), the corner that touches the lane.  The constraint ``c`` is
+the height of that corner above the lane, ``c_dot = J qd``.  A fully plastic impact keeps the position,
+``q+ = q-``, and stops the contact, ``J qd+ = 0``, with the impulse ``Lam`` acting through ``+J.T Lam``.
 
-    c = y - x_cog sin phi - y_cog cos phi
-    J = (0, 1, y_cog sin phi - x_cog cos phi)
-
-A fully plastic impact with ``M = diag(m, m, theta)``: ``Lam = -(J M^-1 J.T)^-1 J qd-``, ``qd+ = qd- + M^-1 J.T
-Lam``, ``q+ = q-``.  For ``qd- = (xd-, yd-, 0)``::
-
-    Lam = -m theta yd- / (m (x_cog cos phi - y_cog sin phi)^2 + theta)
-
-maximal when the corner is straight below the centre of gravity, ``phi = arctan(x_cog / y_cog)``, where
-``Lam_max = -m yd-`` (the whole vertical momentum is stopped, no rotation is started).
+(b) and (c) are free-text answers in answers.toml (``[problem_47.free_text] b``, ``c``): argue physically.
 """
 
 import numpy as np
@@ -47,8 +40,7 @@ def impulse(phi, yd_minus, m, theta, x_cog, y_cog):
 
 
 def angle_of_max_impulse(x_cog, y_cog):
-    """(b) ``phi_hat``: the angle at which ``impulse`` is largest (the corner straight below the centre of
-    gravity)."""
+    """(b) ``phi_hat``: the angle in ``(-pi/2, pi/2)`` at which ``impulse`` is largest."""
     # TODO problem 47: write your solution here
     raise NotImplementedError("Problem 47: angle_of_max_impulse is not implemented yet")
 
