@@ -99,10 +99,14 @@ def check_event_function(ctx):
 # ------------------------------------------------------------------------------------------ the run
 
 
-def _runs(ctx, q0=Q0, t_end=T_END, s=S):
-    expected = ctx.reference("problem_44.simulate", q0, t_end, s, persist=True)
-    got = ctx.student("problem_44.simulate", q0, t_end, s, timeout=SIMULATION_TIMEOUT)
-    return got, expected
+def _runs(ctx):
+    """The student's run of the sheet's bar and the reference's; the student's is simulated once per grading (kept
+    on the context, which lives for the checks of this problem)."""
+    expected = ctx.reference("problem_44.simulate", Q0, T_END, S, persist=True)
+    runs = ctx.__dict__.setdefault("problem_44_runs", {})
+    if "sheet" not in runs:
+        runs["sheet"] = ctx.student("problem_44.simulate", Q0, T_END, S, timeout=SIMULATION_TIMEOUT)
+    return runs["sheet"], expected
 
 
 def _event(got, expected, what, bands):
