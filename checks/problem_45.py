@@ -135,5 +135,5 @@ def check_opening_limit(ctx):
                     "is not one."),
         ], context=f"at {_describe(args)}")
 
-    ctx.compare_random("problem_45.evaluate", _points("s_limit"), name="s_limit", tol=EXACT, compare=compare, examples=10,
-                       describe=_describe)
+    ctx.compare_random("problem_45.evaluate", _points("s_limit"), name="s_limit", tol=EXACT, compare=compare,
+                       examples=10, describe=_describe)

@@ -26,8 +26,8 @@ def impact(pkg, q_minus, qd_minus, m, theta, x_cog, y_cog):
     p47 = _p47(pkg)
     q_minus, qd_minus = np.asarray(q_minus, dtype=float), np.asarray(qd_minus, dtype=float)
     q_plus, qd_plus, Lam = p47.plastic_impact(q_minus, qd_minus, m, theta, x_cog, y_cog)
-    return {"q_plus": np.asarray(q_plus, dtype=float).reshape(-1), "qd_plus": np.asarray(qd_plus, dtype=float).reshape(-1),
-            "Lam": np.asarray(Lam, dtype=float).reshape(-1),
+    return {"q_plus": np.asarray(q_plus, dtype=float).reshape(-1),
+            "qd_plus": np.asarray(qd_plus, dtype=float).reshape(-1), "Lam": np.asarray(Lam, dtype=float).reshape(-1),
             "J": np.asarray(p47.constraint_jacobian(q_minus, x_cog, y_cog), dtype=float)}
 
 
