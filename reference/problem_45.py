@@ -49,7 +49,7 @@ def impulses():
     s, _, _, m, theta, phid = symbols()
     J = impact_jacobian()
     M_lam = (J * sp.diag(m, m, theta).inv() * J.T).inv()
-    return sp.simplify(-M_lam * sp.Matrix([0, s * phid]))
+    return sp.factor(-M_lam * sp.Matrix([0, s * phid]))
     # END SOLUTION
 
 
