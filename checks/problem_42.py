@@ -1,0 +1,181 @@
+"""Checks of problem 42: event detection with ``solve_ivp`` on the thrown ball (``make_events``, ``throw``), and
+the multiple-choice question (b) (answers.toml ``[problem_42] b``).
+
+The event functions at random states and their attributes; then the flight of the sheet's ball and of random
+balls: the apex and the landing against a tight reference run within bands that any ``solve_ivp`` method at its
+default tolerances meets (a fixed-step loop at a large step does not), the landing ends the run (terminal) and is
+not the launch (direction -1).  The key of (b) is computed by the reference and stays with the instructor.
+"""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    CheckFailure,
+    Mistake,
+    Tol,
+    assert_close,
+    check,
+    fail,
+    figure,
+)
+
+from ._dynamics import subsample
+
+TITLE = "Event Detection"
+
+#: the warm-up's ball (problem 42's module)
+V0, DRAG = 10.0, 0.1
+#: bands around a tight reference run: any solve_ivp method at its default tolerances stays within a third of them
+#: (largest errors: 6e-4 s, 1.1e-3 m, 5.8e-3 m/s); explicit Euler at a step of 0.05 s misses by 0.055 s
+TIME = Tol("event time, a reasonable integrator", 2e-3)
+HEIGHT = Tol("apex height, a reasonable integrator", 1e-2)
+SPEED = Tol("landing velocity, a reasonable integrator", 2e-2)
+SHEET_BANDS = {"t_land": TIME, "v_land": SPEED, "t_apex": TIME, "height_apex": HEIGHT}
+#: on random balls (up to 30 m/s, flights up to 6 s) the default tolerances err by up to 0.4 % in the times and
+#: 0.15 % in the height (DOP853's interpolated landing velocity by up to 3 %, so it is compared on the sheet's ball
+#: only)
+RANDOM_BANDS = {"t_land": Tol("event time, a reasonable integrator", 2e-3, 1e-2),
+                "t_apex": Tol("event time, a reasonable integrator", 2e-3, 1e-2),
+                "height_apex": Tol("apex height, a reasonable integrator", 1e-2, 5e-3)}
+#: a landing before this [s] is the launch from the ground
+LAUNCH = 1e-6
+RESIDUALS = {"apex": "the velocity y[1]", "landing": "the height y[0]"}
+_SEEDS = st.integers(0, 2**32 - 1)
+
+INTEGRATION_HINT = ("When the event functions (checked above) are right, the event times depend on the "
+                    "integration: use scipy.integrate.solve_ivp with events=make_events() (any method at its default "
+                    "tolerances lands within the bands), not a fixed-step loop that stops at the first step past "
+                    "the ground.")
+DIRECTION_HINT = ("The ball starts on the ground, where the height is zero: with direction 0 or +1 that zero "
+                  "counts as a landing and the integration stops at once. direction = -1 counts only a fall "
+                  "through zero (from + to -).")
+
+
+# ------------------------------------------------------------------------------------------ the event functions
+
+
+@st.composite
+def _states(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return ([np.array([rng.uniform(-1.0, 6.0), rng.uniform(-15.0, 15.0)]) for _ in range(4)],)
+
+
+def _attributes(got, name, terminal, directions, hints):
+    event = got[name]
+    if event["terminal"] is not terminal:
+        fail(f"{name}.terminal is {event['terminal']!r}, expected {terminal}: {hints['terminal']}",
+             hints["terminal_hint"], hints["terminal_diagnosis"])
+    if event["direction"] not in directions:
+        fail(f"{name}.direction is {event['direction']!r}, expected {' or '.join(f'{d:+g}' for d in directions)}: "
+             f"{hints['direction']}", hints["direction_hint"], "event_direction")
+
+
+@check(2, title="make_events(): apex(t, y) = velocity (direction -1, not terminal) and landing(t, y) = height "
+       "(direction -1, terminal) at random states", stage=STAGE_STRUCTURE, group="events")
+def check_events(ctx):
+    def compare(got, expected, args):
+        if not isinstance(got, dict) or "problem" in got:
+            fail(got.get("problem") if isinstance(got, dict) else f"the probe could not read your events: {got}",
+                 "Return the two event functions as a tuple: return apex, landing.", "format")
+        heights, velocities = (np.array([y[k] for y in args[0]]) for k in (0, 1))
+        for name, value, other in (("apex", velocities, heights), ("landing", heights, velocities)):
+            assert_close(got[name]["values"], value, f"{name}(t, y)", EXACT, [
+                Mistake("swapped", other, "make_events() returns (apex, landing): the apex is where the velocity "
+                        "y[1] falls through zero, the landing where the height y[0] does."),
+                Mistake("event_sign", -value, f"The residual of {name} is {RESIDUALS[name]} itself: with its sign "
+                        f"turned, the crossing runs the other way and direction -1 misses it."),
+            ], context="at four random states y = (height, velocity)")
+        _attributes(got, "landing", True, (-1.0,), {
+            "terminal": "the flight ends when the ball lands.",
+            "terminal_hint": "Set landing.terminal = True: solve_ivp stops at the first crossing of a terminal event.",
+            "terminal_diagnosis": "not_terminal", "direction": "the height falls through zero at the landing.",
+            "direction_hint": DIRECTION_HINT})
+        _attributes(got, "apex", False, (-1.0, 0.0), {
+            "terminal": "the apex only marks a point of the flight, the integration goes on.",
+            "terminal_hint": "Set apex.terminal = False: a terminal apex stops the flight at its top.",
+            "terminal_diagnosis": "apex_terminal",
+            "direction": "the velocity falls through zero at the apex (0, both ways, finds it as well).",
+            "direction_hint": "direction = -1 counts a crossing from + to -; +1 would wait for the velocity to rise "
+                              "through zero, which never happens in this flight."})
+
+    ctx.compare_random("problem_42.events", _states(), name="the events", tol=EXACT, compare=compare, examples=6,
+                       describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}")
+
+
+# ------------------------------------------------------------------------------------------ the flight
+
+
+def _flight(got, expected, v0, drag, bands):
+    """The landing is found, is not the launch, ends the run; the apex and the landing lie within the bands."""
+    what = f"throw(v0 = {v0:.4g}, drag = {drag:.4g})"
+    if got["t_land"] is None:
+        fail(f"{what}: the ball never landed (t_land is None); the reference's lands at t = "
+             f"{expected['t_land']:.4f} s.", "The landing event (height through zero, direction -1, terminal) must be "
+             "among the events passed to solve_ivp(..., events=...).", "no_event")
+    if got["t_land"] < LAUNCH:
+        fail(f"{what}: the landing was found at t = {got['t_land']:.3g} s, the launch; the reference's ball lands at "
+             f"t = {expected['t_land']:.4f} s.", DIRECTION_HINT, "event_direction")
+    t = np.asarray(got["t"])
+    if t.size and t[-1] > got["t_land"] + 1e-9:
+        fail(f"{what}: the run goes on after the landing at t = {got['t_land']:.4f} s, to t = {t[-1]:.4g} s (the "
+             f"ball falls through the ground).", "Set landing.terminal = True: the flight ends at the landing.",
+             "not_terminal")
+    if got["t_apex"] is None:
+        fail(f"{what}: no apex was marked (t_apex is None); the reference's is at t = {expected['t_apex']:.4f} s.",
+             "Pass both events to solve_ivp; t_events[0] holds the apex times.", "no_event")
+    try:
+        for key, tol in bands.items():
+            assert_close(got[key], expected[key], key, tol, context=f"({what}, against a tight reference run)")
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
+
+
+@check(3, title="throw(): the sheet's ball (v0 = 10 m/s, k = 0.1 1/m) peaks and lands at the reference's times "
+       "(within 2e-3 s) and heights; the landing ends the run and is not the launch", stage=STAGE_VALUES,
+       group="events")
+def check_flight(ctx):
+    expected = ctx.reference("problem_42.throw", V0, DRAG)
+    got = ctx.student("problem_42.throw", V0, DRAG, timeout=20)
+    ctx.add_figure(figure("Problem 42: the height of the ball", "t [s]", "height [m]",
+                          student=[("height", *subsample(got["t"], np.asarray(got["y"])[:, 0]))],
+                          reference=[("height", *subsample(expected["t"], np.asarray(expected["y"])[:, 0]))]))
+    _flight(got, expected, V0, DRAG, SHEET_BANDS)
+
+
+@st.composite
+def _balls(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    return float(rng.uniform(2.0, 30.0)), float(rng.uniform(0.0, 0.5))
+
+
+@check(2, title="throw() on random balls (v0 in [2, 30] m/s, k in [0, 0.5] 1/m): apex and landing times and the "
+       "apex height within the bands", stage=STAGE_RANDOM, group="events")
+def check_flight_random(ctx):
+    ctx.compare_random("problem_42.throw", _balls(), name="the flight", tol=TIME, examples=5,
+                       compare=lambda got, expected, args: _flight(got, expected, *args, RANDOM_BANDS),
+                       describe=lambda args: f"v0 = {args[0]:.4g} m/s, drag = {args[1]:.4g} 1/m")
+
+
+# ------------------------------------------------------------------------------------------ (b)
+
+
+@check(1, title="(b) the chosen outcome of a landing event with direction 0 is what the integration shows",
+       stage=STAGE_VALUES, group="b", secret=True)
+def check_direction_choice(ctx):
+    value = ctx.answer("b")
+    if isinstance(value, str) and value.strip().isdigit():
+        value = int(value.strip())
+    if isinstance(value, bool) or value not in (1, 2, 3, 4):
+        fail(f"(b): answers.toml [problem_42] b must be the number of one option, 1 to 4; got {value!r}.",
+             "Write e.g. b = 3 (a number, no quotes).", "format")
+    key = ctx.reference("problem_42.key", persist=True)
+    if value != key["b"]:
+        fail(f"(b): option {value} is not what the integration shows: run throw() with the landing event's "
+             f"direction set to 0 and look where the flight ends.",
+             "Where does the height start? direction 0 counts every zero crossing, and solve_ivp also counts a "
+             "residual that starts at zero and leaves it.", "wrong_choice")

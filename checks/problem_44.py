@@ -1,0 +1,189 @@
+"""Checks of problem 44: the bar of problem 43 until it hits the second support (``make_contact_event``,
+``bar_ode``, ``simulate``).
+
+The event function at random states (its residual, ``terminal``, ``direction = -1``); then the sheet's run: the
+event time and state against a tight reference run within bands that any ``solve_ivp`` method at its default
+tolerances meets (a fixed-step loop at a large step does not), the run ends at the event, follows the reference's
+and keeps the bar on its first support; the bar's motion up to the event is drawn, the student's over the
+reference's.  Random starting states make a memorised event time worthless.
+"""
+
+import numpy as np
+from hypothesis import strategies as st
+
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    CheckFailure,
+    Mistake,
+    Tol,
+    as_array,
+    assert_close,
+    check,
+    fail,
+    figure,
+)
+
+from ._dynamics import assert_run, run_array, subsample
+
+TITLE = "Implementing Event Detection"
+
+#: problem data P44
+Q0 = np.array([1.0, 1.0, np.pi / 4])
+T_END, S = 1.0, 0.5
+#: bands around a tight reference run: any solve_ivp method at its default tolerances errs by at most 6.7e-4 s in
+#: the event time, 2.1e-3 in q, 1.2e-2 in the state at the event and 8.2e-3 in qd (BDF, LSODA); explicit Euler at a
+#: step of 0.01 s misses the event time by 0.015 s
+EVENT_TIME = Tol("event time, a reasonable integrator", 2e-3)
+EVENT_STATE = {"q_event": Tol("q at the event, a reasonable integrator", 1e-2),
+               "qd_event": Tol("qd at the event, a reasonable integrator", 4e-2)}
+SHEET_BANDS = {"t_event": EVENT_TIME, **EVENT_STATE}
+#: from random starting states the default tolerances err by up to 4.7e-3 s, 1.2e-2 and 2.4e-2 (DOP853)
+RANDOM_BANDS = {"t_event": Tol("event time, a reasonable integrator", 1e-2),
+                "q_event": Tol("q at the event, a reasonable integrator", 3e-2),
+                "qd_event": Tol("qd at the event, a reasonable integrator", 6e-2)}
+BAND = {"q": Tol("a reasonable integrator", 1e-2), "qd": Tol("a reasonable integrator", 4e-2)}
+#: the bar stays on its first support along the run (default tolerances: 2.1e-3 m)
+ON_SUPPORT = Tol("the first contact stays closed", 1e-2)
+SIMULATION_TIMEOUT = 30.0
+_SEEDS = st.integers(0, 2**32 - 1)
+
+INTEGRATION_HINT = ("When the event function (checked above) and the accelerations of problem 43 are right, the "
+                    "event depends on the integration: use scipy.integrate.solve_ivp with events=[second_contact] "
+                    "(any method at its default tolerances lands within the bands), not a fixed-step loop.")
+DIRECTION_HINT = ("The bar's lower edge falls onto the second support: its height above it decreases through zero, "
+                  "which only direction = -1 (or 0) detects; with +1 the event never fires.")
+
+
+# ------------------------------------------------------------------------------------------ the event function
+
+
+@st.composite
+def _event_cases(draw):
+    rng = np.random.default_rng(draw(_SEEDS))
+    states = [np.concatenate([rng.uniform(-2, 2, 2), rng.uniform(-np.pi / 2, np.pi / 2, 1), rng.uniform(-2, 2, 3)])
+              for _ in range(3)]
+    return states, float(rng.uniform(0.2, 1.0)), float(rng.uniform(-0.2, 0.2))
+
+
+@check(2, title="make_contact_event(s, d): the height y cos phi - (x - s) sin phi - d at random states, terminal, "
+       "direction -1", stage=STAGE_STRUCTURE, group="run")
+def check_event_function(ctx):
+    def compare(got, expected, args):
+        states, s, d = args
+        values = np.asarray(expected["values"])
+        turn = np.array([np.sin(y[2]) for y in states])
+        assert_close(got["values"], values, "second_contact(t, y)", EXACT, [
+            Mistake("event_sign", -values, "The residual is the height of the lower edge above the second support: "
+                    "positive while the bar is above it, falling through zero when it hits (direction -1)."),
+            Mistake("support_side", values - 2 * s * turn, "The second support sits at x = +s: the edge's height "
+                    "above it is y cos phi - (x - s) sin phi - d."),
+            Mistake("first_support", values - s * turn, "This is the first support's constraint c (at O); the "
+                    "second sits at (s, 0): y cos phi - (x - s) sin phi - d."),
+        ], context=f"(three random states, s = {s:.4g}, d = {d:.4g})")
+        if got["terminal"] is not True:
+            fail(f"second_contact.terminal is {got['terminal']!r}: the integration must stop when the bar hits the "
+                 f"second support (an impact follows, problem 45).", "Set second_contact.terminal = True.",
+                 "not_terminal")
+        if got["direction"] != -1.0:
+            fail(f"second_contact.direction is {got['direction']!r}, expected -1: the height falls through zero "
+                 f"when the bar hits.", DIRECTION_HINT, "event_direction")
+
+    ctx.compare_random("problem_44.event", _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
+                       describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}, s = {args[1]:.4g}, "
+                       f"d = {args[2]:.4g}")
+
+
+# ------------------------------------------------------------------------------------------ the run
+
+
+def _runs(ctx):
+    """The student's run of the sheet's bar and the reference's; the student's is simulated once per grading (kept
+    on the context, which lives for the checks of this problem)."""
+    expected = ctx.reference("problem_44.simulate", Q0, T_END, S, persist=True)
+    runs = ctx.__dict__.setdefault("problem_44_runs", {})
+    if "sheet" not in runs:
+        runs["sheet"] = ctx.student("problem_44.simulate", Q0, T_END, S, timeout=SIMULATION_TIMEOUT)
+    return runs["sheet"], expected
+
+
+def _event(got, expected, what, bands):
+    """The event is found, ends the run and lies within the bands of the reference's."""
+    if got.get("t_event") is None:
+        fail(f"{what}: no event, the bar never reached the second support (t_event is None); the reference's run "
+             f"hits it at t = {expected['t_event']:.4f} s.", DIRECTION_HINT + " The event must be passed to "
+             "solve_ivp(..., events=[...]).", "no_event")
+    t = run_array(got, "t", None, what)
+    if t.size and t[-1] > got["t_event"] + 1e-9:
+        fail(f"{what}: the run goes on after the event at t = {got['t_event']:.4f} s, to t = {t[-1]:.4g} s.",
+             "Set second_contact.terminal = True: the motion of problem 43 ends where the bar hits the second "
+             "support.", "not_terminal")
+    try:
+        for key, tol in bands.items():
+            assert_close(as_array(got[key], key, np.shape(expected[key])), expected[key], key, tol,
+                         context=f"({what}, against a tight reference run)")
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
+
+
+@check(3, title="simulate(): the bar hits the second support at the reference's time (within 2e-3 s) and state, "
+       "and the run ends there", stage=STAGE_VALUES, group="run")
+def check_event(ctx):
+    got, expected = _runs(ctx)
+    labels = ("x [m]", "y [m]", "phi [rad]")
+    ctx.add_figure(figure("Problem 44: the bar's motion up to the second contact", "t [s]", "q",
+                          student=[(label, *subsample(got["t"], np.asarray(got["q"])[:, k]))
+                                   for k, label in enumerate(labels)],
+                          reference=[(label, *subsample(expected["t"], np.asarray(expected["q"])[:, k]))
+                                     for k, label in enumerate(labels)]))
+    _event(got, expected, "simulate()", SHEET_BANDS)
+
+
+def _common(got, expected):
+    """Both runs at their common output times (the student's run may end a step earlier or later)."""
+    t_mine, t_ours = np.asarray(got["t"], dtype=float), np.asarray(expected["t"], dtype=float)
+    common = np.intersect1d(np.round(t_mine, 9), np.round(t_ours, 9))
+    mine, ours = np.isin(np.round(t_mine, 9), common), np.isin(np.round(t_ours, 9), common)
+    return ({"t": t_mine[mine], "q": np.asarray(got["q"])[mine], "qd": np.asarray(got["qd"])[mine]},
+            {"t": t_ours[ours], "q": np.asarray(expected["q"])[ours], "qd": np.asarray(expected["qd"])[ours]})
+
+
+@check(2, title="simulate(): the run follows the reference's at the output times (every 0.01 s) and the bar stays "
+       "on its first support (|c| <= 1e-2 m)", stage=STAGE_VALUES, group="run")
+def check_motion(ctx):
+    got, expected = _runs(ctx)
+    what = "simulate()"
+    t = run_array(got, "t", None, what)
+    c = run_array(got, "c", t.shape, what)
+    if t.size < 2 or np.abs(np.diff(t) - 0.01).max() > 1e-9 or abs(t[0]) > 1e-12:
+        fail(f"{what}: the output times must run from 0 in steps of 0.01 s (t_eval), got {t.size} times "
+             f"{np.round(t[:4], 4).tolist()}...", "Pass t_eval=np.arange(0, t_end + 0.005, 0.01) to solve_ivp.",
+             "format")
+    if np.abs(c).max() > ON_SUPPORT.atol:
+        i = int(np.argmax(np.abs(c) > ON_SUPPORT.atol))
+        assert_close(c[i], 0.0, f"c at t = {t[i]:.4g} s", ON_SUPPORT,
+                     context="(your own constraint of problem 43 along your run: the bar stays on its support)")
+    mine, reference = _common(got, expected)
+    assert_run(mine, reference, ("q", "qd"), BAND, what, hint=INTEGRATION_HINT, diagnosis="integration",
+               note="Any solve_ivp method at its default tolerances stays within the band.")
+
+
+@st.composite
+def _starts(draw):
+    """``(q0, t_end, s)``: the bar on its support (``y0 = x0 tan phi0``), at rest."""
+    rng = np.random.default_rng(draw(_SEEDS))
+    x0, phi0 = rng.uniform(1.0, 1.5), rng.uniform(0.3, 0.9)
+    return np.array([x0, x0 * np.tan(phi0), phi0]), 1.5, float(rng.uniform(0.2, 0.9))
+
+
+@check(2, title="simulate(q0, 1.5, s) from random states on the support: the event within the bands",
+       stage=STAGE_RANDOM, group="run")
+def check_event_random(ctx):
+    ctx.compare_random("problem_44.simulate", _starts(), name="the event", tol=EVENT_TIME, examples=3,
+                       compare=lambda got, expected, args: _event(got, expected, f"simulate(q0 = "
+                                                                  f"{np.round(args[0], 4).tolist()}, ...)",
+                                                                  RANDOM_BANDS),
+                       describe=lambda args: f"q0 = {np.round(args[0], 4).tolist()} at rest, t_end = {args[1]}, "
+                       f"s = {args[2]:.4g}")

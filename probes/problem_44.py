@@ -1,0 +1,34 @@
+"""Probes of problem 44: the event function of the second support, and the bar's run up to it (with the package's
+own constraint of problem 43 along the run)."""
+
+import numpy as np
+
+from . import module, probe
+from ._dynamics import trace
+
+
+@probe
+def event(pkg, states, s, d):
+    """The values of ``make_contact_event(s, d)`` at every state ``y = (q, qd)``, and its ``terminal`` and
+    ``direction`` attributes (``None`` when missing)."""
+    function = module(pkg, "problem_44").make_contact_event(s, d)
+    values = [float(function(0.0, np.asarray(y, dtype=float))) for y in states]
+    terminal, direction = getattr(function, "terminal", None), getattr(function, "direction", None)
+    return {"values": values, "terminal": None if terminal is None else bool(terminal),
+            "direction": None if direction is None else float(direction)}
+
+
+@probe
+def simulate(pkg, q0, t_end, s):
+    """``simulate(q0, t_end, s)`` (the sheet's bar otherwise): the run, the event, and ``c`` of the package's own
+    ``problem_43.constraint`` at every output time (the first support, ``d = 0``)."""
+    run = module(pkg, "problem_44").simulate(np.asarray(q0, dtype=float), float(t_end), float(s))
+    t, q, qd = trace(run, 3, "problem_44.simulate")
+    constraint = module(pkg, "problem_43").constraint
+    out = {"t": t, "q": q, "qd": qd, "c": np.array([float(constraint(row, 0.0)) for row in q]),
+           "t_event": run.get("t_event")}
+    if out["t_event"] is not None:
+        out["t_event"] = float(out["t_event"])
+        for key in ("q_event", "qd_event"):
+            out[key] = np.asarray(run[key], dtype=float).reshape(3)
+    return out

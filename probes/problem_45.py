@@ -1,0 +1,58 @@
+"""Probes of problem 45: the symbolic answers of the falling bar's impact (the Jacobian of both contacts, the
+impulses, the limit of s), evaluated at points the grader sends (the grader never sees the expressions)."""
+
+import numpy as np
+
+from . import module, probe
+
+#: the symbols the answers may use
+NAMES = ("s", "l", "d", "m", "theta", "phid")
+SHAPES = {"J": (2, 3), "Lam": (2,), "s_limit": ()}
+_ANSWERS = {}
+
+
+_FUNCTIONS = {"J": "impact_jacobian", "Lam": "impulses", "s_limit": "opening_limit"}
+
+
+def _answer(pkg, key):
+    """The answer ``key`` (``"J"``, ``"Lam"`` or ``"s_limit"``) as a sympy matrix (1 x 1 for ``s_limit``),
+    computed once per package and process."""
+    import sympy as sp
+
+    p45 = module(pkg, "problem_45")
+    cache = (pkg.__name__, id(p45), key)
+    if cache not in _ANSWERS:
+        value = getattr(p45, _FUNCTIONS[key])()
+        _ANSWERS[cache] = sp.Matrix([sp.sympify(value)]) if key == "s_limit" else sp.Matrix(value)
+    return _ANSWERS[cache]
+
+
+def _problem(key, matrix):
+    shape = SHAPES[key]
+    size = int(np.prod(shape)) if shape else 1
+    if matrix.shape != shape and not (len(shape) < 2 and size in matrix.shape and 1 in matrix.shape):
+        return f"{key} has shape {matrix.shape}, expected {shape or 'a single expression'}"
+    unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
+    if unknown:
+        return f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"
+    return None
+
+
+@probe
+def evaluate(pkg, key, points):
+    """``[value at every point {symbol name: value}]`` of the answer ``key`` (``"J"``: ``impact_jacobian()``,
+    ``"Lam"``: ``impulses()``, ``"s_limit"``: ``opening_limit()``); or ``{"problem": text}`` if it has the wrong
+    shape or uses symbols outside ``NAMES``."""
+    import sympy as sp
+
+    matrix = _answer(pkg, key)
+    problem = _problem(key, matrix)
+    if problem:
+        return {"problem": problem}
+    cache = ("function", pkg.__name__, id(matrix))
+    if cache not in _ANSWERS:
+        _ANSWERS[cache] = sp.lambdify([sp.Symbol(name) for name in NAMES],
+                                      matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
+    function = _ANSWERS[cache]
+    return [np.array(function(*(float(point[name]) for name in NAMES)), dtype=float).reshape(SHAPES[key])
+            for point in points]
