@@ -1,15 +1,16 @@
 """Wall time of `grade problem-N` on a finished submission (the reference), next to a bare
 `python -c "import numpy"` measured in the same run.
 
-    python benchmarks/bench_grade.py [--runs 7] [--whole-runs 5] [--problems 7 15 16 25 37 38 44 46]
+    python benchmarks/bench_grade.py [--runs 7] [--whole-runs 5] [--problems 2 3 7 15 16 25 37 38 44 46]
 
 Prints, in one run, the median (and min/max) of:
 
 * `grade problem-6`, and its ratio to the bare numpy import (target: at most 3 times);
 * a whole submission: `grade problem-6 ... problem-36` in one command, every problem of 6-36 that has checks
   (29 problems; target 4 s);
-* each of `--problems` on its own (default 7, 15, 16 and 25, target 2.5 s each; and the simulations of
-  Exercises VI-VII, 37, 38, 44 and 46, target 4 s each, with the reference's simulations cached).
+* each of `--problems` on its own (default 7, 15, 16 and 25, target 2.5 s each; the MuJoCo models of 2 and 3,
+  3 s each; and the simulations of Exercises VI-VII, 37, 38, 44 and 46, 4 s each, with the reference's
+  simulations cached).
 
 The first run of each command is a warm-up (it fills the reference cache, e.g. the reference's long simulations)
 and is not counted.  The graded submission is the reference itself, so a simulation problem includes the
@@ -35,9 +36,10 @@ RATIO_TARGET = 3.0
 #: seconds for the whole submission (problems 6-36)
 WHOLE_TARGET = 4.0
 #: seconds for a single problem of ``--problems``: 2.5 s, and more for the simulations (the robot's, the walker's,
-#: the bar's and problem 46: 4 s; the ball of 42 and the symbolic answers of 45, with sympy: 3 s)
+#: the bar's and problem 46: 4 s; the ball of 42 and the symbolic answers of 45, with sympy: 3 s; the MuJoCo
+#: models of 2 and 3: 3 s)
 SINGLE_TARGET = 2.5
-TARGETS = {37: 4.0, 38: 4.0, 42: 3.0, 44: 4.0, 45: 3.0, 46: 4.0}
+TARGETS = {2: 3.0, 3: 3.0, 37: 4.0, 38: 4.0, 42: 3.0, 44: 4.0, 45: 3.0, 46: 4.0}
 WHOLE = range(6, 37)
 
 #: the grader of this checkout (not whichever copy the ``grade`` script was installed from), its modules compiled
@@ -68,7 +70,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=7, help="timed runs of each single problem and of numpy")
     parser.add_argument("--whole-runs", type=int, default=5, help="timed runs of the whole submission")
-    parser.add_argument("--problems", type=int, nargs="*", default=[7, 15, 16, 25, 37, 38, 44, 46])
+    parser.add_argument("--problems", type=int, nargs="*", default=[2, 3, 7, 15, 16, 25, 37, 38, 44, 46])
     args = parser.parse_args()
     grade = [sys.executable, "-m", "grader.cli"]  # what the `grade` script runs, from this checkout
     listed = subprocess.run([*grade, "list"], capture_output=True, text=True, cwd=tempfile.gettempdir(), env=ENV)
