@@ -23,8 +23,8 @@ for _dirpath, _dirnames, _filenames in os.walk(_root):
         writes += 1
     except OSError:
         pass
-try:
-    os.makedirs(os.path.join(_root, "poison"))
+try:  # into the cache itself (makedirs would count a fresh tree in the child's own private /tmp)
+    os.mkdir(os.path.join(_root, "poison"))
     writes += 1
 except OSError:
     pass
