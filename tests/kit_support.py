@@ -70,7 +70,7 @@ class SharedChild:
 def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED):
     """The live report and the kit's report of one problem of one submission, graded as ``grade_problem`` does
     (materialized once, one sandboxed child), first with the live reference, then with the answer key."""
-    from grader.child import Child
+    from grader.sandbox import Child
     from grader.context import Context
     from grader.loader import cleanup, materialize, read_answers
     from grader.oracle import LiveOracle
