@@ -1,0 +1,77 @@
+"""Feedback a student can act on: one mistake is counted once and named at its root (error carried forward).
+
+A later check is judged on the student's own earlier results: a planted mistake in an upstream function costs only
+the checks of that function; the checks built on it pass (full follow-through credit), point at the root, and the
+root's hint names them once.
+"""
+
+import pytest
+
+from grader import grade_problem
+from grader.results import Status
+
+from .kit_support import SEED
+from .submissions import build_planted, planted_mistakes
+
+
+def planted(name):
+    return next(m for m in planted_mistakes() if m.name == name)
+
+
+def graded(name, tmp_path):
+    mistake = planted(name)
+    return mistake, grade_problem(mistake.problem, build_planted(mistake, tmp_path / "pkg"), seed=SEED)
+
+
+def assert_carried(report, root: str, followers: list[str], what: str, skipped=()):
+    """Only ``root`` (and the later stages of its own group, ``skipped``) loses points; every follower passes with
+    a pointer to the root; the root's hint names the followers once."""
+    by_id = {r.check_id: r for r in report.results}
+    lost = {r.check_id for r in report.results if r.score < r.max_score}
+    assert lost == {root, *skipped}, lost
+    assert all(by_id[s].status is Status.SKIPPED for s in skipped)
+    assert report.score == report.auto_max_score - sum(by_id[c].max_score for c in lost)
+    root_hint = by_id[root].hint
+    assert root_hint.count("Later checks use your") == 1, root_hint
+    assert f"judged on your {what}" in root_hint
+    for follower in followers:
+        result = by_id[follower]
+        assert result.status is Status.PASSED
+        assert f"Judged on your own {what}" in result.hint, result.hint
+        assert by_id[root].title in result.hint
+        assert root_hint.count(f"“{result.title}”") == 1, root_hint
+    # no diagnosis is counted but the root's: the class summary counts the mistake once
+    assert [r.check_id for r in report.results if r.diagnosis] == [root]
+
+
+def test_transposed_R3_costs_only_the_elementary_rotations(tmp_path):
+    _, report = graded("p06-R3-transpose", tmp_path)
+    assert_carried(report, "p06.elementary_values", ["p06.cardan_values", "p06.frames", "p06.vectors"],
+                   "R1, R2, R3")
+    root = next(r for r in report.results if r.check_id == "p06.elementary_values")
+    assert root.diagnosis == "transpose" and "A_CI instead of A_IC" in root.hint
+
+
+def test_reflection_in_R2_is_carried_from_the_structure_check(tmp_path):
+    """The values check of R1..R3 is skipped after the structure check fails: the root is the structure check."""
+    _, report = graded("p06-R2-sign-flip-reflection", tmp_path)
+    assert_carried(report, "p06.elementary_rotation",
+                   ["p06.cardan_rotation", "p06.cardan_values", "p06.frames", "p06.vectors"], "R1, R2, R3",
+                   skipped=["p06.elementary_values"])
+
+
+def test_a_downstream_mistake_of_its_own_is_still_caught(tmp_path):
+    """cardan multiplies the student's own (transposed) R3 in the wrong order: judged on their R3, it fails for
+    its own reason, with its own diagnosis."""
+    _, report = graded("p06-R3-transpose-and-cardan-order", tmp_path)
+    by_id = {r.check_id: r for r in report.results}
+    assert by_id["p06.cardan_values"].status is Status.FAILED
+    assert by_id["p06.cardan_values"].diagnosis == "rotation_order"
+    assert by_id["p06.elementary_values"].diagnosis == "transpose"
+
+
+@pytest.mark.parametrize("name", ["p06-vectors-typed-from-sheet"])
+def test_typed_sheet_numbers_do_not_pass(name, tmp_path):
+    mistake, report = graded(name, tmp_path)
+    target = next(r for r in report.results if r.check_id == mistake.check)
+    assert target.score == 0 and target.diagnosis == "typed_numbers"
