@@ -75,3 +75,9 @@ def test_typed_sheet_numbers_do_not_pass(name, tmp_path):
     mistake, report = graded(name, tmp_path)
     target = next(r for r in report.results if r.check_id == mistake.check)
     assert target.score == 0 and target.diagnosis == "typed_numbers"
+
+
+def test_a_wrong_step_of_point_k_costs_only_point_k(tmp_path):
+    """Problem 22: the recursion's step is wrong; end_effector_recursive is judged on the student's own point_k."""
+    _, report = graded("p22-point-k-orientation-before", tmp_path)
+    assert_carried(report, "p22.points_values", ["p22.recursive_values"], "point_k", skipped=["p22.recursion"])
