@@ -428,11 +428,16 @@ def _agrees_before(bodies, expected, k, quantity, tol):
     return True
 
 
-def compare_states(got, expected, tol=EXACT, mistakes=(), context=""):
+def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from=None):
     """Fail at the first body (recursion order) and quantity where ``got`` departs from ``expected``; ``mistakes``
-    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with."""
+    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with.
+
+    ``poses_from = (ctx, check id, what)`` says that the positions and orientations are an earlier problem's work,
+    graded by that check: they are not compared here (error carried forward), only the motion is; when the poses
+    depart, the check records it (``ctx.carry_forward``)."""
     names = expected["names"]
     bodies = bodies_of(got, names)
+    departed = False
     for k, name in enumerate(names):
         ref = expected["bodies"][k]
         for quantity in ORDER:
@@ -445,22 +450,37 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context=""):
                      "none")
             if close(value, ref[quantity], tol):
                 continue
+            if poses_from is not None and quantity in probe_trees.POSE:
+                departed = True
+                continue
             found = [Mistake(m_name, state[k][quantity], m_hint)
                      for m_name, m_hint, state in mistakes if _agrees_before(state, expected, k, quantity, tol)]
             if quantity == "B_r_IB":
                 found.append(Mistake("inertial_coordinates", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],
                        context=context, note=_where(expected, k, quantity))
+    if departed:
+        ctx, upstream, what = poses_from
+        ctx.carry_forward(upstream, what)
 
 
-def tree_comparison(ctx, motion=True, models=MODELS):
+def tree_comparison(ctx, motion=True, models=MODELS, poses_from=None):
     """A ``compare`` for ``ctx.compare_random`` on ``(description, q[, qd, qdd])`` cases; the mistaken states of
-    each case are asked of the reference before the comparison."""
+    each case are asked of the reference before the comparison.  ``poses_from = (check id, what)``: the poses are
+    an earlier problem's, judged there (see ``compare_states``)."""
+    carried = None if poses_from is None else (ctx, *poses_from)
 
     def compare(got, expected, args):
-        compare_states(got, expected, mistakes=candidates(ctx, *args[:4 if motion else 2], models=models))
+        compare_states(got, expected, mistakes=candidates(ctx, *args[:4 if motion else 2], models=models),
+                       poses_from=carried)
 
     return compare
+
+
+def _same_as(bodies, reference, quantities, tol=EXACT):
+    """True when every body's ``quantities`` equal the reference's (the motion is right, whatever the poses)."""
+    return all(close(body.get(quantity), ref[quantity], tol) for body, ref in zip(bodies, reference)
+               for quantity in quantities if ref.get(quantity) is not None)
 
 
 def _unskew(W):
@@ -489,6 +509,8 @@ def compare_jacobians(got, expected, h=H, tol=DIFFERENCES):
     pairs = as_list(got["shifted"], "the poses at q +- h e_i, one pair per coordinate", nq)
     shifted = [[bodies_list(side, names, f"at q {sign} h e_{i + 1}") for side, sign in
                 zip(as_list(pair, f"the poses at q +- h e_{i + 1}", 2), "+-")] for i, pair in enumerate(pairs)]
+    if _same_as(bodies, expected["state"]["bodies"], ("B_J_S", "B_J_R")):
+        return  # the reference's Jacobians: right on their own merit, whatever the poses (judged elsewhere)
     for k, name in enumerate(names):
         body = bodies[k]
         A = assert_rotation(body.get("A_IB"), f"A_IB of {name}")
@@ -524,6 +546,8 @@ def compare_path(got, expected, h=H, tol=DIFFERENCES):
     reply) gives the bodies the reply must cover."""
     names = expected[1]["names"]
     minus, at, plus = (bodies_of(state, names) for state in as_list(got, "the states at t = -h, 0, +h", 3))
+    if _same_as(at, expected[1]["bodies"], tuple(_PATH_HINTS)):
+        return  # the reference's motion: right on its own merit, whatever the poses (judged elsewhere)
     for k, name in enumerate(names):
         A = assert_rotation(at[k].get("A_IB"), f"A_IB of {name}")
 

@@ -16,6 +16,9 @@ TITLE = "Kinematics with Velocities, Accelerations, and Jacobians"
 
 #: rotational joints and the probe's test joint (relative translations exercise the Coriolis term)
 KINDS = ("rotational", "test")
+#: the positions and orientations are problem 24's work: the motion is judged on the student's own (error carried
+#: forward; the finite-difference checks judge it on them)
+POSES = ("p24.random_trees", "positions and orientations A_IB, B_r_IB (problem 24)")
 
 
 @check(2, title="the triple pendulum at the sheet's test case q = (pi/6, -pi/4, pi/3), qd = (1, 0, 0), qdd = "
@@ -26,7 +29,7 @@ def check_pendulum(ctx):
     mistakes = candidates(ctx, case["description"], *values)
     got = ctx.student("problem_31.pendulum", *values)
     expected = ctx.reference("problem_31.pendulum", *values)
-    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)")
+    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)", poses_from=(ctx, *POSES))
 
 
 @check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "
@@ -44,4 +47,4 @@ def check_path(ctx):
 @check(3, title="random trees: velocities, accelerations and Jacobians of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")

@@ -226,8 +226,10 @@ def carry_forward(results: list[CheckResult], carried: dict, blockers: dict) -> 
                 root, what = found[0], (found[1] or hop_what)
                 break
         if root is None:
-            notes[check_id] = (f"Judged on your own {what}, which differ from the reference's at the inputs of this "
-                               f"check: full credit here, but compare them with the reference's.")
+            elsewhere = [title for title in (_title_elsewhere(upstream, by_id) for upstream, _ in hops) if title]
+            notes[check_id] = (f"Judged on your own {what}, which differ from the reference's (error carried forward: "
+                               f"full credit here); " + (f"they are graded by {elsewhere[0]}." if elsewhere else
+                                                         "compare them with the reference's."))
             continue
         followers.setdefault(root, []).append(check_id)
         names.setdefault(root, what)
@@ -245,6 +247,18 @@ def carry_forward(results: list[CheckResult], carried: dict, blockers: dict) -> 
                 f"(error carried forward: this mistake costs only the points of this check).")))
         out.append(result)
     return out
+
+
+def _title_elsewhere(check_id: str, by_id: dict) -> str:
+    """``problem N's check “title”`` for a check of another problem than the one graded, else ""."""
+    if check_id in by_id:
+        return ""
+    try:
+        number, name = int(check_id[1:3]), check_id[4:]
+        spec = next(spec for spec in checks_of(problem_module(number)) if spec.name == name)
+    except (ValueError, KeyError, StopIteration):
+        return ""
+    return f"problem {number}'s check “{spec.title}”"
 
 
 def _join(first: str, second: str) -> str:

@@ -81,3 +81,20 @@ def test_a_wrong_step_of_point_k_costs_only_point_k(tmp_path):
     """Problem 22: the recursion's step is wrong; end_effector_recursive is judged on the student's own point_k."""
     _, report = graded("p22-point-k-orientation-before", tmp_path)
     assert_carried(report, "p22.points_values", ["p22.recursive_values"], "point_k", skipped=["p22.recursion"])
+
+
+def test_a_wrong_position_pass_costs_only_the_positions(tmp_path):
+    """A tree's position pass is wrong (problem 24's successor_pose adds S_r_SDs): problem 24 loses its pose
+    checks; problem 31 judges the velocities, accelerations and Jacobians on their own merit (they are right) and
+    its checks that met the student's poses point at problem 24's check."""
+    from grader import grade_submission
+
+    mistake = planted("p24-offset-added")
+    p24, p31 = grade_submission(build_planted(mistake, tmp_path / "pkg"), [24, 31], seed=SEED)
+    assert p24.score < p24.auto_max_score
+    assert {r.check_id: r.diagnosis for r in p24.results if not r.passed}["p24.random_trees"] == "offset_sign"
+    assert p31.score == p31.auto_max_score, [(r.check_id, r.message[:200]) for r in p31.results if not r.passed]
+    carried = [r for r in p31.results if "Judged on your own positions and orientations" in r.hint]
+    assert {r.check_id for r in carried} == {"p31.pendulum", "p31.random_trees"}
+    assert all("problem 24's check “random trees of rotational joints" in r.hint for r in carried)
+    assert not any(r.diagnosis for r in p31.results)
