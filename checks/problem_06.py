@@ -3,6 +3,7 @@
 import numpy as np
 from hypothesis import strategies as st
 
+from checks._effects import assert_no_side_effects
 from grader.checking import (
     EXACT,
     SHEET,
@@ -327,3 +328,15 @@ def check_vectors(ctx):
         typed = [Mistake("typed_numbers", target, TYPED_HINT)] if key != "C3_v" else []
         assert_close(vectors[key], expected[key], key, EXACT, typed + _vector_mistakes(frames, v, key),
                      context="(the sheet's value at full precision)")
+
+
+# ------------------------------------------------------------------------------------ side effects
+
+
+@check(1, title="R1, R2, R3 and cardan keep no state: called again with the same angles, they give the same matrix",
+       stage=STAGE_VALUES, group="side_effects")
+def check_side_effects(ctx):
+    for axis in AXES:
+        assert_no_side_effects(ctx, "rotations", f"R{axis}", [0.3], [-1.1], ("angle",))
+    assert_no_side_effects(ctx, "rotations", "cardan", [0.4, -0.3, 1.1], [1.0, 0.2, -0.5],
+                           ("alpha", "beta", "gamma"))

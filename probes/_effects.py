@@ -1,0 +1,45 @@
+"""Probes of side effects: what one call's outputs cannot show.
+
+A function later problems reuse must leave its caller's arrays alone and must not keep state between calls.  These
+probes call a function of the package on copies of the arguments, on a second input, and on the first input again,
+and return what they saw as plain data; ``checks/_effects.py`` judges it.
+"""
+
+import copy
+
+import numpy as np
+
+from . import module, probe
+
+__all__ = ["calls"]
+
+
+def _snapshot(value):
+    """A deep copy of a call's result, as plain data where it is numeric (an unusable result is left to the
+    check of the function's values)."""
+    try:
+        return copy.deepcopy(value)
+    except Exception:  # noqa: BLE001
+        return None
+
+
+def _arrays(args):
+    """Fresh copies of the arguments (lists as numpy arrays where the function is given arrays)."""
+    return [np.array(a, dtype=float) if isinstance(a, (list, np.ndarray)) else copy.deepcopy(a) for a in args]
+
+
+@probe
+def calls(pkg, module_name, function, first, second):
+    """``module.function(*first)``, then ``(*second)``, then ``(*first)`` again, each on fresh copies:
+
+    ``{"first": the first result (copied at once), "first_later": the first result object after the second call,
+    "again": the result of the repeated call, "args_after": the first call's arguments after it returned}``."""
+    func = getattr(module(pkg, module_name), function)
+    args = _arrays(first)
+    result = func(*args)
+    snapshot = _snapshot(result)
+    args_after = _snapshot(args)
+    func(*_arrays(second))
+    first_later = _snapshot(result)
+    again = func(*_arrays(first))
+    return {"first": snapshot, "first_later": first_later, "again": _snapshot(again), "args_after": args_after}
