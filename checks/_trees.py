@@ -49,6 +49,7 @@ __all__ = [
     "candidates",
     "bodies_of",
     "bodies_list",
+    "assert_visited",
     "compare_states",
     "tree_comparison",
     "compare_jacobians",
@@ -428,6 +429,38 @@ def _agrees_before(bodies, expected, k, quantity, tol):
     return True
 
 
+UNVISITED_HINT = (
+    "The recursion must visit every child joint of every body: Body.forward_kinematics loops over ALL of "
+    "self.child_joints and each joint recurses into its successor (Joint.forward_kinematics, problem 24). A return "
+    "inside that loop, a loop over the first child only, or a walk along one chain leaves the other branches at "
+    "their initial state."
+)
+
+
+def _initial(body, motion: bool) -> bool:
+    """True when a body's state is still what it is before any pass: no pose (None) or ``A_IB = E, B_r_IB = 0``, and
+    no motion (None) or none at all."""
+    A, r = body.get("A_IB"), body.get("B_r_IB")
+    untouched = (A is None and r is None) or (close(A, np.eye(3), EXACT) and close(r, np.zeros(3), EXACT))
+    if not untouched or not motion:
+        return untouched
+    return all(body.get(q) is None or close(body.get(q), np.zeros_like(np.asarray(body.get(q), dtype=float)), EXACT)
+               for q in probe_trees.MOTION)
+
+
+def assert_visited(bodies, expected_bodies, names, motion=True):
+    """Fail when the recursion never reached some bodies: their state is still the initial one where the
+    reference's is not (diagnosis ``unvisited_branch``), rather than naming a wrong value or a missing return."""
+    unvisited = [k for k in range(1, len(names))
+                 if _initial(bodies[k], motion) and not _initial(expected_bodies[k], motion)]
+    if unvisited:
+        listed = ", ".join(names[k] for k in unvisited)
+        fail(f"forward_kinematics never reached {listed}: {'its' if len(unvisited) == 1 else 'their'} state is "
+             f"still the initial one (A_IB = E, B_r_IB = 0{', no motion' if motion else ''}), although "
+             f"{'its' if len(unvisited) == 1 else 'their'} joints moved the bodies elsewhere.\n"
+             f"the bodies in recursion order: {', '.join(names)}", UNVISITED_HINT, "unvisited_branch")
+
+
 def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from=None):
     """Fail at the first body (recursion order) and quantity where ``got`` departs from ``expected``; ``mistakes``
     are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with.
@@ -437,6 +470,8 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from
     depart, the check records it (``ctx.carry_forward``)."""
     names = expected["names"]
     bodies = bodies_of(got, names)
+    assert_visited(bodies, expected["bodies"], names, motion=any(
+        body.get("B_v_B") is not None for body in expected["bodies"]))
     departed = False
     for k, name in enumerate(names):
         ref = expected["bodies"][k]
@@ -511,6 +546,7 @@ def compare_jacobians(got, expected, h=H, tol=DIFFERENCES):
                 zip(as_list(pair, f"the poses at q +- h e_{i + 1}", 2), "+-")] for i, pair in enumerate(pairs)]
     if _same_as(bodies, expected["state"]["bodies"], ("B_J_S", "B_J_R")):
         return  # the reference's Jacobians: right on their own merit, whatever the poses (judged elsewhere)
+    assert_visited(bodies, expected["state"]["bodies"], names)
     for k, name in enumerate(names):
         body = bodies[k]
         A = assert_rotation(body.get("A_IB"), f"A_IB of {name}")
@@ -548,6 +584,7 @@ def compare_path(got, expected, h=H, tol=DIFFERENCES):
     minus, at, plus = (bodies_of(state, names) for state in as_list(got, "the states at t = -h, 0, +h", 3))
     if _same_as(at, expected[1]["bodies"], tuple(_PATH_HINTS)):
         return  # the reference's motion: right on its own merit, whatever the poses (judged elsewhere)
+    assert_visited(at, expected[1]["bodies"], names)
     for k, name in enumerate(names):
         A = assert_rotation(at[k].get("A_IB"), f"A_IB of {name}")
 
