@@ -98,3 +98,16 @@ def test_a_wrong_position_pass_costs_only_the_positions(tmp_path):
     assert {r.check_id for r in carried} == {"p31.pendulum", "p31.random_trees"}
     assert all("problem 24's check “random trees of rotational joints" in r.hint for r in carried)
     assert not any(r.diagnosis for r in p31.results)
+
+
+def test_a_wrong_gravity_costs_only_the_equations_of_motion(tmp_path):
+    """Problem 37: g has the wrong sign; robot_ode and the three runs are judged on the student's own M, f, g."""
+    _, report = graded("p37-gravity-sign", tmp_path)
+    by_id = {r.check_id: r for r in report.results}
+    lost = {r.check_id for r in report.results if r.score < r.max_score}
+    assert lost <= {"p37.robot_mfg", "p37.tree_mfg", "p37.gravity_is_potential"} and "p37.robot_mfg" in lost, lost
+    followers = ["p37.robot_ode", "p37.computed_torques_run", "p37.gravity_compensation_run", "p37.pd_run"]
+    for follower in followers:
+        assert by_id[follower].status is Status.PASSED
+        assert "Judged on your own M, f, g" in by_id[follower].hint
+    assert by_id["p37.robot_mfg"].hint.count("Later checks use your M, f, g") == 1
