@@ -3,12 +3,14 @@
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, check
 
+from ._effects import assert_tree_no_side_effects
 from ._trees import (
     candidates,
     compare_jacobian_differences,
     compare_path_differences,
     compare_states,
     compare_trees,
+    rich_case,
     tree_comparison,
 )
 
@@ -48,3 +50,10 @@ def check_path(ctx):
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
     compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")
+
+
+@check(1, title="forward_kinematics with velocities leaves q, qd, qdd unchanged, and a tree used again gives what a "
+       "fresh tree gives (no state kept between calls)", stage=STAGE_VALUES, group="side_effects")
+def check_side_effects(ctx):
+    description, q, qd, qdd = rich_case(KINDS)
+    assert_tree_no_side_effects(ctx, description, (q, qd, qdd), (q - 0.4, -qd, 0.5 * qdd))

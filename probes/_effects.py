@@ -11,7 +11,7 @@ import numpy as np
 
 from . import module, probe
 
-__all__ = ["calls"]
+__all__ = ["calls", "tree_calls"]
 
 
 def _snapshot(value):
@@ -43,3 +43,28 @@ def calls(pkg, module_name, function, first, second):
     first_later = _snapshot(result)
     again = func(*_arrays(first))
     return {"first": snapshot, "first_later": first_later, "again": _snapshot(again), "args_after": args_after}
+
+
+@probe
+def tree_calls(pkg, description, first, second):
+    """One tree of the described bodies, built once: ``forward_kinematics(*first)``, then ``(*second)``, then
+    ``(*first)`` again (each a tuple ``(q[, qd, qdd])`` on fresh copies), and a fresh tree at ``second``:
+
+    ``{"first", "second", "fresh_second", "again"}`` (the states, see ``_trees.state``) and ``"args_after"`` (the
+    first call's arguments after it returned)."""
+    from ._trees import build, state
+
+    tree_module = module(pkg, "tree")
+    tree = build(tree_module, description)
+    motion = len(first) > 1
+    args = _arrays(first)
+    tree.forward_kinematics(*args)
+    at_first = state(tree, motion)
+    args_after = _snapshot(args)
+    tree.forward_kinematics(*_arrays(second))
+    at_second = state(tree, motion)
+    fresh = build(tree_module, description)
+    fresh.forward_kinematics(*_arrays(second))
+    tree.forward_kinematics(*_arrays(first))
+    return {"first": at_first, "second": at_second, "fresh_second": state(fresh, motion), "again": state(tree, motion),
+            "args_after": args_after}
