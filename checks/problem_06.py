@@ -65,8 +65,25 @@ def _cardan_mistakes(ctx, args, expected):
         return ctx.reference("problem_06.elementary", k, x)
 
     a, b, g = args
+    angles = {3: g, 2: b, 1: a}  # the factors in the order of the product
+    factors = {k: R(k, x) for k, x in angles.items()}
+
+    def one_factor(axis, replaced):
+        """The product with the factor about ``axis`` replaced (one wrong elementary rotation inside cardan)."""
+        product = np.eye(3)
+        for k, factor in factors.items():
+            product = product @ (replaced if k == axis else factor)
+        return product
+
     return [
         Mistake("transpose", np.asarray(expected).T, TRANSPOSE_HINT),
+        *[Mistake("transpose", one_factor(axis, factors[axis].T),
+                  f"One factor of your product is transposed: the rotation about the {axis}-axis enters as A_CI "
+                  f"instead of A_IC (its -sin on the wrong side of the diagonal). Build cardan from R1, R2, R3.")
+          for axis in AXES],
+        *[Mistake("degrees", one_factor(axis, R(axis, float(np.deg2rad(angles[axis])))),
+                  f"The rotation about the {axis}-axis inside your product treats its angle as degrees: "
+                  + DEGREES_HINT) for axis in AXES],
         Mistake(
             "rotation_order",
             R(1, a) @ R(2, b) @ R(3, g),

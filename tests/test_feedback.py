@@ -111,3 +111,15 @@ def test_a_wrong_gravity_costs_only_the_equations_of_motion(tmp_path):
         assert by_id[follower].status is Status.PASSED
         assert "Judged on your own M, f, g" in by_id[follower].hint
     assert by_id["p37.robot_mfg"].hint.count("Later checks use your M, f, g") == 1
+
+
+def test_the_class_summary_counts_the_root_mistake_once(tmp_path):
+    """Two students with a transposed R3: the class summary names the root check, never the checks judged on it."""
+    from grader.batch.exports import class_summary
+    from grader.batch.gradebook import Graded
+
+    _, report = graded("p06-R3-transpose", tmp_path)
+    html = class_summary([Graded(student, "hash", "v", 1, "now", "graded", report) for student in ("ann", "bob")])
+    assert "p06.elementary_values" in html
+    for follower in ("p06.cardan_values", "p06.frames", "p06.vectors"):
+        assert follower not in html
