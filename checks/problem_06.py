@@ -156,7 +156,14 @@ def _own_factors(got, expected):
         return None
     if all(close(own[k], expected[k], EXACT) for k in own):
         return None
+    if any(_does_nothing(own[k], expected[k]) for k in own):
+        return None  # an answer that does nothing earns nothing downstream either
     return {k: np.asarray(v, dtype=float) for k, v in own.items()}
+
+
+def _does_nothing(mine, reference):
+    """True when the student's rotation is the identity where the reference's turns: nothing to carry forward."""
+    return close(mine, np.eye(3), STRUCTURE) and not close(reference, np.eye(3), STRUCTURE)
 
 
 def _own_cardan_mistakes(own):
@@ -242,7 +249,8 @@ def _own_frames(got, expected):
     cardan = got.get("cardan") or [None] * 3
     if all(c is not None for c in cardan):
         partial = dict(zip(KEYS, (np.asarray(c, dtype=float) for c in cardan)))
-        if not all(close(partial[k], expected["frames"][k], EXACT) for k in KEYS):
+        if not all(close(partial[k], expected["frames"][k], EXACT) for k in KEYS) and not any(
+                _does_nothing(partial[k], expected["frames"][k]) for k in KEYS):
             candidates.append((CARDAN, "cardan", partial))
     return candidates
 
@@ -311,7 +319,7 @@ def _vectors_of(A, v):
     return {"I_v": I_v, "C1_v": A["A_IC1"].T @ I_v, "C2_v": A["A_IC2"].T @ I_v, "C3_v": v}
 
 
-@check(2, title="the coordinates of V in I, C1, C2, C3 (the sheet's values, at full precision)",
+@check(1, title="the coordinates of V in I, C1, C2, C3 (the sheet's values, at full precision)",
        stage=STAGE_VALUES, group="sheet")
 def check_vectors(ctx):
     reference = ctx.reference("problem_06.vectors_with_frames")
@@ -331,7 +339,8 @@ def check_vectors(ctx):
     own_frames = answer["frames"]
     if own_frames is not None and all(own_frames[key] is not None for key in KEYS):
         own_frames = {key: np.asarray(own_frames[key], dtype=float) for key in KEYS}
-        if not all(close(own_frames[key], frames[key], EXACT) for key in KEYS):
+        if not all(close(own_frames[key], frames[key], EXACT) for key in KEYS) and not any(
+                _does_nothing(own_frames[key], frames[key]) for key in KEYS):
             own = _vectors_of(own_frames, v)
             if all(close(vectors[key], own[key], EXACT) for key in SHEET_VECTORS):
                 ctx.carry_forward(FRAMES, "frames A_IC1, A_IC2, A_IC3")
@@ -350,8 +359,12 @@ def check_vectors(ctx):
 # ------------------------------------------------------------------------------------ side effects
 
 
+#: side effects are credited after the values (same group): a function that does nothing earns nothing for it
+STAGE_AFTER_VALUES = STAGE_RANDOM + 1
+
+
 @check(1, title="R1, R2, R3 and cardan keep no state: called again with the same angles, they give the same matrix",
-       stage=STAGE_VALUES, group="side_effects")
+       stage=STAGE_AFTER_VALUES, group="elementary")
 def check_side_effects(ctx):
     for axis in AXES:
         assert_no_side_effects(ctx, "rotations", f"R{axis}", [0.3], [-1.1], ("angle",))

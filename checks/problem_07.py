@@ -160,7 +160,7 @@ def check_animation(ctx):
 
 
 @check(1, title="skew, unskew, omega_body and omega_inertial leave their arguments unchanged, return a new array on "
-       "every call and keep no state", stage=STAGE_VALUES, group="side_effects")
+       "every call and keep no state", stage=STAGE_RANDOM + 1, group="skew")
 def check_side_effects(ctx):
     A, dA = _rotation_and_rate(_SIDE_A, np.array([0.3, -1.2, 0.8]))
     B, dB = _rotation_and_rate(_SIDE_A.T, np.array([-0.7, 0.1, 2.0]))

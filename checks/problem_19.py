@@ -119,7 +119,7 @@ _SIDE_I = np.array([[2.0, -0.3, 0.1], [-0.3, 1.5, 0.2], [0.1, 0.2, 1.2]])
 
 
 @check(1, title="parallel_axis and composite_inertia leave their arguments unchanged, return a new array on every "
-       "call and keep no state", stage=STAGE_VALUES, group="side_effects")
+       "call and keep no state", stage=STAGE_RANDOM + 1, group="parallel_axis")
 def check_side_effects(ctx):
     assert_no_side_effects(ctx, "inertia", "parallel_axis", [_SIDE_I, 2.0, np.array([0.3, -0.5, 1.0])],
                            [0.5 * _SIDE_I, 1.0, np.array([-1.0, 0.2, 0.4])], ("I_G", "m", "r"))

@@ -61,7 +61,7 @@ def check_random_trees(ctx):
 
 
 @check(1, title="forward_kinematics leaves q unchanged, and a tree used again gives what a fresh tree gives (no "
-       "state kept between calls)", stage=STAGE_VALUES, group="side_effects")
+       "state kept between calls)", stage=STAGE_RANDOM + 1, group="trees")
 def check_side_effects(ctx):
     description, q = rich_case(KINDS, motion=False)
     assert_tree_no_side_effects(ctx, description, (q,), (q[::-1] - 0.4,))

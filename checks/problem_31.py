@@ -53,7 +53,7 @@ def check_random_trees(ctx):
 
 
 @check(1, title="forward_kinematics with velocities leaves q, qd, qdd unchanged, and a tree used again gives what a "
-       "fresh tree gives (no state kept between calls)", stage=STAGE_VALUES, group="side_effects")
+       "fresh tree gives (no state kept between calls)", stage=STAGE_RANDOM + 1, group="trees")
 def check_side_effects(ctx):
     description, q, qd, qdd = rich_case(KINDS)
     assert_tree_no_side_effects(ctx, description, (q, qd, qdd), (q - 0.4, -qd, 0.5 * qdd))

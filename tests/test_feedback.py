@@ -47,7 +47,7 @@ def assert_carried(report, root: str, followers: list[str], what: str, skipped=(
 def test_transposed_R3_costs_only_the_elementary_rotations(tmp_path):
     _, report = graded("p06-R3-transpose", tmp_path)
     assert_carried(report, "p06.elementary_values", ["p06.cardan_values", "p06.frames", "p06.vectors"],
-                   "R1, R2, R3")
+                   "R1, R2, R3", skipped=["p06.side_effects"])
     root = next(r for r in report.results if r.check_id == "p06.elementary_values")
     assert root.diagnosis == "transpose" and "A_CI instead of A_IC" in root.hint
 
@@ -57,7 +57,16 @@ def test_reflection_in_R2_is_carried_from_the_structure_check(tmp_path):
     _, report = graded("p06-R2-sign-flip-reflection", tmp_path)
     assert_carried(report, "p06.elementary_rotation",
                    ["p06.cardan_rotation", "p06.cardan_values", "p06.frames", "p06.vectors"], "R1, R2, R3",
-                   skipped=["p06.elementary_values"])
+                   skipped=["p06.elementary_values", "p06.side_effects"])
+
+
+def test_an_upstream_answer_that_does_nothing_is_not_carried(tmp_path):
+    """R1 returns the identity: the checks built on it are not judged on it (an answer that does nothing earns
+    nothing downstream either)."""
+    _, report = graded("p06-R1-identity", tmp_path)
+    by_id = {r.check_id: r for r in report.results}
+    assert by_id["p06.cardan_values"].status is Status.FAILED
+    assert not any("Judged on your own" in r.hint for r in report.results)
 
 
 def test_a_downstream_mistake_of_its_own_is_still_caught(tmp_path):
