@@ -49,6 +49,7 @@ __all__ = [
     "candidates",
     "bodies_of",
     "bodies_list",
+    "assert_visited",
     "compare_states",
     "tree_comparison",
     "compare_jacobians",
@@ -428,11 +429,50 @@ def _agrees_before(bodies, expected, k, quantity, tol):
     return True
 
 
-def compare_states(got, expected, tol=EXACT, mistakes=(), context=""):
+UNVISITED_HINT = (
+    "The recursion must visit every child joint of every body: Body.forward_kinematics loops over ALL of "
+    "self.child_joints and each joint recurses into its successor (Joint.forward_kinematics, problem 24). A return "
+    "inside that loop, a loop over the first child only, or a walk along one chain leaves the other branches at "
+    "their initial state."
+)
+
+
+def _initial(body, motion: bool) -> bool:
+    """True when a body's state is still what it is before any pass: no pose (None) or ``A_IB = E, B_r_IB = 0``, and
+    no motion (None) or none at all."""
+    A, r = body.get("A_IB"), body.get("B_r_IB")
+    untouched = (A is None and r is None) or (close(A, np.eye(3), EXACT) and close(r, np.zeros(3), EXACT))
+    if not untouched or not motion:
+        return untouched
+    return all(body.get(q) is None or close(body.get(q), np.zeros_like(np.asarray(body.get(q), dtype=float)), EXACT)
+               for q in probe_trees.MOTION)
+
+
+def assert_visited(bodies, expected_bodies, names, motion=True):
+    """Fail when the recursion never reached some bodies: their state is still the initial one where the
+    reference's is not (diagnosis ``unvisited_branch``), rather than naming a wrong value or a missing return."""
+    unvisited = [k for k in range(1, len(names))
+                 if _initial(bodies[k], motion) and not _initial(expected_bodies[k], motion)]
+    if unvisited:
+        listed = ", ".join(names[k] for k in unvisited)
+        fail(f"forward_kinematics never reached {listed}: {'its' if len(unvisited) == 1 else 'their'} state is "
+             f"still the initial one (A_IB = E, B_r_IB = 0{', no motion' if motion else ''}), although "
+             f"{'its' if len(unvisited) == 1 else 'their'} joints moved the bodies elsewhere.\n"
+             f"the bodies in recursion order: {', '.join(names)}", UNVISITED_HINT, "unvisited_branch")
+
+
+def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from=None):
     """Fail at the first body (recursion order) and quantity where ``got`` departs from ``expected``; ``mistakes``
-    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with."""
+    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with.
+
+    ``poses_from = (ctx, check id, what)`` says that the positions and orientations are an earlier problem's work,
+    graded by that check: they are not compared here (error carried forward), only the motion is; when the poses
+    depart, the check records it (``ctx.carry_forward``)."""
     names = expected["names"]
     bodies = bodies_of(got, names)
+    assert_visited(bodies, expected["bodies"], names, motion=any(
+        body.get("B_v_B") is not None for body in expected["bodies"]))
+    departed = False
     for k, name in enumerate(names):
         ref = expected["bodies"][k]
         for quantity in ORDER:
@@ -445,22 +485,37 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context=""):
                      "none")
             if close(value, ref[quantity], tol):
                 continue
+            if poses_from is not None and quantity in probe_trees.POSE:
+                departed = True
+                continue
             found = [Mistake(m_name, state[k][quantity], m_hint)
                      for m_name, m_hint, state in mistakes if _agrees_before(state, expected, k, quantity, tol)]
             if quantity == "B_r_IB":
                 found.append(Mistake("inertial_coordinates", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],
                        context=context, note=_where(expected, k, quantity))
+    if departed:
+        ctx, upstream, what = poses_from
+        ctx.carry_forward(upstream, what)
 
 
-def tree_comparison(ctx, motion=True, models=MODELS):
+def tree_comparison(ctx, motion=True, models=MODELS, poses_from=None):
     """A ``compare`` for ``ctx.compare_random`` on ``(description, q[, qd, qdd])`` cases; the mistaken states of
-    each case are asked of the reference before the comparison."""
+    each case are asked of the reference before the comparison.  ``poses_from = (check id, what)``: the poses are
+    an earlier problem's, judged there (see ``compare_states``)."""
+    carried = None if poses_from is None else (ctx, *poses_from)
 
     def compare(got, expected, args):
-        compare_states(got, expected, mistakes=candidates(ctx, *args[:4 if motion else 2], models=models))
+        compare_states(got, expected, mistakes=candidates(ctx, *args[:4 if motion else 2], models=models),
+                       poses_from=carried)
 
     return compare
+
+
+def _same_as(bodies, reference, quantities, tol=EXACT):
+    """True when every body's ``quantities`` equal the reference's (the motion is right, whatever the poses)."""
+    return all(close(body.get(quantity), ref[quantity], tol) for body, ref in zip(bodies, reference)
+               for quantity in quantities if ref.get(quantity) is not None)
 
 
 def _unskew(W):
@@ -489,6 +544,9 @@ def compare_jacobians(got, expected, h=H, tol=DIFFERENCES):
     pairs = as_list(got["shifted"], "the poses at q +- h e_i, one pair per coordinate", nq)
     shifted = [[bodies_list(side, names, f"at q {sign} h e_{i + 1}") for side, sign in
                 zip(as_list(pair, f"the poses at q +- h e_{i + 1}", 2), "+-")] for i, pair in enumerate(pairs)]
+    if _same_as(bodies, expected["state"]["bodies"], ("B_J_S", "B_J_R")):
+        return  # the reference's Jacobians: right on their own merit, whatever the poses (judged elsewhere)
+    assert_visited(bodies, expected["state"]["bodies"], names)
     for k, name in enumerate(names):
         body = bodies[k]
         A = assert_rotation(body.get("A_IB"), f"A_IB of {name}")
@@ -524,6 +582,9 @@ def compare_path(got, expected, h=H, tol=DIFFERENCES):
     reply) gives the bodies the reply must cover."""
     names = expected[1]["names"]
     minus, at, plus = (bodies_of(state, names) for state in as_list(got, "the states at t = -h, 0, +h", 3))
+    if _same_as(at, expected[1]["bodies"], tuple(_PATH_HINTS)):
+        return  # the reference's motion: right on its own merit, whatever the poses (judged elsewhere)
+    assert_visited(at, expected[1]["bodies"], names)
     for k, name in enumerate(names):
         A = assert_rotation(at[k].get("A_IB"), f"A_IB of {name}")
 

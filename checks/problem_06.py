@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from checks._effects import assert_no_side_effects
 from checks._figures import add_frames, add_vectors
 from grader import strategies as st
 from grader.checking import (
@@ -12,6 +13,7 @@ from grader.checking import (
     STAGE_STRUCTURE,
     STAGE_VALUES,
     STRUCTURE,
+    CheckFailure,
     Mistake,
     as_array,
     assert_close,
@@ -64,8 +66,25 @@ def _cardan_mistakes(ctx, args, expected):
         return ctx.reference("problem_06.elementary", k, x)
 
     a, b, g = args
+    angles = {3: g, 2: b, 1: a}  # the factors in the order of the product
+    factors = {k: R(k, x) for k, x in angles.items()}
+
+    def one_factor(axis, replaced):
+        """The product with the factor about ``axis`` replaced (one wrong elementary rotation inside cardan)."""
+        product = np.eye(3)
+        for k, factor in factors.items():
+            product = product @ (replaced if k == axis else factor)
+        return product
+
     return [
         Mistake("transpose", np.asarray(expected).T, TRANSPOSE_HINT),
+        *[Mistake("transpose", one_factor(axis, factors[axis].T),
+                  f"One factor of your product is transposed: the rotation about the {axis}-axis enters as A_CI "
+                  f"instead of A_IC (its -sin on the wrong side of the diagonal). Build cardan from R1, R2, R3.")
+          for axis in AXES],
+        *[Mistake("degrees", one_factor(axis, R(axis, float(np.deg2rad(angles[axis])))),
+                  f"The rotation about the {axis}-axis inside your product treats its angle as degrees: "
+                  + DEGREES_HINT) for axis in AXES],
         Mistake(
             "rotation_order",
             R(1, a) @ R(2, b) @ R(3, g),
@@ -121,29 +140,120 @@ def check_elementary_values(ctx):
         )
 
 
+# ------------------------------------------------------------------------------------ error carried forward
+
+#: the checks that grade the upstream results later checks are judged on
+ELEMENTARY = "p06.elementary_values"
+CARDAN = "p06.cardan_values"
+FRAMES = "p06.frames"
+KEYS = ("A_IC1", "A_IC2", "A_IC3")
+
+
+def _own_factors(got, expected):
+    """The student's own ``R1, R2, R3`` at the input (a dict), when all are there and one differs from the
+    reference's; else None (then there is nothing to carry forward)."""
+    own = {k: got.get(k) for k in ("R1", "R2", "R3")}
+    if any(v is None for v in own.values()):
+        return None
+    if all(close(own[k], expected[k], EXACT) for k in own):
+        return None
+    if any(_does_nothing(own[k], expected[k]) for k in own):
+        return None  # an answer that does nothing earns nothing downstream either
+    return {k: np.asarray(v, dtype=float) for k, v in own.items()}
+
+
+def _does_nothing(mine, reference):
+    """True when the student's rotation is the identity where the reference's turns: nothing to carry forward."""
+    return close(mine, np.eye(3), STRUCTURE) and not close(reference, np.eye(3), STRUCTURE)
+
+
+def _own_cardan_mistakes(own):
+    return [
+        Mistake("rotation_order", own["R1"] @ own["R2"] @ own["R3"],
+                "Your factors are multiplied in the wrong order: the Cardan sequence is yaw about 3 first, then "
+                "pitch about the NEW 2-axis, then roll about the NEWEST 1-axis: A_IC3 = R3(gamma) @ R2(beta) @ "
+                "R1(alpha)."),
+        Mistake("transpose", (own["R3"] @ own["R2"] @ own["R1"]).T, TRANSPOSE_HINT),
+    ]
+
+
+def _carried_structure(got, own):
+    """True when ``got`` is the product of the student's own factors, which differ from the reference's: its
+    structure is then judged with theirs."""
+    return own is not None and close(got, own["R3"] @ own["R2"] @ own["R1"], EXACT)
+
+
 # ------------------------------------------------------------------------------------ Cardan sequence
 
 
 @check(1, title="cardan(alpha, beta, gamma) is a proper rotation", stage=STAGE_STRUCTURE, group="cardan")
 def check_cardan_rotation(ctx):
-    A = assert_rotation(ctx.student("problem_06.cardan", 0.4, -0.3, 1.1), "cardan(0.4, -0.3, 1.1)")
-    assert_turns(A, "cardan(0.4, -0.3, 1.1)")
+    args = (0.4, -0.3, 1.1)
+    expected = ctx.reference("problem_06.cardan_with_factors", *args)
+    got = ctx.student("problem_06.cardan_with_factors", *args)
+    name = "cardan(0.4, -0.3, 1.1)"
+    A = as_array(got["cardan"], name, (3, 3))
+    try:
+        assert_rotation(A, name)
+        assert_turns(A, name)
+    except CheckFailure:
+        if not _carried_structure(A, _own_factors(got, expected)):
+            raise
+        ctx.carry_forward(ELEMENTARY, "R1, R2, R3")
 
 
 @check(2, title="cardan(alpha, beta, gamma) = R3(gamma) R2(beta) R1(alpha) on random angles",
        stage=STAGE_RANDOM, group="cardan")
 def check_cardan_values(ctx):
+    name = "cardan(alpha, beta, gamma)"
+
+    def compare(got, expected, args):
+        catalogue = _cardan_mistakes(ctx, args, expected["cardan"])  # the reference's calls, made eagerly
+        A = as_array(got["cardan"], name, (3, 3))
+        if close(A, expected["cardan"], EXACT):
+            return
+        own = _own_factors(got, expected)
+        if own is None:
+            assert_close(A, expected["cardan"], name, EXACT, catalogue)
+            return
+        product = own["R3"] @ own["R2"] @ own["R1"]
+        if close(A, product, EXACT):
+            ctx.carry_forward(ELEMENTARY, "R1, R2, R3")
+            return
+        assert_close(A, product, name, EXACT, _own_cardan_mistakes(own) + catalogue,
+                     context="(judged on your own R1, R2, R3: R3(gamma) @ R2(beta) @ R1(alpha))",
+                     note="Your R1, R2, R3 differ from the reference's (their own check says how); cardan is judged "
+                          "on them.")
+
     ctx.compare_random(
-        "problem_06.cardan",
+        "problem_06.cardan_with_factors",
         st.tuples(ANGLES, ANGLES, ANGLES),
-        name="cardan(alpha, beta, gamma)",
+        name=name,
         tol=EXACT,
-        mistakes=lambda args, expected: _cardan_mistakes(ctx, args, expected),
+        compare=compare,
         describe=lambda args: "cardan(alpha={!r}, beta={!r}, gamma={!r})".format(*args),
     )
 
 
 # ------------------------------------------------------------------------------------ the sheet's numbers
+
+
+def _own_frames(got, expected):
+    """The frames the student's own upstream functions give at the sheet's angles, each with the check that
+    grades them: ``[(check id, what, {key: A})]``, only those that differ from the reference's frames."""
+    candidates = []
+    own = _own_factors(got, expected)
+    if own is not None:
+        A1 = own["R3"]
+        candidates.append((ELEMENTARY, "R1, R2, R3", {"A_IC1": A1, "A_IC2": A1 @ own["R2"],
+                                                     "A_IC3": A1 @ own["R2"] @ own["R1"]}))
+    cardan = got.get("cardan") or [None] * 3
+    if all(c is not None for c in cardan):
+        partial = dict(zip(KEYS, (np.asarray(c, dtype=float) for c in cardan)))
+        if not all(close(partial[k], expected["frames"][k], EXACT) for k in KEYS) and not any(
+                _does_nothing(partial[k], expected["frames"][k]) for k in KEYS):
+            candidates.append((CARDAN, "cardan", partial))
+    return candidates
 
 
 @check(1, title="the frames C1, C2, C3 of the sheet (gamma = 30, beta = 45, alpha = 60 deg)",
@@ -152,20 +262,30 @@ def check_frames(ctx):
     def R(k, x):
         return ctx.reference("problem_06.elementary", k, x)
 
-    expected = ctx.reference("problem_06.frames")
     g, b, a = (float(x) for x in np.deg2rad(SHEET_ANGLES_DEG))
+    reference = ctx.reference("problem_06.frames_with_factors", a, b, g)
+    expected = reference["frames"]
     wrong_order = {"A_IC1": R(3, g), "A_IC2": R(2, b) @ R(3, g), "A_IC3": R(1, a) @ R(2, b) @ R(3, g)}
     degrees = {"A_IC1": R(3, SHEET_ANGLES_DEG[0])}
     degrees["A_IC2"] = degrees["A_IC1"] @ R(2, SHEET_ANGLES_DEG[1])
     degrees["A_IC3"] = degrees["A_IC2"] @ R(1, SHEET_ANGLES_DEG[2])
-    got = ctx.student("problem_06.frames")
-    add_frames(ctx, "Problem 6: the frames C1, C2, C3 in I", got, expected, ("A_IC1", "A_IC2", "A_IC3"))
+    answer = ctx.student("problem_06.frames_with_factors", a, b, g)
+    got = answer["frames"]
+    add_frames(ctx, "Problem 6: the frames C1, C2, C3 in I", got, expected, KEYS)
     if not isinstance(got, dict):
         fail(f"frames() must return a dict with keys A_IC1, A_IC2, A_IC3, got {type(got).__name__}.")
-    for key in ("A_IC1", "A_IC2", "A_IC3"):
+    for key in KEYS:
         if key not in got:
             fail(f"frames() has no entry {key!r} (keys: {sorted(got)}).")
-        A = assert_rotation(got[key], key)
+    frames = {key: as_array(got[key], key, (3, 3)) for key in KEYS}
+    if all(close(frames[key], expected[key], EXACT) for key in KEYS):
+        return
+    for upstream, what, own in _own_frames(answer, reference):
+        if all(close(frames[key], own[key], EXACT) for key in KEYS):
+            ctx.carry_forward(upstream, what)
+            return
+    for key in KEYS:
+        A = assert_rotation(frames[key], key)
         assert_close(A, expected[key], key, EXACT, [
             Mistake("transpose", np.asarray(expected[key]).T, TRANSPOSE_HINT),
             Mistake("rotation_order", wrong_order[key],
@@ -175,24 +295,82 @@ def check_frames(ctx):
         ])
 
 
-@check(2, title="the coordinates of V in I, C1, C2, C3 match the sheet", stage=STAGE_VALUES, group="sheet")
-def check_vectors(ctx):
-    A = ctx.reference("problem_06.frames")
-    v = np.ones(3)
-    mistakes = {
+TYPED_HINT = (
+    "These are the sheet's printed numbers (four decimals), not computed ones: compute the coordinates from your "
+    "frames (I_v = A_IC3 @ C3_v, Ck_v = A_ICk.T @ I_v); they are compared at full precision."
+)
+
+
+def _vector_mistakes(A, v, key):
+    """The known mistakes of the coordinates ``key`` of V, with the frames ``A`` (the reference's or the
+    student's own)."""
+    I_v = A["A_IC3"] @ v
+    return {
         "I_v": [Mistake("transpose", A["A_IC3"].T @ v,
                         "You used A_C3I instead of A_IC3: I_v = A_IC3 @ C3_v maps C3-coordinates to I.")],
-        "C1_v": [Mistake("transpose", A["A_IC1"] @ (A["A_IC3"] @ v),
+        "C1_v": [Mistake("transpose", A["A_IC1"] @ I_v,
                          "C1_v = A_C1I @ I_v with A_C1I = A_IC1.T: did you multiply by A_IC1 instead?")],
-        "C2_v": [Mistake("transpose", A["A_IC2"] @ (A["A_IC3"] @ v),
+        "C2_v": [Mistake("transpose", A["A_IC2"] @ I_v,
                          "C2_v = A_C2I @ I_v with A_C2I = A_IC2.T: did you multiply by A_IC2 instead?")],
         "C3_v": [],
-    }
-    got = ctx.student("problem_06.vectors")
-    add_vectors(ctx, "Problem 6: V from its coordinates in I, C1, C2, C3 (mapped to I)", got, A, SHEET_VECTORS["I_v"])
+    }[key]
+
+
+def _vectors_of(A, v):
+    I_v = A["A_IC3"] @ v
+    return {"I_v": I_v, "C1_v": A["A_IC1"].T @ I_v, "C2_v": A["A_IC2"].T @ I_v, "C3_v": v}
+
+
+@check(1, title="the coordinates of V in I, C1, C2, C3 (the sheet's values, at full precision)",
+       stage=STAGE_VALUES, group="sheet")
+def check_vectors(ctx):
+    reference = ctx.reference("problem_06.vectors_with_frames")
+    expected = {key: np.asarray(reference["vectors"][key], dtype=float) for key in SHEET_VECTORS}
+    frames = {key: np.asarray(reference["frames"][key], dtype=float) for key in KEYS}
+    v = np.ones(3)
+    answer = ctx.student("problem_06.vectors_with_frames")
+    got = answer["vectors"]
+    add_vectors(ctx, "Problem 6: V from its coordinates in I, C1, C2, C3 (mapped to I)", got, frames,
+                SHEET_VECTORS["I_v"])
     if not isinstance(got, dict):
         fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}, got {type(got).__name__}.")
-    for key, target in SHEET_VECTORS.items():
+    for key in SHEET_VECTORS:
         if key not in got:
             fail(f"vectors() has no entry {key!r} (keys: {sorted(got)}).")
-        assert_close(got[key], target, key, SHEET, mistakes[key], context="(the sheet's value)")
+    vectors = {key: as_array(got[key], key, (3,)) for key in SHEET_VECTORS}
+    if all(close(vectors[key], expected[key], EXACT) for key in SHEET_VECTORS):
+        return
+    own_frames = answer["frames"]
+    if own_frames is not None and all(own_frames[key] is not None for key in KEYS):
+        own_frames = {key: np.asarray(own_frames[key], dtype=float) for key in KEYS}
+        if not all(close(own_frames[key], frames[key], EXACT) for key in KEYS) and not any(
+                _does_nothing(own_frames[key], frames[key]) for key in KEYS):
+            own = _vectors_of(own_frames, v)
+            if all(close(vectors[key], own[key], EXACT) for key in SHEET_VECTORS):
+                ctx.carry_forward(FRAMES, "frames A_IC1, A_IC2, A_IC3")
+                return
+            for key in SHEET_VECTORS:
+                assert_close(vectors[key], own[key], key, EXACT, _vector_mistakes(own_frames, v, key),
+                             context="(judged on your own frames)",
+                             note="Your frames differ from the reference's (their own check says how); the "
+                                  "coordinates are judged on them.")
+    for key, target in SHEET_VECTORS.items():
+        typed = [Mistake("typed_numbers", target, TYPED_HINT)] if key != "C3_v" else []
+        assert_close(vectors[key], expected[key], key, EXACT, typed + _vector_mistakes(frames, v, key),
+                     context="(the sheet's value at full precision)")
+
+
+# ------------------------------------------------------------------------------------ side effects
+
+
+#: side effects are credited after the values (same group): a function that does nothing earns nothing for it
+STAGE_AFTER_VALUES = STAGE_RANDOM + 1
+
+
+@check(1, title="R1, R2, R3 and cardan keep no state: called again with the same angles, they give the same matrix",
+       stage=STAGE_AFTER_VALUES, group="elementary")
+def check_side_effects(ctx):
+    for axis in AXES:
+        assert_no_side_effects(ctx, "rotations", f"R{axis}", [0.3], [-1.1], ("angle",))
+    assert_no_side_effects(ctx, "rotations", "cardan", [0.4, -0.3, 1.1], [1.0, 0.2, -0.5],
+                           ("alpha", "beta", "gamma"))

@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from checks._effects import assert_no_side_effects
 from checks._figures import add_frames
 from checks._rigid import ROTATIONS, skew
 from grader import strategies as st
@@ -32,6 +33,9 @@ START_DEG = (60.0, 45.0, 30.0)
 def _rotation_and_rate(A, w):
     return A, skew(w) @ A  # dA_IC/dt for the inertial angular velocity w
 
+
+#: a rotation without special structure, for the side-effect check (a quaternion's rotation)
+_SIDE_A = np.array([[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]])
 
 MOTIONS = st.tuples(ROTATIONS, VECTORS).map(lambda t: _rotation_and_rate(*t))
 
@@ -152,3 +156,19 @@ def check_animation(ctx):
     add_frames(ctx, "Problem 7: the frame C3 at the end of the animation", got, expected, ("A_IC3",), ["C3 at t = pi"])
     A = assert_rotation(got["A_IC3"], "A_IC3")
     assert_close(A, expected["A_IC3"], "A_IC3 at t = pi", EXACT, mistakes)
+
+
+# ------------------------------------------------------------------------------------ side effects
+
+
+@check(1, title="skew, unskew, omega_body and omega_inertial leave their arguments unchanged, return a new array on "
+       "every call and keep no state", stage=STAGE_RANDOM + 1, group="skew")
+def check_side_effects(ctx):
+    A, dA = _rotation_and_rate(_SIDE_A, np.array([0.3, -1.2, 0.8]))
+    B, dB = _rotation_and_rate(_SIDE_A.T, np.array([-0.7, 0.1, 2.0]))
+    assert_no_side_effects(ctx, "rotations", "skew", [np.array([0.5, -1.0, 2.0])], [np.array([1.5, 0.2, -0.3])],
+                           ("w",))
+    assert_no_side_effects(ctx, "rotations", "unskew", [skew(np.array([0.5, -1.0, 2.0]))],
+                           [skew(np.array([1.5, 0.2, -0.3]))], ("W",))
+    for function in ("omega_body", "omega_inertial"):
+        assert_no_side_effects(ctx, "rotations", function, [A, dA], [B, dB], ("A_IC", "dA_IC"))

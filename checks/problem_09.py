@@ -5,13 +5,17 @@ import numpy as np
 from checks._figures import add_vectors
 from checks._rigid import ROTATIONS
 from grader import strategies as st
-from grader.checking import EXACT, SHEET, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
+from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, as_array, assert_close, check, close, fail
 
 TITLE = "A better coordinate-system class (relative transformations)"
 
 CHAINS = st.lists(ROTATIONS, min_size=2, max_size=4).map(lambda rs: (rs,))
 SHEET_VECTORS = {"I_v": (1.6319, 0.5195, 0.2588), "C1_v": (1.6730, -0.3660, 0.2588),
                  "C2_v": (1.0, -0.3660, 1.3660), "C3_v": (1.0, 1.0, 1.0)}
+
+
+#: the check that grades the chain the sheet's vectors are judged on
+CHAIN = "p09.chain"
 
 
 def _absolute(relatives):
@@ -83,15 +87,36 @@ def check_set_transform(ctx):
                        name="set_transform", tol=EXACT, compare=compare, examples=10)
 
 
-@check(1, title="the relative chain I → C1 → C2 → C3 reproduces problem 6's vectors", stage=STAGE_VALUES,
-       group="sheet")
+TYPED_HINT = (
+    "These are the sheet's printed numbers (four decimals), not computed ones: compute them with get_transform "
+    "over the chain; they are compared at full precision."
+)
+
+
+@check(1, title="the relative chain I → C1 → C2 → C3 reproduces problem 6's vectors (at full precision)",
+       stage=STAGE_VALUES, group="sheet")
 def check_vectors(ctx):
-    got = ctx.student("problem_09.vectors")
+    reference = ctx.reference("problem_09.vectors_with_chain")
+    answer = ctx.student("problem_09.vectors_with_chain")
+    got = answer["vectors"]
     add_vectors(ctx, "Problem 9: V from its coordinates in I, C1, C2, C3 (mapped to I by problem 6's frames)", got,
                 ctx.reference("problem_06.frames"), SHEET_VECTORS["I_v"])
     if not isinstance(got, dict):
         fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}.")
-    for key, target in SHEET_VECTORS.items():
+    for key in SHEET_VECTORS:
         if key not in got:
             fail(f"vectors() has no entry {key!r}.")
-        assert_close(got[key], target, key, SHEET, context="(the sheet's value)")
+    vectors = {key: as_array(got[key], key, (3,)) for key in SHEET_VECTORS}
+    expected = {key: np.asarray(reference["vectors"][key], dtype=float) for key in SHEET_VECTORS}
+    if all(close(vectors[key], expected[key], EXACT) for key in SHEET_VECTORS):
+        return
+    chain = answer["chain"]
+    if chain is not None and not all(close(a, b, EXACT) for a, b in zip(chain, reference["chain"])):
+        v = np.ones(3)
+        own = dict(zip(SHEET_VECTORS, (np.asarray(T, dtype=float) @ v for T in chain)))
+        if all(close(vectors[key], own[key], EXACT) for key in SHEET_VECTORS):
+            ctx.carry_forward(CHAIN, "frames of build_chain()")
+            return
+    for key, target in SHEET_VECTORS.items():
+        typed = [Mistake("typed_numbers", target, TYPED_HINT)] if key != "C3_v" else []
+        assert_close(vectors[key], expected[key], key, EXACT, typed, context="(the sheet's value at full precision)")

@@ -148,15 +148,31 @@ def _point_mistakes(method, state, q):
         return [Mistake("missing_omega_x_r", A @ v, "The velocity of Q adds omega x r_BQ to the velocity of B: "
                         "I_v_Q = A_IB @ (B_v_B + B_omega_B x B_r_BQ)."),
                 Mistake("sign_flip", A @ (v - Om @ q), "The cross product is omega x r_BQ, not r_BQ x omega."),
-                Mistake("body_coordinates", v + Om @ q, body)]
+                Mistake("body_coordinates", v + Om @ q, body),
+                Mistake("offset_not_rotated", A @ v + Om @ q, "omega x B_r_BQ is in body coordinates as well: "
+                        "I_v_Q = A_IB @ (B_v_B + B_omega_B x B_r_BQ), the whole sum is rotated into I.")]
     return [Mistake("missing_centripetal", A @ (a + Omd @ q), "The centripetal term is missing: I_a_Q = A_IB @ "
                     "(B_a_B + omegaDot x r_BQ + omega x (omega x r_BQ)); skew(omega) @ skew(omega) @ r_BQ."),
             Mistake("missing_tangential", A @ (a + Om @ Om @ q), "The tangential term omegaDot x r_BQ is missing."),
-            Mistake("body_coordinates", a + (Omd + Om @ Om) @ q, body)]
+            Mistake("body_coordinates", a + (Omd + Om @ Om) @ q, body),
+            Mistake("offset_not_rotated", A @ a + (Omd + Om @ Om) @ q, "The terms of the offset B_r_BQ are in body "
+                    "coordinates as well: I_a_Q = A_IB @ (B_a_B + (skew(omegaDot) + skew(omega)^2) @ B_r_BQ), the "
+                    "whole sum is rotated into I.")]
+
+
+#: a state without special structure (turned, moving, every quantity non-zero) on which a mistake is named first:
+#: on a shrunk random input several mistakes give the same value
+POINT_STATE = {**GENERIC, "A_IB": np.array([[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]])}
+POINT_OFFSET = np.array([0.3, -0.7, 0.5])
 
 
 def _point_check(ctx, method):
-    ctx.student("problem_12.point", GENERIC, method, [0.1, 0.2, 0.3])
+    args = (POINT_STATE, method, POINT_OFFSET)
+    expected = ctx.reference("problem_12.point", *args)
+    assert_close(ctx.student("problem_12.point", *args), expected, f"{method}(B_r_BQ)", EXACT,
+                 _point_mistakes(method, POINT_STATE, POINT_OFFSET),
+                 context=f"on a fixed turned and moving body (A_IB = {compact(POINT_STATE['A_IB'])}, "
+                         f"B_r_BQ = {compact(POINT_OFFSET)})")
     ctx.compare_random(
         "problem_12.point", st.tuples(STATES, st.just(method), POINTS), name=f"{method}(B_r_BQ)", tol=EXACT,
         mistakes=lambda args, expected: _point_mistakes(method, args[0], args[2]), examples=15,

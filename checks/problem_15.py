@@ -69,11 +69,21 @@ DYNAMIC_MISTAKES = {
         "Dividing by the diagonal of B_I_B solves Euler's equation only when B_I_B is diagonal (principal axes): "
         "in general solve the linear system B_I_B @ omegaDot = -omega x (B_I_B @ omega)."
     ),
+    "euler_component_form": (
+        "Euler's equations in components (I1 omegaDot1 = (I2 - I3) omega2 omega3, ...) hold only in principal axes, "
+        "where B_I_B is diagonal; here B_I_B is a full matrix: solve B_I_B @ omegaDot = -omega x (B_I_B @ omega)."
+    ),
     "acceleration_not_reset": (
         "B_a_B must be set to zero: no force acts, so the absolute acceleration of the centre of gravity vanishes "
         "(the term -omega x v of the velocity update is in integration_step)."
     ),
 }
+
+
+def _euler_components(moments, w):
+    """Euler's equations in components with the diagonal entries ``moments`` (right for a diagonal inertia only)."""
+    I1, I2, I3 = moments
+    return np.array([(I2 - I3) * w[1] * w[2] / I1, (I3 - I1) * w[2] * w[0] / I2, (I1 - I2) * w[0] * w[1] / I3])
 
 
 def natural_dynamics(state, mistake=None):
@@ -85,6 +95,7 @@ def natural_dynamics(state, mistake=None):
         "gyroscopic_sign": lambda: np.linalg.solve(I, -gyroscopic),
         "multiplied_not_solved": lambda: I @ gyroscopic,
         "principal_axes_only": lambda: gyroscopic / np.diag(I),
+        "euler_component_form": lambda: _euler_components(np.diag(I), w),
     }.get(mistake, lambda: np.linalg.solve(I, gyroscopic))()
     a = np.asarray(state["B_a_B"], dtype=float) if mistake == "acceleration_not_reset" else np.zeros(3)
     return a, omega_dot
@@ -121,6 +132,12 @@ def inertias(draw):
     return A @ np.diag([y2 + z2, x2 + z2, x2 + y2]) @ A.T
 
 
+#: a body without special structure: a full (rotated) inertia, omega along no principal axis, every entry non-zero
+_A = np.array([[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]])
+GENERIC_STATE = {"m": 1.3, "B_I_B": _A @ np.diag([1.2, 2.0, 2.6]) @ _A.T, "A_IB": _A.T,
+                 "B_r_IB": np.array([0.3, -0.2, 0.5]), "B_v_B": np.array([-0.4, 0.7, 0.2]),
+                 "B_a_B": np.array([0.6, -0.3, 0.9]), "B_omega_B": np.array([0.8, -1.1, 0.5])}
+
 STATES = st.fixed_dictionaries({
     "m": st.floats(0.5, 2.0, **FINITE),
     "B_I_B": inertias(),
@@ -141,16 +158,29 @@ def check_natural_dynamics(ctx):
     ctx.student("problem_15.accelerations", case_state(ctx, 3))
 
     def compare(got, expected, args):
-        state = args[0]
-        if not isinstance(got, dict):
-            fail(f"the probe expected the attributes B_a_B and B_omegaDot_B, got {str(got)[:200]}")
-        for key, index in (("B_a_B", 0), ("B_omegaDot_B", 1)):
-            mistakes = [Mistake(name, natural_dynamics(state, name)[index], hint)
-                        for name, hint in DYNAMIC_MISTAKES.items()]
-            assert_close(got.get(key), expected[key], f"{key} after compute_natural_dynamics()", EXACT, mistakes)
+        _compare_accelerations(got, expected, args[0])
 
+    # first a state without special structure (a full inertia, omega off every axis), where each mistake of the
+    # catalogue has its own value: on a shrunk random input several coincide
+    state = GENERIC_STATE
+    try:
+        compare(ctx.student("problem_15.accelerations", state), ctx.reference("problem_15.accelerations", state),
+                (state,))
+    except CheckFailure as exc:
+        first, _, rest = exc.message.partition("\n")
+        raise CheckFailure(f"{first}\non the fixed state {describe_state(state)}\n{rest}", exc.hint,
+                           exc.diagnosis) from None
     ctx.compare_random("problem_15.accelerations", st.tuples(STATES), name="the accelerations", tol=EXACT,
                        compare=compare, examples=15, describe=lambda args: describe_state(args[0]))
+
+
+def _compare_accelerations(got, expected, state):
+    if not isinstance(got, dict):
+        fail(f"the probe expected the attributes B_a_B and B_omegaDot_B, got {str(got)[:200]}")
+    for key, index in (("B_a_B", 0), ("B_omegaDot_B", 1)):
+        mistakes = [Mistake(name, natural_dynamics(state, name)[index], hint)
+                    for name, hint in DYNAMIC_MISTAKES.items()]
+        assert_close(got.get(key), expected[key], f"{key} after compute_natural_dynamics()", EXACT, mistakes)
 
 
 @check(1, title="angular_momentum() = B_I_B omega (body coordinates) on random states", stage=STAGE_RANDOM,
@@ -263,6 +293,14 @@ def check_random_runs(ctx):
         at = kinematic_mistakes_at(expected, state, dt, mistakes=STEP_MISTAKES, step=dynamic_step)
         assert_traces(got, expected, STATE, EXACT, at, dt=dt)
 
+    # first a run from a state without special structure, where each mistake has its own value
+    args = (GENERIC_STATE, 0.01, 5)
+    try:
+        compare(ctx.student("problem_15.simulate", *args), ctx.reference("problem_15.simulate", *args), args)
+    except CheckFailure as exc:
+        first, _, rest = exc.message.partition("\n")
+        raise CheckFailure(f"{first}\nfrom the fixed state {describe_state(GENERIC_STATE)}, dt = 0.01, 5 steps\n"
+                           f"{rest}", exc.hint, exc.diagnosis) from None
     ctx.compare_random(
         "problem_15.simulate", st.tuples(STATES, st.floats(1e-3, 0.05, **FINITE), st.integers(1, 20)),
         name="the state", tol=EXACT, compare=compare, examples=10,

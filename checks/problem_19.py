@@ -3,6 +3,7 @@
 
 import numpy as np
 
+from checks._effects import assert_no_side_effects
 from checks._rigid import FINITE, ROTATIONS, compact, vectors
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, check, fail
@@ -109,3 +110,21 @@ def check_answer(ctx):
         if abs(value - mistaken) <= INTEGER.atol:
             fail(message, f"{hint} (That gives {mistaken:g}.)", name)
     fail(message)
+
+
+# ------------------------------------------------------------------------------------ side effects
+
+#: a rotated, non-diagonal inertia and a second body for the side-effect check
+_SIDE_I = np.array([[2.0, -0.3, 0.1], [-0.3, 1.5, 0.2], [0.1, 0.2, 1.2]])
+
+
+@check(1, title="parallel_axis and composite_inertia leave their arguments unchanged, return a new array on every "
+       "call and keep no state", stage=STAGE_RANDOM + 1, group="parallel_axis")
+def check_side_effects(ctx):
+    assert_no_side_effects(ctx, "inertia", "parallel_axis", [_SIDE_I, 2.0, np.array([0.3, -0.5, 1.0])],
+                           [0.5 * _SIDE_I, 1.0, np.array([-1.0, 0.2, 0.4])], ("I_G", "m", "r"))
+    assert_no_side_effects(ctx, "inertia", "composite_inertia",
+                           [np.array([1.0, 2.0]), np.array([[0.3, -0.5, 1.0], [-1.0, 0.2, 0.4]]),
+                            np.array([_SIDE_I, 0.5 * _SIDE_I])],
+                           [np.array([3.0]), np.array([[1.0, 1.0, 0.0]]), np.array([_SIDE_I])],
+                           ("masses", "centres", "inertias"))

@@ -77,7 +77,8 @@ def check_accepts_valid(ctx):
     rng = np.random.default_rng(ctx.seed)
     matrices = [(f"a random inertia matrix (principal moments {compact(m)})", _rotated(m, rng.integers(2**31)))
                 for m in (np.array([y + z, x + z, x + y]) for x, y, z in rng.uniform(0.2, 2.0, (4, 3)))]
-    matrices += [("the sheet's option 1", _sheet(ctx, 1)), ("a flat plate diag(1, 1, 2)", np.diag([1.0, 1.0, 2.0]))]
+    matrices += [("the sheet's option 1", _sheet(ctx, 1)), ("a flat plate diag(1, 1, 2)", np.diag([1.0, 1.0, 2.0])),
+                 ("a rotated flat plate diag(1, 1.5, 2.5)", _rotated([1.0, 1.5, 2.5], 5))]
 
     def mistake(label):
         if "plate" in label:
@@ -103,11 +104,18 @@ def check_rejects_non_symmetric(ctx):
 @check(1, title="is_inertia_matrix rejects a matrix that is not positive definite (and otherwise fine)",
        stage=STAGE_STRUCTURE, group="positive_definite")
 def check_rejects_not_positive_definite(ctx):
-    matrices = [("diag(0, 2, 2)", np.diag([0.0, 2.0, 2.0])), ("diag(2, 0, 2)", np.diag([2.0, 0.0, 2.0]))]
+    matrices = [("diag(0, 2, 2)", np.diag([0.0, 2.0, 2.0])), ("diag(2, 0, 2)", np.diag([2.0, 0.0, 2.0])),
+                ("a rotated diag(0, 2, 2) whose diagonal entries are all positive", _rotated([0.0, 2.0, 2.0], 11))]
     hint = ("An inertia matrix is positive definite: every principal moment is > 0 (a zero moment needs all mass on "
             "one line). The triangle inequality still holds here, so it must be tested separately.")
-    _judge(ctx, matrices, False, "has a zero principal moment (symmetric, the triangle inequality holds)",
-           lambda label: (hint, "forgot_positive_definite"))
+
+    def mistake(label):
+        if label.startswith("diag"):
+            return hint, "forgot_positive_definite"
+        return ("Positive definiteness is a property of the PRINCIPAL moments (the eigenvalues): positive diagonal "
+                "entries of a rotated matrix do not make it positive definite.", "definite_on_diagonal")
+
+    _judge(ctx, matrices, False, "has a zero principal moment (symmetric, the triangle inequality holds)", mistake)
 
 
 @check(1, title="is_inertia_matrix rejects matrices whose principal moments violate the triangle inequality",

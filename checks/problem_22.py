@@ -7,13 +7,14 @@ import numpy as np
 from grader import strategies as st
 from grader.checking import (
     EXACT,
-    SHEET,
     STAGE_RANDOM,
     STAGE_VALUES,
     CheckFailure,
     Mistake,
+    as_array,
     assert_close,
     check,
+    close,
     fail,
 )
 
@@ -96,12 +97,15 @@ def check_sheet_target(ctx):
     case = ctx.reference("problem_22.sheet_case")
     q3, d, target = case["q"], case["d"], np.asarray(case["target"], dtype=float)
     mistakes = _end_mistakes(ctx, q3, d)
+    expected = ctx.reference("problem_22.loop", q3, d)
     got = ctx.student("problem_22.loop", q3, d)
-    arm = [*ctx.reference("problem_22.points", q3)[1:], ctx.reference("problem_22.loop", q3, d)]
+    arm = [*ctx.reference("problem_22.points", q3)[1:], expected]
     add_planar_arm(ctx, "Problem 22: the arm at q3 (reference) and your end effector", got, arm, end_only=True)
-    assert_close(got, target, f"end_effector_loop(q3, {d:g})", SHEET,
-                 mistakes + sign_flips(got, target, SHEET, SIGN_HINT),
-                 context="(the sheet's value)",
+    typed = Mistake("typed_numbers", target, "These are the sheet's printed numbers (four decimals), not computed "
+                    "ones: compute the pose from q3 and d; it is compared at full precision.")
+    assert_close(got, expected, f"end_effector_loop(q3, {d:g})", EXACT,
+                 [typed] + mistakes + sign_flips(got, expected, EXACT, SIGN_HINT),
+                 context="(the sheet's value at full precision)",
                  note="q3 has 12 entries: the sheet lost two of them (problem data).")
 
 
@@ -133,10 +137,43 @@ def check_points_values(ctx):
                        compare=compare, describe=_describe("point_k"))
 
 
+#: the check that grades the poses end_effector_recursive is judged on
+POINTS = "p22.points_values"
+
+
+def _with_final_link(pose, d):
+    """The end effector a distance ``d`` beyond the pose ``(x, y, g)`` along its orientation."""
+    x, y, g = np.asarray(pose, dtype=float)
+    return np.array([x, y, g]) + d * np.array([-np.sin(g), np.cos(g), 0.0])
+
+
 @check(1, title="end_effector_recursive(q, d) on random 2n-joint arms (n = 1..8)", stage=STAGE_RANDOM,
        group="recursive")
 def check_recursive_values(ctx):
-    _compare_end(ctx, "problem_22.recursive", "end_effector_recursive")
+    name = "end_effector_recursive(q, d)"
+
+    def compare(got, expected, args):
+        mistakes = _end_mistakes(ctx, *args)  # the reference's calls, made eagerly
+        end = as_array(got["end"], name, (3,))
+        if close(end, expected["end"], EXACT):
+            return
+        own = got["point"]
+        if own is None or close(own, expected["point"], EXACT):
+            assert_close(end, expected["end"], name, EXACT,
+                         mistakes + sign_flips(end, expected["end"], EXACT, SIGN_HINT))
+            return
+        own_end = _with_final_link(own, args[1])
+        if close(end, own_end, EXACT):
+            ctx.carry_forward(POINTS, "point_k")
+            return
+        assert_close(end, own_end, name, EXACT,
+                     [Mistake("no_final_link", np.asarray(own, dtype=float), FINAL_LINK_HINT)] + mistakes,
+                     context="(judged on your own point_k(q, n) and the final link)",
+                     note="Your point_k differs from the reference's (its own check says how); the end effector is "
+                          "judged on it.")
+
+    ctx.compare_random("problem_22.recursive_with_point", st.tuples(JOINT_VECTORS, LINKS), name=name, tol=EXACT,
+                       compare=compare, describe=_describe("end_effector_recursive"))
 
 
 def _nesting(ctx, call, q, d):

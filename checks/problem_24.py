@@ -3,6 +3,7 @@
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, STRUCTURE, assert_rotation, check
 
+from ._effects import assert_tree_no_side_effects
 from ._trees import (
     bodies_of,
     candidates,
@@ -57,6 +58,13 @@ def check_pendulum(ctx):
 def check_random_trees(ctx):
     compare_trees(ctx, "problem_24.tree_poses", KINDS, tree_comparison(ctx, motion=False), motion=False,
                   name="the bodies' poses")
+
+
+@check(1, title="forward_kinematics leaves q unchanged, and a tree used again gives what a fresh tree gives (no "
+       "state kept between calls)", stage=STAGE_RANDOM + 1, group="trees")
+def check_side_effects(ctx):
+    description, q = rich_case(KINDS, motion=False)
+    assert_tree_no_side_effects(ctx, description, (q,), (q[::-1] - 0.4,))
 
 
 # ------------------------------------------------------------------------------------------ the motion

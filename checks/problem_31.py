@@ -3,12 +3,14 @@
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, check
 
+from ._effects import assert_tree_no_side_effects
 from ._trees import (
     candidates,
     compare_jacobian_differences,
     compare_path_differences,
     compare_states,
     compare_trees,
+    rich_case,
     tree_comparison,
 )
 
@@ -16,6 +18,9 @@ TITLE = "Kinematics with Velocities, Accelerations, and Jacobians"
 
 #: rotational joints and the probe's test joint (relative translations exercise the Coriolis term)
 KINDS = ("rotational", "test")
+#: the positions and orientations are problem 24's work: the motion is judged on the student's own (error carried
+#: forward; the finite-difference checks judge it on them)
+POSES = ("p24.random_trees", "positions and orientations A_IB, B_r_IB (problem 24)")
 
 
 @check(2, title="the triple pendulum at the sheet's test case q = (pi/6, -pi/4, pi/3), qd = (1, 0, 0), qdd = "
@@ -26,7 +31,7 @@ def check_pendulum(ctx):
     mistakes = candidates(ctx, case["description"], *values)
     got = ctx.student("problem_31.pendulum", *values)
     expected = ctx.reference("problem_31.pendulum", *values)
-    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)")
+    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)", poses_from=(ctx, *POSES))
 
 
 @check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "
@@ -44,4 +49,11 @@ def check_path(ctx):
 @check(3, title="random trees: velocities, accelerations and Jacobians of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")
+
+
+@check(1, title="forward_kinematics with velocities leaves q, qd, qdd unchanged, and a tree used again gives what a "
+       "fresh tree gives (no state kept between calls)", stage=STAGE_RANDOM + 1, group="trees")
+def check_side_effects(ctx):
+    description, q, qd, qdd = rich_case(KINDS)
+    assert_tree_no_side_effects(ctx, description, (q, qd, qdd), (q - 0.4, -qd, 0.5 * qdd))

@@ -33,6 +33,9 @@ from .problem_25 import WALKER_MODELS
 TITLE = "Rolling Contact Joint (velocities, accelerations, Jacobians)"
 
 KINDS = ("rolling_contact", "rotational", "test")
+#: the positions and orientations are problem 25's work (and 24's): the motion is judged on the student's own (error
+#: carried forward; the finite-difference checks judge it on them)
+POSES = ("p25.rolling_trees", "positions and orientations A_IB, B_r_IB (problems 24 and 25)")
 NO_SLIP = Tol("rolling without slipping", 1e-9, 1e-9)
 VALUES = st.lists(st.floats(-2.0, 2.0, allow_nan=False), min_size=6, max_size=6).map(
     lambda v: (np.array(v[:2]), np.array(v[2:4]), np.array(v[4:])))
@@ -70,7 +73,7 @@ def check_sheet(ctx):
     drawing = configuration_figure("Problem 33: the walker at the test state", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test state)")
+    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test state)", poses_from=(ctx, *POSES))
 
 
 @check(1, title="the stance foot rolls without slipping: the foot's point on the ground is at rest and accelerates "
@@ -121,4 +124,4 @@ def check_path(ctx):
 @check(2, title="random trees with rolling contacts: velocities, accelerations and Jacobians of every body",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")
+    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")

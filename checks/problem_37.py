@@ -75,8 +75,9 @@ INTEGRATION_HINT = ("Your right-hand side robot_ode agrees with the reference at
                     "table (the arm has a fast mode of about 110 1/s under D = 50).")
 INITIAL_HINT = ("The simulation starts on the desired trajectory at rest: y0 = (q_des(0), qd_des(0)), the first row "
                 "of the table passed to simulate.")
-ODE_HINT = ("Your robot_ode differs from the reference's (see the check of robot_ode above); fix it first, the "
-            "simulation follows.")
+ODE_HINT = ("Your robot_ode differs from the reference's at three states of the reference's run (the check of "
+            "robot_ode above says why, or, where it was judged on your own M, f, g, the checks of M, f, g); fix it "
+            "first, the simulation follows.")
 
 
 # ------------------------------------------------------------------------------------------ physics
@@ -261,11 +262,29 @@ def _ode_cases(table, controller):
     return draw_case()
 
 
+#: the check that grades the robot's M, f, g that robot_ode is judged on
+ROBOT_MFG = "p37.robot_mfg"
+
+
+def _own_ode(controller, rows, t, y, mfg):
+    """``(qd, qdd)`` of the robot under ``controller`` with the given ``M, f, g`` (the student's own): the desired
+    state interpolated linearly in the table's rows, the sheet's controller, ``M qdd = f + g + tau``."""
+    M, f, g = (np.asarray(mfg[key], dtype=float) for key in ("M", "f", "g"))
+    q, qd = np.asarray(y[:3], dtype=float), np.asarray(y[3:], dtype=float)
+    times = np.asarray(rows["t"], dtype=float)
+    q_des, qd_des, qdd_des = (np.array([np.interp(t, times, column) for column in np.asarray(rows[key]).T])
+                              for key in ("q", "qd", "qdd"))
+    pd = _pd((M, f, g, q, qd, q_des, qd_des, qdd_des))
+    tau = {"pd": pd, "gravity_compensation": pd - g, "computed_torques": pd + M @ qdd_des - f - g}[controller]
+    return np.concatenate([qd, np.linalg.solve(M, f + g + tau)])
+
+
 @check(2, title="robot_ode(t, y, tree, trajectory, controller) = (qd, qdd) at random times and states, for each "
        "controller (the right-hand side of the simulations below)", stage=STAGE_STRUCTURE, group="runs")
 def check_robot_ode(ctx):
-    def compare(got, expected, args):
+    def compare(answer, reference, args):
         controller, rows, [(t, y)] = args
+        expected = [reference[0]["ode"]]
         times = rows["t"]
         nearest = float(times[np.argmin(np.abs(times - t))])
         previous = float(times[max(np.searchsorted(times, t, side="right") - 1, 0)])
@@ -278,15 +297,45 @@ def check_robot_ode(ctx):
                          "you took the row before t."),
                  Mistake("state_order", np.concatenate([expected[0][3:], expected[0][:3]]),
                          "dy/dt = (qd, qdd) for y = (q, qd): the velocities come first.")]
-        assert_close(got[0] if isinstance(got, list) and got else got, expected[0],
-                     f"robot_ode at t = {t:.6g} with the {NAMES[controller]} controller", EXACT, found)
+        name = f"robot_ode at t = {t:.6g} with the {NAMES[controller]} controller"
+        got = [_ode_of(answer)]
+        if close(got[0], expected[0], EXACT):
+            return
+        own = _own_mfg(answer, reference)
+        if own is None:
+            assert_close(got[0], expected[0], name, EXACT, found)
+            return
+        own_ode = _own_ode(controller, rows, t, y, own)
+        if close(got[0], own_ode, EXACT):
+            ctx.carry_forward(ROBOT_MFG, "M, f, g")
+            return
+        assert_close(got[0], own_ode, name, EXACT, found, context="(judged on your own M, f, g of the robot)",
+                     note="Your M, f, g differ from the reference's (their own check says how); robot_ode is judged "
+                          "on them.")
 
     table = _table(ctx)
     for controller in CONTROLLERS:  # each controller on inputs of its own
-        ctx.compare_random("problem_37.robot_ode", _ode_cases(table, controller), name="robot_ode", tol=EXACT,
-                           examples=4, compare=compare, describe=lambda args: f"controller {args[0]!r}, t = "
-                           f"{args[2][0][0]:.6g}, y = {np.round(args[2][0][1], 4).tolist()} (the desired trajectory "
-                           "of problem 32)")
+        ctx.compare_random("problem_37.robot_ode_with_mfg", _ode_cases(table, controller), name="robot_ode",
+                           tol=EXACT, examples=4, compare=compare, describe=lambda args: f"controller {args[0]!r}, "
+                           f"t = {args[2][0][0]:.6g}, y = {np.round(args[2][0][1], 4).tolist()} (the desired "
+                           "trajectory of problem 32)")
+
+
+def _ode_of(answer):
+    """The student's ``robot_ode`` value of a ``robot_ode_with_mfg`` reply."""
+    if not isinstance(answer, list) or len(answer) != 1 or not isinstance(answer[0], dict):
+        fail(f"the probe could not read robot_ode back, got {str(answer)[:200]}")
+    return answer[0].get("ode")
+
+
+def _own_mfg(answer, reference):
+    """The student's own M, f, g at the case, when they are there and differ from the reference's; else None."""
+    own, ours = answer[0].get("mfg"), reference[0]["mfg"]
+    if not isinstance(own, dict) or any(own.get(key) is None for key in ("M", "f", "g")):
+        return None
+    if all(close(own[key], ours[key], EXACT) for key in ("M", "f", "g")):
+        return None
+    return own
 
 
 # ------------------------------------------------------------------------------------------ simulations
@@ -316,6 +365,35 @@ def _simulation(ctx, controller):
             extra=[(f"desired {axis}", table["t"][desired], table[key][desired][:, k])
                    for k, axis in enumerate("xyz")]))
     return table, got, expected, probes, ode, n
+
+
+def _own_model(ctx, controller, table, probes):
+    """True when the student's M, f, g of the robot differ from the reference's at the states ``probes`` of the
+    reference's run while their robot_ode is right given them: their run is then judged on their own model."""
+    reference = ctx.reference("problem_37.robot_ode_with_mfg", controller, table, probes)
+    answer = ctx.student("problem_37.robot_ode_with_mfg", controller, table, probes)
+    if not isinstance(answer, list) or len(answer) != len(probes) or not all(isinstance(a, dict) for a in answer):
+        return False
+    if not all(_own_mfg([mine], [ours]) is not None for mine, ours in zip(answer, reference)):
+        return False
+    return all(close(mine.get("ode"), _own_ode(controller, table, t, y, mine["mfg"]), EXACT)
+               for mine, (t, y) in zip(answer, probes))
+
+
+def _judged_on_own_model(ctx, controller, table, got, expected, probes):
+    """The run judged on the student's own model (error carried forward): it follows the run of their own
+    robot_ode, integrated by the grader's probe, within the bands; returns False when the model is the reference's
+    (the run is then judged as usual)."""
+    if not _own_model(ctx, controller, table, probes):
+        return False
+    own = ctx.student("problem_37.own_run", controller, table, T_RUN[controller], timeout=SIMULATION_TIMEOUT)
+    for key in ("t", "q", "qd"):
+        run_array(own, key, np.shape(expected[key]), "the run of your own robot_ode")
+    assert_run(got, own, ("q", "qd"), BAND, f"the {NAMES[controller]} run",
+               note="Your M, f, g differ from the reference's (their own check says how): the run is judged on "
+                    "them, against your own robot_ode integrated by the grader (solve_ivp, rtol 1e-6).")
+    ctx.carry_forward(ROBOT_MFG, "M, f, g")
+    return True
 
 
 def _diagnosis(ctx, controller, got, expected, probes, ode):
@@ -361,7 +439,8 @@ def check_computed_torques_run(ctx):
                               f"reference's.")
         _follow_reference(got, expected, controller)
 
-    _diagnosed(ctx, controller, got, expected, probes, ode, tracks)
+    if not _judged_on_own_model(ctx, controller, table, got, expected, probes):
+        _diagnosed(ctx, controller, got, expected, probes, ode, tracks)
 
 
 @check(2, title="gravity compensation: the arm stays at rest for the first 0.25 s (within 1e-3 rad), and the run "
@@ -381,7 +460,8 @@ def check_gravity_compensation_run(ctx):
                          note="Gravity compensation cancels g exactly: with tau = -g(q) + PD and no error, qdd = 0.")
         _follow_reference(got, expected, controller)
 
-    _diagnosed(ctx, controller, got, expected, probes, ode, holds)
+    if not _judged_on_own_model(ctx, controller, table, got, expected, probes):
+        _diagnosed(ctx, controller, got, expected, probes, ode, holds)
 
 
 @check(2, title="PD alone: the end effector sags at least 0.05 m below the path by 0.25 s, and the run follows the "
@@ -401,4 +481,5 @@ def check_pd_run(ctx):
                  "torques act only once an error has built up, so the arm sags first.", "no_sag")
         _follow_reference(got, expected, controller)
 
-    _diagnosed(ctx, controller, got, expected, probes, ode, sags)
+    if not _judged_on_own_model(ctx, controller, table, got, expected, probes):
+        _diagnosed(ctx, controller, got, expected, probes, ode, sags)

@@ -35,6 +35,7 @@ class Context:
         self.last_seed: int | None = None
         self.check_id: str | None = None
         self._sites = 0
+        self.carried: list[tuple[str, str]] = []
 
     def begin(self, check_id: str) -> None:
         """Start a check: its figures, its seed and the numbering of its draw sites begin afresh."""
@@ -42,6 +43,7 @@ class Context:
         self.figures = []
         self.last_seed = None
         self._sites = 0
+        self.carried = []
 
     def _site(self) -> str:
         """The name of the next draw site of the running check (``"p06.cardan_values#0"``, ``#1``, ...)."""
@@ -83,6 +85,14 @@ class Context:
         Live it is drawn from the run's seed; in the kit it is the draw recorded for this site."""
         self.last_seed = self.seed
         return self.oracle.draw(self._site(), make, self.seed, check=self.check_id)
+
+    def carry_forward(self, upstream: str, what: str) -> None:
+        """Record that the running check was judged on the student's own ``what`` (e.g. "R1, R2, R3"), which
+        differ from the reference's and are graded by the check ``upstream`` (a check id such as
+        ``"p06.elementary_values"``): error carried forward.  When the check passes, the runner names the mistake
+        once, at the failing check that finds it, and the passing check gets full credit with a pointer there."""
+        if (upstream, what) not in self.carried:
+            self.carried.append((upstream, what))
 
     # -------------------------------------------------------------- answers.toml
 

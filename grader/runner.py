@@ -10,7 +10,7 @@ import importlib
 import pkgutil
 import random
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from pathlib import Path
 
@@ -22,7 +22,7 @@ from .loader import cleanup, materialize, problem_notes, read_answers
 from .results import CheckResult, ManualItem, ProblemReport, Status
 from .sandbox import Child, Limits, SandboxMode, sandbox_mode
 
-__all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission"]
+__all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission", "carry_forward"]
 
 
 @dataclass(frozen=True)
@@ -169,25 +169,105 @@ def _not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
 
 def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     results = []
-    blocked: dict[str, tuple[int, str, bool]] = {}  # group → (stage, title, whether the grader was at fault)
+    blocked: dict[str, tuple[int, str, str, bool]] = {}  # group → (stage, title, check id, grader at fault)
+    blockers: dict[str, str] = {}  # a skipped check -> the failed check that blocked it
+    carried: dict[str, list[tuple[str, str]]] = {}  # a passed check -> its (upstream check, what) judged on
     for spec in checks_of(module):
-        if not ctx.oracle.runs(spec, f"p{problem:02d}.{spec.name}"):
+        check_id = f"p{problem:02d}.{spec.name}"
+        if not ctx.oracle.runs(spec, check_id):
             results.append(_not_run(spec, problem, Status.DEFERRED, DEFERRED_MESSAGE))
             continue
         block = blocked.get(spec.group)
         if block is not None and spec.stage > block[0]:
-            if block[2]:  # the earlier check is the grader's fault: so is this one's not running
+            if block[3]:  # the earlier check is the grader's fault: so is this one's not running
                 results.append(_not_run(spec, problem, Status.GRADER_ERROR, "internal grader error (not your "
                                         f"fault): not run, the earlier check could not run ({block[1]})"))
             else:
                 results.append(_not_run(spec, problem, Status.SKIPPED,
                                         f"not run: an earlier check failed first ({block[1]})"))
+                blockers[check_id] = block[2]
             continue
         result = _run_check(spec, ctx, problem)
         results.append(result)
+        if result.passed and ctx.carried:
+            carried[check_id] = list(ctx.carried)
         if not result.passed and (block is None or spec.stage < block[0]):
-            blocked[spec.group] = (spec.stage, spec.title, result.status is Status.GRADER_ERROR)
-    return results
+            blocked[spec.group] = (spec.stage, spec.title, check_id, result.status is Status.GRADER_ERROR)
+    return carry_forward(results, carried, blockers)
+
+
+def carry_forward(results: list[CheckResult], carried: dict, blockers: dict) -> list[CheckResult]:
+    """Error carried forward: a check that passed on the student's own upstream results (``carried``: check id
+    -> ``[(upstream check id, what)]``) keeps its full credit and points at the failed check that finds the
+    upstream mistake (its *root*: the upstream check itself, the check that blocked it when it was skipped, or
+    the root of the upstream check when that one was carried forward too).  The root names the mistake once and
+    lists the checks judged on it."""
+    by_id = {r.check_id: r for r in results}
+
+    def root_of(check_id: str, seen: frozenset = frozenset()) -> tuple[str, str] | None:
+        """The failed check behind ``check_id`` and the upstream results named there, or None."""
+        result = by_id.get(check_id)
+        if result is None or check_id in seen:
+            return None
+        if result.status is Status.SKIPPED and check_id in blockers:
+            return root_of(blockers[check_id], seen | {check_id})
+        if result.passed:
+            for upstream, what in carried.get(check_id, ()):
+                found = root_of(upstream, seen | {check_id})
+                if found is not None:
+                    return found if found[1] else (found[0], what)
+            return None
+        return (check_id, "") if result.status is Status.FAILED or result.status is Status.ERROR else None
+
+    followers: dict[str, list[str]] = {}
+    names: dict[str, str] = {}
+    notes: dict[str, str] = {}
+    for check_id, hops in carried.items():
+        what = hops[0][1]
+        root = None
+        for upstream, hop_what in hops:
+            found = root_of(upstream)
+            if found is not None:
+                root, what = found[0], (found[1] or hop_what)
+                break
+        if root is None:
+            elsewhere = [title for title in (_title_elsewhere(upstream, by_id) for upstream, _ in hops) if title]
+            notes[check_id] = (f"Judged on your own {what}, which differ from the reference's (error carried forward: "
+                               f"full credit here); " + (f"they are graded by {elsewhere[0]}." if elsewhere else
+                                                         "compare them with the reference's."))
+            continue
+        followers.setdefault(root, []).append(check_id)
+        names.setdefault(root, what)
+        notes[check_id] = (f"Judged on your own {what} (error carried forward: full credit). They are wrong: see "
+                           f"“{by_id[root].title}”.")
+    out = []
+    for result in results:
+        if result.check_id in notes:
+            result = replace(result, hint=_join(result.hint, notes[result.check_id]))
+        elif result.check_id in followers:
+            titles = "; ".join(f"“{by_id[c].title}”" for c in followers[result.check_id])
+            result = replace(result, hint=_join(result.hint, (
+                f"Later checks use your {names[result.check_id]}, so their values differ from the reference's "
+                f"too: {titles}. They were judged on your {names[result.check_id]} and are otherwise right "
+                f"(error carried forward: this mistake costs only the points of this check).")))
+        out.append(result)
+    return out
+
+
+def _title_elsewhere(check_id: str, by_id: dict) -> str:
+    """``problem N's check “title”`` for a check of another problem than the one graded, else ""."""
+    if check_id in by_id:
+        return ""
+    try:
+        number, name = int(check_id[1:3]), check_id[4:]
+        spec = next(spec for spec in checks_of(problem_module(number)) if spec.name == name)
+    except (ValueError, KeyError, StopIteration):
+        return ""
+    return f"problem {number}'s check “{spec.title}”"
+
+
+def _join(first: str, second: str) -> str:
+    return f"{first}\n{second}" if first else second
 
 
 @lru_cache(maxsize=4)

@@ -29,3 +29,20 @@ def set_later(pkg, A_IB, A_BC):
 @probe
 def vectors(pkg):
     return module(pkg, "problem_09").vectors()
+
+
+@probe
+def vectors_with_chain(pkg):
+    """``vectors()`` with the transformations of the package's own ``build_chain()``: ``A_IC3`` and ``A_CkC3``
+    (None when they cannot be had)."""
+    import numpy as np
+
+    problem = module(pkg, "problem_09")
+    try:
+        C1, C2, C3 = problem.build_chain()
+        own = [np.asarray(T, dtype=float) for T in
+               (C3.get_transform(), C3.get_transform(C1), C3.get_transform(C2), C3.get_transform(C3))]
+        own = own if all(T.shape == (3, 3) and np.all(np.isfinite(T)) for T in own) else None
+    except Exception:  # noqa: BLE001 - the chain is judged by its own checks
+        own = None
+    return {"vectors": problem.vectors(), "chain": own}

@@ -80,3 +80,17 @@ def nesting(pkg, call, q, d):
         return {"depth": 0, "function": "", "value": value}
     code = max(deepest, key=deepest.get)
     return {"depth": deepest[code], "function": code.co_name, "value": value}
+
+
+@probe
+def recursive_with_point(pkg, q, d):
+    """``end_effector_recursive(q, d)`` with the package's own ``point_k(q, n)`` (None when it cannot be had)."""
+    import numpy as np
+
+    planar = module(pkg, "planar")
+    try:
+        point = np.asarray(planar.point_k(q, len(q) // 2), dtype=float)
+        point = point if point.shape == (3,) and np.all(np.isfinite(point)) else None
+    except Exception:  # noqa: BLE001 - point_k is judged by its own check
+        point = None
+    return {"end": planar.end_effector_recursive(q, d), "point": point}

@@ -54,3 +54,47 @@ def simulate(pkg, controller, table, t_end):
         x.append(np.asarray(end_effector.A_IB, dtype=float) @ np.asarray(end_effector.B_r_IB, dtype=float))
         xd.append(np.asarray(end_effector.A_IB, dtype=float) @ np.asarray(end_effector.B_v_B, dtype=float))
     return {"t": t, "q": q, "qd": qd, "x": np.array(x).reshape(-1, 3), "xd": np.array(xd).reshape(-1, 3)}
+
+
+@probe
+def robot_ode_with_mfg(pkg, controller, table, cases):
+    """``robot_ode`` as in the probe ``robot_ode``, each with the package's own ``M, f, g`` of the robot at the
+    case's ``(q, qd)`` (``equations_of_motion``; None when they cannot be had)."""
+    p37 = module(pkg, "problem_37")
+    tree = p37.build_dynamic_robot()
+    out = []
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        ode = np.array(p37.robot_ode(float(t), y.copy(), tree, table, controller), dtype=float)
+        try:
+            M, f, g = (np.array(x, dtype=float) for x in p37.equations_of_motion(tree, y[:3].copy(), y[3:].copy(),
+                                                                                  p37.I_GRAV))
+            own = {"M": M, "f": f, "g": g} if M.shape == (3, 3) and f.shape == g.shape == (3,) else None
+        except Exception:  # noqa: BLE001 - M, f, g are judged by their own checks
+            own = None
+        out.append({"ode": ode, "mfg": own})
+    return out
+
+
+@probe
+def own_run(pkg, controller, table, t_end):
+    """The robot under ``controller`` integrated from the package's own ``robot_ode`` by this probe's loop (scipy's
+    ``solve_ivp``, RK45, rtol 1e-6, piece by piece between the table's times, output at them up to ``t_end``), from
+    the table's first row: what ``simulate`` gives on the package's own model."""
+    from scipy.integrate import solve_ivp
+
+    p37 = module(pkg, "problem_37")
+    tree = p37.build_dynamic_robot()
+    times = np.asarray(table["t"], dtype=float)
+    times = times[times <= t_end]
+    y = np.concatenate([np.asarray(table["q"][0], dtype=float), np.asarray(table["qd"][0], dtype=float)])
+    rows = [y]
+    for a, b in zip(times[:-1], times[1:]):
+        piece = solve_ivp(lambda t, s: np.asarray(p37.robot_ode(t, s, tree, table, controller), dtype=float),
+                          (a, b), y, rtol=1e-6, atol=1e-8, first_step=b - a)
+        if piece.status < 0:
+            raise RuntimeError(f"the integration of your robot_ode failed at t = {piece.t[-1]:g}: {piece.message}")
+        y = piece.y[:, -1]
+        rows.append(y)
+    rows = np.array(rows)
+    return {"t": times, "q": rows[:, :3], "qd": rows[:, 3:]}
