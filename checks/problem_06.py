@@ -7,7 +7,6 @@ from checks._figures import add_frames, add_vectors
 from grader import strategies as st
 from grader.checking import (
     EXACT,
-    SHEET,
     STAGE_RANDOM,
     STAGE_SHAPE,
     STAGE_STRUCTURE,
