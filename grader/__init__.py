@@ -13,12 +13,6 @@ _WHERE = {"grade_problem": "runner", "grade_submission": "runner", "problems": "
           "ProblemReport": "results", "CheckResult": "results", "Status": "results"}
 
 
-def __getattr__(name: str):
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    import importlib
+from .lazy import lazy_names  # noqa: E402
 
-    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_names(__name__, _WHERE, globals())

@@ -21,7 +21,7 @@ The names below are imported when first used, so that ``grade`` starts without i
 
 from __future__ import annotations
 
-import importlib
+from ..lazy import lazy_names
 
 # The function, not the module of the same name: imported now, so that it keeps the name ``discover`` here.
 from .discover import Entry, discover, student_seed, submission_hash
@@ -51,10 +51,4 @@ _WHERE = {
 }
 
 
-def __getattr__(name: str):
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_names(__name__, _WHERE, globals())
