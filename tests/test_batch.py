@@ -14,7 +14,6 @@ import subprocess
 import sys
 import time
 from dataclasses import replace
-from pathlib import Path
 
 import pytest
 
@@ -38,6 +37,7 @@ from .batch_fixtures import (
     zip_folder,
 )
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
+from .processes import alive, cmdline, descendants
 
 LIMITS = Limits(call_timeout=BATCH_LIMITS["call_timeout"], import_timeout=BATCH_LIMITS["import_timeout"])
 CLI_LIMITS = ["--timeout", str(BATCH_LIMITS["call_timeout"]), "--import-timeout", str(BATCH_LIMITS["import_timeout"]),
@@ -70,31 +70,7 @@ def graded_rows(path):
               "JOIN students st ON st.id = s.student_id")}
 
 
-def descendants(pid):
-    found, todo = [], [pid]
-    while todo:
-        for task in Path(f"/proc/{todo.pop()}/task").glob("*"):
-            try:
-                children = [int(c) for c in (task / "children").read_text().split()]
-            except OSError:  # ended meanwhile
-                continue
-            found += children
-            todo += children
-    return found
 
-
-def cmdline(pid):
-    try:
-        return Path(f"/proc/{pid}/cmdline").read_bytes()
-    except OSError:
-        return b""
-
-
-def alive(pid):
-    try:
-        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
-    except (OSError, IndexError):
-        return False
 
 
 def assert_gone(pids, seconds=15):

@@ -16,6 +16,7 @@ from grader.batch.cluster import snapshot, unpack
 from grader.batch.discover import submission_hash
 from grader.gradebook import GRADEBOOK_NAME
 
+from .processes import alive, descendants
 from .submissions import ROOT, build_planted, copy_reference, planted_mistakes
 
 distributed = pytest.importorskip("distributed")
@@ -33,31 +34,6 @@ def committed(path) -> int:
         return 0
 
 
-def descendants(pid: int) -> list[int]:
-    found, todo = [], [pid]
-    while todo:
-        for task in (f"/proc/{todo.pop()}/task",):
-            try:
-                names = os.listdir(task)
-            except OSError:
-                continue
-            for name in names:
-                try:
-                    with open(f"{task}/{name}/children") as handle:
-                        children = [int(c) for c in handle.read().split()]
-                except OSError:
-                    continue
-                found += children
-                todo += children
-    return found
-
-
-def alive(pid: int) -> bool:
-    try:
-        with open(f"/proc/{pid}/stat") as handle:
-            return handle.read().rsplit(")", 1)[1].split()[0] not in ("Z", "X")
-    except (OSError, IndexError):
-        return False
 
 
 def test_a_snapshot_carries_names_contents_and_links(tmp_path):

@@ -28,6 +28,7 @@ from grader.results import Status
 from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules
 
+from .processes import descendants, new_processes, processes_with
 from .submissions import build_hostile, copy_reference, hostile_expectation, hostile_names
 
 LIMITS = Limits(call_timeout=3.0, import_timeout=5.0, memory_mb=1024)
@@ -57,41 +58,9 @@ def assert_refused(grade) -> None:
 # ------------------------------------------------------------------------------------------ processes
 
 
-def descendants(pid: int) -> list[int]:
-    found, todo = [], [pid]
-    while todo:
-        for task in Path(f"/proc/{todo.pop()}/task").glob("*"):
-            try:
-                children = [int(c) for c in (task / "children").read_text().split()]
-            except OSError:
-                continue
-            found += children
-            todo += children
-    return found
 
 
-def alive(pid: int) -> bool:
-    try:
-        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] not in ("Z", "X")
-    except (OSError, IndexError):
-        return False
 
-
-def cmdline(pid: int) -> bytes:
-    try:
-        return Path(f"/proc/{pid}/cmdline").read_bytes()
-    except OSError:
-        return b""
-
-
-def processes_with(text: str) -> list[int]:
-    return [int(p) for p in os.listdir("/proc") if p.isdigit() and text.encode() in cmdline(int(p))
-            and alive(int(p))]
-
-
-def new_processes(before: set[int]) -> list[int]:
-    """Live descendants of this process that were not there ``before`` (e.g. not multiprocessing's helpers)."""
-    return [p for p in descendants(os.getpid()) if p not in before and alive(p)]
 
 
 def wait_until(condition, seconds: float = GONE_WITHIN) -> bool:

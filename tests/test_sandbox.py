@@ -27,7 +27,8 @@ from grader.sandbox import BWRAP_FIX, Child, Limits, SandboxMode, canary, plain_
 from grader.sandbox import launch, users
 
 from .submissions import ROOT, build_hostile, copy_reference
-from .test_hostile import assert_refused, descendants, new_processes, wait_until
+from .processes import descendants, new_processes
+from .test_hostile import assert_refused, wait_until
 
 LIMITS = Limits(call_timeout=3.0, import_timeout=10.0)
 BWRAP = SandboxMode("bwrap", "bubblewrap (test)")

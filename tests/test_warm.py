@@ -16,6 +16,7 @@ from grader.runner import grade_submission
 from grader.sandbox import Limits, plain_mode, refusal, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules
 
+from .processes import cmdline
 from .submissions import ROOT, copy_reference
 
 LIMITS = Limits(call_timeout=5.0, import_timeout=10.0)
@@ -80,13 +81,6 @@ def assert_nothing_left(marker: str) -> None:
                 for p in os.listdir(folder) if marker in p]
     assert not [pid for pid in os.listdir("/proc") if pid.isdigit() and marker.encode() in cmdline(pid)]
 
-
-def cmdline(pid: str) -> bytes:
-    try:
-        with open(f"/proc/{pid}/cmdline", "rb") as handle:
-            return handle.read()
-    except OSError:
-        return b""
 
 
 def assert_isolated(leaver_output: str, spy_output: str, again_output: str, isolated: bool, root: bool) -> None:
