@@ -15,7 +15,7 @@ from grader.checking import EXACT, close, fail, format_array
 
 from ._shapes import as_dict, as_list
 
-__all__ = ["assert_no_side_effects", "assert_tree_no_side_effects", "same"]
+__all__ = ["assert_no_side_effects", "same", "shown", "MUTATION_HINT"]
 
 MUTATION_HINT = (
     "Work on a copy instead of changing the caller's array: e.g. x = np.array(x, dtype=float) (a copy) instead of "
@@ -49,7 +49,8 @@ def same(a, b) -> bool:
         return False
 
 
-def _shown(value) -> str:
+def shown(value) -> str:
+    """A value as the report shows it (an array formatted, anything else as text)."""
     try:
         return format_array(np.asarray(value, dtype=float))
     except (TypeError, ValueError):
@@ -68,51 +69,12 @@ def assert_no_side_effects(ctx, module: str, function: str, first, second, param
     for name, sent, left in zip(params, first, after):
         if not same(sent, left):
             fail(f"{call} changes its argument {name} in place: the caller's array is not the same after the call.\n"
-                 f"passed:\n{_shown(sent)}\nafter the call:\n{_shown(left)}", MUTATION_HINT, "mutates_argument")
+                 f"passed:\n{shown(sent)}\nafter the call:\n{shown(left)}", MUTATION_HINT, "mutates_argument")
     if not same(got["first"], got["first_later"]):
         fail(f"{call} returns the same array object on every call: the next call changed the result the caller "
-             f"kept.\nreturned:\n{_shown(got['first'])}\nthe same object after the next call:\n"
-             f"{_shown(got['first_later'])}", SHARED_HINT, "shared_result")
+             f"kept.\nreturned:\n{shown(got['first'])}\nthe same object after the next call:\n"
+             f"{shown(got['first_later'])}", SHARED_HINT, "shared_result")
     if not same(got["first"], got["again"]):
         fail(f"{call} gives another result when called again with the same arguments: it keeps state between "
-             f"calls.\nfirst call:\n{_shown(got['first'])}\nsame arguments, after another call:\n"
-             f"{_shown(got['again'])}", STATE_HINT, "state_between_calls")
-
-
-def assert_tree_no_side_effects(ctx, description, first, second):
-    """Fail unless ``forward_kinematics`` of a tree leaves its arguments unchanged and a tree used again gives what
-    a fresh tree gives (``first``, then ``second``, then ``first``; each ``(q[, qd, qdd])``)."""
-    first, second = [np.asarray(v, dtype=float) for v in first], [np.asarray(v, dtype=float) for v in second]
-    got = as_dict(ctx.student("_effects.tree_calls", description, first, second),
-                  "the reply of the side-effect probe (forward_kinematics)",
-                  ("first", "second", "fresh_second", "again", "args_after"))
-    after = as_list(got["args_after"], "the arguments of forward_kinematics after the call", len(first))
-    for name, sent, left in zip(("q", "qd", "qdd"), first, after):
-        if not same(sent, left):
-            fail(f"forward_kinematics changes its argument {name} in place: the caller's array is not the same after "
-                 f"the call.\npassed:\n{_shown(sent)}\nafter the call:\n{_shown(left)}", MUTATION_HINT,
-                 "mutates_argument")
-    for label, mine, fresh in (("used again at a second configuration", got["second"], got["fresh_second"]),
-                               ("used again at the first configuration", got["again"], got["first"])):
-        if not same(mine, fresh):
-            fail(f"a tree {label} does not give what a fresh tree gives: forward_kinematics keeps state between "
-                 f"calls.\n{_first_difference(mine, fresh)}", TREE_STATE_HINT, "state_between_calls")
-
-
-TREE_STATE_HINT = (
-    "Every call of forward_kinematics computes every body's state from q (and qd, qdd) afresh: nothing may be kept "
-    "from an earlier call (a pose computed once and reused, a cache keyed on the wrong thing, a sum that is not "
-    "reset). Later problems call it at every step of a simulation on the same tree."
-)
-
-
-def _first_difference(mine, fresh) -> str:
-    """Which body and quantity differ first (or why the states cannot be compared)."""
-    if not isinstance(mine, dict) or not isinstance(fresh, dict):
-        return "the states could not be read back."
-    for name, a, b in zip(fresh.get("names", []), mine.get("bodies", []), fresh.get("bodies", [])):
-        for quantity in b:
-            if not same(a.get(quantity) if isinstance(a, dict) else None, b[quantity]):
-                return (f"{quantity} of {name}:\nthe tree used again:\n{_shown(a.get(quantity))}\na fresh tree:\n"
-                        f"{_shown(b[quantity])}")
-    return "the bodies differ."
+             f"calls.\nfirst call:\n{shown(got['first'])}\nsame arguments, after another call:\n"
+             f"{shown(got['again'])}", STATE_HINT, "state_between_calls")

@@ -31,6 +31,7 @@ from grader.checking import (
 )
 from probes import _trees as probe_trees
 
+from ._effects import MUTATION_HINT, same, shown
 from ._shapes import as_dict, as_list
 
 __all__ = [
@@ -57,6 +58,7 @@ __all__ = [
     "compare_jacobian_differences",
     "compare_path_differences",
     "configuration_figure",
+    "assert_tree_no_side_effects",
 ]
 
 #: step of the finite differences and their tolerance (central differences: error ~ h^2)
@@ -642,3 +644,45 @@ def configuration_figure(title, got, expected, axes=(0, 1)):
     label = "xyz"
     return figure(title, f"{label[i]} [m]", f"{label[j]} [m]", student=[("configuration", mine[:, i], mine[:, j])],
                   reference=[("configuration", ours[:, i], ours[:, j])], equal_axes=True)
+
+
+# ------------------------------------------------------------------------------------ side effects
+
+
+def assert_tree_no_side_effects(ctx, description, first, second):
+    """Fail unless ``forward_kinematics`` of a tree leaves its arguments unchanged and a tree used again gives what
+    a fresh tree gives (``first``, then ``second``, then ``first``; each ``(q[, qd, qdd])``)."""
+    first, second = [np.asarray(v, dtype=float) for v in first], [np.asarray(v, dtype=float) for v in second]
+    got = as_dict(ctx.student("_trees.tree_calls", description, first, second),
+                  "the reply of the side-effect probe (forward_kinematics)",
+                  ("first", "second", "fresh_second", "again", "args_after"))
+    after = as_list(got["args_after"], "the arguments of forward_kinematics after the call", len(first))
+    for name, sent, left in zip(("q", "qd", "qdd"), first, after):
+        if not same(sent, left):
+            fail(f"forward_kinematics changes its argument {name} in place: the caller's array is not the same after "
+                 f"the call.\npassed:\n{shown(sent)}\nafter the call:\n{shown(left)}", MUTATION_HINT,
+                 "mutates_argument")
+    for label, mine, fresh in (("used again at a second configuration", got["second"], got["fresh_second"]),
+                               ("used again at the first configuration", got["again"], got["first"])):
+        if not same(mine, fresh):
+            fail(f"a tree {label} does not give what a fresh tree gives: forward_kinematics keeps state between "
+                 f"calls.\n{_first_difference(mine, fresh)}", TREE_STATE_HINT, "state_between_calls")
+
+
+TREE_STATE_HINT = (
+    "Every call of forward_kinematics computes every body's state from q (and qd, qdd) afresh: nothing may be kept "
+    "from an earlier call (a pose computed once and reused, a cache keyed on the wrong thing, a sum that is not "
+    "reset). Later problems call it at every step of a simulation on the same tree."
+)
+
+
+def _first_difference(mine, fresh) -> str:
+    """Which body and quantity differ first (or why the states cannot be compared)."""
+    if not isinstance(mine, dict) or not isinstance(fresh, dict):
+        return "the states could not be read back."
+    for name, a, b in zip(fresh.get("names", []), mine.get("bodies", []), fresh.get("bodies", [])):
+        for quantity in b:
+            if not same(a.get(quantity) if isinstance(a, dict) else None, b[quantity]):
+                return (f"{quantity} of {name}:\nthe tree used again:\n{shown(a.get(quantity))}\na fresh tree:\n"
+                        f"{shown(b[quantity])}")
+    return "the bodies differ."

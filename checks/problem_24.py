@@ -3,8 +3,8 @@
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, STRUCTURE, assert_rotation, check
 
-from ._effects import assert_tree_no_side_effects
 from ._trees import (
+    assert_tree_no_side_effects,
     bodies_of,
     candidates,
     cases,

@@ -3,8 +3,8 @@
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, check
 
-from ._effects import assert_tree_no_side_effects
 from ._trees import (
+    assert_tree_no_side_effects,
     candidates,
     compare_jacobian_differences,
     compare_path_differences,

@@ -11,10 +11,10 @@ import numpy as np
 
 from . import module, probe
 
-__all__ = ["calls", "tree_calls"]
+__all__ = ["calls", "snapshot", "fresh_copies"]
 
 
-def _snapshot(value):
+def snapshot(value):
     """A deep copy of a call's result, as plain data where it is numeric (an unusable result is left to the
     check of the function's values)."""
     try:
@@ -23,7 +23,7 @@ def _snapshot(value):
         return None
 
 
-def _arrays(args):
+def fresh_copies(args):
     """Fresh copies of the arguments (lists as numpy arrays where the function is given arrays)."""
     return [np.array(a, dtype=float) if isinstance(a, (list, np.ndarray)) else copy.deepcopy(a) for a in args]
 
@@ -35,36 +35,11 @@ def calls(pkg, module_name, function, first, second):
     ``{"first": the first result (copied at once), "first_later": the first result object after the second call,
     "again": the result of the repeated call, "args_after": the first call's arguments after it returned}``."""
     func = getattr(module(pkg, module_name), function)
-    args = _arrays(first)
+    args = fresh_copies(first)
     result = func(*args)
-    snapshot = _snapshot(result)
-    args_after = _snapshot(args)
-    func(*_arrays(second))
-    first_later = _snapshot(result)
-    again = func(*_arrays(first))
-    return {"first": snapshot, "first_later": first_later, "again": _snapshot(again), "args_after": args_after}
-
-
-@probe
-def tree_calls(pkg, description, first, second):
-    """One tree of the described bodies, built once: ``forward_kinematics(*first)``, then ``(*second)``, then
-    ``(*first)`` again (each a tuple ``(q[, qd, qdd])`` on fresh copies), and a fresh tree at ``second``:
-
-    ``{"first", "second", "fresh_second", "again"}`` (the states, see ``_trees.state``) and ``"args_after"`` (the
-    first call's arguments after it returned)."""
-    from ._trees import build, state
-
-    tree_module = module(pkg, "tree")
-    tree = build(tree_module, description)
-    motion = len(first) > 1
-    args = _arrays(first)
-    tree.forward_kinematics(*args)
-    at_first = state(tree, motion)
-    args_after = _snapshot(args)
-    tree.forward_kinematics(*_arrays(second))
-    at_second = state(tree, motion)
-    fresh = build(tree_module, description)
-    fresh.forward_kinematics(*_arrays(second))
-    tree.forward_kinematics(*_arrays(first))
-    return {"first": at_first, "second": at_second, "fresh_second": state(fresh, motion), "again": state(tree, motion),
-            "args_after": args_after}
+    at_first = snapshot(result)
+    args_after = snapshot(args)
+    func(*fresh_copies(second))
+    first_later = snapshot(result)
+    again = func(*fresh_copies(first))
+    return {"first": at_first, "first_later": first_later, "again": snapshot(again), "args_after": args_after}

@@ -16,6 +16,7 @@ the generic recursion meets relative translations without any joint type the stu
 import numpy as np
 
 from . import module, probe
+from ._effects import fresh_copies, snapshot
 
 __all__ = [
     "POSE",
@@ -29,6 +30,7 @@ __all__ = [
     "mistaken_states",
     "jacobian_differences",
     "path_differences",
+    "tree_calls",
 ]
 
 #: body quantities, in the order the recursion computes them
@@ -224,3 +226,26 @@ def path_differences(pkg, description, q, qd, qdd, h):
         tree.forward_kinematics(q + qd * t + 0.5 * qdd * t * t, qd + qdd * t, qdd)
         states.append(state(tree))
     return states
+
+
+@probe
+def tree_calls(pkg, description, first, second):
+    """One tree of the described bodies, built once: ``forward_kinematics(*first)``, then ``(*second)``, then
+    ``(*first)`` again (each a tuple ``(q[, qd, qdd])`` on fresh copies), and a fresh tree at ``second``:
+
+    ``{"first", "second", "fresh_second", "again"}`` (the states, see ``_trees.state``) and ``"args_after"`` (the
+    first call's arguments after it returned)."""
+    tree_module = module(pkg, "tree")
+    tree = build(tree_module, description)
+    motion = len(first) > 1
+    args = fresh_copies(first)
+    tree.forward_kinematics(*args)
+    at_first = state(tree, motion)
+    args_after = snapshot(args)
+    tree.forward_kinematics(*fresh_copies(second))
+    at_second = state(tree, motion)
+    fresh = build(tree_module, description)
+    fresh.forward_kinematics(*fresh_copies(second))
+    tree.forward_kinematics(*fresh_copies(first))
+    return {"first": at_first, "second": at_second, "fresh_second": state(fresh, motion), "again": state(tree, motion),
+            "args_after": args_after}
