@@ -281,6 +281,11 @@ def _lookup_submission(key, dest: Path) -> Path:
             table[(int(args[0]), float(args[1]))] = np.asarray(decode(entry["value"])).tolist()
         elif probe == "problem_06.cardan":
             table[("cardan", *map(float, args))] = np.asarray(decode(entry["value"])).tolist()
+        elif probe == "problem_06.cardan_with_factors":  # cardan and its own factors at the same angles
+            value = decode(entry["value"])
+            table[("cardan", *map(float, args))] = np.asarray(value["cardan"]).tolist()
+            for axis, angle in zip((1, 2, 3), args):
+                table[(axis, float(angle))] = np.asarray(value[f"R{axis}"]).tolist()
     assert len(table) > 50
     fallback = max((v for k, v in table.items() if k[0] == "cardan"),
                    key=lambda v: float(np.abs(np.asarray(v) - np.eye(3)).max()))  # a rotation that rotates
