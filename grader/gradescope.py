@@ -12,6 +12,10 @@ unpacked next to them in ``/autograder/source``.  It holds
 * the wheel, ``autograder.json`` (the assigned problems) and ``fault_results.json`` (what ``run_autograder`` puts
   in place when the grader cannot even start).
 
+``results_json`` is the one builder of results.json: ``run_autograder`` (``run``), ``grade problem-N --gradescope``
+and the batch's per-student export all write what it returns, with the same visibility rules on the instructor's
+side as in Gradescope's container.
+
 What a student sees (``results.json``), following the student's view of every other report
 (``grader.results.student_view``):
 
@@ -22,7 +26,10 @@ What a student sees (``results.json``), following the student's view of every ot
   with an extension may still be working).  Gradescope then also hides the total score until publication.  The
   visible top-level output names the secret checks and counts the hidden ones with their points, as every
   student report does;
-* a free-text answer is an informational test (no score: it is scored by hand), without the model answer;
+* a submission that could not be loaded is said once, at the top of the output; each check's test says it did
+  not run (scored 0, never as wrong answers);
+* a free-text answer is an informational test (no score: it is scored by hand), without the model answer; once a
+  score is imported (``grade import-manual``) it is a scored test, and the top-level score counts it;
 * a fault of the grader is never a silent 0: a check the grader could not run says so in its test and in the
   top-level output, and a grader that cannot grade at all writes a results.json that says so plainly (score 0,
   ``extra_data.grader_fault``) and exits with code 3.  Gradescope's specification asks for a results.json in

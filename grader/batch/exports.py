@@ -1,5 +1,6 @@
 """The exports of a gradebook: grades.csv, manual_answers.csv, the class summary (summary.html) and, per student,
-a Gradescope results.json and an HTML report (the student's view).
+a Gradescope results.json (built by the autograder's own ``grader.gradescope.results_json``) and an HTML report
+(the student's view).
 
 A batch writes each student's own files as soon as that student is recorded (``export_student``), and the files
 about the whole class once at the end (``export_results(..., students=False)``); ``grade export`` and
