@@ -12,6 +12,10 @@ unpacked next to them in ``/autograder/source``.  It holds
 * the wheel, ``autograder.json`` (the assigned problems) and ``fault_results.json`` (what ``run_autograder`` puts
   in place when the grader cannot even start).
 
+``results_json`` is the one builder of results.json: ``run_autograder`` (``run``), ``grade problem-N --gradescope``
+and the batch's per-student export all write what it returns, with the same visibility rules on the instructor's
+side as in Gradescope's container.
+
 What a student sees (``results.json``), following the student's view of every other report
 (``grader.results.student_view``):
 
@@ -22,7 +26,10 @@ What a student sees (``results.json``), following the student's view of every ot
   with an extension may still be working).  Gradescope then also hides the total score until publication.  The
   visible top-level output names the secret checks and counts the hidden ones with their points, as every
   student report does;
-* a free-text answer is an informational test (no score: it is scored by hand), without the model answer;
+* a submission that could not be loaded is said once, at the top of the output; each check's test says it did
+  not run (scored 0, never as wrong answers);
+* a free-text answer is an informational test (no score: it is scored by hand), without the model answer; once a
+  score is imported (``grade import-manual``) it is a scored test, and the top-level score counts it;
 * a fault of the grader is never a silent 0: a check the grader could not run says so in its test and in the
   top-level output, and a grader that cannot grade at all writes a results.json that says so plainly (score 0,
   ``extra_data.grader_fault``) and exits with code 3.  Gradescope's specification asks for a results.json in
@@ -46,7 +53,8 @@ from . import __version__
 from .errors import GraderFault
 from .results import CheckResult, ManualItem, ProblemReport, Status, student_view
 
-__all__ = ["parse_problems", "build_autograder", "Autograder", "results_json", "fault_results",
+__all__ = ["parse_problems", "build_autograder", "Autograder", "results_json", "render_results",
+           "withheld_check_ids", "fault_results",
            "find_student", "check_installation", "run", "main", "WHEEL_NAME", "WHEEL_PACKAGES", "WITHHELD",
            "SETUP", "RUN", "CONFIG", "FAULT", "GRADER_HOME", "PYTHON_MIN", "EXIT_GRADED", "EXIT_FAULT"]
 
@@ -107,13 +115,6 @@ def _assigned(problems: list[int] | None) -> list[int]:
     return list(problems)
 
 
-def _withheld_ids(numbers: list[int]) -> set[str]:
-    """The checks whose tests students see only when grades are published: secret and hidden ones."""
-    from .kit import secret_check_ids
-
-    return secret_check_ids(numbers)
-
-
 # ---------------------------------------------------------------------------------------------- results.json
 
 
@@ -127,7 +128,26 @@ def _env():
     return render_env(False)
 
 
-def _check_output(r: CheckResult) -> str:
+def withheld_check_ids(numbers: list[int]) -> set[str]:
+    """The checks whose tests students see only when grades are published: secret and hidden ones.  A problem
+    without a check module here (a gradebook of checks since removed) adds none: its hidden checks are still
+    withheld by their own visibility; its secret checks, if any, cannot be known."""
+    from .kit import secret_check_ids
+    from .runner import problem_module
+
+    known = []
+    for number in sorted(set(numbers)):
+        try:
+            problem_module(number)
+        except KeyError:
+            continue
+        known.append(number)
+    return secret_check_ids(known) if known else set()
+
+
+def _check_output(r: CheckResult, load_error: str) -> str:
+    if load_error:
+        return "Not run: your submission could not be loaded (the reason is at the top)."
     if r.status is Status.GRADER_ERROR:
         head = ("Not graded: a fault of the grader, not of your work. It counts 0 until your course staff "
                 "regrade this submission.")
@@ -140,14 +160,14 @@ def _check_output(r: CheckResult) -> str:
     return "\n".join(parts)
 
 
-def _test(r: CheckResult, number: str, withheld: bool) -> dict:
+def _test(r: CheckResult, number: str, withheld: bool, load_error: str) -> dict:
     return {
         "name": f"Problem {r.problem}: {r.title}",
         "number": number,
         "score": float(r.score),
         "max_score": float(r.max_score),
         "status": "passed" if r.status is Status.PASSED else "failed",
-        "output": _check_output(r),
+        "output": _check_output(r, load_error),
         "output_format": "text",
         "visibility": WITHHELD if withheld else "visible",
         "tags": [f"problem-{r.problem}", r.status.value] + ([r.diagnosis] if r.diagnosis else []),
@@ -157,8 +177,9 @@ def _test(r: CheckResult, number: str, withheld: bool) -> dict:
 
 
 def _manual_test(m: ManualItem, number: str) -> dict:
-    """A free-text answer: informational (no score, no status; scored by hand), never with the model answer."""
-    return {
+    """A free-text answer, never with the model answer: informational (no score, no status) until a person scores
+    it; then a scored test (passed when it earned every point)."""
+    test = {
         "name": f"Problem {m.problem}: {m.question} (scored by hand, {_fmt(m.max_score)} points)",
         "number": number,
         "output": f"Your answer:\n{m.answer or '(blank)'}\n\nScored by hand by your course staff; "
@@ -168,17 +189,53 @@ def _manual_test(m: ManualItem, number: str) -> dict:
         "tags": [f"problem-{m.problem}", "manual"],
         "extra_data": {"free_text": m.key, "max_score": float(m.max_score)},
     }
+    if m.score is not None:
+        status = "passed" if m.score >= m.max_score else "failed"
+        test.update(score=float(m.score), max_score=float(m.max_score), status=status,
+                    output=f"Your answer:\n{m.answer or '(blank)'}\n\nScored by hand by your course staff: "
+                           f"{_fmt(m.score)} of {_fmt(m.max_score)} points.")
+        test["extra_data"].update(status=status, scored_by_hand=True)
+    return test
 
 
-def results_json(reports: list[ProblemReport], *, withheld_ids: set[str], seed: int,
-                 execution_time: float = 0.0) -> dict:
-    """Gradescope's results.json of one graded submission (see the module's docstring for what a student sees)."""
+def _seeds(reports: list[ProblemReport]) -> str:
+    """The seed of the random inputs: one number, or one per problem when the problems were graded with different
+    ones (a gradebook's problems graded at different times)."""
+    seeds = list(dict.fromkeys(r.seed for r in reports))
+    if len(seeds) == 1:
+        return f"seed {seeds[0]}"
+    return "seeds " + ", ".join(f"{r.seed} (problem {r.problem})" for r in reports)
+
+
+def _load_errors(reports: list[ProblemReport]) -> list[tuple[str, str]]:
+    """Why the submission could not be loaded, each reason once with the problems it stopped."""
+    by_reason: dict[str, list[int]] = {}
+    for report in reports:
+        if report.load_error:
+            by_reason.setdefault(report.load_error, []).append(report.problem)
+    return [(f"problem{'s' if len(numbers) > 1 else ''} {', '.join(map(str, numbers))}", reason)
+            for reason, numbers in by_reason.items()]
+
+
+def results_json(reports: list[ProblemReport], *, withheld_ids: set[str] | None = None, seed: int | None = None,
+                 execution_time: float | None = None, fresh_inputs: bool = False) -> dict:
+    """Gradescope's results.json of one graded submission (see the module's docstring for what a student sees):
+    the one builder of that file, for the autograder (``run``), ``grade problem-N --gradescope`` and the batch's
+    per-student export.
+
+    ``withheld_ids`` are the secret and hidden checks (default: those of the reports' problems, from their check
+    modules); ``seed`` the seed of the random inputs (default: the reports'); ``execution_time`` seconds (default:
+    the reports' grading time); ``fresh_inputs`` says that the inputs were drawn fresh for this submission."""
+    if withheld_ids is None:
+        withheld_ids = withheld_check_ids([r.problem for r in reports])
+    if execution_time is None:
+        execution_time = sum(r.duration for r in reports)
     tests = []
     withheld, grader_errors = [], []
     for report in reports:
         for index, r in enumerate(report.results, 1):
             hide = r.check_id in withheld_ids or r.visibility == "hidden"
-            tests.append(_test(r, f"{report.problem}.{index}", hide))
+            tests.append(_test(r, f"{report.problem}.{index}", hide, report.load_error))
             if hide and r.visibility != "hidden":
                 withheld.append(r)
             if r.status is Status.GRADER_ERROR:
@@ -194,13 +251,18 @@ def results_json(reports: list[ProblemReport], *, withheld_ids: set[str], seed: 
               "max_score": sum(r.max_score for r in public)} for report, public in shown]
     notes = sorted({n for report in reports for n in report.notes}
                    | {report.sandbox for report in reports if not report.isolated and report.sandbox})
+    manual = [m for report in views for m in report.manual]
     output = _env().get_template("gradescope/output.txt.j2").render(
-        problems=[r.problem for r in reports], seed=seed, lines=lines,
+        problems=[r.problem for r in reports], seeds=_seeds(reports) if seed is None else f"seed {seed}",
+        fresh_inputs=fresh_inputs, lines=lines,
+        load_errors=_load_errors(reports),
         withheld=withheld, withheld_points=sum(r.max_score for r in withheld),
         hidden_count=len(hidden), hidden_points=sum(r.max_score for r in hidden),
-        manual=[m for report in views for m in report.manual], grader_errors=grader_errors, notes=notes,
-        fmt=_fmt).strip() + "\n"
-    score = sum(r.score for report in reports for r in report.results)
+        pending=[m for m in manual if m.score is None], scored=[m for m in manual if m.score is not None],
+        grader_errors=grader_errors, notes=notes, fmt=_fmt).strip() + "\n"
+    # every point the submission earned: the checks' and the free-text answers' scored so far (Gradescope's
+    # specification asks for the top-level score, since an unscored free-text answer's test has none)
+    score = sum(r.score for r in reports)
     return {
         "score": float(score),
         "execution_time": int(round(execution_time)),
@@ -210,17 +272,25 @@ def results_json(reports: list[ProblemReport], *, withheld_ids: set[str], seed: 
         "stdout_visibility": "hidden",
         "extra_data": {
             "grader_version": __version__,
-            "seed": seed,
+            "seed": seed if seed is not None else reports[0].seed if len({r.seed for r in reports}) == 1 else None,
+            "seeds": {str(r.problem): r.seed for r in reports},
             "problems": [r.problem for r in reports],
             "max_score": float(sum(r.max_score for report in reports for r in report.results)),
             "manual_points": float(sum(m.max_score for report in reports for m in report.manual)),
+            "manual_score": float(sum(m.score for report in reports for m in report.manual if m.score is not None)),
             "sandbox": sorted({r.sandbox for r in reports}),
             "isolated": all(r.isolated for r in reports),
+            "load_errors": {str(r.problem): r.load_error for r in reports if r.load_error},
             "grader_errors": grader_errors,
             "grader_fault": False,
         },
         "tests": tests,
     }
+
+
+def render_results(reports: list[ProblemReport], **options) -> str:
+    """``results_json`` as the text of the file (JSON, not a template)."""
+    return json.dumps(results_json(reports, **options), indent=2) + "\n"
 
 
 def fault_results(reason: str, *, execution_time: float = 0.0) -> dict:
@@ -327,8 +397,8 @@ def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
         student = find_student(root / "submission")
         print(f"grading {student} with seed {seed}")
         reports = grade_submission(student, problems, seed=seed)
-        data = results_json(reports, withheld_ids=_withheld_ids(problems), seed=seed,
-                            execution_time=time.monotonic() - start)
+        data = results_json(reports, withheld_ids=withheld_check_ids(problems), seed=seed,
+                            execution_time=time.monotonic() - start, fresh_inputs=True)
     except GraderFault as exc:
         print(f"grader fault: {exc}")
         _write_json(results_path, fault_results(str(exc), execution_time=time.monotonic() - start))

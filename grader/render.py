@@ -1,5 +1,5 @@
-"""Renderers: every report goes out through a jinja2 template (terminal text, HTML) or as plain data (JSON,
-Gradescope's results.json)."""
+"""Renderers: every report goes out through a jinja2 template (terminal text, HTML) or as plain data (JSON;
+Gradescope's results.json comes from its one builder, ``grader.gradescope.results_json``)."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from jinja2 import Environment, FileSystemBytecodeCache, PackageLoader, StrictUn
 
 from .results import ProblemReport, Status, student_view
 
-__all__ = ["render_terminal", "render_html", "render_json", "gradescope_results", "render_gradescope"]
+__all__ = ["render_terminal", "render_html", "render_json", "render_gradescope"]
 
 COLOURS = {
     "passed": "32",
@@ -213,49 +213,8 @@ def render_json(reports: list[ProblemReport], show_hidden: bool = True) -> str:
     return json.dumps({"reports": [_visible_dict(r, show_hidden) for r in reports]}, indent=2) + "\n"
 
 
-def gradescope_results(reports: list[ProblemReport]) -> dict:
-    """Gradescope's autograder results format: one test per check, hidden checks after the due date."""
-    tests = []
-    for report in reports:
-        for r in report.results:
-            output = "\n".join(part for part in (r.message, f"hint: {r.hint}" if r.hint else "") if part)
-            if report.load_error:
-                output = "not run: the submission could not be loaded (the reason is at the top)"
-            tests.append(
-                {
-                    "name": f"Problem {r.problem}: {r.title}",
-                    "number": r.check_id,
-                    "score": r.score,
-                    "max_score": r.max_score,
-                    "status": "passed" if r.passed else "failed",
-                    "output": output or "passed",
-                    "visibility": "after_due_date" if r.visibility == "hidden" else "visible",
-                    "tags": [f"problem-{r.problem}"] + ([r.diagnosis] if r.diagnosis else []),
-                }
-            )
-        for m in report.manual:
-            tests.append(
-                {
-                    "name": f"Problem {m.problem}: {m.question} (scored by hand)",
-                    "number": f"p{m.problem:02d}.free_text.{m.key}",
-                    "score": m.score or 0.0,
-                    "max_score": m.max_score,
-                    "output": f"Your answer:\n{m.answer or '(blank)'}\n\nScored by hand; 0 until a person scores it.",
-                    "visibility": "visible",
-                    "tags": ["manual"],
-                }
-            )
-    notes = sorted({r.sandbox for r in reports if not r.isolated})
-    load_errors = list(dict.fromkeys(r.load_error for r in reports if r.load_error))
-    # No top-level "score": Gradescope then totals the tests itself and applies each test's visibility.
-    return {
-        "output": "".join(f"Your submission could not be loaded: {e}\n\n" for e in load_errors)
-        + "Automatically graded checks; free-text answers are scored by hand." + (" " + " ".join(notes) if notes else ""),
-        "visibility": "visible",
-        "stdout_visibility": "hidden",
-        "tests": tests,
-    }
-
-
 def render_gradescope(reports: list[ProblemReport]) -> str:
-    return json.dumps(gradescope_results(reports), indent=2) + "\n"
+    """Gradescope's results.json: the one builder, ``grader.gradescope.results_json`` (JSON, no template)."""
+    from .gradescope import render_results
+
+    return render_results(reports)

@@ -21,7 +21,9 @@ from grader.batch import BatchLocked, Progress, _locked, discover, export_result
 from grader.cli import main
 from grader.errors import SubmissionError
 from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
+from grader.gradescope import WITHHELD
 from grader.results import student_view
+from grader.checking import checks_of
 from grader.runner import grade_submission, problem_module
 from grader.sandbox import Limits
 
@@ -38,6 +40,7 @@ from .batch_fixtures import (
 )
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
 from .processes import alive, cmdline, descendants
+from .test_gradescope import validate, visible_text
 
 LIMITS = Limits(call_timeout=BATCH_LIMITS["call_timeout"], import_timeout=BATCH_LIMITS["import_timeout"])
 CLI_LIMITS = ["--timeout", str(BATCH_LIMITS["call_timeout"]), "--import-timeout", str(BATCH_LIMITS["import_timeout"]),
@@ -158,7 +161,7 @@ def test_class_batch_killed_midway_resumes_with_every_student_graded_once(tmp_pa
         keys = ("check_id", "status", "score", "max_score", "diagnosis", "message", "hint", "duration")
         check = dict(zip(keys, values))
         checks.setdefault(name, {})[check["check_id"]] = check
-    assert {len(c) for c in checks.values()} == {7}
+    assert {len(c) for c in checks.values()} == {len(checks_of(problem_module(6)))}
     for name, exp in expected.items():
         assert_grade(exp, submissions[name], checks[name])
     with open(out / "grades.csv") as handle:
@@ -207,12 +210,14 @@ def test_small_class_grades_and_exports(small_class):
         table = list(csv.reader(handle))
     assert table[0] == ["student", "problem_6", "total", "possible"]
     assert {row[0]: float(row[2]) for row in table[1:]} == {
-        "alice": 10, "bob": 10, "carol": 10, "dave": 8, "erin": 3, "frank": 0, "gina": 0}
+        # dave: only the vectors check (1 point); erin: R1 in degrees costs the elementary values (2) and the side
+        # effects of that group (not run after them); cardan, frames and vectors are judged on her own R1
+        # (error carried forward, full credit)
+        "alice": 10, "bob": 10, "carol": 10, "dave": 9, "erin": 7, "frank": 0, "gina": 0}
     for name in ("alice", "bob", "carol", "dave", "erin", "frank", "gina"):
-        results = json.loads((out / "students" / name / "results.json").read_text())
-        assert len(results["tests"]) == 7
-        assert "score" not in results  # Gradescope totals the tests, applying their visibility
-        assert sum(t["score"] for t in results["tests"]) == float(next(r[2] for r in table if r[0] == name))
+        results = validate(json.loads((out / "students" / name / "results.json").read_text()))
+        assert len(results["tests"]) == len(checks_of(problem_module(6)))
+        assert results["score"] == float(next(r[2] for r in table if r[0] == name))
         html = (out / "students" / name / "report.html").read_text()
         assert f"Grading report: {name}" in html and "Problem 6" in html
     gina = (out / "students" / "gina" / "report.html").read_text()
@@ -224,6 +229,30 @@ def test_small_class_grades_and_exports(small_class):
     (again,) = grade_submission(subs / "erin", [6], seed=stored["erin"].seed, limits=LIMITS)
     assert [(r.status, r.message) for r in again.results] == [(r.status, r.message) for r in stored["erin"].results]
     assert "(minimal failing input found by hypothesis" in again.results[2].message
+
+
+def test_small_class_results_json_follow_gradescopes_specification(small_class):
+    """Each student's results.json is the autograder's format (one builder): the specification's JSON Schema, the
+    score of grades.csv, and an unloadable submission said once at the top, never as the student's wrong answers."""
+    _, out, _ = small_class
+    with open(out / "grades.csv") as handle:
+        totals = {row["student"]: float(row["total"]) for row in csv.DictReader(handle)}
+    for name, total in totals.items():
+        results = validate(json.loads((out / "students" / name / "results.json").read_text()))
+        assert results["score"] == total and results["extra_data"]["problems"] == [6]
+        assert {t["visibility"] for t in results["tests"]} == {"visible"}  # problem 6: no secret or hidden check
+    gina = validate(json.loads((out / "students" / "gina" / "results.json").read_text()))
+    assert gina["output"].count("not a readable zip archive") == 1
+    assert gina["output"].startswith("Your submission could not be loaded (problem 6): ")
+    assert "not a readable zip archive" in gina["extra_data"]["load_errors"]["6"]
+    assert gina["score"] == 0 and gina["tests"]
+    for test in gina["tests"]:
+        assert test["status"] == "failed" and test["score"] == 0, test
+        assert test["output"] == "Not run: your submission could not be loaded (the reason is at the top).", test
+    dave = validate(json.loads((out / "students" / "dave" / "results.json").read_text()))
+    vectors = next(t for t in dave["tests"] if t["extra_data"]["check_id"] == "p06.vectors")
+    assert (vectors["status"], vectors["visibility"]) == ("failed", "visible")
+    assert "likely mistake: transpose" in vectors["output"] and "A_C3I instead of A_IC3" in vectors["output"]
 
 
 def test_class_summary_has_every_plot_and_table(small_class):
@@ -426,9 +455,15 @@ def test_hidden_checks_count_for_the_instructor_and_stay_hidden_from_the_student
         assert "1 hidden check worth 3 points" in html
         assert "SECRET" not in html and "all passed" not in html.lower()
         assert "transpose" not in html
-    results = json.loads((out / "students" / "bad" / "results.json").read_text())
-    secret = [t for t in results["tests"] if t["number"].endswith("secret_vector")]
-    assert [t["visibility"] for t in secret] == ["after_due_date"]
+    # results.json: Gradescope's specification, the autograder's visibility (shown when grades are published)
+    results = validate(json.loads((out / "students" / "bad" / "results.json").read_text()))
+    secret = [t for t in results["tests"] if t["extra_data"].get("check_id") == f"p{HIDDEN_PROBLEM}.secret_vector"]
+    assert [(t["visibility"], t["status"], t["score"], t["max_score"]) for t in secret] == [(WITHHELD, "failed", 0, 3)]
+    seen = visible_text(results)
+    assert "SECRET" not in seen and "transpose" not in seen and "1 hidden check worth 3 points" in seen
+    assert results["score"] == 1.0 and results["extra_data"]["max_score"] == 4.0
+    (why,) = [t for t in results["tests"] if t["extra_data"].get("free_text") == "why"]
+    assert "score" not in why and "(blank)" in why["output"]  # informational until a person scores it
 
     summary = (out / "summary.html").read_text()
     assert "SECRET: the coordinates of V in I" in summary  # the instructor sees the hidden check fail
@@ -460,7 +495,11 @@ def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, 
     scores.write_text((out / "manual_answers.csv").read_text().replace(",why,,2,", ",why,1.5,2,"))
     assert main(["import-manual", str(out), str(scores)]) == 0
     assert "good,5.5,5.5,6" in (out / "grades.csv").read_text()
-    assert sum(t["score"] for t in json.loads((out / "students" / "good" / "results.json").read_text())["tests"]) == 5.5
+    results = validate(json.loads((out / "students" / "good" / "results.json").read_text()))
+    assert results["score"] == sum(t["score"] for t in results["tests"]) == 5.5
+    (why,) = [t for t in results["tests"] if t["extra_data"].get("free_text") == "why"]
+    assert (why["score"], why["max_score"], why["status"]) == (1.5, 2.0, "failed")
+    assert "1.5 of 2 points" in why["output"] and "Orthogonal unit columns." in why["output"]
     assert ",why,1.5,2," in (out / "manual_answers.csv").read_text()
 
 

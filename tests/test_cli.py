@@ -1,6 +1,7 @@
 """The grade command: exit codes, report files, init, list, loading zips and notebooks."""
 
 import json
+import sys
 import zipfile
 from pathlib import Path
 
@@ -10,6 +11,7 @@ import pytest
 from grader.cli import main
 
 from .submissions import build_planted, copy_reference, planted_mistakes
+from .test_gradescope import validate, visible_text
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -136,5 +138,86 @@ def test_student_outputs_hold_the_same_things_and_never_the_model_answers(tmp_pa
     data = json.loads(js.read_text())["reports"][0]
     assert {m["key"] for m in data["manual"]} == set(model)
     assert all("model_answer" not in m for m in data["manual"])
-    shown = {t["number"] for t in json.loads(gs.read_text())["tests"]}
+    shown = {t["extra_data"].get("check_id") for t in json.loads(gs.read_text())["tests"]}
     assert {r["check_id"] for r in data["results"]} <= shown
+
+
+# ---------------------------------------------------------------------------------------------- --gradescope
+
+
+@pytest.fixture
+def hidden_problem(monkeypatch):
+    """Problem 99 of the batch tests (a visible check, a hidden check, a free-text question), gradable by
+    ``grade problem-99``."""
+    from importlib.machinery import ModuleSpec
+
+    from grader.runner import problem_module
+
+    from .batch_fixtures import HIDDEN_PROBLEM, hidden_check_module
+
+    module = hidden_check_module()
+    module.__spec__ = ModuleSpec(module.__name__, None)
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    problem_module.cache_clear()
+    yield HIDDEN_PROBLEM
+    problem_module.cache_clear()
+
+
+def _checks(data: dict) -> dict:
+    return {t["extra_data"]["check_id"]: t for t in data["tests"] if "check_id" in t["extra_data"]}
+
+
+def test_the_gradescope_file_follows_the_specification_and_withholds_hidden_and_secret_checks(
+        hidden_problem, tmp_path, capsys):
+    """``grade problem-N --gradescope`` writes the autograder's results.json (one builder): the specification's
+    JSON Schema, and on the instructor's side too a hidden or secret check is shown only when grades are
+    published."""
+    from grader.gradescope import WITHHELD
+
+    from .batch_fixtures import HIDDEN_PROBLEM
+
+    # a hidden check that fails: graded and counted, shown to no student before publication
+    transposed = next(m for m in planted_mistakes(6) if m.name == "p06-vectors-transpose")
+    gs = tmp_path / "hidden.json"
+    code = main([f"problem-{HIDDEN_PROBLEM}", "--submission", str(build_planted(transposed, tmp_path / "bad")),
+                 "--seed", "7", "--gradescope", str(gs)])
+    capsys.readouterr()
+    assert code == 1
+    data = validate(json.loads(gs.read_text()))
+    checks = _checks(data)
+    hidden = checks[f"p{HIDDEN_PROBLEM}.secret_vector"]
+    assert (hidden["visibility"], hidden["status"], hidden["score"], hidden["max_score"]) == (WITHHELD, "failed",
+                                                                                             0, 3)
+    assert checks[f"p{HIDDEN_PROBLEM}.visible_rotation"]["visibility"] == "visible"
+    seen = visible_text(data)
+    assert "SECRET" not in seen and "1 hidden check worth 3 points" in data["output"]
+    assert data["score"] == 1.0 and data["extra_data"]["seed"] == 7 and "(seed 7)" in data["output"]
+
+    # a secret check (multiple choice) answered wrongly: its message would give the key away
+    choice = next(m for m in planted_mistakes(10) if m.name == "p10-a-orthonormal-option")
+    folder = copy_reference(tmp_path / "choice")
+    answers = folder / "answers.toml"
+    answers.write_text(answers.read_text().replace(choice.old, choice.new))
+    gs = tmp_path / "secret.json"
+    assert main(["problem-10", "--submission", str(folder), "--seed", "3", "--gradescope", str(gs)]) == 1
+    capsys.readouterr()
+    data = validate(json.loads(gs.read_text()))
+    secret = _checks(data)[choice.check]
+    assert (secret["visibility"], secret["status"]) == (WITHHELD, "failed") and choice.message in secret["output"]
+    assert choice.message not in visible_text(data)
+    assert {c for c, t in _checks(data).items() if t["visibility"] == WITHHELD} == {"p10.a", "p10.b"}
+
+
+def test_the_gradescope_file_of_an_unloadable_submission_says_why_once(tmp_path, capsys):
+    bad = tmp_path / "work.zip"
+    bad.write_bytes(b"this is not a zip archive")
+    gs = tmp_path / "results.json"
+    assert main(["problem-6", "--submission", str(bad), "--gradescope", str(gs)]) == 2
+    capsys.readouterr()
+    data = validate(json.loads(gs.read_text()))
+    assert data["output"].startswith("Your submission could not be loaded (problem 6): ")
+    assert data["output"].count("not a readable zip archive") == 1
+    assert data["score"] == 0 and data["extra_data"]["load_errors"].keys() == {"6"}
+    assert data["tests"] and {t["visibility"] for t in data["tests"]} == {"visible"}
+    for test in data["tests"]:
+        assert test["output"] == "Not run: your submission could not be loaded (the reason is at the top).", test

@@ -62,7 +62,7 @@ def test_cluster_batch_with_a_worker_killed_midway_grades_every_student_once(tmp
         expected[f"ref_{i}"] = 10.0
     mistake = next(m for m in planted_mistakes(6) if m.name == "p06-vectors-transpose")
     build_planted(mistake, subs / "planted")
-    expected["planted"] = 8.0
+    expected["planted"] = 9.0  # the vectors check (1 point) fails, nothing else
     out = tmp_path / "results"
     db = out / GRADEBOOK_NAME
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)

@@ -22,6 +22,7 @@ import subprocess
 import sys
 import tempfile
 import zipfile
+from dataclasses import replace
 from pathlib import Path
 
 import jsonschema
@@ -473,3 +474,23 @@ def test_a_defect_of_the_installed_grader_fails_setup_and_is_never_the_students_
         assert checks[check]["output"].startswith("Not graded: a fault of the grader"), checks[check]["output"]
         assert "the earlier check could not run" in checks[check]["output"]
     assert {t["status"] for c, t in checks.items() if c not in later | {broken_id}} == {"passed"}
+
+
+def test_results_take_seed_time_and_hand_scores_from_the_reports():
+    """What ``grade problem-N --gradescope`` and the batch's export pass: reports alone (the seed, the grading time
+    and the withheld checks follow from them), with a free-text answer already scored by hand."""
+    first, = _synthetic_reports()
+    scored = replace(first, duration=3.6, manual=(replace(first.manual[0], score=1.5),))
+    other = ProblemReport(98, "Other", (CheckResult("p98.x", 98, "x", Status.PASSED, 1, 1),), seed=9, duration=1.0)
+    data = validate(results_json([scored, other]))
+    assert data["execution_time"] == 5 and data["extra_data"]["seed"] is None
+    assert data["extra_data"]["seeds"] == {"99": 5, "98": 9}
+    assert "(seeds 5 (problem 99), 9 (problem 98))" in data["output"]
+    assert data["score"] == 4.0 + 1.5 + 1.0  # the checks' points and the hand-scored answer's
+    why = next(t for t in data["tests"] if t["extra_data"].get("free_text") == "why")
+    assert (why["score"], why["max_score"], why["status"]) == (1.5, 2.0, "failed")
+    assert "1.5 of 2 points" in why["output"]
+    assert "Free-text answers scored by hand (1): 1.5 of 2 points." in data["output"]
+    # the hidden check is withheld by its own visibility, without any module of problem 99 or 98
+    assert next(t for t in data["tests"] if t["extra_data"].get("check_id") == "p99.deep")["visibility"] == WITHHELD
+    assert "fresh" not in data["output"]

@@ -14,7 +14,7 @@ child is forked, or on the workers of a Dask cluster (``cluster``); the parent a
 
 RESULTS receives the gradebook (``gradebook.sqlite``), ``grades.csv``, ``summary.html`` (the class summary),
 ``manual_answers.csv`` (free-text answers, with a score column to fill in and import) and, per student,
-``students/NAME/results.json`` (Gradescope's format) and ``students/NAME/report.html`` (the student's view).
+``students/NAME/results.json`` (Gradescope's, built as the autograder builds it: ``grader.gradescope.results_json``) and ``students/NAME/report.html`` (the student's view).
 
 The names below are imported when first used, so that ``grade`` starts without importing the batch machinery.
 """

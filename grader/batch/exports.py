@@ -1,5 +1,6 @@
 """The exports of a gradebook: grades.csv, manual_answers.csv, the class summary (summary.html) and, per student,
-a Gradescope results.json and an HTML report (the student's view).
+a Gradescope results.json (built by the autograder's own ``grader.gradescope.results_json``) and an HTML report
+(the student's view).
 
 A batch writes each student's own files as soon as that student is recorded (``export_student``), and the files
 about the whole class once at the end (``export_results(..., students=False)``); ``grade export`` and
@@ -10,7 +11,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import os
 import statistics
 from collections import Counter, defaultdict
@@ -62,11 +62,12 @@ def _by_student(graded: list[Graded]) -> dict[str, list[Graded]]:
 
 
 def _student_files(out: Path, name: str, items: list[Graded]) -> None:
-    from ..render import gradescope_results, render_html
+    from ..gradescope import render_results
+    from ..render import render_html
 
     reports = [g.report for g in items]
     folder = out / "students" / name
-    _write(folder / "results.json", json.dumps(gradescope_results(reports), indent=2) + "\n")
+    _write(folder / "results.json", render_results(reports))
     _write(folder / "report.html", render_html(reports, title=f"Grading report: {name}"))
 
 
