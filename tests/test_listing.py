@@ -32,3 +32,20 @@ def test_grade_list_imports_no_check_module_once_cached(tmp_path):
     assert f"{len(infos)} problems have checks; {sum(p.points for p in infos):g} points" in second
     for info in infos:
         assert f"{info.title}" in second
+
+
+def test_the_readme_states_what_grade_list_lists():
+    """The README's count of graded problems, their automatic points and the problems without checks are
+    those of the check modules."""
+    import re
+
+    text = " ".join((ROOT / "README.md").read_text().split())
+    infos = problems()
+    numbers = {p.number for p in infos}
+    stated = re.search(r"Of the course's 47 problems in seven exercises, (\d+) are graded \((\d+) points by automatic "
+                       r"checks.*?\); (\d+) and (\d+) are reading only", text)
+    assert stated, "the README no longer states the problem count"
+    graded, points, *reading = (int(x) for x in stated.groups())
+    assert graded == len(infos)
+    assert points == round(sum(p.points for p in infos))
+    assert set(reading) == set(range(1, 48)) - numbers
