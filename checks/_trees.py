@@ -351,7 +351,12 @@ _GENERIC_HINTS = {
 
 def candidates(ctx, description, q, qd=None, qdd=None, models=MODELS):
     """``[(name, hint, bodies)]``: the bodies' states that the mistaken recursions compute for this case, asked of
-    the reference now (from the case alone, whatever the student's answer), mistakes that change nothing left out."""
+    the reference from the case alone (whatever the student's answer) when a comparison first consults them (see
+    ``Context.catalogue``), mistakes that change nothing left out."""
+    return ctx.catalogue(lambda: _candidates(ctx, description, q, qd, qdd, models))
+
+
+def _candidates(ctx, description, q, qd, qdd, models):
     motion = qd is not None
     values = (q,) if qd is None else (q, qd, qdd)
     relevant = [model for model in models if _relevant(model, description, motion)]

@@ -17,7 +17,7 @@ from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 
-__all__ = ["Context", "simplicity"]
+__all__ = ["Context", "Catalogue", "simplicity"]
 
 
 class Context:
@@ -79,6 +79,17 @@ class Context:
         """Run ``probe`` on the reference (cached in memory, and on disk when ``persist``); in the kit, the value
         recorded in the answer key."""
         return self.oracle.reference(probe, args, persist, check=self.check_id)
+
+    def catalogue(self, compute):
+        """A catalogue of known mistakes: ``compute()`` returns it (a list, from ``ctx.reference`` calls on the
+        inputs alone), computed when it is first consulted, i.e. when a comparison fails: a passing comparison
+        costs no mistaken computation.  While the kit's answer key is recorded it is computed at once, so that
+        the key holds its reference calls for every input whatever the comparison finds (the kit consults them
+        when a student's value fails there)."""
+        catalogue = Catalogue(compute)
+        if self.oracle.mode == "record":
+            catalogue.items()
+        return catalogue
 
     def draw(self, make):
         """Random data that the check draws itself: ``make(rng)`` with a numpy ``Generator`` returns plain data.
@@ -223,6 +234,32 @@ class Context:
         if state["fatal"] is not None:
             raise state["fatal"]
         return state["last"]
+
+
+class Catalogue:
+    """A list of known mistakes computed when first consulted (see ``Context.catalogue``): iterate it, index it,
+    take its length."""
+
+    def __init__(self, compute):
+        self._compute = compute
+        self._items: list | None = None
+
+    def items(self) -> list:
+        if self._items is None:
+            self._items = list(self._compute())
+        return self._items
+
+    def __iter__(self):
+        return iter(self.items())
+
+    def __len__(self) -> int:
+        return len(self.items())
+
+    def __getitem__(self, index):
+        return self.items()[index]
+
+    def __bool__(self) -> bool:
+        return bool(self.items())
 
 
 #: hypothesis looks for a failure to shrink among this many times the check's examples (plus ten)

@@ -1,0 +1,49 @@
+"""Catalogues of known mistakes computed when a comparison consults them (a failure), and at once while the kit's
+answer key is recorded, so that the key holds them for every input the kit may grade."""
+
+from grader.context import Context
+from grader.kit import ReferenceChild, record_key
+from grader.oracle import LiveOracle, RecordingOracle
+from grader.runner import _run_checks, problem_module
+from grader.results import Status
+
+MISTAKEN = "_trees.mistaken_states"
+
+
+def test_a_catalogue_is_computed_once_when_first_consulted_and_at_once_while_recording():
+    made = []
+
+    def compute(tag):
+        made.append(tag)
+        return [tag]
+
+    live = Context(31, None, {}, None, 1, LiveOracle())
+    catalogue = live.catalogue(lambda: compute("live"))
+    assert made == []
+    assert list(catalogue) == ["live"] and len(catalogue) == 1 and catalogue[0] == "live" and catalogue
+    assert made == ["live"]
+    Context(31, None, {}, None, 1, RecordingOracle(1, "fingerprint")).catalogue(lambda: compute("recorded"))
+    assert made == ["live", "recorded"]
+
+
+class CountingOracle(LiveOracle):
+    """The live reference, counting the probes asked of it."""
+
+    def __init__(self):
+        super().__init__()
+        self.asked: list[str] = []
+
+    def reference(self, probe, args, persist=False, check=None):
+        self.asked.append(probe)
+        return super().reference(probe, args, persist, check)
+
+
+def test_passing_tree_comparisons_compute_no_mistaken_recursion_but_the_key_holds_them():
+    oracle = CountingOracle()
+    results = _run_checks(problem_module(31), Context(31, ReferenceChild(oracle), {}, None, 7, oracle), 31)
+    assert all(r.status is Status.PASSED for r in results)
+    assert oracle.asked and MISTAKEN not in oracle.asked
+    key, _ = record_key(problems=[31], seed=7)
+    recorded = [entry["checks"] for call, entry in key.calls.items() if call.startswith(MISTAKEN + "[")]
+    pooled = len(key.pools["p31.random_trees#0"])
+    assert sum("p31.random_trees" in checks for checks in recorded) >= pooled  # one catalogue per recorded input
