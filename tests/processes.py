@@ -1,12 +1,22 @@
 """What the tests read of the machine's processes through /proc: a process's descendants, whether it still runs,
-its command line, and the processes a test leaves behind."""
+its command line, and the processes a test leaves behind; and how a test starts a process that it interrupts."""
 
 from __future__ import annotations
 
 import os
+import signal
 from pathlib import Path
 
-__all__ = ["descendants", "alive", "cmdline", "processes_with", "new_processes"]
+__all__ = ["descendants", "alive", "cmdline", "processes_with", "new_processes", "default_ctrl_c"]
+
+
+def default_ctrl_c() -> None:
+    """For ``subprocess.Popen(preexec_fn=...)``: the child starts with SIGINT's default action, whatever this
+    process inherited.  A non-interactive shell starts its background jobs (``pytest ... &``) with SIGINT ignored,
+    every process they start inherits that, and Python leaves an ignored SIGINT ignored (it raises
+    KeyboardInterrupt only when SIGINT had its default action at start-up): a test that sends SIGINT would then
+    test how pytest was started, not the program."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def descendants(pid: int) -> list[int]:

@@ -39,7 +39,7 @@ from .batch_fixtures import (
     zip_folder,
 )
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
-from .processes import alive, cmdline, descendants
+from .processes import alive, cmdline, default_ctrl_c, descendants
 from .test_gradescope import validate, visible_text
 
 LIMITS = Limits(call_timeout=BATCH_LIMITS["call_timeout"], import_timeout=BATCH_LIMITS["import_timeout"])
@@ -339,7 +339,8 @@ def test_ctrl_c_stops_the_batch_cleanly_keeping_what_was_graded(tmp_path):
     build_slow(subs / "slow_student")
     copy_reference(subs / "zoe")
     out = tmp_path / "results"
-    batch = subprocess.Popen(batch_command(subs, out), cwd=ROOT, stderr=subprocess.PIPE, text=True)
+    batch = subprocess.Popen(batch_command(subs, out), cwd=ROOT, stderr=subprocess.PIPE, text=True,
+                             preexec_fn=default_ctrl_c)  # Ctrl-C reaches it however pytest was started
     try:
         deadline = time.monotonic() + 60
         while not committed(out / GRADEBOOK_NAME) and time.monotonic() < deadline and batch.poll() is None:
@@ -354,6 +355,24 @@ def test_ctrl_c_stops_the_batch_cleanly_keeping_what_was_graded(tmp_path):
     ((state, graded),) = rows(out / GRADEBOOK_NAME, "SELECT state, graded FROM runs")
     assert state == "interrupted" and 1 <= graded < 3 and len(graded_rows(out / GRADEBOOK_NAME)) == graded
     assert not (out / "grades.csv").exists()  # exports wait for a finished batch
+
+
+SIGINT_ACTION = "import signal; print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"
+
+
+def test_a_process_the_tests_interrupt_takes_ctrl_c_even_when_pytest_runs_as_a_background_job():
+    """``pytest ... &`` in a script starts pytest with SIGINT ignored, and so every process it starts: the
+    Ctrl-C test then saw its batch finish (exit 0) instead of stop.  Its batch is started with SIGINT's default
+    action, which Python turns into KeyboardInterrupt."""
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)  # as a background job of a non-interactive shell
+    try:
+        inherited, reset = [subprocess.run([sys.executable, "-c", SIGINT_ACTION], capture_output=True, text=True,
+                                           timeout=60, **extra).stdout.strip()
+                            for extra in ({}, {"preexec_fn": default_ctrl_c})]
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    assert inherited == "False"  # the cause: an ignored SIGINT stays ignored in a Python child
+    assert reset == "True"
 
 
 def test_a_worker_killed_while_it_starts_is_started_again(tmp_path):

@@ -54,7 +54,8 @@ def student(name: str, dest, nonce: str):
 
 def printed(output: str, tag: str) -> dict:
     """The JSON line a submission printed (the first: a leaver that killed its zygote is imported again)."""
-    line = next(line for line in output.splitlines() if line.startswith(tag + " "))
+    line = next((line for line in output.splitlines() if line.startswith(tag + " ")), None)
+    assert line is not None, f"the submission printed no {tag} line; its output: {output[-2000:]!r}"
     return json.loads(line[len(tag) + 1:])
 
 
@@ -90,8 +91,10 @@ def assert_isolated(leaver_output: str, spy_output: str, again_output: str, isol
     seen, again = printed(spy_output, "SPY"), printed(again_output, "SPY")
     # what the first student managed to leave behind (what its sandbox allowed it)
     assert done["threads"] >= 2 and done["daemon"] is True and done["shm"] is True
-    if root:  # the warm process is not the student's to signal (without root, it is started again if killed)
-        assert done["killed_parent"] != True  # noqa: E712
+    # as root, the warm process is not the student's to signal: the kill fails, and the leaver lives to say so
+    # (without root, the kill succeeds, and the warm process is started again for the next student)
+    if root:
+        assert printed(leaver_output, "KILL")["killed_parent"] != True  # noqa: E712
     assert seen["math_patched"] is False and seen["numpy_patched"] is False and seen["leftover_module"] is False
     assert seen["environment"] is None
     assert seen["threads"] == 1 and seen["tasks"] == 1
