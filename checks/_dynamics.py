@@ -313,7 +313,6 @@ def check_kinetic_energy(got, args):
 def check_gravity_gradient(got, args, h=H):
     """``g = -dV/dq`` for the potential ``V = -sum(m I_grav . I_r_IB)`` of the student's own positions."""
     description, q, _, I_grav = args[:4]
-    nq = len(q)
     masses = {body["name"]: body["m"] for body in description["bodies"]}
     names = [body["name"] for body in got["bodies"]]
 
