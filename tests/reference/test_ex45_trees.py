@@ -13,61 +13,17 @@ from reference.tree import (
     Body,
     KinematicTree,
     RigidJoint,
-    RollingContactJoint,
     RotationalJoint,
-    TranslationalJoint,
-    Virtual3DOFJoint,
     generalized_gravity,
     tree_lines,
 )
-from tests.strategies import angles, rotations, vectors
+from tests.strategies import JOINT_CLASSES, angles, make_joint, rotations, trees, vectors
 
 EXAMPLES = settings(max_examples=40, deadline=None)
-JOINT_CLASSES = {
-    "rotational": RotationalJoint,
-    "translational": TranslationalJoint,
-    "rolling_contact": RollingContactJoint,
-    "virtual_3dof": Virtual3DOFJoint,
-    "rigid": RigidJoint,
-}
-MOVING_KINDS = ("rotational", "translational", "rolling_contact", "virtual_3dof")
 E3 = np.eye(3)
 
 
 # ---------------------------------------------------------------- strategies: random trees and states
-
-
-def make_joint(kind, predecessor, successor, first_index, r=0.3, **geometry):
-    """A joint of type ``kind`` (a key of ``JOINT_CLASSES``) on the coordinates from ``first_index`` on."""
-    cls = JOINT_CLASSES[kind]
-    index = list(range(first_index, first_index + cls.nq))
-    if cls is RollingContactJoint:
-        return cls(predecessor, successor, r=r, q_index=index, **geometry)
-    return cls(predecessor, successor, q_index=index, **geometry)
-
-
-@st.composite
-def trees(draw, max_bodies=5):
-    """Random trees: each new body hangs at a random earlier body through a random joint type with random
-    offsets and joint-frame orientations; coordinates are numbered in creation order.  The first joint moves, so
-    ``nq >= 1``."""
-    n = draw(st.integers(1, max_bodies))
-    bodies = [Body("body_0", m=draw(st.floats(0.1, 5.0)))]
-    nq = 0
-    for k in range(1, n + 1):
-        predecessor = bodies[draw(st.integers(0, k - 1))]
-        body = Body(f"body_{k}", m=draw(st.floats(0.1, 5.0)))
-        kind = draw(st.sampled_from(MOVING_KINDS if k == 1 else tuple(JOINT_CLASSES)))
-        geometry = {
-            "P_r_PDp": draw(vectors(3, 1.0)),
-            "A_PDp": draw(rotations()),
-            "S_r_SDs": draw(vectors(3, 1.0)),
-            "A_SDs": draw(rotations()),
-        }
-        joint = make_joint(kind, predecessor, body, nq, r=draw(st.floats(0.05, 1.0)), **geometry)
-        nq += joint.nq
-        bodies.append(body)
-    return KinematicTree(bodies[0])
 
 
 @st.composite

@@ -9,57 +9,26 @@ from reference import problem_24, problem_37, problem_38, problem_39, problem_40
 from reference.dynamics import DynamicBody, energy, equations_of_motion, forward_dynamics, inverse_dynamics
 from reference.problem_32 import I_GRAV as ROBOT_GRAV
 from reference.problem_32 import desired_trajectory
-from reference.tree import (
-    KinematicTree,
-    RigidJoint,
-    RollingContactJoint,
-    RotationalJoint,
-    TranslationalJoint,
-    Virtual3DOFJoint,
-)
-from tests.strategies import inertia_matrices, rotations, vectors
+from reference.tree import KinematicTree, RotationalJoint
+from tests.strategies import inertia_matrices, trees, vectors
 
 EXAMPLES = settings(max_examples=30, deadline=None)
-JOINTS = {
-    "rotational": RotationalJoint,
-    "translational": TranslationalJoint,
-    "rolling_contact": RollingContactJoint,
-    "virtual_3dof": Virtual3DOFJoint,
-    "rigid": RigidJoint,
-}
-MOVING = ("rotational", "translational", "rolling_contact", "virtual_3dof")
 H = 1e-6
 
 
 # ---------------------------------------------------------------- random dynamic trees
 
 
-@st.composite
-def dynamic_trees(draw, max_bodies=4):
-    """Trees of ``DynamicBody`` with random masses and inertias, joint types, offsets and frames; every body past
-    the root has mass, so ``M`` is positive definite."""
-    n = draw(st.integers(1, max_bodies))
-    bodies = [DynamicBody("body_0", draw(st.floats(0.1, 5.0)), draw(inertia_matrices()))]
-    nq = 0
-    for k in range(1, n + 1):
-        predecessor = bodies[draw(st.integers(0, k - 1))]
-        body = DynamicBody(f"body_{k}", draw(st.floats(0.1, 5.0)), draw(inertia_matrices()))
-        kind = draw(st.sampled_from(MOVING if k == 1 else tuple(JOINTS)))
-        cls = JOINTS[kind]
-        geometry = {"P_r_PDp": draw(vectors(3, 1.0)), "A_PDp": draw(rotations()), "S_r_SDs": draw(vectors(3, 1.0)),
-                    "A_SDs": draw(rotations()), "q_index": list(range(nq, nq + cls.nq))}
-        if kind == "rolling_contact":
-            geometry["r"] = draw(st.floats(0.05, 1.0))
-        cls(predecessor, body, **geometry)
-        nq += cls.nq
-        bodies.append(body)
-    return KinematicTree(bodies[0])
+def dynamic_body(draw, name):
+    """A ``DynamicBody`` with a random mass and inertia: every body past the root has mass, so ``M`` is positive
+    definite."""
+    return DynamicBody(name, draw(st.floats(0.1, 5.0)), draw(inertia_matrices()))
 
 
 @st.composite
 def dynamic_states(draw):
     """``(tree, q, qd, qdd, I_grav)``."""
-    tree = draw(dynamic_trees())
+    tree = draw(trees(max_bodies=4, body=dynamic_body))
     q, qd, qdd = (draw(vectors(tree.nq, 2.0)) for _ in range(3))
     return tree, q, qd, qdd, draw(vectors(3, 10.0))
 
