@@ -86,31 +86,66 @@ def png(draw, height: float = 4.2) -> str:
     return _encode(canvas)
 
 
+
 #: the line of a curve by its role: the student's solid and wider, the reference's dashed
 STYLES = {"student": ("-", 2.2), "reference": ("--", 1.4)}
 #: inches of one panel: one panel alone is as wide as a plot of the class summary, panels side by side narrower
 PANEL = {1: (6.4, 4.2), 2: (4.6, 4.2), 3: (4.0, 3.9), 4: (3.4, 3.6)}
-#: a figure in space of one panel is wider: its legend stands beside the axes, not over them
-SPATIAL = (8.0, 4.6)
+#: inches of a single panel in space (its legend stands beside it, in room added to the figure's width)
+SPATIAL = (5.6, 4.6)
+#: a figure's margins in inches, set rather than measured (measuring the whole figure, as ``tight_layout`` and a
+#: tight bounding box do, costs a drawing of it each): room left of and below 2-D axes for tick labels and an axis
+#: label (more when the tick labels are wider), above them for each line of title; 3-D axes draw their tick labels
+#: within their own box
+MARGINS = {"left": 0.85, "bottom": 0.6, "right": 0.2, "top": 0.15, "title_line": 0.25, "legend_gap": 0.1}
+MARGINS_3D = {"left": 0.05, "bottom": 0.3, "right": 0.3, "top": 0.1}
 
 
-def _legend(axes, canvas) -> None:
-    """One legend for the figure, each label once (the three axes of a frame share the colour of their axis, not
-    of their frame); in the single panel, or under the panels side by side."""
+def _lines(text: str) -> int:
+    return text.count("\n") + 1 if text else 0
+
+
+def _legend_entries(axes) -> dict:
+    """Each label once (the three axes of a frame share the colour of their axis, not of their frame)."""
     entries = {}
     for ax in axes:
         for handle, label in zip(*ax.get_legend_handles_labels()):
             entries.setdefault(label, handle)
-    if not entries:
-        return
-    if len(axes) == 1 and axes[0].name == "3d":
-        axes[0].legend(entries.values(), entries.keys(), fontsize="small", loc="upper left",
-                       bbox_to_anchor=(1.12, 1.0))
-    elif len(axes) == 1:
-        axes[0].legend(entries.values(), entries.keys(), fontsize="small", loc="best")
-    else:
-        canvas.legend(entries.values(), entries.keys(), fontsize="small", loc="lower center",
-                      ncol=min(len(entries), 4), frameon=False)
+    return entries
+
+
+def _left_room(canvas, ax) -> float:
+    """Inches left of 2-D axes that their tick labels and axis label take (the labels' text measured alone)."""
+    renderer = canvas.canvas.get_renderer()
+    low, high = sorted(ax.get_ylim())
+    ticks = [t.get_window_extent(renderer).width for t in ax.get_yticklabels()
+             if t.get_text() and low <= t.get_position()[1] <= high]
+    label = ax.yaxis.label.get_window_extent(renderer).width if ax.get_ylabel() else 0.0
+    return (max(ticks, default=0.0) + label) / canvas.dpi + 0.25
+
+
+def _place(canvas, axes, title_lines: int, below: float, beside: float, spatial: bool) -> None:
+    """Put the axes in the figure with the fixed margins, ``below`` and ``beside`` inches kept free for a legend."""
+    width, height = canvas.get_figwidth(), canvas.get_figheight()
+    m = MARGINS_3D if spatial else dict(MARGINS, left=max(MARGINS["left"], *(_left_room(canvas, ax) for ax in axes)))
+    top = m["top"] + MARGINS["title_line"] * title_lines
+    between = m["left"] + m["right"]  # one panel's tick labels and the next one's axis label
+    inner = (width - m["left"] - m["right"] - beside - between * (len(axes) - 1)) / len(axes)
+    canvas.subplots_adjust(left=m["left"] / width, right=1 - (m["right"] + beside) / width,
+                           bottom=(m["bottom"] + below) / height, top=1 - top / height,
+                           wspace=between / inner if len(axes) > 1 else 0.2)
+
+
+def _draw_series(ax, series) -> None:
+    style, width = STYLES.get(series.role, (":", 1.4))
+    options = {"linewidth": width, "label": series.label}
+    if series.colour:
+        options["color"] = series.colour
+    if series.marker:
+        options.update(marker=series.marker, markersize=7 if series.role == "student" else 9,
+                       markerfacecolor="none" if series.role == "reference" else None)
+    coordinates = (series.x, series.y, series.z) if series.z else (series.x, series.y)
+    ax.plot(*coordinates, style, **options)
 
 
 def _wrap(title: str, inches: float) -> str:
@@ -135,26 +170,22 @@ def _equal_box(ax, series) -> None:
     ax.set_box_aspect((1, 1, 1))
 
 
-def _draw_series(ax, series) -> None:
-    style, width = STYLES.get(series.role, (":", 1.4))
-    options = {"linewidth": width, "label": series.label}
-    if series.colour:
-        options["color"] = series.colour
-    if series.marker:
-        options.update(marker=series.marker, markersize=7 if series.role == "student" else 9,
-                       markerfacecolor="none" if series.role == "reference" else None)
-    coordinates = (series.x, series.y, series.z) if series.z else (series.x, series.y)
-    ax.plot(*coordinates, style, **options)
+def _inches(canvas, artist) -> tuple[float, float]:
+    """Width and height of one artist in inches, measured with the figure's renderer (its text alone is laid out,
+    not the figure drawn)."""
+    box = artist.get_window_extent(canvas.canvas.get_renderer())
+    return box.width / canvas.dpi, box.height / canvas.dpi
 
 
-def _figure_png(fig) -> str:
-    """A result's figure: the student's curves solid, the reference's dashed; panels side by side, on 3-D axes for
-    a figure in space."""
+def figure_canvas(fig):
+    """The matplotlib figure of a result's figure, laid out: the student's curves solid, the reference's dashed;
+    panels side by side, on 3-D axes for a figure in space; one legend, each label once: in a single 2-D panel,
+    beside a single 3-D panel, under panels side by side (the figure grows to hold it)."""
     plt = _pyplot()
     panels = fig.panels or ("",)
-    width, height = SPATIAL if fig.spatial and not fig.panels else PANEL.get(len(panels), PANEL[4])
-    legend_room = 0.5 if len(panels) > 1 else 0.0
-    canvas = plt.figure(figsize=(width * len(panels), height + legend_room), dpi=90)
+    width, height = SPATIAL if fig.spatial and len(panels) == 1 else PANEL.get(len(panels), PANEL[4])
+    total = width * len(panels)
+    canvas = plt.figure(figsize=(total, height), dpi=90)
     axes = []
     for index, name in enumerate(panels):
         ax = canvas.add_subplot(1, len(panels), index + 1, projection="3d" if fig.spatial else None)
@@ -172,11 +203,36 @@ def _figure_png(fig) -> str:
             if fig.equal_axes:
                 ax.set_aspect("equal", adjustable="datalim")
         axes.append(ax)
-    _legend(axes, canvas)
-    if fig.panels:
-        canvas.suptitle(_wrap(fig.title, width * len(panels)))
-    canvas.tight_layout(rect=(0, legend_room / (height + legend_room), 1, 1))
-    return _encode(canvas, tight=True)
+    entries = _legend_entries(axes)
+    heading = _wrap(fig.title, total) if fig.panels else ""
+    below = beside = 0.0
+    if entries and len(axes) > 1:  # under the panels: as many columns (up to four) as the width holds
+        for columns in range(min(len(entries), 4), 0, -1):
+            legend = canvas.legend(entries.values(), entries.keys(), fontsize="small", loc="lower center",
+                                   ncol=columns, frameon=False, bbox_to_anchor=(0.5, 0.0))
+            wide, tall = _inches(canvas, legend)
+            if wide <= total or columns == 1:
+                break
+            legend.remove()
+        below = tall + MARGINS["legend_gap"]
+        canvas.set_figheight(height + below)
+    elif entries and fig.spatial:  # beside the single panel in space, in room added to the figure
+        legend = canvas.legend(entries.values(), entries.keys(), fontsize="small", loc="upper right",
+                               bbox_to_anchor=(1.0, 1.0))
+        beside = _inches(canvas, legend)[0] + MARGINS["legend_gap"]
+        canvas.set_figwidth(total + beside)
+    elif entries:
+        axes[0].legend(entries.values(), entries.keys(), fontsize="small", loc="best")
+    if heading:
+        canvas.suptitle(heading, y=1 - MARGINS["top"] / canvas.get_figheight() / 2, va="top")
+    title_lines = max(_lines(ax.get_title()) for ax in axes) + _lines(heading)
+    _place(canvas, axes, title_lines, below, beside, fig.spatial)
+    return canvas
+
+
+def _figure_png(fig) -> str:
+    """A result's figure as a base64 PNG (one drawing of the figure)."""
+    return _encode(figure_canvas(fig))
 
 
 def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report") -> str:

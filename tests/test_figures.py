@@ -86,3 +86,62 @@ def test_a_wrong_answer_is_drawn_beside_its_failure(name, tmp_path):
     assert drawn.get(mistake.check) == [FIGURES[mistake.problem][mistake.check]], drawn
     fig = next(f for r in report.results if r.check_id == mistake.check for f in r.figures)
     assert "student" in {s.role for s in fig.series}  # the wrong answer is drawn, over the reference's
+
+
+# ------------------------------------------------------------------------------------------ layout without clipping
+
+def _curve(label, role, panel=0, spatial=False, scale=1.0, n=50):
+    xs = tuple(float(i) / n for i in range(n))
+    ys = tuple(scale * (x * x - 0.3) for x in xs)
+    zs = tuple(1.0 - x for x in xs) if spatial else ()
+    return Series(label, xs, ys, role, zs, "", "", panel)
+
+
+LONG = "yours: the seat (the mean of yours at q + h and q - h, in metres)"
+SHAPES = {
+    "one panel, wide tick labels, a long title": Figure(
+        "Problem 37, computed torques: the end effector's position against the desired one, in metres, over 2 s",
+        "t [s]", "I_r_E [m]", (_curve("yours: x", "student", scale=-123456.7), _curve("reference: x", "reference"))),
+    "three panels, a long legend": Figure(
+        "Problem 46: the robot caught by the wire", "t [s]", "q [rad]",
+        tuple(_curve(f"{who}: joint {j} of the robot", who, panel=p)
+              for p in range(3) for j in range(4) for who in ("yours", "reference")), panels=("a", "b", "c")),
+    "one panel in space, a long legend label": Figure(
+        "Problem 26: the chairoplane at beta = 0.7, phi = 0.4", "x1 [m]", "x3 [m]",
+        (_curve(LONG, "student", spatial=True), _curve("reference: seat", "reference", spatial=True)), zlabel="x2"),
+    "one named panel in space": Figure(
+        "Problem 7: the frame C3 at the end of the animation", "x", "y",
+        (_curve("yours: x-axis", "student", spatial=True),), zlabel="z", panels=("C3 at t = pi",)),
+    "four panels in space": Figure(
+        "Problem 17: the ellipsoids of the sheet's matrices", "x [m]", "y [m]",
+        tuple(_curve("yours: ellipsoid", "student", panel=p, spatial=True) for p in range(4)), zlabel="z [m]",
+        panels=("matrix 1", "matrix 2", "matrix 3", "matrix 4")),
+}
+
+
+@pytest.mark.parametrize("shape", sorted(SHAPES))
+def test_a_figure_holds_all_its_text(shape):
+    """The margins are set rather than measured on the whole figure: every title, label, tick label and legend
+    entry still lies inside the picture, and a legend under panels stays clear of their axis labels."""
+    from grader.render import _pyplot, figure_canvas
+
+    canvas = figure_canvas(SHAPES[shape])
+    try:
+        canvas.canvas.draw()
+        renderer = canvas.canvas.get_renderer()
+        width, height = canvas.bbox.width, canvas.bbox.height
+        parts = {f"axes {i + 1}": ax.get_tightbbox(renderer) for i, ax in enumerate(canvas.axes)}
+        parts.update({f"legend {i + 1}": legend.get_window_extent(renderer) for i, legend in enumerate(canvas.legends)})
+        parts.update({f"legend of axes {i + 1}": ax.get_legend().get_window_extent(renderer)
+                      for i, ax in enumerate(canvas.axes) if ax.get_legend()})
+        if canvas._suptitle is not None:
+            parts["title"] = canvas._suptitle.get_window_extent(renderer)
+        assert any(name.startswith("legend") for name in parts)
+        outside = {name: tuple(round(v) for v in box.extents) for name, box in parts.items()
+                   if box.x0 < -1 or box.y0 < -1 or box.x1 > width + 1 or box.y1 > height + 1}
+        assert not outside, (shape, (width, height), outside)
+        if len(canvas.axes) > 1 and canvas.legends:  # under the panels, clear of their axis labels
+            top = canvas.legends[0].get_window_extent(renderer).y1
+            assert all(ax.xaxis.label.get_window_extent(renderer).y0 >= top - 1 for ax in canvas.axes)
+    finally:
+        _pyplot().close(canvas)
