@@ -23,24 +23,35 @@ def _answer(pkg):
     return _ANSWERS[key]
 
 
+def _functions(pkg):
+    """``{"M", "f", "g"}`` as numeric functions of ``NAMES``, or ``{"problem": text}`` (lambdified once per answer:
+    a call of ``evaluate`` is then only the arithmetic)."""
+    import sympy as sp
+
+    answer = _answer(pkg)
+    cache = ("functions", id(answer))
+    if cache not in _ANSWERS:
+        for key, matrix in answer.items():
+            if matrix.shape not in (SHAPES[key], (SHAPES[key][0], 1), (1, SHAPES[key][0])) or (
+                    key == "M" and matrix.shape != (2, 2)):
+                return {"problem": f"{key} has shape {matrix.shape}, expected {SHAPES[key]}"}
+            unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
+            if unknown:
+                return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
+        _ANSWERS[cache] = {key: sp.lambdify([sp.Symbol(name) for name in NAMES],
+                                            matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
+                           for key, matrix in answer.items()}
+    return _ANSWERS[cache]
+
+
 @probe
 def evaluate(pkg, points):
     """``{"M": [...], "f": [...], "g": [...]}``: the answer at every point ``{symbol name: value}``; or
     ``{"problem": text}`` if an expression has the wrong shape or uses symbols outside ``NAMES``."""
-    import sympy as sp
-
-    answer = _answer(pkg)
-    for key, matrix in answer.items():
-        if matrix.shape not in (SHAPES[key], (SHAPES[key][0], 1), (1, SHAPES[key][0])) or (
-                key == "M" and matrix.shape != (2, 2)):
-            return {"problem": f"{key} has shape {matrix.shape}, expected {SHAPES[key]}"}
-        unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
-        if unknown:
-            return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
-    functions = {key: sp.lambdify([sp.Symbol(name) for name in NAMES],
-                                  matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
-                 for key, matrix in answer.items()}
-    out = {key: [] for key in answer}
+    functions = _functions(pkg)
+    if "problem" in functions:
+        return functions
+    out = {key: [] for key in functions}
     for point in points:
         values = [float(point[name]) for name in NAMES]
         for key, function in functions.items():
