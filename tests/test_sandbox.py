@@ -18,7 +18,7 @@ import pytest
 
 from grader.checking import check
 from grader.cli import main
-from grader.errors import GraderFault, SandboxError, StudentCodeError, WorkerCrash
+from grader.errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from grader.gradebook import GRADEBOOK_NAME
 from grader.loader import materialize
 from grader.results import Status
@@ -154,6 +154,28 @@ def test_a_child_that_closes_its_pipe_and_loops_is_a_crash_and_is_killed(tmp_pat
             assert wait_until(lambda: not new_processes(before)), new_processes(before)
             assert child.call("problem_06.elementary", 1, 0.5).shape == (3, 3)  # a fresh worker answers
     finally:
+        shutil.rmtree(submission.path.parent, ignore_errors=True)
+
+
+def test_a_worker_started_again_gets_the_pipes_it_was_given(tmp_path):
+    """After a time-out the next call starts a fresh worker with new pipes.  Their numbers are whatever is free
+    in the grader then (another thread's worker, a file the grader opened): the worker must be told those, not
+    the numbers of the first worker's pipes (it then wrote its 'ready' to a closed descriptor, a set-up fault)."""
+    mode = sandbox_mode()
+    if not mode.isolated and refusal() is not None:
+        pytest.skip("covered by the refusal: no child runs here without bubblewrap")
+    submission = materialize(build_hostile("infinite_loop_call", tmp_path / "pkg"))
+    held = []
+    try:
+        with Child(submission.path, Limits(call_timeout=1.0), mode) as child:
+            child.call("problem_06.elementary", 1, 0.5)
+            with pytest.raises(StudentTimeout):
+                child.call("problem_06.frames")
+            held = [os.open(os.devnull, os.O_RDONLY) for _ in range(6)]  # the lowest free numbers, taken
+            assert child.call("problem_06.elementary", 1, 0.5).shape == (3, 3)
+    finally:
+        for fd in held:
+            os.close(fd)
         shutil.rmtree(submission.path.parent, ignore_errors=True)
 
 

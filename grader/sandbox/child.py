@@ -145,7 +145,7 @@ class Child:
             self._launch = prepare(self.submission, to_child_r, from_child_w, self.limits, self.mode, self.python)
         launch = self._launch
         self._proc = subprocess.Popen(
-            launch.argv,
+            launch.with_pipes(to_child_r, from_child_w),
             stdin=subprocess.DEVNULL,
             stdout=self._output,
             stderr=self._errors,

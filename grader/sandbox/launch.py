@@ -319,6 +319,11 @@ class Launch:
     claim: users.UidClaim | None = None
     home: str | None = None
 
+    def with_pipes(self, request_fd: int, reply_fd: int) -> list[str]:
+        """The argv for a worker whose protocol pipes are these descriptors: a worker started again (after one that
+        timed out or crashed) has new pipes, whose numbers are whatever is free in the grader by then."""
+        return [*self.argv[:-4], str(request_fd), str(reply_fd), *self.argv[-2:]]
+
     def after_exit(self, again: bool = True) -> None:
         """After the worker ended: kill every process left under its uid and remove the files that uid wrote;
         remove its private home, and with ``again`` make a fresh one for the next worker."""
