@@ -7,7 +7,8 @@ Prints, in one run, the median (and min/max) of:
 
 * `grade problem-6`, and its ratio to the bare numpy import (target: at most 3 times);
 * a whole submission: `grade problem-6 ... problem-36` in one command, every problem of 6-36 that has checks
-  (29 problems; target 4 s);
+  (29 problems; target 4 s), with the default workers (two on two cores or more) and, as the baseline, with
+  `--workers 1`;
 * each of `--problems` on its own (default 7, 15, 16 and 25, target 2.5 s each; the MuJoCo models of 2 and 3,
   3 s each; and the simulations of Exercises VI-VII, 37, 38, 44 and 46, 4 s each, with the reference's
   simulations cached).
@@ -97,11 +98,15 @@ def main() -> int:
               "ok" if ratio <= RATIO_TARGET else "OVER"))
 
     whole = [n for n in WHOLE if n in available]
+    label = f"grade problem-{whole[0]} ... problem-{whole[-1]} ({len(whole)} problems)"
     times = timed(grade_argv(whole), args.whole_runs)
     median = statistics.median(times)
     status |= median > WHOLE_TARGET
-    print(row(f"grade problem-{whole[0]} ... problem-{whole[-1]} ({len(whole)} problems)", times, base,
-              f"{WHOLE_TARGET:g}s", "ok" if median <= WHOLE_TARGET else "OVER"))
+    print(row(label, times, base, f"{WHOLE_TARGET:g}s", "ok" if median <= WHOLE_TARGET else "OVER"))
+    alone = timed([*grade_argv(whole), "--workers", "1"], args.whole_runs)  # the baseline: one worker
+    print(row("  the same with --workers 1", alone, base))
+    print(f"  {'default workers / one worker':<44}{median / statistics.median(alone):>8.2f}  "
+          f"(the default is {min(2, len(os.sched_getaffinity(0)))} workers for several problems on this machine)")
 
     for number in args.problems:
         if number not in available:

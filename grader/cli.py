@@ -33,6 +33,16 @@ def _problem_number(text: str) -> int:
     return int(match.group(1))
 
 
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number of at least 1")
+    return value
+
+
 def _write(path: str | None, text: str) -> None:
     if path:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
@@ -92,27 +102,38 @@ def _has_checks(number: int) -> bool:
     return importlib.util.find_spec(f"checks.problem_{number:02d}") is not None
 
 
-def _start_worker(source: Path, limits):
-    """Materialize the submission and start its sandboxed worker before the grader imports what grading needs
-    (numpy, the checks): the worker's start-up overlaps those imports.  ``(submission, child)``, or None when
-    the submission cannot be loaded (grading then says why)."""
+def _start_workers(source: Path, limits, count: int):
+    """Materialize the submission and start its sandboxed workers (``count``, each with a copy of its own) before
+    the grader imports what grading needs (numpy, the checks): their start-up overlaps those imports.  A list of
+    ``(submission, child)``, or None when the submission cannot be loaded (grading then says why)."""
     from .errors import SubmissionError
     from .loader import cleanup, materialize
     from .sandbox import Child, sandbox_mode
 
+    started = []
     try:
-        submission = materialize(source)
-    except SubmissionError:
-        return None
-    child = Child(submission.path, limits, sandbox_mode())
-    try:
-        child.start()
+        for _ in range(count):
+            try:
+                submission = materialize(source)
+            except SubmissionError:
+                break
+            _LEFT_TO_REMOVE.append(submission)
+            child = Child(submission.path, limits, sandbox_mode())
+            started.append((submission, child))
+            child.start()
     except BaseException:
-        child.__exit__(None, None, None)
-        cleanup(submission)
+        for _, child in started:
+            child.__exit__(None, None, None)
+        while _LEFT_TO_REMOVE:
+            cleanup(_LEFT_TO_REMOVE.pop())
         raise
-    _LEFT_TO_REMOVE.append(submission)
-    return submission, child
+    return started or None
+
+
+def default_workers(problems: int) -> int:
+    """Workers for ``grade problem-N ...``: two for several problems on a machine with two cores or more, else
+    one (a single problem gains nothing from a second worker's start-up)."""
+    return 2 if problems > 1 and len(os.sched_getaffinity(0)) >= 2 else 1
 
 
 def cmd_problem(args) -> int:
@@ -128,11 +149,13 @@ def cmd_problem(args) -> int:
         print(f"error: {submission} does not exist", file=sys.stderr)
         return EXIT_USAGE
     limits = Limits(call_timeout=args.timeout) if args.timeout else None
-    started = _start_worker(submission, limits)
+    workers = min(args.workers or default_workers(len(numbers)), len(numbers))
+    started = _start_workers(submission, limits, workers)
     from .render import render_gradescope, render_html, render_json, render_terminal
     from .runner import grade_submission
 
-    reports = grade_submission(submission, numbers, seed=args.seed, limits=limits, started=started)
+    reports = grade_submission(submission, numbers, seed=args.seed, limits=limits, started=started,
+                               workers=workers)
     colour = sys.stdout.isatty() and "NO_COLOR" not in os.environ
     print(render_terminal(reports, colour=colour), end="")
     if args.html:
@@ -244,6 +267,9 @@ def _problem_parser() -> argparse.ArgumentParser:
     parser.add_argument("--gradescope", help="write a Gradescope results.json to this file")
     parser.add_argument("--seed", type=int, default=None, help="seed of the randomized checks (to reproduce)")
     parser.add_argument("--timeout", type=float, default=None, help="seconds allowed per call of your code")
+    parser.add_argument("--workers", type=_positive_int, default=None,
+                        help="sandboxed workers grading the problems side by side (default: 2 for several problems "
+                             "on two cores or more, else 1)")
     parser.set_defaults(func=cmd_problem)
     return parser
 

@@ -13,9 +13,14 @@ both, and when several still do, all of them are ("could be X or Y").
 
 from __future__ import annotations
 
+import threading
+
 from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
+
+#: hypothesis's engine is not meant to run in two threads at once
+_HYPOTHESIS = threading.Lock()
 
 __all__ = ["Context", "Catalogue", "simplicity"]
 
@@ -191,6 +196,10 @@ class Context:
     def _shrink(self, strategy, examples: int, evaluate):
         """Bring hypothesis in to find (from the run's seed) and shrink a failing input: ``(args, exc)`` of the
         minimal one, or None when it finds none in its examples (the failure found is then shown as it is)."""
+        with _HYPOTHESIS:  # one shrink at a time in a process (problems graded side by side: one thread each)
+            return self._shrink_alone(strategy, examples, evaluate)
+
+    def _shrink_alone(self, strategy, examples: int, evaluate):
         from hypothesis import HealthCheck, Phase, Verbosity, given, settings
         from hypothesis import seed as hyp_seed
 

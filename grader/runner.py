@@ -303,20 +303,31 @@ def grade_submission(
     zygote=None,
     oracle=None,
     started=None,
+    workers: int = 1,
 ) -> list[ProblemReport]:
     """Grade the given problems of one submission with one sandboxed worker (forked from ``zygote``, a batch
     slot's warm process, when given: see ``grader.sandbox.zygote``); ``oracle`` answers for the reference
     (default: the process's, see ``grader.oracle.current``).  ``started``: the submission already materialized
-    and its worker already started (``grader.cli`` does), so that the worker's start-up overlapped the caller's
-    imports; the caller then removes the submission's copy.  The worker is ended as soon as the last check has
-    its last reply.
+    and its worker already started (``grader.cli`` does; a list of such pairs with ``workers``), so that the
+    worker's start-up overlapped the caller's imports; the caller then removes the submission's copy.  The worker
+    is ended as soon as the last check has its last reply.
+
+    ``workers`` > 1 (without a zygote): the problems are shared out among that many sandboxed workers, each with
+    its own copy of the submission, that grade side by side (``_grade_side_by_side``); the reports come back in
+    the order of ``numbers``.  A batch grades each student with one worker: its slots already keep the cores busy.
 
     Raises ``SandboxError`` (a ``GraderFault``) when the worker cannot be started or cannot import its
     dependencies: a fault of the installation, for which nothing is graded."""
     seed = random.randrange(2**31) if seed is None else seed
     modules = {n: problem_module(n) for n in numbers}
+    if started is not None and not isinstance(started, list):
+        started = [started]
+    workers = min(workers, len(numbers))
+    if workers > 1 and zygote is None:
+        return _grade_side_by_side(source, numbers, modules, workers, seed=seed, limits=limits, mode=mode,
+                                   workdir=workdir, oracle=oracle, started=started)
     if started is not None:
-        submission, child = started
+        submission, child = started[0]
         mode = child.mode
     else:
         mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
@@ -325,39 +336,119 @@ def grade_submission(
         except SubmissionError as exc:
             return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
         child = Child(submission.path, limits, mode, zygote=zygote)
-    answers, answers_error = read_answers(submission.path)
-    reports = []
+    queue = list(numbers)
     try:
-        with child:
-            child.start()
-            for position, number in enumerate(numbers):
-                start = time.perf_counter()
-                ctx = Context(number, child, answers, answers_error, seed, oracle)
-                results = _run_checks(modules[number], ctx, number)
-                stdout, stderr = child.output()
-                if position == len(numbers) - 1:
-                    child.close()  # its last reply is in: nothing more to ask it
-                reports.append(
-                    ProblemReport(
-                        problem=number,
-                        title=modules[number].TITLE,
-                        results=tuple(results),
-                        manual=tuple(_manual_items(modules[number], ctx, number)),
-                        sandbox=child.note,
-                        isolated=mode.isolated,
-                        seed=seed,
-                        duration=time.perf_counter() - start,
-                        stdout=stdout,
-                        stderr=stderr,
-                        submission=str(source),
-                        grader_version=__version__,
-                        notes=problem_notes(submission, number) + child.import_notes,
-                    )
-                )
+        return _grade_in(child, submission, source, lambda: queue.pop(0) if queue else None, modules, seed, oracle)
     finally:
         if started is None:
             cleanup(submission)
+
+
+def _grade_in(child, submission, source, take, modules, seed, oracle) -> list[ProblemReport]:
+    """The reports of the problems that ``take()`` hands out (None: no more), graded with ``child``."""
+    answers, answers_error = read_answers(submission.path)
+    reports = []
+    with child:
+        child.start()
+        number = take()
+        while number is not None:
+            start = time.perf_counter()
+            ctx = Context(number, child, answers, answers_error, seed, oracle)
+            results = _run_checks(modules[number], ctx, number)
+            stdout, stderr = child.output()
+            following = take()
+            if following is None:
+                child.close()  # its last reply is in: nothing more to ask it
+            reports.append(
+                ProblemReport(
+                    problem=number,
+                    title=modules[number].TITLE,
+                    results=tuple(results),
+                    manual=tuple(_manual_items(modules[number], ctx, number)),
+                    sandbox=child.note,
+                    isolated=child.mode.isolated,
+                    seed=seed,
+                    duration=time.perf_counter() - start,
+                    stdout=stdout,
+                    stderr=stderr,
+                    submission=str(source),
+                    grader_version=__version__,
+                    notes=problem_notes(submission, number) + child.import_notes,
+                )
+            )
+            number = following
     return reports
+
+
+def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode, workdir, oracle, started):
+    """``grade_submission`` with ``workers`` sandboxed workers, one thread of this process each (the student's
+    code runs in the workers; the threads mostly wait for their replies).  Each worker takes the next problem of
+    ``numbers`` when it is free, so a long problem does not hold up the rest.  Every worker has a copy of its own
+    and the same limits as a single one; a problem is graded the same in either: its checks' inputs come from the
+    seed and the problem, not from the order.  A grader fault in one worker ends the grading with that fault, as
+    with one worker; an interruption (Ctrl-C) kills every worker before it goes on."""
+    import threading
+
+    mode = started[0][1].mode if started else (mode or sandbox_mode())
+    pairs = list(started or [])
+    try:
+        while len(pairs) < workers:
+            submission = materialize(source, workdir)
+            pairs.append((submission, Child(submission.path, limits, mode)))
+    except SubmissionError as exc:
+        for submission, child in pairs[len(started or []):]:
+            child.__exit__(None, None, None)
+            cleanup(submission)
+        return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
+    queue, lock = list(numbers), threading.Lock()
+    outcomes: list = [None] * workers
+    finished = threading.Semaphore(0)  # waited on rather than Thread.join: an interrupted join (3.11) can take a
+    # thread that still runs for ended
+
+    def take():
+        with lock:
+            return queue.pop(0) if queue else None
+
+    def work(index: int) -> None:
+        submission, child = pairs[index]
+        try:
+            outcomes[index] = ("ok", _grade_in(child, submission, source, take, modules, seed, oracle))
+        except BaseException as exc:  # noqa: BLE001 - handed to the calling thread, raised there
+            with lock:
+                queue.clear()  # the other workers stop after their current problem
+            outcomes[index] = ("raised", exc)
+        finally:
+            finished.release()
+
+    threads = [threading.Thread(target=work, args=(i,), name=f"grade-worker-{i}", daemon=True)
+               for i in range(workers)]
+    ended = 0
+    try:
+        for thread in threads:
+            thread.start()
+        while ended < workers:
+            finished.acquire()
+            ended += 1
+    except BaseException:  # Ctrl-C: every worker killed now, and the threads' waits for replies end with them
+        with lock:
+            queue.clear()
+        for _, child in pairs:
+            child.interrupt()
+        running = sum(1 for thread in threads if thread.ident is not None)
+        for _, child in pairs[running:]:  # never handed to a thread
+            child.__exit__(None, None, None)
+        deadline = time.monotonic() + 30
+        while ended < running and finished.acquire(timeout=max(0.0, deadline - time.monotonic())):
+            ended += 1
+        raise
+    finally:
+        for submission, _ in pairs[len(started or []):]:
+            cleanup(submission)
+    for outcome in outcomes:
+        if outcome is not None and outcome[0] == "raised":
+            raise outcome[1]
+    order = {n: i for i, n in enumerate(numbers)}
+    return sorted((r for outcome in outcomes for r in outcome[1]), key=lambda r: order[r.problem])
 
 
 def grade_problem(problem: int, source: str | Path, **options) -> ProblemReport:

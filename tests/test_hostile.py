@@ -3,7 +3,8 @@ limits, and the grader itself carries on; nothing the submission started or wrot
 
 Every attack runs four ways: a fresh worker and a worker forked from a batch slot's warm process (``-warm``: one
 zygote per mode for the whole module, so that the attacks also follow one another in the same slot), each in
-bubblewrap and as a plain process.
+bubblewrap and as a plain process.  The attacks on other processes, files, pipes and time limits run once more
+in bubblewrap beside a second worker that grades another problem of the same submission (``BESIDE``).
 
 Every outcome is asserted, never a duration: the bounds on time are generous (a loaded machine passes), and the
 speed of the grader is measured by the benchmarks.  In the plain-process mode, a grader running as root whose
@@ -22,7 +23,7 @@ from pathlib import Path
 
 import pytest
 
-from grader import grade_problem
+from grader import grade_problem, grade_submission
 from grader.errors import SandboxError
 from grader.results import Status
 from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode
@@ -157,6 +158,23 @@ HOSTILE_PROBLEMS = {hostile_expectation(name).get("problem", 6) for name in host
 @pytest.mark.parametrize("kind", MODES)
 @pytest.mark.parametrize("name", hostile_names())
 def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes):
+    _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes)
+
+
+#: attacks graded once more in bubblewrap with a second worker grading another problem beside them (``grade
+#: problem-6 problem-8`` on two cores): the ones that reach for other processes, files, pipes and time limits
+BESIDE = ("cache_poison", "closed_pipe_loop", "fork_bomb", "kill_everything", "leftovers", "partial_reply",
+          "steal_reference_files", "wrong_id_flood")
+
+
+@pytest.mark.parametrize("name", BESIDE)
+def test_hostile_submission_beside_another_worker(name, tmp_path, monkeypatch, zygotes):
+    _grade_hostile(name, "bwrap", tmp_path, monkeypatch, zygotes, beside=True)
+
+
+def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False):
+    """Grade the attack's problem (``beside``: with another problem, two workers side by side) and assert what
+    its ``expect.toml`` says."""
     expect = hostile_expectation(name)
     mode = hostile_mode(kind)
     submission = build_hostile(name, tmp_path / "pkg")
@@ -176,7 +194,16 @@ def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes):
     before = set(descendants(os.getpid()))
     try:
         start = time.monotonic()
-        report = grade_problem(problem, submission, seed=7, limits=limits, mode=mode, zygote=zygote)
+        if beside:
+            partner = 8 if problem != 8 else 6
+            report, other = grade_submission(submission, [problem, partner], seed=7, limits=limits, mode=mode,
+                                             workers=2)
+            alone = grade_problem(partner, submission, seed=7, limits=limits, mode=mode)
+            # the other worker's problem is graded as it is alone
+            assert [(r.check_id, r.status, r.score) for r in other.results] == [
+                (r.check_id, r.status, r.score) for r in alone.results]
+        else:
+            report = grade_problem(problem, submission, seed=7, limits=limits, mode=mode, zygote=zygote)
         if warm:
             assert zygote.starts == 1, "the slot's warm process was killed"
         elapsed = time.monotonic() - start

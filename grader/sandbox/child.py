@@ -91,6 +91,7 @@ class Child:
         self.calls = 0
         self.restarts = 0
         self.import_notes: tuple[str, ...] = ()  # what the worker said about the submission's notebooks
+        self._interrupted = False
 
     # ------------------------------------------------------------------ process life
 
@@ -112,7 +113,22 @@ class Child:
         self._await_ready()
         return dict(self.info)
 
+    def interrupt(self) -> None:
+        """Called from another thread than the one using this Child: kill the worker now and start no other.  The
+        using thread's wait for a reply ends (the worker's pipe closes), and its next start of a worker raises
+        ``KeyboardInterrupt``; its ``close`` (or ``with``) still cleans up."""
+        self._interrupted = True
+        proc = self._proc
+        if proc is None or isinstance(proc, ForkedProcess) or proc.returncode is not None:
+            return
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except OSError:
+            pass
+
     def _spawn(self) -> None:
+        if self._interrupted:
+            raise KeyboardInterrupt("the grading was interrupted")
         to_child_r, to_child_w = os.pipe()
         from_child_r, from_child_w = os.pipe()
         try:
