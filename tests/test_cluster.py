@@ -102,3 +102,25 @@ def test_cluster_batch_with_a_worker_killed_midway_grades_every_student_once(tmp
     finally:
         client.close()
         cluster.close()
+
+
+def test_a_local_cluster_starts_with_dask_monitoring_quietened():
+    """``--cluster local:N``: Dask's profiler is off on the workers and its monitors poll slowly (they took about a
+    tenth of a core from the students' grading on two workers)."""
+    import dask
+
+    from grader.batch.cluster import QUIET_MONITORING, open_client
+
+    client, cluster = open_client("local:1")
+    try:
+        seen = client.run(lambda: {key: dask.config.get(key) for key in QUIET_MONITORING})
+        assert list(seen.values()) == [QUIET_MONITORING]
+        (callbacks,) = client.run(lambda dask_worker: {k: c.callback_time for k, c in
+                                                       dask_worker.periodic_callbacks.items()}).values()
+        assert "profile" not in callbacks and callbacks["tick"] == 1000, callbacks  # milliseconds
+        tick = client.run_on_scheduler(lambda dask_scheduler: dask_scheduler.periodic_callbacks["tick"].callback_time)
+        assert tick == 1000  # the scheduler, in this process, read the configuration as it started
+    finally:
+        client.close()
+        cluster.close()
+    assert dask.config.get("distributed.worker.profile.enabled") is True  # the caller's own config is left as it was

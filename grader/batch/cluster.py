@@ -141,14 +141,29 @@ def grade_remote(job: dict) -> tuple[str, object, float]:
 # ------------------------------------------------------------------------------------------ the client's side
 
 
+#: Dask's own monitoring, quietened for a local grading cluster: its statistical profiler samples each worker's
+#: running task every 10 ms (about 3 % of a core per worker, which the students' grading then lacks), and the
+#: event-loop and memory monitors poll 50 and 10 times a second.  The README says how to set the same on the
+#: workers of a cluster a course starts itself.
+QUIET_MONITORING = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.tick.interval": "1s",
+    "distributed.admin.system-monitor.interval": "5s",
+    "distributed.worker.memory.monitor-interval": "1s",
+}
+
+
 def open_client(address: str):
     """A Dask client of the cluster at ``address`` (``tcp://host:8786``, a scheduler file's path), or of a local
-    cluster of N worker processes for ``local:N``; returns ``(client, cluster or None)``."""
+    cluster of N worker processes for ``local:N`` (with ``QUIET_MONITORING``); returns ``(client, cluster or
+    None)``."""
+    import dask
     from distributed import Client, LocalCluster
 
     if address.startswith("local:"):
         count = int(address.split(":", 1)[1] or 1)
-        cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None)
+        with dask.config.set(QUIET_MONITORING):  # read as the scheduler and the workers start
+            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None)
         return Client(cluster), cluster
     if os.path.isfile(address):
         return Client(scheduler_file=address), None
