@@ -145,3 +145,64 @@ def test_a_figure_holds_all_its_text(shape):
             assert all(ax.xaxis.label.get_window_extent(renderer).y0 >= top - 1 for ax in canvas.axes)
     finally:
         _pyplot().close(canvas)
+
+
+# ------------------------------------------------------------------------------------------ one picture, drawn once
+
+def _two_curves(student_shift=0.0, title="Problem 38: the walker's angles"):
+    reference = _curve("reference: theta", "reference")
+    student = _curve("yours: theta", "student")
+    student = Series(student.label, student.x, tuple(y + student_shift for y in student.y), "student")
+    return Figure(title, "t [s]", "theta [rad]", (student, reference))
+
+
+def test_figures_equal_to_the_pixel_are_drawn_once_and_others_anew(monkeypatch):
+    """A batch's exporter draws the picture of a right answer once for every student whose curve agrees with it to
+    a fraction of a pixel; a curve that differs visibly, or another title, is drawn for itself."""
+    import grader.render as render
+
+    drawn = []
+    canvas = render.figure_canvas
+    monkeypatch.setattr(render, "figure_canvas", lambda fig: drawn.append(fig) or canvas(fig))
+    monkeypatch.setattr(render, "_drawn", type(render._drawn)())
+    first = render._figure_png(_two_curves())
+    assert len(drawn) == 1
+    assert render._figure_png(_two_curves(student_shift=1e-12)) == first  # another student's rounding noise
+    assert len(drawn) == 1
+    moved = render._figure_png(_two_curves(student_shift=0.02))  # 1.6 % of the curve's extent: some 7 pixels
+    retitled = render._figure_png(_two_curves(title="Problem 38: the walker's rates"))
+    assert len(drawn) == 3 and len({first, moved, retitled}) == 3
+
+
+def test_the_pictures_kept_are_bounded(monkeypatch):
+    import grader.render as render
+
+    monkeypatch.setattr(render, "_drawn", type(render._drawn)())
+    monkeypatch.setattr(render, "DRAWN_KEPT", 3)
+    monkeypatch.setattr(render, "_encode", lambda canvas: (render._pyplot().close(canvas), "png")[1])
+    for shift in range(6):
+        render._figure_png(_two_curves(student_shift=float(shift)))
+    assert len(render._drawn) == 3
+
+
+@pytest.mark.parametrize("values", [
+    (0.0, 1.0, 0.5, 1.0 / 3.0), (-123456.7, 0.001, 5e4), (1e-9, 2e-9, 3.3e-9), (7.25, 7.25, 7.25),
+    (0.0, 0.0), (float("nan"), 1.0, float("inf"), -2.0), (1e308, -1e308, 0.0), ()])
+def test_on_the_grid_no_point_moves_by_a_tenth_of_a_pixel(values):
+    """The grid is at most 1/4096 of a panel's extent, and the widest panel is under 600 px: a point moves by at
+    most 1/8192 of the extent (0.07 px); values that are not finite stay as they are."""
+    import math
+
+    from grader.render import on_grid
+
+    fig = Figure("f", "x", "y", (Series("yours", values, values, "student"),))
+    (series,) = on_grid(fig).series
+    finite = [v for v in values if math.isfinite(v)]
+    extent = (max(finite) - min(finite)) if finite else 0.0
+    extent = extent if 0 < extent < math.inf else max((abs(v) for v in finite), default=0.0)
+    for before, after in zip(values, series.y):
+        if math.isfinite(before) and math.isfinite(extent):
+            assert abs(after - before) <= extent / 8192 + 1e-300, (before, after, extent)
+        else:
+            assert before == after or (math.isnan(before) and math.isnan(after))
+    assert len(series.x) == len(values) and series.role == "student"
