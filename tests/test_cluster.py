@@ -124,3 +124,69 @@ def test_a_local_cluster_starts_with_dask_monitoring_quietened():
         client.close()
         cluster.close()
     assert dask.config.get("distributed.worker.profile.enabled") is True  # the caller's own config is left as it was
+
+
+def _with_mistakes(dest, mistakes):
+    """A reference with several planted mistakes at once (each applied where its line still occurs once)."""
+    copy_reference(dest)
+    applied = []
+    for mistake in mistakes:
+        target = dest / mistake.file
+        text = target.read_text()
+        if text.count(mistake.old) == 1:
+            target.write_text(text.replace(mistake.old, mistake.new))
+            applied.append(mistake.name)
+    return applied
+
+
+def _verdicts(reports):
+    return {(r.problem, c.check_id): (c.status, c.score, c.diagnosis) for r in reports for c in r.results}
+
+
+@pytest.mark.slow
+def test_planted_and_hostile_submissions_get_the_verdicts_of_a_fresh_worker_on_warm_slots_and_a_cluster(tmp_path):
+    """The warm path (a batch slot's zygote forks each student's worker) and the cluster path (the same slots in
+    Dask workers) grade as a fresh worker does: two students carrying a planted mistake in every other problem
+    each, a reference, and two attacks, graded by --jobs 2 and by a two-worker LocalCluster, against each
+    student graded alone by grade_submission with the seed the batch gave them."""
+    from grader.batch import run_batch
+    from grader.batch.gradebook import Gradebook
+    from grader.runner import grade_submission
+    from grader.runner import problems as all_problems
+
+    from .submissions import build_hostile
+
+    numbers = [p.number for p in all_problems()]
+    first = {}
+    for mistake in planted_mistakes():
+        first.setdefault(mistake.problem, mistake)
+    subs = tmp_path / "subs"
+    applied = {name: _with_mistakes(subs / name, [m for p, m in sorted(first.items()) if p % 2 == parity])
+               for name, parity in (("odd", 1), ("even", 0))}
+    assert all(len(names) >= 15 for names in applied.values()), applied
+    copy_reference(subs / "reference")
+    build_hostile("kill_everything", subs / "killer")
+    build_hostile("leftovers", subs / "leaver")
+    paths = {"--jobs 2": dict(jobs=2), "LocalCluster 2": dict(cluster="local:2")}
+    graded = {}
+    for label, how in paths.items():
+        out = tmp_path / label.replace(" ", "_")
+        report = run_batch(subs, out, problems=numbers, progress=False, export=False, **how)
+        assert report.graded == 5, (label, report)
+        with Gradebook.in_folder(out) as book:
+            rows = book.current()
+        graded[label] = {name: [g.report for g in rows if g.student == name] for name in applied.keys()
+                         | {"reference", "killer", "leaver"}}
+    for name, reports in graded["--jobs 2"].items():
+        seeds = {r.seed for r in reports}
+        assert len(seeds) == 1, (name, seeds)
+        alone = _verdicts(grade_submission(subs / name, numbers, seed=seeds.pop()))
+        for label in paths:
+            assert _verdicts(graded[label][name]) == alone, (label, name)
+    failed = {name: {c.check_id for r in graded["--jobs 2"][name] for c in r.results if not c.passed}
+              for name in applied}
+    for name, names in applied.items():  # every planted mistake still costs its intended check
+        for mistake in (m for m in first.values() if m.name in names):
+            assert mistake.check in failed[name], (name, mistake.name)
+    reference = graded["LocalCluster 2"]["reference"]
+    assert sum(r.score for r in reference) == sum(r.auto_max_score for r in reference)
