@@ -491,3 +491,19 @@ print(f"flood: {_written} MiB, stopped by {_error}")
     written = int(report.stdout.split("flood: ")[1].split(" MiB")[0])
     assert written <= launch.TMP_SIZE_MB, report.stdout
     assert report.score == report.auto_max_score
+
+
+def test_the_test_run_says_how_student_code_runs_here(monkeypatch):
+    """pytest's header: the sandbox of this machine, or the grader's refusal and its fix where it must refuse."""
+    import grader.sandbox as sandbox
+
+    from .conftest import sandbox_header
+
+    monkeypatch.setattr(sandbox, "sandbox_mode", lambda: SandboxMode("bwrap", "bubblewrap: no network"))
+    assert sandbox_header() == ["sandbox: bubblewrap: no network"]
+    monkeypatch.setattr(sandbox, "sandbox_mode", lambda: SandboxMode("process", ""))
+    monkeypatch.setattr(sandbox, "refusal", lambda: "refusing to run student code: ...\nFix: install bubblewrap")
+    header = sandbox_header()
+    assert "refuses to run student code" in header[0] and header[-1] == "  Fix: install bubblewrap"
+    monkeypatch.setattr(sandbox, "refusal", lambda: None)
+    assert sandbox_header() == ["sandbox: a plain process with resource limits (bubblewrap is not available)"]
