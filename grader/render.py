@@ -253,7 +253,9 @@ def _grid_step(values) -> float:
         extent = float(finite.max() - finite.min()) if finite.size else 0.0
     if extent == 0.0:
         extent = float(np.abs(finite).max()) if finite.size else 0.0
-    return 2.0 ** math.floor(math.log2(extent * GRID)) if 0.0 < extent < math.inf else 0.0
+    # the power of two from the extent's own exponent: extent * GRID may underflow (a subnormal extent), and a
+    # step that underflows to zero leaves the values as they are
+    return 2.0 ** (math.floor(math.log2(extent)) + math.floor(math.log2(GRID))) if 0.0 < extent < math.inf else 0.0
 
 
 def on_grid(fig: Figure) -> Figure:

@@ -187,7 +187,7 @@ def test_the_pictures_kept_are_bounded(monkeypatch):
 
 @pytest.mark.parametrize("values", [
     (0.0, 1.0, 0.5, 1.0 / 3.0), (-123456.7, 0.001, 5e4), (1e-9, 2e-9, 3.3e-9), (7.25, 7.25, 7.25),
-    (0.0, 0.0), (float("nan"), 1.0, float("inf"), -2.0), (1e308, -1e308, 0.0), ()])
+    (0.0, 0.0), (float("nan"), 1.0, float("inf"), -2.0), (1e308, -1e308, 0.0), (0.0, 1e-320), ()])
 def test_on_the_grid_no_point_moves_by_a_tenth_of_a_pixel(values):
     """The grid is at most 1/4096 of a panel's extent, and the widest panel is under 600 px: a point moves by at
     most 1/8192 of the extent (0.07 px); values that are not finite stay as they are."""
