@@ -91,14 +91,30 @@ def copy_template(dest: Path) -> Path:
     return dest
 
 
-def build_planted(mistake: Planted, dest: Path) -> Path:
-    copy_reference(dest)
-    target = dest / mistake.file
+def plant(mistake: Planted, folder: Path, strict: bool = True) -> bool:
+    """Apply ``mistake`` to the submission in ``folder``.  Its line must occur there once: else ``ValueError``
+    (``strict``), or the mistake is left out and False returned (an earlier mistake changed that line)."""
+    target = folder / mistake.file
     text = target.read_text()
     if text.count(mistake.old) != 1:
-        raise ValueError(f"{mistake.name}: {mistake.old!r} occurs {text.count(mistake.old)} times in {mistake.file}")
+        if strict:
+            raise ValueError(f"{mistake.name}: {mistake.old!r} occurs {text.count(mistake.old)} times in "
+                             f"{mistake.file}")
+        return False
     target.write_text(text.replace(mistake.old, mistake.new))
+    return True
+
+
+def build_planted(mistake: Planted, dest: Path) -> Path:
+    copy_reference(dest)
+    plant(mistake, dest)
     return dest
+
+
+def build_with_mistakes(dest: Path, mistakes: list[Planted], strict: bool = True) -> list[str]:
+    """A reference with several planted mistakes at once; the names of those applied (all of them if ``strict``)."""
+    copy_reference(dest)
+    return [mistake.name for mistake in mistakes if plant(mistake, dest, strict)]
 
 
 def hostile_names() -> list[str]:

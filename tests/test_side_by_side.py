@@ -13,7 +13,7 @@ from grader.cli import default_workers, main
 from grader.runner import grade_submission
 
 from .processes import default_ctrl_c, descendants
-from .submissions import ROOT, build_hostile, build_planted, copy_reference, planted_mistakes
+from .submissions import ROOT, build_hostile, build_with_mistakes, copy_reference, planted_mistakes
 from .test_batch import assert_gone
 
 #: heavy problems (7's sympy, 15's simulations) and the trees of 31 that reuse 24 and 25
@@ -29,12 +29,7 @@ def _verdicts(reports) -> list:
 
 def _with_mistakes(dest):
     mistakes = {m.name: m for m in planted_mistakes()}
-    first, second = (mistakes[name] for name in MISTAKES)
-    build_planted(first, dest)
-    target = dest / second.file
-    text = target.read_text()
-    assert text.count(second.old) == 1
-    target.write_text(text.replace(second.old, second.new))
+    build_with_mistakes(dest, [mistakes[name] for name in MISTAKES])
     return dest
 
 
