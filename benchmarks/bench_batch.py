@@ -1,7 +1,7 @@
 """Whole-course throughput of ``grade batch``: every problem with checks, a class of 40 submissions, graded at
 ``--jobs 1``, ``--jobs 2`` and on a two-worker Dask ``LocalCluster``, in the same run.
 
-    python benchmarks/bench_batch.py [--students 40] [--jobs 1 2] [--cluster 2] [--problems N ...] [--profile]
+    python benchmarks/bench_batch.py [--students 40] [--jobs 1 2] [--cluster 2] [--problems N|N-M ...] [--profile]
 
 The class (built fresh for the run): copies of the reference (folders, zip archives, notebooks), untouched
 templates, planted mistakes drawn from every problem's catalogue, and two hostile submissions (an endless loop in
@@ -10,6 +10,12 @@ the exports (each student's files as they are recorded, the class's at the end),
 with the per-student medians and the ratios between configurations.  ``--profile`` also grades one reference
 submission in this process under cProfile and says where its time goes.  Targets (issue 13): >= 20 students/min
 at --jobs 2, a speed-up >= 1.8x over --jobs 1, and the cluster within 15% of --jobs 2.
+
+The machine's CPU time is read from /proc/stat around each configuration (every process counts, so run it on an
+otherwise quiet machine): "cpu/student" is the CPU-seconds a student costs, "cores" the mean number of busy cores.
+While a student costs the same CPU time, a batch that keeps c cores busy at one job can be sped up by at most
+(cores of the machine) / c.
+``--problems 6-36`` grades the graded problems of a range (here the 29 of Exercises II-V).
 """
 
 from __future__ import annotations
@@ -87,20 +93,36 @@ def durations(results: Path) -> dict[str, float]:
                                "ON st.id = s.student_id GROUP BY st.name"))
 
 
+def busy_cpu_seconds() -> float | None:
+    """The machine's busy CPU time since boot (all cores, every process), or None where /proc/stat is missing."""
+    try:
+        with open("/proc/stat") as handle:
+            fields = [int(x) for x in handle.readline().split()[1:]]
+    except (OSError, ValueError):
+        return None
+    idle = fields[3] + (fields[4] if len(fields) > 4 else 0)  # idle and iowait
+    guest = sum(fields[8:10])  # guest time is counted in user time too
+    return (sum(fields) - idle - guest) / os.sysconf("SC_CLK_TCK")
+
+
 def run(label: str, scratch: Path, problems: list[int], limits: Limits, **options) -> dict:
     out = scratch / f"results-{label.replace(' ', '-')}"
+    cpu = busy_cpu_seconds()
     start = time.perf_counter()
     report = run_batch(scratch / "class", out, problems=problems, limits=limits, progress=False,
                        student_timeout=None, **options)
     seconds = time.perf_counter() - start
+    cpu = None if cpu is None else busy_cpu_seconds() - cpu
     if report.graded != report.students or report.not_graded:
         raise SystemExit(f"{label}: {report}")
     per_student = durations(out)
     figures = {"label": label, "seconds": seconds, "rate": 60 * report.graded / seconds,
                "median": statistics.median(per_student.values()), "exports": report.student_exports,
-               "tail": report.final_exports, "work": sum(per_student.values()), "students": report.graded}
+               "tail": report.final_exports, "work": sum(per_student.values()), "students": report.graded,
+               "cores": None if cpu is None else cpu / seconds}
+    usage = "" if cpu is None else f"{cpu / report.graded:>10.2f} s{cpu / seconds:>7.2f}"
     print(f"{label:<22}{seconds:>8.1f} s{figures['rate']:>9.1f}/min{figures['median']:>10.2f} s"
-          f"{figures['exports']:>10.1f} s{figures['tail']:>8.1f} s", flush=True)
+          f"{figures['exports']:>10.1f} s{figures['tail']:>8.1f} s{usage}", flush=True)
     return figures
 
 
@@ -143,15 +165,37 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
     print("  slowest problems: " + ", ".join(f"{r.problem} {r.duration:.1f} s" for r in slowest))
 
 
+def chosen_problems(parser: argparse.ArgumentParser, words: list[str] | None) -> list[int]:
+    """The graded problems that ``words`` name (numbers and ranges N-M); a usage error for anything else."""
+    graded = [p.number for p in all_problems()]
+    if not words:
+        return graded
+    chosen: list[int] = []
+    for word in words:
+        low, _, high = word.partition("-")
+        try:
+            span = range(int(low), int(high or low) + 1)
+        except ValueError:
+            parser.error(f"--problems: {word!r} is neither a number nor a range N-M")
+        inside = [n for n in graded if n in span]
+        if not high and not inside:
+            parser.error(f"--problems: problem {word} has no checks (see `grade list`)")
+        chosen += [n for n in inside if n not in chosen]
+    if not chosen:
+        parser.error("--problems: no graded problem in " + " ".join(words))
+    return chosen
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--students", type=int, default=40)
     parser.add_argument("--jobs", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--cluster", type=int, default=2, help="workers of the LocalCluster (0: none)")
-    parser.add_argument("--problems", type=int, nargs="+", default=None, help="default: every problem with checks")
+    parser.add_argument("--problems", nargs="+", default=None, metavar="N|N-M",
+                        help="problems or ranges of problems (default: every problem with checks)")
     parser.add_argument("--profile", action="store_true")
     args = parser.parse_args()
-    problems = args.problems or [p.number for p in all_problems()]
+    problems = chosen_problems(parser, args.problems)
     limits = Limits(call_timeout=BATCH_LIMITS["call_timeout"], import_timeout=BATCH_LIMITS["import_timeout"])
     with tempfile.TemporaryDirectory() as scratch:
         scratch = Path(scratch)
@@ -161,7 +205,8 @@ def main() -> int:
         print(f"class: {len(kinds)} submissions ({', '.join(f'{n} {k}' for k, n in counts.items())}); "
               f"{len(problems)} problems ({sum(p.points for p in all_problems() if p.number in problems):g} points)")
         print(f"limits: {limits.call_timeout:g} s per call, {limits.import_timeout:g} s per import")
-        print(f"\n{'configuration':<22}{'wall':>10}{'rate':>13}{'median/student':>16}{'exports':>8}{'tail':>10}")
+        print(f"\n{'configuration':<22}{'wall':>10}{'rate':>13}{'median/student':>16}{'exports':>8}{'tail':>10}"
+              f"{'cpu/student':>12}{'cores':>7}")
         results = [run(f"--jobs {jobs}", scratch, problems, limits, jobs=jobs) for jobs in args.jobs]
         if args.cluster:
             results.append(run(f"LocalCluster {args.cluster}", scratch, problems, limits,
@@ -172,6 +217,9 @@ def main() -> int:
         if one and two:
             print(f"  speed-up --jobs 2 / --jobs 1: {two['rate'] / one['rate']:.2f}x (target >= 1.8x); "
                   f"--jobs 2: {two['rate']:.1f} students/min (target >= 20)")
+            if one["cores"]:
+                print(f"  --jobs 1 kept {one['cores']:.2f} cores busy: on {os.cpu_count()} cores --jobs 2 can be at "
+                      f"most {os.cpu_count() / one['cores']:.2f}x faster while a student costs the same CPU time")
         cluster = by_label.get(f"LocalCluster {args.cluster}")
         if cluster and two:
             print(f"  LocalCluster {args.cluster} / --jobs 2: {cluster['rate'] / two['rate']:.2f} of its rate "

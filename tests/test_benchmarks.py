@@ -1,0 +1,45 @@
+"""The benchmarks run: a small class through ``benchmarks/bench_batch.py`` prints its figures, and a mistyped problem
+is a usage error before anything is built.  (The figures themselves are measurements, not asserted here.)"""
+
+import re
+import subprocess
+import sys
+
+from .submissions import ROOT
+
+BENCH_BATCH = ROOT / "benchmarks" / "bench_batch.py"
+
+
+def _bench(*args, timeout=300):
+    return subprocess.run([sys.executable, str(BENCH_BATCH), *args], capture_output=True, text=True, timeout=timeout,
+                          cwd=ROOT)
+
+
+def test_bench_batch_prints_rates_cpu_and_the_bound_of_the_speed_up():
+    done = _bench("--students", "6", "--jobs", "1", "2", "--cluster", "0", "--problems", "6")
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    rows = {m.group(1): m for m in re.finditer(
+        r"^(--jobs \d)\s+([\d.]+) s\s+([\d.]+)/min\s+[\d.]+ s\s+[\d.]+ s\s+[\d.]+ s\s+([\d.]+) s\s+([\d.]+)$",
+        done.stdout, re.MULTILINE)}
+    assert set(rows) == {"--jobs 1", "--jobs 2"}, done.stdout
+    for row in rows.values():
+        assert float(row.group(3)) > 0 and float(row.group(4)) > 0 and float(row.group(5)) > 0
+    assert "speed-up --jobs 2 / --jobs 1" in done.stdout
+    assert re.search(r"--jobs 1 kept [\d.]+ cores busy: on \d+ cores --jobs 2 can be at most [\d.]+x faster",
+                     done.stdout), done.stdout
+
+
+def test_bench_batch_refuses_a_problem_without_checks_and_expands_ranges():
+    for words, message in ((["23"], "problem 23 has no checks"), (["x"], "neither a number nor a range"),
+                           (["23-23"], "no graded problem in 23-23")):
+        done = _bench("--problems", *words, timeout=60)
+        assert done.returncode == 2 and message in done.stderr, (words, done.stderr)
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    try:
+        import argparse
+
+        import bench_batch
+        chosen = bench_batch.chosen_problems(argparse.ArgumentParser(), ["6-36"])
+    finally:
+        sys.path.remove(str(ROOT / "benchmarks"))
+    assert chosen[0] == 6 and chosen[-1] == 36 and len(chosen) == 29 and 23 not in chosen and 29 not in chosen
