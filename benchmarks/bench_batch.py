@@ -32,6 +32,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from bench_grade import timed  # noqa: E402
 from grader.batch import run_batch  # noqa: E402
 from grader.gradebook import GRADEBOOK_NAME  # noqa: E402
 from grader.runner import problems as all_problems  # noqa: E402
@@ -100,9 +101,8 @@ def busy_cpu_seconds() -> float | None:
             fields = [int(x) for x in handle.readline().split()[1:]]
     except (OSError, ValueError):
         return None
-    idle = fields[3] + (fields[4] if len(fields) > 4 else 0)  # idle and iowait
-    guest = sum(fields[8:10])  # guest time is counted in user time too
-    return (sum(fields) - idle - guest) / os.sysconf("SC_CLK_TCK")
+    # user, nice, system, irq, softirq: not idle, iowait, the hypervisor's steal, nor guest (counted in user)
+    return sum(fields[i] for i in (0, 1, 2, 5, 6) if i < len(fields)) / os.sysconf("SC_CLK_TCK")
 
 
 def run(label: str, scratch: Path, problems: list[int], limits: Limits, **options) -> dict:
@@ -201,7 +201,9 @@ def main() -> int:
         scratch = Path(scratch)
         kinds = build_course_class(scratch / "class", args.students)
         counts = {kind: sum(1 for k in kinds.values() if k == kind) for kind in dict.fromkeys(kinds.values())}
-        print(f"machine: {os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}; sandbox {sandbox_mode().kind}")
+        numpy_import = statistics.median(timed([sys.executable, "-c", "import numpy"], 7))
+        print(f"machine: {os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}; sandbox {sandbox_mode().kind}; "
+              f'python -c "import numpy" {numpy_import:.3f} s (median of 7: the machine\'s speed today)')
         print(f"class: {len(kinds)} submissions ({', '.join(f'{n} {k}' for k, n in counts.items())}); "
               f"{len(problems)} problems ({sum(p.points for p in all_problems() if p.number in problems):g} points)")
         print(f"limits: {limits.call_timeout:g} s per call, {limits.import_timeout:g} s per import")
