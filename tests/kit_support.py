@@ -73,9 +73,10 @@ class SharedChild:
         return self.child.output()
 
 
-def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED):
+def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED, zygote=None):
     """The live report and the kit's report of one problem of one submission, graded as ``grade_problem`` does
-    (materialized once, one sandboxed child), first with the live reference, then with the answer key."""
+    (materialized once, one sandboxed child), first with the live reference, then with the answer key.  With
+    ``zygote`` (a batch slot's warm process), the child is forked from it, as ``grade batch`` grades."""
     from grader.sandbox import Child
     from grader.context import Context
     from grader.loader import cleanup, materialize, read_answers
@@ -84,11 +85,11 @@ def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED):
     from grader.runner import _manual_items, _run_checks, problem_module
 
     module = problem_module(problem)
-    submission = materialize(source)
+    submission = materialize(source, zygote.staging if zygote is not None else None)
     answers, answers_error = read_answers(submission.path)
     reports = []
     try:
-        with Child(submission.path) as child:
+        with Child(submission.path, zygote=zygote) as child:
             child.start()
             shared = SharedChild(child)
             for oracle in (LiveOracle(), kit_oracle):
