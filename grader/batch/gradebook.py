@@ -250,19 +250,28 @@ def verdict_sources(problem: int) -> list[Path]:
     return sorted(p for p in files if p.is_file())
 
 
+@lru_cache(maxsize=1)
+def _runtime_versions() -> bytes:
+    """Python's version and the versions of the libraries that can change a verdict, read once per process (reading
+    a distribution's metadata parses it; the modules a process grades with are those it loaded, whatever is
+    installed later)."""
+    import importlib.metadata
+    import sys
+
+    parts = [f"python {sys.version_info[0]}.{sys.version_info[1]}\0"]
+    for name in _VERDICT_DEPENDENCIES:
+        try:
+            parts.append(f"{name} {importlib.metadata.version(name)}\0")
+        except importlib.metadata.PackageNotFoundError:
+            parts.append(f"{name} -\0")
+    return "".join(parts).encode()
+
+
 def grader_version(problem: int) -> str:
     """The package version and a digest of every file that decides the problem's verdicts
     (``verdict_sources``) and of the versions of the libraries that can change them: editing shared check or
     probe code regrades the problems that use it, and only those."""
-    import importlib.metadata
-    import sys
-
-    digest = hashlib.sha256(f"python {sys.version_info[0]}.{sys.version_info[1]}\0".encode())
-    for name in _VERDICT_DEPENDENCIES:
-        try:
-            digest.update(f"{name} {importlib.metadata.version(name)}\0".encode())
-        except importlib.metadata.PackageNotFoundError:
-            digest.update(f"{name} -\0".encode())
+    digest = hashlib.sha256(_runtime_versions())
     for path in verdict_sources(problem):
         package = next((p for p in reversed(path.parts[:-1]) if p in (*_PROJECT_PACKAGES, "student_template")), "")
         digest.update(f"{package}/{path.name}\0".encode() + hashlib.sha256(path.read_bytes()).digest())
