@@ -86,7 +86,7 @@ def png(draw, height: float = 4.2) -> str:
     canvas, ax = _pyplot().subplots(figsize=(6.4, height), dpi=90)
     draw(ax)
     ax.grid(True, alpha=0.3)
-    canvas.tight_layout()
+    _place(canvas, [ax], _lines(ax.get_title()), 0.0, 0.0, False)
     return _encode(canvas)
 
 
