@@ -11,8 +11,10 @@ with the per-student medians and the ratios between configurations.  ``--profile
 submission in this process under cProfile and says where its time goes.  Targets (issue 13): >= 20 students/min
 at --jobs 2, a speed-up >= 1.8x over --jobs 1, and the cluster within 15% of --jobs 2.
 
-The machine's CPU time is read from /proc/stat around each configuration (every process counts, so run it on an
-otherwise quiet machine): "cpu/student" is the CPU-seconds a student costs, "cores" the mean number of busy cores.
+The machine's speed of the day is printed first: a bare numpy import and a loop of small-array operations (the
+kind of work the students' code does), so that runs on different days or machines can be compared.  The CPU time
+is read from /proc/stat around each configuration (every process counts, so run it on an otherwise quiet
+machine): "cpu/student" is the CPU-seconds a student costs, "cores" the mean number of busy cores.
 While a student costs the same CPU time, a batch that keeps c cores busy at one job can be sped up by at most
 (cores of the machine) / c.
 ``--problems 6-36`` grades the graded problems of a range (here the 29 of Exercises II-V).
@@ -92,6 +94,25 @@ def durations(results: Path) -> dict[str, float]:
     with sqlite3.connect(results / GRADEBOOK_NAME) as db:
         return dict(db.execute("SELECT st.name, sum(s.duration) FROM submissions s JOIN students st "
                                "ON st.id = s.student_id GROUP BY st.name"))
+
+
+#: a fixed workload of small numpy arrays in a Python loop, like the students' code (the machine's compute speed:
+#: the numpy import measures mostly start-up and the file cache)
+SMALL_ARRAYS = "\n".join([
+    "import time", "import numpy as np", "R, w = np.eye(3), np.array([0.1, 0.2, 0.3])", "start = time.perf_counter()",
+    "for _ in range(20000):", "    R = R @ np.eye(3) + np.outer(np.cross(w, R[0]), w) * 0",
+    "print(time.perf_counter() - start)"])
+
+
+def small_array_seconds(runs: int = 7) -> float:
+    """The median time of ``SMALL_ARRAYS`` in a fresh interpreter (its own loop timed, not the start-up)."""
+    import subprocess
+
+    times = []
+    for _ in range(runs):
+        done = subprocess.run([sys.executable, "-c", SMALL_ARRAYS], capture_output=True, text=True, check=True)
+        times.append(float(done.stdout))
+    return statistics.median(times)
 
 
 def busy_cpu_seconds() -> float | None:
@@ -203,7 +224,8 @@ def main() -> int:
         counts = {kind: sum(1 for k in kinds.values() if k == kind) for kind in dict.fromkeys(kinds.values())}
         numpy_import = statistics.median(timed([sys.executable, "-c", "import numpy"], 7))
         print(f"machine: {os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}; sandbox {sandbox_mode().kind}; "
-              f'python -c "import numpy" {numpy_import:.3f} s (median of 7: the machine\'s speed today)')
+              f'the machine\'s speed today: python -c "import numpy" {numpy_import:.3f} s, 20,000 steps of 3x3 '
+              f"arrays {small_array_seconds():.3f} s (medians of 7)")
         print(f"class: {len(kinds)} submissions ({', '.join(f'{n} {k}' for k, n in counts.items())}); "
               f"{len(problems)} problems ({sum(p.points for p in all_problems() if p.number in problems):g} points)")
         print(f"limits: {limits.call_timeout:g} s per call, {limits.import_timeout:g} s per import")
