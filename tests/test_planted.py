@@ -50,11 +50,6 @@ def slot():
         yield zygote
 
 
-def grade_both(problem, submission, kit_oracle, slot):
-    """The live report and the kit's report of one problem of one submission (one worker forked from ``slot``)."""
-    return grade_live_and_kit(problem, submission, kit_oracle, zygote=slot)
-
-
 @pytest.mark.parametrize("problem", PROBLEMS)
 def test_reference_scores_full_marks(problem, reference_copy, kit_oracle, deferred_ids, slot):
     report = grade_problem(problem, reference_copy, seed=SEED)
@@ -75,7 +70,7 @@ def test_untouched_template_parity(kit_oracle, deferred_ids, slot):
 @pytest.mark.parametrize("mistake", planted_mistakes(), ids=lambda m: m.name)
 def test_planted_mistake_is_caught(mistake, tmp_path, kit_oracle, deferred_ids, slot):
     submission = build_planted(mistake, tmp_path / "pkg")
-    report, kit = grade_both(mistake.problem, submission, kit_oracle, slot)
+    report, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
     by_id = {r.check_id: r for r in report.results}
     target = by_id[mistake.check]
     assert target.status is Status(mistake.status), target.message
@@ -91,7 +86,8 @@ def test_planted_mistake_is_caught(mistake, tmp_path, kit_oracle, deferred_ids, 
 @pytest.mark.parametrize("variant", correct_variants(), ids=lambda v: v["name"])
 def test_correct_variant_scores_full_marks(variant, tmp_path, kit_oracle, deferred_ids, slot):
     """Fairness: another valid answer, or a sound alternative computation, loses nothing."""
-    report, kit = grade_both(variant["problem"], build_variant(variant, tmp_path / "pkg"), kit_oracle, slot)
+    report, kit = grade_live_and_kit(variant["problem"], build_variant(variant, tmp_path / "pkg"), kit_oracle,
+                                     zygote=slot)
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
     assert_same_verdicts(variant["name"], report, kit, deferred_ids)
