@@ -8,7 +8,7 @@ not the launch (direction -1).  The key of (b) is computed by the reference and 
 """
 
 import numpy as np
-from hypothesis import strategies as st
+from grader import strategies as st
 
 from grader.checking import (
     EXACT,

@@ -10,7 +10,7 @@ catalogue of known mistakes, and at the sheet's state with the erratum of lambda
 """
 
 import numpy as np
-from hypothesis import strategies as st
+from grader import strategies as st
 
 from grader.checking import (
     EXACT,

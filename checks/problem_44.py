@@ -9,7 +9,7 @@ reference's.  Random starting states make a memorised event time worthless.
 """
 
 import numpy as np
-from hypothesis import strategies as st
+from grader import strategies as st
 
 from grader.checking import (
     EXACT,

@@ -8,7 +8,7 @@ limit of ``s`` is compared with the reference's at random parameter values.
 """
 
 import numpy as np
-from hypothesis import strategies as st
+from grader import strategies as st
 
 from grader.checking import (
     EXACT,

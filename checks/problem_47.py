@@ -8,7 +8,7 @@ values (the sheet's conventions) against the reference at random pins and states
 """
 
 import numpy as np
-from hypothesis import strategies as st
+from grader import strategies as st
 
 from grader.checking import (
     EXACT,

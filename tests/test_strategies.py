@@ -70,6 +70,18 @@ def test_draw_pool_draws_without_importing_hypothesis():
     assert repr(draw_pool(STRATEGY, 5, 3)) == repr(st.draw_examples(STRATEGY, 5, 3))
 
 
+def test_no_check_module_brings_hypothesis_onto_the_passing_path():
+    """Every check module draws its random inputs with ``grader.strategies``: importing all of them (and the
+    grader's checking layer) leaves hypothesis unimported, so a passing comparison never runs its engine."""
+    code = ("import sys; from grader.runner import problems, problem_module; "
+            "[problem_module(p.number) for p in problems()]; import grader.context; "
+            "print(len(problems()), sorted(m for m in sys.modules if m.split('.')[0] == 'hypothesis')[:3])")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    count, modules = done.stdout.split(" ", 1)
+    assert int(count) >= 45
+    assert modules.strip() == "[]"
+
+
 def test_the_same_strategy_as_a_hypothesis_strategy():
     from hypothesis import HealthCheck, given, settings
 
