@@ -26,6 +26,7 @@ import os
 import shutil
 import tempfile
 import zlib
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -308,13 +309,20 @@ def _cache_secret(base: Path) -> bytes | None:
     return None
 
 
+#: reference results a live oracle keeps in memory, the least recently used dropped first: a batch's slot grades
+#: student after student, each with random inputs of their own (about 1,700 new results, 16 MB, for the whole
+#: course), so an unbounded memory grows without end; the sheet's fixed cases, which every student asks for, are
+#: used again at each student and stay
+MEMORY_ENTRIES = 4096
+
+
 class LiveOracle(Oracle):
     """The reference itself: probes run on the imported ``reference`` package (in the grader's process)."""
 
     mode = "live"
 
     def __init__(self):
-        self._memory: dict[str, tuple[object, object]] = {}  # key -> (encoded, decoded)
+        self._memory: OrderedDict[str, tuple[object, object]] = OrderedDict()  # key -> (encoded, decoded)
 
     # ---------------------------------------------------------------- computing
 
@@ -334,6 +342,7 @@ class LiveOracle(Oracle):
 
         key = call_key(probe, args)
         if key in self._memory:
+            self._memory.move_to_end(key)
             encoded, value = self._memory[key]
             return key, encoded, value
         encoded = self._disk_read(key) if persist else None
@@ -349,6 +358,8 @@ class LiveOracle(Oracle):
                 self._disk_write(key, encoded)
         value = decode(encoded)
         self._memory[key] = (encoded, value)
+        while len(self._memory) > MEMORY_ENTRIES:
+            self._memory.popitem(last=False)
         return key, encoded, value
 
     def reference(self, probe: str, args: tuple, persist: bool = False, check: str | None = None):

@@ -73,6 +73,28 @@ def test_disk_cache_digest_needs_the_private_secret(cache):
     assert _entry(cache).read_text() != before
 
 
+def test_memory_keeps_the_most_recently_used_results_and_no_more(monkeypatch):
+    """A batch's slot lives for the whole class: its memory of reference results is bounded, and the calls every
+    student repeats (the sheet's cases) stay while each student's random inputs pass through."""
+    import grader.oracle as oracle_module
+
+    monkeypatch.setattr(oracle_module, "MEMORY_ENTRIES", 3)
+    oracle = LiveOracle()
+    runs = []
+    real = oracle._run
+    monkeypatch.setattr(oracle, "_run", lambda probe, args: runs.append(args) or real(probe, args))
+    sheet = (0.1, 0.2, 0.3)
+    for student in range(6):  # the sheet's case, then two random inputs of this student
+        oracle.reference("problem_06.cardan", sheet)
+        for k in range(2):
+            oracle.reference("problem_06.cardan", (0.01 * student, 0.02 * k, 0.5))
+    assert len(oracle._memory) == 3
+    assert runs.count(sheet) == 1  # computed once, then remembered across the students
+    assert len(runs) == 1 + 6 * 2
+    oracle.reference("problem_06.cardan", (0.0, 0.0, 0.5))  # the first student's input: dropped long ago
+    assert len(runs) == 14 and len(oracle._memory) == 3
+
+
 # ---------------------------------------------------------------------------------------------- the key
 
 
