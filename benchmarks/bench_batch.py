@@ -167,18 +167,20 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
         total = time.perf_counter() - start
     stats = pstats.Stats(profiler).stats
 
-    def cumulative(fragment: str, name: str) -> float:
-        return max((entry[3] for (file, _, func), entry in stats.items() if fragment in file and func == name),
-                   default=0.0)
+    def cumulative(fragment: str, name: str, required: bool = True) -> float:
+        found = [entry[3] for (file, _, func), entry in stats.items() if fragment in file and func == name]
+        if required and not found:  # a renamed function must not read as "no time spent"
+            raise SystemExit(f"bench_batch: the profile holds no {name}() of {fragment}: update profile_one")
+        return max(found, default=0.0)
 
     waiting = cumulative("sandbox/protocol.py", "read")
-    engine = cumulative("hypothesis/core.py", "run_engine")
-    reference = cumulative("grader/context.py", "reference_call")
+    engine = cumulative("hypothesis/core.py", "run_engine", required=False)  # only where a comparison fails
+    reference = cumulative("grader/oracle.py", "_run")
     student = cumulative("grader/sandbox/child.py", "call")
     print(f"\nwhere one whole submission's {total:.1f} s go (the reference graded on the warm path, this process "
           "profiled):")
     print(f"  waiting for the student's worker (its computations, its imports, the pipe): {waiting:6.1f} s")
-    print(f"  the reference's probes in the grader (cached across students in a batch):      {reference:6.1f} s")
+    print(f"  the reference's probes in the grader (on this student's random inputs):        {reference:6.1f} s")
     print(f"  hypothesis's engine around the randomized comparisons (calls included):       {engine:6.1f} s")
     print(f"  the grader's own work outside the worker: {total - waiting:6.1f} s "
           f"(student calls {student:.1f} s in all, waiting included)")

@@ -16,7 +16,7 @@ def _bench(*args, timeout=300):
 
 
 def test_bench_batch_prints_rates_cpu_and_the_bound_of_the_speed_up():
-    done = _bench("--students", "6", "--jobs", "1", "2", "--cluster", "0", "--problems", "6")
+    done = _bench("--students", "6", "--jobs", "1", "2", "--cluster", "0", "--problems", "6", "--profile")
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     rows = {m.group(1): m for m in re.finditer(
         r"^(--jobs \d)\s+([\d.]+) s\s+([\d.]+)/min\s+[\d.]+ s\s+[\d.]+ s\s+[\d.]+ s\s+([\d.]+) s\s+([\d.]+)$",
@@ -27,6 +27,10 @@ def test_bench_batch_prints_rates_cpu_and_the_bound_of_the_speed_up():
     assert "speed-up --jobs 2 / --jobs 1" in done.stdout
     assert re.search(r"--jobs 1 kept [\d.]+ cores busy: on \d+ cores --jobs 2 can be at most [\d.]+x faster",
                      done.stdout), done.stdout
+    profile = done.stdout[done.stdout.index("where one whole submission's"):]
+    for line in ("waiting for the student's worker", "the reference's probes in the grader",
+                 "the grader's own work outside the worker", "slowest problems: 6 "):
+        assert line in profile, profile
 
 
 def test_bench_batch_refuses_a_problem_without_checks_and_expands_ranges():
