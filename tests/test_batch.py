@@ -589,6 +589,27 @@ def test_progress_redraws_on_a_terminal_and_writes_lines_otherwise():
     assert lines[0].startswith("[1/4] alice: 10/10 (0.3 s) · 1/4 done") and lines[1].startswith("[2/4] bob")
 
 
+def test_the_class_files_read_no_figures_and_each_student_file_keeps_them(tmp_path, monkeypatch):
+    """The figures are most of a gradebook's bytes: the files about the whole class are written without reading
+    any (their memory grows with the class by scores and verdicts only), and each student's report still has its
+    own plots."""
+    import grader.batch.gradebook as gradebook_module
+
+    out = tmp_path / "results"
+    real, read = gradebook_module._figure, []
+    monkeypatch.setattr(gradebook_module, "_figure", lambda data: read.append(data) or real(data))
+    with Gradebook.in_folder(out) as book:
+        run = book.start_run("subs", [6, 7], 1)
+        for name in ("alice", "bob"):
+            book.record(name, name, VERSIONS, run, [synthetic_report(6, figure=True), synthetic_report(7)])
+        export_results(out, book, students=False)
+        assert read == [] and (out / "summary.html").is_file() and not (out / "students").exists()
+        export_results(out, book)
+    assert len(read) == 2  # one figure per student, read for that student's own files
+    for name in ("alice", "bob"):
+        assert '<img alt="q(t)" src="data:image/png;base64,' in (out / "students" / name / "report.html").read_text()
+
+
 def test_exports_neutralise_spreadsheet_formulas_and_imports_read_them_back(tmp_path):
     """A free-text answer or a student's name that begins with =, +, -, @ (or a tab or carriage return) would be a
     formula in the instructor's spreadsheet: every such cell is written with a leading apostrophe, and the manual

@@ -50,6 +50,11 @@ def test_results_round_trip(book):
     assert book.graded_problems("alice", "h1", VERSIONS) == {6, 7}
     assert book.graded_problems("alice", "h1", {6: "other", 7: VERSIONS[7]}) == {7}
     assert book.graded_problems("alice", "h2", VERSIONS) == set()
+    # without the figures: the same reports, every figure left out (what the class's files read)
+    lean = book.current(figures=False)
+    assert any(r.figures for g in current for r in g.report.results)
+    assert [replace(g, report=replace(g.report, results=tuple(replace(r, figures=()) for r in g.report.results)))
+            for g in current] == lean
 
 
 def test_a_key_is_graded_once_and_a_refused_student_leaves_nothing(book):

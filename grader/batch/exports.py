@@ -163,7 +163,7 @@ def export_results(out: str | Path, book: Gradebook | None = None, students: boo
     if book is None:
         with Gradebook.in_folder(out) as own:
             return export_results(out, own, students)
-    graded = book.current()
+    graded = book.current(figures=False)  # the class's files need no figures; a student's own are read below
     by_student = _by_student(graded)
     numbers = sorted({g.report.problem for g in graded})
     rows = [["student", *[f"problem_{n}" for n in numbers], "total", "possible"]]
@@ -182,7 +182,7 @@ def export_results(out: str | Path, book: Gradebook | None = None, students: boo
     if students is not False:
         for name, items in by_student.items():
             if students or _stale(out, name, items):
-                _student_files(out, name, items)
+                export_student(out, book, name)
     _write(paths["summary"], class_summary(graded))
     return paths
 

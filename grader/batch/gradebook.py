@@ -124,6 +124,11 @@ CREATE INDEX IF NOT EXISTS check_results_check ON check_results (check_id, statu
 """
 
 #: the latest graded row of every (student, problem), of every student or of one ({where})
+#: the columns of check_results that ``current`` reads, with and without the figures
+_CHECK_COLUMNS_NO_FIGURES = ("check_id, problem, title, status, score, max_score, message, hint, diagnosis, "
+                             "visibility, stage, seed, duration")
+_CHECK_COLUMNS = _CHECK_COLUMNS_NO_FIGURES + ", figures"
+
 _CURRENT = """
 SELECT s.*, st.name AS student FROM submissions s JOIN students st ON st.id = s.student_id
 WHERE s.id = (SELECT max(t.id) FROM submissions t WHERE t.student_id = s.student_id AND t.problem = s.problem)
@@ -440,9 +445,11 @@ class Gradebook:
 
     # ------------------------------------------------------------------ reading
 
-    def current(self, student: str | None = None) -> list[Graded]:
+    def current(self, student: str | None = None, figures: bool = True) -> list[Graded]:
         """The latest result of every (student, problem), rebuilt as reports with the manual scores merged; only
-        ``student``'s when given."""
+        ``student``'s when given.  ``figures=False`` leaves the checks' figures out (most of a report's bytes, about
+        0.9 MB of a whole course's 1 MB): what the files about the whole class read, so that their memory grows
+        with the class by scores and verdicts only."""
         where, args = ("AND st.name = ? ", (student,)) if student is not None else ("", ())
         manual = {
             (row["name"], row["problem"], row["key"]): row["score"]
@@ -453,14 +460,16 @@ class Gradebook:
         graded = []
         for row in self.db.execute(_CURRENT.format(where=where), args).fetchall():
             checks = self.db.execute(
-                "SELECT * FROM check_results WHERE submission_id = ? ORDER BY position", (row["id"],)
+                f"SELECT {_CHECK_COLUMNS if figures else _CHECK_COLUMNS_NO_FIGURES} FROM check_results "
+                "WHERE submission_id = ? ORDER BY position", (row["id"],)
             )
             results = tuple(
                 CheckResult(
                     check_id=c["check_id"], problem=c["problem"], title=c["title"], status=Status(c["status"]),
                     score=c["score"], max_score=c["max_score"], message=c["message"], hint=c["hint"],
                     diagnosis=c["diagnosis"], visibility=c["visibility"], stage=c["stage"], seed=c["seed"],
-                    figures=tuple(_figure(f) for f in json.loads(c["figures"])), duration=c["duration"],
+                    figures=tuple(_figure(f) for f in json.loads(c["figures"])) if figures else (),
+                    duration=c["duration"],
                 )
                 for c in checks
             )
@@ -486,7 +495,7 @@ class Gradebook:
         """Merge a CSV of manual scores (columns student, problem, key, score and optionally comment; rows with
         a blank score are skipped).  All rows are checked first; nothing is imported if any is wrong."""
         items = {
-            (g.student, g.report.problem, m.key): m for g in self.current() for m in g.report.manual
+            (g.student, g.report.problem, m.key): m for g in self.current(figures=False) for m in g.report.manual
         }
         reader = csv.DictReader(io.StringIO(text))
         missing = {"student", "problem", "key", "score"} - set(reader.fieldnames or ())
