@@ -126,6 +126,29 @@ def test_a_local_cluster_starts_with_dask_monitoring_quietened():
     assert dask.config.get("distributed.worker.profile.enabled") is True  # the caller's own config is left as it was
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("where", ["--jobs 2", "local:2"])
+def test_a_batch_leaves_no_temporary_folders_behind(where, tmp_path, monkeypatch):
+    """At the end of a batch its grading processes are stopped, and on a cluster their parent (the Dask worker)
+    goes away right after, which signals them again: each still removes its staging folder and the folders of its
+    sandbox.  (The second signal cut the clean-up short on every cluster batch, leaving a folder per worker.)"""
+    from grader.batch import run_batch
+
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temporary))  # read by every process the batch starts
+    (tmp_path / "class").mkdir()
+    for name in ("ann", "bob", "cy"):
+        copy_reference(tmp_path / "class" / name)
+    options = {"jobs": 2} if where == "--jobs 2" else {"cluster": where}
+    report = run_batch(tmp_path / "class", tmp_path / "out", problems=[6], progress=False, **options)
+    assert report.graded == 3
+    deadline = time.monotonic() + 20
+    while [p for p in temporary.iterdir() if p.name.startswith("grader-")] and time.monotonic() < deadline:
+        time.sleep(0.2)  # the processes finish their clean-up after the batch returned
+    assert sorted(p.name for p in temporary.iterdir() if p.name.startswith("grader-")) == []
+
+
 def _verdicts(reports):
     return {(r.problem, c.check_id): (c.status, c.score, c.diagnosis) for r in reports for c in r.results}
 

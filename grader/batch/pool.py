@@ -54,7 +54,16 @@ class _Stopped(BaseException):
 
 
 def _stop(signum, frame):
+    _cleanup_only()
     raise _Stopped
+
+
+def _cleanup_only() -> None:
+    """From here on the worker only cleans up (its zygote, its staging folder, its temporary folders at exit):
+    another SIGTERM, such as the one the kernel sends when the parent goes away just after it stopped the worker
+    (PR_SET_PDEATHSIG), must not cut that short and leave the folders behind.  The parent's SIGKILL after
+    ``STOP_GRACE`` still bounds it."""
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
 
 
 def _serve(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...], parent: int) -> None:
@@ -102,6 +111,7 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
             except Exception:  # noqa: BLE001 - a grader fault: this student is not recorded, retried next run
                 conn.send(("fault", traceback.format_exc()))
     finally:
+        _cleanup_only()
         zygote.close()
 
 
