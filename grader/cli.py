@@ -281,10 +281,31 @@ _LEFT_TO_REMOVE: list = []
 _QUICK_EXIT = ("cmd_problem", "cmd_list")
 
 
+#: the exit code after SIGTERM (128 + 15, as a shell reports a process ended by it)
+EXIT_TERMINATED = 143
+
+
+class _Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where the command is so that it ends as after Ctrl-C: the student's worker stopped, the
+    copy of the submission and the temporary folders removed."""
+
+
+def _terminate(signum, frame):
+    import signal
+
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)  # once: the clean-up that follows is not cut short
+    raise _Terminated
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the ``grade`` command on ``argv``.  Run as the command itself (``argv`` None: the ``grade`` script,
     ``python -m grader.cli``), ``grade problem-N`` and ``grade list`` end the process as soon as their output is
-    written (``_leave``)."""
+    written (``_leave``), and SIGTERM ends it as Ctrl-C does (exit code 143) rather than leaving its folders in the
+    temporary directory."""
+    if argv is None:
+        import signal
+
+        signal.signal(signal.SIGTERM, _terminate)
     try:
         code, command = _run(sys.argv[1:] if argv is None else list(argv))
         if argv is None and command in _QUICK_EXIT:
@@ -312,9 +333,10 @@ def _run(argv: list[str]) -> tuple[int, str | None]:
     except GraderFault as exc:  # the installation's fault (e.g. the sandbox cannot start): nothing was graded
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_GRADER, command
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
-        return 130, command
+    except KeyboardInterrupt as exc:
+        terminated = isinstance(exc, _Terminated)
+        print("terminated" if terminated else "interrupted", file=sys.stderr)
+        return (EXIT_TERMINATED if terminated else 130), command
 
 
 def _remove_now() -> None:

@@ -221,3 +221,38 @@ def test_the_gradescope_file_of_an_unloadable_submission_says_why_once(tmp_path,
     assert data["tests"] and {t["visibility"] for t in data["tests"]} == {"visible"}
     for test in data["tests"]:
         assert test["output"] == "Not run: your submission could not be loaded (the reason is at the top).", test
+
+
+def test_sigterm_ends_the_command_as_ctrl_c_does_and_leaves_no_folders(tmp_path):
+    """``timeout``, a job scheduler or an operator stops ``grade`` with SIGTERM: the student's worker is stopped,
+    the command says so and exits with 143, and neither the copy of the submission nor the worker's runtime folder
+    stays in the temporary directory (both did: the process died where it stood)."""
+    import os
+    import signal
+    import subprocess
+    import time
+
+    from .submissions import build_hostile
+
+    submission = build_hostile("infinite_loop_call", tmp_path / "student")  # problem 6 runs into an endless loop
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    command = subprocess.Popen([sys.executable, "-m", "grader.cli", "problem-6", "--submission", str(submission)],
+                               cwd=tmp_path, env=dict(os.environ, TMPDIR=str(temporary)), stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not {"submission", "grader-runtime"} <= {p.name.rsplit("-", 1)[0] for p in temporary.iterdir()}:
+            assert command.poll() is None and time.monotonic() < deadline, "the grading did not start"
+            time.sleep(0.05)
+        time.sleep(1.0)  # inside the endless call
+        command.send_signal(signal.SIGTERM)
+        out, err = command.communicate(timeout=60)
+    finally:
+        command.kill()
+    assert command.returncode == 143, (out, err)
+    assert err.strip().splitlines()[-1] == "terminated"
+    deadline = time.monotonic() + 20
+    while list(temporary.iterdir()) and time.monotonic() < deadline:  # a detached process removes the folders
+        time.sleep(0.1)
+    assert sorted(p.name for p in temporary.iterdir()) == []
