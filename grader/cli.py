@@ -9,7 +9,7 @@
     grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
 
 Exit codes: 0 all checks passed, 1 some checks did not pass, 2 usage error or a submission that cannot be
-loaded, 3 an internal grader error.
+loaded, 3 an internal grader error, 130 interrupted by Ctrl-C (a batch also by SIGTERM), 143 stopped by SIGTERM.
 """
 
 from __future__ import annotations
