@@ -123,12 +123,12 @@ CREATE INDEX IF NOT EXISTS submissions_current ON submissions (student_id, probl
 CREATE INDEX IF NOT EXISTS check_results_check ON check_results (check_id, status);
 """
 
-#: the latest graded row of every (student, problem), of every student or of one ({where})
 #: the columns of check_results that ``current`` reads, with and without the figures
 _CHECK_COLUMNS_NO_FIGURES = ("check_id, problem, title, status, score, max_score, message, hint, diagnosis, "
                              "visibility, stage, seed, duration")
 _CHECK_COLUMNS = _CHECK_COLUMNS_NO_FIGURES + ", figures"
 
+#: the latest graded row of every (student, problem), of every student or of one ({where})
 _CURRENT = """
 SELECT s.*, st.name AS student FROM submissions s JOIN students st ON st.id = s.student_id
 WHERE s.id = (SELECT max(t.id) FROM submissions t WHERE t.student_id = s.student_id AND t.problem = s.problem)
