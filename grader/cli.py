@@ -18,6 +18,7 @@ import argparse
 import os
 import re
 import shutil
+import signal
 import sys
 from pathlib import Path
 
@@ -291,8 +292,6 @@ class _Terminated(KeyboardInterrupt):
 
 
 def _terminate(signum, frame):
-    import signal
-
     signal.signal(signal.SIGTERM, signal.SIG_IGN)  # once: the clean-up that follows is not cut short
     raise _Terminated
 
@@ -303,8 +302,6 @@ def main(argv: list[str] | None = None) -> int:
     written (``_leave``), and SIGTERM ends it as Ctrl-C does (exit code 143) rather than leaving its folders in the
     temporary directory."""
     if argv is None:
-        import signal
-
         signal.signal(signal.SIGTERM, _terminate)
     try:
         code, command = _run(sys.argv[1:] if argv is None else list(argv))

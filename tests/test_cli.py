@@ -1,7 +1,11 @@
 """The grade command: exit codes, report files, init, list, loading zips and notebooks."""
 
 import json
+import os
+import signal
+import subprocess
 import sys
+import time
 import zipfile
 from pathlib import Path
 
@@ -10,7 +14,7 @@ import pytest
 
 from grader.cli import main
 
-from .submissions import build_planted, copy_reference, planted_mistakes
+from .submissions import build_hostile, build_planted, copy_reference, planted_mistakes
 from .test_gradescope import validate, visible_text
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -227,12 +231,6 @@ def test_sigterm_ends_the_command_as_ctrl_c_does_and_leaves_no_folders(tmp_path)
     """``timeout``, a job scheduler or an operator stops ``grade`` with SIGTERM: the student's worker is stopped,
     the command says so and exits with 143, and neither the copy of the submission nor the worker's runtime folder
     stays in the temporary directory (both did: the process died where it stood)."""
-    import os
-    import signal
-    import subprocess
-    import time
-
-    from .submissions import build_hostile
 
     submission = build_hostile("infinite_loop_call", tmp_path / "student")  # problem 6 runs into an endless loop
     temporary = tmp_path / "tmp"
