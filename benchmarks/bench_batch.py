@@ -23,6 +23,7 @@ While a student costs the same CPU time, a batch that keeps c cores busy at one 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import random
 import sqlite3
@@ -158,7 +159,8 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
     submission = copy_reference(scratch / "profiled")
     with Zygote(limits, sandbox_mode(), warm_modules(problems)) as zygote:
         zygote.start()
-        grade_submission(submission, problems, seed=1, limits=limits, zygote=zygote)  # warm the caches
+        with recorded_calls() as calls:  # warm the caches, and keep the student's calls for the replay below
+            grade_submission(submission, problems, seed=1, limits=limits, zygote=zygote)
         profiler = cProfile.Profile()
         start = time.perf_counter()
         profiler.enable()
@@ -186,6 +188,65 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
           f"(student calls {student:.1f} s in all, waiting included)")
     slowest = sorted(reports, key=lambda r: -r.duration)[:6]
     print("  slowest problems: " + ", ".join(f"{r.problem} {r.duration:.1f} s" for r in slowest))
+    replay_alone(calls, warm_modules(problems))
+
+
+@contextlib.contextmanager
+def recorded_calls():
+    """Every call a grading sends to the student's worker, as ``(probe, encoded arguments)``."""
+    from grader.sandbox.child import Child, probe_name
+    from probes._codec import encode
+
+    calls: list[tuple[str, object]] = []
+    original = Child.call_later
+
+    def call_later(self, probe, *args, timeout=None):
+        calls.append((probe_name(probe), encode(list(args))))
+        return original(self, probe, *args, timeout=timeout)
+
+    Child.call_later = call_later
+    try:
+        yield calls
+    finally:
+        Child.call_later = original
+
+
+def _replay(calls: list[tuple[str, object]], modules: list[str]) -> tuple[float, dict[str, float]]:
+    """In a fresh interpreter: the CPU time of importing the reference, then of each call run on it directly."""
+    import importlib
+
+    from probes._codec import decode
+
+    for name in modules:  # what a grading worker has imported before a submission arrives
+        importlib.import_module(name)
+    start = time.process_time()
+    package = importlib.import_module("reference")
+    imported = time.process_time() - start
+    spent: dict[str, float] = {}
+    for probe, args in calls:
+        module_name, _, func_name = probe.rpartition(".")
+        func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
+        start = time.process_time()
+        func(package, *decode(args))
+        spent[probe] = spent.get(probe, 0.0) + time.process_time() - start
+    return imported, spent
+
+
+def replay_alone(calls: list[tuple[str, object]], modules: list[str]) -> None:
+    """The students' own computations of one reference submission without the grader, the sandbox or the pipe: the
+    same calls replayed on the reference in a fresh process.  Their CPU time bounds the rate a batch can reach."""
+    import multiprocessing
+
+    with multiprocessing.get_context("spawn").Pool(1) as pool:
+        imported, spent = pool.apply(_replay, (calls, modules))
+    alone = imported + sum(spent.values())
+    cores = os.cpu_count() or 1
+    top = sorted(spent.items(), key=lambda item: -item[1])[:6]
+    print(f"\nthe students' code alone (one reference submission's {len(calls)} calls replayed on the reference in a "
+          f"fresh process, no grader, sandbox or pipe): {alone:.1f} CPU-s ({imported:.1f} s its import)")
+    print("  heaviest probes: " + ", ".join(f"{probe} {seconds:.1f} s" for probe, seconds in top))
+    print(f"  even a grader that cost nothing would grade at most {60 * cores / alone:.1f} such students/min on "
+          f"{cores} cores")
 
 
 def chosen_problems(parser: argparse.ArgumentParser, words: list[str] | None) -> list[int]:
