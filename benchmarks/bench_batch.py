@@ -8,8 +8,10 @@ templates, planted mistakes drawn from every problem's catalogue, and two hostil
 a call, a submission that tries to kill every process).  Each configuration grades the class from scratch with
 the exports (each student's files as they are recorded, the class's at the end), and the figures are printed
 with the per-student medians and the ratios between configurations.  ``--profile`` also grades one reference
-submission in this process under cProfile and says where its time goes.  Targets (issue 13): >= 20 students/min
-at --jobs 2, a speed-up >= 1.8x over --jobs 1, and the cluster within 15% of --jobs 2.
+submission in this process under cProfile and says where its time goes, then replays that submission's calls on
+the reference alone in a fresh process: the students' own computations, whose CPU time bounds the rate.
+Targets (issue 13): >= 20 students/min at --jobs 2, a speed-up >= 1.8x over --jobs 1, and the cluster within 15%
+of --jobs 2.
 
 The machine's speed of the day is printed first: a bare numpy import and a loop of small-array operations (the
 kind of work the students' code does), so that runs on different days or machines can be compared.  The CPU time
