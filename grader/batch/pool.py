@@ -88,9 +88,12 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
             problem_module(number)
         zygote = Zygote(limits, mode, warm_modules(problems))
         zygote.start()
-    except Exception as exc:  # noqa: BLE001 - reported to the parent, which stops the batch
-        if zygote is not None:
+    except BaseException as exc:  # noqa: BLE001 - a fault is reported to the parent, which stops the batch
+        if zygote is not None:  # also when stopped while it starts: its staging folder goes with it
+            _cleanup_only()
             zygote.close()
+        if not isinstance(exc, Exception):
+            raise
         conn.send(("fault", str(exc) if isinstance(exc, GraderFault) else traceback.format_exc()))
         return
     try:
