@@ -6,6 +6,7 @@ import base64
 import csv
 import io
 import json
+import multiprocessing
 import os
 import re
 import signal
@@ -18,6 +19,7 @@ from dataclasses import replace
 import pytest
 
 from grader.batch import BatchLocked, Progress, _locked, discover, export_results, run_batch
+from grader.batch.pool import Slot
 from grader.cli import main
 from grader.errors import SubmissionError
 from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
@@ -25,7 +27,7 @@ from grader.gradescope import WITHHELD
 from grader.results import student_view
 from grader.checking import checks_of
 from grader.runner import grade_submission, problem_module
-from grader.sandbox import Limits
+from grader.sandbox import Limits, sandbox_mode
 
 from .batch_fixtures import (
     BATCH_LIMITS,
@@ -355,6 +357,67 @@ def test_ctrl_c_stops_the_batch_cleanly_keeping_what_was_graded(tmp_path):
     ((state, graded),) = rows(out / GRADEBOOK_NAME, "SELECT state, graded FROM runs")
     assert state == "interrupted" and 1 <= graded < 3 and len(graded_rows(out / GRADEBOOK_NAME)) == graded
     assert not (out / "grades.csv").exists()  # exports wait for a finished batch
+
+
+def test_sigterm_repeated_stops_the_batch_once_and_its_clean_up_runs_to_the_end(tmp_path):
+    """A supervisor or an impatient operator may send SIGTERM more than once.  The first stops the batch as Ctrl-C
+    does; the others must not cut its clean-up short (the workers' stop, the run's state in the gradebook, the
+    temporary folders)."""
+    subs = tmp_path / "subs"
+    copy_reference(subs / "alice")
+    build_slow(subs / "slow_student")
+    copy_reference(subs / "zoe")
+    out, temporary = tmp_path / "results", tmp_path / "tmp"
+    temporary.mkdir()
+    batch = subprocess.Popen(batch_command(subs, out), cwd=ROOT, stderr=subprocess.PIPE, text=True,
+                             env=dict(os.environ, TMPDIR=str(temporary)))
+    try:
+        deadline = time.monotonic() + 60
+        while not committed(out / GRADEBOOK_NAME) and time.monotonic() < deadline and batch.poll() is None:
+            time.sleep(0.05)
+        workers = descendants(batch.pid)
+        signals = 0
+        while batch.poll() is None and signals < 400:  # every 5 ms until it has ended
+            batch.send_signal(signal.SIGTERM)
+            signals += 1
+            time.sleep(0.005)
+        _, stderr = batch.communicate(timeout=30)
+    finally:
+        batch.kill()
+    assert signals > 1, "the batch ended before a second signal"
+    assert batch.returncode == 130 and "rerun the same command to finish" in stderr, (batch.returncode, stderr)
+    assert_gone(workers)
+    ((state, graded),) = rows(out / GRADEBOOK_NAME, "SELECT state, graded FROM runs")
+    assert state == "interrupted" and 1 <= graded < 3 and len(graded_rows(out / GRADEBOOK_NAME)) == graded
+
+    def left():  # jinja2 keeps its compiled templates in the temporary directory on purpose (grader/render.py)
+        return sorted(p.name for p in temporary.iterdir() if not p.name.startswith("_jinja2-cache"))
+
+    deadline = time.monotonic() + 20
+    while left() and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert left() == []
+
+
+def test_a_worker_stopped_while_its_warm_process_starts_leaves_no_folder(tmp_path, monkeypatch):
+    """A batch stopped early (Ctrl-C, SIGTERM) stops its workers while they may still be starting their warm
+    process: the folder that process was being prepared in must be removed all the same (it stayed in /tmp)."""
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temporary))  # the worker's, started below
+    slot = Slot(multiprocessing.get_context("spawn"), 1, LIMITS, sandbox_mode(), (6,))
+    try:
+        deadline = time.monotonic() + 60
+        while not list(temporary.glob("grader-slot-*")):
+            assert time.monotonic() < deadline and slot.process.is_alive(), "the worker did not start"
+            time.sleep(0.005)
+        assert not slot.conn.poll(), "the worker was ready already: nothing was stopped while it started"
+    finally:
+        slot.stop()
+    deadline = time.monotonic() + 20
+    while list(temporary.glob("grader-slot-*")) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert list(temporary.glob("grader-slot-*")) == []
 
 
 SIGINT_ACTION = "import signal; print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"

@@ -92,6 +92,10 @@ def _cluster_client(address: str | None):
 
 
 def _interrupt(signum, frame):
+    """SIGTERM during a batch: it stops as after Ctrl-C.  Later SIGTERMs are ignored from then on (a supervisor or an
+    operator may repeat the signal), so that the clean-up that follows (the workers stopped, the run's state
+    recorded, the temporary folders removed) is not cut short, nor the process's end that it leads to."""
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
     raise KeyboardInterrupt
 
 
@@ -124,7 +128,10 @@ def run_batch(
     in every report), else ``SandboxError``.  One worker is started first (a canary): when it cannot start, the
     batch stops with ``SandboxError`` before anyone is graded.  With ``cluster`` (a Dask scheduler's address, or
     ``local:N``), the students are graded on that cluster's workers (``grader.batch.cluster``), which must all
-    have the same grader and, unless ``no_sandbox``, bubblewrap."""
+    have the same grader and, unless ``no_sandbox``, bubblewrap.
+
+    In the main thread, SIGTERM stops the batch as Ctrl-C does (``interrupted`` in the report); the process
+    ignores SIGTERM from then on, as it is asked to end."""
     from ..runner import problems as all_problems
 
     start = time.monotonic()
@@ -207,12 +214,12 @@ def run_batch(
         except KeyboardInterrupt:
             report.interrupted = True
         finally:
-            if in_main:
-                signal.signal(signal.SIGTERM, previous)
             bar.close()
             if exporter is not None:
                 report.student_exports = exporter.close(finish=state == "finished")
             book.finish_run(run_id, state, report.skipped)
+            if in_main and signal.getsignal(signal.SIGTERM) is _interrupt:  # else a SIGTERM stopped the batch
+                signal.signal(signal.SIGTERM, previous)
         if export and not report.interrupted:
             began = time.monotonic()
             export_results(out, book, students=None)
