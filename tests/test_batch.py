@@ -26,7 +26,7 @@ from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
 from grader.gradescope import WITHHELD
 from grader.results import student_view
 from grader.checking import checks_of
-from grader.runner import grade_submission, problem_module
+from grader.runner import grade_submission, problem_module, problems as all_problems
 from grader.sandbox import Limits, sandbox_mode
 
 from .batch_fixtures import (
@@ -401,11 +401,13 @@ def test_sigterm_repeated_stops_the_batch_once_and_its_clean_up_runs_to_the_end(
 
 def test_a_worker_stopped_while_its_warm_process_starts_leaves_no_folder(tmp_path, monkeypatch):
     """A batch stopped early (Ctrl-C, SIGTERM) stops its workers while they may still be starting their warm
-    process: the folder that process was being prepared in must be removed all the same (it stayed in /tmp)."""
+    process: the folder that process was being prepared in must be removed all the same (it stayed in /tmp), and
+    soon (the whole course's imports take longer than the worker is given to stop)."""
     temporary = tmp_path / "tmp"
     temporary.mkdir()
     monkeypatch.setenv("TMPDIR", str(temporary))  # the worker's, started below
-    slot = Slot(multiprocessing.get_context("spawn"), 1, LIMITS, sandbox_mode(), (6,))
+    course = tuple(p.number for p in all_problems())
+    slot = Slot(multiprocessing.get_context("spawn"), 1, LIMITS, sandbox_mode(), course)
     try:
         deadline = time.monotonic() + 60
         while not list(temporary.glob("grader-slot-*")):

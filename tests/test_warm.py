@@ -8,11 +8,12 @@ import json
 import os
 import random
 import shutil
+import signal
 
 import pytest
 
 from grader.results import Status
-from grader.runner import grade_submission
+from grader.runner import grade_submission, problems as all_problems
 from grader.sandbox import Limits, plain_mode, refusal, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules
 
@@ -135,3 +136,30 @@ def test_one_submission_is_graded_by_one_forked_worker(zygote, tmp_path):
     reports = grade_submission(submission, [6, 8, 9], seed=3, limits=LIMITS, zygote=zygote)
     assert zygote.forks == before + 1
     assert [r.score for r in reports] == [r.auto_max_score for r in reports]
+
+
+class _Interrupted(BaseException):
+    """What a signal handler raises in the grader (as a batch worker's stop does) while the warm process starts."""
+
+
+def test_a_warm_process_interrupted_while_it_starts_is_ended_at_once():
+    """A batch stopped early stops its workers while their warm process may still be importing (about a second for
+    the whole course, longer on a loaded machine).  That process is ended with the interruption instead of being
+    left to finish its imports and notice, which could outlast the worker's grace and leave its folder behind."""
+    mode = slot_mode("bwrap")
+
+    def interrupt(signum, frame):
+        raise _Interrupted
+
+    previous = signal.signal(signal.SIGALRM, interrupt)
+    zygote = Zygote(LIMITS, mode, warm_modules([p.number for p in all_problems()]))
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.1)
+        with pytest.raises(_Interrupted):
+            zygote.start()
+        assert not zygote.alive
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+        zygote.close()
+    assert not zygote.staging.exists()

@@ -170,6 +170,9 @@ class Zygote:
         except SandboxError:
             self._stop()
             raise
+        except BaseException:  # stopped while it imports (a signal in the grader): it holds nothing yet, end it now
+            self._kill()
+            raise
         if not message.get("ok"):
             self._stop()
             raise self._fault(str(message.get("message"))[:2000])
@@ -198,12 +201,21 @@ class Zygote:
             try:
                 self._proc.wait(timeout=5)
             except subprocess.TimeoutExpired:
-                try:
-                    os.killpg(self._proc.pid, signal.SIGKILL)
-                except (ProcessLookupError, PermissionError):
-                    pass
-                self._proc.kill()
-                self._proc.wait()
+                self._kill()
+            self._proc = None
+
+    def _kill(self) -> None:
+        """End the warm process and its session at once."""
+        if self._sock is not None:
+            self._sock.close()
+            self._sock = None
+        if self._proc is not None:
+            try:
+                os.killpg(self._proc.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                pass
+            self._proc.kill()
+            self._proc.wait()
             self._proc = None
 
     def close(self) -> None:
