@@ -161,14 +161,18 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
     submission = copy_reference(scratch / "profiled")
     with Zygote(limits, sandbox_mode(), warm_modules(problems)) as zygote:
         zygote.start()
-        with recorded_calls() as calls:  # warm the caches, and keep the student's calls for the replay below
-            grade_submission(submission, problems, seed=1, limits=limits, zygote=zygote)
+        grade_submission(submission, problems, seed=1, limits=limits, zygote=zygote)  # warm the caches
         profiler = cProfile.Profile()
         start = time.perf_counter()
         profiler.enable()
         reports = grade_submission(submission, problems, seed=2, limits=limits, zygote=zygote)
         profiler.disable()
         total = time.perf_counter() - start
+        # once more without the profiler, on other random inputs: the CPU time of every process, and the calls
+        cpu = busy_cpu_seconds()
+        with recorded_calls() as calls:
+            grade_submission(submission, problems, seed=3, limits=limits, zygote=zygote)
+        cpu = None if cpu is None else busy_cpu_seconds() - cpu
     stats = pstats.Stats(profiler).stats
 
     def cumulative(fragment: str, name: str, required: bool = True) -> float:
@@ -190,7 +194,7 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
           f"(student calls {student:.1f} s in all, waiting included)")
     slowest = sorted(reports, key=lambda r: -r.duration)[:6]
     print("  slowest problems: " + ", ".join(f"{r.problem} {r.duration:.1f} s" for r in slowest))
-    replay_alone(calls, warm_modules(problems))
+    replay_alone(calls, warm_modules(problems), cpu)
 
 
 @contextlib.contextmanager
@@ -234,9 +238,10 @@ def _replay(calls: list[tuple[str, object]], modules: list[str]) -> tuple[float,
     return imported, spent
 
 
-def replay_alone(calls: list[tuple[str, object]], modules: list[str]) -> None:
+def replay_alone(calls: list[tuple[str, object]], modules: list[str], graded_cpu: float | None) -> None:
     """The students' own computations of one reference submission without the grader, the sandbox or the pipe: the
-    same calls replayed on the reference in a fresh process.  Their CPU time bounds the rate a batch can reach."""
+    same calls replayed on the reference in a fresh process, against the CPU time of that submission's grading
+    (``graded_cpu``, every process, measured just before).  Their CPU time bounds the rate a batch can reach."""
     import multiprocessing
 
     with multiprocessing.get_context("spawn").Pool(1) as pool:
@@ -244,11 +249,14 @@ def replay_alone(calls: list[tuple[str, object]], modules: list[str]) -> None:
     alone = imported + sum(spent.values())
     cores = os.cpu_count() or 1
     top = sorted(spent.items(), key=lambda item: -item[1])[:6]
-    print(f"\nthe students' code alone (one reference submission's {len(calls)} calls replayed on the reference in a "
-          f"fresh process, no grader, sandbox or pipe): {alone:.1f} CPU-s ({imported:.1f} s its import)")
+    print(f"\nthe students' code alone (another reference submission's {len(calls)} calls replayed on the reference "
+          f"in a fresh process, no grader, sandbox or pipe): {alone:.1f} CPU-s ({imported:.1f} s its import)")
+    if graded_cpu:
+        print(f"  grading that submission took {graded_cpu:.1f} CPU-s (every process, measured just before): the "
+              f"students' code is {alone / graded_cpu:.0%} of it")
     print("  heaviest probes: " + ", ".join(f"{probe} {seconds:.1f} s" for probe, seconds in top))
     print(f"  even a grader that cost nothing would grade at most {60 * cores / alone:.1f} such students/min on "
-          f"{cores} cores")
+          f"{cores} cores at the machine's speed of this measurement")
 
 
 def chosen_problems(parser: argparse.ArgumentParser, words: list[str] | None) -> list[int]:
