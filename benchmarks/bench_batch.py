@@ -244,8 +244,21 @@ def replay_alone(calls: list[tuple[str, object]], modules: list[str], graded_cpu
     (``graded_cpu``, every process, measured just before).  Their CPU time bounds the rate a batch can reach."""
     import multiprocessing
 
-    with multiprocessing.get_context("spawn").Pool(1) as pool:
-        imported, spent = pool.apply(_replay, (calls, modules))
+    from grader.sandbox.launch import child_env
+
+    # one thread per numerical library, as in a student's worker (else idle BLAS threads count as CPU time)
+    threads = {name: value for name, value in child_env().items() if name.endswith("_NUM_THREADS")}
+    saved = {name: os.environ.get(name) for name in threads}
+    os.environ.update(threads)
+    try:
+        with multiprocessing.get_context("spawn").Pool(1) as pool:
+            imported, spent = pool.apply(_replay, (calls, modules))
+    finally:
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name)
+            else:
+                os.environ[name] = value
     alone = imported + sum(spent.values())
     cores = os.cpu_count() or 1
     top = sorted(spent.items(), key=lambda item: -item[1])[:6]
