@@ -47,6 +47,8 @@ from tests.submissions import (build_hostile, build_planted, copy_reference, cop
                                planted_mistakes)
 
 HOSTILE = ("infinite_loop_call", "kill_everything")
+#: pairs of a grading and the replay of its calls alone (--profile)
+REPLAYS = 3
 
 
 def build_course_class(dest: Path, students: int, seed: int = 13) -> dict[str, str]:
@@ -168,11 +170,15 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
         reports = grade_submission(submission, problems, seed=2, limits=limits, zygote=zygote)
         profiler.disable()
         total = time.perf_counter() - start
-        # once more without the profiler, on other random inputs: the CPU time of every process, and the calls
-        cpu = busy_cpu_seconds()
-        with recorded_calls() as calls:
-            grade_submission(submission, problems, seed=3, limits=limits, zygote=zygote)
-        cpu = None if cpu is None else busy_cpu_seconds() - cpu
+        # then, alternately, a grading without the profiler (other random inputs, the CPU time of every process)
+        # and the replay of its calls alone: the machine's speed drifts within a minute, so each pair is close
+        pairs = []
+        for seed in range(3, 3 + REPLAYS):
+            cpu = busy_cpu_seconds()
+            with recorded_calls() as calls:
+                grade_submission(submission, problems, seed=seed, limits=limits, zygote=zygote)
+            cpu = None if cpu is None else busy_cpu_seconds() - cpu
+            pairs.append((cpu, len(calls), *replay_alone(calls, warm_modules(problems))))
     stats = pstats.Stats(profiler).stats
 
     def cumulative(fragment: str, name: str, required: bool = True) -> float:
@@ -194,7 +200,7 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
           f"(student calls {student:.1f} s in all, waiting included)")
     slowest = sorted(reports, key=lambda r: -r.duration)[:6]
     print("  slowest problems: " + ", ".join(f"{r.problem} {r.duration:.1f} s" for r in slowest))
-    replay_alone(calls, warm_modules(problems), cpu)
+    print_replays(pairs)
 
 
 @contextlib.contextmanager
@@ -238,10 +244,9 @@ def _replay(calls: list[tuple[str, object]], modules: list[str]) -> tuple[float,
     return imported, spent
 
 
-def replay_alone(calls: list[tuple[str, object]], modules: list[str], graded_cpu: float | None) -> None:
-    """The students' own computations of one reference submission without the grader, the sandbox or the pipe: the
-    same calls replayed on the reference in a fresh process, against the CPU time of that submission's grading
-    (``graded_cpu``, every process, measured just before).  Their CPU time bounds the rate a batch can reach."""
+def replay_alone(calls: list[tuple[str, object]], modules: list[str]) -> tuple[float, dict[str, float]]:
+    """The students' own computations of one submission without the grader, the sandbox or the pipe: its calls
+    replayed on the reference in a fresh process.  Returns the CPU time of the import and of each probe."""
     import multiprocessing
 
     from grader.sandbox.launch import child_env
@@ -252,24 +257,34 @@ def replay_alone(calls: list[tuple[str, object]], modules: list[str], graded_cpu
     os.environ.update(threads)
     try:
         with multiprocessing.get_context("spawn").Pool(1) as pool:
-            imported, spent = pool.apply(_replay, (calls, modules))
+            return pool.apply(_replay, (calls, modules))
     finally:
         for name, value in saved.items():
             if value is None:
                 os.environ.pop(name)
             else:
                 os.environ[name] = value
-    alone = imported + sum(spent.values())
+
+
+def print_replays(pairs: list[tuple[float | None, int, float, dict[str, float]]]) -> None:
+    """``(CPU time of a grading, its calls, the replay's import, the replay's time per probe)`` for each pair:
+    the share of the students' code in a grading, and the rate that its CPU time allows at best."""
+    alone = [imported + sum(spent.values()) for _, _, imported, spent in pairs]
+    graded = [cpu for cpu, *_ in pairs if cpu]
     cores = os.cpu_count() or 1
+    spent = pairs[alone.index(statistics.median_low(alone))][3]
     top = sorted(spent.items(), key=lambda item: -item[1])[:6]
-    print(f"\nthe students' code alone (another reference submission's {len(calls)} calls replayed on the reference "
-          f"in a fresh process, no grader, sandbox or pipe): {alone:.1f} CPU-s ({imported:.1f} s its import)")
-    if graded_cpu:
-        print(f"  grading that submission took {graded_cpu:.1f} CPU-s (every process, measured just before): the "
-              f"students' code is {alone / graded_cpu:.0%} of it")
+    print(f"\nthe students' code alone ({len(pairs)} more reference submissions graded without the profiler, each "
+          f"followed by its {pairs[0][1]} calls replayed on the reference in a fresh process, no grader, sandbox or "
+          f"pipe): {statistics.median(alone):.1f} CPU-s (median; {min(alone):.1f}-{max(alone):.1f})")
+    if graded:
+        shares = [a / cpu for (cpu, *_), a in zip(pairs, alone) if cpu]
+        print(f"  their gradings took {statistics.median(graded):.1f} CPU-s (median; every process): the students' "
+              f"code is {statistics.median(shares):.0%} of a grading (median of the pairs; "
+              f"{min(shares):.0%}-{max(shares):.0%})")
     print("  heaviest probes: " + ", ".join(f"{probe} {seconds:.1f} s" for probe, seconds in top))
-    print(f"  even a grader that cost nothing would grade at most {60 * cores / alone:.1f} such students/min on "
-          f"{cores} cores at the machine's speed of this measurement")
+    print(f"  even a grader that cost nothing would grade at most {60 * cores / statistics.median(alone):.1f} such "
+          f"students/min on {cores} cores at the machine's speed of these measurements")
 
 
 def chosen_problems(parser: argparse.ArgumentParser, words: list[str] | None) -> list[int]:
