@@ -401,8 +401,8 @@ def test_sigterm_repeated_stops_the_batch_once_and_its_clean_up_runs_to_the_end(
 
 def test_a_worker_stopped_while_its_warm_process_starts_leaves_no_folder(tmp_path, monkeypatch):
     """A batch stopped early (Ctrl-C, SIGTERM) stops its workers while they may still be starting their warm
-    process: the folder that process was being prepared in must be removed all the same (it stayed in /tmp), and
-    soon (the whole course's imports take longer than the worker is given to stop)."""
+    process: the folder that process was being prepared in must be removed all the same (it stayed in /tmp).  The
+    whole course's warm process, the longest to start, leaves the widest window."""
     temporary = tmp_path / "tmp"
     temporary.mkdir()
     monkeypatch.setenv("TMPDIR", str(temporary))  # the worker's, started below
@@ -419,7 +419,7 @@ def test_a_worker_stopped_while_its_warm_process_starts_leaves_no_folder(tmp_pat
     deadline = time.monotonic() + 20
     while list(temporary.glob("grader-slot-*")) and time.monotonic() < deadline:
         time.sleep(0.1)
-    assert list(temporary.glob("grader-slot-*")) == []
+    assert list(temporary.glob("grader-slot-*")) == [], f"the worker's exit code: {slot.process.exitcode}"
 
 
 SIGINT_ACTION = "import signal; print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"
