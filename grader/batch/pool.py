@@ -86,13 +86,7 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
 
         for number in problems:
             problem_module(number)
-        # SIGTERM held back while the zygote makes its staging folder: a stop in between would leave the folder
-        # without the object that removes it; once it is assigned, the stop is delivered and cleaned up below
-        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM})
-        try:
-            zygote = Zygote(limits, mode, warm_modules(problems))
-        finally:
-            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM})
+        zygote = Zygote(limits, mode, warm_modules(problems))  # its folder is made by start, removed by close
         zygote.start()
     except BaseException as exc:  # noqa: BLE001 - a fault is reported to the parent, which stops the batch
         if zygote is not None:  # also when stopped while it starts: its staging folder goes with it

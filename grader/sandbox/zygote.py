@@ -31,6 +31,7 @@ from __future__ import annotations
 import ast
 import json
 import os
+import secrets
 import select
 import shutil
 import signal
@@ -128,8 +129,9 @@ class Zygote:
         self.mode = mode or sandbox_mode()
         self.preload = list(preload)
         self.python = python
-        self.staging = Path(tempfile.mkdtemp(prefix="grader-slot-"))
-        os.chmod(self.staging, 0o755)
+        # named now, made by ``start``: whatever interrupts the making (a stop's signal), ``close`` removes it
+        self.staging = Path(tempfile.gettempdir()) / f"grader-slot-{secrets.token_hex(8)}"
+        self._made = False
         self.info: dict = {}
         self.starts = 0  # warm processes started (1 unless one died)
         self.forks = 0  # workers forked
@@ -148,6 +150,10 @@ class Zygote:
     def start(self) -> dict:
         """Start the warm process and wait until it imported everything; raises ``SandboxError`` when it cannot."""
         self._stop()
+        if not self._made:
+            self.staging.mkdir(mode=0o700)  # a new folder, as mkdtemp makes one, then readable by the sandbox
+            self._made = True
+            os.chmod(self.staging, 0o755)
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
         try:
             launch = prepare_zygote(self.staging, theirs.fileno(), self.mode, self.preload, self.python)
