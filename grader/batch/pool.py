@@ -82,21 +82,16 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
 
     zygote = None
     try:
-        from ..runner import grade_submission, problem_module
+        try:
+            from ..runner import grade_submission, problem_module
 
-        for number in problems:
-            problem_module(number)
-        zygote = Zygote(limits, mode, warm_modules(problems))  # its folder is made by start, removed by close
-        zygote.start()
-    except BaseException as exc:  # noqa: BLE001 - a fault is reported to the parent, which stops the batch
-        if zygote is not None:  # also when stopped while it starts: its staging folder goes with it
-            _cleanup_only()
-            zygote.close()
-        if not isinstance(exc, Exception):
-            raise
-        conn.send(("fault", str(exc) if isinstance(exc, GraderFault) else traceback.format_exc()))
-        return
-    try:
+            for number in problems:
+                problem_module(number)
+            zygote = Zygote(limits, mode, warm_modules(problems))  # its folder is made by start, removed by close
+            zygote.start()
+        except Exception as exc:  # noqa: BLE001 - reported to the parent, which stops the batch
+            conn.send(("fault", str(exc) if isinstance(exc, GraderFault) else traceback.format_exc()))
+            return
         conn.send(("ready", None))
         while True:
             try:
@@ -113,9 +108,10 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
                 conn.send(("fault", str(exc).strip().splitlines()[0]))
             except Exception:  # noqa: BLE001 - a grader fault: this student is not recorded, retried next run
                 conn.send(("fault", traceback.format_exc()))
-    finally:
+    finally:  # after a fault, a stop (also while the zygote starts) or the end of the batch
         _cleanup_only()
-        zygote.close()
+        if zygote is not None:
+            zygote.close()
 
 
 class _Subprocess:
