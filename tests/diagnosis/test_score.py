@@ -1,0 +1,179 @@
+"""The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, and the
+script that grades it and classifies each diagnosis (``tests/diagnosis/score.py``).
+
+The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
+into the reference, and the diagnosis recorded with it (``today``) is not the right cause, which is what put it in
+the set.  The classification of a diagnosis is tested on made-up names.  One slow test runs the script on a
+subset of the set and checks that it grades and classifies each mistake; the issue's target (at least 60% right,
+at most 2% wrong) is reported by the script, not asserted, until the diagnosis engine lands.
+"""
+
+import json
+import subprocess
+import sys
+import types
+from collections import Counter
+
+import pytest
+
+from grader.checking import checks_of
+from grader.runner import problem_module
+
+from .score import (
+    EXERCISES,
+    FALLBACK,
+    FAMILIES,
+    FRESH,
+    NAMED,
+    ROOT,
+    candidate_families,
+    classify,
+    defects,
+    fresh_mistakes,
+    naming,
+)
+
+FRESH_SET = fresh_mistakes(FRESH)
+NAMED_SET = fresh_mistakes(NAMED)
+
+
+def _fallback(name):
+    return FALLBACK.get(name, "?")
+
+
+# ------------------------------------------------------------------------------------------------- the set
+
+
+def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eighty_in_all():
+    per_exercise = Counter(m.exercise for m in FRESH_SET)
+    assert set(per_exercise) == set(EXERCISES)
+    assert min(per_exercise.values()) >= 6, per_exercise
+    assert len(FRESH_SET) >= 80
+    # weighted towards the exercises whose causes are told least (I, VI, VII)
+    assert sum(per_exercise[e] for e in ("I", "VI", "VII")) > len(FRESH_SET) / 2
+
+
+def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem():
+    for mistakes in (FRESH_SET, NAMED_SET):
+        assert defects(mistakes) == []
+    for mistake in FRESH_SET + NAMED_SET:
+        ids = {f"p{mistake.problem:02d}.{spec.name}" for spec in checks_of(problem_module(mistake.problem))}
+        assert mistake.check in ids, mistake.name
+        assert mistake.family in FAMILIES and mistake.cause, mistake.name
+
+
+def test_no_mistake_is_in_both_sets_or_in_the_planted_suite():
+    fresh = {(m.file, m.old, m.new) for m in FRESH_SET}
+    named = {(m.file, m.old, m.new) for m in NAMED_SET}
+    assert not fresh & named
+    import tomllib
+
+    planted = set()
+    for path in (ROOT / "tests" / "planted").glob("problem_*.toml"):
+        planted |= {(e["file"], e["old"], e["new"]) for e in tomllib.loads(path.read_text()).get("mistake", [])}
+    assert not (fresh | named) & planted
+
+
+def test_an_entry_with_an_unknown_family_or_field_is_refused(tmp_path):
+    entry = ('[[mistake]]\nname = "x"\nfile = "rotations.py"\nold = "a"\nnew = "b"\ncheck = "p06.cardan_values"\n'
+             'cause = "c"\n')
+    (tmp_path / "problem_06.toml").write_text(entry + 'family = "weather"\n')
+    with pytest.raises(ValueError, match="unknown family"):
+        fresh_mistakes(tmp_path)
+    (tmp_path / "problem_06.toml").write_text(entry + 'family = "sign"\nseverity = 3\n')
+    with pytest.raises(ValueError, match="severity"):
+        fresh_mistakes(tmp_path)
+
+
+def test_the_recorded_diagnoses_are_not_the_right_cause_in_the_fresh_set_and_are_in_the_named_one():
+    """What put a mistake in the fresh set: when it was written, the grader did not name its cause (``today``).
+    Every name recorded is one the fallback table knows."""
+    for mistake in FRESH_SET + NAMED_SET:
+        assert all(_fallback(n) != "?" for n in mistake.today.split(" or ") if n), mistake.name
+    assert [m.name for m in FRESH_SET if classify(m.today, m.family, _fallback) == "right"] == []
+    assert [m.name for m in NAMED_SET if classify(m.today, m.family, _fallback) != "right"] == []
+
+
+# ------------------------------------------------------------------------------------------------- classification
+
+TABLE = {"transpose": "transpose", "sign_flip": "sign", "gyroscopic_sign": "sign", "rotation_order": "order",
+         "degrees": "scale", "integration": "step_size", "wrong_frame": "frame", "shape": None}
+
+
+def test_a_diagnosis_of_the_true_family_alone_or_beside_one_other_is_right():
+    family_of = TABLE.get
+    assert classify("transpose", "transpose", family_of) == "right"
+    assert classify("transpose or rotation_order", "order", family_of) == "right"
+    # two names of one family count as one candidate
+    assert classify("sign_flip or gyroscopic_sign or degrees", "sign", family_of) == "right"
+
+
+def test_a_diagnosis_of_other_families_only_is_wrong_and_one_of_no_cause_is_none():
+    family_of = TABLE.get
+    assert classify("integration", "state_row", family_of) == "wrong"
+    assert classify("transpose or degrees", "sign", family_of) == "wrong"
+    assert classify("", "sign", family_of) == "none"
+    assert classify("shape", "sign", family_of) == "none"  # a symptom, no cause
+    # the true family among more than two candidates tells the student nothing they can act on
+    assert classify("transpose or sign_flip or degrees", "sign", family_of) == "none"
+
+
+def test_a_name_of_unknown_family_counts_against_the_diagnosis():
+    def family_of(name):
+        return TABLE.get(name, "?")
+
+    assert candidate_families("made_up or transpose", family_of) == (["transpose"], ["made_up"])
+    assert classify("made_up", "sign", family_of) == "wrong"
+    assert classify("made_up or sign_flip", "sign", family_of) == "right"
+    assert classify("made_up or degrees or sign_flip", "sign", family_of) == "none"
+
+
+def test_the_engines_table_is_preferred_when_checks_diagnoses_provides_one(monkeypatch):
+    engine = types.ModuleType("checks._diagnoses")
+    labels = {"looks_like_a_row": "state row", "step_too_large": "integration", "sign_of_a_term": "sign",
+              "mystery": "weather"}
+    engine.family_of = labels.__getitem__
+    monkeypatch.setitem(sys.modules, "checks._diagnoses", engine)
+    chosen = naming()
+    assert "checks/_diagnoses.py" in chosen.source
+    assert chosen.family_of("looks_like_a_row") == "state_row"
+    assert chosen.family_of("step_too_large") == "step_size"
+    assert chosen.family_of("mystery") == "?"  # a family the measure does not know
+    assert chosen.family_of("transpose") == "transpose"  # a name the table lacks: the fallback
+    assert "fallback" in naming(prefer_engine=False).source
+
+
+def test_a_table_of_entries_with_families_is_read_too(monkeypatch):
+    engine = types.ModuleType("checks._diagnoses")
+    engine.DIAGNOSES = {"gyroscopic_missing": types.SimpleNamespace(family="missing term", phrase="...")}
+    monkeypatch.setitem(sys.modules, "checks._diagnoses", engine)
+    assert naming().family_of("gyroscopic_missing") == "missing_term"
+
+
+# ------------------------------------------------------------------------------------------------- the script
+
+
+@pytest.mark.slow
+def test_the_script_grades_and_classifies_a_subset(tmp_path):
+    """The script runs as a user runs it, on the first mistake of each exercise, and classifies every one of them
+    as right, wrong, none or not caught.  Its figures are not asserted: the target of issue 27 is reported until
+    the diagnosis engine lands."""
+    out = tmp_path / "graded.json"
+    run = subprocess.run([sys.executable, str(ROOT / "tests" / "diagnosis" / "score.py"), "--per-exercise", "1",
+                          "--json", str(out)], cwd=ROOT, capture_output=True, text=True, timeout=900)
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "diagnosis of the fresh set: 7 mistakes" in run.stdout
+    assert "target (issue 27: right >= 60%, wrong <= 2%)" in run.stdout
+    rows = json.loads(out.read_text())["mistakes"]
+    assert sorted(r["exercise"] for r in rows) == sorted(EXERCISES)
+    firsts = {}
+    for mistake in FRESH_SET:
+        firsts.setdefault(mistake.exercise, mistake)
+    assert {r["name"] for r in rows} == {m.name for m in firsts.values()}
+    for row in rows:
+        assert row["verdict"] in ("right", "wrong", "none", "not caught")
+        family_of = naming().family_of
+        if row["status"] == "failed":
+            assert row["verdict"] == classify(row["diagnosis"], row["family"], family_of)
+    for exercise in EXERCISES:
+        assert any(line.lstrip().startswith(exercise + " ") for line in run.stdout.splitlines())
