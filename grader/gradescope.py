@@ -455,8 +455,10 @@ def build_autograder(out: str | Path, problems: list[int] | None = None) -> Auto
     from .oracle import KEY_FILE, reference_available
 
     if not reference_available():
-        raise KitError("grade gradescope needs the full project: the reference solution is not installed here "
-                       "(the student kit cannot build the autograder)")
+        raise KitError("grade gradescope needs the full project, the instructor's installation with the reference "
+                       "solution: the reference is not installed here (the student kit cannot build the "
+                       "autograder). Run it where the course's project is installed (`pip install -e .` in its "
+                       "folder).")
     numbers = _assigned(problems)
     files = kit_files(WHEEL_PACKAGES)
     if f"grader/{KEY_FILE}" in files or not any(name.startswith("reference/") for name in files):

@@ -19,6 +19,7 @@ from dataclasses import replace
 import pytest
 
 from grader.batch import BatchLocked, Progress, _locked, discover, export_results, run_batch
+from grader.batch.run import NotInstructorInstallation
 from grader.batch.pool import Slot
 from grader.cli import main
 from grader.errors import SubmissionError
@@ -629,7 +630,7 @@ def test_discover_names_students_and_refuses_ambiguity(tmp_path):
 
 
 def test_one_writer_per_results_folder(tmp_path):
-    (tmp_path / "subs").mkdir()
+    copy_template(tmp_path / "subs" / "alice")
     Gradebook.in_folder(tmp_path / "out").close()
     with _locked(tmp_path / "out"):
         with pytest.raises(BatchLocked):
@@ -709,3 +710,55 @@ def test_exports_neutralise_spreadsheet_formulas_and_imports_read_them_back(tmp_
         assert sorted(g.student for g in graded if g.report.manual[0].score == 1.0) == sorted(
             f"={i}+student" if i % 2 == 0 else f"student{i}" for i in range(len(formulas)))
         assert set(book.manual_comments().values()) == {"=ok"}
+
+
+# ------------------------------------------------------------------------------------------ an instructor's errors
+
+
+def test_the_student_kit_refuses_to_grade_a_class(tmp_path, monkeypatch, capsys):
+    """Run from the student kit, a batch graded every multiple-choice and hidden check 0 and called the students'
+    results graded (a correct problem 10 got 2/5): it stops before anything is looked at, and says why, once."""
+    from grader.oracle import AnswerKey, KeyOracle, set_current
+
+    subs, out = tmp_path / "subs", tmp_path / "out"
+    copy_reference(subs / "alice")
+    command = ["batch", str(subs), "--out", str(out), "--problems", "10", "--jobs", "1", "-q"]
+    monkeypatch.setattr("grader.oracle.reference_available", lambda: False)  # the kit: no reference installed
+    assert main(command) == 2
+    err = capsys.readouterr().err
+    assert err.count("grade batch needs the instructor's installation") == 1, err
+    assert "student kit" in err and "`grade problem-N`" in err and "Traceback" not in err
+    assert not out.exists()  # nothing graded, no gradebook made
+    with pytest.raises(NotInstructorInstallation):
+        run_batch(subs, out, problems=[10], jobs=1, progress=False)
+    monkeypatch.undo()
+    previous = set_current(KeyOracle(AnswerKey(seed=0, fingerprint=""), check_fingerprint=False))
+    try:  # the reference importable, but the kit's answer key installed: it would stand in for the reference
+        assert main(command) == 2
+    finally:
+        set_current(previous)
+    err = capsys.readouterr().err
+    assert err.count("needs the instructor's installation") == 1 and "answer key" in err, err
+    assert not out.exists()
+
+
+def test_a_batch_over_a_folder_without_submissions_stops_and_says_what_to_put_there(tmp_path, capsys):
+    subs, out = tmp_path / "subs", tmp_path / "out"
+    subs.mkdir()
+    assert main(["batch", str(subs), "--out", str(out), "--problems", "6", "-q"]) == 2
+    err = capsys.readouterr().err
+    assert err.count(f"{subs} holds no submission") == 1 and "one entry per student" in err, err
+    assert "0 students" not in err and not out.exists()
+    (subs / "notes.txt").write_text("not a submission")
+    assert main(["batch", str(subs), "--out", str(out), "--problems", "6", "-q"]) == 2
+    assert "holds no submission (it holds only notes.txt)" in capsys.readouterr().err
+
+
+def test_jobs_must_be_at_least_one(tmp_path, capsys):
+    subs = tmp_path / "subs"
+    copy_reference(subs / "alice")
+    for jobs in ("0", "-2", "two"):
+        assert main(["batch", str(subs), "--out", str(tmp_path / "out"), "--problems", "6", "--jobs", jobs]) == 2
+        err = capsys.readouterr().err
+        assert f"argument --jobs/-j: {jobs!r} is not a whole number of at least 1" in err, err
+    assert not (tmp_path / "out").exists()

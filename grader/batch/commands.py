@@ -15,8 +15,12 @@ def cmd_batch(args) -> int:
     from ..runner import problem_module
     from ..sandbox import Limits
     from .discover import BAD_NAME
-    from .run import BatchLocked, run_batch
+    from .run import BatchLocked, NotInstructorInstallation, instructor_installation, run_batch
 
+    refused = instructor_installation()
+    if refused is not None:  # before anything is looked at: the kit cannot grade a class
+        print(f"error: {refused}", file=sys.stderr)
+        return EXIT_USAGE
     for number in args.problems or ():
         try:
             problem_module(number)
@@ -32,7 +36,7 @@ def cmd_batch(args) -> int:
         report = run_batch(args.submissions, args.out, problems=args.problems, jobs=args.jobs, force=args.force,
                            limits=limits, student_timeout=args.student_timeout, progress=not args.quiet,
                            no_sandbox=args.no_sandbox, cluster=args.cluster)
-    except (SubmissionError, BatchLocked) as exc:
+    except (SubmissionError, BatchLocked, NotInstructorInstallation) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except RuntimeError as exc:  # the workers cannot start: a broken installation
@@ -98,7 +102,7 @@ def cmd_export(args) -> int:
 
 
 def add_batch_parser(sub) -> None:
-    from ..cli import _problem_number
+    from ..cli import _positive_int, _problem_number
 
     p = sub.add_parser(
         "batch",
@@ -110,7 +114,7 @@ def add_batch_parser(sub) -> None:
     p.add_argument("--out", required=True, help="the results folder (gradebook, grades.csv, reports, summary)")
     p.add_argument("--problems", type=_problem_number, nargs="+", default=None, metavar="N",
                    help="problems to grade (default: every problem with checks)")
-    p.add_argument("--jobs", "-j", type=int, default=None, metavar="N",
+    p.add_argument("--jobs", "-j", type=_positive_int, default=None, metavar="N",
                    help="parallel workers (default: the number of CPUs)")
     p.add_argument("--force", action="store_true", help="regrade students whose submission is unchanged")
     p.add_argument("--timeout", type=float, default=None, help="seconds per call of a student's code (default 10)")

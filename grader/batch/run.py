@@ -21,11 +21,38 @@ from .gradebook import Gradebook, grader_version
 from .pool import Task, run_pool, stopped_reports
 from .progress import Progress
 
-__all__ = ["BatchReport", "BatchLocked", "run_batch", "default_student_timeout"]
+__all__ = ["BatchReport", "BatchLocked", "NotInstructorInstallation", "run_batch", "default_student_timeout",
+           "instructor_installation"]
 
 
 class BatchLocked(RuntimeError):
     """Another process is writing to the results folder."""
+
+
+class NotInstructorInstallation(RuntimeError):
+    """The grader was asked to grade a class where the reference solution is not (the student kit)."""
+
+
+#: what a batch run from the student kit is told: it would grade with the kit's answer key, which holds neither the
+#: multiple-choice and predicted-output keys nor the hidden checks, and score those 0 as if graded
+NEEDS_INSTRUCTOR = (
+    "{command} needs the instructor's installation (the full project, with the reference solution): {why}, so "
+    "the multiple-choice, predicted-output and hidden checks could not be graded. Run {command} where the course's "
+    "project is installed (`pip install -e .` in its folder); students check their own work with "
+    "`grade problem-N`."
+)
+
+
+def instructor_installation(command: str = "grade batch") -> str | None:
+    """None where submissions can be graded (the live reference); else what to tell the instructor."""
+    from ..oracle import current, reference_available
+
+    if not reference_available():
+        return NEEDS_INSTRUCTOR.format(command=command, why="this is the student kit, which has no reference")
+    if current().mode == "kit":
+        return NEEDS_INSTRUCTOR.format(command=command, why="the student kit's answer key is installed here and "
+                                                            "would stand in for the reference")
+    return None
 
 
 @dataclass
@@ -99,6 +126,13 @@ def _interrupt(signum, frame):
     raise KeyboardInterrupt
 
 
+def empty_folder(submissions, ignored: list[str]) -> str:
+    """What a batch over a folder without a submission says: what it found, and what a student's entry is."""
+    found = f" (it holds only {', '.join(ignored[:5])}{', ...' if len(ignored) > 5 else ''})" if ignored else ""
+    return (f"{submissions} holds no submission{found}: put one entry per student in it, a folder, a .zip "
+            "archive or a .ipynb notebook named after the student, and run the command again")
+
+
 def default_student_timeout(limits: Limits, problems: list[int]) -> float:
     """The import time-out plus twice the call time-out per check."""
     from ..checking import checks_of
@@ -136,8 +170,14 @@ def run_batch(
 
     start = time.monotonic()
     out = Path(out)
+    refused = instructor_installation()
+    if refused is not None:
+        raise NotInstructorInstallation(refused)
     if not Path(submissions).is_dir():
         raise SubmissionError(f"{submissions} is not a folder")
+    entries, ignored = discover(submissions, exclude=out)
+    if not entries:
+        raise SubmissionError(empty_folder(submissions, ignored))
     numbers = sorted(problems or [p.number for p in all_problems()])
     limits = limits or Limits()
     jobs = max(1, jobs or len(os.sched_getaffinity(0)))
@@ -148,7 +188,6 @@ def run_batch(
                            f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
                            "and in every report)")
     with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster) as client:
-        entries, ignored = discover(submissions, exclude=out)
         versions = {n: grader_version(n) for n in numbers}
         if client is not None:
             from .cluster import check_workers
@@ -157,8 +196,7 @@ def run_batch(
             sandbox = f"Dask cluster {cluster}: {note}" if isolated else f"--no-sandbox: Dask cluster {cluster}: {note}"
             jobs = len(client.scheduler_info()["workers"])
         else:
-            if entries:
-                canary(limits, mode)
+            canary(limits, mode)
             sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
         run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
         report = BatchReport(run_id, len(entries), ignored=ignored)
