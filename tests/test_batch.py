@@ -211,12 +211,16 @@ def test_small_class_grades_and_exports(small_class):
     assert (report.students, report.graded, report.skipped, report.interrupted) == (7, 7, 0, False)
     with open(out / "grades.csv") as handle:
         table = list(csv.reader(handle))
-    assert table[0] == ["student", "problem_6", "total", "possible"]
+    assert table[0] == ["student", "problem_6", "total", "possible", "status"]
     assert {row[0]: float(row[2]) for row in table[1:]} == {
         # dave: only the vectors check (1 point); erin: R1 in degrees costs the elementary values (2) and the side
         # effects of that group (not run after them); cardan, frames and vectors are judged on her own R1
         # (error carried forward, full credit)
         "alice": 10, "bob": 10, "carol": 10, "dave": 9, "erin": 7, "frank": 0, "gina": 0}
+    assert {row[3] for row in table[1:]} == {"10"}  # the same possible points for everyone, gina included
+    status = {row[0]: row[4] for row in table[1:]}
+    assert status.pop("gina").startswith("unloadable: gina.zip is not a readable zip archive")
+    assert set(status.values()) == {"graded"}
     for name in ("alice", "bob", "carol", "dave", "erin", "frank", "gina"):
         results = validate(json.loads((out / "students" / name / "results.json").read_text()))
         assert len(results["tests"]) == len(checks_of(problem_module(6)))
@@ -532,7 +536,8 @@ def test_hidden_checks_count_for_the_instructor_and_stay_hidden_from_the_student
 
     with open(out / "grades.csv") as handle:
         totals = {row["student"]: (row["total"], row["possible"]) for row in csv.DictReader(handle)}
-    assert totals == {"bad": ("1", "6"), "good": ("4", "6")}  # hidden points count for the instructor
+    # hidden points count for the instructor; the free-text answer's 2 points once a person scores it
+    assert totals == {"bad": ("1", "4"), "good": ("4", "4")}
 
     for name, visible in (("good", "1 / 4"), ("bad", "1 / 4")):
         html = (out / "students" / name / "report.html").read_text()
@@ -569,6 +574,7 @@ def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, 
         run = book.start_run("subs", [HIDDEN_PROBLEM], 1)
         grade_into(book, run, "good", good)
     assert main(["export", str(out)]) == 0
+    assert "good,4,4,4,graded" in (out / "grades.csv").read_text()  # not scored yet: not possible yet
     listed = list(csv.DictReader(io.StringIO((out / "manual_answers.csv").read_text())))
     assert [(r["student"], r["key"], r["answer"], r["score"], r["max_score"]) for r in listed] == [
         ("good", "why", "Orthogonal unit columns.", "", "2")]
@@ -579,7 +585,7 @@ def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, 
     assert "outside 0..2" in capsys.readouterr().err
     scores.write_text((out / "manual_answers.csv").read_text().replace(",why,,2,", ",why,1.5,2,"))
     assert main(["import-manual", str(out), str(scores)]) == 0
-    assert "good,5.5,5.5,6" in (out / "grades.csv").read_text()
+    assert "good,5.5,5.5,6,graded" in (out / "grades.csv").read_text()
     results = validate(json.loads((out / "students" / "good" / "results.json").read_text()))
     assert results["score"] == sum(t["score"] for t in results["tests"]) == 5.5
     (why,) = [t for t in results["tests"] if t["extra_data"].get("free_text") == "why"]
@@ -762,3 +768,48 @@ def test_jobs_must_be_at_least_one(tmp_path, capsys):
         err = capsys.readouterr().err
         assert f"argument --jobs/-j: {jobs!r} is not a whole number of at least 1" in err, err
     assert not (tmp_path / "out").exists()
+
+
+def unloadable_report(problem: int, reason: str):
+    """What the batch records for a problem of a submission that could not be loaded."""
+    from grader.results import Status
+
+    report = synthetic_report(problem, checks=7 if problem == 6 else 12)
+    results = tuple(replace(r, status=Status.ERROR, score=0.0) for r in report.results)
+    return replace(report, results=results, manual=(), load_error=reason)
+
+
+def test_possible_points_are_the_same_for_every_student_and_count_free_text_once_scored(tmp_path):
+    """Possible points were the checks' plus every free-text answer's, scored or not, for a student whose answers
+    were read, and the checks' alone for one whose zip was corrupt (19 and 21 in one class).  They are now the
+    checks' until a person scores a free-text answer, then both, for everyone; grades.csv says why a student got
+    0, and the class summary lists a corrupt zip once."""
+    out = tmp_path / "results"
+    reason = "gina.zip is not a readable zip archive: File is not a zip file. Make the archive again."
+    with Gradebook.in_folder(out) as book:
+        run = book.start_run("subs", [6, 7], 1)
+        for name in ("alice", "bob"):
+            book.record(name, name, VERSIONS, run, [synthetic_report(6, manual=True), synthetic_report(7, checks=12)])
+        book.record("gina", "gina", VERSIONS, run, [unloadable_report(6, reason), unloadable_report(7, reason)])
+        export_results(out, book, students=False)
+
+        def grades():
+            with open(out / "grades.csv", newline="") as handle:
+                return {row["student"]: row for row in csv.DictReader(handle)}
+
+        before = grades()
+        assert {name: row["possible"] for name, row in before.items()} == {"alice": "19", "bob": "19", "gina": "19"}
+        assert before["gina"]["status"] == f"unloadable: {reason}" and before["gina"]["total"] == "0"
+        assert before["alice"]["status"] == "graded"
+        summary = (out / "summary.html").read_text()
+        assert "19 points possible" in summary
+        trouble = re.search(r'<table id="trouble-table">(.*?)</table>', summary, re.S).group(1)
+        assert trouble.count("<td>gina</td>") == 1 and trouble.count("not a readable zip archive") == 1
+        assert "<td>6, 7</td>" in trouble
+
+        book.import_manual("student,problem,key,score\nalice,6,why,1.5\n")
+        export_results(out, book, students=False)
+        after = grades()
+        assert {name: row["possible"] for name, row in after.items()} == {"alice": "21", "bob": "21", "gina": "21"}
+        assert {name: row["total"] for name, row in after.items()} == {"alice": "20.5", "bob": "19", "gina": "0"}
+        assert "21 points possible" in (out / "summary.html").read_text()

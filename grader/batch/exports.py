@@ -20,7 +20,8 @@ from pathlib import Path
 from ..results import Status
 from .gradebook import Gradebook, Graded, now, spreadsheet_cell
 
-__all__ = ["DIAGNOSES", "TROUBLE", "export_results", "export_student", "StudentExporter", "class_summary"]
+__all__ = ["DIAGNOSES", "TROUBLE", "export_results", "export_student", "StudentExporter", "class_summary",
+           "scored_items", "problem_possible", "possible", "student_status"]
 
 #: how the class summary words a diagnosis: "31% of students transposed a rotation matrix ..."
 DIAGNOSES = {
@@ -52,6 +53,49 @@ def _csv(rows: list[list]) -> str:
     safe = [[spreadsheet_cell(cell) if isinstance(cell, str) else cell for cell in row] for row in rows]
     csv.writer(buffer, lineterminator="\r\n").writerows(safe)  # RFC 4180: a cell holding \r or \n is quoted
     return buffer.getvalue()
+
+
+def scored_items(graded: list[Graded]) -> dict[int, dict[str, float]]:
+    """Per problem, the free-text answers that a person has scored for some student of the class, with their
+    points: from then on they count in every student's possible points, before that in no one's."""
+    items: dict[int, dict[str, float]] = defaultdict(dict)
+    for g in graded:
+        for m in g.report.manual:
+            if m.score is not None:
+                items[m.problem][m.key] = m.max_score
+    return dict(items)
+
+
+def problem_possible(report, scored: dict[int, dict[str, float]]) -> float:
+    """A problem's possible points: its checks' (hidden ones included), and its free-text answers' once scored for
+    someone (``scored_items``); the same for every student, whether their submission could be loaded or not."""
+    return report.auto_max_score + sum(scored.get(report.problem, {}).values())
+
+
+def possible(items: list[Graded], scored: dict[int, dict[str, float]]) -> float:
+    """A student's possible points over the problems graded (``problem_possible``)."""
+    return sum(problem_possible(g.report, scored) for g in items)
+
+
+def _numbers(problems: list[int]) -> str:
+    return f"problem{'s' if len(problems) > 1 else ''} {', '.join(map(str, sorted(problems)))}"
+
+
+def student_status(items: list[Graded]) -> str:
+    """How the student's work was graded, as the gradebook recorded it: "graded", "unloadable: REASON" (said once,
+    whatever the number of problems), "timed out: problem N" (stopped at the batch's limit)."""
+    parts = []
+    unloadable = [g for g in items if g.report.load_error]
+    if unloadable:
+        reason = unloadable[0].report.load_error.strip().splitlines()[0]
+        parts.append(f"unloadable: {reason}")
+    stopped = [g.report.problem for g in items if g.outcome == "timeout"]
+    if stopped:
+        parts.append(f"timed out: {_numbers(stopped)}")
+    crashed = [g.report.problem for g in items if g.outcome == "crashed"]
+    if crashed:
+        parts.append(f"crashed: {_numbers(crashed)}")
+    return "; ".join(parts) or "graded"
 
 
 def _by_student(graded: list[Graded]) -> dict[str, list[Graded]]:
@@ -166,11 +210,12 @@ def export_results(out: str | Path, book: Gradebook | None = None, students: boo
     graded = book.current(figures=False)  # the class's files need no figures; a student's own are read below
     by_student = _by_student(graded)
     numbers = sorted({g.report.problem for g in graded})
-    rows = [["student", *[f"problem_{n}" for n in numbers], "total", "possible"]]
+    scored = scored_items(graded)
+    rows = [["student", *[f"problem_{n}" for n in numbers], "total", "possible", "status"]]
     for name, items in by_student.items():
         scores = {g.report.problem: g.report.score for g in items}
         rows.append([name, *[f"{scores[n]:g}" if n in scores else "" for n in numbers],
-                     f"{sum(scores.values()):g}", f"{sum(g.report.max_score for g in items):g}"])
+                     f"{sum(scores.values()):g}", f"{possible(items, scored):g}", student_status(items)])
     paths = {"grades": out / "grades.csv", "manual": out / "manual_answers.csv", "summary": out / "summary.html"}
     _write(paths["grades"], _csv(rows))
     comments = book.manual_comments()
@@ -229,10 +274,11 @@ def _distributions(graded: list[Graded], images: dict) -> tuple[list[dict], floa
     by_problem: dict[int, list[Graded]] = defaultdict(list)
     for g in graded:
         by_problem[g.report.problem].append(g)
+    scored = scored_items(graded)
     problems = []
     for number, items in sorted(by_problem.items()):
         scores = [g.report.score for g in items]
-        top = max(g.report.max_score for g in items)
+        top = max(problem_possible(g.report, scored) for g in items)
         problems.append({
             "number": number, "title": items[0].report.title, "students": len(items), "max": top,
             "mean": statistics.fmean(scores), "median": statistics.median(scores), "min": min(scores),
@@ -240,11 +286,11 @@ def _distributions(graded: list[Graded], images: dict) -> tuple[list[dict], floa
         })
         images[f"problem-{number}"] = _histogram(scores, top, f"Problem {number}: score distribution", "points")
     students = _by_student(graded).values()
-    possible = max((sum(g.report.max_score for g in items) for items in students), default=0.0)
+    top = max((possible(items, scored) for items in students), default=0.0)
     if students:
         totals = [sum(g.report.score for g in items) for items in students]
-        images["totals"] = _histogram(totals, possible, "Total score distribution", "points")
-    return problems, possible
+        images["totals"] = _histogram(totals, top, "Total score distribution", "points")
+    return problems, top
 
 
 def _failures(graded: list[Graded], images: dict, top: int) -> tuple[list[dict], list[dict]]:
@@ -287,19 +333,32 @@ def _failures(graded: list[Graded], images: dict, top: int) -> tuple[list[dict],
 
 
 def _trouble(graded: list[Graded]) -> list[dict]:
-    """The results in which the student's code errored or timed out, or that the batch stopped."""
-    trouble = []
+    """The results in which the student's code errored or timed out, or that the batch stopped; a submission that
+    could not be loaded once, with the problems it stopped (the reason is the same for every problem)."""
+    trouble, unloadable = [], {}
     for g in graded:
+        if g.report.load_error:
+            key = (g.student, g.report.load_error)
+            if key in unloadable:
+                unloadable[key]["numbers"].append(g.report.problem)
+                continue
+            message = g.report.load_error.strip()
+            unloadable[key] = row = {
+                "student": g.student, "numbers": [g.report.problem], "outcome": g.outcome,
+                "statuses": "could not be loaded", "message": message.splitlines()[0] if message else "",
+            }
+            trouble.append(row)
+            continue
         bad = [r for r in g.report.results if r.status in TROUBLE]
         if bad or g.outcome != "graded":
-            message = g.report.load_error or (bad[0].message.strip() if bad else "")
-            if g.report.load_error:
-                message = f"could not be loaded: {message}"
+            message = bad[0].message.strip() if bad else ""
             trouble.append({
-                "student": g.student, "problem": g.report.problem, "outcome": g.outcome,
+                "student": g.student, "numbers": [g.report.problem], "outcome": g.outcome,
                 "statuses": ", ".join(sorted({r.status.value for r in bad})),
                 "message": message.splitlines()[0] if message else "",
             })
+    for row in trouble:
+        row["problem"] = _ranges(sorted(row.pop("numbers")))
     return trouble
 
 
