@@ -191,10 +191,13 @@ def _manual_test(m: ManualItem, number: str) -> dict:
     }
     if m.score is not None:
         status = "passed" if m.score >= m.max_score else "failed"
+        comment = f"\n\nComment from your course staff:\n{m.comment}" if m.comment else ""
         test.update(score=float(m.score), max_score=float(m.max_score), status=status,
                     output=f"Your answer:\n{m.answer or '(blank)'}\n\nScored by hand by your course staff: "
-                           f"{_fmt(m.score)} of {_fmt(m.max_score)} points.")
+                           f"{_fmt(m.score)} of {_fmt(m.max_score)} points.{comment}")
         test["extra_data"].update(status=status, scored_by_hand=True)
+        if m.comment:
+            test["extra_data"]["comment"] = m.comment
     return test
 
 

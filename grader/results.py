@@ -91,7 +91,8 @@ class CheckResult:
 
 @dataclass(frozen=True)
 class ManualItem:
-    """A free-text answer scored by a person: shown with the course's model answer."""
+    """A free-text answer scored by a person: shown with the course's model answer; the person's comment goes back
+    to the student with the score."""
 
     problem: int
     key: str
@@ -100,6 +101,7 @@ class ManualItem:
     model_answer: str
     max_score: float
     score: float | None = None  # None until a person scores it
+    comment: str = ""  # the scorer's comment to the student ("" when none)
 
 
 @dataclass(frozen=True)

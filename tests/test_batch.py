@@ -583,7 +583,8 @@ def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, 
     scores.write_text((out / "manual_answers.csv").read_text().replace(",why,,2,", ",why,9,2,"))
     assert main(["import-manual", str(out), str(scores)]) == 2
     assert "outside 0..2" in capsys.readouterr().err
-    scores.write_text((out / "manual_answers.csv").read_text().replace(",why,,2,", ",why,1.5,2,"))
+    comment = "Right, but say why the columns are orthogonal: <A_IB^T A_IB = E>."
+    scores.write_text(_csv_text([dict(row, score="1.5", comment=comment) for row in listed]))
     assert main(["import-manual", str(out), str(scores)]) == 0
     assert "good,5.5,5.5,6,graded" in (out / "grades.csv").read_text()
     results = validate(json.loads((out / "students" / "good" / "results.json").read_text()))
@@ -591,7 +592,30 @@ def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, 
     (why,) = [t for t in results["tests"] if t["extra_data"].get("free_text") == "why"]
     assert (why["score"], why["max_score"], why["status"]) == (1.5, 2.0, "failed")
     assert "1.5 of 2 points" in why["output"] and "Orthogonal unit columns." in why["output"]
+    assert why["output"].endswith(f"Comment from your course staff:\n{comment}")  # the comment reaches the student
     assert ",why,1.5,2," in (out / "manual_answers.csv").read_text()
+    # the student's HTML report: the score and the comment (escaped), under the answer
+    html = (out / "students" / "good" / "report.html").read_text()
+    block = re.search(rf'<div class="manual" id="free-text-{HIDDEN_PROBLEM}-why">(.*?)</div>', html, re.S).group(1)
+    assert "1.5 of 2 points" in block and "0 until a person scores it" not in block
+    assert "Comment from your course staff" in block
+    assert "say why the columns are orthogonal: &lt;A_IB^T A_IB = E&gt;." in block and "<A_IB" not in block
+    # the JSON report (as `grade problem-N --json` writes it) and the terminal's
+    from grader.render import render_json, render_terminal
+
+    with Gradebook.in_folder(out) as book:
+        reports = [g.report for g in book.current(student="good")]
+    (item,) = json.loads(render_json(reports, show_hidden=False))["reports"][0]["manual"]
+    assert (item["score"], item["comment"]) == (1.5, comment) and "model_answer" not in item
+    assert f"comment from your course staff: {comment}" in render_terminal(reports)
+
+
+def _csv_text(rows: list[dict]) -> str:
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=list(rows[0]))
+    writer.writeheader()
+    writer.writerows(rows)
+    return buffer.getvalue()
 
 
 def export_hostile_text(tmp_path):

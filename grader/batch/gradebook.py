@@ -425,7 +425,8 @@ class Gradebook:
                         sum(r.score for r in report.results), report.auto_max_score, report.submission,
                         report.title, report.sandbox, int(report.isolated), report.duration, report.stdout,
                         report.stderr, json.dumps(list(report.notes)),
-                        json.dumps([asdict(replace(m, score=None)) for m in report.manual]), report.load_error,
+                        json.dumps([asdict(replace(m, score=None, comment="")) for m in report.manual]),
+                        report.load_error,
                     ),
                 )
                 db.executemany(
@@ -446,13 +447,14 @@ class Gradebook:
     # ------------------------------------------------------------------ reading
 
     def current(self, student: str | None = None, figures: bool = True) -> list[Graded]:
-        """The latest result of every (student, problem), rebuilt as reports with the manual scores merged; only
+        """The latest result of every (student, problem), rebuilt as reports with the manual scores and their
+        comments merged; only
         ``student``'s when given.  ``figures=False`` leaves the checks' figures out (most of a report's bytes, about
         0.9 MB of a whole course's 1 MB): what the files about the whole class read, so that their memory grows
         with the class by scores and verdicts only."""
         where, args = ("AND st.name = ? ", (student,)) if student is not None else ("", ())
         manual = {
-            (row["name"], row["problem"], row["key"]): row["score"]
+            (row["name"], row["problem"], row["key"]): {"score": row["score"], "comment": row["comment"]}
             for row in self.db.execute(
                 "SELECT st.name, m.* FROM manual_scores m JOIN students st ON st.id = m.student_id " + where.replace(
                     "AND", "WHERE"), args)
@@ -474,7 +476,8 @@ class Gradebook:
                 for c in checks
             )
             items = tuple(
-                ManualItem(**dict(item, score=manual.get((row["student"], row["problem"], item["key"]))))
+                ManualItem(**dict(item, **manual.get((row["student"], row["problem"], item["key"]),
+                                                     {"score": None, "comment": ""})))
                 for item in json.loads(row["manual"])
             )
             report = ProblemReport(
