@@ -9,20 +9,28 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import SubmissionError
+from .course import COURSE_FILE  # the course's deadlines and policy, which may sit in the submissions folder
 
-__all__ = ["Entry", "SUBMISSION_SUFFIXES", "BAD_NAME", "student_seed", "submission_hash", "discover"]
+__all__ = ["Entry", "SUBMISSION_SUFFIXES", "BAD_NAME", "GRADESCOPE_METADATA", "student_seed",
+           "submission_hash", "discover", "uploaded"]
 
 SUBMISSION_SUFFIXES = (".zip", ".ipynb")
 #: follows an ignored entry whose name is not valid UTF-8
 BAD_NAME = " (its name is not valid UTF-8: rename it)"
+#: Gradescope's metadata of a submission, beside (never inside) the folder of what the student submitted
+GRADESCOPE_METADATA = "submission_metadata.json"
+
 
 @dataclass(frozen=True)
 class Entry:
-    """One student's submission: a folder, a zip archive or a notebook."""
+    """One student's submission: a folder, a zip archive or a notebook; ``metadata``, Gradescope's metadata of it
+    when the student's entry is laid out as Gradescope's autograder sees a submission (``NAME/submission/`` and
+    ``NAME/submission_metadata.json``)."""
 
     name: str
     path: Path
     content_hash: str
+    metadata: Path | None = None
 
     @property
     def seed(self) -> int:
@@ -61,6 +69,26 @@ def _valid_name(name: str) -> bool:
     return True
 
 
+def uploaded(folder: Path) -> Path:
+    """What a student uploaded into ``folder``: the one .zip or .ipynb there, else the folder itself."""
+    entries = [p for p in folder.iterdir() if not p.name.startswith(".") and p.name != "__MACOSX"]
+    if len(entries) == 1 and entries[0].is_file() and not entries[0].is_symlink() \
+            and entries[0].suffix in SUBMISSION_SUFFIXES:
+        return entries[0]
+    return folder
+
+
+def _gradescope_layout(path: Path) -> tuple[Path, Path] | None:
+    """(what the student submitted, Gradescope's metadata) of an entry laid out as Gradescope's autograder folder:
+    the metadata stands beside the submission, where the student's own files cannot put it."""
+    if path.is_symlink() or not path.is_dir():
+        return None
+    submission, metadata = path / "submission", path / GRADESCOPE_METADATA
+    if submission.is_dir() and not submission.is_symlink() and metadata.is_file() and not metadata.is_symlink():
+        return uploaded(submission), metadata
+    return None
+
+
 def discover(folder: str | Path, exclude: Path | None = None) -> tuple[list[Entry], list[str]]:
     """The students of ``folder`` and the names of the entries that are not submissions (a name that is not
     valid UTF-8 is shown as its bytes, followed by ``BAD_NAME``).  A symbolic link
@@ -70,7 +98,8 @@ def discover(folder: str | Path, exclude: Path | None = None) -> tuple[list[Entr
         raise SubmissionError(f"{folder} is not a folder")
     entries, ignored, seen = [], [], {}
     for path in sorted(folder.iterdir()):
-        if path.name.startswith((".", "__")) or (exclude is not None and path.resolve() == exclude.resolve()):
+        if path.name.startswith((".", "__")) or (exclude is not None and path.resolve() == exclude.resolve()) \
+                or path.name == COURSE_FILE:
             continue
         if not _valid_name(path.name):
             ignored.append(f"{repr(os.fsencode(path.name))[2:-1]}{BAD_NAME}")
@@ -82,5 +111,9 @@ def discover(folder: str | Path, exclude: Path | None = None) -> tuple[list[Entr
         if name in seen:
             raise SubmissionError(f"{seen[name]} and {path.name} would both be the student {name!r}")
         seen[name] = path.name
-        entries.append(Entry(name, path, submission_hash(path)))
+        layout = _gradescope_layout(path)
+        if layout is not None:
+            entries.append(Entry(name, layout[0], submission_hash(layout[0]), layout[1]))
+        else:
+            entries.append(Entry(name, path, submission_hash(path)))
     return entries, ignored

@@ -18,7 +18,20 @@ from datetime import datetime
 from pathlib import Path
 
 from ..results import Status
+from .course import (
+    COURSE_FILE,
+    Assignment,
+    Course,
+    CourseError,
+    Standing,
+    SubmissionTime,
+    load_course,
+    roster_times,
+    shown_time,
+    standings,
+)
 from .gradebook import Gradebook, Graded, now, spreadsheet_cell
+from .lms import EXCUSED, canvas_rows, match, matching_summary, moodle_rows, read_roster
 
 __all__ = ["DIAGNOSES", "TROUBLE", "export_results", "export_student", "StudentExporter", "class_summary",
            "scored_items", "problem_possible", "possible", "student_status"]
@@ -198,38 +211,254 @@ def _stale(out: Path, name: str, items: list[Graded]) -> bool:
     return written < latest
 
 
-def export_results(out: str | Path, book: Gradebook | None = None, students: bool | None = True) -> dict[str, Path]:
-    """Write grades.csv, manual_answers.csv, summary.html and each student's results.json and report.html.
+#: the gradebook's record of the course file, and of the LMS files to keep rewritten (their roster, "" for none)
+COURSE_META, LMS_META = "course_file", {"canvas": "export.canvas", "moodle": "export.moodle"}
+#: stands for "the course file the gradebook records" (``resolve_course``)
+RECORDED = "recorded"
+
+
+def resolve_course(book: Gradebook, given: str | Path | None = RECORDED) -> Course | None:
+    """The course to export with: ``given`` (a path: then recorded for the exports that follow), else the file the
+    gradebook records (``grade batch --course``, or a batch's SUBMISSIONS/course.toml), else SUBMISSIONS/course.toml
+    of the latest batch, else none.  ``CourseError`` when the file is wrong or gone."""
+    from ..listing import problem_list
+
+    known = {p["number"] for p in problem_list()}
+    if given not in (RECORDED, None):
+        course = load_course(given, known)
+        book.set_meta(COURSE_META, str(Path(given).resolve()))
+        return course
+    recorded = book.meta(COURSE_META)
+    if recorded:
+        if not Path(recorded).is_file():
+            raise CourseError(f"{recorded}: the course file of this gradebook is gone: give it with --course FILE")
+        return load_course(recorded, known)
+    row = book.db.execute("SELECT submissions_dir FROM runs ORDER BY id DESC LIMIT 1").fetchone()
+    if row is not None and (Path(row["submissions_dir"]) / COURSE_FILE).is_file():
+        return load_course(Path(row["submissions_dir"]) / COURSE_FILE, known)
+    return None
+
+
+def _times(course: Course, by_student: dict[str, list[Graded]], book: Gradebook) -> dict[str, dict]:
+    """Each student's submission time per assignment: the roster column's where the course names one, else the
+    time recorded for the content graded in the assignment's problems (the latest of them)."""
+    recorded, roster = book.submission_times(), roster_times(course)
+    times = {}
+    for student, items in by_student.items():
+        mine = {}
+        for assignment in course.assignments:
+            if student in roster:
+                mine[assignment.name] = SubmissionTime(roster[student], "roster")
+                continue
+            found = [recorded[(student, g.content_hash)] for g in items
+                     if g.report.problem in assignment.problems and (student, g.content_hash) in recorded]
+            if found:
+                at, source = max(found, key=lambda t: datetime.fromisoformat(t[0]))
+                mine[assignment.name] = SubmissionTime(datetime.fromisoformat(at), source)
+        times[student] = mine
+    return times
+
+
+def class_standings(course: Course, graded: list[Graded], book: Gradebook) -> dict[str, list[Standing]]:
+    """Every student's standing in every assignment (``grader.batch.course.standings``), from the gradebook's
+    scores and submission times; kept in the gradebook (``assignment_scores``)."""
+    by_student = _by_student(graded)
+    scored = scored_items(graded)
+    points: dict[int, float] = {}
+    for g in graded:
+        points[g.report.problem] = max(points.get(g.report.problem, 0.0), problem_possible(g.report, scored))
+    times = _times(course, by_student, book)
+    result = {student: standings(course, student, {g.report.problem: g.report.score for g in items}, points,
+                                 times[student])
+              for student, items in by_student.items()}
+    book.save_standings([
+        (s.student, s.assignment, s.raw, s.possible, s.penalty, s.final, s.due.isoformat() if s.due else "",
+         s.submitted.at.isoformat() if s.submitted else "", s.submitted.source if s.submitted else "", s.days_late,
+         s.grace_days, int(s.excused))
+        for rows in result.values() for s in rows], str(course.path or ""))
+    return result
+
+
+def _days(n: int) -> str:
+    return f"{n} day{'s' if n != 1 else ''}"
+
+
+def late_status(rows: list[Standing]) -> list[str]:
+    """What grades.csv's status says of the deadlines: late (by how much, at what cost), extended, excused."""
+    parts = []
+    for s in rows:
+        if s.excused:
+            parts.append(f"excused: {s.assignment}")
+            continue
+        if s.extended:
+            parts.append(f"extension: {s.assignment} to {shown_time(s.due)}")
+        if s.late:
+            grace = f", {_days(s.grace_days).replace('day', 'grace day')} used" if s.grace_days else ""
+            cost = f"{100 * s.share:g}% off" if s.share else "no penalty"
+            parts.append(f"late: {s.assignment} by {_days(s.days_late)} ({cost}{grace})")
+    return parts
+
+
+def _grades_rows(by_student: dict[str, list[Graded]], numbers: list[int], scored: dict, course: Course | None,
+                 standing: dict[str, list[Standing]]) -> list[list]:
+    """grades.csv: each problem's score; with a course, each assignment's raw score, late penalty and final score,
+    and the submission time and where it comes from; the total, the possible points and the status."""
+    names = [a.name for a in course.assignments] if course is not None else []
+    header = ["student", *[f"problem_{n}" for n in numbers]]
+    for name in names:
+        header += [f"{name} raw", f"{name} late penalty", name]
+    header += ["total", "possible", "status"] + (["submitted", "submitted from"] if course is not None else [])
+    rows = [header]
+    for student, items in by_student.items():
+        scores = {g.report.problem: g.report.score for g in items}
+        row = [student, *[f"{scores[n]:g}" if n in scores else "" for n in numbers]]
+        status = student_status(items)
+        if course is None:
+            rows.append(row + [f"{sum(scores.values()):g}", f"{possible(items, scored):g}", status])
+            continue
+        mine = standing[student]
+        for s in mine:
+            row += ["" if s.raw is None else f"{s.raw:g}", "" if s.raw is None else f"{s.penalty:g}",
+                    EXCUSED if s.excused else "" if s.final is None else f"{s.final:g}"]
+        total = sum(s.final for s in mine if s.final is not None)
+        top = sum(s.possible for s in mine if not s.excused)
+        latest = max((s.submitted for s in mine if s.submitted is not None), key=lambda t: t.at, default=None)
+        rows.append(row + [f"{_round(total):g}", f"{_round(top):g}", "; ".join([status, *late_status(mine)]),
+                           _local(latest.at, course) if latest else "", latest.said if latest else ""])
+    return rows
+
+
+def _round(x: float) -> float:
+    return round(x, 6) + 0.0
+
+
+def _local(moment: datetime | None, course: Course) -> str:
+    """A time as the course reads it: in its time zone, else in the offset of its first due date."""
+    if moment is None:
+        return ""
+    zone = course.timezone or next((a.due.tzinfo for a in course.assignments if a.due is not None), None)
+    return shown_time(moment.astimezone(zone) if zone is not None else moment)
+
+
+def _feedback(s: Standing, items: list[Graded], assignment, course: Course) -> str:
+    """An assignment's feedback to the student (Moodle's feedback column): the points, the deadline's effect, the
+    comments on free-text answers."""
+    if s.excused:
+        return "Excused from this assignment."
+    if s.raw is None:
+        return ""
+    lines = [f"{s.raw:g} of {s.possible:g} points."]
+    if s.submitted is not None and s.due is not None:
+        when = f"Submitted {_local(s.submitted.at, course)} ({s.submitted.said})"
+        if s.late:
+            grace = f", {_days(s.grace_days)} of them covered by grace days" if s.grace_days else ""
+            cost = f"{100 * s.share:g}% off: -{s.penalty:g} points, {s.final:g} points" if s.share else "no penalty"
+            lines.append(f"{when}, {_days(s.days_late)} after the due date {shown_time(s.due)}{grace}: {cost}.")
+        else:
+            lines.append(f"{when}, by the due date {shown_time(s.due)}.")
+    for g in items:
+        if g.report.problem in assignment.problems:
+            for m in g.report.manual:
+                if m.score is not None and m.comment:
+                    lines.append(f"Problem {m.problem}, {m.question} ({m.score:g} of {m.max_score:g}): {m.comment}")
+    return "\n".join(lines)
+
+
+def lms_exports(out: Path, book: Gradebook, course: Course, by_student: dict[str, list[Graded]],
+                standing: dict[str, list[Standing]], notes: list[str]) -> dict[str, Path]:
+    """canvas.csv and moodle.csv, those the gradebook records as asked for (``grade export --canvas/--moodle``),
+    each with its roster; what the roster matched is said in ``notes``."""
+    paths = {}
+    names = [a.name for a in course.assignments]
+    grades = {student: {s.assignment: EXCUSED if s.excused else s.final for s in rows}
+              for student, rows in standing.items()}
+    possible_points = {s.assignment: s.possible for rows in standing.values() for s in rows}
+    asked = {kind: book.meta(LMS_META[kind]) for kind in ("canvas", "moodle")}
+    matchings = {}
+    for roster_path in {p for p in asked.values() if p}:
+        roster = read_roster(roster_path)
+        matchings[roster_path] = roster, match(list(by_student), roster)
+        files = " and ".join(f"{kind}.csv" for kind, p in asked.items() if p == roster_path)
+        notes += [f"{files}: {line}" if not line.startswith("  ") else line
+                  for line in matching_summary(matchings[roster_path][1], roster)]
+    for kind, roster_path in asked.items():
+        if roster_path is None:
+            continue
+        roster, matching = matchings.get(roster_path, (None, None))
+        if kind == "canvas":
+            rows = canvas_rows(names, possible_points, grades, roster, matching)
+        else:
+            feedback = {student: {s.assignment: _feedback(s, by_student[student], a, course)
+                                  for s, a in zip(mine, course.assignments)}
+                        for student, mine in standing.items()}
+            rows = moodle_rows(names, grades, feedback, roster, matching)
+        paths[kind] = out / f"{kind}.csv"
+        _write(paths[kind], _csv(rows))
+    return paths
+
+
+def _time_sources(standing: dict[str, list[Standing]]) -> str:
+    counts = Counter(s.submitted.said for rows in standing.values() for s in rows if s.submitted and s.due)
+    return ", ".join(f"{n} from {source}" for source, n in counts.most_common())
+
+
+def export_results(out: str | Path, book: Gradebook | None = None, students: bool | None = True,
+                   course: Course | str | Path | None = RECORDED, notes: list[str] | None = None) -> dict[str, Path]:
+    """Write grades.csv, manual_answers.csv, summary.html and each student's results.json and report.html; with a
+    course (``resolve_course``: by default the one the gradebook records), the assignments' scores under its due
+    dates and late policy in grades.csv, and canvas.csv and moodle.csv where they were asked for.
 
     ``students=None`` writes only the students' files that are missing or older than their latest result (a batch,
-    which wrote each student's files as it recorded them); ``False`` none of them."""
+    which wrote each student's files as it recorded them); ``False`` none of them.  What there is to say (the
+    roster's matching, where submission times come from) is added to ``notes``."""
     out = Path(out)
+    notes = [] if notes is None else notes
     if book is None:
         with Gradebook.in_folder(out) as own:
-            return export_results(out, own, students)
+            return export_results(out, own, students, course, notes)
+    if not isinstance(course, Course):
+        course = resolve_course(book, course)
     graded = book.current(figures=False)  # the class's files need no figures; a student's own are read below
     by_student = _by_student(graded)
     numbers = sorted({g.report.problem for g in graded})
     scored = scored_items(graded)
-    rows = [["student", *[f"problem_{n}" for n in numbers], "total", "possible", "status"]]
-    for name, items in by_student.items():
-        scores = {g.report.problem: g.report.score for g in items}
-        rows.append([name, *[f"{scores[n]:g}" if n in scores else "" for n in numbers],
-                     f"{sum(scores.values()):g}", f"{possible(items, scored):g}", student_status(items)])
+    standing = {}
+    if course is not None:
+        unassigned = [n for n in numbers if course.assignment_of(n) is None]
+        if unassigned:
+            notes.append(f"{_numbers(unassigned)} {'is' if len(unassigned) == 1 else 'are'} in no assignment of "
+                         f"{course.path or COURSE_FILE}: each is an assignment of its own, without a due date")
+        named = sorted({student for student, _ in [*course.extensions, *course.excused]} - set(by_student))
+        if named:
+            notes.append(f"{course.path or COURSE_FILE} names {', '.join(named)} (an extension or an excuse), who "
+                         "has no submission in the gradebook: check the spelling against the submissions' names")
+        course = course.with_problems(numbers)
+        standing = class_standings(course, graded, book)
+        sources = _time_sources(standing)
+        if sources:
+            notes.append(f"submission times: {sources}")
     paths = {"grades": out / "grades.csv", "manual": out / "manual_answers.csv", "summary": out / "summary.html"}
-    _write(paths["grades"], _csv(rows))
-    comments = book.manual_comments()
+    _write(paths["grades"], _csv(_grades_rows(by_student, numbers, scored, course, standing)))
     manual = [["student", "problem", "key", "score", "max_score", "question", "answer", "comment"]]
     manual += [[g.student, m.problem, m.key, "" if m.score is None else f"{m.score:g}", f"{m.max_score:g}",
-                m.question, m.answer, comments.get((g.student, m.problem, m.key), "")]
+                m.question, m.answer, m.comment]
                for g in graded for m in g.report.manual]
     _write(paths["manual"], _csv(manual))
+    if _lms_asked(book):  # without a course, each problem is an assignment without a due date
+        if course is None:
+            course = Course(tuple(Assignment(f"Problem {n}", (n,)) for n in numbers))
+            standing = class_standings(course, graded, book)
+        paths.update(lms_exports(out, book, course, by_student, standing, notes))
     if students is not False:
         for name, items in by_student.items():
             if students or _stale(out, name, items):
                 export_student(out, book, name)
     _write(paths["summary"], class_summary(graded))
     return paths
+
+
+def _lms_asked(book: Gradebook) -> bool:
+    return any(book.meta(key) is not None for key in LMS_META.values())
 
 
 # ------------------------------------------------------------------------------------------ class summary

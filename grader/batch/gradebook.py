@@ -119,6 +119,30 @@ CREATE TABLE IF NOT EXISTS manual_scores (
     source      TEXT NOT NULL,
     PRIMARY KEY (student_id, problem, key)
 );
+CREATE TABLE IF NOT EXISTS submission_times (
+    student      TEXT NOT NULL,             -- the student's name, as the submissions folder names them
+    content_hash TEXT NOT NULL,
+    submitted_at TEXT NOT NULL,             -- ISO 8601 with its offset
+    source       TEXT NOT NULL CHECK (source IN ('gradescope', 'files')),
+    PRIMARY KEY (student, content_hash)
+);
+CREATE TABLE IF NOT EXISTS assignment_scores (  -- recomputed from course.toml at every export, never graded
+    student      TEXT NOT NULL,
+    assignment   TEXT NOT NULL,
+    raw          REAL,                      -- NULL: no problem of the assignment graded
+    possible     REAL NOT NULL,
+    penalty      REAL NOT NULL,
+    final        REAL,                      -- NULL: excused or not graded
+    due          TEXT NOT NULL,             -- the student's own due date ('' when none)
+    submitted_at TEXT NOT NULL,
+    submitted_from TEXT NOT NULL,
+    days_late    INTEGER NOT NULL,
+    grace_days   INTEGER NOT NULL,
+    excused      INTEGER NOT NULL,
+    computed_at  TEXT NOT NULL,
+    course       TEXT NOT NULL,             -- the course file they were computed from
+    PRIMARY KEY (student, assignment)
+);
 CREATE INDEX IF NOT EXISTS submissions_current ON submissions (student_id, problem, id);
 CREATE INDEX IF NOT EXISTS check_results_check ON check_results (check_id, status);
 """
@@ -535,6 +559,45 @@ class Gradebook:
                  for student, problem, key, score, comment in rows],
             )
         return len(rows)
+
+    # ------------------------------------------------------------------ the course: times, standings, its file
+
+    def meta(self, key: str) -> str | None:
+        row = self.db.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
+        return row["value"] if row is not None else None
+
+    def set_meta(self, key: str, value: str) -> None:
+        with self.transaction() as db:
+            db.execute("INSERT INTO meta VALUES (?, ?) ON CONFLICT (key) DO UPDATE SET value = excluded.value",
+                       (key, value))
+
+    def note_submission_times(self, rows: list[tuple[str, str, str, str]]) -> None:
+        """Record when each (student, content) was submitted: (student, content hash, ISO time, source).  The first
+        time seen for a content stays (a later download of the same work does not make it late), unless the new one
+        comes from Gradescope's metadata and the kept one from the files' times."""
+        with self.transaction() as db:
+            db.executemany(
+                "INSERT INTO submission_times (student, content_hash, submitted_at, source) VALUES (?, ?, ?, ?) "
+                "ON CONFLICT (student, content_hash) DO UPDATE SET submitted_at = excluded.submitted_at, "
+                "source = excluded.source WHERE excluded.source = 'gradescope' AND submission_times.source = 'files'",
+                rows)
+
+    def submission_times(self) -> dict[tuple[str, str], tuple[str, str]]:
+        """(student, content hash) -> (ISO time, source)."""
+        rows = self.db.execute("SELECT student, content_hash, submitted_at, source FROM submission_times")
+        return {(r["student"], r["content_hash"]): (r["submitted_at"], r["source"]) for r in rows}
+
+    def save_standings(self, rows: list[tuple], course: str) -> None:
+        """Replace the assignments' scores with ``rows`` (student, assignment, raw, possible, penalty, final, due,
+        submitted at, submitted from, days late, grace days, excused), computed from ``course``: one transaction."""
+        stamp = now()
+        with self.transaction() as db:
+            db.execute("DELETE FROM assignment_scores")
+            db.executemany(
+                "INSERT INTO assignment_scores (student, assignment, raw, possible, penalty, final, due, submitted_at, "
+                "submitted_from, days_late, grace_days, excused, computed_at, course) "
+                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                [(*row, stamp, course) for row in rows])
 
     def manual_comments(self) -> dict[tuple[str, int, str], str]:
         rows = self.db.execute("SELECT st.name, m.problem, m.key, m.comment FROM manual_scores m "

@@ -15,8 +15,9 @@ from pathlib import Path
 from ..errors import SandboxError, SubmissionError
 from ..results import Status
 from ..sandbox import BWRAP_FIX, Limits, canary, sandbox_mode
+from .course import Course, entry_time
 from .discover import discover
-from .exports import StudentExporter, export_results
+from .exports import COURSE_META, RECORDED, StudentExporter, export_results
 from .gradebook import Gradebook, grader_version
 from .pool import Task, run_pool, stopped_reports
 from .progress import Progress
@@ -65,6 +66,7 @@ class BatchReport:
     skipped_timed_out: list[str] = field(default_factory=list)  # unchanged, and stopped when they were graded
     not_graded: dict[str, str] = field(default_factory=dict)  # grader faults: retried on the next run
     ignored: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)  # what the exports had to say (submission times, roster)
     interrupted: bool = False
     seconds: float = 0.0
     student_exports: float = 0.0  # seconds spent writing students' files as they were recorded (its own process)
@@ -126,6 +128,11 @@ def _interrupt(signum, frame):
     raise KeyboardInterrupt
 
 
+def _time(entry) -> tuple[str, str]:
+    when = entry_time(entry)
+    return when.at.isoformat(), when.source
+
+
 def empty_folder(submissions, ignored: list[str]) -> str:
     """What a batch over a folder without a submission says: what it found, and what a student's entry is."""
     found = f" (it holds only {', '.join(ignored[:5])}{', ...' if len(ignored) > 5 else ''})" if ignored else ""
@@ -155,6 +162,7 @@ def run_batch(
     export: bool = True,
     no_sandbox: bool = False,
     cluster: str | None = None,
+    course: Course | None = None,
 ) -> BatchReport:
     """Grade every student of ``submissions`` into the gradebook in ``out``, then write the exports.
 
@@ -163,6 +171,10 @@ def run_batch(
     batch stops with ``SandboxError`` before anyone is graded.  With ``cluster`` (a Dask scheduler's address, or
     ``local:N``), the students are graded on that cluster's workers (``grader.batch.cluster``), which must all
     have the same grader and, unless ``no_sandbox``, bubblewrap.
+
+    Each student's submission time (``grader.batch.course.entry_time``) is recorded for the deadlines of a course;
+    ``course`` (its file recorded in the gradebook for the exports that follow) gives the exports its assignments'
+    scores.
 
     In the main thread, SIGTERM stops the batch as Ctrl-C does (``interrupted`` in the report); the process
     ignores SIGTERM from then on, as it is asked to end."""
@@ -199,6 +211,9 @@ def run_batch(
             canary(limits, mode)
             sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
         run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
+        book.note_submission_times([(e.name, e.content_hash, *_time(e)) for e in entries])
+        if course is not None and course.path is not None:
+            book.set_meta(COURSE_META, str(Path(course.path).resolve()))
         report = BatchReport(run_id, len(entries), ignored=ignored)
         tasks = []
         for entry in entries:
@@ -260,7 +275,7 @@ def run_batch(
                 signal.signal(signal.SIGTERM, previous)
         if export and not report.interrupted:
             began = time.monotonic()
-            export_results(out, book, students=None)
+            export_results(out, book, students=None, course=course or RECORDED, notes=report.notes)
             report.final_exports = time.monotonic() - began
         report.seconds = time.monotonic() - start
     return report
