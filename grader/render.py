@@ -306,7 +306,9 @@ def _figure_png(fig: Figure) -> str:
     return png
 
 
-def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report") -> str:
+def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report",
+                deadlines: list[str] = ()) -> str:
+    """The HTML report; ``deadlines``: what the course's due dates made of the work, one line per assignment."""
     if not show_hidden:
         reports = [student_view(r) for r in reports]
     images = {}
@@ -316,7 +318,8 @@ def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: 
                 for index, fig in enumerate(result.figures):
                     images[(result.check_id, index)] = _figure_png(fig)
     template = _env(True).get_template("report.html.j2")
-    return template.render(reports=reports, images=images, show_hidden=show_hidden, title=title, Status=Status)
+    return template.render(reports=reports, images=images, show_hidden=show_hidden, title=title, Status=Status,
+                           deadlines=list(deadlines))
 
 
 def _visible_dict(report: ProblemReport, show_hidden: bool) -> dict:

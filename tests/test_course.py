@@ -234,6 +234,16 @@ def test_a_class_of_three_gets_the_policys_final_scores(three):
         "2026-12-03 23:00 +01:00", "the newest file's time")
     assert (grades["erin"]["submitted"], grades["erin"]["submitted from"]) == (
         "2026-12-01 23:00 +01:00", "Gradescope's submission metadata")
+    # each student's report says when the work was submitted, how that is known, and what being late cost
+    def deadlines(name):
+        html = (out / "students" / name / "report.html").read_text()
+        return re.search(r'<section id="deadlines">(.*?)</section>', html, re.S).group(1)
+
+    assert ("Exercise II: submitted 2026-12-03 23:00 +01:00 (the newest file&#39;s time), 2 days after the due date "
+            "2026-12-01 23:59 +01:00: 20% off: -1.8 points, 7.2 points.") in deadlines("bob")
+    assert "by the due date 2026-12-04 23:59 +01:00 (your extension)." in deadlines("carol")
+    assert ("submitted 2026-12-01 23:00 +01:00 (Gradescope&#39;s submission metadata), by the due date"
+            in deadlines("erin"))
     # the gradebook keeps them
     with sqlite3.connect(out / "gradebook.sqlite") as db:
         kept = dict(((s, (r, p, f)) for s, r, p, f in db.execute(
@@ -253,6 +263,8 @@ def test_changing_the_due_date_and_exporting_changes_the_scores_without_grading_
         grades = _grades(out)
         assert (grades["bob"]["Exercise II late penalty"], grades["bob"]["Exercise II"]) == ("0.9", "8.1")
         assert grades["bob"]["status"] == "graded; late: Exercise II by 1 day (10% off)"
+        assert "1 day after the due date 2026-12-02 23:59 +01:00: 10% off: -0.9 points, 8.1 points." in \
+            (out / "students" / "bob" / "report.html").read_text()
         assert grades["alice"]["Exercise II"] == grades["carol"]["Exercise II"] == "10"
         # another course file given on the command line, and a policy with a cap and grace days
         other = tmp_path / "strict.toml"

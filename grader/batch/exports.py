@@ -34,7 +34,8 @@ from .gradebook import Gradebook, Graded, now, spreadsheet_cell
 from .lms import EXCUSED, canvas_rows, match, matching_summary, moodle_rows, read_roster
 
 __all__ = ["DIAGNOSES", "TROUBLE", "export_results", "export_student", "StudentExporter", "class_summary",
-           "scored_items", "problem_possible", "possible", "student_status"]
+           "scored_items", "problem_possible", "possible", "student_status", "student_deadlines", "resolve_course",
+           "class_standings", "late_status", "lms_exports", "COURSE_META", "LMS_META", "RECORDED"]
 
 #: how the class summary words a diagnosis: "31% of students transposed a rotation matrix ..."
 DIAGNOSES = {
@@ -118,22 +119,33 @@ def _by_student(graded: list[Graded]) -> dict[str, list[Graded]]:
     return dict(sorted(students.items()))
 
 
-def _student_files(out: Path, name: str, items: list[Graded]) -> None:
+def _student_files(out: Path, name: str, items: list[Graded], deadlines: list[str]) -> None:
     from ..gradescope import render_results
     from ..render import render_html
 
     reports = [g.report for g in items]
     folder = out / "students" / name
     _write(folder / "results.json", render_results(reports))
-    _write(folder / "report.html", render_html(reports, title=f"Grading report: {name}"))
+    _write(folder / "report.html", render_html(reports, title=f"Grading report: {name}", deadlines=deadlines))
 
 
-def export_student(out: str | Path, book: Gradebook, name: str) -> None:
+def student_deadlines(course: Course | None, name: str, items: list[Graded], book: Gradebook) -> list[str]:
+    """What a student's report says of the course's deadlines: per assignment with a due date, when the work was
+    submitted (and how that is known), and what being late cost."""
+    if course is None:
+        return []
+    times = _times(course, {name: items}, book)[name]
+    rows = standings(course, name, {g.report.problem: g.report.score for g in items}, {}, times)
+    return [f"{s.assignment}: {line}" for s in rows if (line := _deadline_sentence(s, course))]
+
+
+def export_student(out: str | Path, book: Gradebook, name: str, course: Course | None = None) -> None:
     """Write one student's results.json and report.html from the gradebook (every problem's current result, the
-    manual scores merged): what a batch does as soon as it recorded the student."""
+    manual scores merged; the course's deadlines, with one): what a batch does as soon as it recorded the
+    student."""
     items = book.current(student=name)
     if items:
-        _student_files(Path(out), name, items)
+        _student_files(Path(out), name, items, student_deadlines(course, name, items, book))
 
 
 class StudentExporter:
@@ -141,16 +153,16 @@ class StudentExporter:
     process stays free to hand out students and record results (and, on a Dask client, to the scheduler's
     threads).  Students whose files it could not write are written by ``export_results(..., students=None)``."""
 
-    def __init__(self, out: str | Path):
+    def __init__(self, out: str | Path, course: Course | None = None):
         import multiprocessing
 
         context = multiprocessing.get_context("spawn")
         self.conn, theirs = context.Pipe()
-        self.process = context.Process(target=_export_loop, args=(theirs, str(out), os.getpid()), daemon=True,
-                                       name="grade-exporter")
+        self.process = context.Process(target=_export_loop, args=(theirs, str(out), os.getpid(), course),
+                                       daemon=True, name="grade-exporter")
         self.process.start()
         theirs.close()
-        self.out, self.failed = Path(out), False
+        self.out, self.course, self.failed = Path(out), course, False
 
     def submit(self, name: str, book: Gradebook) -> None:
         if not self.failed:
@@ -159,7 +171,7 @@ class StudentExporter:
                 return
             except OSError:  # the exporter died: this process writes the files from now on
                 self.failed = True
-        export_student(self.out, book, name)
+        export_student(self.out, book, name, self.course)
 
     def close(self, finish: bool = True) -> float:
         """Wait until every submitted student is written (``finish``) or stop now; the exporter's busy seconds."""
@@ -178,7 +190,7 @@ class StudentExporter:
         return seconds
 
 
-def _export_loop(conn, out: str, parent: int) -> None:
+def _export_loop(conn, out: str, parent: int, course: Course | None = None) -> None:
     import signal
     import time
 
@@ -197,7 +209,7 @@ def _export_loop(conn, out: str, parent: int) -> None:
                 conn.send(busy)
                 return
             began = time.monotonic()
-            export_student(out, book, name)
+            export_student(out, book, name, course)
             busy += time.monotonic() - began
 
 
@@ -340,6 +352,22 @@ def _local(moment: datetime | None, course: Course) -> str:
     return shown_time(moment.astimezone(zone) if zone is not None else moment)
 
 
+def _deadline_sentence(s: Standing, course: Course) -> str:
+    """When the work of an assignment was submitted (and how that is known) against its due date, and what being
+    late cost: "" where the assignment has no due date or the time is not known."""
+    if s.excused:
+        return "excused."
+    if s.submitted is None or s.due is None or s.raw is None:
+        return ""
+    own = " (your extension)" if s.extended else ""
+    when = f"submitted {_local(s.submitted.at, course)} ({s.submitted.said})"
+    if not s.late:
+        return f"{when}, by the due date {shown_time(s.due)}{own}."
+    grace = f", {_days(s.grace_days)} of them covered by grace days" if s.grace_days else ""
+    cost = f"{100 * s.share:g}% off: -{s.penalty:g} points, {s.final:g} points" if s.share else "no penalty"
+    return f"{when}, {_days(s.days_late)} after the due date {shown_time(s.due)}{own}{grace}: {cost}."
+
+
 def _feedback(s: Standing, items: list[Graded], assignment, course: Course) -> str:
     """An assignment's feedback to the student (Moodle's feedback column): the points, the deadline's effect, the
     comments on free-text answers."""
@@ -348,14 +376,9 @@ def _feedback(s: Standing, items: list[Graded], assignment, course: Course) -> s
     if s.raw is None:
         return ""
     lines = [f"{s.raw:g} of {s.possible:g} points."]
-    if s.submitted is not None and s.due is not None:
-        when = f"Submitted {_local(s.submitted.at, course)} ({s.submitted.said})"
-        if s.late:
-            grace = f", {_days(s.grace_days)} of them covered by grace days" if s.grace_days else ""
-            cost = f"{100 * s.share:g}% off: -{s.penalty:g} points, {s.final:g} points" if s.share else "no penalty"
-            lines.append(f"{when}, {_days(s.days_late)} after the due date {shown_time(s.due)}{grace}: {cost}.")
-        else:
-            lines.append(f"{when}, by the due date {shown_time(s.due)}.")
+    sentence = _deadline_sentence(s, course)
+    if sentence:
+        lines.append(sentence[:1].upper() + sentence[1:])
     for g in items:
         if g.report.problem in assignment.problems:
             for m in g.report.manual:
@@ -452,7 +475,7 @@ def export_results(out: str | Path, book: Gradebook | None = None, students: boo
     if students is not False:
         for name, items in by_student.items():
             if students or _stale(out, name, items):
-                export_student(out, book, name)
+                export_student(out, book, name, course if standing else None)
     _write(paths["summary"], class_summary(graded))
     return paths
 

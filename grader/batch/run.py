@@ -251,7 +251,8 @@ def run_batch(
             score = sum(r.score for r in reports)
             bar.advance(name, f"{score:g}/{sum(r.max_score for r in reports):g} ({seconds:.1f} s)")
 
-        exporter = StudentExporter(out) if export and tasks else None
+        exporter = StudentExporter(out, course.with_problems(numbers) if course else None) \
+            if export and tasks else None
         in_main = threading.current_thread() is threading.main_thread()
         previous = signal.signal(signal.SIGTERM, _interrupt) if in_main else None
         state = "interrupted"
