@@ -1,9 +1,9 @@
 """Batch grading: every student of a folder, in parallel (or on a Dask cluster), into a gradebook that survives
 interruption.
 
-    grade batch SUBMISSIONS --out RESULTS [--problems N ...] [--jobs N | --cluster ADDRESS] [--force]
+    grade batch SUBMISSIONS --out RESULTS [--problems N ...] [--jobs N | --cluster ADDRESS] [--force] [--course F]
     grade import-manual RESULTS SCORES.csv
-    grade export RESULTS
+    grade export RESULTS [--course F] [--canvas] [--moodle] [--roster F]
 
 Each entry of SUBMISSIONS is one student: a folder, a .zip archive or a .ipynb notebook (``discover``).  Students
 are graded on ``--jobs`` worker processes (``pool``), each with a warm sandboxed child from which every student's
@@ -15,6 +15,9 @@ child is forked, or on the workers of a Dask cluster (``cluster``); the parent a
 RESULTS receives the gradebook (``gradebook.sqlite``), ``grades.csv``, ``summary.html`` (the class summary),
 ``manual_answers.csv`` (free-text answers, with a score column to fill in and import) and, per student,
 ``students/NAME/results.json`` (Gradescope's, built as the autograder builds it: ``grader.gradescope.results_json``) and ``students/NAME/report.html`` (the student's view).
+With a course file (``course``: assignments, due dates, extensions, a late policy), grades.csv has each assignment's
+raw score, late penalty and final score, recomputed at every export; ``canvas.csv`` and ``moodle.csv`` (``lms``) are
+the LMS's grade import files.
 
 The names below are imported when first used, so that ``grade`` starts without importing the batch machinery.
 """
