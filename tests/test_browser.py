@@ -41,7 +41,7 @@ function brokenWords() {
     for (let node = walker.nextNode(); node; node = walker.nextNode()) {
       const pre = node.parentElement.closest("pre");
       const room = pre ? pre.clientWidth : Infinity;
-      const pieces = /[^\s\-\/\u2013\u2014]+[\-\/\u2013\u2014]*|[\-\/\u2013\u2014]+/g;
+      const pieces = /[^\\s\\-\\/\\u2013\\u2014]+[\\-\\/\\u2013\\u2014]*|[\\-\\/\\u2013\\u2014]+/g;
       for (let m = pieces.exec(node.data); m; m = pieces.exec(node.data)) {
         const range = document.createRange();
         range.setStart(node, m.index);
