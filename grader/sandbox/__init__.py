@@ -4,9 +4,11 @@ handle on the child, the worker that runs inside it, and the protocol between th
     launch.py    modes (bubblewrap or a plain process), limits, the child's view of the file system
     users.py     unprivileged uids for children when the grader runs as root, and the sweep after each grading
     child.py     the parent's handle: probe calls with absolute deadlines, restarts, the start-up check
-    worker.py    the child side (standard library only, plus protocol.py, notebook.py and the probes package)
+    worker.py    the child side (standard library only, plus protocol.py, notebook.py, seccomp.py and the probes
+                 package)
     protocol.py  framing and deadline-bound reads and writes (standard library only)
     notebook.py  what of a notebook's code cells counts, and running it in the worker (standard library only)
+    seccomp.py   the worker's system-call filter and fresh session keyring, installed last (standard library only)
 """
 
 from .child import Child, canary, probe_name

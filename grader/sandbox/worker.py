@@ -2,15 +2,16 @@
 and runs probes on it.
 
 This file runs inside the sandbox with the untrusted submission and must stay importable on its own: standard
-library only, plus ``protocol.py``, ``notebook.py`` and the ``probes`` package, which the grader copies next to it.  It never sees
-the reference, the checks or the scoring code: it receives probe calls on a dedicated pipe and sends back plain
-data (see ``protocol`` for the messages).
+library only, plus ``protocol.py``, ``notebook.py``, ``seccomp.py`` and the ``probes`` package, which the grader
+copies next to it.  It never sees the reference, the checks or the scoring code: it receives probe calls on a
+dedicated pipe and sends back plain data (see ``protocol`` for the messages).
 
     python -I -B worker.py REQUEST_FD REPLY_FD SUBMISSION CONFIG_JSON
 
-Start-up, before any code of the submission runs: resource limits; as root, new network, IPC and UTS namespaces
-(where the kernel allows) and the switch to the unprivileged uid the grader claimed; then the imports of the
-dependencies (the probes package, numpy).  Only then does the worker say ready: a failure up to that point is a
+Start-up, before any code of the submission runs: resource limits; as root without bubblewrap, new network, IPC,
+UTS, mount and PID namespaces with a ``/proc`` of its own (where the kernel allows) and the switch to the
+unprivileged uid the grader claimed; Landlock; a fresh session keyring and the system-call filter (``seccomp``);
+then the imports of the dependencies (the probes package, numpy).  Only then does the worker say ready: a failure up to that point is a
 fault of the installation, never of the submission.
 
     python -I -B worker.py zygote CONTROL_FD SLOT CONFIG_JSON
@@ -19,7 +20,7 @@ The warm process of a batch slot (see ``grader.sandbox.zygote``): it imports the
 probes need (numpy, scipy, sympy, mujoco, the probes), never any submission, and on each request of the grader
 forks one student's worker, which confines itself exactly as a fresh worker does (its own mount and IPC namespaces
 with an empty ``/tmp`` and ``/dev/shm`` and only its submission at ``/submission`` under bubblewrap; limits; its
-uid; Landlock) before it says ready.  Nothing of an earlier student is in the fork: the zygote never ran student
+uid; Landlock; its keyring and system-call filter) before it says ready.  Nothing of an earlier student is in the fork: the zygote never ran student
 code, and whatever a student started is killed before the next one is forked.
 """
 
@@ -35,10 +36,11 @@ import traceback
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 try:
-    from . import notebook, protocol
+    from . import notebook, protocol, seccomp
 except ImportError:  # run as a script from the runtime directory, next to protocol.py
     import notebook  # type: ignore[no-redef]
     import protocol  # type: ignore[no-redef]
+    import seccomp  # type: ignore[no-redef]
 
 PACKAGE = "submission"
 RUNTIME = os.path.dirname(os.path.abspath(__file__))
@@ -268,10 +270,51 @@ def _die_with_parent(libc) -> None:
     libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
 
 
+_CLONE_NEWNET, _CLONE_NEWUTS, _CLONE_NEWPID, _CLONE_NEWNS, _CLONE_NEWIPC = \
+    0x40000000, 0x04000000, 0x20000000, 0x00020000, 0x08000000
+
+
 def _unshare_network(libc) -> bool:
     """New network, IPC and UTS namespaces: no interface but a loopback of its own (needs root)."""
-    CLONE_NEWNET, CLONE_NEWIPC, CLONE_NEWUTS = 0x40000000, 0x08000000, 0x04000000
-    return libc.unshare(CLONE_NEWNET | CLONE_NEWIPC | CLONE_NEWUTS) == 0
+    return libc.unshare(_CLONE_NEWNET | _CLONE_NEWIPC | _CLONE_NEWUTS) == 0
+
+
+def _own_namespaces(libc) -> dict:
+    """As root, a plain process's own network, IPC, UTS, mount and PID namespaces: this process forks, and the
+    child, the first process of the new PID namespace, goes on with a ``/proc`` of its own (it sees no process but
+    its own and those it starts, which all end with it); the parent stays outside and only waits (``_stand_in``).
+    Where the kernel refuses a PID and mount namespace (a container), the network, IPC and UTS namespaces alone."""
+    if libc.unshare(_CLONE_NEWNET | _CLONE_NEWIPC | _CLONE_NEWUTS | _CLONE_NEWNS | _CLONE_NEWPID) != 0:
+        return {"network_isolated": _unshare_network(libc), "pid_namespace": False}
+    pid = os.fork()
+    if pid != 0:
+        _stand_in(pid)
+    _die_with_parent(libc)
+    _check(libc.mount(b"none", b"/", None, _MS_REC | _MS_PRIVATE, None), "private mounts")
+    _check(libc.mount(b"proc", b"/proc", b"proc", _MS_NOSUID | _MS_NODEV | _MS_NOEXEC, None), "a /proc of its own")
+    return {"network_isolated": True, "pid_namespace": True}
+
+
+def _stand_in(pid: int) -> None:
+    """The parent that the worker leaves outside its PID namespace: it keeps none of the worker's descriptors (the
+    grader sees the worker's pipes close when the worker ends), waits for it, and ends as it ended: with its exit
+    code, or killed by the same signal.  Killing it kills the worker (its parent-death signal)."""
+    import resource
+    import signal
+
+    os.closerange(3, resource.getrlimit(resource.RLIMIT_NOFILE)[0])  # (its /proc is now the new namespace's)
+    for number in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(number, signal.SIG_IGN)
+    _, status = os.waitpid(pid, 0)
+    if os.WIFSIGNALED(status):
+        number = os.WTERMSIG(status)
+        try:
+            signal.signal(number, signal.SIG_DFL)
+        except (OSError, ValueError):  # SIGKILL and SIGSTOP keep their default
+            pass
+        os.kill(os.getpid(), number)
+        os._exit(128 + number)
+    os._exit(os.waitstatus_to_exitcode(status))
 
 
 def _apply_limits(limits: dict, uid: int | None) -> None:
@@ -410,8 +453,8 @@ def confine(config: dict) -> dict:
     _apply_limits(config.get("limits", {}), uid)
     libc = _libc()
     _die_with_parent(libc)
-    if config.get("unshare_network") and os.geteuid() == 0:
-        info["network_isolated"] = _unshare_network(libc)
+    if config.get("own_namespaces") and os.geteuid() == 0:
+        info.update(_own_namespaces(libc))
     if uid is not None and os.geteuid() == 0:
         _drop_privileges(uid)
     elif os.geteuid() == 0:
@@ -419,6 +462,9 @@ def confine(config: dict) -> dict:
     info["uid"] = os.getuid()
     if config.get("landlock"):
         info["landlock"] = _landlock(config["landlock"], libc)
+    # last, once nothing more needs these calls: a keyring of its own, then the system-call filter
+    info["keyring"] = seccomp.join_fresh_session_keyring(libc)
+    info["syscalls"] = seccomp.install(libc)
     return info
 
 
@@ -441,8 +487,8 @@ def _import_dependencies(required: list[str]) -> None:
 SLOT = "/slot"
 #: seconds the zygote spends killing what a student left before it gives up
 SWEEP_SECONDS = 10.0
-_CLONE_NEWNS, _CLONE_NEWIPC = 0x00020000, 0x08000000
-_MS_RDONLY, _MS_NOSUID, _MS_NODEV, _MS_REMOUNT, _MS_BIND, _MS_REC, _MS_PRIVATE = 1, 2, 4, 32, 4096, 16384, 1 << 18
+_MS_RDONLY, _MS_NOSUID, _MS_NODEV, _MS_NOEXEC, _MS_REMOUNT, _MS_BIND, _MS_REC, _MS_PRIVATE = \
+    1, 2, 4, 8, 32, 4096, 16384, 1 << 18
 _PR_SET_DUMPABLE, _PR_CAP_AMBIENT, _PR_CAP_AMBIENT_CLEAR_ALL, _PR_SET_CHILD_SUBREAPER = 4, 47, 4, 36
 
 
@@ -565,9 +611,9 @@ def _forked(request_fd: int, reply_fd: int, out_fd: int, err_fd: int, config: di
         submission = config["submission"]
         if config.get("bind"):
             _own_mounts(libc, config["bind"])
-        info = confine(config)
         if os.geteuid() != 0:
             _drop_capabilities(libc)
+        info = confine(config)
         if config.get("uid") is None:  # as a fresh worker of the grader's own uid is (the zygote is not)
             libc.prctl(_PR_SET_DUMPABLE, 1, 0, 0, 0)
         info["warm"] = True

@@ -48,9 +48,13 @@ except OSError as exc:
     done["daemon"] = type(exc).__name__
 done["shm"] = _sysv.create()
 print("LEAVER " + json.dumps(done), flush=True)
+_parent = os.getppid()
 try:
-    os.kill(os.getppid(), signal.SIGKILL)
-    killed = True
+    if _parent == 0:  # the first process of a PID namespace of its own: its parent is outside, and has no pid here
+        killed = "no parent in its PID namespace"
+    else:
+        os.kill(_parent, signal.SIGKILL)
+        killed = True
 except OSError as exc:
     killed = type(exc).__name__
 if killed is True:
