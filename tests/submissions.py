@@ -8,11 +8,13 @@
 
   - ``status`` (one or a list) of the ``checks`` listed (default: every check that ran), each scoring 0 unless
     the status is "passed"; ``message``: a text of their messages; ``max_score``: a bound of the total;
-    ``stdout``: a text of what the submission printed;
+    ``stdout``: a text of what the submission printed; ``stdout_not``: texts it must not have printed;
   - ``limits``: fields of ``Limits`` that replace the tests' defaults (e.g. ``{ call_timeout = 60.0 }``);
   - ``isolated_only``: the attack is contained only by bubblewrap's file-system view (plain processes skip it);
   - ``other_uid``: the attack would harm the user who runs the grader: graded only where the child cannot be that
     user (bubblewrap, or a plain process under a uid of its own);
+  - ``own_pid_namespace``: the attack is contained by a PID namespace of the child's own: graded where it has one
+    (bubblewrap, or a plain process as root, whose report must then say so);
   - ``load_error``: a text of why the submission could not be loaded (said once, for the whole problem);
   - ``note``: a text of one of the report's notes;
   - ``links``: symbolic links to create in the submission, ``{ "NAME" = "TARGET" }``, a target starting with
@@ -20,9 +22,13 @@
   - ``odd_names``: files to create whose names are not valid UTF-8, written with ``\\xNN`` escapes of their bytes
     (each holds ``x = 1``);
   - ``target``: the test writes ``target.txt`` into the submission (JSON: a ``nonce``, the ``port`` of a socket
-    the test listens on, the reference ``cache`` folder the grader uses) and checks afterwards that no process or
-    file named with the nonce is left, that the cache is untouched, and that a connection reached the port only
-    where the report says the network was not isolated.
+    the test listens on, a named Unix socket ``unix`` that every user may connect to and an ``abstract`` one, the
+    reference ``cache`` folder the grader uses) and checks afterwards that no process or file named with the nonce
+    is left, that the cache is untouched, that a connection reached the port only where the report says the
+    network was not isolated, and that none reached either Unix socket;
+  - ``keyring``: the test grades from a session keyring of its own that holds a secret key, and checks afterwards
+    that the secret is not in the submission's output and that the keyring holds nothing else;
+  - ``spy_process``: the test runs a process named with a marker that it writes to ``spy.txt``.
 """
 
 from __future__ import annotations

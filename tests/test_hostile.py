@@ -14,8 +14,10 @@ Python runtime an unprivileged uid cannot read (e.g. under /root) must refuse: t
 import json
 import os
 import random
+import secrets
 import shutil
 import socket
+import subprocess
 import tempfile
 import time
 from dataclasses import replace
@@ -26,9 +28,10 @@ import pytest
 from grader import grade_problem, grade_submission
 from grader.errors import SandboxError
 from grader.results import Status
-from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode
+from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode, users
 from grader.sandbox.zygote import Zygote, warm_modules
 
+from . import keyrings
 from .processes import descendants, new_processes, processes_with
 from .submissions import build_hostile, copy_reference, hostile_expectation, hostile_names
 
@@ -38,6 +41,8 @@ MODES = [pytest.param(kind, id=kind) for kind in ("bwrap", "process", "bwrap-war
 GONE_WITHIN = 20.0
 #: how a report says that Landlock restricted the files of a plain process
 LANDLOCK_FILES = "Landlock let it read only"
+#: how a report says that a plain process had a PID namespace of its own
+OWN_PID_NAMESPACE = "its own PID and mount namespaces"
 
 
 def hostile_mode(kind: str) -> SandboxMode:
@@ -77,8 +82,9 @@ def wait_until(condition, seconds: float = GONE_WITHIN) -> bool:
 
 
 class Target:
-    """What a ``target`` submission attacks: a nonce to name its leftovers, a port this test listens on, and a
-    reference cache opened to every user (a careless installation), with one planted entry."""
+    """What a ``target`` submission attacks: a nonce to name its leftovers, a port this test listens on, a Unix
+    socket of this machine that every user may connect to and an abstract one, and a reference cache opened to
+    every user (a careless installation), with one planted entry."""
 
     def __init__(self, submission: Path, monkeypatch):
         self.nonce = f"{random.randrange(10**6, 10**7)}.{random.randrange(10**5, 10**6)}"  # a `sleep` duration
@@ -95,22 +101,39 @@ class Target:
         self.server.bind(("127.0.0.1", 0))
         self.server.listen(8)
         self.server.setblocking(False)
+        self.unix = socket.socket(socket.AF_UNIX)
+        self.unix.bind(str(self.base / "host.sock"))
+        os.chmod(self.base / "host.sock", 0o777)
+        self.abstract_name = f"mbd-test-{secrets.token_hex(8)}"
+        self.abstract = socket.socket(socket.AF_UNIX)
+        self.abstract.bind("\0" + self.abstract_name)
+        for server in (self.unix, self.abstract):
+            server.listen(8)
+            server.setblocking(False)
         (submission / "target.txt").write_text(json.dumps(
-            {"nonce": self.nonce, "port": self.server.getsockname()[1], "cache": str(self.cache)}))
+            {"nonce": self.nonce, "port": self.server.getsockname()[1], "cache": str(self.cache),
+             "unix": str(self.base / "host.sock"), "abstract": self.abstract_name}))
 
-    def connected(self) -> bool:
+    @staticmethod
+    def _accepted(server) -> bool:
         try:
-            self.server.accept()[0].close()
+            server.accept()[0].close()
         except BlockingIOError:
             return False
         return True
+
+    def connected(self) -> bool:
+        return self._accepted(self.server)
+
+    def unix_connected(self) -> bool:
+        return self._accepted(self.unix) or self._accepted(self.abstract)
 
     def leftover_files(self) -> list[str]:
         return [str(p) for folder in ("/tmp", "/var/tmp", "/dev/shm") if os.path.isdir(folder)
                 for p in Path(folder).glob(f"*{self.nonce}*")]
 
     def verify(self, note: str) -> None:
-        """Nothing left, the cache untouched, the network as the report says."""
+        """Nothing left, the cache untouched, the network as the report says, no Unix socket of the host reached."""
         assert wait_until(lambda: not processes_with(self.nonce)), processes_with(self.nonce)
         assert not self.leftover_files(), self.leftover_files()
         files = sorted(p for p in self.cache.rglob("*"))
@@ -118,9 +141,11 @@ class Target:
         assert self.entry.read_text() == '{"value": 1.0}'
         claims_isolation = "no network" in note or "network isolated" in note
         assert not (claims_isolation and self.connected()), note
+        assert not self.unix_connected(), note
 
     def close(self) -> None:
-        self.server.close()
+        for server in (self.server, self.unix, self.abstract):
+            server.close()
         for pid in processes_with(self.nonce):  # only after a failed test: never leave them running
             os.kill(pid, 9)
         for path in self.leftover_files():
@@ -131,9 +156,48 @@ class Target:
 # ------------------------------------------------------------------------------------------ the tests
 
 
+class GraderKeyring:
+    """The session keyring of this test process, as a login session's holds tokens: joined before any worker or
+    warm process starts (they inherit it), with a secret in it."""
+
+    def __init__(self):
+        self.serial = keyrings.join_session(f"mbd-test-{secrets.token_hex(4)}")
+        self.secret = secrets.token_hex(16)
+        self.key = keyrings.add_key("mbd-grader-secret", self.secret.encode())
+
+    def verify(self, stdout: str) -> None:
+        """The secret did not reach the student, and the keyring holds nothing but it."""
+        assert self.secret not in stdout, stdout
+        assert keyrings.keys_in(keyrings.SESSION) == [self.key]
+
+    def close(self) -> None:
+        keyrings.invalidate(self.key)
+
+
 @pytest.fixture(scope="module")
-def zygotes():
-    """One warm process per mode, started when first needed and shared by every test of the module."""
+def grader_keyring():
+    keyring = GraderKeyring()
+    yield keyring
+    keyring.close()
+
+
+class SpyTarget:
+    """A process of the grading machine that a ``spy_process`` submission looks for (named in ``spy.txt``)."""
+
+    def __init__(self, submission: Path):
+        self.marker = f"{random.randrange(10**6, 10**7)}.{random.randrange(10**5, 10**6)}"  # a `sleep` duration
+        self.process = subprocess.Popen(["sleep", self.marker])
+        (submission / "spy.txt").write_text(self.marker)
+
+    def close(self) -> None:
+        self.process.kill()
+        self.process.wait()
+
+
+@pytest.fixture(scope="module")
+def zygotes(grader_keyring):
+    """One warm process per mode, started when first needed and shared by every test of the module (after the test
+    process joined the session keyring that they inherit)."""
     started: dict[str, Zygote] = {}
 
     def get(kind: str) -> Zygote:
@@ -157,8 +221,35 @@ HOSTILE_PROBLEMS = {hostile_expectation(name).get("problem", 6) for name in host
 
 @pytest.mark.parametrize("kind", MODES)
 @pytest.mark.parametrize("name", hostile_names())
-def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes):
-    _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes)
+def test_hostile_submission(name, kind, tmp_path, monkeypatch, zygotes, grader_keyring):
+    _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, keyring=grader_keyring)
+
+
+@pytest.mark.parametrize("kind", MODES)
+def test_a_key_that_one_student_leaves_never_reaches_the_next_under_the_same_uid(kind, tmp_path, monkeypatch,
+                                                                                  zygotes):
+    """Two students graded one after the other under the same uid, as a second ``grade`` run or a batch slot
+    started again claims the first free uid anew: what the first leaves in the user keyring of that uid (which
+    outlives its processes) never reaches the second, because neither may use a keyring."""
+    mode = hostile_mode(kind)
+    warm = kind.endswith("-warm")
+    if kind.startswith("process") and refusal() is not None:
+        assert_refused(lambda: grade_problem(6, build_hostile("keyring_user", tmp_path / "first"), seed=7,
+                                             limits=LIMITS, mode=mode, zygote=zygotes(kind) if warm else None))
+        return
+    offset = random.randrange(users.UID_COUNT // 2, users.UID_COUNT - 100)  # away from other test processes' uids
+    outputs = []
+    for name in ("first", "second"):
+        monkeypatch.setattr(users, "_next_offset", offset)
+        submission = build_hostile("keyring_user", tmp_path / name)
+        report = grade_problem(6, submission, seed=7, limits=LIMITS, mode=mode,
+                               zygote=zygotes(kind) if warm else None)
+        assert report.score == report.auto_max_score, report.results
+        outputs.append(report.stdout)
+    uids = [next(line for line in out.splitlines() if line.startswith("uid: ")) for out in outputs]
+    assert uids[0] == uids[1], uids  # the same uid: the case of a second run
+    assert "found a note" not in outputs[1], outputs[1]
+    assert "left a note" not in outputs[0], outputs[0]
 
 
 #: attacks graded once more in bubblewrap with a second worker grading another problem beside them (``grade
@@ -172,7 +263,7 @@ def test_hostile_submission_beside_another_worker(name, tmp_path, monkeypatch, z
     _grade_hostile(name, "bwrap", tmp_path, monkeypatch, zygotes, beside=True)
 
 
-def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False):
+def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False, keyring=None):
     """Grade the attack's problem (``beside``: with another problem, two workers side by side) and assert what
     its ``expect.toml`` says."""
     expect = hostile_expectation(name)
@@ -191,6 +282,7 @@ def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False):
     warm = warm and "load_error" not in expect  # a submission refused by the loader starts no child at all
     zygote = zygotes(kind) if warm else None
     target = Target(submission, monkeypatch) if expect.get("target") else None
+    spy = SpyTarget(submission) if expect.get("spy_process") else None
     before = set(descendants(os.getpid()))
     try:
         start = time.monotonic()
@@ -210,6 +302,11 @@ def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False):
         if expect.get("isolated_only") and not report.isolated and LANDLOCK_FILES not in report.sandbox:
             pytest.skip("only a file-system sandbox (bubblewrap, or Landlock where the kernel has it) hides the "
                         "reference's files; the report says that there was none")
+        if expect.get("own_pid_namespace") and not report.isolated:
+            if os.geteuid() != 0:
+                pytest.skip("only a PID namespace of the child's own (bubblewrap, or a plain process as root) hides "
+                            "the machine's processes; without root a plain process has none, and its report says so")
+            assert OWN_PID_NAMESPACE in report.sandbox, report.sandbox
         by_id = {r.check_id: r for r in report.results}
         statuses = expect["status"] if isinstance(expect["status"], list) else [expect["status"]]
         targets = expect.get("checks") or [r.check_id for r in report.results if r.status is not Status.SKIPPED]
@@ -232,6 +329,8 @@ def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False):
             assert report.score <= expect["max_score"]
         if "stdout" in expect:
             assert expect["stdout"] in report.stdout, report.stdout
+        for text in expect.get("stdout_not", ()):
+            assert text not in report.stdout, report.stdout
         # bounded: every call stops at its limit (the bound is generous: a loaded machine passes)
         bound = limits.setup_timeout + limits.import_timeout + len(report.results) * (limits.call_timeout + 5)
         assert elapsed < 2 * bound, elapsed
@@ -239,9 +338,13 @@ def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False):
         assert wait_until(lambda: not new_processes(before)), new_processes(before)
         if target is not None:
             target.verify(report.sandbox)
+        if expect.get("keyring"):
+            keyring.verify(report.stdout)
     finally:
         if target is not None:
             target.close()
+        if spy is not None:
+            spy.close()
 
 
 def test_fallback_is_reported(tmp_path):
