@@ -4,6 +4,7 @@ faults of the set-up reported as the grader's, and the unprivileged uids of a gr
 Outcomes are asserted with generous bounds, never durations (timing belongs to the benchmarks)."""
 
 import json
+import re
 import os
 import shutil
 import signal
@@ -507,3 +508,105 @@ def test_the_test_run_says_how_student_code_runs_here(monkeypatch):
     assert "refuses to run student code" in header[0] and header[-1] == "  Fix: install bubblewrap"
     monkeypatch.setattr(sandbox, "refusal", lambda: None)
     assert sandbox_header() == ["sandbox: a plain process with resource limits (bubblewrap is not available)"]
+
+
+# ------------------------------------------------------------------------------------------ what the README says
+
+
+def test_the_report_says_what_a_plain_process_had(tmp_path):
+    """The report of a plain process names what it had, as its worker found at start-up: a PID namespace, Landlock,
+    a network namespace, the filter; and says so plainly where one was missing."""
+    child = Child(tmp_path, LIMITS, plain_mode("bubblewrap is not available"))
+    try:
+        child.info = {"pid_namespace": True, "network_isolated": True, "landlock": {"abi": 6, "tcp": True,
+                      "signals": True}, "syscalls": {"arch": "x86_64"}}
+        note = child.note
+        assert "its own PID and mount namespaces" in note and "Landlock let it read only" in note
+        assert "network isolated" in note and "system-call filter" in note and "no keyrings" in note
+        child.info = {"landlock": None, "syscalls": {"arch": "x86_64"}}
+        note = child.note
+        assert "PID" not in note and "every file its user may read" in note and "NOT isolated" in note
+        child.info = {"landlock": {"abi": 4, "tcp": True}, "syscalls": {"arch": "x86_64"}}
+        assert "TCP connections blocked" in child.note
+    finally:
+        child.__exit__(None, None, None)
+
+
+#: each sentence of the README's sandbox section, and what holds it: hostile submissions (``tests/hostile/NAME``,
+#: graded in bubblewrap and as plain processes, fresh and warm) and tests (``module::function``)
+README_SANDBOX = {
+    "Student code never runs as root, and each report says how it ran.":
+        ("kill_everything", "test_hostile::test_fallback_is_reported",
+         "test_sandbox::test_concurrent_children_run_under_different_unprivileged_uids"),
+    "Every student's process starts with a fresh, empty session keyring and a system-call filter, anchored on "
+    "Docker's default profile: it cannot use the kernel's keyrings, trace other processes, mount file systems, make "
+    "namespaces, load BPF programs, open performance counters or userfaultfd, use io_uring, or connect to a Unix "
+    "socket.":
+        ("keyring_session", "keyring_user", "forbidden_syscalls", "unix_socket_escape",
+         "test_hostile::test_a_key_that_one_student_leaves_never_reaches_the_next_under_the_same_uid",
+         "test_seccomp::test_every_call_a_container_is_refused_is_refused_with_eperm",
+         "test_seccomp::test_the_filter_refuses_in_this_kernel_what_the_process_could_do_before"),
+    "A call of another architecture's table (i386, x32) kills it.":
+        ("test_seccomp::test_calls_of_another_architecture_kill_the_process",
+         "test_seccomp::test_the_filter_refuses_in_this_kernel_what_the_process_could_do_before"),
+    "Where the filter cannot be installed (a machine other than x86_64 or aarch64), nothing is graded (exit 3).":
+        ("test_seccomp::test_no_student_code_runs_where_the_filter_cannot_be_installed",
+         "test_seccomp::test_an_unsupported_machine_is_refused"),
+    "With bubblewrap (`apt-get install bubblewrap`), it runs in namespaces of its own, with no network and no other "
+    "process of the machine in view.":
+        ("network_escape", "other_processes", "kill_everything"),
+    "It sees, read-only, only the system's programs and libraries, the Python runtime, the worker and the submission "
+    "(of `/etc`, only the dynamic loader's cache and its alternatives), and writes only a private `/tmp`: not the "
+    "reference, the checks, the grader's cache, other submissions or `/sys`, wherever the grader is installed.":
+        ("steal_reference_files", "steal_reference_import", "link_to_reference", "cache_poison", "leftovers",
+         "read_system_files", "test_sandbox::test_the_source_checkout_and_the_cache_are_masked_wherever_they_are_shown",
+         "test_sandbox::test_the_private_tmp_is_bounded"),
+    "Without bubblewrap, as root, it runs as a plain process under an unprivileged uid of its own, with resource "
+    "limits and its own network, PID and mount namespaces and a `/proc` of its own (where the kernel allows them).":
+        ("other_processes", "network_escape", "kill_everything", "fork_bomb", "memory_bomb",
+         "test_sandbox::test_without_bubblewrap_root_refuses_or_drops_to_its_own_uid"),
+    "Where the kernel has Landlock, it reads only the system's programs and libraries, the Python runtime and the "
+    "submission (of `/etc` and `/sys`, only the dynamic loader's cache, the time zone and the number of CPUs), and "
+    "writes only a private folder.":
+        ("read_system_files", "steal_reference_files", "cache_poison", "leftovers"),
+    "Without Landlock, a plain process reads every file that its uid may read.":
+        ("test_sandbox::test_the_report_says_what_a_plain_process_had",),
+    "Without root (a student's own machine), it runs as your own user with resource limits: it sees the machine's "
+    "other processes and keeps the network (Landlock blocks TCP where the kernel has it).":
+        ("test_sandbox::test_the_report_says_what_a_plain_process_had", "test_hostile::test_fallback_is_reported",
+         "test_install::test_a_student_without_bubblewrap_is_told_plainly_and_keeps_their_cache"),
+    "As root without bubblewrap, `grade` refuses (exit 3) with the fix when the unprivileged uid could not read the "
+    "Python runtime (e.g. a Python under `/root`).":
+        ("test_sandbox::test_without_bubblewrap_root_refuses_or_drops_to_its_own_uid",
+         "test_hostile::test_fallback_is_reported"),
+    "`grade batch` without bubblewrap needs `--no-sandbox`, which the gradebook records.":
+        ("test_sandbox::test_a_batch_without_bubblewrap_needs_no_sandbox_and_records_it",),
+    "A broken installation (a worker that cannot start or import its dependencies) is reported as such, exit code 3, "
+    "and nothing is graded.":
+        ("test_sandbox::test_a_worker_without_numpy_is_a_grader_fault_with_the_fix",
+         "test_sandbox::test_a_worker_that_cannot_start_is_a_grader_fault"),
+}
+
+
+def readme_sandbox_sentences() -> list[str]:
+    """The sentences of the README's sandbox section (from "Student code never runs as root" to the students')."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("Student code never runs as root"):text.index("## Students")]
+    lines = [line.removeprefix("- ") for line in section.splitlines() if not line.rstrip().endswith(":")]
+    flowing = " ".join(" ".join(lines).split())
+    return re.split(r"(?<=[.)])\s+(?=[A-Z`])", flowing)
+
+
+def test_each_sentence_of_the_readme_sandbox_section_is_held_by_a_test():
+    import importlib
+
+    from .submissions import hostile_names
+
+    assert readme_sandbox_sentences() == list(README_SANDBOX)
+    for sentence, holders in README_SANDBOX.items():
+        for holder in holders:
+            if "::" in holder:
+                module, function = holder.split("::")
+                assert callable(getattr(importlib.import_module(f"tests.{module}"), function, None)), holder
+            else:
+                assert holder in hostile_names(), holder

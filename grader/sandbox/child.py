@@ -332,9 +332,21 @@ class Child:
     def note(self) -> str:
         """How the submission ran, for the report: the mode, and what the worker reported at start-up (before
         any code of the submission ran)."""
-        if self.mode.isolated or not self.info:
+        if not self.info:
             return self.mode.note
         parts = [self.mode.note]
+        if not self.mode.isolated:
+            parts += self._plain_notes()
+        if self.info.get("syscalls"):
+            parts.append("a fresh session keyring and a system-call filter (no keyrings, tracing, mounts, namespaces, "
+                         "BPF, performance counters, userfaultfd, io_uring or Unix sockets)")
+        return "; ".join(parts)
+
+    def _plain_notes(self) -> list[str]:
+        """What a plain process had of isolation, as it reported at start-up."""
+        parts = []
+        if self.info.get("pid_namespace"):
+            parts.append("its own PID and mount namespaces and /proc (no other process of the machine in view)")
         landlock = self.info.get("landlock")
         if landlock:
             parts.append("Landlock let it read only the Python runtime and the submission and write only a "
@@ -348,7 +360,7 @@ class Child:
             parts.append("TCP connections blocked (Landlock); the network was otherwise not isolated")
         else:
             parts.append("the network was NOT isolated")
-        return "; ".join(parts)
+        return parts
 
     # ------------------------------------------------------------------ protocol
 
