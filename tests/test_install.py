@@ -153,12 +153,17 @@ def test_the_plain_process_tests_run_as_root_with_a_readable_runtime(venv, tmp_p
          "without_bubblewrap or uid or concurrent"],
         cwd=ROOT, capture_output=True, text=True, timeout=1800)
     assert done.returncode == 0, done.stdout[-5000:]
-    cases = ET.parse(xml).getroot().iter("testcase")
+    cases = list(ET.parse(xml).getroot().iter("testcase"))
     skipped = {case.get("name"): case.find("skipped").get("message", "") for case in cases
                if case.find("skipped") is not None}
     isolated_only = {f"test_hostile_submission[{n}-{kind}]" for n in hostile_names() for kind in ("process",
                      "process-warm") if hostile_expectation(n).get("isolated_only")}
     assert set(skipped) <= isolated_only, skipped
+    # the whole hostile suite ran as plain processes, fresh and warm
+    hostile = {f"test_hostile_submission[{n}-{kind}]" for n in hostile_names() for kind in ("process", "process-warm")}
+    hostile |= {f"test_a_key_that_one_student_leaves_never_reaches_the_next_under_the_same_uid[{kind}]"
+                for kind in ("process", "process-warm")}
+    assert hostile <= {case.get("name") for case in cases}, hostile - {case.get("name") for case in cases}
     assert "refusing" not in done.stdout
 
 
