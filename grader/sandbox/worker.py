@@ -11,8 +11,8 @@ dedicated pipe and sends back plain data (see ``protocol`` for the messages).
 Start-up, before any code of the submission runs: resource limits; as root without bubblewrap, new network, IPC,
 UTS, mount and PID namespaces with a ``/proc`` of its own (where the kernel allows) and the switch to the
 unprivileged uid the grader claimed; Landlock; a fresh session keyring and the system-call filter (``seccomp``);
-then the imports of the dependencies (the probes package, numpy).  Only then does the worker say ready: a failure up to that point is a
-fault of the installation, never of the submission.
+then the imports of the dependencies (the probes package, numpy).  Only then does the worker say ready: a failure
+up to that point is a fault of the installation, never of the submission.
 
     python -I -B worker.py zygote CONTROL_FD SLOT CONFIG_JSON
 
@@ -20,8 +20,8 @@ The warm process of a batch slot (see ``grader.sandbox.zygote``): it imports the
 probes need (numpy, scipy, sympy, mujoco, the probes), never any submission, and on each request of the grader
 forks one student's worker, which confines itself exactly as a fresh worker does (its own mount and IPC namespaces
 with an empty ``/tmp`` and ``/dev/shm`` and only its submission at ``/submission`` under bubblewrap; limits; its
-uid; Landlock; its keyring and system-call filter) before it says ready.  Nothing of an earlier student is in the fork: the zygote never ran student
-code, and whatever a student started is killed before the next one is forked.
+uid; Landlock; its keyring and system-call filter) before it says ready.  Nothing of an earlier student is in the
+fork: the zygote never ran student code, and whatever a student started is killed before the next one is forked.
 """
 
 from __future__ import annotations
