@@ -328,7 +328,9 @@ def _run(argv: list[str]) -> tuple[int, str | None]:
     except SystemExit as exc:  # argparse's usage errors
         return (EXIT_USAGE if exc.code not in (0, None) else EXIT_OK), command
     except GraderFault as exc:  # the installation's fault (e.g. the sandbox cannot start): nothing was graded
-        print(f"error: {exc}", file=sys.stderr)
+        from .terminal import say
+
+        say(f"error: {exc}")
         return EXIT_GRADER, command
     except KeyboardInterrupt as exc:
         terminated = isinstance(exc, _Terminated)

@@ -9,7 +9,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from .render import _env, render_gradescope, render_html, render_terminal
+from .render import render_gradescope, render_html, render_terminal, terminal_env
 from .results import Status
 from .runner import grade_submission, problems
 from .sandbox import Limits, sandbox_mode
@@ -18,7 +18,8 @@ PROJECT_ROOT = Path(__file__).resolve().parents[1]
 #: planted mistakes and hostile submissions shown by the demo
 PLANTED = ("p06-cardan-rotation-order", "p06-R3-transpose", "p07-omega-body-in-inertial-frame",
            "p08-exponential-is-euler", "p09-get-transform-transposed", "p10-b-reflection")
-HOSTILE = ("syntax_error", "infinite_loop_call", "memory_bomb", "fake_json", "steal_reference_import")
+HOSTILE = ("syntax_error", "infinite_loop_call", "memory_bomb", "fake_json", "steal_reference_import",
+           "terminal_escapes")
 
 
 def _samples_module():
@@ -77,7 +78,7 @@ def run_demo(args) -> int:
                 (out / slug / "report.txt").write_text(render_terminal(reports))
                 (out / slug / "report.html").write_text(render_html(reports, title=f"Demo: {name}"))
                 (out / slug / "results.json").write_text(render_gradescope(reports))
-    text = _env(False).get_template("demo.txt.j2").render(
+    text = terminal_env().get_template("demo.txt.j2").render(
         rows=rows, width=max(len(r["name"]) for r in rows) + 2, problems=numbers, sandbox=sandbox_mode().note, out=out)
     print(text.rstrip("\n"))
     return 0

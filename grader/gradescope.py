@@ -52,6 +52,7 @@ from pathlib import Path
 from . import __version__
 from .errors import GraderFault
 from .results import CheckResult, ManualItem, ProblemReport, Status, student_view
+from .terminal import say
 
 __all__ = ["parse_problems", "build_autograder", "Autograder", "results_json", "render_results",
            "withheld_check_ids", "fault_results",
@@ -398,7 +399,7 @@ def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
     try:
         print(check_installation(problems))
         student = find_student(root / "submission")
-        print(f"grading {student} with seed {seed}")
+        say(f"grading {student} with seed {seed}", sys.stdout)
         reports = grade_submission(student, problems, seed=seed)
         data = results_json(reports, withheld_ids=withheld_check_ids(problems), seed=seed,
                             execution_time=time.monotonic() - start, fresh_inputs=True)

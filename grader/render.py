@@ -12,11 +12,13 @@ from collections import OrderedDict
 from dataclasses import replace
 from functools import lru_cache
 
-from jinja2 import Environment, FileSystemBytecodeCache, PackageLoader, StrictUndefined
+from jinja2 import Environment, FileSystemBytecodeCache, PackageLoader, StrictUndefined, pass_environment
+from jinja2.filters import do_indent, do_wordwrap
 
 from .results import Figure, ProblemReport, Status, student_view
+from .terminal import inert, styled
 
-__all__ = ["render_terminal", "render_html", "render_json", "render_gradescope"]
+__all__ = ["render_terminal", "render_html", "render_json", "render_gradescope", "terminal_env"]
 
 COLOURS = {
     "passed": "32",
@@ -35,33 +37,53 @@ def _fmt(x) -> str:
     return f"{x:g}"
 
 
-@lru_cache(maxsize=2)
-def _env(autoescape: bool) -> Environment:
-    """The templates' environment.  Compiled templates are kept in jinja2's own per-user cache (a folder under the
-    temporary directory that jinja2 makes readable by its owner only and refuses if anyone else owns it), so that a
-    command compiles a template once rather than at every run."""
+def _environment(autoescape: bool, cache_pattern: str, **options) -> Environment:
     env = Environment(
         loader=PackageLoader("grader", "templates"),
-        bytecode_cache=FileSystemBytecodeCache(),
+        bytecode_cache=FileSystemBytecodeCache(pattern=cache_pattern),
         autoescape=autoescape,
         undefined=StrictUndefined,
         trim_blocks=False,
         keep_trailing_newline=True,
+        **options,
     )
     env.globals["fmt"] = _fmt
     return env
 
 
+@lru_cache(maxsize=2)
+def _env(autoescape: bool) -> Environment:
+    """The templates' environment.  Compiled templates are kept in jinja2's own per-user cache (a folder under the
+    temporary directory that jinja2 makes readable by its owner only and refuses if anyone else owns it), so that a
+    command compiles a template once rather than at every run."""
+    return _environment(autoescape, "__jinja2_%s.cache")
+
+
+@lru_cache(maxsize=1)
+def terminal_env() -> Environment:
+    """The environment of the templates a terminal shows (``terminal.txt.j2``, ``demo.txt.j2``): every expression
+    they write goes out through ``grader.terminal.inert``, so that no control character of a student's text
+    reaches the terminal raw.  Its compiled templates are cached apart from ``_env``'s: the cache knows a template
+    by its name and text, not by the environment that compiled it."""
+    env = _environment(False, "__jinja2_terminal_%s.cache", finalize=inert)
+    # the filters that break text into lines take it inert, so that the line breaks of Python's splitlines (\r,
+    # \x0b, \x0c, \x1c-\x1e, \x85) are shown escaped too, rather than turned into lines
+    env.filters["indent"] = lambda text, *args, **options: do_indent(inert(text), *args, **options)
+    env.filters["wordwrap"] = pass_environment(
+        lambda environment, text, *args, **options: do_wordwrap(environment, inert(text), *args, **options))
+    return env
+
+
 def render_terminal(reports: list[ProblemReport], colour: bool = False, show_hidden: bool = False) -> str:
     def paint(text, key):
-        return f"\033[{COLOURS[key]}m{text}\033[0m" if colour and key in COLOURS else text
+        return styled(text, COLOURS[key]) if colour and key in COLOURS else text
 
     def bold(text):
-        return f"\033[1m{text}\033[0m" if colour else text
+        return styled(text, "1") if colour else text
 
     if not show_hidden:
         reports = [student_view(r) for r in reports]
-    template = _env(False).get_template("terminal.txt.j2")
+    template = terminal_env().get_template("terminal.txt.j2")
     return template.render(reports=reports, paint=paint, bold=bold, show_hidden=show_hidden).strip("\n") + "\n"
 
 

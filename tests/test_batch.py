@@ -837,3 +837,23 @@ def test_possible_points_are_the_same_for_every_student_and_count_free_text_once
         assert {name: row["possible"] for name, row in after.items()} == {"alice": "21", "bob": "21", "gina": "21"}
         assert {name: row["total"] for name, row in after.items()} == {"alice": "20.5", "bob": "19", "gina": "0"}
         assert "21 points possible" in (out / "summary.html").read_text()
+
+
+def test_progress_shows_a_students_name_and_what_became_of_them_inert():
+    """A student's name (a folder or file name) and the reason a student was not graded come from the submission:
+    the progress lines show their control characters escaped, on a terminal and in a log alike."""
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    terminal, log = Terminal(), io.StringIO()
+    for stream in (terminal, log):
+        bar = Progress(2, stream=stream)
+        bar.advance("mallory\x1b]0;owned\x07\u202e", "0/10 (0.3 s)")
+        bar.advance("eve\x9b2J", "not graded (\x1b[2J\x1b[H10 / 10 points)")
+        bar.close()
+    assert "mallory\\x1b]0;owned\\x07\\u202e: 0/10" in log.getvalue()
+    assert "eve\\x9b2J: not graded (\\x1b[2J\\x1b[H10 / 10 points)" in log.getvalue()
+    for text in (terminal.getvalue(), log.getvalue()):
+        escapes = re.sub("\r\x1b\\[K", "", text)  # the terminal's redrawn line: the grader's own sequence
+        assert not re.search("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e]", escapes), repr(text)

@@ -14,10 +14,12 @@ Python runtime an unprivileged uid cannot read (e.g. under /root) must refuse: t
 import json
 import os
 import random
+import re
 import secrets
 import shutil
 import socket
 import subprocess
+import sys
 import tempfile
 import time
 from dataclasses import replace
@@ -33,7 +35,7 @@ from grader.sandbox.zygote import Zygote, warm_modules
 
 from . import keyrings
 from .processes import descendants, new_processes, processes_with
-from .submissions import build_hostile, copy_reference, hostile_expectation, hostile_names
+from .submissions import ROOT, build_hostile, copy_reference, hostile_expectation, hostile_names
 
 LIMITS = Limits(call_timeout=3.0, import_timeout=5.0, memory_mb=1024)
 MODES = [pytest.param(kind, id=kind) for kind in ("bwrap", "process", "bwrap-warm", "process-warm")]
@@ -362,3 +364,64 @@ def test_fallback_is_reported(tmp_path):
         assert "unprivileged uid" in report.sandbox and "network" in report.sandbox
     else:
         assert "not sandboxed" in report.sandbox and "your own user" in report.sandbox
+
+
+# ------------------------------------------------------------------------------------------ the terminal
+
+#: characters a terminal acts on (or that reorder a line): C0 but tab and newline, DEL, C1, the bidirectional
+#: controls; none may reach the terminal raw
+ACTING = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]")
+
+
+def raw_controls(output: bytes) -> list[str]:
+    """The characters of ``output`` (UTF-8) that a terminal would act on."""
+    return [repr(m.group()) for m in ACTING.finditer(output.decode("utf-8", "surrogateescape"))]
+
+
+def terminal_submission(folder: Path) -> Path:
+    """The ``terminal_escapes`` attack, plus a notebook whose name and cell text hold control sequences."""
+    from .notebooks import write_notebook
+
+    build_hostile("terminal_escapes", folder)
+    write_notebook(folder / "\x1b]0;title\x07\x1b[2J.ipynb", ["def helper():\n    return 1",
+                                                            "x = '\x1b[31m\x9b1;1H\u202e' +"])
+    return folder
+
+
+def test_no_raw_control_character_of_a_submission_reaches_grades_output(tmp_path):
+    """`grade problem-6` on a submission that prints 25 control characters (clear screen, a forged "10 / 10 points"
+    line with cursor moves, the window's title, the clipboard), raises them and returns them in a string, and a
+    notebook whose name and text hold more: every one is shown escaped, none reaches the terminal raw."""
+    submission = terminal_submission(tmp_path / "pkg")
+    done = subprocess.run([sys.executable, "-m", "grader.cli", "problem-6", "--submission", str(submission),
+                           "--seed", "3"], cwd=ROOT, capture_output=True, timeout=600)
+    output = done.stdout + done.stderr
+    assert done.returncode == 1, output.decode("utf-8", "replace")
+    assert raw_controls(output) == [], raw_controls(output)
+    text = output.decode()
+    for shown in ("\\x1b]52;c;Y3Vyb", "\\x1b[2J\\x1b[H", "\\x9b2J", "\\u202e", "\\x0d\\x1b[1A"):
+        assert text.count(shown) >= 3, (shown, text)  # printed, raised, returned: shown, escaped
+    assert "notebook \\x1b]0;title\\x07\\x1b[2J.ipynb" in text, text
+    forged = [line for line in text.splitlines() if line.startswith("Problem 6: Euler") and "10 / 10" in line]
+    assert forged == [], forged
+
+
+def test_the_terminal_report_in_colour_holds_only_the_graders_own_escape_sequences(tmp_path):
+    from grader.render import render_terminal
+
+    report = grade_problem(6, terminal_submission(tmp_path / "pkg"), seed=3, limits=LIMITS)
+    text = render_terminal([report], colour=True)
+    sequences = re.findall("\x1b[^m]*m", text)
+    assert sequences and set(sequences) <= {"\x1b[1m", "\x1b[0m", "\x1b[32m", "\x1b[31m", "\x1b[36m"}, sequences
+    assert raw_controls(re.sub("\x1b\\[[0-9;]*m", "", text).encode()) == []
+
+
+@pytest.mark.slow
+def test_grade_demo_shows_the_terminal_attack_inert():
+    done = subprocess.run([sys.executable, "-m", "grader.cli", "demo", "--problems", "6"], cwd=ROOT,
+                          capture_output=True, timeout=900)
+    output = done.stdout + done.stderr
+    assert done.returncode == 0, output.decode("utf-8", "replace")
+    assert raw_controls(output) == [], raw_controls(output)
+    row = next(line for line in done.stdout.decode().splitlines() if line.startswith("hostile: terminal_escapes"))
+    assert "must be numeric, got a value of type str: \\x1bc\\x1b[?10" in row, row

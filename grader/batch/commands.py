@@ -14,6 +14,7 @@ def cmd_batch(args) -> int:
     from ..errors import SubmissionError
     from ..runner import problem_module
     from ..sandbox import Limits
+    from ..terminal import say
     from .course import CourseError
     from .discover import BAD_NAME
     from .lms import RosterError
@@ -45,26 +46,26 @@ def cmd_batch(args) -> int:
                            limits=limits, student_timeout=args.student_timeout, progress=not args.quiet,
                            no_sandbox=args.no_sandbox, cluster=args.cluster, course=course)
     except (SubmissionError, BatchLocked, NotInstructorInstallation, CourseError, RosterError) as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        say(f"error: {exc}")
         return EXIT_USAGE
     except RuntimeError as exc:  # the workers cannot start: a broken installation
-        print(f"error: {exc}", file=sys.stderr)
+        say(f"error: {exc}")
         return EXIT_GRADER
     except OSError as exc:  # the Dask scheduler cannot be reached
         print(f"error: the Dask cluster {args.cluster} cannot be reached: {exc}", file=sys.stderr)
         return EXIT_USAGE
     for name in report.ignored:
         why = "" if name.endswith(BAD_NAME) else " (not a folder, a .zip archive or a .ipynb notebook)"
-        print(f"note: ignored {name}{why}", file=sys.stderr)
+        say(f"note: ignored {name}{why}")
     print(report.end_line, file=sys.stderr)
     for name, reason in report.not_graded.items():
-        print(f"  not graded: {name}: {reason}", file=sys.stderr)
+        say(f"  not graded: {name}: {reason}")
     if report.interrupted:
         print("interrupted: every student graded so far is saved; rerun the same command to finish.",
               file=sys.stderr)
         return 130
     for note in report.notes:
-        print(note, file=sys.stderr)
+        say(note)
     print(f"results in {args.out}/: grades.csv, summary.html, manual_answers.csv, students/NAME/", file=sys.stderr)
     return EXIT_GRADER if report.not_graded else EXIT_OK
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 import sys
 import time
 
+from ..terminal import inert
+
 __all__ = ["Progress"]
 
 def _clock(seconds: float) -> str:
@@ -14,7 +16,8 @@ def _clock(seconds: float) -> str:
 
 
 class Progress:
-    """Counts, rate and time left on stderr: one redrawn line on a terminal, a line per student otherwise."""
+    """Counts, rate and time left on stderr: one redrawn line on a terminal, a line per student otherwise (the
+    student's name and what became of them, made inert: a name or a reason may hold control characters)."""
 
     WIDTH = 28
 
@@ -41,7 +44,7 @@ class Progress:
             bar = "█" * filled + "░" * (self.WIDTH - filled)
             self.stream.write(f"\r\033[K{bar} {self.line()}")
         else:
-            self.stream.write(f"[{self.done}/{self.total}] {name}: {note} · {self.line()}\n")
+            self.stream.write(inert(f"[{self.done}/{self.total}] {name}: {note} · {self.line()}") + "\n")
         self.stream.flush()
 
     def close(self) -> None:
