@@ -32,16 +32,22 @@ from .errors import SubmissionError
 from .sandbox.notebook import clean_cell, definitions
 
 __all__ = ["Submission", "NotebookPlan", "materialize", "submission_digest", "template_dir", "template_index",
-           "content_hash", "read_answers", "notebook_plan", "problem_notes", "MAX_FILES", "MAX_BYTES", "FIX",
-           "NOTEBOOK_MANIFEST"]
+           "content_hash", "read_answers", "notebook_plan", "problem_notes", "MAX_FILES", "MAX_BYTES", "MAX_ENTRIES",
+           "MAX_DEPTH", "MAX_NAME_BYTES", "MAX_PATH_BYTES", "MAX_NOTEBOOK_DEPTH", "FIX", "NOTEBOOK_MANIFEST"]
 
 MAX_FILES = 500
 MAX_BYTES = 50 * 2**20
 #: entries of a folder looked at (kept or not) before it is refused as not a work folder, and its deepest nesting
 MAX_ENTRIES = 5000
 MAX_DEPTH = 8
-#: the code of one notebook's cells (its outputs do not count)
+#: the longest name of one file or folder (NAME_MAX of Linux's file systems, in bytes of UTF-8), and of a path
+#: inside the submission
+MAX_NAME_BYTES = 255
+MAX_PATH_BYTES = 1024
+#: the code of one notebook's cells (its outputs do not count), and the deepest nesting of its JSON (a notebook
+#: nests some seven levels, a little more where an output holds JSON)
 MAX_NOTEBOOK_CODE = 2 * 2**20
+MAX_NOTEBOOK_DEPTH = 100
 MAX_ANSWERS_BYTES = 2**20
 IGNORED_DIRS = {"__pycache__", ".git", ".ipynb_checkpoints", "__MACOSX", ".venv", "venv", "node_modules"}
 KEPT_SUFFIXES = {".py", ".toml", ".ipynb", ".md", ".txt"}
@@ -279,7 +285,11 @@ def _collect_zip(path: Path) -> dict[str, bytes]:
     total = 0
     try:
         with zipfile.ZipFile(path) as archive:
-            for info in archive.infolist():
+            infos = archive.infolist()
+            if len(infos) > MAX_ENTRIES:
+                raise SubmissionError(f"the archive {path.name} holds more than {MAX_ENTRIES} entries: it is not a "
+                                      f"work folder. {FIX}")
+            for info in infos:
                 if info.is_dir():
                     continue
                 name = PurePosixPath(info.filename.replace("\\", "/"))
@@ -307,24 +317,94 @@ def _collect_zip(path: Path) -> dict[str, bytes]:
 
 
 def _strip_common_folder(files: dict[str, bytes]) -> dict[str, bytes]:
-    """A zip of a folder holds ``folder/...``: use what is inside the folder."""
+    """A zip of a folder holds ``folder/...``: use what is inside the folder (when nothing lies beside it, not
+    even a file of the folder's name)."""
     while files:
         heads = {name.split("/", 1)[0] for name in files}
-        if len(heads) != 1 or all("/" not in name for name in files):
+        if len(heads) != 1 or any("/" not in name for name in files):
             break
         head = heads.pop() + "/"
         files = {name[len(head):]: data for name, data in files.items() if name.startswith(head)}
     return files
 
 
+def _shown_name(name: str) -> str:
+    """A name as a message shows it: a long one cut short."""
+    return name if len(name) <= 60 else f"{name[:40]}…{name[-12:]} ({len(name.encode())} bytes)"
+
+
+def _check_names(files: dict[str, bytes]) -> None:
+    """Refuse (``SubmissionError``, one reason) the names that cannot be laid over the template: a file or folder
+    name longer than ``MAX_NAME_BYTES``, a path longer than ``MAX_PATH_BYTES`` or deeper than ``MAX_DEPTH``, a
+    name that is both a file and a folder of the submission (``foo.py`` and ``foo.py/bar.py``), and a folder
+    where the template has a file (a folder ``rotations.py/``)."""
+    folders: set[str] = set()
+    for name in files:
+        parts = name.split("/")
+        long = next((part for part in parts if len(part.encode()) > MAX_NAME_BYTES), None)
+        if long is not None:
+            raise SubmissionError(f"the submission holds a name longer than {MAX_NAME_BYTES} bytes, which no file "
+                                  f"system stores: {_shown_name(long)}. Rename it.")
+        if len(parts) - 1 > MAX_DEPTH:
+            raise SubmissionError(f"the submission holds {_shown_name(name)}, in folders nested deeper than "
+                                  f"{MAX_DEPTH}: it is not a work folder. {FIX}")
+        if len(name.encode()) > MAX_PATH_BYTES:
+            raise SubmissionError(f"the submission holds a path longer than {MAX_PATH_BYTES} bytes: "
+                                  f"{_shown_name(name)}. Shorten the names of its folders.")
+        folders.update("/".join(parts[:end]) for end in range(1, len(parts)))
+    both = sorted(folders & set(files))
+    if both:
+        raise SubmissionError(f"the submission holds both a file and a folder named {_shown_name(both[0])}: rename "
+                              "the folder.")
+    taken = sorted(folder for folder in folders if (template_dir() / folder).is_file())
+    if taken:
+        raise SubmissionError(f"the submission holds a folder named {_shown_name(taken[0])}, which is a file of the "
+                              "template: rename the folder (or put the file itself in its place).")
+
+
 # ------------------------------------------------------------------------------------------ notebooks
 
 
-def _read_notebook(data: bytes, name: str):
-    import nbformat
-
+def _notebook_json(data: bytes, name: str):
+    """The JSON of the notebook ``name``, no deeper than ``MAX_NOTEBOOK_DEPTH``; ``SubmissionError`` when it
+    cannot be read."""
     try:
-        return nbformat.reads(data.decode("utf-8"), as_version=4)
+        value = json.loads(data.decode("utf-8"))
+    except RecursionError:
+        value = None
+    except (UnicodeDecodeError, ValueError) as exc:
+        raise SubmissionError(f"the notebook {name} cannot be read ({str(exc)[:300]}). Open it in Jupyter, save it "
+                              "again (File → Save) and submit that file.") from None
+    if value is None or _deeper_than(value, MAX_NOTEBOOK_DEPTH):
+        raise SubmissionError(f"the notebook {name} cannot be read: its JSON is nested deeper than "
+                              f"{MAX_NOTEBOOK_DEPTH} levels, which no notebook is. Open it in Jupyter, save it "
+                              "again (File → Save) and submit that file.")
+    return value
+
+
+def _deeper_than(value, limit: int) -> bool:
+    """Whether the lists and objects of a JSON value nest deeper than ``limit`` (walked without recursion)."""
+    stack = [(value, 1)]
+    while stack:
+        item, depth = stack.pop()
+        if isinstance(item, (dict, list)):
+            if depth > limit:
+                return True
+            stack.extend((child, depth + 1) for child in (item.values() if isinstance(item, dict) else item))
+    return False
+
+
+def _read_notebook(data: bytes, name: str):
+    """The notebook ``name`` as nbformat's version 4 (read, converted, not validated: what is missing is looked
+    up with defaults)."""
+    import nbformat
+    from nbformat.reader import get_version
+
+    value = _notebook_json(data, name)
+    try:
+        major, minor = get_version(value)
+        notebook = nbformat.versions[major].to_notebook_json(value, minor=minor)
+        return nbformat.convert(notebook, 4)
     except Exception as exc:  # noqa: BLE001 - nbformat raises many kinds of errors for malformed input
         reason = str(exc).strip().splitlines()[0][:300] if str(exc).strip() else type(exc).__name__
         raise SubmissionError(f"the notebook {name} cannot be read ({reason}). Open it in Jupyter, save it "
@@ -481,6 +561,7 @@ def _student_files(source: Path) -> tuple[dict[str, bytes], list[str]]:
     else:
         raise SubmissionError(f"{source.name}: expected a folder, a .zip archive or a .ipynb notebook")
     files = _strip_common_folder(files)
+    _check_names(files)
     if not files:
         raise SubmissionError(f"{source.name} holds no Python files, notebooks or answers.toml. {FIX}")
     return files, notes
@@ -630,10 +711,10 @@ def _template_notebook(name: str, data: bytes) -> bool:
     if expected is None:
         return False
     try:
-        cells = json.loads(data.decode("utf-8")).get("cells", [])
+        cells = _notebook_json(data, name).get("cells", [])
         code = tuple("".join(c["source"]) if isinstance(c["source"], list) else c["source"]
                      for c in cells if c.get("cell_type") == "code")
-    except (ValueError, UnicodeDecodeError, AttributeError, KeyError, TypeError):
+    except (SubmissionError, AttributeError, KeyError, TypeError):  # not the template's: read as a notebook
         return False
     return code == expected
 
@@ -651,6 +732,8 @@ def read_answers(package: Path) -> tuple[dict, str | None]:
         return tomllib.loads(path.read_text(encoding="utf-8")), None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         return {}, f"answers.toml is not valid TOML: {exc}"
+    except RecursionError:
+        return {}, "answers.toml is not valid TOML: its arrays or tables are nested too deep to be read"
 
 
 def cleanup(submission: Submission) -> None:

@@ -5,16 +5,23 @@ traceback, never the same line under every check, and never a walk of a parent f
 import json
 import os
 import sqlite3
+import stat
+import tempfile
+import warnings
+import zipfile
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, event, given, settings
+from hypothesis import strategies as st
 
 from grader import loader
 from grader.batch import run_batch
 from grader.checking import checks_of
 from grader.cli import main
+from grader.errors import SubmissionError
 from grader.gradebook import Gradebook
-from grader.loader import FIX, materialize
+from grader.loader import FIX, materialize, submission_digest
 from grader.results import Status
 from grader.runner import grade_submission, problem_module
 from grader.sandbox import Limits, sandbox_mode
@@ -164,3 +171,187 @@ def test_a_batch_grades_everyone_and_records_one_message_for_each_bad_submission
         assert db.execute("SELECT count(*) FROM submissions WHERE load_error != ''").fetchone() == (3,)
     summary = (out / "summary.html").read_text()
     assert "could not be loaded" in summary
+
+
+# ------------------------------------------------------------------------------------------ shapes that crashed
+
+
+def _zip(path: Path, entries: list[tuple[str, bytes]]) -> Path:
+    with zipfile.ZipFile(path, "w") as archive:
+        for name, data in entries:
+            archive.writestr(name, data)
+    return path
+
+
+def _reference_entries() -> list[tuple[str, bytes]]:
+    folder = Path(__file__).resolve().parents[1] / "reference"
+    return [(name, (folder / name).read_bytes()) for name in ("rotations.py", "problem_06.py", "__init__.py")]
+
+
+def _deep_notebook(levels: int) -> str:
+    return ('{"cells": [{"cell_type": "code", "metadata": {}, "outputs": [], "execution_count": null, "source": '
+            + "[" * levels + "]" * levels + '}], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}')
+
+
+def _folder_named_like_a_module(tmp_path: Path) -> Path:
+    folder = copy_reference(tmp_path / "work")
+    (folder / "rotations.py").unlink()
+    (folder / "rotations.py").mkdir()
+    (folder / "rotations.py" / "R1.py").write_text("x = 1\n")
+    return folder
+
+
+#: submissions that crashed `grade` with a traceback (exit 1): each is refused now, with one reason
+SHAPES = {
+    "folder named rotations.py": (_folder_named_like_a_module, "a folder named rotations.py, which is a file of the "
+                                                               "template"),
+    "zip with foo.py and foo.py/bar.py": (
+        lambda tmp: _zip(tmp / "work.zip", [*_reference_entries(), ("foo.py", b"x = 1\n"), ("foo.py/bar.py", b"")]),
+        "both a file and a folder named foo.py"),
+    "zip with foo.py/bar.py before foo.py": (
+        lambda tmp: _zip(tmp / "work.zip", [*_reference_entries(), ("foo.py/bar.py", b""), ("foo.py", b"x = 1\n")]),
+        "both a file and a folder named foo.py"),
+    "zip entry name of 300 characters": (
+        lambda tmp: _zip(tmp / "work.zip", [*_reference_entries(), ("n" * 297 + ".py", b"x = 1\n")]),
+        "a name longer than 255 bytes"),
+    "zip entry name of 130 characters, 257 bytes": (
+        lambda tmp: _zip(tmp / "work.zip", [*_reference_entries(), ("é" * 127 + ".py", b"x = 1\n")]),
+        "a name longer than 255 bytes"),
+    "zip entry 30 folders of 200 characters deep": (
+        lambda tmp: _zip(tmp / "work.zip", [*_reference_entries(), ("/".join(["d" * 200] * 30) + "/x.py", b"")]),
+        "in folders nested deeper than 8"),
+    "notebook problem_06.ipynb 5,000 lists deep": (
+        lambda tmp: (tmp / "problem_06.ipynb").write_text(_deep_notebook(5000)) and tmp / "problem_06.ipynb",
+        "its JSON is nested deeper than 100 levels"),
+}
+
+
+@pytest.mark.parametrize("shape", SHAPES)
+def test_a_submission_of_a_shape_that_crashed_the_loader_is_refused_once(shape, tmp_path, capsys):
+    build, expected = SHAPES[shape]
+    (tmp_path / "in").mkdir()
+    source = build(tmp_path / "in")
+    gs = tmp_path / "results.json"
+    code, out, err = grade_cli(capsys, "--submission", str(source), "--gradescope", str(gs))
+    assert "Traceback" not in out + err, out + err
+    assert code == 2, out + err  # cannot be loaded: the student's, said once
+    assert out.count(expected) == 1, out
+    assert "none of the" in out and "checks of this problem ran" in out
+    assert expected in json.loads(gs.read_text())["output"]
+
+
+def test_bounds_of_a_zip_entries_and_path_and_of_a_notebooks_depth(tmp_path):
+    """An archive of more entries than a work folder holds is refused before its entries are looked at, a path
+    longer than ``MAX_PATH_BYTES`` (within the depth allowed) is refused; a notebook nested deeper than
+    ``MAX_NOTEBOOK_DEPTH`` is refused, one within it read."""
+    many = _zip(tmp_path / "many.zip", [*_reference_entries(), *((f"img/{i}.png", b"") for i in range(5000))])
+    with pytest.raises(SubmissionError, match="more than 5000 entries"):
+        materialize(many, tmp_path)
+    long = _zip(tmp_path / "long.zip", [*_reference_entries(), ("/".join(["d" * 200] * 8) + "/x.py", b"")])
+    with pytest.raises(SubmissionError, match="a path longer than 1024 bytes"):
+        materialize(long, tmp_path)
+    for levels, refused in ((loader.MAX_NOTEBOOK_DEPTH - 2, False), (loader.MAX_NOTEBOOK_DEPTH - 1, True)):
+        folder = tmp_path / f"nb{levels}"
+        folder.mkdir()
+        (folder / "mine.ipynb").write_text(  # the lists start at depth 3: notebook, metadata, x
+            '{"cells": [], "metadata": {"x": ' + "[" * levels + "]" * levels + '}, "nbformat": 4, "nbformat_minor": 5}')
+        if refused:
+            with pytest.raises(SubmissionError, match="nested deeper than 100 levels"):
+                materialize(folder, tmp_path)
+        else:
+            loader.cleanup(materialize(folder, tmp_path))
+
+
+def test_answers_nested_5000_deep_are_the_students_error_not_a_crash(tmp_path, capsys):
+    folder = copy_reference(tmp_path / "work")
+    (folder / "answers.toml").write_text("[problem_10]\na = " + "[" * 5000 + "]" * 5000 + "\n")
+    code = main(["problem-10", "--submission", str(folder), "--seed", "1"])
+    captured = capsys.readouterr()
+    assert "Traceback" not in captured.out + captured.err and code == 1, captured.out + captured.err
+    assert "answers.toml is not valid TOML: its arrays or tables are nested too deep" in captured.out
+
+
+# ------------------------------------------------------------------------------------------ any shape
+
+_VALID_NOTEBOOK = json.dumps({"cells": [{"cell_type": "code", "metadata": {}, "outputs": [], "execution_count": None,
+                                         "source": "def R1(a):\n    return a\n"}],
+                              "metadata": {}, "nbformat": 4, "nbformat_minor": 5}).encode()
+#: names of files and folders: the template's, ordinary ones, ones no file system or loader should take as they are
+_NAMES = st.sampled_from(["rotations.py", "problem_06.py", "answers.toml", "__init__.py", "problem_06.ipynb", "foo.py",
+                          "mine.ipynb", "notes.md", "a", "b", ".", "..", "", "__pycache__", "__MACOSX", ".hidden.py",
+                          "x\\y.py", "/", "C:"])
+_PART = st.one_of(
+    _NAMES, _NAMES, _NAMES,
+    st.text(alphabet="aé._-\x1b", min_size=1, max_size=6).map(lambda text: text + ".py"),
+    st.integers(250, 300).map(lambda n: "n" * n + ".py"),
+    st.integers(120, 135).map(lambda n: "é" * n + ".py"),
+)
+_CONTENT = st.sampled_from([b"x = 1\n", b"", b"\xff\xfe", b"{", b"[]", _VALID_NOTEBOOK,
+                            _deep_notebook(5000).encode(), b"a = " + b"[" * 3000 + b"]" * 3000 + b"\n"])
+_ENTRY = st.tuples(st.lists(_PART, min_size=1, max_size=3) | st.lists(_PART, min_size=9, max_size=11),
+                   st.sampled_from(["file", "file", "folder", "link"]), _CONTENT)
+
+
+def _loads_or_refuses(source: Path, scratch: Path) -> None:
+    """The loader's promise: a submission is loaded, every file of the student's in place, or refused with a
+    ``SubmissionError``; nothing else escapes.  The content hash that a batch computes agrees."""
+    try:
+        digest = submission_digest(source)
+    except SubmissionError:
+        digest = None
+    try:
+        loaded = materialize(source, scratch)
+    except SubmissionError as exc:
+        assert str(exc)
+        event("refused")
+        return
+    event("loaded")
+    try:
+        assert digest == loaded.digest
+        for name in loaded.files:
+            assert name.endswith(".ipynb") or (loaded.path / name).is_file(), name
+    finally:
+        loader.cleanup(loaded)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(entries=st.lists(_ENTRY, min_size=1, max_size=8))
+def test_any_zip_is_loaded_or_refused_with_a_reason(entries):
+    with tempfile.TemporaryDirectory() as scratch:
+        scratch = Path(scratch)
+        archive = scratch / "work.zip"
+        with zipfile.ZipFile(archive, "w") as out, warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # a name twice: as an archiver may write it
+            for parts, kind, data in entries:
+                if not "/".join(parts):
+                    continue  # no entry has an empty name
+                info = zipfile.ZipInfo("/".join(parts) + ("/" if kind == "folder" else ""))
+                if kind == "link":
+                    info.external_attr = (stat.S_IFLNK | 0o777) << 16
+                    data = b"/etc/passwd"
+                out.writestr(info, b"" if kind == "folder" else data)
+        _loads_or_refuses(archive, scratch)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(entries=st.lists(_ENTRY, min_size=1, max_size=8))
+def test_any_folder_is_loaded_or_refused_with_a_reason(entries):
+    with tempfile.TemporaryDirectory() as scratch:
+        scratch = Path(scratch)
+        root = scratch / "work"
+        root.mkdir()
+        for parts, kind, data in entries:
+            if any(part in ("", ".", "..") or "/" in part for part in parts):
+                continue  # not a name a folder can hold
+            path = root.joinpath(*parts)
+            try:
+                path.parent.mkdir(parents=True, exist_ok=True)
+                if kind == "folder":
+                    path.mkdir(exist_ok=True)
+                elif kind == "link":
+                    path.symlink_to("/etc")
+                else:
+                    path.write_bytes(data)
+            except OSError:  # the file system refused it (a name too long, a file where a folder goes)
+                continue
+        _loads_or_refuses(root, scratch)
