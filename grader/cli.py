@@ -22,9 +22,7 @@ import signal
 import sys
 from pathlib import Path
 
-from .errors import GraderFault
-
-EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_GRADER = 0, 1, 2, 3
+from .errors import EXIT_FAILED, EXIT_GRADER, EXIT_OK, EXIT_USAGE, GraderFault  # noqa: F401 - the command's codes
 
 
 def _problem_number(text: str) -> int:
@@ -89,12 +87,10 @@ def cmd_list(args) -> int:
 
 
 def _exit_code(reports) -> int:
-    from .results import Status
+    """The command's exit code for its reports: whose fault each failure is decides it (``grader.faults``)."""
+    from .faults import exit_code
 
-    statuses = {r.status for report in reports for r in report.results}
-    if Status.GRADER_ERROR in statuses:
-        return EXIT_GRADER
-    return EXIT_OK if statuses <= {Status.PASSED, Status.DEFERRED} else EXIT_FAILED
+    return exit_code(reports)
 
 
 def _has_checks(number: int) -> bool:
@@ -163,9 +159,7 @@ def cmd_problem(args) -> int:
         _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))
     _write(args.json, render_json(reports, show_hidden=False))
     _write(args.gradescope, render_gradescope(reports))
-    if any(report.load_error for report in reports):  # said once in the report, with the fix
-        return EXIT_USAGE
-    return _exit_code(reports)
+    return _exit_code(reports)  # a submission that cannot be loaded: 2, said once in the report with the fix
 
 
 def cmd_demo(args) -> int:
@@ -328,10 +322,11 @@ def _run(argv: list[str]) -> tuple[int, str | None]:
     except SystemExit as exc:  # argparse's usage errors
         return (EXIT_USAGE if exc.code not in (0, None) else EXIT_OK), command
     except GraderFault as exc:  # the installation's fault (e.g. the sandbox cannot start): nothing was graded
+        from .faults import fault_of
         from .terminal import say
 
         say(f"error: {exc}")
-        return EXIT_GRADER, command
+        return fault_of(exc).exit_code, command
     except KeyboardInterrupt as exc:
         terminated = isinstance(exc, _Terminated)
         print("terminated" if terminated else "interrupted", file=sys.stderr)

@@ -1,6 +1,11 @@
-"""One exception root with a student-fault and a grader-fault branch."""
+"""One exception root with a student-fault and a grader-fault branch, and the exit codes of the ``grade`` command
+(whose fault each failure is, and the code it ends with, is ``grader.faults``)."""
 
 __all__ = [
+    "EXIT_OK",
+    "EXIT_FAILED",
+    "EXIT_USAGE",
+    "EXIT_GRADER",
     "GradingError",
     "StudentFault",
     "SubmissionError",
@@ -9,7 +14,12 @@ __all__ = [
     "WorkerCrash",
     "GraderFault",
     "SandboxError",
+    "ProbeFault",
 ]
+
+#: every check passed; some check did not pass; a usage error or a submission that cannot be loaded; a fault of
+#: the grader (its installation or a defect), never the student's
+EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_GRADER = 0, 1, 2, 3
 
 
 class GradingError(Exception):
@@ -64,3 +74,8 @@ class GraderFault(GradingError):
 
 class SandboxError(GraderFault):
     """The sandbox could not be set up."""
+
+
+class ProbeFault(GraderFault):
+    """A check asked for a probe that the worker could not run (it does not exist, it cannot be imported, or it
+    raised on its own rather than in the student's code)."""

@@ -390,8 +390,11 @@ def _write_json(path: Path, data: dict) -> None:
 
 def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
     """Grade ``root/submission`` on ``problems`` and write ``root/results/results.json``; returns the exit code
-    (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed on any check or could not grade)."""
-    from .runner import grade_submission
+    (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed on any check or could not grade).  Whose fault a
+    failure is, is ``grader.faults``' table: the student's is graded (a submission that cannot be loaded scores 0
+    with the reason), the grader's is said to be the grader's (``fault_results``, or the check's own test)."""
+    from .faults import fault_of, faults_in
+    from .runner import grade_submission, unloadable_reports
 
     start = time.monotonic()
     results_path = root / "results" / "results.json"
@@ -401,25 +404,28 @@ def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
         student = find_student(root / "submission")
         say(f"grading {student} with seed {seed}", sys.stdout)
         reports = grade_submission(student, problems, seed=seed)
-        data = results_json(reports, withheld_ids=withheld_check_ids(problems), seed=seed,
-                            execution_time=time.monotonic() - start, fresh_inputs=True)
-    except GraderFault as exc:
-        print(f"grader fault: {exc}")
-        _write_json(results_path, fault_results(str(exc), execution_time=time.monotonic() - start))
-        return EXIT_FAULT
-    except Exception as exc:  # noqa: BLE001 - anything unforeseen is the grader's fault, never the student's
-        traceback.print_exc(file=sys.stdout)
-        reason = f"internal error of the grader ({type(exc).__name__}); the course staff have its log"
-        _write_json(results_path, fault_results(reason, execution_time=time.monotonic() - start))
-        return EXIT_FAULT
+    except Exception as exc:  # noqa: BLE001 - whose fault it is, is the table's: the unforeseen is the grader's
+        fault = fault_of(exc)
+        if not fault.student:
+            if isinstance(exc, GraderFault):
+                say(f"grader fault: {exc}", sys.stdout)
+                reason = str(exc)
+            else:
+                traceback.print_exc(file=sys.stdout)
+                reason = f"internal error of the grader ({type(exc).__name__}); the course staff have its log"
+            _write_json(results_path, fault_results(reason, execution_time=time.monotonic() - start))
+            return fault.autograder_exit
+        reports = unloadable_reports(root / "submission", problems, str(exc), seed=seed)
+    data = results_json(reports, withheld_ids=withheld_check_ids(problems), seed=seed,
+                        execution_time=time.monotonic() - start, fresh_inputs=True)
     _write_json(results_path, data)
     for report in reports:
-        print(f"problem {report.problem}: {report.score:g} / {report.auto_max_score:g} ({report.sandbox})")
+        say(f"problem {report.problem}: {report.score:g} / {report.auto_max_score:g} ({report.sandbox})"
+            + (f"; not loaded: {report.load_error}" if report.load_error else ""), sys.stdout)
     errors = data["extra_data"]["grader_errors"]
     if errors:
         print(f"grader errors (the student was told, and gets 0 for them until a regrade): {errors}")
-        return EXIT_FAULT
-    return EXIT_GRADED
+    return max((fault.autograder_exit for fault in faults_in(reports)), default=EXIT_GRADED)
 
 
 # ---------------------------------------------------------------------------------------------- the zip

@@ -18,11 +18,13 @@ from . import __version__
 from .checking import CheckFailure, NotAnswered, checks_of
 from .context import Context
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
+from .faults import fault_of
 from .loader import cleanup, materialize, problem_notes, read_answers
 from .results import CheckResult, ManualItem, ProblemReport, Status
 from .sandbox import Child, Limits, SandboxMode, sandbox_mode
 
-__all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission", "carry_forward"]
+__all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission", "carry_forward",
+           "unloadable_reports"]
 
 
 @dataclass(frozen=True)
@@ -85,7 +87,8 @@ def _student_error(exc) -> tuple[Status, str, str]:
     if isinstance(exc, WorkerCrash):
         where = " while importing your package" if exc.phase == "import" else ""
         return Status.ERROR, f"{exc.detail}{where}.", "Run your code locally: does it exit, or allocate huge arrays?"
-    assert isinstance(exc, StudentCodeError)
+    if not isinstance(exc, StudentCodeError):
+        return Status.ERROR, str(exc), ""
     if exc.kind == "not_implemented":
         return Status.NOT_IMPLEMENTED, f"not implemented yet: {exc.message}", ""
     if exc.kind == "answers":
@@ -120,15 +123,14 @@ def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
         status, message, hint, diagnosis = Status.FAILED, exc.message, exc.hint, exc.diagnosis
     except NotAnswered as exc:
         status, message = Status.NOT_IMPLEMENTED, str(exc)
-    except (StudentCodeError, StudentTimeout, WorkerCrash) as exc:
-        status, message, hint = _student_error(exc)
     except SandboxError:  # the installation's fault: no check can run, nothing is graded
         raise
-    except GraderFault as exc:
-        status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {exc}"
-    except Exception as exc:  # noqa: BLE001 - a crashing check is the grader's defect, reported as such
-        status = Status.GRADER_ERROR
-        message = f"internal grader error (not your fault): {type(exc).__name__}: {exc}"
+    except Exception as exc:  # noqa: BLE001 - whose fault it is, is the table's (grader.faults)
+        if fault_of(exc).student:
+            status, message, hint = _student_error(exc)
+        else:  # a crashing check, a probe the worker cannot run, the reference raising: the grader's defect
+            shown = str(exc) if isinstance(exc, GraderFault) else f"{type(exc).__name__}: {exc}"
+            status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {shown}"
     return CheckResult(
         check_id=f"p{problem:02d}.{spec.name}",
         problem=problem,
@@ -454,6 +456,13 @@ def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode
 def grade_problem(problem: int, source: str | Path, **options) -> ProblemReport:
     """Grade one problem of a submission (a directory, a zip archive or a notebook)."""
     return grade_submission(source, [problem], **options)[0]
+
+
+def unloadable_reports(source, numbers: list[int], reason: str, *, seed: int,
+                       mode: SandboxMode | None = None) -> list[ProblemReport]:
+    """The reports of a submission that could not be loaded, for ``reason`` (see ``_unloadable``)."""
+    mode = mode or sandbox_mode()
+    return [_unloadable(n, problem_module(n), source, reason, mode, seed) for n in numbers]
 
 
 def _unloadable(number, module, source, reason, mode, seed) -> ProblemReport:

@@ -494,3 +494,23 @@ def test_results_take_seed_time_and_hand_scores_from_the_reports():
     # the hidden check is withheld by its own visibility, without any module of problem 99 or 98
     assert next(t for t in data["tests"] if t["extra_data"].get("check_id") == "p99.deep")["visibility"] == WITHHELD
     assert "fresh" not in data["output"]
+
+
+@pytest.mark.slow
+def test_a_malformed_upload_is_the_students_zero_not_a_grader_fault(installed, tmp_path):
+    """An upload the loader cannot lay over the template (it holds foo.py and foo.py/bar.py; this crashed the
+    loader, and run_autograder then said that the installation was broken and exited 3): results.json gives 0
+    with the reason, not a fault of the grader, and run_autograder exits 0."""
+    upload = tmp_path / "upload" / "mywork.zip"
+    upload.parent.mkdir()
+    with zipfile.ZipFile(upload, "w") as archive:
+        for name in ("rotations.py", "problem_06.py", "__init__.py"):
+            archive.write(ROOT / "reference" / name, name)
+        archive.writestr("foo.py", "x = 1\n")
+        archive.writestr("foo.py/bar.py", "")
+    code, data, log = _grade(installed, upload)
+    assert code == 0, log
+    assert data["extra_data"]["grader_fault"] is False and data["extra_data"]["grader_errors"] == []
+    assert data["score"] == 0
+    assert "both a file and a folder named foo.py" in data["output"]
+    assert data["output"].count("both a file and a folder named foo.py") == 1

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import SandboxError, SubmissionError
+from ..faults import stored
 from ..results import Status
 from ..sandbox import BWRAP_FIX, Limits, canary, sandbox_mode
 from .course import Course, entry_time
@@ -229,10 +230,9 @@ def run_batch(
 
         def done(task: Task, kind: str, payload, seconds: float) -> None:
             name = task.entry.name
-            faults = [r for rep in payload for r in rep.results if r.status is Status.GRADER_ERROR] \
-                if kind == "ok" else []
-            if faults:  # a grader fault is never stored as a grade: retried on the next run
-                kind, payload = "fault", faults[0].message.splitlines()[0]
+            if kind == "ok" and not stored(payload):  # the grader's fault is never a grade (grader.faults): the
+                faults = [r for rep in payload for r in rep.results if r.status is Status.GRADER_ERROR]
+                kind, payload = "fault", faults[0].message.splitlines()[0]  # student is graded on the next run
             if kind == "ok":
                 reports, outcome = payload, "graded"
             elif kind == "timeout":

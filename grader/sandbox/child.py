@@ -3,7 +3,8 @@
 Everything the worker sends after it said ready is untrusted: every read has one absolute deadline per call,
 whatever arrives before it (replies with other ids, a header and half a body, nothing at all), and every size is
 checked before anything is stored.  Faults of the set-up (a worker that cannot start or cannot import its
-dependencies, a probe that does not exist) are the grader's: they raise ``GraderFault``, never a student error.
+dependencies, a probe that does not exist) are the grader's: they raise ``GraderFault`` (a probe's,
+``ProbeFault``), never a student error.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from ..errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
+from ..errors import ProbeFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from . import protocol
 from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
 from .zygote import ForkedProcess
@@ -44,11 +45,11 @@ def probe_name(probe) -> str:
     try:
         module = importlib.import_module(f"probes.{module_name}") if module_name else None
     except ImportError as exc:
-        raise GraderFault(f"a check asks for the probe {name!r}, but probes.{module_name} cannot be imported: "
-                          f"{exc}") from exc
+        raise ProbeFault(f"a check asks for the probe {name!r}, but probes.{module_name} cannot be imported: "
+                         f"{exc}") from exc
     target = getattr(module, func_name, None) if module is not None else None
     if target is None or not getattr(target, "is_probe", False):
-        raise GraderFault(f"a check asks for the probe {name!r}, which does not exist (a typo in the check?)")
+        raise ProbeFault(f"a check asks for the probe {name!r}, which does not exist (a typo in the check?)")
     _KNOWN_PROBES.add(name)
     return name
 
@@ -441,7 +442,7 @@ class Child:
             return reply
         kind = str(reply.get("kind", "exception"))
         if kind == "probe":
-            raise GraderFault(f"the worker could not run the probe {message and message.get('probe')!r}: "
+            raise ProbeFault(f"the worker could not run the probe {message and message.get('probe')!r}: "
                               f"{reply.get('message', '')} (its copy of the probes differs from the grader's, or "
                               "the submission tampered with them)")
         raise StudentCodeError(
