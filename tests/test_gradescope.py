@@ -497,6 +497,34 @@ def test_results_take_seed_time_and_hand_scores_from_the_reports():
 
 
 @pytest.mark.slow
+def test_the_source_folder_and_its_wheel_are_readable_by_root_alone(installed, tmp_path):
+    """The zip's wheel holds the reference: where Landlock is missing, a student's code running as a plain process
+    under an unprivileged uid could read it from the source folder.  setup.sh closes the folder to every user but
+    root, and run_autograder closes it again before it grades (an image whose folder was unpacked anew)."""
+    source = installed["root"] / "source"
+    (wheel,) = source.glob("*.whl")
+
+    def as_student(*argv) -> subprocess.CompletedProcess:
+        return subprocess.run(["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--", *argv],
+                              capture_output=True, timeout=60)
+
+    def assert_closed() -> None:
+        read = as_student("head", "-c", "4", str(wheel))
+        assert read.returncode != 0 and b"Permission denied" in read.stderr, read
+        assert as_student("ls", str(source)).returncode != 0
+        assert as_student("true").returncode == 0  # the uid itself runs: only the files are closed to it
+        for path in (source, wheel):
+            assert path.stat().st_mode & 0o077 == 0, (path, oct(path.stat().st_mode))
+
+    assert_closed()
+    subprocess.run(["chmod", "-R", "go+rX", str(source)], check=True)  # unpacked anew, as unzip leaves it
+    assert as_student("head", "-c", "4", str(wheel)).stdout == b"PK\x03\x04"  # what is open to the uid, it reads
+    code, data, log = _grade(installed, copy_reference(tmp_path / "reference"))
+    assert code == 0 and data["score"] == data["extra_data"]["max_score"], log
+    assert_closed()
+
+
+@pytest.mark.slow
 def test_a_malformed_upload_is_the_students_zero_not_a_grader_fault(installed, tmp_path):
     """An upload the loader cannot lay over the template (it holds foo.py and foo.py/bar.py; this crashed the
     loader, and run_autograder then said that the installation was broken and exited 3): results.json gives 0
