@@ -3,12 +3,14 @@ student; every student is graded exactly once, with the right grade, and the kil
 Also the snapshot that carries a student's files to a worker that does not see them."""
 
 import os
+import re
 import signal
 import sqlite3
 import subprocess
 import sys
 import time
 import zipfile
+from pathlib import Path
 
 import pytest
 
@@ -34,6 +36,105 @@ def committed(path) -> int:
         return 0
 
 
+
+
+def course_credentials(folder: Path):
+    """The TLS credentials of a cluster a course starts (one certificate authority that signs the scheduler's, the
+    workers' and the client's certificate: here one self-signed certificate for all), as files in a private folder,
+    and the options of ``grade batch`` that name them."""
+    from distributed.security import Security
+
+    security = Security.temporary()
+    folder.mkdir(mode=0o700)
+    (folder / "ca.pem").write_text(security.tls_ca_file)
+    (folder / "cert.pem").write_text(security.tls_client_cert)
+    (folder / "key.pem").write_text(security.tls_client_key)
+    os.chmod(folder / "key.pem", 0o600)
+    return security, ["--tls-ca-file", str(folder / "ca.pem"), "--tls-cert", str(folder / "cert.pem"),
+                      "--tls-key", str(folder / "key.pem")]
+
+
+def test_an_unauthenticated_client_cannot_run_a_task_on_a_local_cluster(tmp_path):
+    """`grade batch --cluster local:2`'s scheduler (it was plain TCP: any local user ran tasks on its workers, as
+    their user, root for a batch run as root): a client without its credentials cannot run a task, over TCP, over
+    TLS with credentials of its own, or over TLS trusting the scheduler's (public) certificate; the batch's own
+    client can."""
+    from distributed.security import Security
+
+    from grader.batch.cluster import open_client
+
+    client, cluster = open_client("local:2")[:2]
+    ran = tmp_path / "ran"
+    try:
+        address = cluster.scheduler_address
+        own = Security.temporary()
+        strangers = [
+            (address.replace("tls://", "tcp://"), None),
+            (address, own),
+            (address, Security(tls_ca_file=cluster.security.tls_ca_file, tls_client_cert=own.tls_client_cert,
+                               tls_client_key=own.tls_client_key, require_encryption=True)),
+        ]
+        for where, security in strangers:
+            with pytest.raises(Exception):  # noqa: B017 - refused whichever way: a handshake, a closed comm, a time-out
+                stranger = distributed.Client(where, security=security, timeout="10s")
+                try:
+                    stranger.submit(ran.touch, pure=False).result(timeout=30)
+                finally:
+                    stranger.close()
+        assert not ran.exists()
+        assert client.submit(ran.touch, pure=False).result(timeout=60) is None and ran.exists()
+    finally:
+        client.close()
+        cluster.close()
+
+
+def test_a_cluster_is_reached_over_tls_or_tcp_only_when_the_instructor_says_so(tmp_path, capsys):
+    from grader.batch.cluster import ClusterRefused, Credentials, transport
+    from grader.cli import main
+
+    _, files = course_credentials(tmp_path / "tls")
+    ca, cert, key = files[1::2]
+    assert transport("local:2").startswith("TLS with temporary credentials")
+    assert transport("tls://host:8786", Credentials(ca, cert, key)) == f"TLS, authenticated by the certificate " \
+                                                                        f"authority {ca}"
+    assert transport("tcp://host:8786", Credentials(insecure=True)).startswith("--insecure: plain TCP")
+    scheduler_file = tmp_path / "scheduler.json"
+    scheduler_file.write_text('{"address": "tcp://host:8786"}')
+    refused = {
+        "tcp://host:8786": (Credentials(), "speaks plain TCP"),
+        "host:8786": (Credentials(), "speaks plain TCP"),
+        str(scheduler_file): (Credentials(), "speaks plain TCP (tcp://host:8786)"),
+        "tls://host:8786": (Credentials(ca), "--tls-cert, --tls-key"),
+        "ws://host:8786": (Credentials(insecure=True), "not ws://"),
+        "local:2": (Credentials(insecure=True), "makes credentials of its own"),
+    }
+    for address, (credentials, reason) in refused.items():
+        with pytest.raises(ClusterRefused, match=re.escape(reason)):
+            transport(address, credentials)
+    (tmp_path / "subs").mkdir()
+    for argv in (["--cluster", "tcp://127.0.0.1:9"], ["--cluster", "tls://127.0.0.1:9", "--tls-ca-file", ca],
+                 ["--insecure"]):
+        assert main(["batch", str(tmp_path / "subs"), "--out", str(tmp_path / "out"), *argv]) == 2
+    err = capsys.readouterr().err
+    assert "pass --insecure to use it as it is" in err and "give the certificate files --tls-cert, --tls-key" in err
+    assert "are options of --cluster ADDRESS" in err
+
+
+@pytest.mark.slow
+def test_an_insecure_cluster_is_graded_on_and_recorded_as_such(tmp_path):
+    from grader.batch import run_batch
+    from grader.batch.cluster import Credentials
+
+    copy_reference(tmp_path / "subs" / "alice")
+    cluster = distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None)
+    try:
+        report = run_batch(tmp_path / "subs", tmp_path / "out", problems=[6], progress=False, export=False,
+                           cluster=cluster.scheduler_address, credentials=Credentials(insecure=True))
+    finally:
+        cluster.close()
+    assert report.graded == 1
+    (sandbox,) = rows(tmp_path / "out" / GRADEBOOK_NAME, "SELECT sandbox FROM runs")[0]
+    assert f"Dask cluster {cluster.scheduler_address} (--insecure: plain TCP, unauthenticated" in sandbox, sandbox
 
 
 def test_a_snapshot_carries_names_contents_and_links(tmp_path):
@@ -65,11 +166,13 @@ def test_cluster_batch_with_a_worker_killed_midway_grades_every_student_once(tmp
     expected["planted"] = 9.0  # the vectors check (1 point) fails, nothing else
     out = tmp_path / "results"
     db = out / GRADEBOOK_NAME
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    security, files = course_credentials(tmp_path / "tls")
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                       security=security, protocol="tls://")
     client = distributed.Client(cluster)
     try:
         command = [sys.executable, "-m", "grader.cli", "batch", str(subs), "--out", str(out), "--problems", "6",
-                   "--cluster", cluster.scheduler_address, "--quiet"]
+                   "--cluster", cluster.scheduler_address, "--quiet", *files]
         batch = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         try:
             killed, sandbox = None, []

@@ -14,22 +14,31 @@ not graded, retried on the next run).
 Every worker must have the project (the same checks, probes and reference: the client refuses workers whose grader
 version differs) and bubblewrap installed.  Submissions are read where the client sees them when a worker sees the
 same files (a shared file system, or ``local:N``); otherwise the task carries a snapshot of the student's entry.
+
+A cluster runs whatever task its scheduler is given, as the user of its workers: it is authenticated.  ``local:N``
+speaks TLS with temporary credentials that live in this process's memory and its workers' (Dask's
+``Security.temporary``): no other client can connect.  A cluster a course starts itself is reached over ``tls://``
+with the course's certificate files (``Credentials``); plain ``tcp://`` only when the instructor says so
+(``--insecure``), which the batch's gradebook records.
 """
 
 from __future__ import annotations
 
 import io
+import json
 import os
 import shutil
 import tarfile
 import tempfile
 import threading
+from dataclasses import dataclass
 from pathlib import Path
 
 from .discover import Entry, submission_hash
 from .pool import Slot, Task
 
-__all__ = ["open_client", "check_workers", "run_cluster", "grade_remote", "snapshot", "unpack"]
+__all__ = ["Credentials", "ClusterRefused", "transport", "open_client", "check_workers", "run_cluster",
+           "grade_remote", "snapshot", "unpack"]
 
 #: the longest a student's result may keep the client waiting beyond the per-student bound (a worker's start-up)
 START_ALLOWANCE = 120.0
@@ -153,21 +162,96 @@ QUIET_MONITORING = {
 }
 
 
-def open_client(address: str):
-    """A Dask client of the cluster at ``address`` (``tcp://host:8786``, a scheduler file's path), or of a local
-    cluster of N worker processes for ``local:N`` (with ``QUIET_MONITORING``); returns ``(client, cluster or
-    None)``."""
+@dataclass(frozen=True)
+class Credentials:
+    """How the batch's client proves itself to a cluster that a course started: the certificate authority's file,
+    the client's certificate and its key (``--tls-ca-file``, ``--tls-cert``, ``--tls-key``, as ``dask scheduler``
+    and ``dask worker`` take them); or ``insecure``, the instructor's choice of plain TCP (``--insecure``)."""
+
+    ca_file: str | None = None
+    cert: str | None = None
+    key: str | None = None
+    insecure: bool = False
+
+    @property
+    def files(self) -> tuple[str | None, str | None, str | None]:
+        return self.ca_file, self.cert, self.key
+
+
+class ClusterRefused(ValueError):
+    """A cluster the batch will not use as asked: plain TCP without ``--insecure``, TLS without certificates."""
+
+
+def _scheduler_address(address: str) -> str:
+    """The scheduler's address: ``address`` itself, or the one a scheduler file (``dask scheduler
+    --scheduler-file``) names."""
+    if "://" in address or not os.path.isfile(address):
+        return address
+    try:
+        return str(json.loads(Path(address).read_text(encoding="utf-8"))["address"])
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise ClusterRefused(f"{address} is not a scheduler file of Dask: {exc}") from exc
+
+
+def transport(address: str, credentials: Credentials = Credentials()) -> str:
+    """How the batch reaches the cluster at ``address``, as the gradebook records it; ``ClusterRefused`` for an
+    unauthenticated cluster the instructor did not choose (``tcp://`` without ``insecure``) and for TLS without
+    the three certificate files."""
+    if address.startswith("local:"):
+        if any(credentials.files) or credentials.insecure:
+            raise ClusterRefused("a local cluster makes credentials of its own: --tls-* and --insecure are for "
+                                 "--cluster ADDRESS")
+        return "TLS with temporary credentials held in memory by this batch and its workers"
+    scheduler = _scheduler_address(address)
+    scheme = scheduler.split("://", 1)[0] if "://" in scheduler else "tcp"
+    if scheme == "tls":
+        missing = [option for option, path in zip(("--tls-ca-file", "--tls-cert", "--tls-key"), credentials.files)
+                   if not path]
+        if missing:
+            raise ClusterRefused(f"the cluster {address} speaks TLS: give the certificate files {', '.join(missing)} "
+                                 "(see the README's cluster section)")
+        unreadable = [path for path in credentials.files if not os.access(path, os.R_OK)]
+        if unreadable:
+            raise ClusterRefused(f"the certificate file {unreadable[0]} cannot be read")
+        if credentials.insecure:
+            raise ClusterRefused("--insecure is for a tcp:// cluster: this one speaks TLS")
+        return f"TLS, authenticated by the certificate authority {credentials.ca_file}"
+    if scheme == "tcp":
+        if not credentials.insecure:
+            raise ClusterRefused(f"the cluster {address} speaks plain TCP ({scheduler}): anyone who can reach its "
+                                 "scheduler runs code as its workers' user. Start it with TLS and pass tls://... "
+                                 "with --tls-ca-file, --tls-cert and --tls-key (see the README's cluster section), "
+                                 "or pass --insecure to use it as it is (recorded in the gradebook)")
+        if any(credentials.files):
+            raise ClusterRefused("--tls-* files are for a tls:// cluster: this one speaks plain TCP")
+        return "--insecure: plain TCP, unauthenticated (the instructor's choice)"
+    raise ClusterRefused(f"the cluster {address}: the grader speaks tls:// (or tcp:// with --insecure), not "
+                         f"{scheme}://")
+
+
+def open_client(address: str, credentials: Credentials = Credentials()):
+    """A Dask client of the cluster at ``address`` (``tls://host:8786`` with ``credentials``, ``tcp://host:8786``
+    with ``credentials.insecure``, a scheduler file's path), or of a local cluster of N worker processes for
+    ``local:N``, with TLS and temporary credentials (and ``QUIET_MONITORING``); returns ``(client, cluster or
+    None)``.  ``ClusterRefused`` as ``transport`` says."""
     import dask
     from distributed import Client, LocalCluster
+    from distributed.security import Security
 
+    transport(address, credentials)
     if address.startswith("local:"):
         count = int(address.split(":", 1)[1] or 1)
         with dask.config.set(QUIET_MONITORING):  # read as the scheduler and the workers start
-            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None)
+            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
+                                   security=Security.temporary(), protocol="tls://", host="127.0.0.1")
         return Client(cluster), cluster
+    security = None
+    if not credentials.insecure:
+        security = Security(tls_ca_file=credentials.ca_file, tls_client_cert=credentials.cert,
+                            tls_client_key=credentials.key, require_encryption=True)
     if os.path.isfile(address):
-        return Client(scheduler_file=address), None
-    return Client(address), None
+        return Client(scheduler_file=address, security=security), None
+    return Client(address, security=security), None
 
 
 def check_workers(client, problems: list[int], versions: dict[int, str], no_sandbox: bool) -> tuple[str, bool]:

@@ -15,6 +15,7 @@ def cmd_batch(args) -> int:
     from ..runner import problem_module
     from ..sandbox import Limits
     from ..terminal import say
+    from .cluster import ClusterRefused, Credentials
     from .course import CourseError
     from .discover import BAD_NAME
     from .lms import RosterError
@@ -41,11 +42,17 @@ def cmd_batch(args) -> int:
         call_timeout=args.timeout or defaults.call_timeout,
         import_timeout=args.import_timeout or defaults.import_timeout,
     )
+    credentials = Credentials(args.tls_ca_file, args.tls_cert, args.tls_key, args.insecure)
+    if args.cluster is None and (any(credentials.files) or credentials.insecure):
+        say("error: --tls-ca-file, --tls-cert, --tls-key and --insecure are options of --cluster ADDRESS")
+        return EXIT_USAGE
     try:
         report = run_batch(args.submissions, args.out, problems=problems, jobs=args.jobs, force=args.force,
                            limits=limits, student_timeout=args.student_timeout, progress=not args.quiet,
-                           no_sandbox=args.no_sandbox, cluster=args.cluster, course=course)
-    except (SubmissionError, BatchLocked, NotInstructorInstallation, CourseError, RosterError) as exc:
+                           no_sandbox=args.no_sandbox, cluster=args.cluster, course=course,
+                           credentials=credentials)
+    except (SubmissionError, BatchLocked, NotInstructorInstallation, CourseError, RosterError,
+            ClusterRefused) as exc:
         say(f"error: {exc}")
         return EXIT_USAGE
     except RuntimeError as exc:  # the workers cannot start: a broken installation
@@ -173,8 +180,16 @@ def add_batch_parser(sub) -> None:
                    help="seconds for grading one student in all (default: the import time-out plus twice the call "
                         "time-out per check)")
     p.add_argument("--cluster", default=None, metavar="ADDRESS",
-                   help="grade on a Dask cluster: the scheduler's address (tcp://host:8786) or scheduler file, or "
-                        "local:N for N worker processes on this machine (see the README); instead of --jobs")
+                   help="grade on a Dask cluster: the scheduler's address (tls://host:8786) or scheduler file, or "
+                        "local:N for N worker processes on this machine, with TLS and temporary credentials (see "
+                        "the README); instead of --jobs")
+    p.add_argument("--tls-ca-file", default=None, metavar="PEM",
+                   help="the certificate authority of a tls:// cluster (as `dask scheduler --tls-ca-file`)")
+    p.add_argument("--tls-cert", default=None, metavar="PEM", help="this client's certificate for a tls:// cluster")
+    p.add_argument("--tls-key", default=None, metavar="PEM", help="the key of that certificate")
+    p.add_argument("--insecure", action="store_true",
+                   help="use a tcp:// cluster without TLS: anyone who reaches its scheduler runs code as its workers' "
+                        "user (recorded in the gradebook)")
     p.add_argument("--course", type=Path, default=None, metavar="FILE",
                    help="the course's assignments, due dates, extensions and late policy (default: course.toml in "
                         "the submissions folder, when there is one); its problems are graded unless --problems")

@@ -105,14 +105,15 @@ def _locked(out: Path):
 
 
 @contextmanager
-def _cluster_client(address: str | None):
-    """A Dask client of the cluster at ``address`` for the batch (None: no cluster)."""
+def _cluster_client(address: str | None, credentials=None):
+    """A Dask client of the cluster at ``address`` for the batch (None: no cluster), with ``credentials``
+    (``grader.batch.cluster.Credentials``)."""
     if address is None:
         yield None
         return
-    from .cluster import open_client
+    from .cluster import Credentials, open_client
 
-    client, cluster = open_client(address)
+    client, cluster = open_client(address, credentials or Credentials())
     try:
         yield client
     finally:
@@ -164,6 +165,7 @@ def run_batch(
     no_sandbox: bool = False,
     cluster: str | None = None,
     course: Course | None = None,
+    credentials=None,
 ) -> BatchReport:
     """Grade every student of ``submissions`` into the gradebook in ``out``, then write the exports.
 
@@ -171,7 +173,8 @@ def run_batch(
     in every report), else ``SandboxError``.  One worker is started first (a canary): when it cannot start, the
     batch stops with ``SandboxError`` before anyone is graded.  With ``cluster`` (a Dask scheduler's address, or
     ``local:N``), the students are graded on that cluster's workers (``grader.batch.cluster``), which must all
-    have the same grader and, unless ``no_sandbox``, bubblewrap.
+    have the same grader and, unless ``no_sandbox``, bubblewrap; ``credentials`` (``grader.batch.cluster.
+    Credentials``) say how the client authenticates, or that the instructor chose plain TCP (recorded in the run).
 
     Each student's submission time (``grader.batch.course.entry_time``) is recorded for the deadlines of a course;
     ``course`` (its file recorded in the gradebook for the exports that follow) gives the exports its assignments'
@@ -196,17 +199,22 @@ def run_batch(
     jobs = max(1, jobs or len(os.sched_getaffinity(0)))
     student_timeout = student_timeout or default_student_timeout(limits, numbers)
     mode = sandbox_mode() if cluster is None else None
+    if cluster is not None:
+        from .cluster import Credentials, transport
+
+        reached = transport(cluster, credentials or Credentials())  # refused before anything is opened
     if mode is not None and not mode.isolated and not no_sandbox:
         raise SandboxError(f"bubblewrap is not available, so students' code would run without a sandbox: install "
                            f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
                            "and in every report)")
-    with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster) as client:
+    with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster, credentials) as client:
         versions = {n: grader_version(n) for n in numbers}
         if client is not None:
             from .cluster import check_workers
 
             note, isolated = check_workers(client, numbers, versions, no_sandbox)
-            sandbox = f"Dask cluster {cluster}: {note}" if isolated else f"--no-sandbox: Dask cluster {cluster}: {note}"
+            sandbox = f"Dask cluster {cluster} ({reached}): {note}"
+            sandbox = sandbox if isolated else f"--no-sandbox: {sandbox}"
             jobs = len(client.scheduler_info()["workers"])
         else:
             canary(limits, mode)
