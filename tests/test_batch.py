@@ -41,7 +41,7 @@ from .batch_fixtures import (
     synthetic_report,
     zip_folder,
 )
-from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
+from .submissions import ROOT, build_hostile, build_planted, copy_reference, copy_template, planted_mistakes
 from .processes import alive, cmdline, default_ctrl_c, descendants
 from .test_gradescope import validate, visible_text
 
@@ -857,3 +857,57 @@ def test_progress_shows_a_students_name_and_what_became_of_them_inert():
     for text in (terminal.getvalue(), log.getvalue()):
         escapes = re.sub("\r\x1b\\[K", "", text)  # the terminal's redrawn line: the grader's own sequence
         assert not re.search("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e]", escapes), repr(text)
+
+
+# ------------------------------------------------------------------------------------------ seeds
+
+
+def test_a_submission_cannot_predict_its_seed_from_its_own_files(tmp_path):
+    """The hostile ``predict_seed`` computes, from its own files, the content hash of its submission and the seed
+    a batch derived from that alone, and prints both: its content hash is right, but the seed the batch gives it
+    comes from the results folder's secret as well, which it cannot know."""
+    subs = tmp_path / "subs"
+    build_hostile("predict_seed", subs / "mallory")
+    out = tmp_path / "results"
+    report = run_batch(subs, out, problems=[6], jobs=1, limits=LIMITS, progress=False, export=False)
+    assert report.graded == 1
+    with Gradebook.in_folder(out) as book:
+        (graded,) = book.current()
+    printed = re.search(r"content hash (\w+); predicted seed (\d+)", graded.report.stdout)
+    assert printed, graded.report.stdout
+    assert printed[1] == graded.content_hash  # the attack works out what it can...
+    assert int(printed[2]) != graded.report.seed  # ...but not its seed
+    assert graded.report.score == 10
+
+
+def test_seeds_come_from_the_folders_secret_made_once_and_reproduce_with_seed(tmp_path, capsys):
+    """Each results folder has a secret of its own, made once and kept in its gradebook (readable by its owner
+    alone): a student's seed is the same in every run of a folder, differs between folders, and the seed recorded
+    reproduces the student's random inputs with `grade problem-N --seed`."""
+    subs = tmp_path / "subs"
+    build_planted(MISTAKES["p06-cardan-rotation-order"], subs / "ann")
+    seeds = {}
+    for folder in ("first", "second"):
+        out = tmp_path / folder
+        run_batch(subs, out, problems=[6], jobs=1, limits=LIMITS, progress=False, export=False)
+        assert (out / GRADEBOOK_NAME).stat().st_mode & 0o077 == 0
+        with Gradebook.in_folder(out) as book:
+            secret = book.seed_secret()
+            assert book.seed_secret() == secret and len(secret) == 32
+            (graded,) = book.current()
+        seeds[folder] = graded
+        run_batch(subs, out, problems=[6], jobs=1, limits=LIMITS, progress=False, export=False, force=True)
+        with Gradebook.in_folder(out) as book:
+            assert book.seed_secret() == secret and book.current()[0].report.seed == graded.report.seed
+    assert seeds["first"].report.seed != seeds["second"].report.seed
+    # the instructor reproduces the student's random inputs: the same failing input, the same message
+    graded = seeds["first"].report
+    failed = [r for r in graded.results if r.status.value == "failed"]
+    assert failed
+    messages = {}
+    for seed in (graded.seed, graded.seed + 1):
+        js = tmp_path / f"again-{seed}.json"
+        main(["problem-6", "--submission", str(subs / "ann"), "--seed", str(seed), "--json", str(js)])
+        messages[seed] = {r["check_id"]: r["message"] for r in json.loads(js.read_text())["reports"][0]["results"]}
+    assert all(messages[graded.seed][r.check_id] == r.message for r in failed)
+    assert any(messages[graded.seed + 1][r.check_id] != r.message for r in failed)  # the inputs follow the seed

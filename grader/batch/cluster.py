@@ -31,7 +31,7 @@ import shutil
 import tarfile
 import tempfile
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from .discover import Entry, submission_hash
@@ -131,15 +131,13 @@ def grade_remote(job: dict) -> tuple[str, object, float]:
                 return "fault", f"the worker {os.uname().nodename} cannot read {path}", 0.0
             scratch = Path(tempfile.mkdtemp(prefix="grader-snapshot-"))
             path = unpack(job["snapshot"], scratch)
-        task = Task(Entry(entry.name, path, entry.content_hash), tuple(job["problems"]))
+        task = Task(replace(entry, path=path), tuple(job["problems"]))
         slot = _slot(job["limits"], mode, tuple(job["all_problems"]))
         try:
             kind, payload, seconds = slot.outcome(task, job["student_timeout"])
         except RuntimeError as exc:  # the slot cannot start: this worker's installation
             return "fault", f"{os.uname().nodename}: {exc}", 0.0
         if kind == "ok":
-            from dataclasses import replace
-
             payload = [replace(report, submission=str(entry.path)) for report in payload]
         return kind, payload, seconds
     finally:

@@ -1,9 +1,11 @@
 """The students of a submissions folder: one folder, .zip archive or .ipynb notebook each, with the content hash
-that decides whether a student is graded again, and the seed of their randomized checks."""
+that decides whether a student is graded again, and the seed of their randomized checks (from the content and the
+batch's secret)."""
 
 from __future__ import annotations
 
 import hashlib
+import hmac
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,21 +27,22 @@ GRADESCOPE_METADATA = "submission_metadata.json"
 class Entry:
     """One student's submission: a folder, a zip archive or a notebook; ``metadata``, Gradescope's metadata of it
     when the student's entry is laid out as Gradescope's autograder sees a submission (``NAME/submission/`` and
-    ``NAME/submission_metadata.json``)."""
+    ``NAME/submission_metadata.json``); ``seed``, the seed of its randomized checks, which a batch gives it from its
+    secret (``student_seed``; None before: a fresh seed)."""
 
     name: str
     path: Path
     content_hash: str
     metadata: Path | None = None
-
-    @property
-    def seed(self) -> int:
-        return student_seed(self.content_hash)
+    seed: int | None = None
 
 
-def student_seed(content_hash: str) -> int:
-    """The seed of the randomized checks: fixed by the content, so that a regrade is reproducible."""
-    return int(hashlib.sha256(content_hash.encode()).hexdigest()[:8], 16) & 0x7FFFFFFF
+def student_seed(content_hash: str, secret: bytes) -> int:
+    """The seed of a submission's randomized checks: an HMAC of its content under the batch's secret (kept in the
+    gradebook, ``Gradebook.seed_secret``).  The same submission gets the same seed in every run of its results
+    folder, and the instructor reproduces its inputs with ``--seed``; the submission, without the secret, cannot
+    compute it from its own files."""
+    return int(hmac.new(secret, content_hash.encode(), hashlib.sha256).hexdigest()[:8], 16) & 0x7FFFFFFF
 
 
 def submission_hash(path: Path) -> str:

@@ -19,6 +19,8 @@ import csv
 import hashlib
 import io
 import json
+import os
+import secrets
 import sqlite3
 from contextlib import contextmanager
 from dataclasses import asdict, dataclass, replace
@@ -338,6 +340,10 @@ class Gradebook:
     def __init__(self, path: str | Path):
         self.path = Path(path)
         self.path.parent.mkdir(parents=True, exist_ok=True)
+        try:  # a new gradebook is its owner's alone: it holds the batch's secret (``seed_secret``)
+            os.close(os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_CLOEXEC, 0o600))
+        except FileExistsError:
+            pass
         self.db = sqlite3.connect(self.path, isolation_level=None, timeout=30)
         self.db.row_factory = sqlite3.Row
         self.db.execute("PRAGMA journal_mode = WAL")
@@ -378,6 +384,17 @@ class Gradebook:
                 self.db.execute("ROLLBACK")
             raise
         self.db.execute("COMMIT")
+
+    # ------------------------------------------------------------------ the secret
+
+    def seed_secret(self) -> bytes:
+        """The secret of this results folder, from which each student's seed is derived with their submission
+        (``grader.batch.discover.student_seed``): made once, when first asked for, and kept in the gradebook, so
+        that every run of the folder gives a submission the same seed, and no submission can compute its own."""
+        with self.transaction() as db:
+            db.execute("INSERT OR IGNORE INTO meta VALUES ('seed_secret', ?)", (secrets.token_hex(32),))
+            (value,) = db.execute("SELECT value FROM meta WHERE key = 'seed_secret'").fetchone()
+        return bytes.fromhex(value)
 
     # ------------------------------------------------------------------ runs
 

@@ -9,7 +9,7 @@ import signal
 import threading
 import time
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from ..errors import SandboxError, SubmissionError
@@ -17,7 +17,7 @@ from ..faults import stored
 from ..results import Status
 from ..sandbox import BWRAP_FIX, Limits, canary, sandbox_mode
 from .course import Course, entry_time
-from .discover import discover
+from .discover import discover, student_seed
 from .exports import COURSE_META, RECORDED, StudentExporter, export_results
 from .gradebook import Gradebook, grader_version
 from .pool import Task, run_pool, stopped_reports
@@ -208,6 +208,8 @@ def run_batch(
                            f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
                            "and in every report)")
     with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster, credentials) as client:
+        secret = book.seed_secret()  # each student's seed: from their submission and the folder's secret
+        entries = [replace(entry, seed=student_seed(entry.content_hash, secret)) for entry in entries]
         versions = {n: grader_version(n) for n in numbers}
         if client is not None:
             from .cluster import check_workers
