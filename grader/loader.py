@@ -23,6 +23,7 @@ import re
 import shutil
 import stat
 import tempfile
+import warnings
 import zipfile
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -462,7 +463,9 @@ def notebook_plan(file: str, data: bytes, module: str) -> NotebookPlan:
         if size > MAX_NOTEBOOK_CODE:
             raise SubmissionError(f"the notebook {file} holds more than {MAX_NOTEBOOK_CODE // 2**20} MB of code")
         try:
-            names = definitions(code)
+            with warnings.catch_warnings():  # a parser's warning quotes the cell's text: never printed here
+                warnings.simplefilter("ignore")
+                names = definitions(code)
         except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
             where = f", line {exc.lineno}" if isinstance(exc, SyntaxError) and exc.lineno else ""
             notes.append(f"notebook {file}: cell {number} was left out: it does not parse ({type(exc).__name__}"

@@ -355,3 +355,19 @@ def test_any_folder_is_loaded_or_refused_with_a_reason(entries):
             except OSError:  # the file system refused it (a name too long, a file where a folder goes)
                 continue
         _loads_or_refuses(root, scratch)
+
+
+def test_reading_a_notebook_prints_no_warning_that_quotes_its_cells(tmp_path):
+    """Parsing a cell can warn (an invalid escape sequence: a DeprecationWarning in Python 3.11, a SyntaxWarning,
+    shown by default, from 3.12), and the warning quotes the cell's text, control characters included: the loader
+    parses in silence."""
+    (tmp_path / "mine.ipynb").write_text(json.dumps({
+        "cells": [{"cell_type": "code", "metadata": {}, "outputs": [], "execution_count": None,
+                   "source": 'def R1(a):\n    return "\\\x1b]0;title\x07"\n'}],
+        "metadata": {}, "nbformat": 4, "nbformat_minor": 5}))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        loaded = materialize(tmp_path / "mine.ipynb", tmp_path)
+    loader.cleanup(loaded)
+    assert [str(w.message) for w in caught] == []
+    assert any("→ rotations.py: R1" in note for note in loaded.notes)
