@@ -111,7 +111,7 @@ def test_a_cluster_is_reached_over_tls_or_tcp_only_when_the_instructor_says_so(t
     for address, (credentials, reason) in refused.items():
         with pytest.raises(ClusterRefused, match=re.escape(reason)):
             transport(address, credentials)
-    (tmp_path / "subs").mkdir()
+    copy_reference(tmp_path / "subs" / "alice")
     for argv in (["--cluster", "tcp://127.0.0.1:9"], ["--cluster", "tls://127.0.0.1:9", "--tls-ca-file", ca],
                  ["--insecure"]):
         assert main(["batch", str(tmp_path / "subs"), "--out", str(tmp_path / "out"), *argv]) == 2

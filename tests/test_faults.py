@@ -219,6 +219,7 @@ def test_a_batch_records_the_students_faults_once_and_its_exit_code_stays_0(tmp_
     with open(out / "grades.csv", newline="") as handle:
         grades = {row["student"]: row for row in csv.DictReader(handle)}
     assert grades["loader"]["problem_6"] == "0" and grades["honest"]["problem_6"] == "10"
+    assert grades["loader"]["status"] == f"unloadable: {recorded['loader'][2]}"
     # recorded once: the next run grades nobody again
     code, err = _batch(subs, out, capsys)
     assert code == 0 and f"{len(students) + 1} unchanged" in err, err
