@@ -105,8 +105,10 @@ def _start_workers(source: Path, limits, count: int):
     ``(submission, child)``, or None when the submission cannot be loaded (grading then says why)."""
     from .errors import SubmissionError
     from .loader import cleanup, materialize
-    from .sandbox import Child, sandbox_mode
+    from .oracle import reference_available
+    from .sandbox import Child, student_mode
 
+    mode = student_mode(kit=not reference_available())
     started = []
     try:
         for _ in range(count):
@@ -115,7 +117,7 @@ def _start_workers(source: Path, limits, count: int):
             except SubmissionError:
                 break
             _LEFT_TO_REMOVE.append(submission)
-            child = Child(submission.path, limits, sandbox_mode())
+            child = Child(submission.path, limits, mode)
             started.append((submission, child))
             child.start()
     except BaseException:
@@ -130,7 +132,13 @@ def _start_workers(source: Path, limits, count: int):
 def default_workers(problems: int) -> int:
     """Workers for ``grade problem-N ...``: two for several problems on a machine with two cores or more, else
     one (a single problem gains nothing from a second worker's start-up)."""
-    return 2 if problems > 1 and len(os.sched_getaffinity(0)) >= 2 else 1
+    return 2 if problems > 1 and _cores() >= 2 else 1
+
+
+def _cores() -> int:
+    """The cores this process may run on (all of the machine's where the system cannot say: macOS, Windows)."""
+    affinity = getattr(os, "sched_getaffinity", None)
+    return len(affinity(0)) if affinity is not None else (os.cpu_count() or 1)
 
 
 def cmd_problem(args) -> int:
@@ -355,7 +363,7 @@ def _leave(code: int) -> None:
     paths += _temporary_folders()
     if paths:
         try:
-            pid = os.fork()
+            pid = os.fork() if hasattr(os, "fork") else -1  # no fork (Windows): removed here, before leaving
         except OSError:
             pid = -1
         if pid == 0:  # the remover: detached from the terminal and from whoever waits for the command's output

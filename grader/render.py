@@ -38,9 +38,13 @@ def _fmt(x) -> str:
 
 
 def _environment(autoescape: bool, cache_pattern: str, **options) -> Environment:
+    try:
+        cache = FileSystemBytecodeCache(pattern=cache_pattern)
+    except RuntimeError:  # jinja2 cannot tell a folder safe for it (a POSIX system without uids): compiled each run
+        cache = None
     env = Environment(
         loader=PackageLoader("grader", "templates"),
-        bytecode_cache=FileSystemBytecodeCache(pattern=cache_pattern),
+        bytecode_cache=cache,
         autoescape=autoescape,
         undefined=StrictUndefined,
         trim_blocks=False,

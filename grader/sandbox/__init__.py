@@ -9,10 +9,13 @@ handle on the child, the worker that runs inside it, and the protocol between th
     protocol.py  framing and deadline-bound reads and writes (standard library only)
     notebook.py  what of a notebook's code cells counts, and running it in the worker (standard library only)
     seccomp.py   the worker's system-call filter and fresh session keyring, installed last (standard library only)
+    portable.py  the portable mode of a student's own machine: a subprocess on pipes, deadlines, no confinement
+    portable_worker.py  its child side (standard library only, plus worker.py and protocol.py)
 """
 
 from .child import Child, canary, probe_name
 from .launch import BWRAP_FIX, Limits, SandboxMode, child_env, plain_mode, refusal, runtime_dir, sandbox_mode
+from .portable import portable_mode, student_mode
 
 __all__ = ["Limits", "SandboxMode", "sandbox_mode", "plain_mode", "Child", "canary", "probe_name", "runtime_dir", "child_env",
-           "refusal", "BWRAP_FIX"]
+           "refusal", "BWRAP_FIX", "portable_mode", "student_mode"]

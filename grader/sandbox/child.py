@@ -23,6 +23,7 @@ from pathlib import Path
 from ..errors import ProbeFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from . import protocol
 from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
+from .portable import PORTABLE, PortableProcess, prepare_portable
 from .zygote import ForkedProcess
 
 __all__ = ["Child", "canary", "probe_name"]
@@ -87,7 +88,9 @@ class Child:
         self._pending_import = False
         self._import_unsent = False
         self._import_failure: Exception | None = None
-        self._output = tempfile.TemporaryFile()
+        # a portable worker opens the file of its output by name (it is not handed a descriptor)
+        self._output = (tempfile.NamedTemporaryFile(prefix="grader-output-", delete=False) if self._portable_mode
+                        else tempfile.TemporaryFile())
         self._errors = tempfile.TemporaryFile()
         self.calls = 0
         self.restarts = 0
@@ -99,6 +102,10 @@ class Child:
     @property
     def _forked(self) -> bool:
         return isinstance(self._proc, ForkedProcess)
+
+    @property
+    def _portable_mode(self) -> bool:
+        return self.mode.kind == PORTABLE
 
     def start(self) -> None:
         """Start the worker and ask it to import the submission, without waiting: the parent's own work
@@ -122,6 +129,9 @@ class Child:
         proc = self._proc
         if proc is None or isinstance(proc, ForkedProcess) or proc.returncode is not None:
             return
+        if isinstance(proc, PortableProcess):
+            proc.kill()
+            return
         try:
             os.killpg(proc.pid, signal.SIGKILL)
         except OSError:
@@ -130,6 +140,9 @@ class Child:
     def _spawn(self) -> None:
         if self._interrupted:
             raise KeyboardInterrupt("the grading was interrupted")
+        if self._portable_mode:
+            self._spawn_portable()
+            return
         to_child_r, to_child_w = os.pipe()
         from_child_r, from_child_w = os.pipe()
         try:
@@ -157,6 +170,28 @@ class Child:
         self._ready = False
         self.restarts += 1
 
+    def _spawn_portable(self) -> None:
+        """A portable worker (``portable``): the protocol on its standard input and output."""
+        if self._launch is None:
+            self._launch = prepare_portable(self.submission, self._output.name, self.limits, self.python)
+        try:
+            self._proc = PortableProcess(self._launch, self._errors)
+        except OSError as exc:
+            raise self._setup_fault(f"the worker process cannot be started: {exc}") from exc
+        self._send_fd = -1
+        self._reader = self._proc.replies
+        self._spawned_at = time.monotonic()
+        self._ready = False
+        self.restarts += 1
+
+    def _write(self, message: dict, deadline: float) -> None:
+        """Send ``message`` to the worker before ``deadline`` (``protocol.Deadline``; ``OSError`` when it closed
+        its end)."""
+        if isinstance(self._proc, PortableProcess):
+            self._proc.send(message, deadline)
+        else:
+            protocol.send_before(self._send_fd, message, deadline)
+
     def _spawn_fresh(self, to_child_r: int, from_child_w: int) -> None:
         if self._launch is None:
             self._launch = prepare(self.submission, to_child_r, from_child_w, self.limits, self.mode, self.python)
@@ -177,7 +212,7 @@ class Child:
         self._import_id = self._next_id
         deadline = time.monotonic() + self.limits.setup_timeout
         try:
-            protocol.send_before(self._send_fd, {"op": "import", "id": self._import_id}, deadline)
+            self._write({"op": "import", "id": self._import_id}, deadline)
         except protocol.Deadline:
             self._kill()
             raise StudentTimeout(self.limits.setup_timeout, "import") from None
@@ -191,7 +226,7 @@ class Child:
             return None
         if self._proc.returncode is not None:
             return self._proc.returncode
-        if self._forked:
+        if self._forked or isinstance(self._proc, PortableProcess):
             return self._proc.poll()
         try:
             info = os.waitid(os.P_PID, self._proc.pid, os.WEXITED | os.WNOHANG | os.WNOWAIT)
@@ -206,6 +241,11 @@ class Child:
         code = self._exit_code()
         if code is not None or self._proc is None:
             return code
+        if isinstance(self._proc, PortableProcess):
+            try:
+                return self._proc.wait(max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                return None
         try:  # readable when the process ends (Linux 5.3)
             pidfd = os.dup(self._proc.pidfd) if self._forked else os.pidfd_open(self._proc.pid)
         except (AttributeError, OSError):
@@ -239,7 +279,9 @@ class Child:
                 pass
         self._send_fd, self._reader = -1, None
         forked = isinstance(proc, ForkedProcess)
-        if proc.returncode is None and not forked:
+        if isinstance(proc, PortableProcess):  # its own process only: a portable worker has no group of its own
+            proc.kill()
+        elif proc.returncode is None and not forked:
             try:  # before the worker is reaped: its pid, the group's id, cannot have been reused
                 os.killpg(proc.pid, signal.SIGKILL)
             except (ProcessLookupError, PermissionError):
@@ -253,7 +295,7 @@ class Child:
             proc.wait(timeout=30)
         except subprocess.TimeoutExpired:
             pass
-        if forked:  # what the worker started is killed by the zygote's sweep
+        if forked or isinstance(proc, PortableProcess):  # a forked worker's children: killed by the zygote's sweep
             proc.close()
         if self._launch is not None and not final:
             if self.zygote is not None:
@@ -281,11 +323,17 @@ class Child:
         self.close()
         self._output.close()
         self._errors.close()
+        if self._portable_mode:
+            try:
+                os.unlink(self._output.name)
+            except OSError:
+                pass
 
     # ------------------------------------------------------------------ the start-up handshake
 
     def _setup_fault(self, detail: str, missing: str | None = None) -> SandboxError:
-        where = "in the bubblewrap sandbox" if self.mode.isolated else "as a plain process"
+        where = ("in the bubblewrap sandbox" if self.mode.isolated else "as a portable process" if self._portable_mode
+                 else "as a plain process")
         stderr = self.output()[1].strip()
         shown = f"\nits error output ends with:\n{stderr[-1500:]}" if stderr and stderr not in detail else ""
         fix = ("Fix: reinstall the grader with its dependencies (`pip install -e .` in the project, or `pip install` "
@@ -333,7 +381,7 @@ class Child:
     def note(self) -> str:
         """How the submission ran, for the report: the mode, and what the worker reported at start-up (before
         any code of the submission ran)."""
-        if not self.info:
+        if self._portable_mode or not self.info:  # a portable worker: no confinement to report
             return self.mode.note
         parts = [self.mode.note]
         if not self.mode.isolated:
@@ -394,7 +442,7 @@ class Child:
     def _send(self, message: dict, timeout: float, phase: str, deadline: float | None = None) -> None:
         deadline = time.monotonic() + timeout if deadline is None else deadline
         try:
-            protocol.send_before(self._send_fd, message, deadline)
+            self._write(message, deadline)
         except protocol.Deadline:
             self._kill()
             raise StudentTimeout(timeout, phase) from None

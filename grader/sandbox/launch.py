@@ -47,6 +47,7 @@ __all__ = [
     "prepare_fork",
     "renew_home",
     "plain_mode",
+    "is_root",
     "refusal",
     "HIDDEN_PACKAGES",
     "BWRAP_FIX",
@@ -122,7 +123,7 @@ def _bwrap_works(bwrap: str) -> bool:
 
 
 def _process_note(reason: str) -> str:
-    if os.geteuid() == 0:
+    if is_root():
         return (f"{reason}: the submission ran as a plain process under an unprivileged uid of its own, with "
                 "resource limits")
     return (f"{reason}: not sandboxed; the submission ran as your own user with resource limits (install "
@@ -134,11 +135,19 @@ def plain_mode(reason: str = "bubblewrap not used") -> SandboxMode:
     return SandboxMode("process", _process_note(reason))
 
 
+def is_root() -> bool:
+    """Whether the grader runs as root.  A system without uids (Windows: no ``os.geteuid``) has no root whose
+    rights student code could use."""
+    geteuid = getattr(os, "geteuid", None)
+    return geteuid is not None and geteuid() == 0
+
+
 def sandbox_mode(prefer: str = "auto") -> SandboxMode:
     """Pick the isolation: ``prefer`` is ``"auto"``, ``"bwrap"`` or ``"process"``.
 
-    ``GRADER_SANDBOX=process`` in the environment forces the plain-process mode."""
-    return _sandbox_mode(os.environ.get("GRADER_SANDBOX", prefer), os.geteuid())
+    ``GRADER_SANDBOX=process`` in the environment forces the plain-process mode.  The portable mode is never
+    chosen here (see ``portable.student_mode``: a student's own grading only), whatever ``GRADER_SANDBOX`` says."""
+    return _sandbox_mode(os.environ.get("GRADER_SANDBOX", prefer), 0 if is_root() else -1)
 
 
 @functools.lru_cache(maxsize=8)
@@ -174,7 +183,7 @@ def runtime_dir() -> Path:
     root = Path(tempfile.mkdtemp(prefix="grader-runtime-"))
     atexit.register(shutil.rmtree, root, True)
     here = Path(__file__).parent
-    for name in ("worker.py", "protocol.py", "notebook.py", "seccomp.py"):
+    for name in ("worker.py", "protocol.py", "notebook.py", "seccomp.py", "portable_worker.py"):
         shutil.copy2(here / name, root / name)
     probes = Path(importlib.import_module("probes").__file__).parent
     shutil.copytree(probes, root / "probes", ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
@@ -484,7 +493,7 @@ def prepare(submission: Path, request_fd: int, reply_fd: int, limits: Limits, mo
     As root, claims a uid no other child uses (released by ``Launch.release``).  Raises ``SandboxError`` when
     the child cannot be started safely."""
     python = python or sys.executable
-    root = os.geteuid() == 0
+    root = is_root()
     required = [name for name in REQUIRED if importlib.util.find_spec(name) is not None]
     config = {"limits": limits.for_worker(), "require": required}
     if not mode.isolated and not root:  # a student's own machine: their own uid, Landlock where available

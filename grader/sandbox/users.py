@@ -10,9 +10,7 @@ it is claimed as well, in case a grader died before it could sweep.
 
 from __future__ import annotations
 
-import fcntl
 import os
-import pwd
 import shutil
 import signal
 import stat
@@ -62,6 +60,8 @@ def _lock_dir() -> str:
 
 
 def _account_exists(uid: int) -> bool:
+    import pwd  # POSIX only: imported where a uid is claimed (as root), never on a student's laptop
+
     try:
         pwd.getpwuid(uid)
     except KeyError:
@@ -77,6 +77,8 @@ _next_offset = 0
 def claim_uid(sweeps: bool = True) -> UidClaim:
     """A uid for one child, unused by every other child and by every account of the system."""
     global _next_offset
+    import fcntl  # POSIX only, as pwd above
+
     directory = _lock_dir()
     for offset in range(UID_COUNT):
         uid = BASE_UID + (_next_offset + offset) % UID_COUNT
