@@ -19,6 +19,7 @@ import hashlib
 import importlib.util
 import io
 import random
+import re
 import time
 import tomllib
 import zipfile
@@ -33,12 +34,17 @@ from .oracle import KEY_FILE, AnswerKey, RecordingOracle, reference_available
 from .results import ProblemReport, Status
 
 __all__ = ["ReferenceChild", "Kit", "record_key", "build_kit", "write_wheel", "kit_files", "secret_check_ids",
-           "KitError", "KIT_NAME", "KIT_PACKAGES"]
+           "KitError", "KIT_NAME", "KIT_PACKAGES", "KIT_DEPENDENCIES", "KIT_EXTRAS", "kit_dependencies", "kit_extras"]
 
 #: the distribution name of the kit
 KIT_NAME = "mbd_autograder_kit"
 #: the packages the kit holds (never ``reference``)
 KIT_PACKAGES = ("grader", "checks", "probes", "student_template")
+#: what a student's grading needs: the kit requires these of the project's dependencies, and no other (no Dask:
+#: a cluster is the instructor's)
+KIT_DEPENDENCIES = ("numpy", "scipy", "sympy", "matplotlib", "mujoco", "jinja2", "nbformat", "hypothesis")
+#: the kit's extras, from the project's optional dependencies of the same names: ``[jupyter]`` brings JupyterLab
+KIT_EXTRAS = ("jupyter",)
 #: files of those packages that are not copied
 SKIPPED_SUFFIXES = (".pyc", ".pyo", ".tmp")
 PROJECT_ROOT = Path(__file__).resolve().parents[1]
@@ -159,6 +165,42 @@ def runtime_dependencies() -> list[str]:
     raise KitError("the project's dependencies are unknown (no pyproject.toml, no installed metadata)")
 
 
+def _requirement_name(requirement: str) -> str:
+    return re.split(r"[\s\[<>=!~;]", requirement.strip(), maxsplit=1)[0].lower().replace("_", "-")
+
+
+def kit_dependencies() -> list[str]:
+    """The kit's requirements: the project's runtime dependencies named in ``KIT_DEPENDENCIES``, with their
+    version bounds."""
+    chosen = [r for r in runtime_dependencies() if _requirement_name(r) in KIT_DEPENDENCIES]
+    missing = sorted(set(KIT_DEPENDENCIES) - {_requirement_name(r) for r in chosen})
+    if missing:
+        raise KitError(f"the project's dependencies lack what the kit needs: {', '.join(missing)}")
+    return chosen
+
+
+def kit_extras() -> dict[str, list[str]]:
+    """The kit's extras (``KIT_EXTRAS``), as the project's ``[project.optional-dependencies]`` declares them."""
+    pyproject = PROJECT_ROOT / "pyproject.toml"
+    if pyproject.is_file():
+        optional = tomllib.loads(pyproject.read_text())["project"].get("optional-dependencies", {})
+        return {extra: list(optional[extra]) for extra in KIT_EXTRAS if extra in optional}
+    from importlib.metadata import PackageNotFoundError, requires
+
+    for name in ("mbd-autograder", KIT_NAME):
+        try:
+            found = requires(name) or []
+        except PackageNotFoundError:
+            continue
+        extras: dict[str, list[str]] = {}
+        for requirement in found:
+            match = re.search(r"""extra\s*==\s*["']([\w-]+)["']""", requirement)
+            if match and match.group(1) in KIT_EXTRAS:
+                extras.setdefault(match.group(1), []).append(requirement.split(";")[0].strip())
+        return extras
+    return {}
+
+
 def _record_hash(data: bytes) -> str:
     return "sha256=" + base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
 
@@ -167,7 +209,8 @@ KIT_SUMMARY = ("Student kit of the multibody-dynamics course: the grader, its ch
                "(no reference solution)")
 
 
-def _metadata(dependencies: list[str], name: str = KIT_NAME, summary: str = KIT_SUMMARY) -> str:
+def _metadata(dependencies: list[str], name: str = KIT_NAME, summary: str = KIT_SUMMARY,
+              extras: dict[str, list[str]] | None = None) -> str:
     lines = [
         "Metadata-Version: 2.1",
         f"Name: {name}",
@@ -176,19 +219,23 @@ def _metadata(dependencies: list[str], name: str = KIT_NAME, summary: str = KIT_
         "Requires-Python: >=3.11",
         *(f"Requires-Dist: {dependency}" for dependency in dependencies),
     ]
+    for extra, requirements in (extras or {}).items():
+        lines.append(f"Provides-Extra: {extra}")
+        lines += [f'Requires-Dist: {requirement}; extra == "{extra}"' for requirement in requirements]
     return "\n".join(lines) + "\n"
 
 
 def write_wheel(out_dir: str | Path, files: dict[str, bytes], dependencies: list[str], *, name: str = KIT_NAME,
-                packages: tuple[str, ...] = KIT_PACKAGES, summary: str = KIT_SUMMARY) -> Path:
+                packages: tuple[str, ...] = KIT_PACKAGES, summary: str = KIT_SUMMARY,
+                extras: dict[str, list[str]] | None = None) -> Path:
     """Write ``files`` (path in the wheel → bytes) as a pure-Python wheel ``name`` (default: the kit) of the
-    top-level ``packages``, with the ``grade`` command."""
+    top-level ``packages``, with the ``grade`` command; ``extras`` maps an extra's name to its requirements."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     dist_info = f"{name}-{__version__}.dist-info"
     path = out_dir / f"{name}-{__version__}-py3-none-any.whl"
     files = dict(files)
-    files[f"{dist_info}/METADATA"] = _metadata(dependencies, name, summary).encode()
+    files[f"{dist_info}/METADATA"] = _metadata(dependencies, name, summary, extras).encode()
     files[f"{dist_info}/WHEEL"] = (
         "Wheel-Version: 1.0\nGenerator: mbd-autograder grade kit\nRoot-Is-Purelib: true\nTag: py3-none-any\n"
     ).encode()
@@ -232,7 +279,7 @@ def build_kit(out_dir: str | Path, *, seed: int | None = None, problems: list[in
     if leaked:
         raise GraderFault(f"the kit would hold reference files: {leaked}")
     files[f"grader/{KEY_FILE}"] = data
-    wheel = write_wheel(out_dir, files, runtime_dependencies())
+    wheel = write_wheel(out_dir, files, kit_dependencies(), extras=kit_extras())
     return Kit(wheel, key, len(data), tuple(reports))
 
 

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from grader import grade_problem
-from grader.kit import KIT_NAME, build_kit, record_key, runtime_dependencies
+from grader.kit import KIT_DEPENDENCIES, KIT_NAME, build_kit, kit_dependencies, record_key, runtime_dependencies
 from grader.oracle import KEY_FILE, LiveOracle
 from grader.results import Status
 
@@ -74,8 +74,14 @@ def test_the_wheel_is_a_wheel(kit, wheel_files):
     dist_info = f"{KIT_NAME}-{kit.wheel.name.split('-')[1]}.dist-info"
     metadata = wheel_files[f"{dist_info}/METADATA"].decode()
     assert f"Name: {KIT_NAME}" in metadata
-    assert sorted(line.removeprefix("Requires-Dist: ") for line in metadata.splitlines()
-                  if line.startswith("Requires-Dist: ")) == sorted(runtime_dependencies())
+    required = sorted(line.removeprefix("Requires-Dist: ") for line in metadata.splitlines()
+                      if line.startswith("Requires-Dist: ") and "extra ==" not in line)
+    assert required == sorted(kit_dependencies())
+    # what a student's grading needs, not the instructor's cluster
+    assert {r.split(">")[0] for r in required} == set(KIT_DEPENDENCIES)
+    assert any(r.startswith("dask") for r in runtime_dependencies())  # the instructor's install keeps the cluster
+    assert "dask" not in metadata.lower()
+    assert "Provides-Extra: jupyter" in metadata and 'Requires-Dist: jupyterlab>=4; extra == "jupyter"' in metadata
     assert "Root-Is-Purelib: true" in wheel_files[f"{dist_info}/WHEEL"].decode()
     assert "grade = grader.cli:main" in wheel_files[f"{dist_info}/entry_points.txt"].decode()
     rows = list(csv.reader(io.StringIO(wheel_files[f"{dist_info}/RECORD"].decode())))

@@ -1,0 +1,158 @@
+"""A student's own laptop (issue 28): the light kit, installed into a fresh virtual environment whose
+start-up (``sitecustomize``'s part, here a ``.pth`` file's) takes away what exists only on Linux or POSIX (as on Windows: no ``resource``, ``fcntl``, ``pwd``,
+``grp``, ``termios``; no ``os.fork``, ``os.killpg``, ``os.setsid``, ``os.setpgrp``, ``os.getuid``, ``os.geteuid``),
+with no bubblewrap on the PATH, run by a user who is not root: ``grade init`` and ``grade problem-6`` work there in
+the portable mode, the reference to full marks and the template to 0; forced into the plain-process mode on the
+same platform, the grader cannot start its worker.  Slow: the kit is installed with its dependencies."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sysconfig
+from pathlib import Path
+
+import pytest
+
+from grader.kit import KIT_DEPENDENCIES, build_kit, record_key
+
+from .environments import base_python, public_tmp_dir
+from .kit_support import KIT_SEED
+from .submissions import copy_reference
+
+pytestmark = pytest.mark.slow
+
+#: what the simulated platform lacks
+MISSING_MODULES = ("resource", "fcntl", "pwd", "grp", "termios")
+MISSING_FUNCTIONS = ("fork", "killpg", "setsid", "setpgrp", "getuid", "geteuid")
+#: the user the student's commands run as when the tests run as root
+NOBODY = 65534
+
+SITECUSTOMIZE = f'''"""A platform without the POSIX-only modules and functions (a stand-in for Windows)."""
+import os
+import sys
+
+for _name in {MISSING_MODULES!r}:
+    sys.modules[_name] = None  # import _name: ModuleNotFoundError
+for _name in {MISSING_FUNCTIONS!r}:
+    if hasattr(os, _name):
+        delattr(os, _name)
+'''
+
+
+def _run(argv, cwd, env, timeout=600):
+    return subprocess.run(argv, cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
+
+
+@pytest.fixture(scope="module")
+def laptop():
+    """(the virtual environment, a home folder of the student's): the kit of problem 6 installed, the platform
+    simulated."""
+    with public_tmp_dir("grader-laptop-") as base:
+        key, _ = record_key([6], seed=KIT_SEED)
+        kit = build_kit(base / "dist", key=key)
+        venv = base / "venv"
+        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
+        done = _run([base_python(), "-m", "venv", str(venv)], base, env)
+        assert done.returncode == 0, done.stderr
+        done = _run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", str(kit.wheel)], base, env,
+                    timeout=1200)
+        assert done.returncode == 0, done.stdout + done.stderr
+        purelib = _run([str(venv / "bin" / "python"), "-c", "import sysconfig; print(sysconfig.get_path('purelib'))"],
+                       base, env).stdout.strip()
+        # Imported by a .pth file of the environment (read at every start, -I included): a Debian Python's own
+        # sitecustomize, in its standard library, would come first on sys.path and hide one of that name
+        Path(purelib, "simulated_platform.py").write_text(SITECUSTOMIZE)
+        Path(purelib, "simulated_platform.pth").write_text("import simulated_platform\n")
+        home = base / "home"
+        home.mkdir()
+        if os.geteuid() == 0:
+            os.chown(home, NOBODY, NOBODY)
+        yield venv, home
+
+
+def _student(venv: Path, home: Path, argv: list[str], cwd: Path, **env) -> subprocess.CompletedProcess:
+    """``argv`` run by the student: as a user who is not root, with the virtual environment's commands alone on
+    the PATH (no bubblewrap)."""
+    if os.geteuid() == 0:
+        argv = [shutil.which("setpriv") or "/usr/bin/setpriv", f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups", "--", *argv]
+    environment = {"PATH": str(venv / "bin"), "HOME": str(home), "LANG": "C.UTF-8", **env}
+    return _run(argv, cwd, environment)
+
+
+def test_the_platform_is_simulated(laptop):
+    venv, home = laptop
+    probe = ("import importlib, json, os\n"
+             "def gone(name):\n"
+             "    try:\n"
+             "        importlib.import_module(name)\n"
+             "    except ImportError:\n"
+             "        return True\n"
+             "    return False\n"
+             f"print(json.dumps({{'modules': [m for m in {MISSING_MODULES!r} if not gone(m)],"
+             f" 'functions': [f for f in {MISSING_FUNCTIONS!r} if hasattr(os, f)]}}))")
+    for flags in ([], ["-I"]):  # the grader, and its worker (started with -I)
+        done = _student(venv, home, [str(venv / "bin" / "python"), *flags, "-c", probe], home)
+        assert json.loads(done.stdout) == {"modules": [], "functions": []}, done.stderr
+    assert shutil.which("bwrap", path=str(venv / "bin")) is None
+
+
+def test_the_light_kit_brings_no_dask(laptop):
+    venv, home = laptop
+    listing = "import importlib.metadata as m, json; print(json.dumps([d.metadata['Name'] for d in m.distributions()]))"
+    done = _student(venv, home, [str(venv / "bin" / "python"), "-c", listing], home)
+    installed = {name.lower().replace("_", "-") for name in json.loads(done.stdout)}
+    assert set(KIT_DEPENDENCIES) <= installed
+    assert not installed & {"dask", "distributed", "tornado", "jupyterlab"}, installed
+
+
+def _graded(done: subprocess.CompletedProcess, report: Path) -> dict:
+    assert report.exists(), done.stdout + done.stderr
+    (graded,) = json.loads(report.read_text())["reports"]
+    assert "grader_error" not in {r["status"] for r in graded["results"]}, done.stdout
+    return graded
+
+
+def _points(graded: dict) -> float:
+    return sum(r["max_score"] for r in graded["results"])
+
+
+def test_grade_init_and_problem_6_work_without_posix(laptop):
+    venv, home = laptop
+    grade = str(venv / "bin" / "grade")
+    done = _student(venv, home, [grade, "init", "mywork"], home)
+    assert done.returncode == 0, done.stdout + done.stderr
+    work = home / "mywork"
+
+    done = _student(venv, home, [grade, "problem-6", "--json", "template.json"], work)
+    assert done.returncode == 1, done.stdout + done.stderr
+    template = _graded(done, work / "template.json")
+    assert template["visible_score"] == 0 and _points(template) > 0
+    assert "portable mode" in done.stdout and "not your computer from the code" in done.stdout
+
+    reference = home / "reference"
+    copy_reference(reference)
+    if os.geteuid() == 0:
+        shutil.chown(reference, NOBODY, NOBODY)
+    done = _student(venv, home, [grade, "problem-6", "--submission", str(reference), "--json", "reference.json"],
+                    work)
+    assert done.returncode == 0, done.stdout + done.stderr
+    full = _graded(done, work / "reference.json")
+    assert full["visible_score"] == _points(full) > 0
+    assert "portable mode" in full["sandbox"]
+
+
+def test_without_the_portable_mode_the_platform_cannot_grade(laptop):
+    """The same kit on the same platform, forced into the plain-process mode: its worker needs ``resource`` (and,
+    as root, ``pwd`` and ``fcntl``) and the grader ``os.killpg``, so no check can run: exit code 3."""
+    venv, home = laptop
+    reference = home / "reference-plain"
+    copy_reference(reference)
+    done = _student(venv, home, [str(venv / "bin" / "grade"), "problem-6", "--submission", str(reference)], home,
+                    GRADER_SANDBOX="process")
+    assert done.returncode == 3, done.stdout + done.stderr
+    # the worker's start fails (no resource) and the grader's own handling of it (os.killpg): nothing is graded
+    assert "grader installation fault" in done.stderr or "internal grader error" in done.stdout, done.stdout
+    assert "✔" not in done.stdout, done.stdout
