@@ -1,12 +1,16 @@
 """The ``grade`` command.
 
+    grade problem-N [--submission P]   grade problem N of the submission in P (default: the current folder);
+                                       also understood: grade 6, grade p6, grade problem 6
     grade init DIR [--notebook]        copy the student template to DIR (and write it as notebooks)
-    grade problem-N [--submission P]   grade problem N of the submission in P (default: the current folder)
     grade list                         every problem, its points, and whether checks exist for it
     grade demo                         grade the bundled sample submissions
     grade kit OUT_DIR                  build the student kit (grader, checks, template, answer key; no reference)
     grade gradescope OUT.zip           build Gradescope's autograder (grader with the reference, setup.sh, ...)
     grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
+
+In the student kit (no reference), ``grade --help`` lists the student's commands only (``INSTRUCTOR_COMMANDS``
+are left out of it).
 
 Exit codes: 0 all checks passed, 1 some checks did not pass, 2 usage error or a submission that cannot be
 loaded, 3 an internal grader error, 130 interrupted by Ctrl-C (a batch also by SIGTERM), 143 stopped by SIGTERM.
@@ -23,6 +27,11 @@ import sys
 from pathlib import Path
 
 from .errors import EXIT_FAILED, EXIT_GRADER, EXIT_OK, EXIT_USAGE, GraderFault  # noqa: F401 - the command's codes
+
+#: commands for the instructor: not listed by the student kit's help
+INSTRUCTOR_COMMANDS = ("demo", "kit", "gradescope", "batch", "import-manual", "export")
+#: the first words that ask for a problem: problem-6, problem6, p6, 6 (any case)
+_PROBLEM_WORD = re.compile(r"(?:problem-?|p)?\d{1,2}", re.IGNORECASE)
 
 
 def _problem_number(text: str) -> int:
@@ -218,13 +227,24 @@ def cmd_gradescope(args) -> int:
     return EXIT_OK
 
 
-def build_parser() -> argparse.ArgumentParser:
+def cmd_problem_spelling(args) -> int:
+    print("error: write the problem's number: grade problem-6 (several: grade problem-6 problem-7)", file=sys.stderr)
+    return EXIT_USAGE
+
+
+def build_parser(kit: bool = False) -> argparse.ArgumentParser:
+    """The command's parser; ``kit``: the student kit's, whose help leaves the instructor's commands out."""
     parser = argparse.ArgumentParser(
         prog="grade",
-        description="Autograder of the multibody-dynamics course.",
-        epilog="Grade a problem with `grade problem-6` inside your work folder.",
+        description="Autograder of the multibody-dynamics course." + (" (Student kit.)" if kit else ""),
+        epilog="Grade a problem with `grade problem-6` inside your work folder (`grade init mywork` makes one); "
+               "in Jupyter: `from grader import check; check(6)`.",
     )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+
+    p_problem = sub.add_parser("problem-N", help="grade problem N of your work: grade problem-6 (several: grade "
+                               "problem-6 problem-7; see grade problem-6 --help)")
+    p_problem.set_defaults(func=cmd_problem_spelling)
 
     p_init = sub.add_parser("init", help="copy the student template to a new folder")
     p_init.add_argument("dir", help="the folder to create")
@@ -257,7 +277,28 @@ def build_parser() -> argparse.ArgumentParser:
     from .batch import add_batch_parser
 
     add_batch_parser(sub)
+    if kit:  # still understood, but not listed: argparse has no public way to leave a command out of the help
+        sub._choices_actions = [a for a in sub._choices_actions if a.dest not in INSTRUCTOR_COMMANDS]
     return parser
+
+
+def _spelled(argv: list[str]) -> list[str] | None:
+    """``argv`` of ``grade problem-N ...`` when it asks for problems in any of the spellings understood
+    (``problem-6``, ``problem6``, ``p6``, ``6``, ``problem 6``), else None."""
+    if len(argv) >= 2 and argv[0].lower() in ("problem", "problems") and _PROBLEM_WORD.fullmatch(argv[1]):
+        argv = [argv[1], *argv[2:]]
+    if argv and _PROBLEM_WORD.fullmatch(argv[0]):
+        return argv
+    return None
+
+
+def _suggestion(word: str) -> str | None:
+    """The right spelling for a first word that looks like a problem but is not understood (``problem_6``,
+    ``prob6``, ``exercise-6``)."""
+    match = re.fullmatch(r"[a-z_.\- ]*?(\d{1,2})", word.strip().lower())
+    if match and word.lower() not in ("problem-n",):
+        return f"grade problem-{int(match.group(1))}"
+    return None
 
 
 def _problem_parser() -> argparse.ArgumentParser:
@@ -317,10 +358,20 @@ def main(argv: list[str] | None = None) -> int:
 def _run(argv: list[str]) -> tuple[int, str | None]:
     command = None
     try:
-        if argv and re.fullmatch(r"(problem-?|p)\d{1,2}", argv[0].lower()):
-            args = _problem_parser().parse_args(argv)
+        problems = _spelled(argv)
+        if problems is not None:
+            args = _problem_parser().parse_args(problems)
         else:
-            parser = build_parser()
+            if argv and argv[0].lower() in ("problem", "problems"):  # the number is missing
+                return cmd_problem_spelling(None), None
+            suggestion = _suggestion(argv[0]) if argv else None
+            if suggestion is not None:
+                print(f"error: {argv[0]!r} is not a command; to grade that problem, write: {suggestion}",
+                      file=sys.stderr)
+                return EXIT_USAGE, None
+            from .oracle import reference_available
+
+            parser = build_parser(kit=not reference_available())
             args = parser.parse_args(argv)
             if args.command is None:
                 parser.print_help()

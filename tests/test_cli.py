@@ -254,3 +254,46 @@ def test_sigterm_ends_the_command_as_ctrl_c_does_and_leaves_no_folders(tmp_path)
     while list(temporary.iterdir()) and time.monotonic() < deadline:  # a detached process removes the folders
         time.sleep(0.1)
     assert sorted(p.name for p in temporary.iterdir()) == []
+
+
+# ---------------------------------------------------------------------------------------------- a student alone
+
+
+def _commands(help_text: str) -> list[str]:
+    """The commands a help text lists, in order."""
+    lines = help_text.split("positional arguments:")[1].split("options:")[0].splitlines()
+    return [line.split()[0] for line in lines if line.startswith("    ") and not line.startswith("     ")]
+
+
+def test_help_shows_grade_problem_first(capsys):
+    assert main(["--help"]) == 0
+    commands = _commands(capsys.readouterr().out)
+    assert commands[0] == "problem-N"
+    assert {"init", "list", "batch", "gradescope", "kit"} <= set(commands)  # the full project lists every command
+
+
+def test_the_kits_help_hides_the_instructors_commands(monkeypatch, capsys):
+    import grader.oracle
+
+    monkeypatch.setattr(grader.oracle, "reference_available", lambda: False)
+    assert main(["--help"]) == 0
+    shown = capsys.readouterr().out
+    commands = _commands(shown)
+    assert commands[:3] == ["problem-N", "init", "list"]
+    assert not set(commands) & {"demo", "kit", "gradescope", "batch", "import-manual", "export"}, commands
+    assert "check(6)" in shown
+    # hidden, not removed: an instructor's command is still understood
+    assert main(["export", "--help"]) == 0
+
+
+@pytest.mark.parametrize("spelling", [["problem", "6"], ["6"], ["p6"], ["Problem-6"]])
+def test_other_spellings_of_a_problem_are_understood(spelling, reference, capsys):
+    assert main([*spelling, "--submission", str(reference), "--seed", "2"]) == 0
+    assert "Problem 6: " in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("spelling", [["problem_6"], ["prob6"], ["exercise-6"], ["problem"], ["problem-N"]])
+def test_a_misspelt_problem_is_answered_with_the_right_spelling(spelling, capsys):
+    assert main(spelling) == 2
+    error = capsys.readouterr().err
+    assert "grade problem-6" in error, error
