@@ -30,7 +30,7 @@ import pytest
 from grader import grade_problem, grade_submission
 from grader.errors import SandboxError
 from grader.results import Status
-from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, refusal, sandbox_mode, users
+from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, portable_mode, refusal, sandbox_mode, users
 from grader.sandbox.zygote import Zygote, warm_modules
 
 from . import keyrings
@@ -48,6 +48,8 @@ OWN_PID_NAMESPACE = "its own PID and mount namespaces"
 
 
 def hostile_mode(kind: str) -> SandboxMode:
+    if kind == "portable":
+        return portable_mode()
     if kind.startswith("bwrap"):
         if not sandbox_mode().isolated:
             pytest.skip("bubblewrap is not available here")
@@ -263,6 +265,19 @@ BESIDE = ("cache_poison", "closed_pipe_loop", "fork_bomb", "kill_everything", "l
 @pytest.mark.parametrize("name", BESIDE)
 def test_hostile_submission_beside_another_worker(name, tmp_path, monkeypatch, zygotes):
     _grade_hostile(name, "bwrap", tmp_path, monkeypatch, zygotes, beside=True)
+
+
+#: attacks on the grading itself (hangs, crashes, exits, floods, forged or broken replies): the portable mode of a
+#: student's own machine protects the grading from these, and from nothing else (no confinement: the student's code
+#: runs as the student)
+PORTABLE_ATTACKS = ("closed_pipe_loop", "fake_json", "forged_deep_reply", "import_exception", "infinite_loop_call",
+                    "infinite_loop_import", "memory_bomb", "os_exit", "partial_reply", "print_flood", "sys_exit",
+                    "syntax_error", "wrong_id_flood")
+
+
+@pytest.mark.parametrize("name", PORTABLE_ATTACKS)
+def test_hostile_submission_portable(name, tmp_path, monkeypatch, zygotes):
+    _grade_hostile(name, "portable", tmp_path, monkeypatch, zygotes)
 
 
 def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False, keyring=None):

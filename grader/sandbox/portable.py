@@ -59,11 +59,15 @@ def student_mode(kit: bool) -> SandboxMode:
     prefer = os.environ.get("GRADER_SANDBOX", "auto")
     if prefer == PORTABLE:
         return portable_mode()
-    if prefer == "auto" and kit and not is_root():
-        bwrap = shutil.which("bwrap")
-        if not (bwrap and _bwrap_works(bwrap)):
-            return portable_mode()
+    if prefer == "auto" and kit and not is_root() and not _bwrap_runs():
+        return portable_mode()
     return sandbox_mode()
+
+
+def _bwrap_runs() -> bool:
+    """Whether bubblewrap is installed and can make its namespaces here."""
+    bwrap = shutil.which("bwrap")
+    return bool(bwrap) and _bwrap_works(bwrap)
 
 
 # ------------------------------------------------------------------------------------------ the launch

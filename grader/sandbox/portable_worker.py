@@ -77,6 +77,9 @@ def main(argv: list[str]) -> int:
     config = json.loads(argv[1])
     request_fd, reply_fd = channels(config["output"])
     submission = config["submission"]
+    # the shape of a worker's argv (worker.py REQUEST_FD REPLY_FD SUBMISSION CONFIG), as every mode gives it
+    sys.argv = [os.path.join(os.path.dirname(os.path.abspath(__file__)), "worker.py"), str(request_fd),
+                str(reply_fd), submission, argv[1]]
     try:
         info = {"python": sys.executable, "version": sys.version.split()[0], "portable": True,
                 "limits": apply_limits(config.get("limits", {}))}
