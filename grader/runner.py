@@ -9,6 +9,7 @@ from __future__ import annotations
 import importlib
 import pkgutil
 import random
+import re
 import time
 from dataclasses import dataclass, replace
 from functools import lru_cache
@@ -107,12 +108,33 @@ def _student_error(exc) -> tuple[Status, str, str]:
         return (
             Status.ERROR,
             f"your package could not be imported: {exc.type_name}: {exc.message}\n{exc.traceback}".rstrip(),
-            "Fix this first: no check can run until the package imports.",
+            f"Fix {_where(exc.traceback) or 'this'} first: no check can run until the package imports.",
         )
     return Status.ERROR, f"your code raised {exc.type_name}: {exc.message}\n{exc.traceback}".rstrip(), ""
 
 
-def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
+#: where a traceback of the submission points: its last frame's file and line
+_FRAME = re.compile(r'File "([^"\n]{1,200})", line (\d+)')
+
+
+def _where(traceback: str) -> str:
+    """``line N of FILE`` for the last frame of a student's traceback (a cell of a notebook: ``FILE, cell K``), or
+    ""."""
+    frames = _FRAME.findall(traceback or "")
+    return f"line {frames[-1][1]} of {frames[-1][0]}" if frames else ""
+
+
+def _said_once(said: dict, title: str, message: str, hint: str) -> tuple[str, str]:
+    """A failure of the submission's import is the same for every check that needs the package: the first check
+    it stops says it in full (``said``: its first line -> that check's title), the others point there."""
+    head = message.splitlines()[0] if message else ""
+    if head not in said:
+        said[head] = title
+        return message, hint
+    return f"not run: {head} (said in full at “{said[head]}”)", ""
+
+
+def _run_check(spec, ctx: Context, problem: int, said: dict | None = None) -> CheckResult:
     ctx.begin(f"p{problem:02d}.{spec.name}")
     start = time.perf_counter()
     hint = diagnosis = ""
@@ -128,6 +150,9 @@ def _run_check(spec, ctx: Context, problem: int) -> CheckResult:
     except Exception as exc:  # noqa: BLE001 - whose fault it is, is the table's (grader.faults)
         if fault_of(exc).student:
             status, message, hint = _student_error(exc)
+            final = getattr(exc, "phase", "") == "import" and getattr(exc, "kind", "") != "not_implemented"
+            if final and said is not None:  # the import's failure: the same for every check that follows
+                message, hint = _said_once(said, spec.title, message, hint)
         else:  # a crashing check, a probe the worker cannot run, the reference raising: the grader's defect
             shown = str(exc) if isinstance(exc, GraderFault) else f"{type(exc).__name__}: {exc}"
             status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {shown}"
@@ -174,6 +199,7 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     blocked: dict[str, tuple[int, str, str, bool]] = {}  # group → (stage, title, check id, grader at fault)
     blockers: dict[str, str] = {}  # a skipped check -> the failed check that blocked it
     carried: dict[str, list[tuple[str, str]]] = {}  # a passed check -> its (upstream check, what) judged on
+    said: dict[str, str] = {}  # a failure of the submission's import, said in full once
     for spec in checks_of(module):
         check_id = f"p{problem:02d}.{spec.name}"
         if not ctx.oracle.runs(spec, check_id):
@@ -189,7 +215,7 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
                                         f"not run: an earlier check failed first ({block[1]})"))
                 blockers[check_id] = block[2]
             continue
-        result = _run_check(spec, ctx, problem)
+        result = _run_check(spec, ctx, problem, said)
         results.append(result)
         if result.passed and ctx.carried:
             carried[check_id] = list(ctx.carried)

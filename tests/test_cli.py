@@ -297,3 +297,30 @@ def test_a_misspelt_problem_is_answered_with_the_right_spelling(spelling, capsys
     assert main(spelling) == 2
     error = capsys.readouterr().err
     assert "grade problem-6" in error, error
+
+
+def test_a_submission_that_does_not_import_is_said_once(tmp_path, capsys):
+    """A syntax error: its traceback once, with the line to fix; the other checks that needed the package point
+    there in one line each."""
+    submission = build_hostile("syntax_error", tmp_path / "pkg")
+    assert main(["problem-6", "--submission", str(submission), "--seed", "1"]) == 1
+    out = capsys.readouterr().out
+    assert out.count("def broken(:") == 1, out
+    assert out.count("could not be imported: SyntaxError") == 4  # said in full once; three checks point there
+    assert out.count("said in full at “R1, R2, R3 return 3 x 3 numeric matrices”") == 3, out
+    assert "Fix line 1 of __init__.py first" in out
+    assert len(out.splitlines()) < 25
+
+
+def test_a_failing_notebook_cell_is_named(tmp_path, capsys):
+    """A notebook's function that raises when called: the report names its cell and shows the line."""
+    from .notebooks import problem_06_cells, write_notebook
+
+    cells = problem_06_cells(ROOT / "reference")
+    frames = next(i for i, c in enumerate(cells) if c.startswith("def frames"))
+    cells[frames] = cells[frames].replace('    """', '    scale = 1 / 0  # the slip\n    """', 1)
+    notebook = write_notebook(tmp_path / "problem_06.ipynb", ["import numpy as np", *cells])
+    assert main(["problem-6", "--submission", str(notebook), "--seed", "1"]) == 1
+    out = capsys.readouterr().out
+    assert f'File "problem_06.ipynb, cell {frames + 2}"' in out, out
+    assert "scale = 1 / 0  # the slip" in out, out

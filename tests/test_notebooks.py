@@ -73,7 +73,9 @@ def test_the_whole_exercise_notebook_says_what_it_left_out(tmp_path):
     report = grade_submission(notebook, [6], seed=2, limits=LIMITS)[0]
     notes = "\n".join(report.notes)
     assert "notebook exercise2.ipynb → cosys.py: CoSys" in notes
-    assert "cell 12, line 1 (broken) raised KeyError: 'A_IC4'; it was skipped" in notes  # the cell that raises
+    # the cell that raises, named by its number and first line
+    assert ("cell 12 “broken = frames()['A_IC4']  # a cell that raises KeyError”, line 1 (broken) raised KeyError: "
+            "'A_IC4'; it was skipped") in notes
     assert "IPython lines (magics, shell commands) left out" in notes
     assert "A_test" in notes and "A_test) raised" not in notes  # out of order: run again once cardan existed
     assert "[[" not in report.stdout  # prints are not definitions: never run

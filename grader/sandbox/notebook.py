@@ -23,7 +23,7 @@ from __future__ import annotations
 import ast
 import re
 
-__all__ = ["clean_cell", "is_definition", "bound_names", "definitions", "run_cells", "MAX_PASSES"]
+__all__ = ["clean_cell", "is_definition", "bound_names", "definitions", "first_line", "run_cells", "MAX_PASSES"]
 
 #: how often the definitions that failed with a NameError run again (cells out of order)
 MAX_PASSES = 5
@@ -106,6 +106,12 @@ def definitions(code: str) -> list[str]:
     return names
 
 
+def first_line(code: str, width: int = 60) -> str:
+    """How a report names a cell beside its number: its first line that holds code, shortened to ``width``."""
+    line = next((line.strip() for line in code.splitlines() if line.strip()), "")
+    return line if len(line) <= width else line[:width - 1] + "…"
+
+
 # ---------------------------------------------------------------- running (in the sandboxed worker only)
 
 
@@ -124,13 +130,20 @@ def run_cells(cells: list, namespace: dict, own: set[str], filename, internal) -
     """Run the kept statements of ``cells`` (pairs of the cell's number and its cleaned code) in ``namespace``;
     ``filename(number)`` names a cell in tracebacks, ``internal(module)`` says whether a top-level module name is
     one of the submission's.  Returns what the report says about the statements that were skipped."""
+    import linecache
+
     todo = []
     notes: list[str] = []
+    firsts: dict[int, str] = {}
     for number, code in cells:
+        firsts[number] = first_line(code)
+        # the cell's lines for tracebacks (a cell has no file of its own to read them from)
+        linecache.cache[filename(number)] = (len(code), None, code.splitlines(True), filename(number))
         try:
             tree = ast.parse(code, filename(number))
         except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
-            notes.append(f"cell {number} was left out: it does not parse ({type(exc).__name__}: {exc})")
+            notes.append(f"cell {number} “{firsts[number]}” was left out: it does not parse "
+                         f"({type(exc).__name__}: {exc})")
             continue
         for stmt in tree.body:
             if is_definition(stmt):
@@ -156,6 +169,6 @@ def run_cells(cells: list, namespace: dict, own: set[str], filename, internal) -
     for number, stmt, exc in failed:
         names = bound_names(stmt) or [alias.asname or alias.name for alias in getattr(stmt, "names", [])]
         what = ", ".join(names[:6]) or "a statement"
-        notes.append(f"cell {number}, line {stmt.lineno} ({what}) raised {type(exc).__name__}: "
+        notes.append(f"cell {number} “{firsts[number]}”, line {stmt.lineno} ({what}) raised {type(exc).__name__}: "
                      f"{str(exc)[:300]}; it was skipped")
     return notes
