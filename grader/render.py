@@ -18,7 +18,7 @@ from jinja2.filters import do_indent, do_wordwrap
 from .results import Figure, ProblemReport, Status, student_view
 from .terminal import inert, styled
 
-__all__ = ["render_terminal", "render_html", "render_json", "render_gradescope", "terminal_env"]
+__all__ = ["render_terminal", "render_html", "render_notebook", "render_json", "render_gradescope", "terminal_env"]
 
 COLOURS = {
     "passed": "32",
@@ -346,6 +346,14 @@ def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: 
     template = _env(True).get_template("report.html.j2")
     return template.render(reports=reports, images=images, show_hidden=show_hidden, title=title, Status=Status,
                            deadlines=list(deadlines))
+
+
+def render_notebook(reports: list[ProblemReport], source: str, notes=(), height: int = 640) -> str:
+    """The report shown inline in a notebook: a line of scores and the HTML report in a frame of its own."""
+    page = render_html(reports, title=f"Problem {', '.join(str(r.problem) for r in reports)}")
+    template = _env(True).get_template("notebook.html.j2")
+    return template.render(reports=[student_view(r) for r in reports], page=page, source=source, notes=list(notes),
+                           height=height)
 
 
 def _visible_dict(report: ProblemReport, show_hidden: bool) -> dict:
