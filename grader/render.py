@@ -117,18 +117,37 @@ def png(draw, height: float = 4.2) -> str:
 
 
 
-#: the line of a curve by its role: the student's solid and wider, the reference's dashed
-STYLES = {"student": ("-", 2.2), "reference": ("--", 1.4)}
+#: the line of a curve by its role (style, width in points, drawing order): the reference's wide and pale beneath,
+#: the student's thin on top, so that a right answer shows the reference around it; other curves dotted
+STYLES = {"student": ("-", 1.6, 3), "reference": ("-", 6.0, 1)}
+OTHER_STYLE = (":", 1.4, 2)
+#: how much of its colour the reference's line keeps (the rest is white): pale, opaque, whatever lies beneath
+REFERENCE_TINT = 0.4
+#: the report's text [px], and the width [px] its column gives a figure in a 1280 px window (report.html.j2: a
+#: 60rem page): legends, titles and axis labels are drawn so that they show at the report's text size even when a
+#: wide figure is scaled down to that column; tick labels a little smaller
+TEXT_PX = 15.0
+COLUMN_PX = 800.0
+TICK_SHARE = 0.8
+#: the tick marks of each axis in space, at most (more crowd their labels into each other), and the room between
+#: their labels and the axis's name [pt]
+TICKS_3D = 4
+LABEL_PAD_3D = 14
 #: inches of one panel: one panel alone is as wide as a plot of the class summary, panels side by side narrower
-PANEL = {1: (6.4, 4.2), 2: (4.6, 4.2), 3: (4.0, 3.9), 4: (3.4, 3.6)}
+PANEL = {1: (6.4, 4.2), 2: (4.4, 4.0)}
+#: panels side by side in one row, at most: more go on into further rows, so that a figure fits the report's column
+#: (``COLUMN_PX``) at its own size and its text is not scaled down
+ACROSS = 2
 #: inches of a single panel in space (its legend stands beside it, in room added to the figure's width)
 SPATIAL = (5.6, 4.6)
 #: a figure's margins in inches, set rather than measured (measuring the whole figure, as ``tight_layout`` and a
 #: tight bounding box do, costs a drawing of it each): room left of and below 2-D axes for tick labels and an axis
 #: label (more when the tick labels are wider), above them for each line of title; 3-D axes draw their tick labels
 #: within their own box
-MARGINS = {"left": 0.85, "bottom": 0.6, "right": 0.2, "top": 0.15, "title_line": 0.25, "legend_gap": 0.1}
-MARGINS_3D = {"left": 0.05, "bottom": 0.3, "right": 0.3, "top": 0.1}
+MARGINS = {"left": 0.85, "bottom": 0.65, "right": 0.35, "top": 0.15, "title_line": 0.28, "legend_gap": 0.1}
+MARGINS_3D = {"left": 0.05, "bottom": 0.55, "right": 0.3, "top": 0.1}
+#: the figures' resolution [dots per inch]
+DPI = 90
 
 
 def _lines(text: str) -> int:
@@ -154,35 +173,76 @@ def _left_room(canvas, ax) -> float:
     return (max(ticks, default=0.0) + label) / canvas.dpi + 0.25
 
 
-def _place(canvas, axes, title_lines: int, below: float, beside: float, spatial: bool) -> None:
-    """Put the axes in the figure with the fixed margins, ``below`` and ``beside`` inches kept free for a legend."""
+def _place(canvas, axes, title_lines: int, below: float, beside: float, spatial: bool, rows: int = 1,
+           panel_title_lines: int = 0) -> None:
+    """Put the axes in the figure with the fixed margins, ``below`` and ``beside`` inches kept free for a legend;
+    ``rows`` of panels, each under the x labels of the one above and its own title (``panel_title_lines``)."""
     width, height = canvas.get_figwidth(), canvas.get_figheight()
     m = MARGINS_3D if spatial else dict(MARGINS, left=max(MARGINS["left"], *(_left_room(canvas, ax) for ax in axes)))
     top = m["top"] + MARGINS["title_line"] * title_lines
     between = m["left"] + m["right"]  # one panel's tick labels and the next one's axis label
-    inner = (width - m["left"] - m["right"] - beside - between * (len(axes) - 1)) / len(axes)
+    across = -(-len(axes) // rows)
+    inner = (width - m["left"] - m["right"] - beside - between * (across - 1)) / across
+    under = MARGINS["bottom"] + m["top"] + MARGINS["title_line"] * panel_title_lines  # between two rows
+    tall = (height - top - m["bottom"] - below - under * (rows - 1)) / rows
     canvas.subplots_adjust(left=m["left"] / width, right=1 - (m["right"] + beside) / width,
                            bottom=(m["bottom"] + below) / height, top=1 - top / height,
-                           wspace=between / inner if len(axes) > 1 else 0.2)
+                           wspace=between / inner if across > 1 else 0.2, hspace=under / tall if rows > 1 else 0.2)
+
+
+def _pale(colour) -> tuple[float, float, float]:
+    from matplotlib.colors import to_rgb
+
+    return tuple(REFERENCE_TINT * c + (1 - REFERENCE_TINT) for c in to_rgb(colour))
 
 
 def _draw_series(ax, series) -> None:
-    style, width = STYLES.get(series.role, (":", 1.4))
-    options = {"linewidth": width, "label": series.label}
+    style, width, order = STYLES.get(series.role, OTHER_STYLE)
+    options = {"linewidth": width, "label": series.label, "zorder": order, "solid_capstyle": "round"}
     if series.colour:
         options["color"] = series.colour
     if series.marker:
-        options.update(marker=series.marker, markersize=7 if series.role == "student" else 9,
-                       markerfacecolor="none" if series.role == "reference" else None)
+        options.update(marker=series.marker, markersize=6 if series.role == "student" else 11)
     coordinates = (series.x, series.y, series.z) if series.z else (series.x, series.y)
-    ax.plot(*coordinates, style, **options)
+    (line,) = ax.plot(*coordinates, style, **options)
+    if series.role == "reference":  # its own colour (or the cycle's), pale: told apart from the student's on top
+        line.set_color(_pale(line.get_color()))
+        line.set_gid("reference")
 
 
-def _wrap(title: str, inches: float) -> str:
-    """A title broken into lines that fit ``inches`` of width."""
+def _points(px: float, shown: float) -> float:
+    """The font size [pt] at the figure's dpi that shows as ``px`` pixels once the figure is scaled by ``shown``."""
+    return px / shown / DPI * 72
+
+
+def _readable(canvas, axes, spatial: bool) -> float:
+    """Titles, axis labels and tick labels at the report's text size (``TEXT_PX``) as the figure will be shown:
+    scaled down to the report's column when it is wider.  In space, at most ``TICKS_3D`` ticks per axis.  Returns
+    the font size of the legend [pt]."""
+    from matplotlib.ticker import MaxNLocator
+
+    shown = min(1.0, COLUMN_PX / (canvas.get_figwidth() * DPI))
+    text, ticks = _points(TEXT_PX, shown), _points(TEXT_PX * TICK_SHARE, shown)
+    for ax in axes:
+        ax.title.set_fontsize(text)
+        ax.xaxis.label.set_fontsize(text)
+        ax.yaxis.label.set_fontsize(text)
+        ax.tick_params(labelsize=ticks)
+        if spatial:
+            ax.zaxis.label.set_fontsize(text)
+            ax.computed_zorder = False  # the drawing order of the curves holds: the student's on top
+            for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+                axis.set_major_locator(MaxNLocator(TICKS_3D))
+                axis.labelpad = LABEL_PAD_3D
+    return text
+
+
+def _wrap(title: str, inches: float, points: float = 10.0) -> str:
+    """A title broken into lines that fit ``inches`` of width at a font of ``points``."""
     import textwrap
 
-    return "\n".join(textwrap.wrap(title, max(20, int(inches * 9)))) if title else title
+    per_inch = 72 / (0.6 * points)  # characters of an average width
+    return "\n".join(textwrap.wrap(title, max(16, int(inches * per_inch)))) if title else title
 
 
 def _equal_box(ax, series) -> None:
@@ -213,16 +273,19 @@ def figure_canvas(fig):
     beside a single 3-D panel, under panels side by side (the figure grows to hold it)."""
     plt = _pyplot()
     panels = fig.panels or ("",)
-    width, height = SPATIAL if fig.spatial and len(panels) == 1 else PANEL.get(len(panels), PANEL[4])
-    total = width * len(panels)
-    canvas = plt.figure(figsize=(total, height), dpi=90)
+    width, height = SPATIAL if fig.spatial and len(panels) == 1 else PANEL[min(len(panels), ACROSS)]
+    across = min(len(panels), ACROSS)
+    rows = -(-len(panels) // across)
+    total = width * across
+    canvas = plt.figure(figsize=(total, height * rows), dpi=DPI)
+    text = _points(TEXT_PX, min(1.0, COLUMN_PX / (total * DPI)))
     axes = []
     for index, name in enumerate(panels):
-        ax = canvas.add_subplot(1, len(panels), index + 1, projection="3d" if fig.spatial else None)
+        ax = canvas.add_subplot(rows, across, index + 1, projection="3d" if fig.spatial else None)
         mine = [s for s in fig.series if s.panel == index]
         for series in mine:
             _draw_series(ax, series)
-        ax.set_title(_wrap(name if fig.panels else fig.title, width), fontsize="medium")
+        ax.set_title(_wrap(name if fig.panels else fig.title, width, text))
         ax.set_xlabel(fig.xlabel)
         ax.set_ylabel(fig.ylabel)
         if fig.spatial:
@@ -233,30 +296,38 @@ def figure_canvas(fig):
             if fig.equal_axes:
                 ax.set_aspect("equal", adjustable="datalim")
         axes.append(ax)
+    text = _readable(canvas, axes, fig.spatial)
     entries = _legend_entries(axes)
-    heading = _wrap(fig.title, total) if fig.panels else ""
+    heading = _wrap(fig.title, total, text) if fig.panels else ""
     below = beside = 0.0
-    if entries and len(axes) > 1:  # under the panels: as many columns (up to four) as the width holds
+    under = len(axes) > 1
+    if entries and fig.spatial and not under:  # beside the single panel in space, in room added to the figure ...
+        legend = canvas.legend(entries.values(), entries.keys(), fontsize=text, loc="upper right",
+                               bbox_to_anchor=(1.0, 1.0))
+        beside = _inches(canvas, legend)[0] + MARGINS["legend_gap"]
+        if (total + beside) * DPI <= COLUMN_PX:
+            canvas.set_figwidth(total + beside)
+        else:  # ... unless the figure would be wider than the report's column: then under it
+            legend.remove()
+            beside, under = 0.0, True
+    if entries and under:  # under the panels: as many columns (up to four) as the width holds
         for columns in range(min(len(entries), 4), 0, -1):
-            legend = canvas.legend(entries.values(), entries.keys(), fontsize="small", loc="lower center",
+            legend = canvas.legend(entries.values(), entries.keys(), fontsize=text, loc="lower center",
                                    ncol=columns, frameon=False, bbox_to_anchor=(0.5, 0.0))
             wide, tall = _inches(canvas, legend)
             if wide <= total or columns == 1:
                 break
             legend.remove()
         below = tall + MARGINS["legend_gap"]
-        canvas.set_figheight(height + below)
-    elif entries and fig.spatial:  # beside the single panel in space, in room added to the figure
-        legend = canvas.legend(entries.values(), entries.keys(), fontsize="small", loc="upper right",
-                               bbox_to_anchor=(1.0, 1.0))
-        beside = _inches(canvas, legend)[0] + MARGINS["legend_gap"]
-        canvas.set_figwidth(total + beside)
-    elif entries:
-        axes[0].legend(entries.values(), entries.keys(), fontsize="small", loc="best")
+        canvas.set_figheight(height * rows + below)
+        if wide > total:  # one entry wider than the panels: the figure takes the legend's width
+            canvas.set_figwidth(wide + MARGINS["legend_gap"] * 2)
+    elif entries and not fig.spatial:
+        axes[0].legend(entries.values(), entries.keys(), fontsize=text, loc="best")
     if heading:
-        canvas.suptitle(heading, y=1 - MARGINS["top"] / canvas.get_figheight() / 2, va="top")
-    title_lines = max(_lines(ax.get_title()) for ax in axes) + _lines(heading)
-    _place(canvas, axes, title_lines, below, beside, fig.spatial)
+        canvas.suptitle(heading, y=1 - MARGINS["top"] / canvas.get_figheight() / 2, va="top", fontsize=text)
+    panel_lines = max(_lines(ax.get_title()) for ax in axes)
+    _place(canvas, axes, panel_lines + _lines(heading), below, beside, fig.spatial, rows, panel_lines)
     return canvas
 
 
@@ -268,7 +339,7 @@ def figure_canvas(fig):
 GRID = 1 / 4096
 #: pictures kept by ``_figure_png`` (each some 30-100 kB of base64 text)
 DRAWN_KEPT = 256
-_drawn: OrderedDict[bytes, str] = OrderedDict()
+_drawn: OrderedDict[bytes, tuple[str, dict]] = OrderedDict()
 
 
 def _grid_step(values) -> float:
@@ -320,16 +391,35 @@ def _figure_key(fig: Figure) -> bytes:
 def _figure_png(fig: Figure) -> str:
     """A result's figure as a base64 PNG, drawn from its coordinates on the grid (``on_grid``): once per process
     for each different picture."""
+    return _figure_drawn(fig)[0]
+
+
+def _facts(canvas) -> dict:
+    """What the report says of a picture beside it (``data-`` attributes of its image, for whoever checks how it
+    shows): the legend's text [px of the picture] and the colours of the reference's lines."""
+    from matplotlib.colors import to_hex
+
+    legends = [*canvas.legends, *(ax.get_legend() for ax in canvas.axes if ax.get_legend())]
+    text = max((t.get_fontsize() for legend in legends for t in legend.get_texts()), default=0.0)
+    colours = sorted({to_hex(line.get_color()) for ax in canvas.axes for line in ax.get_lines()
+                      if line.get_gid() == "reference"})
+    return {"text_px": round(text / 72 * canvas.dpi, 2), "reference": colours}
+
+
+def _figure_drawn(fig: Figure) -> tuple[str, dict]:
+    """``_figure_png``'s picture, and its ``_facts``."""
     fig = on_grid(fig)
     key = _figure_key(fig)
-    png = _drawn.get(key)
-    if png is None:
-        png = _drawn[key] = _encode(figure_canvas(fig))
+    drawn = _drawn.get(key)
+    if drawn is None:
+        canvas = figure_canvas(fig)
+        facts = _facts(canvas)
+        drawn = _drawn[key] = (_encode(canvas), facts)
         while len(_drawn) > DRAWN_KEPT:
             _drawn.popitem(last=False)
     else:
         _drawn.move_to_end(key)
-    return png
+    return drawn
 
 
 def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report",
@@ -342,7 +432,7 @@ def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: 
         for result in report.results:
             if result.visibility == "visible" or show_hidden:
                 for index, fig in enumerate(result.figures):
-                    images[(result.check_id, index)] = _figure_png(fig)
+                    images[(result.check_id, index)] = _figure_drawn(fig)
     template = _env(True).get_template("report.html.j2")
     return template.render(reports=reports, images=images, show_hidden=show_hidden, title=title, Status=Status,
                            deadlines=list(deadlines))

@@ -296,3 +296,65 @@ def test_the_class_summary_breaks_no_word_at_1280_px_or_on_a_phone(browser, tmp_
     assert_no_broken_word(measured, width)
     assert_fits(measured, width, scrolling=width < WIDTH)
     assert_drawn(measured, ["Total score distribution", "Checks failed most often"])
+
+
+# ------------------------------------------------------------------------------------------ figures that read
+
+#: what the page script writes of every figure: the legend's text as shown (its size in the picture, from the
+#: image's data-text-px, times the scale at which the picture is shown), the report's text size, and how many pixels
+#: of each of the reference's colours (data-reference) the picture shows
+FIGURE_MEASURE = """
+<script>
+window.addEventListener("load", () => {
+  const body = parseFloat(getComputedStyle(document.body).fontSize);
+  const figures = [...document.querySelectorAll("img[data-text-px]")].map(img => {
+    const canvas = document.createElement("canvas");
+    canvas.width = img.naturalWidth; canvas.height = img.naturalHeight;
+    const context = canvas.getContext("2d");
+    context.drawImage(img, 0, 0);
+    const pixels = context.getImageData(0, 0, canvas.width, canvas.height).data;
+    const colours = img.dataset.reference.split(" ").filter(c => c);
+    const counts = colours.map(hex => {
+      const rgb = [1, 3, 5].map(i => parseInt(hex.slice(i, i + 2), 16));
+      let n = 0;
+      for (let k = 0; k < pixels.length; k += 4) {
+        if (Math.abs(pixels[k] - rgb[0]) <= 8 && Math.abs(pixels[k + 1] - rgb[1]) <= 8
+            && Math.abs(pixels[k + 2] - rgb[2]) <= 8) n++;
+      }
+      return n;
+    });
+    const scale = img.getBoundingClientRect().width / img.naturalWidth;
+    return {alt: img.alt, legendPx: parseFloat(img.dataset.textPx) * scale, scale: scale,
+            reference: Object.fromEntries(colours.map((c, i) => [c, counts[i]]))};
+  });
+  const out = document.createElement("pre");
+  out.id = "figure-measure";
+  out.hidden = true;
+  out.textContent = JSON.stringify({body: body, figures: figures});
+  document.body.appendChild(out);
+});
+</script>
+"""
+
+
+def test_a_passing_report_shows_legends_at_its_text_size_and_the_reference_under_the_answer(browser, tmp_path):
+    """The reference graded: every figure's legend reads at the report's text size (not a few pixels high, as wide
+    figures scaled down to the column were), and the reference's line shows around the student's right answer."""
+    from grader.render import render_html
+    from grader.runner import grade_submission
+
+    reports = grade_submission(copy_reference(tmp_path / "ref"), [6, 8, 14, 17])
+    assert all(report.score == report.auto_max_score for report in reports)
+    html = render_html(reports).replace("</body>", FIGURE_MEASURE + "</body>")
+    measured = open_page(browser, html, tmp_path)
+    assert_fits(measured)
+    dumped = _run(browser, tmp_path / "page.html", tmp_path / "profile", "--dump-dom").stdout
+    found = re.search(r'<pre id="figure-measure" hidden="">(.*?)</pre>', dumped, re.S)
+    assert found, "the figure script left no measurement"
+    data = json.loads(found.group(1).replace("&quot;", '"').replace("&amp;", "&"))
+    assert len(data["figures"]) >= 5 and data["body"] >= 12
+    small = {f["alt"]: round(f["legendPx"], 1) for f in data["figures"] if f["legendPx"] < 0.85 * data["body"]}
+    assert not small, f"legends smaller than the report's text ({data['body']} px): {small}"
+    hidden = {f["alt"]: f["reference"] for f in data["figures"]
+              if not f["reference"] or min(f["reference"].values()) < 50}
+    assert not hidden, f"the reference's lines do not show under a right answer: {hidden}"

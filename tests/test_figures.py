@@ -53,12 +53,19 @@ def _figures(report):
     return {r.check_id: [f.title for f in r.figures] for r in report.results if r.figures}
 
 
-@pytest.mark.slow
-def test_every_problem_with_a_shape_draws_it_for_the_reference(tmp_path):
-    from grader.render import render_html
+@pytest.fixture(scope="module")
+def reference_reports(tmp_path_factory):
+    """Every problem with a shape, graded on the reference."""
     from grader.runner import grade_submission
 
-    reports = grade_submission(copy_reference(tmp_path / "ref"), sorted(FIGURES))
+    return grade_submission(copy_reference(tmp_path_factory.mktemp("figures") / "ref"), sorted(FIGURES))
+
+
+@pytest.mark.slow
+def test_every_problem_with_a_shape_draws_it_for_the_reference(reference_reports):
+    from grader.render import render_html
+
+    reports = reference_reports
     for report in reports:
         assert report.score == report.auto_max_score, report.problem
         drawn = _figures(report)
@@ -206,3 +213,96 @@ def test_on_the_grid_no_point_moves_by_a_tenth_of_a_pixel(values):
         else:
             assert before == after or (math.isnan(before) and math.isnan(after))
     assert len(series.x) == len(values) and series.role == "student"
+
+
+# ------------------------------------------------------------------------------------------ figures that read
+
+
+def _frames_figure(panels: int = 3) -> Figure:
+    """Frames in space as problem 6 draws them: the student's right answer over the reference's, a panel each."""
+    import numpy as np
+
+    series = []
+    for panel in range(panels):
+        angle = 0.6 * (panel + 1)
+        axes = np.array([[np.cos(angle), np.sin(angle), 0.3], [-np.sin(angle), np.cos(angle), 0.2], [0.1, -0.2, 1.0]])
+        for k, colour in enumerate(("tab:red", "tab:green", "tab:blue")):
+            end = axes[k] / np.linalg.norm(axes[k])
+            for role, who in (("reference", "reference"), ("student", "yours")):
+                series.append(Series(f"{who}: {'xyz'[k]}-axis", (0.0, float(end[0])), (0.0, float(end[1])), role,
+                                     (0.0, float(end[2])), colour, "", panel))
+    return Figure("Problem 6: the frames C1, C2, C3 in I", "x", "y", tuple(series), True, "z",
+                  tuple(f"C{p + 1}" for p in range(panels)))
+
+
+def _overlapping(labels, renderer) -> list[tuple[str, str]]:
+    boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in labels if t.get_visible() and t.get_text()]
+    return [(a, b) for i, (a, first) in enumerate(boxes) for b, second in boxes[i + 1:]
+            if first.x0 < second.x1 - 1 and second.x0 < first.x1 - 1 and first.y0 < second.y1 - 1
+            and second.y0 < first.y1 - 1]
+
+
+def _texts_3d(ax) -> list:
+    """The tick labels that 3-D axes drew (of ticks within their limits, where the last drawing put them: asking
+    for the tick labels would lay them out anew, in 2-D), and the axes' names."""
+    texts = []
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        low, high = sorted(axis.get_view_interval())
+        texts += [tick.label1 for tick in axis.majorTicks if low <= tick.get_loc() <= high]
+        texts.append(axis.label)
+    return texts
+
+
+@pytest.mark.parametrize("panels", [1, 3, 4])
+def test_tick_labels_in_space_do_not_overlap(panels):
+    """Neither the tick labels of one axis, nor those of two axes where they meet, nor an axis's name over them."""
+    from grader.render import _pyplot, figure_canvas
+
+    canvas = figure_canvas(_frames_figure(panels))
+    try:
+        canvas.canvas.draw()
+        renderer = canvas.canvas.get_renderer()
+        crowded = {f"axes {i + 1}": pairs for i, ax in enumerate(canvas.axes)
+                   if (pairs := _overlapping(_texts_3d(ax), renderer))}
+        assert not crowded, crowded
+    finally:
+        _pyplot().close(canvas)
+
+
+def test_a_right_answer_leaves_the_reference_visible():
+    """The student's curve exactly on the reference's: the reference's pale colour still shows around it."""
+    import io
+
+    import numpy as np
+    from matplotlib import image
+
+    from grader.render import _figure_drawn
+
+    png, facts = _figure_drawn(_frames_figure(1))
+    pixels = image.imread(io.BytesIO(base64.b64decode(png)))[..., :3]
+    assert len(facts["reference"]) == 3
+    for colour in facts["reference"]:
+        rgb = np.array([int(colour[i:i + 2], 16) for i in (1, 3, 5)]) / 255
+        shown = np.sum(np.abs(pixels - rgb).max(axis=-1) < 0.03)
+        assert shown > 100, (colour, shown)
+
+
+@pytest.mark.slow
+def test_no_figure_in_space_of_the_reference_crowds_its_text(reference_reports):
+    from grader.render import _pyplot, figure_canvas, on_grid
+
+    crowded = {}
+    for report in reference_reports:
+        for result in report.results:
+            for fig in result.figures:
+                if not fig.spatial:
+                    continue
+                canvas = figure_canvas(on_grid(fig))
+                try:
+                    canvas.canvas.draw()
+                    renderer = canvas.canvas.get_renderer()
+                    crowded.update({f"{fig.title}, axes {i + 1}": pairs for i, ax in enumerate(canvas.axes)
+                                    if (pairs := _overlapping(_texts_3d(ax), renderer))})
+                finally:
+                    _pyplot().close(canvas)
+    assert not crowded, crowded
