@@ -74,8 +74,8 @@ def cmd_init(args) -> int:
         for name, book in template_notebooks().items():
             nbformat.write(book, target / name)
         print(f"Created {target}/ from the student template, with a notebook per problem (problem_06.ipynb, ...): "
-              f"write your solutions in the notebooks (or in the .py files).\nNext: cd {target} && jupyter lab, "
-              "then grade problem-6")
+              f"write your solutions in the notebooks (or in the .py files).\nNext: cd {target} && jupyter lab; "
+              "in a notebook, `from grader import check; check(6)` (or, in a terminal, grade problem-6)")
         return EXIT_OK
     print(f"Created {target}/ from the student template.\nNext: cd {target} && grade problem-6")
     return EXIT_OK
