@@ -571,10 +571,15 @@ README_SANDBOX = {
         ("read_system_files", "steal_reference_files", "cache_poison", "leftovers"),
     "Without Landlock, a plain process reads every file that its uid may read.":
         ("test_sandbox::test_the_report_says_what_a_plain_process_had",),
-    "Without root (a student's own machine), it runs as your own user with resource limits: it sees the machine's "
-    "other processes and keeps the network (Landlock blocks TCP where the kernel has it).":
+    "Without root, it runs as your own user with resource limits: it sees the machine's other processes and keeps "
+    "the network (Landlock blocks TCP where the kernel has it).":
         ("test_sandbox::test_the_report_says_what_a_plain_process_had", "test_hostile::test_fallback_is_reported",
          "test_install::test_a_student_without_bubblewrap_is_told_plainly_and_keeps_their_cache"),
+    "The student kit on a student's own machine without bubblewrap uses the portable mode instead (see "
+    "[Students](#students)): no filter and no confinement, only a guard of the grading against crashes and hangs.":
+        ("test_portable::test_the_kit_on_a_laptop_chooses_the_portable_mode",
+         "test_portable::test_a_portable_grading_says_what_it_protects", "test_hostile::test_hostile_submission_portable",
+         "test_laptops::test_grade_init_and_problem_6_work_without_posix"),
     "As root without bubblewrap, `grade` refuses (exit 3) with the fix when the unprivileged uid could not read the "
     "Python runtime (e.g. a Python under `/root`).":
         ("test_sandbox::test_without_bubblewrap_root_refuses_or_drops_to_its_own_uid",
