@@ -7,6 +7,8 @@
     grade demo                         grade the bundled sample submissions
     grade kit OUT_DIR                  build the student kit (grader, checks, template, answer key; no reference)
     grade gradescope OUT.zip           build Gradescope's autograder (grader with the reference, setup.sh, ...)
+    grade prairielearn OUT_DIR         build PrairieLearn questions and their grader (with the reference)
+    grade prairielearn --run [JOB]     grade a PrairieLearn job folder (default /grade): the questions' entry point
     grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
 
 In the student kit (no reference), ``grade --help`` lists the student's commands only (``INSTRUCTOR_COMMANDS``
@@ -29,7 +31,7 @@ from pathlib import Path
 from .errors import EXIT_FAILED, EXIT_GRADER, EXIT_OK, EXIT_USAGE, GraderFault  # noqa: F401 - the command's codes
 
 #: commands for the instructor: not listed by the student kit's help
-INSTRUCTOR_COMMANDS = ("demo", "kit", "gradescope", "batch", "import-manual", "export")
+INSTRUCTOR_COMMANDS = ("demo", "kit", "gradescope", "prairielearn", "batch", "import-manual", "export")
 #: the first words that ask for a problem: problem-6, problem6, p6, 6 (any case)
 _PROBLEM_WORD = re.compile(r"(?:problem-?|p)?\d{1,2}", re.IGNORECASE)
 
@@ -232,6 +234,34 @@ def cmd_problem_spelling(args) -> int:
     return EXIT_USAGE
 
 
+def cmd_prairielearn(args) -> int:
+    from .gradescope import parse_problems
+    from .kit import KitError
+    from .prairielearn import build_fragment, run
+
+    if args.run is not None:
+        if args.out_dir or args.problems:
+            print("error: --run grades a job folder; OUT_DIR and --problems are for building questions",
+                  file=sys.stderr)
+            return EXIT_USAGE
+        return run(args.run, seed=args.seed)
+    if not args.out_dir:
+        print("error: give OUT_DIR (the folder of the course fragment to write) or --run JOB_DIR", file=sys.stderr)
+        return EXIT_USAGE
+    try:
+        built = build_fragment(args.out_dir, parse_problems(args.problems), image=args.image)
+    except (KitError, ValueError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    print(f"wrote {len(built.questions)} questions (problems {', '.join(map(str, built.problems))}, "
+          f"{built.points:g} points) into {built.out}/: questions/, serverFilesCourse/ (the grader's wheel "
+          f"{built.wheel}, with the reference solution) and grader-image/.\n"
+          f"Build and push the image: docker build -t {built.image} {built.out}/grader-image && "
+          f"docker push {built.image}\nThen copy questions/ and serverFilesCourse/ into your course repository. "
+          "The course files hold the reference solution: keep the repository private.")
+    return EXIT_OK
+
+
 def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     """The command's parser; ``kit``: the student kit's, whose help leaves the instructor's commands out."""
     parser = argparse.ArgumentParser(
@@ -273,6 +303,23 @@ def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     p_gs.add_argument("--problems", nargs="+", default=None, metavar="LIST",
                       help="the assigned problems, e.g. 6,7,10 or 6-20 (default: every problem with checks)")
     p_gs.set_defaults(func=cmd_gradescope)
+
+    from .prairielearn import DEFAULT_IMAGE, JOB_ROOT
+
+    p_pl = sub.add_parser("prairielearn", help="build PrairieLearn questions and their grader (it holds the "
+                          "reference), or grade a job with --run")
+    p_pl.add_argument("out_dir", nargs="?", default=None, help="the folder of the course fragment to write")
+    p_pl.add_argument("--problems", nargs="+", default=None, metavar="LIST",
+                      help="the problems, e.g. 6,7,10 or 6-20 (default: every problem with checks)")
+    p_pl.add_argument("--image", default=DEFAULT_IMAGE,
+                      help=f"the Docker image the questions name (default {DEFAULT_IMAGE}): build it from "
+                           "OUT_DIR/grader-image and push it there")
+    p_pl.add_argument("--run", nargs="?", const=JOB_ROOT, default=None, metavar="JOB_DIR",
+                      help=f"grade a PrairieLearn job folder (default {JOB_ROOT}) and write its "
+                           "results/results.json: what the questions' entry point runs")
+    p_pl.add_argument("--seed", type=int, default=None, help="with --run: the seed of the random inputs "
+                      "(default: a fresh one)")
+    p_pl.set_defaults(func=cmd_prairielearn)
 
     from .batch import add_batch_parser
 
