@@ -9,6 +9,7 @@
     grade gradescope OUT.zip           build Gradescope's autograder (grader with the reference, setup.sh, ...)
     grade prairielearn OUT_DIR         build PrairieLearn questions and their grader (with the reference)
     grade prairielearn --run [JOB]     grade a PrairieLearn job folder (default /grade): the questions' entry point
+    grade similarity RESULTS           after a batch: pairs of students whose answers or code agree (evidence only)
     grade batch SUBMISSIONS --out DIR  grade every student of a folder (see ``grade batch --help``)
 
 In the student kit (no reference), ``grade --help`` lists the student's commands only (``INSTRUCTOR_COMMANDS``
@@ -31,7 +32,8 @@ from pathlib import Path
 from .errors import EXIT_FAILED, EXIT_GRADER, EXIT_OK, EXIT_USAGE, GraderFault  # noqa: F401 - the command's codes
 
 #: commands for the instructor: not listed by the student kit's help
-INSTRUCTOR_COMMANDS = ("demo", "kit", "gradescope", "prairielearn", "batch", "import-manual", "export")
+INSTRUCTOR_COMMANDS = ("demo", "kit", "gradescope", "prairielearn", "similarity", "batch", "import-manual",
+                       "export")
 #: the first words that ask for a problem: problem-6, problem6, p6, 6 (any case)
 _PROBLEM_WORD = re.compile(r"(?:problem-?|p)?\d{1,2}", re.IGNORECASE)
 
@@ -262,6 +264,23 @@ def cmd_prairielearn(args) -> int:
     return EXIT_OK
 
 
+def cmd_similarity(args) -> int:
+    from .batch.gradebook import GRADEBOOK_NAME
+    from .similarity import write_similarity
+
+    results = Path(args.results)
+    if not (results / GRADEBOOK_NAME).exists():
+        print(f"error: {results} holds no gradebook (run `grade batch` first)", file=sys.stderr)
+        return EXIT_USAGE
+    found = write_similarity(results, top=args.top)
+    print(f"{found.students} students, {len(found.pairs)} pairs with any evidence ({found.seconds:.1f} s): "
+          f"{results}/similarity.csv and {results}/similarity.html.\nEvidence for a person to read, never a "
+          "verdict: nothing in it changes a score.")
+    for note in found.notes:
+        print(f"note: {note}", file=sys.stderr)
+    return EXIT_OK
+
+
 def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     """The command's parser; ``kit``: the student kit's, whose help leaves the instructor's commands out."""
     parser = argparse.ArgumentParser(
@@ -320,6 +339,12 @@ def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     p_pl.add_argument("--seed", type=int, default=None, help="with --run: the seed of the random inputs "
                       "(default: a fresh one)")
     p_pl.set_defaults(func=cmd_prairielearn)
+
+    p_sim = sub.add_parser("similarity", help="after a batch: pairs of students whose wrong answers, diagnosed "
+                           "mistakes or code agree (evidence for a person, never a verdict)")
+    p_sim.add_argument("results", help="the results folder of `grade batch`")
+    p_sim.add_argument("--top", type=_positive_int, default=50, help="pairs the HTML report shows (default 50)")
+    p_sim.set_defaults(func=cmd_similarity)
 
     from .batch import add_batch_parser
 

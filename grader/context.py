@@ -29,7 +29,7 @@ class Context:
     """Per-problem grading context shared by its checks."""
 
     def __init__(self, problem: int, child, answers: dict | None, answers_error: str | None, seed: int,
-                 oracle: Oracle | None = None):
+                 oracle: Oracle | None = None, record_answers: bool = False):
         self.problem = problem
         self.child = child
         self._answers = answers or {}
@@ -41,6 +41,13 @@ class Context:
         self.check_id: str | None = None
         self._sites = 0
         self.carried: list[tuple[str, str]] = []
+        #: the wrong answers on fixed inputs of the checks that did not pass (``grader.answers``): recorded by a
+        #: batch, with the live reference, for ``grade similarity``
+        self.wrong_answers: list = []
+        self._recording = record_answers and self.oracle.mode == "live"
+        self._fixed = True  # the running check's inputs are the same for every student (no random draw yet)
+        self._asked: list[tuple[str, tuple, object]] = []  # the running check's fixed calls of the student's code
+        self._referenced: dict[str, object] = {}  # the running check's fixed calls of the reference, by call key
 
     def begin(self, check_id: str) -> None:
         """Start a check: its figures, its seed and the numbering of its draw sites begin afresh."""
@@ -49,6 +56,29 @@ class Context:
         self.last_seed = None
         self._sites = 0
         self.carried = []
+        self._fixed = True
+        self._asked = []
+        self._referenced = {}
+
+    def end(self, passed: bool) -> None:
+        """End the running check: when recording and the check did not pass, keep the student's answers on its
+        fixed inputs that differ from the reference's on the same call."""
+        if self._recording and not passed and self._asked:
+            from .answers import wrong_answer
+            from .oracle import call_key
+
+            for probe, args, value in self._asked:
+                key = call_key(probe, args)
+                if key in self._referenced:
+                    found = wrong_answer(self.check_id or "", probe, args, value, self._referenced[key])
+                    if found is not None and found not in self.wrong_answers:
+                        self.wrong_answers.append(found)
+        self._asked = []
+        self._referenced = {}
+
+    def _note(self, probe: str, args: tuple, value) -> None:
+        if self._recording and self._fixed:
+            self._asked.append((probe, args, value))
 
     def _site(self) -> str:
         """The name of the next draw site of the running check (``"p06.cardan_values#0"``, ``#1``, ...)."""
@@ -60,7 +90,9 @@ class Context:
 
     def student(self, probe: str, *args, timeout: float | None = None):
         """Run ``probe`` on the student's package in the sandbox."""
-        return self.child.call(probe, *args, timeout=timeout)
+        value = self.child.call(probe, *args, timeout=timeout)
+        self._note(probe, args, value)
+        return value
 
     def student_later(self, probe: str, *args, timeout: float | None = None):
         """Send the call of ``probe`` to the student's code now; returns a function that waits for its value, so
@@ -68,9 +100,18 @@ class Context:
         code.  A child without ``call_later`` is called at once."""
         later = getattr(self.child, "call_later", None)
         if later is not None:
-            return later(probe, *args, timeout=timeout)
+            wait = later(probe, *args, timeout=timeout)
+            if not (self._recording and self._fixed):
+                return wait
+
+            def noted():
+                value = wait()
+                self._asked.append((probe, args, value))
+                return value
+
+            return noted
         try:
-            value = self.child.call(probe, *args, timeout=timeout)
+            value = self.student(probe, *args, timeout=timeout)
         except StudentFault as exc:
             failure = exc
 
@@ -83,7 +124,12 @@ class Context:
     def reference(self, probe: str, *args, persist: bool = False):
         """Run ``probe`` on the reference (cached in memory, and on disk when ``persist``); in the kit, the value
         recorded in the answer key."""
-        return self.oracle.reference(probe, args, persist, check=self.check_id)
+        value = self.oracle.reference(probe, args, persist, check=self.check_id)
+        if self._recording and self._fixed:
+            from .oracle import call_key
+
+            self._referenced[call_key(probe, args)] = value
+        return value
 
     def catalogue(self, compute):
         """A catalogue of known mistakes: ``compute()`` returns it (a list, from ``ctx.reference`` calls on the
@@ -100,6 +146,7 @@ class Context:
         """Random data that the check draws itself: ``make(rng)`` with a numpy ``Generator`` returns plain data.
         Live it is drawn from the run's seed; in the kit it is the draw recorded for this site."""
         self.last_seed = self.seed
+        self._fixed = False  # the student's own random data from here on: nothing to compare with another's
         return self.oracle.draw(self._site(), make, self.seed, check=self.check_id)
 
     def carry_forward(self, upstream: str, what: str) -> None:
@@ -164,6 +211,34 @@ class Context:
                 assert_close(got, expected, name, tol, found)
 
         site = self._site()
+        fixed, self._fixed = self._fixed, False  # each student's own random inputs: never recorded
+        try:
+            self._compare_random(site, strategy, evaluate, examples, describe)
+        except CheckFailure:
+            if self._recording and fixed:
+                self._ask_common(site, probe, strategy)
+            raise
+        finally:
+            self._fixed = fixed
+
+    def _ask_common(self, site: str, probe: str, strategy) -> None:
+        """A randomized comparison failed: ask the student's code once more, on the input of this site that every
+        student is asked (``COMMON_SEED``), so that ``grade similarity`` can compare the wrong answers of students
+        whose random inputs all differ.  Only when recording; a failure here changes nothing of the grade."""
+        import zlib
+
+        try:
+            args = draw_pool(strategy, 2, COMMON_SEED ^ zlib.crc32(site.encode()))[-1]
+            value = self.child.call(probe, *args)
+            expected = self.oracle.reference(probe, args, False, check=self.check_id)
+        except Exception:  # noqa: BLE001 - the grade is decided already; this only feeds the similarity report
+            return
+        from .oracle import call_key
+
+        self._asked.append((probe, tuple(args), value))
+        self._referenced[call_key(probe, tuple(args))] = expected
+
+    def _compare_random(self, site: str, strategy, evaluate, examples: int, describe) -> None:
         if self.oracle.pooled:
             inputs = self.oracle.pool(site, strategy, examples, check=self.check_id)
             failures = _failures(inputs, evaluate)
@@ -273,6 +348,9 @@ class Catalogue:
 
 #: hypothesis looks for a failure to shrink among this many times the check's examples (plus ten)
 SHRINK_SEARCH = 2
+#: the seed of the input of each randomized comparison that every student whose comparison failed is also asked
+#: (with the name of its site), for ``grade similarity``: the same in every batch
+COMMON_SEED = 0x5EED_C0DE
 
 
 def _fatal(exc) -> bool:

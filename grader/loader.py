@@ -32,9 +32,10 @@ from pathlib import Path, PurePosixPath
 from .errors import SubmissionError
 from .sandbox.notebook import clean_cell, definitions
 
-__all__ = ["Submission", "NotebookPlan", "materialize", "submission_digest", "template_dir", "template_index",
-           "content_hash", "read_answers", "notebook_plan", "problem_notes", "MAX_FILES", "MAX_BYTES", "MAX_ENTRIES",
-           "MAX_DEPTH", "MAX_NAME_BYTES", "MAX_PATH_BYTES", "MAX_NOTEBOOK_DEPTH", "FIX", "NOTEBOOK_MANIFEST"]
+__all__ = ["Submission", "NotebookPlan", "materialize", "student_files", "submission_digest", "template_dir",
+           "template_index", "content_hash", "read_answers", "notebook_plan", "problem_notes", "MAX_FILES",
+           "MAX_BYTES", "MAX_ENTRIES", "MAX_DEPTH", "MAX_NAME_BYTES", "MAX_PATH_BYTES", "MAX_NOTEBOOK_DEPTH", "FIX",
+           "NOTEBOOK_MANIFEST"]
 
 MAX_FILES = 500
 MAX_BYTES = 50 * 2**20
@@ -568,6 +569,12 @@ def _student_files(source: Path) -> tuple[dict[str, bytes], list[str]]:
     if not files:
         raise SubmissionError(f"{source.name} holds no Python files, notebooks or answers.toml. {FIX}")
     return files, notes
+
+
+def student_files(source: str | Path) -> dict[str, bytes]:
+    """The student's files of a submission (name -> bytes), read as ``materialize`` reads them (no links followed,
+    sizes bounded), without copying the template; ``SubmissionError`` when it cannot be loaded."""
+    return _student_files(Path(source))[0]
 
 
 def submission_digest(source: str | Path) -> str:

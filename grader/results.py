@@ -121,6 +121,9 @@ class ProblemReport:
     notes: tuple[str, ...] = field(default=())
     #: why the submission could not be loaded ("" when it was): said once, for the whole problem; no check ran
     load_error: str = ""
+    #: the wrong answers on inputs every student is asked (``grader.answers.Answer``), recorded by a batch for
+    #: ``grade similarity``: the instructor's, never in a student's report
+    wrong_answers: tuple = ()
 
     @property
     def score(self) -> float:
@@ -154,7 +157,8 @@ class ProblemReport:
         return sum(1 for r in self.results if r.status is status)
 
     def to_dict(self) -> dict:
-        data = asdict(self)
+        data = asdict(replace(self, wrong_answers=()))
+        data.pop("wrong_answers")
         for result in data["results"]:
             result["status"] = result["status"].value
         data["score"] = self.score
@@ -172,4 +176,4 @@ def student_view(report: ProblemReport) -> ProblemReport:
         for r in report.results
     )
     manual = tuple(replace(m, model_answer="") for m in report.manual)
-    return replace(report, results=results, manual=manual)
+    return replace(report, results=results, manual=manual, wrong_answers=())

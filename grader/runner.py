@@ -216,6 +216,7 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
                 blockers[check_id] = block[2]
             continue
         result = _run_check(spec, ctx, problem, said)
+        ctx.end(result.passed)
         results.append(result)
         if result.passed and ctx.carried:
             carried[check_id] = list(ctx.carried)
@@ -332,13 +333,15 @@ def grade_submission(
     oracle=None,
     started=None,
     workers: int = 1,
+    record_answers: bool = False,
 ) -> list[ProblemReport]:
     """Grade the given problems of one submission with one sandboxed worker (forked from ``zygote``, a batch
     slot's warm process, when given: see ``grader.sandbox.zygote``); ``oracle`` answers for the reference
     (default: the process's, see ``grader.oracle.current``).  ``started``: the submission already materialized
     and its worker already started (``grader.cli`` does; a list of such pairs with ``workers``), so that the
     worker's start-up overlapped the caller's imports; the caller then removes the submission's copy.  The worker
-    is ended as soon as the last check has its last reply.
+    is ended as soon as the last check has its last reply.  ``record_answers``: each report also holds the wrong
+    answers on the inputs every student is asked (``grader.answers``), for ``grade similarity`` (a batch does).
 
     ``workers`` > 1 (without a zygote): the problems are shared out among that many sandboxed workers, each with
     its own copy of the submission, that grade side by side (``_grade_side_by_side``); the reports come back in
@@ -353,7 +356,7 @@ def grade_submission(
     workers = min(workers, len(numbers))
     if workers > 1 and zygote is None:
         return _grade_side_by_side(source, numbers, modules, workers, seed=seed, limits=limits, mode=mode,
-                                   workdir=workdir, oracle=oracle, started=started)
+                                   workdir=workdir, oracle=oracle, started=started, record_answers=record_answers)
     if started is not None:
         submission, child = started[0]
         mode = child.mode
@@ -366,13 +369,14 @@ def grade_submission(
         child = Child(submission.path, limits, mode, zygote=zygote)
     queue = list(numbers)
     try:
-        return _grade_in(child, submission, source, lambda: queue.pop(0) if queue else None, modules, seed, oracle)
+        return _grade_in(child, submission, source, lambda: queue.pop(0) if queue else None, modules, seed, oracle,
+                         record_answers)
     finally:
         if started is None:
             cleanup(submission)
 
 
-def _grade_in(child, submission, source, take, modules, seed, oracle) -> list[ProblemReport]:
+def _grade_in(child, submission, source, take, modules, seed, oracle, record_answers=False) -> list[ProblemReport]:
     """The reports of the problems that ``take()`` hands out (None: no more), graded with ``child``."""
     answers, answers_error = read_answers(submission.path)
     reports = []
@@ -381,7 +385,7 @@ def _grade_in(child, submission, source, take, modules, seed, oracle) -> list[Pr
         number = take()
         while number is not None:
             start = time.perf_counter()
-            ctx = Context(number, child, answers, answers_error, seed, oracle)
+            ctx = Context(number, child, answers, answers_error, seed, oracle, record_answers)
             results = _run_checks(modules[number], ctx, number)
             stdout, stderr = child.output()
             following = take()
@@ -402,13 +406,15 @@ def _grade_in(child, submission, source, take, modules, seed, oracle) -> list[Pr
                     submission=str(source),
                     grader_version=__version__,
                     notes=problem_notes(submission, number) + child.import_notes,
+                    wrong_answers=tuple(ctx.wrong_answers),
                 )
             )
             number = following
     return reports
 
 
-def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode, workdir, oracle, started):
+def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode, workdir, oracle, started,
+                        record_answers=False):
     """``grade_submission`` with ``workers`` sandboxed workers, one thread of this process each (the student's
     code runs in the workers; the threads mostly wait for their replies).  Each worker takes the next problem of
     ``numbers`` when it is free, so a long problem does not hold up the rest.  Every worker has a copy of its own
@@ -440,7 +446,8 @@ def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode
     def work(index: int) -> None:
         submission, child = pairs[index]
         try:
-            outcomes[index] = ("ok", _grade_in(child, submission, source, take, modules, seed, oracle))
+            outcomes[index] = ("ok", _grade_in(child, submission, source, take, modules, seed, oracle,
+                                               record_answers))
         except BaseException as exc:  # noqa: BLE001 - handed to the calling thread, raised there
             with lock:
                 queue.clear()  # the other workers stop after their current problem

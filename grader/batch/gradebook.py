@@ -145,6 +145,16 @@ CREATE TABLE IF NOT EXISTS assignment_scores (  -- recomputed from course.toml a
     course       TEXT NOT NULL,             -- the course file they were computed from
     PRIMARY KEY (student, assignment)
 );
+CREATE TABLE IF NOT EXISTS wrong_answers (  -- grader.answers: for grade similarity, never shown to students
+    submission_id INTEGER NOT NULL REFERENCES submissions (id) ON DELETE CASCADE,
+    check_id      TEXT NOT NULL,
+    call          TEXT NOT NULL,           -- the probe and its arguments, shortened
+    call_key      TEXT NOT NULL,           -- a digest of the probe and its exact arguments
+    value_key     TEXT NOT NULL,           -- a digest of the student's value
+    value         TEXT NOT NULL,
+    expected      TEXT NOT NULL,
+    PRIMARY KEY (submission_id, check_id, call_key)
+);
 CREATE INDEX IF NOT EXISTS submissions_current ON submissions (student_id, problem, id);
 CREATE INDEX IF NOT EXISTS check_results_check ON check_results (check_id, status);
 """
@@ -483,6 +493,12 @@ class Gradebook:
                         for position, r in enumerate(report.results)
                     ],
                 )
+                db.executemany(
+                    "INSERT OR IGNORE INTO wrong_answers (submission_id, check_id, call, call_key, value_key, value, "
+                    "expected) VALUES (?, ?, ?, ?, ?, ?, ?)",
+                    [(cursor.lastrowid, a.check_id, a.call, a.call_key, a.value_key, a.value, a.expected)
+                     for a in report.wrong_answers],
+                )
             db.execute("UPDATE runs SET graded = graded + 1 WHERE id = ?", (run_id,))
 
     # ------------------------------------------------------------------ reading
@@ -615,6 +631,34 @@ class Gradebook:
                 "submitted_from, days_late, grace_days, excused, computed_at, course) "
                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 [(*row, stamp, course) for row in rows])
+
+    def wrong_answers(self) -> list[tuple[str, int, object]]:
+        """``(student, problem, Answer)`` of every student's current results: the wrong answers on the inputs every
+        student is asked (``grader.answers``), for ``grade similarity``."""
+        from ..answers import Answer
+
+        rows = self.db.execute(
+            "SELECT st.name, s.problem, w.check_id, w.call, w.call_key, w.value_key, w.value, w.expected "
+            "FROM wrong_answers w JOIN submissions s ON s.id = w.submission_id "
+            "JOIN students st ON st.id = s.student_id "
+            "WHERE s.id = (SELECT max(t.id) FROM submissions t WHERE t.student_id = s.student_id "
+            "AND t.problem = s.problem) ORDER BY st.name, s.problem, w.check_id, w.call_key")
+        return [(row[0], row[1], Answer(*row[2:])) for row in rows]
+
+    def submitted(self) -> list[tuple[str, int, str, str, str]]:
+        """``(student, problem, source, content hash, load error)`` of every student's current results."""
+        rows = self.db.execute(_CURRENT.format(where=""))
+        return [(r["student"], r["problem"], r["source"], r["content_hash"], r["load_error"]) for r in rows]
+
+    def diagnosed(self) -> list[tuple[str, int, str, str]]:
+        """``(student, problem, check id, diagnosis)`` of every failed check with a diagnosis in the students'
+        current results."""
+        rows = self.db.execute(
+            "SELECT st.name, s.problem, c.check_id, c.diagnosis FROM check_results c "
+            "JOIN submissions s ON s.id = c.submission_id JOIN students st ON st.id = s.student_id "
+            "WHERE c.diagnosis != '' AND c.status = 'failed' AND s.id = (SELECT max(t.id) FROM submissions t "
+            "WHERE t.student_id = s.student_id AND t.problem = s.problem) ORDER BY st.name, c.check_id")
+        return [tuple(row) for row in rows]
 
     def manual_comments(self) -> dict[tuple[str, int, str], str]:
         rows = self.db.execute("SELECT st.name, m.problem, m.key, m.comment FROM manual_scores m "

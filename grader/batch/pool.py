@@ -109,7 +109,7 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
                 return
             try:
                 reports = grade_submission(task.entry.path, list(task.problems), seed=task.inputs_seed,
-                                           limits=limits, zygote=zygote)
+                                           limits=limits, zygote=zygote, record_answers=True)
                 conn.send(("ok", reports))
             except GraderFault as exc:  # this student is not recorded and is retried next run
                 conn.send(("fault", str(exc).strip().splitlines()[0]))
