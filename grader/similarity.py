@@ -51,6 +51,9 @@ COMMON_LEAST = 10
 NOISE, GUARANTEE = 25, 30
 #: the characters of normalised code a match must reach to count in full (shorter matches count in proportion)
 FULL_MATCH = 200
+#: the most characters of a student's own code that are fingerprinted (a whole course is some 100,000): the rest
+#: is left out, and the report says so
+MAX_CODE = 1_000_000
 #: the pairs the HTML report shows
 TOP = 50
 #: the lines of a student's code shown for one pair, at most
@@ -170,17 +173,8 @@ def _evidence(book) -> tuple[dict, list[str], dict[str, tuple[str, str]]]:
 # ---------------------------------------------------------------------------------------------- code
 
 
-def _template_lines() -> set[str]:
-    from .loader import template_dir
-
-    lines = set()
-    for path in template_dir().glob("*.py"):
-        lines.update(line.strip() for line in path.read_text(encoding="utf-8").splitlines())
-    return lines
-
-
 def _boilerplate() -> list[str]:
-    """The texts whose fingerprints are boilerplate: the template's modules and the reference solution's."""
+    """The texts whose code is boilerplate: the template's modules and the reference solution's."""
     import importlib.util
 
     from .loader import template_dir
@@ -207,8 +201,8 @@ def _code_files(raw: dict[str, bytes]) -> dict[str, str]:
 
 
 def _hunks(files: dict[str, str], template: set[str]) -> list[Hunk]:
-    """The student's own lines: each run of lines that the template does not hold (blank lines inside a run are
-    kept), with its file and first line number."""
+    """The student's own lines: each run of lines that neither the template nor the reference holds as they are
+    (blank lines inside a run are kept), with its file and first line number."""
     hunks = []
     for name in sorted(files):
         run: list[str] = []
@@ -244,20 +238,58 @@ def _document(hunks: list[Hunk]) -> tuple[str, list[int]]:
     return "\n\n".join(parts), offsets
 
 
-def _fingerprints(texts: dict[str, str], boilerplate: list[str]) -> dict[str, object]:
-    """copydetect's fingerprints of each document (name -> text) with the boilerplate's k-grams removed.
-    copydetect hashes with Python's ``hash`` of strings, which differs between processes: every fingerprint that
-    is compared comes from this one process."""
+#: a class from this size on is fingerprinted by one process per core (tokenizing is most of the work)
+PARALLEL_FROM = 40
+#: the hash seed of the processes that fingerprint: copydetect hashes k-grams with Python's ``hash`` of strings,
+#: which differs between processes unless the seed is fixed, and fingerprints are compared across processes
+HASH_SEED = "3030"
+
+_BOILERPLATE = None
+
+
+def _boilerplate_hashes(texts: list[str]):
     import numpy as np
     from copydetect import CodeFingerprint
 
     common = set()
-    for index, text in enumerate(boilerplate):
-        common |= CodeFingerprint(f"boilerplate{index}.py", NOISE, 1, fp=io.StringIO(text)).hashes
-    common_array = np.array(sorted(common), dtype=np.int64)
-    return {name: CodeFingerprint(f"{name}.py", NOISE, GUARANTEE - NOISE + 1, boilerplate=common_array,
-                                  fp=io.StringIO(text))
-            for name, text in texts.items()}
+    for index, text in enumerate(texts):
+        common |= CodeFingerprint(f"boilerplate{index}.py", NOISE, 1, fp=io.StringIO(text), language="python").hashes
+    return np.array(sorted(common), dtype=np.int64)
+
+
+def _start_fingerprinting(texts: list[str]) -> None:
+    global _BOILERPLATE
+    _BOILERPLATE = _boilerplate_hashes(texts)
+
+
+def _fingerprint(item: tuple[str, str]):
+    from copydetect import CodeFingerprint
+
+    name, text = item
+    return name, CodeFingerprint(f"{name}.py", NOISE, GUARANTEE - NOISE + 1, boilerplate=_BOILERPLATE,
+                                 fp=io.StringIO(text), language="python")
+
+
+def _fingerprints(texts: dict[str, str], boilerplate: list[str], jobs: int = 1) -> dict[str, object]:
+    """copydetect's fingerprints of each document (name -> text) with the boilerplate's k-grams removed, by
+    ``jobs`` processes with one hash seed (``HASH_SEED``), or here for a small class."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    if jobs < 2 or len(texts) < PARALLEL_FROM:  # this process alone: its own hash seed is consistent
+        _start_fingerprinting(boilerplate)
+        return dict(map(_fingerprint, texts.items()))
+    saved = os.environ.get("PYTHONHASHSEED")
+    os.environ["PYTHONHASHSEED"] = HASH_SEED
+    try:
+        with ProcessPoolExecutor(max(1, jobs), mp_context=multiprocessing.get_context("spawn"),
+                                 initializer=_start_fingerprinting, initargs=(boilerplate,)) as pool:
+            return dict(pool.map(_fingerprint, sorted(texts.items()), chunksize=8))
+    finally:
+        if saved is None:
+            os.environ.pop("PYTHONHASHSEED", None)
+        else:
+            os.environ["PYTHONHASHSEED"] = saved
 
 
 def _drop(fingerprint, hashes: set) -> None:
@@ -309,8 +341,9 @@ def _limited(hunks: list, lines: int = SHOWN_LINES) -> tuple:
 # ---------------------------------------------------------------------------------------------- the report
 
 
-def similarity(results: str | Path, *, top: int = TOP) -> Similarity:
-    """The pairs of students of the gradebook in ``results``, ranked by their evidence (see the module)."""
+def similarity(results: str | Path, *, top: int = TOP, jobs: int | None = None) -> Similarity:
+    """The pairs of students of the gradebook in ``results``, ranked by their evidence (see the module); the code
+    is fingerprinted by ``jobs`` processes (default: one per core) in a class of ``PARALLEL_FROM`` or more."""
     import time
 
     from copydetect import compare_files
@@ -320,10 +353,12 @@ def similarity(results: str | Path, *, top: int = TOP) -> Similarity:
     from .loader import content_hash, student_files
 
     began = time.monotonic()
+    jobs = jobs or len(os.sched_getaffinity(0))
     with Gradebook.in_folder(results) as book:
         best, students, sources = _evidence(book)
     notes = []
-    template = _template_lines()
+    boilerplate = _boilerplate()
+    known_lines = {line.strip() for text in boilerplate for line in text.splitlines()}
     texts, codes = {}, {}
     for student in students:
         if student not in sources:
@@ -338,11 +373,17 @@ def similarity(results: str | Path, *, top: int = TOP) -> Similarity:
         except (SubmissionError, OSError, ValueError) as exc:
             notes.append(f"{student}: code not compared ({exc})")
             continue
-        hunks = _hunks(files, template)
+        hunks = _hunks(files, known_lines)
         text, offsets = _document(hunks)
+        if len(text) > MAX_CODE:
+            notes.append(f"{student}: only the first {MAX_CODE:,} characters of their {len(text):,} of own code "
+                         "were compared")
+            kept = [i for i, at in enumerate(offsets) if at + len(hunks[i].text) <= MAX_CODE]
+            hunks, offsets = hunks[:len(kept)], offsets[:len(kept)]
+            text = text[:offsets[-1] + len(hunks[-1].text)] if hunks else ""
         texts[student] = text
         codes[student] = _Code(hunks, offsets, None)
-    prints = _fingerprints(texts, _boilerplate())
+    prints = _fingerprints(texts, boilerplate, jobs)
     for student, fingerprint in prints.items():
         codes[student].fingerprint = fingerprint
     holders: dict[int, list[str]] = defaultdict(list)
@@ -425,12 +466,12 @@ def _csv(rows: list[list]) -> str:
     return buffer.getvalue()
 
 
-def write_similarity(results: str | Path, *, top: int = TOP) -> Similarity:
+def write_similarity(results: str | Path, *, top: int = TOP, jobs: int | None = None) -> Similarity:
     """Compute ``similarity`` and write ``similarity.csv`` and ``similarity.html`` into ``results``."""
     from .render import _env
 
     results = Path(results)
-    found = similarity(results, top=top)
+    found = similarity(results, top=top, jobs=jobs)
     rows = [["rank", "student", "other student", "score", "answers", "tokens", "shared code characters",
              "shared wrong answers", "shared diagnoses", "checks"]]
     for rank, pair in enumerate(found.pairs, 1):

@@ -55,3 +55,14 @@ def test_bench_batch_refuses_a_problem_without_checks_and_expands_ranges():
     finally:
         sys.path.remove(str(ROOT / "benchmarks"))
     assert chosen[0] == 6 and chosen[-1] == 36 and len(chosen) == 29 and 23 not in chosen and 29 not in chosen
+
+
+def test_bench_similarity_prints_its_time_and_ranks_the_copied_folders_first():
+    done = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_similarity.py"), "--students", "8",
+                           "--recording", "0"], capture_output=True, text=True, timeout=600, cwd=ROOT)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    timing = re.search(r"^grade similarity: ([\d.]+) s wall, ([\d.]+) CPU-s \(its processes\) for 8 students "
+                       r"\(28 pairs, (\d+) with any evidence, code of 8 compared\); target under 60 s: (met|NOT met)$",
+                       done.stdout, re.MULTILINE)
+    assert timing and float(timing.group(1)) > 0 and float(timing.group(2)) > 0, done.stdout
+    assert "the 3 copied folders rank [1, 2, 3] of" in done.stdout, done.stdout

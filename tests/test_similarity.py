@@ -233,3 +233,46 @@ def test_grade_similarity_needs_a_gradebook(tmp_path, capsys):
 
     assert main(["similarity", str(tmp_path)]) == 2
     assert "holds no gradebook" in capsys.readouterr().err
+
+
+# ---------------------------------------------------------------------------------------------- a small gradebook
+
+
+def _record(book, run: int, student: str, source: Path, digest: str, answers=(), diagnosis: str = "") -> None:
+    status = Status.FAILED if answers or diagnosis else Status.PASSED
+    result = CheckResult("p06.frames", 6, "the frames", status, 0.0 if answers else 1.0, 1.0, diagnosis=diagnosis)
+    report = ProblemReport(6, "Euler angles", (result,), seed=1, submission=str(source), wrong_answers=tuple(answers))
+    book.record(student, digest, {6: "v"}, run, [report])
+
+
+def test_code_that_cannot_be_read_or_is_huge_is_named_and_the_rest_compared(tmp_path, monkeypatch):
+    from grader.batch.gradebook import Gradebook
+    from grader.loader import submission_digest
+    from grader.similarity import write_similarity
+
+    MAX_CODE = 2_000
+    monkeypatch.setattr("grader.similarity.MAX_CODE", MAX_CODE)
+    folder = tmp_path / "submissions"
+    shared = Answer("p06.frames", "problem_06.frames()", "call", "value", "[[1, 2]]", "[[1, 0]]")
+    students = {}
+    for name in ("ann", "ben", "cat"):
+        students[name] = copy_reference(folder / name)
+    (students["cat"] / "problem_06.py").write_text("".join(f"x{i} = {i}\n" for i in range(MAX_CODE)))  # too much
+    link = folder / "dan"
+    link.symlink_to(students["ann"])
+    with Gradebook.in_folder(tmp_path / "results") as book:
+        run = book.start_run(str(folder), [6], 1)
+        for name, source in students.items():
+            _record(book, run, name, source, submission_digest(source), [shared] if name != "cat" else [])
+        _record(book, run, "dan", link, "whatever", [shared])
+    found = write_similarity(tmp_path / "results", jobs=1)
+    notes = "\n".join(found.notes)
+    assert "dan: code not compared" in notes and "symbolic link" in notes
+    assert f"cat: only the first {MAX_CODE:,} characters" in notes
+    assert found.with_code == 3
+    pairs = {frozenset((p.first, p.second)): p for p in found.pairs}
+    # the wrong answer that ann, ben and dan alone give (of 4 graded): ln(4/3) each
+    assert pairs[frozenset(("ann", "ben"))].answers == pytest.approx(np.log(4 / 3))
+    assert pairs[frozenset(("ann", "dan"))].tokens == 0  # dan's code was not read
+    page = (tmp_path / "results" / "similarity.html").read_text()
+    assert "dan: code not compared" in page
