@@ -183,21 +183,26 @@ def bench_recording(repeats: int, numbers: list[int]) -> None:
         folder = copy_reference(Path(scratch) / "mistakes")
         applied = [m.name for m in chosen if plant(m, folder, strict=False)]
         times: dict[bool, list[float]] = {False: [], True: []}
+        own: dict[bool, list[float]] = {False: [], True: []}  # the grader's own CPU: checks, reference, recording
         answers = 0
         with Zygote(Limits(), sandbox_mode(), warm_modules(numbers)) as zygote:
             zygote.start()
             grade_submission(folder, numbers, seed=1, zygote=zygote)  # the reference's fixed cases cached
             for index in range(repeats):
                 for record in ((False, True) if index % 2 == 0 else (True, False)):
-                    began = time.monotonic()
+                    began, cpu = time.monotonic(), time.process_time()
                     reports = grade_submission(folder, numbers, seed=1, zygote=zygote, record_answers=record)
                     times[record].append(time.monotonic() - began)
+                    own[record].append(time.process_time() - cpu)
                     if record:
                         answers = sum(len(r.wrong_answers) for r in reports)
         plain, recording = statistics.median(times[False]), statistics.median(times[True])
+        cpu_plain, cpu_recording = statistics.median(own[False]), statistics.median(own[True])
         print(f"recording for grade similarity: a whole-course submission with {len(applied)} planted mistakes, "
               f"{len(numbers)} problems, {repeats} gradings each way (medians): {plain:.2f} s without, "
-              f"{recording:.2f} s with ({(recording - plain) / plain * 100:+.1f}%); {answers} wrong answers recorded")
+              f"{recording:.2f} s with ({(recording - plain) / plain * 100:+.1f}%); the grader's own CPU "
+              f"{cpu_plain:.2f} s without, {cpu_recording:.2f} s with ({(cpu_recording - cpu_plain) / cpu_plain * 100:+.1f}%); "
+              f"{answers} wrong answers recorded")
 
 
 def main(argv: list[str] | None = None) -> int:

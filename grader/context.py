@@ -48,6 +48,7 @@ class Context:
         self._fixed = True  # the running check's inputs are the same for every student (no random draw yet)
         self._asked: list[tuple[str, tuple, object]] = []  # the running check's fixed calls of the student's code
         self._referenced: dict[str, object] = {}  # the running check's fixed calls of the reference, by call key
+        self._common: list[tuple[str, str, str, object]] = []  # failed randomized comparisons: check, site, probe
 
     def begin(self, check_id: str) -> None:
         """Start a check: its figures, its seed and the numbering of its draw sites begin afresh."""
@@ -215,28 +216,35 @@ class Context:
         try:
             self._compare_random(site, strategy, evaluate, examples, describe)
         except CheckFailure:
-            if self._recording and fixed:
-                self._ask_common(site, probe, strategy)
+            if self._recording and fixed:  # asked on the input every student is asked, after the last check
+                self._common.append((self.check_id or "", site, probe, strategy))
             raise
         finally:
             self._fixed = fixed
 
-    def _ask_common(self, site: str, probe: str, strategy) -> None:
-        """A randomized comparison failed: ask the student's code once more, on the input of this site that every
-        student is asked (``COMMON_SEED``), so that ``grade similarity`` can compare the wrong answers of students
-        whose random inputs all differ.  Only when recording; a failure here changes nothing of the grade."""
+    def ask_common(self, failed: set[str]) -> None:
+        """After the problem's last check: ask the student's code once more for each randomized comparison that
+        failed in a check of ``failed``, on the input of its site that every such student is asked
+        (``COMMON_SEED``), so that ``grade similarity`` can compare the wrong answers of students whose random
+        inputs all differ.  Only when recording, and only now, when no check is left that the call could change
+        (a student's code that keeps state between calls); a failure here changes nothing of the grade."""
         import zlib
 
-        try:
-            args = draw_pool(strategy, 2, COMMON_SEED ^ zlib.crc32(site.encode()))[-1]
-            value = self.child.call(probe, *args)
-            expected = self.oracle.reference(probe, args, False, check=self.check_id)
-        except Exception:  # noqa: BLE001 - the grade is decided already; this only feeds the similarity report
-            return
-        from .oracle import call_key
+        from .answers import wrong_answer
 
-        self._asked.append((probe, tuple(args), value))
-        self._referenced[call_key(probe, tuple(args))] = expected
+        pending, self._common = self._common, []
+        for check_id, site, probe, strategy in pending:
+            if check_id not in failed:
+                continue
+            try:
+                args = tuple(draw_pool(strategy, 2, COMMON_SEED ^ zlib.crc32(site.encode()))[-1])
+                value = self.child.call(probe, *args)
+                expected = self.oracle.reference(probe, args, False, check=check_id)
+                found = wrong_answer(check_id, probe, args, value, expected)
+            except Exception:  # noqa: BLE001 - the grade is decided already; this only feeds the similarity report
+                continue
+            if found is not None and found not in self.wrong_answers:
+                self.wrong_answers.append(found)
 
     def _compare_random(self, site: str, strategy, evaluate, examples: int, describe) -> None:
         if self.oracle.pooled:

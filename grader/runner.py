@@ -387,6 +387,7 @@ def _grade_in(child, submission, source, take, modules, seed, oracle, record_ans
             start = time.perf_counter()
             ctx = Context(number, child, answers, answers_error, seed, oracle, record_answers)
             results = _run_checks(modules[number], ctx, number)
+            ctx.ask_common({r.check_id for r in results if r.status is Status.FAILED})
             stdout, stderr = child.output()
             following = take()
             if following is None:

@@ -276,3 +276,26 @@ def test_code_that_cannot_be_read_or_is_huge_is_named_and_the_rest_compared(tmp_
     assert pairs[frozenset(("ann", "dan"))].tokens == 0  # dan's code was not read
     page = (tmp_path / "results" / "similarity.html").read_text()
     assert "dan: code not compared" in page
+
+
+def test_recording_changes_no_verdict_and_a_correct_submission_records_nothing(tmp_path):
+    """The batch's recording (``record_answers``) on the same seed: the same verdicts and messages as without it; a
+    planted mistake found only by a randomized comparison is recorded on the input every student is asked there,
+    and the reference records nothing."""
+    from grader.runner import grade_submission
+
+    mistake = next(m for m in planted_mistakes(6) if m.name == "p06-R3-transpose")
+    planted = build_planted(mistake, tmp_path / "planted")
+    reference = copy_reference(tmp_path / "reference")
+    for folder in (planted, reference):
+        plain, = grade_submission(folder, [6], seed=11)
+        recorded, = grade_submission(folder, [6], seed=11, record_answers=True)
+        assert [(r.check_id, r.status, r.score, r.message, r.diagnosis) for r in plain.results] == \
+            [(r.check_id, r.status, r.score, r.message, r.diagnosis) for r in recorded.results]
+        assert plain.wrong_answers == ()
+    assert recorded.wrong_answers == ()  # the reference
+    again, = grade_submission(planted, [6], seed=12, record_answers=True)
+    first, = grade_submission(planted, [6], seed=11, record_answers=True)
+    (answer,) = first.wrong_answers
+    assert answer.check_id == mistake.check and answer.call.startswith("problem_06.elementary(3, ")
+    assert again.wrong_answers == first.wrong_answers  # the same input whatever the student's own seed
