@@ -1,13 +1,22 @@
 """Wrong answers on the inputs every student is asked: what a batch records for ``grade similarity``.
 
 A check asks the student's code on two kinds of inputs: random ones drawn from the student's own seed (different
-for every student) and fixed ones written in the check or taken from the sheet (the same for every student).  Only
-the fixed ones can show that two students gave the *same* answer, so only they are recorded, and only where the
-answer is wrong (differs from the reference's on the same call beyond ``EXACT``) in a check that did not pass: a
-right answer says nothing about copying, and a check passed on the student's own earlier results (error carried
-forward) names its mistake at the check that found it.  A value is kept as a digest of its numbers rounded to
-``DIGITS`` significant digits (so that the same computation in another order gives the same digest) and as a short
-text to show.  The recording costs no call of the student's code: the values are those the checks asked for.
+for every student, so that hard-coding earns nothing) and fixed ones written in the check or taken from the sheet
+(the same for every student).  Only inputs that two students are both asked can show that they gave the *same*
+answer, so the batch records:
+
+* the answers on the fixed inputs, which cost nothing more: the checks ask them anyway, and their authors chose
+  them generic, to tell mistakes apart;
+* for a randomized comparison that failed, the answer on one more input of that comparison, drawn alike for every
+  student (``grader.context.COMMON_SEED`` and the comparison's site), asked after the problem's last check so that
+  it cannot change a verdict.  Many checks are randomized comparisons only; a student whose comparisons pass is
+  asked nothing more, so a batch pays one call of the student's code per failed comparison.
+
+An answer is kept only where it is wrong (it differs from the reference's on the same call beyond ``EXACT``) in a
+check that did not pass: a right answer says nothing about copying, and a check passed on the student's own earlier
+results (error carried forward) names its mistake at the check that found it.  A value is kept as a digest of its
+numbers rounded to ``DIGITS`` significant digits (the same computation in another order gives the same digest) and
+as a short text to show.
 """
 
 from __future__ import annotations
@@ -41,19 +50,21 @@ class Answer:
 
 
 def _skeleton_and_numbers(encoded, numbers: list) -> object:
-    """The structure of a codec-encoded value with every number replaced by its index in ``numbers``."""
+    """The structure of a codec-encoded value, its numbers appended to ``numbers`` (floats and float arrays)."""
+    import numpy as np
+
     if isinstance(encoded, dict):
         if len(encoded) == 2 and "__array__" in encoded and "data" in encoded:
             data = encoded["data"]
-            if all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in data):
-                numbers.extend(float(x) for x in data)
+            if all(type(x) in (int, float) for x in data):
+                numbers.append(np.asarray(data, dtype=float))
                 return {"array": list(encoded["__array__"])}
             return {"array": list(encoded["__array__"]), "items": [_skeleton_and_numbers(x, numbers) for x in data]}
         return {str(k): _skeleton_and_numbers(v, numbers) for k, v in sorted(encoded.items())}
     if isinstance(encoded, list):
         return [_skeleton_and_numbers(x, numbers) for x in encoded]
     if isinstance(encoded, (int, float)) and not isinstance(encoded, bool):
-        numbers.append(float(encoded))
+        numbers.append(np.array([float(encoded)]))
         return "#"
     return encoded
 
@@ -66,7 +77,8 @@ def _flat(value):
 
     numbers: list = []
     skeleton = _skeleton_and_numbers(encode(value), numbers)
-    return json.dumps(skeleton, sort_keys=True, default=str), np.asarray(numbers, dtype=float)
+    flat = np.concatenate(numbers) if numbers else np.zeros(0)
+    return json.dumps(skeleton, sort_keys=True, default=str), flat
 
 
 def value_digest(value) -> str:
@@ -103,14 +115,21 @@ def _agrees(value, expected) -> bool:
 
 
 def _shown(value) -> str:
+    """A short text of a value: arrays (also inside dicts and lists) summarised beyond 40 entries."""
+    import reprlib
+
     import numpy as np
 
+    shorter = reprlib.Repr()
+    shorter.maxstring, shorter.maxother, shorter.maxlist, shorter.maxdict, shorter.maxlevel = 120, 120, 12, 12, 4
     try:
-        if isinstance(value, np.ndarray):
-            with np.printoptions(precision=6, suppress=True, linewidth=100, threshold=40):
+        with np.printoptions(precision=6, suppress=True, linewidth=100, threshold=40, edgeitems=2):
+            if isinstance(value, np.ndarray):
                 text = np.array2string(value, separator=", ")
-        else:
-            text = repr(value)
+            elif isinstance(value, (dict, list, tuple)):
+                text = shorter.repr(value)
+            else:
+                text = repr(value)
     except Exception:  # noqa: BLE001 - a text to show, never a reason to fail
         text = f"<{type(value).__name__}>"
     return text if len(text) <= SHOWN_CHARS else text[:SHOWN_CHARS - 3] + "..."

@@ -47,7 +47,7 @@ class Context:
         self._recording = record_answers and self.oracle.mode == "live"
         self._fixed = True  # the running check's inputs are the same for every student (no random draw yet)
         self._asked: list[tuple[str, tuple, object]] = []  # the running check's fixed calls of the student's code
-        self._referenced: dict[str, object] = {}  # the running check's fixed calls of the reference, by call key
+        self._referenced: list[tuple[str, tuple, object]] = []  # the running check's fixed calls of the reference
         self._common: list[tuple[str, str, str, object]] = []  # failed randomized comparisons: check, site, probe
 
     def begin(self, check_id: str) -> None:
@@ -59,23 +59,24 @@ class Context:
         self.carried = []
         self._fixed = True
         self._asked = []
-        self._referenced = {}
+        self._referenced = []
 
     def end(self, passed: bool) -> None:
         """End the running check: when recording and the check did not pass, keep the student's answers on its
         fixed inputs that differ from the reference's on the same call."""
-        if self._recording and not passed and self._asked:
+        if self._recording and not passed and self._asked and self._referenced:
             from .answers import wrong_answer
             from .oracle import call_key
 
+            expected = {call_key(probe, args): value for probe, args, value in self._referenced}
             for probe, args, value in self._asked:
                 key = call_key(probe, args)
-                if key in self._referenced:
-                    found = wrong_answer(self.check_id or "", probe, args, value, self._referenced[key])
+                if key in expected:
+                    found = wrong_answer(self.check_id or "", probe, args, value, expected[key])
                     if found is not None and found not in self.wrong_answers:
                         self.wrong_answers.append(found)
         self._asked = []
-        self._referenced = {}
+        self._referenced = []
 
     def _note(self, probe: str, args: tuple, value) -> None:
         if self._recording and self._fixed:
@@ -127,9 +128,7 @@ class Context:
         recorded in the answer key."""
         value = self.oracle.reference(probe, args, persist, check=self.check_id)
         if self._recording and self._fixed:
-            from .oracle import call_key
-
-            self._referenced[call_key(probe, args)] = value
+            self._referenced.append((probe, args, value))
         return value
 
     def catalogue(self, compute):
