@@ -1,6 +1,6 @@
 """``grade similarity`` on a whole-course class, and what the batch's recording for it costs a grading.
 
-    python benchmarks/bench_similarity.py [--students 300] [--recording N] [--problems N|N-M ...]
+    python benchmarks/bench_similarity.py [--students 300] [--recording N] [--problems N ...] [--reach]
 
 The class (built fresh): ``--students`` whole-course submissions, each the reference with a few planted mistakes
 and correct variants drawn from every problem's catalogue (every student different; a few pairs copy each other's
@@ -12,7 +12,8 @@ writing similarity.csv and similarity.html).  Target (issue 30): under a minute 
 
 ``--recording N`` also grades N times, alternately, a whole-course submission with planted mistakes on a batch
 slot's warm process with and without the recording of wrong answers (``grade batch`` records; ``grade problem-N``
-does not) and prints the medians: the extra cost of a batch.  0 skips it.
+does not) and prints the medians: the extra cost of a batch.  0 skips it.  ``--reach`` grades every planted mistake
+of the problems alone and says how many leave a wrong answer for ``grade similarity`` to compare.
 """
 
 from __future__ import annotations
@@ -205,6 +206,39 @@ def bench_recording(repeats: int, numbers: list[int]) -> None:
               f"{answers} wrong answers recorded")
 
 
+def bench_reach(numbers: list[int]) -> None:
+    """How far the recording reaches: each planted mistake of ``numbers`` graded alone with the recording, and the
+    share of those caught by their check that leave a wrong answer to compare (``grade similarity``'s answers
+    evidence; the rest are compared by their diagnoses alone)."""
+    from grader.runner import grade_submission
+    from grader.sandbox import Limits, sandbox_mode
+    from grader.sandbox.zygote import Zygote, warm_modules
+
+    mistakes = [m for m in planted_mistakes() if m.problem in numbers]
+    caught = recorded = 0
+    by_problem: dict[int, list[int]] = {}
+    with tempfile.TemporaryDirectory(prefix="bench-reach-") as scratch, \
+            Zygote(Limits(), sandbox_mode(), warm_modules(numbers)) as zygote:
+        zygote.start()
+        for index, mistake in enumerate(mistakes):
+            folder = copy_reference(Path(scratch) / f"m{index}")
+            plant(mistake, folder)
+            report, = grade_submission(folder, [mistake.problem], seed=1, zygote=zygote, record_answers=True)
+            if not any(r.check_id == mistake.check and not r.passed for r in report.results):
+                continue
+            caught += 1
+            hit = bool(report.wrong_answers)
+            recorded += hit
+            by_problem.setdefault(mistake.problem, [0, 0])
+            by_problem[mistake.problem][0] += 1
+            by_problem[mistake.problem][1] += hit
+    missing = ", ".join(f"{n} ({total - hit} of {total})" for n, (total, hit) in sorted(by_problem.items())
+                        if hit < total)
+    print(f"reach of the recording: {recorded} of the {caught} planted mistakes of {len(numbers)} problems caught by "
+          f"their check leave a wrong answer to compare ({recorded / max(caught, 1) * 100:.0f}%); the others, by "
+          f"problem: {missing or 'none'}")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--students", type=int, default=300)
@@ -212,12 +246,17 @@ def main(argv: list[str] | None = None) -> int:
                         help="gradings each way to measure the recording's cost (0: skip)")
     parser.add_argument("--problems", type=int, nargs="+", default=None,
                         help="the problems of the recording's gradings (default: every problem with checks)")
+    parser.add_argument("--reach", action="store_true",
+                        help="also grade every planted mistake of --problems alone and say how many leave a wrong "
+                             "answer to compare")
     args = parser.parse_args(argv)
     if args.students < 2 * COPIES:
         parser.error(f"--students must be at least {2 * COPIES}")
     bench_similarity(args.students)
     if args.recording:
         bench_recording(args.recording, args.problems or [p.number for p in all_problems()])
+    if args.reach:
+        bench_reach(args.problems or [p.number for p in all_problems()])
     return 0
 
 

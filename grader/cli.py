@@ -272,7 +272,14 @@ def cmd_similarity(args) -> int:
     if not (results / GRADEBOOK_NAME).exists():
         print(f"error: {results} holds no gradebook (run `grade batch` first)", file=sys.stderr)
         return EXIT_USAGE
-    found = write_similarity(results, top=args.top)
+    try:
+        found = write_similarity(results, top=args.top)
+    except ModuleNotFoundError as exc:
+        if exc.name != "copydetect":
+            raise
+        print("error: grade similarity needs copydetect, a dependency of this project: pip install copydetect",
+              file=sys.stderr)
+        return EXIT_GRADER
     print(f"{found.students} students, {len(found.pairs)} pairs with any evidence ({found.seconds:.1f} s): "
           f"{results}/similarity.csv and {results}/similarity.html.\nEvidence for a person to read, never a "
           "verdict: nothing in it changes a score.")
