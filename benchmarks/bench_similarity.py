@@ -124,7 +124,8 @@ def synthesize(results: Path, submissions: Path, planted: dict[str, list[Planted
                                                 f"got ..., expected ... ({mistake.name})", diagnosis=mistake.diagnosis,
                                                 visibility=spec.visibility, stage=spec.stage))
                     answers += [Answer(check_id, f"{check_id}.probe({i})", _digest(f"{check_id}:{i}"),
-                                       _digest(f"{mistake.name}:{i}"), f"[{i}.0, ...] ({mistake.name})", f"[{i}.5, ...]")
+                                       _digest(f"{mistake.name}:{i}"), f"[{i}.0, ...] ({mistake.name})",
+                                       f"[{i}.5, ...]")
                                 for i in range(2)]
                 reports.append(ProblemReport(number, modules[number].TITLE, tuple(results_), seed=1,
                                              submission=str(path), sandbox="synthesized",
@@ -202,7 +203,8 @@ def bench_recording(repeats: int, numbers: list[int]) -> None:
         print(f"recording for grade similarity: a whole-course submission with {len(applied)} planted mistakes, "
               f"{len(numbers)} problems, {repeats} gradings each way (medians): {plain:.2f} s without, "
               f"{recording:.2f} s with ({(recording - plain) / plain * 100:+.1f}%); the grader's own CPU "
-              f"{cpu_plain:.2f} s without, {cpu_recording:.2f} s with ({(cpu_recording - cpu_plain) / cpu_plain * 100:+.1f}%); "
+              f"{cpu_plain:.2f} s without, {cpu_recording:.2f} s with "
+              f"({(cpu_recording - cpu_plain) / cpu_plain * 100:+.1f}%); "
               f"{answers} wrong answers recorded")
 
 

@@ -495,7 +495,8 @@ def _grade(student: Path, number: int, seed: int) -> list[ProblemReport]:
         message = (f"grading this submission took longer than its limit of {budget:g} s and was stopped: look "
                    "for very slow or endless loops.")
         return stopped_reports(task, Status.TIMEOUT, message, seconds)
-    raise GraderFault(f"the grading process failed ({kind}): {str(payload).strip().splitlines()[-1] if payload else ''}")
+    last = str(payload).strip().splitlines()[-1] if payload and str(payload).strip() else ""
+    raise GraderFault(f"the grading process failed ({kind}): {last}")
 
 
 def _write_json(path: Path, data: dict) -> None:

@@ -482,6 +482,7 @@ def write_similarity(results: str | Path, *, top: int = TOP, jobs: int | None = 
     _write(results / "similarity.csv", _csv(rows))
     html = _env(True).get_template("similarity.html.j2").render(
         found=found, shown=found.pairs[:top], top=top, known=KNOWN_MISTAKE, token_weight=TOKEN_WEIGHT,
-        common_share=COMMON_SHARE, common_least=COMMON_LEAST, full_match=FULL_MATCH, scale=math.log(max(found.students, 2)))
+        common_share=COMMON_SHARE, common_least=COMMON_LEAST, full_match=FULL_MATCH,
+        scale=math.log(max(found.students, 2)))
     _write(results / "similarity.html", html)
     return found

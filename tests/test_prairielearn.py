@@ -43,7 +43,8 @@ from .submissions import ROOT, build_planted, copy_reference, copy_template, pla
 IMAGE_SCHEMA = {
     "type": "object",
     "properties": {"label": {"type": "string"},
-                   "url": {"type": "string", "pattern": r"^data:image/(png|jpeg|gif|svg\+xml);base64,[A-Za-z0-9+/=]+$"}},
+                   "url": {"type": "string",
+                           "pattern": r"^data:image/(png|jpeg|gif|svg\+xml);base64,[A-Za-z0-9+/=]+$"}},
     "required": ["url"],
     "additionalProperties": False,
 }
@@ -290,7 +291,8 @@ def test_the_fragment_holds_questions_course_files_and_the_image(fragment):
     dockerfile = (image / "Dockerfile").read_text()
     assert "bubblewrap" in dockerfile and f"COPY mbd-prairielearn {ENTRYPOINT}" in dockerfile
     instructions = [line for line in dockerfile.splitlines() if line.strip() and not line.startswith("#")]
-    assert [line for line in instructions if line.startswith(("COPY", "ADD"))] == [f"COPY mbd-prairielearn {ENTRYPOINT}"]
+    copied = [line for line in instructions if line.startswith(("COPY", "ADD"))]
+    assert copied == [f"COPY mbd-prairielearn {ENTRYPOINT}"]
     assert not [line for line in instructions if "reference" in line or ".whl" in line]
     entry = image / "mbd-prairielearn"
     assert entry.stat().st_mode & 0o111 == 0o111
