@@ -17,7 +17,8 @@ question's data) and ``serverFilesCourse/`` (the course files the question lists
   every user but root, and runs ``grade prairielearn --run /grade``.
 
 A job is graded as a batch grades a student: one worker with a warm sandboxed process, the problem's own time
-bound (``grader.batch.run.default_student_timeout``), a fresh seed each submission.  What results.json says
+bound (``grader.batch.run.default_student_timeout``), a fresh seed each submission.  Whose fault a failure is, is
+``grader.faults``' table, as for ``grade``, ``grade batch`` and Gradescope.  What results.json says
 (``results_json``):
 
 * a graded submission: ``gradable: true``, ``score`` the fraction of the problem's points, one test per public
@@ -279,6 +280,15 @@ def grader_faults(reports: list[ProblemReport]) -> list[str]:
     return [r.check_id for report in reports for r in report.results if r.status is Status.GRADER_ERROR]
 
 
+def _whose(reports: list[ProblemReport]) -> tuple[bool, bool]:
+    """``(graded, loaded)`` by ``grader.faults``' table: a fault of the grader's makes the reports no grade; the
+    loader's (the student's) makes them a submission that could not be loaded."""
+    from .faults import LOADER, faults_in
+
+    faults = faults_in(reports)
+    return all(fault.student for fault in faults), LOADER not in faults
+
+
 def _fmt(x: float) -> str:
     return f"{x:g}"
 
@@ -391,13 +401,13 @@ def results_json(reports: list[ProblemReport], *, withheld_ids: set[str] | None 
     bytes: a submission that could not be loaded, or that the grader could not grade in full, is not gradable."""
     from .gradescope import withheld_check_ids
 
-    loaded = [r for r in reports if r.load_error]
-    if loaded:
-        return unloadable_results(loaded[0].load_error)
-    faults = grader_faults(reports)
-    if faults:
+    graded, loaded = _whose(reports)
+    if not graded:  # the grader's fault first: never the student's zero
+        faults = grader_faults(reports)
         return fault_results(f"the grader could not run {len(faults)} check{'s' if len(faults) != 1 else ''} "
                              f"({', '.join(faults)})")
+    if not loaded:
+        return unloadable_results(next(r.load_error for r in reports if r.load_error))
     if withheld_ids is None:
         withheld_ids = withheld_check_ids([r.problem for r in reports])
     earned = sum(r.score for report in reports for r in report.results)
@@ -508,8 +518,12 @@ def _write_json(path: Path, data: dict) -> None:
 
 def run(job: str | Path = JOB_ROOT, *, seed: int | None = None) -> int:
     """Grade the job folder ``job`` (``student/``, ``tests/``, ``data/``) and write ``job/results/results.json``;
-    returns the exit code (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed)."""
+    returns the exit code (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed).  Whose fault a failure is,
+    is ``grader.faults``' table: the student's is graded (a submission that cannot be loaded is not gradable, with
+    the reason), the grader's is never a grade (``fault_results``)."""
+    from .faults import fault_of, faults_in
     from .gradescope import check_installation, find_student
+    from .terminal import say
 
     job = Path(job)
     results_path = job / "results" / "results.json"
@@ -519,27 +533,31 @@ def run(job: str | Path = JOB_ROOT, *, seed: int | None = None) -> int:
         number = _problem_of(job / "tests")
         print(check_installation([number]))
         student = find_student(job / "student")
-        print(f"grading {student} on problem {number} with seed {seed}")
+        say(f"grading {student} on problem {number} with seed {seed}", sys.stdout)
         reports = _grade(student, number, seed)
         data = results_json(reports, seed=seed)
-    except GraderFault as exc:
-        print(f"grader fault: {exc}")
-        _write_json(results_path, fault_results(str(exc)))
-        return EXIT_FAULT
-    except Exception as exc:  # noqa: BLE001 - anything unforeseen is the grader's fault, never the student's
-        traceback.print_exc(file=sys.stdout)
-        _write_json(results_path, fault_results(f"internal error of the grader ({type(exc).__name__}); the "
-                                                "course staff have its log"))
-        return EXIT_FAULT
+    except Exception as exc:  # noqa: BLE001 - whose fault it is, is the table's: the unforeseen is the grader's
+        fault = fault_of(exc)
+        if fault.student:  # the submission cannot be loaded
+            _write_json(results_path, unloadable_results(str(exc)))
+            return fault.autograder_exit
+        if isinstance(exc, GraderFault):
+            say(f"grader fault: {exc}", sys.stdout)
+            reason = str(exc)
+        else:
+            traceback.print_exc(file=sys.stdout)
+            reason = f"internal error of the grader ({type(exc).__name__}); the course staff have its log"
+        _write_json(results_path, fault_results(reason))
+        return fault.autograder_exit
     _write_json(results_path, data)
     for report in reports:
-        print(f"problem {report.problem}: {report.score:g} / {report.auto_max_score:g} ({report.sandbox}) in "
-              f"{time.monotonic() - start:.1f} s")
+        say(f"problem {report.problem}: {report.score:g} / {report.auto_max_score:g} ({report.sandbox}) in "
+            f"{time.monotonic() - start:.1f} s" + (f"; not loaded: {report.load_error}" if report.load_error else ""),
+            sys.stdout)
     faults = grader_faults(reports)
     if faults:
         print(f"grader errors (the submission was not graded and costs the student nothing): {faults}")
-        return EXIT_FAULT
-    return EXIT_GRADED
+    return max((fault.autograder_exit for fault in faults_in(reports)), default=EXIT_GRADED)
 
 
 def main(argv: list[str] | None = None) -> int:
