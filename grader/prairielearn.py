@@ -491,7 +491,7 @@ def _grade(student: Path, number: int, seed: int) -> list[ProblemReport]:
 
     limits = Limits()
     budget = default_student_timeout(limits, [number])
-    task = Task(Entry("student", student, submission_hash(student)), (number,), seed=seed)
+    task = Task(Entry("student", student, submission_hash(student), seed=seed), (number,))
     slot = Slot(multiprocessing.get_context("spawn"), 1, limits, sandbox_mode(), (number,))
     try:
         kind, payload, seconds = slot.outcome(task, budget)

@@ -34,13 +34,6 @@ STOP_GRACE = 3.0
 class Task:
     entry: Entry
     problems: tuple[int, ...]
-    #: the seed of the randomized checks: the student's own (``Entry.seed``, fixed by the content) unless given (a
-    #: fresh one per submission, as PrairieLearn's grader draws)
-    seed: int | None = None
-
-    @property
-    def inputs_seed(self) -> int:
-        return self.entry.seed if self.seed is None else self.seed
 
 
 def _die_with_parent(parent: int) -> None:
@@ -108,7 +101,7 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
             if task is None:
                 return
             try:
-                reports = grade_submission(task.entry.path, list(task.problems), seed=task.inputs_seed,
+                reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed,
                                            limits=limits, zygote=zygote, record_answers=True)
                 conn.send(("ok", reports))
             except GraderFault as exc:  # this student is not recorded and is retried next run
@@ -323,7 +316,7 @@ def stopped_reports(task: Task, status: Status, message: str, seconds: float) ->
                         visibility=spec.visibility, stage=spec.stage)
             for spec in checks_of(module)
         )
-        reports.append(ProblemReport(number, module.TITLE, results, seed=task.inputs_seed,
+        reports.append(ProblemReport(number, module.TITLE, results, seed=task.entry.seed,
                                      duration=seconds / len(task.problems), submission=str(task.entry.path),
                                      grader_version=__version__))
     return reports
