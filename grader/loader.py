@@ -16,6 +16,7 @@ where); the report says which name went where and which names a problem needs th
 from __future__ import annotations
 
 import ast
+import errno
 import hashlib
 import json
 import os
@@ -176,20 +177,195 @@ def _refuse_links(links: list[str]) -> None:
                               "Put the files themselves in their place.")
 
 
-def _read_regular(name: str, dir_fd: int, limit: int) -> bytes | None:
-    """The bytes of the regular file ``name`` in ``dir_fd``, never through a link (None for anything else: a
-    link, a FIFO, a device)."""
-    try:
-        fd = os.open(name, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC, dir_fd=dir_fd)
-    except OSError:
+# ------------------------------------------------------------------------------------------ reading a folder
+#
+# Where the platform has them (Linux, macOS), a folder is read relative to an open descriptor of its own: each
+# entry is opened with ``dir_fd`` and ``O_NOFOLLOW`` (a folder with ``O_DIRECTORY`` too), so that no link is
+# followed, inside the submission or at its root, and nothing can be swapped between the check of an entry and its
+# opening: what is read is the entry that was listed.
+#
+# Windows has none of these (no descriptor of a folder, no ``dir_fd``, no ``O_NOFOLLOW``).  There each entry is
+# checked with ``os.lstat`` before it is opened, and a symbolic link, a junction or another reparse point that
+# names another file is refused as a link is on Linux; a file is opened by its path and read only when the file
+# opened is the file checked (its file number, ``st_ino``), so that a file swapped for a link after its check is
+# left out; a folder is listed by its path and its entries kept only when, after the listing, it is still the
+# folder checked and still no link.  What is weaker there: a process that swaps a folder of the submission for a
+# junction while the grader lists it, and back before the folder is checked again, could have a file under the
+# junction's target read as the student's.  That is acceptable where this way runs: the student kit's portable
+# mode, the student's own files and code on the student's own machine, read with the student's own rights (a
+# file the grader could be tricked into reading there is one the student may read anyway), never instructor
+# grading, which runs on Linux.
+
+#: Windows's reparse points that name another file (symbolic links, junctions, WSL's links: the tags for which
+#: ``IsReparseTagNameSurrogate`` holds), never followed; the others (a file that OneDrive keeps online, a
+#: deduplicated file) are files as any other
+_NAME_SURROGATE = 0x20000000
+#: the reparse tag of a junction (IO_REPARSE_TAG_MOUNT_POINT)
+_JUNCTION = 0xA0000003
+
+
+def _relative_reads() -> bool:
+    """Whether this platform reads a folder relative to a descriptor of its own, never through a link (Linux,
+    macOS: ``dir_fd`` for open, stat and readlink, ``scandir`` of a descriptor, ``O_NOFOLLOW``, ``O_DIRECTORY``)."""
+    return (hasattr(os, "O_NOFOLLOW") and hasattr(os, "O_DIRECTORY") and os.scandir in os.supports_fd
+            and {os.open, os.stat, os.readlink} <= os.supports_dir_fd)
+
+
+def _read_flags() -> int:
+    """How a submission's file is opened, as far as the platform can: never through a link, never waiting for a
+    writer (a FIFO), not inherited by a child, and in binary (from a descriptor that Windows opens in text mode,
+    ``\\r\\n`` is read as ``\\n`` and the byte 0x1a ends the file)."""
+    flags = os.O_RDONLY
+    for name in ("O_NOFOLLOW", "O_NONBLOCK", "O_CLOEXEC", "O_BINARY", "O_NOINHERIT"):
+        flags |= getattr(os, name, 0)
+    return flags
+
+
+def _link_kind(info: os.stat_result) -> str | None:
+    """What kind of link an entry is, as ``os.lstat`` describes it: "symbolic link", "junction" or (another
+    reparse point of Windows that names another file) "link"; None for anything else."""
+    if stat.S_ISLNK(info.st_mode):
+        return "symbolic link"
+    if not getattr(info, "st_file_attributes", 0) & stat.FILE_ATTRIBUTE_REPARSE_POINT:
         return None
+    tag = getattr(info, "st_reparse_tag", 0)
+    if tag == _JUNCTION:
+        return "junction"
+    return "link" if tag & _NAME_SURROGATE else None
+
+
+def _same_file(checked: os.stat_result, opened: os.stat_result) -> bool:
+    """Whether what was opened is what was checked: the same file number (``st_ino``).  Where the file system
+    gives none (0), nothing can be told, and they are taken to be the same."""
+    return not checked.st_ino or not opened.st_ino or checked.st_ino == opened.st_ino
+
+
+def _read_open(fd: int, limit: int, checked: os.stat_result | None = None) -> bytes | None:
+    """The bytes (at most ``limit`` + 1) of the open ``fd`` when it is a regular file (and ``checked``'s, when
+    given); None otherwise.  Closes ``fd``."""
     try:
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
+        opened = os.fstat(fd)
+        if not stat.S_ISREG(opened.st_mode) or (checked is not None and not _same_file(checked, opened)):
             return None
         with os.fdopen(os.dup(fd), "rb") as handle:
             return handle.read(limit + 1)
     finally:
         os.close(fd)
+
+
+@dataclass(frozen=True)
+class _Entry:
+    """One entry of a folder as a reader sees it: its name, its kind ("link", "folder" or "file": a file may
+    still turn out not to be a regular one), a link's target, and how ``os.lstat`` described it (path reads)."""
+
+    name: str
+    kind: str
+    target: str = ""
+    info: os.stat_result | None = None
+
+
+class _AtDescriptors:
+    """Reading a folder relative to a descriptor of its own (Linux, macOS): a folder is an open descriptor."""
+
+    @staticmethod
+    def root(root: Path) -> int:
+        return os.open(root, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC)
+
+    @staticmethod
+    def entries(folder: int) -> list[_Entry]:
+        with os.scandir(folder) as listing:
+            found = sorted(listing, key=lambda e: e.name)
+        return [_AtDescriptors._entry(folder, entry) for entry in found]
+
+    @staticmethod
+    def _entry(folder: int, entry: os.DirEntry) -> _Entry:
+        if entry.is_symlink():
+            try:
+                target = _printable(os.readlink(entry.name, dir_fd=folder))
+            except OSError:
+                target = "?"
+            return _Entry(entry.name, "link", target)
+        return _Entry(entry.name, "folder" if entry.is_dir(follow_symlinks=False) else "file")
+
+    @staticmethod
+    def enter(folder: int, entry: _Entry) -> int:
+        return os.open(entry.name, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC, dir_fd=folder)
+
+    @staticmethod
+    def read(folder: int, entry: _Entry, limit: int) -> bytes | None:
+        try:
+            return _read_open(os.open(entry.name, _read_flags(), dir_fd=folder), limit)
+        except OSError:
+            return None
+
+    @staticmethod
+    def leave(folder: int) -> None:
+        os.close(folder)
+
+
+class _ByPath:
+    """Reading a folder by the paths of its entries, each checked with ``os.lstat`` before it is used (Windows;
+    see above for what this does not guard against, and why that is acceptable there): a folder is its path and
+    how ``os.lstat`` described it when it was checked."""
+
+    @staticmethod
+    def _folder(path: Path) -> tuple[Path, os.stat_result]:
+        info = os.lstat(path)
+        kind = _link_kind(info)
+        if kind is not None:
+            raise OSError(errno.ELOOP, f"it is a {kind}, which the grader never follows")
+        if not stat.S_ISDIR(info.st_mode):
+            raise OSError(errno.ENOTDIR, "it is not a folder")
+        return path, info
+
+    @staticmethod
+    def root(root: Path) -> tuple[Path, os.stat_result]:
+        return _ByPath._folder(root)
+
+    @staticmethod
+    def entries(folder: tuple[Path, os.stat_result]) -> list[_Entry]:
+        path, checked = folder
+        with os.scandir(path) as listing:
+            names = sorted(entry.name for entry in listing)
+        again = os.lstat(path)  # the folder listed was the folder checked, and is still no link
+        if _link_kind(again) is not None or not stat.S_ISDIR(again.st_mode) or not _same_file(checked, again):
+            raise OSError(errno.EIO, "it was replaced while it was read")
+        return [_ByPath._entry(path, name) for name in names]
+
+    @staticmethod
+    def _entry(folder: Path, name: str) -> _Entry:
+        try:
+            info = os.lstat(folder / name)
+        except OSError:  # gone since the listing, or a name the system cannot look up: left out as unreadable
+            return _Entry(name, "file")
+        kind = _link_kind(info)
+        if kind is not None:
+            try:
+                target = _printable(os.readlink(folder / name))
+            except (OSError, ValueError):
+                target = "?"
+            return _Entry(name, "link", target if kind == "symbolic link" else f"{target} (a {kind})", info)
+        return _Entry(name, "folder" if stat.S_ISDIR(info.st_mode) else "file", info=info)
+
+    @staticmethod
+    def enter(folder: tuple[Path, os.stat_result], entry: _Entry) -> tuple[Path, os.stat_result]:
+        path, info = folder[0] / entry.name, entry.info
+        if info is None or not stat.S_ISDIR(info.st_mode):
+            raise OSError(errno.ENOTDIR, "it is not a folder")
+        return path, info
+
+    @staticmethod
+    def read(folder: tuple[Path, os.stat_result], entry: _Entry, limit: int) -> bytes | None:
+        if entry.info is None or not stat.S_ISREG(entry.info.st_mode):  # a FIFO, a device: never opened
+            return None
+        try:
+            return _read_open(os.open(folder[0] / entry.name, _read_flags()), limit, entry.info)
+        except OSError:
+            return None
+
+    @staticmethod
+    def leave(folder) -> None:
+        pass
 
 
 def _is_submission_file(name: str) -> bool:
@@ -218,18 +394,18 @@ def _recognised(root: Path, wrapped: bool = True) -> bool:
 
 
 def _collect_dir(root: Path) -> tuple[dict[str, bytes], list[str]]:
-    """The student's files under ``root`` and notes on what was left out.  Never follows a symbolic link (a
-    link is refused), reads regular files only, and stops at ``MAX_ENTRIES`` entries."""
+    """The student's files under ``root`` and notes on what was left out.  Never follows a link (a link is
+    refused), reads regular files only, and stops at ``MAX_ENTRIES`` entries.  Read relative to descriptors
+    where the platform can (``_AtDescriptors``), else by path (``_ByPath``)."""
     files: dict[str, bytes] = {}
     notes: list[str] = []
     links: list[str] = []
     total = seen = 0
+    reader = _AtDescriptors if _relative_reads() else _ByPath
 
-    def walk(dir_fd: int, prefix: str, depth: int) -> None:
+    def walk(folder, prefix: str, depth: int) -> None:
         nonlocal total, seen
-        with os.scandir(dir_fd) as listing:
-            entries = sorted(listing, key=lambda e: e.name)
-        for entry in entries:
+        for entry in reader.entries(folder):
             seen += 1
             if seen > MAX_ENTRIES or depth > MAX_DEPTH:
                 raise SubmissionError(f"{root} holds more than {MAX_ENTRIES} entries or folders nested deeper than "
@@ -241,25 +417,25 @@ def _collect_dir(root: Path) -> tuple[dict[str, bytes], list[str]]:
                 notes.append(f"left out {_printable(rel)}: its name is not valid UTF-8 (rename it with plain "
                              "letters, digits and _)")
                 continue
-            if entry.is_symlink():
-                target = os.readlink(entry.name, dir_fd=dir_fd)
-                links.append(f"{rel} → {_printable(target)}")
+            if entry.kind == "link":
+                links.append(f"{rel} → {entry.target}")
                 continue
-            if entry.is_dir(follow_symlinks=False):
+            if entry.kind == "folder":
                 try:
-                    sub = os.open(entry.name, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC,
-                                  dir_fd=dir_fd)
+                    sub = reader.enter(folder, entry)
                 except OSError as exc:
                     notes.append(f"left out the folder {rel}: it cannot be read ({exc.strerror})")
                     continue
                 try:
                     walk(sub, rel + "/", depth + 1)
+                except OSError as exc:
+                    notes.append(f"left out the folder {rel}: it cannot be read ({exc.strerror})")
                 finally:
-                    os.close(sub)
+                    reader.leave(sub)
                 continue
             if PurePosixPath(entry.name).suffix not in KEPT_SUFFIXES:
                 continue
-            data = _read_regular(entry.name, dir_fd, MAX_BYTES)
+            data = reader.read(folder, entry, MAX_BYTES)
             if data is None:
                 notes.append(f"left out {rel}: it is not a regular file that can be read")
                 continue
@@ -270,13 +446,15 @@ def _collect_dir(root: Path) -> tuple[dict[str, bytes], list[str]]:
             files[rel] = data
 
     try:
-        top = os.open(root, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC)
+        top = reader.root(root)
     except OSError as exc:
         raise SubmissionError(f"{root} cannot be read: {exc.strerror}") from exc
     try:
         walk(top, "", 0)
+    except OSError as exc:
+        raise SubmissionError(f"{root} cannot be read: {exc.strerror}") from exc
     finally:
-        os.close(top)
+        reader.leave(top)
     _refuse_links(links)
     return files, notes
 
@@ -526,14 +704,23 @@ def problem_notes(submission: Submission, number: int) -> tuple[str, ...]:
 
 
 def _single_file(source: Path) -> dict[str, bytes]:
+    """A submission of one file (a notebook), never read through a link: opened with ``O_NOFOLLOW``, or where the
+    platform reads by path (Windows), only when the file opened is the one ``os.lstat`` saw, which was no link."""
+    checked = None
     try:
-        fd = os.open(source, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+        if not _relative_reads():
+            checked = os.lstat(source)
+            if _link_kind(checked) is not None or not stat.S_ISREG(checked.st_mode):
+                raise SubmissionError(f"{source} is not a regular file")
+        fd = os.open(source, _read_flags())
     except OSError as exc:
         raise SubmissionError(f"{source} cannot be read: {exc.strerror}") from exc
-    with os.fdopen(fd, "rb") as handle:
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            raise SubmissionError(f"{source} is not a regular file")
-        data = handle.read(MAX_BYTES + 1)
+    try:
+        data = _read_open(fd, MAX_BYTES, checked)
+    except OSError as exc:
+        raise SubmissionError(f"{source} cannot be read: {exc.strerror}") from exc
+    if data is None:
+        raise SubmissionError(f"{source} is not a regular file")
     if len(data) > MAX_BYTES:
         raise SubmissionError(f"{source.name} is larger than {MAX_BYTES // 2**20} MB")
     return {source.name: data}
@@ -542,9 +729,13 @@ def _single_file(source: Path) -> dict[str, bytes]:
 def _student_files(source: Path) -> tuple[dict[str, bytes], list[str]]:
     """The student's files (name -> bytes) and notes on what was left out."""
     shown = os.path.abspath(source)
-    if source.is_symlink():
-        raise SubmissionError(f"{shown} is a symbolic link, which the grader never follows: submit the folder or "
-                              "file itself")
+    try:
+        link = _link_kind(os.lstat(source))
+    except (OSError, ValueError):
+        link = None
+    if link is not None:
+        raise SubmissionError(f"{shown} is a {link}, which the grader never follows: submit the folder or file "
+                              "itself")
     if not source.exists():
         raise SubmissionError(f"{shown} does not exist. {FIX}")
     notes: list[str] = []

@@ -10,6 +10,8 @@ import tempfile
 import warnings
 import zipfile
 from pathlib import Path
+from types import SimpleNamespace
+from unittest import mock
 
 import pytest
 from hypothesis import HealthCheck, event, given, settings
@@ -38,6 +40,21 @@ def odd_file(folder: Path) -> Path:
     return folder
 
 
+@pytest.fixture(params=["descriptors", "paths"])
+def reads(request, monkeypatch):
+    """Each way the loader reads a folder: relative to descriptors of its folders (Linux, macOS), and by path,
+    each entry checked with ``os.lstat`` before it is opened and opened without ``O_NOFOLLOW``, ``O_NONBLOCK`` or
+    ``O_CLOEXEC``, as on Windows (which lacks them and ``dir_fd``)."""
+    if request.param == "descriptors":
+        if not loader._relative_reads():
+            pytest.skip("this platform cannot read a folder relative to a descriptor")
+        monkeypatch.setattr(loader, "_relative_reads", lambda: True)
+    else:
+        monkeypatch.setattr(loader, "_relative_reads", lambda: False)
+        monkeypatch.setattr(loader, "_read_flags", lambda: os.O_RDONLY)
+    return request.param
+
+
 def grade_cli(capsys, *argv):
     code = main(["problem-6", *argv])
     captured = capsys.readouterr()
@@ -47,7 +64,7 @@ def grade_cli(capsys, *argv):
 # ------------------------------------------------------------------------------------------ names and links
 
 
-def test_a_file_name_that_is_not_utf8_is_left_out_with_a_note(tmp_path, capsys):
+def test_a_file_name_that_is_not_utf8_is_left_out_with_a_note(reads, tmp_path, capsys):
     submission = odd_file(copy_reference(tmp_path / "pkg"))
     code, out, err = grade_cli(capsys, "--submission", str(submission), "--seed", "3")
     assert "Traceback" not in out + err
@@ -55,7 +72,7 @@ def test_a_file_name_that_is_not_utf8_is_left_out_with_a_note(tmp_path, capsys):
     assert "left out caf\\xe9.py: its name is not valid UTF-8" in out
 
 
-def test_a_submission_that_is_a_link_is_refused_not_followed(tmp_path, capsys):
+def test_a_submission_that_is_a_link_is_refused_not_followed(reads, tmp_path, capsys):
     link = tmp_path / "mywork"
     link.symlink_to(copy_reference(tmp_path / "elsewhere"))  # followed, it would grade the reference: 10/10
     code, out, _ = grade_cli(capsys, "--submission", str(link))
@@ -64,7 +81,7 @@ def test_a_submission_that_is_a_link_is_refused_not_followed(tmp_path, capsys):
     assert "0 / 10 points" in out
 
 
-def test_links_inside_are_refused_and_never_copied(tmp_path):
+def test_links_inside_are_refused_and_never_copied(reads, tmp_path):
     submission = copy_template(tmp_path / "pkg")
     (submission / "rotations.py").unlink()
     (submission / "rotations.py").symlink_to(Path(__file__).resolve().parents[1] / "reference" / "rotations.py")
@@ -74,12 +91,139 @@ def test_links_inside_are_refused_and_never_copied(tmp_path):
     assert report.score == 0 and all(r.status is Status.ERROR and not r.message for r in report.results)
 
 
-def test_a_fifo_named_like_a_module_does_not_block_the_loader(tmp_path):
+def test_a_fifo_named_like_a_module_does_not_block_the_loader(reads, tmp_path):
     submission = copy_reference(tmp_path / "pkg")
     os.mkfifo(submission / "stuck.py")  # reading it would wait for a writer forever
     loaded = materialize(submission, tmp_path)
     assert any("left out stuck.py: it is not a regular file" in note for note in loaded.notes)
     loader.cleanup(loaded)
+
+
+def _own_and_outside(tmp_path: Path) -> tuple[Path, Path]:
+    """A work folder (the reference, with a folder ``extra`` of its own) and, outside it, a folder whose files a
+    link could make the grader read: each file of either says whose it is."""
+    work = copy_reference(tmp_path / "work")
+    (work / "extra").mkdir()
+    (work / "extra" / "notes.py").write_text("WHOSE = 'own'\n")
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "notes.py").write_text("WHOSE = 'beyond the work folder'\n")
+    (outside / "rotations.py").write_text("WHOSE = 'beyond the work folder'\n")
+    return work, outside
+
+
+def _read_from(loaded) -> str:
+    return "".join((loaded.path / name).read_text() for name in loaded.files)
+
+
+def test_a_file_swapped_for_a_link_after_its_check_is_never_read_through_it(reads, tmp_path, monkeypatch):
+    """The file the loader opens is the file it checked: one swapped for a link in between is left out, never
+    read through the link (``O_NOFOLLOW`` where the platform has it, else the file number of what was opened
+    against that of what was checked)."""
+    work, outside = _own_and_outside(tmp_path)
+    real_open = os.open
+    swapped = []
+
+    def open_after_a_swap(path, flags, *args, **kwargs):
+        if os.fspath(path).endswith("rotations.py") and not swapped:
+            (work / "rotations.py").unlink()
+            (work / "rotations.py").symlink_to(outside / "rotations.py")
+            swapped.append(path)
+        return real_open(path, flags, *args, **kwargs)
+
+    monkeypatch.setattr(os, "open", open_after_a_swap)
+    loaded = materialize(work, tmp_path)
+    monkeypatch.setattr(os, "open", real_open)
+    try:
+        assert swapped
+        assert "left out rotations.py: it is not a regular file that can be read" in loaded.notes
+        assert "rotations.py" not in loaded.files and "beyond the work folder" not in _read_from(loaded)
+        assert "own" in (loaded.path / "extra" / "notes.py").read_text()
+    finally:
+        loader.cleanup(loaded)
+
+
+def test_a_folder_swapped_for_a_link_while_it_is_listed_is_never_read_through_it(reads, tmp_path, monkeypatch):
+    """A folder of the submission swapped for a link while the loader lists it: relative to descriptors, the
+    folder opened is listed and read (the student's own files); by path, the folder is checked again after its
+    listing and left out.  Neither reads a file through the link."""
+    work, outside = _own_and_outside(tmp_path)
+    extra = os.lstat(work / "extra").st_ino
+    real_scandir = os.scandir
+    swapped = []
+
+    def scandir_after_a_swap(path=None):
+        folder = os.fstat(path) if isinstance(path, int) else os.lstat(path)
+        if folder.st_ino == extra and not swapped:
+            (work / "extra").rename(tmp_path / "moved")
+            (work / "extra").symlink_to(outside)
+            swapped.append(path)
+        return real_scandir(path)
+
+    monkeypatch.setattr(os, "scandir", scandir_after_a_swap)
+    loaded = materialize(work, tmp_path)
+    monkeypatch.setattr(os, "scandir", real_scandir)
+    try:
+        assert swapped
+        assert "beyond the work folder" not in _read_from(loaded)
+        if reads == "descriptors":
+            assert "own" in (loaded.path / "extra" / "notes.py").read_text()
+        else:
+            assert "left out the folder extra: it cannot be read (it was replaced while it was read)" in loaded.notes
+            assert "extra/notes.py" not in loaded.files
+    finally:
+        loader.cleanup(loaded)
+
+
+def _described(mode: int, attributes: int = 0, tag: int = 0) -> SimpleNamespace:
+    """How ``os.lstat`` describes an entry on Windows: its mode, attributes and reparse tag."""
+    return SimpleNamespace(st_mode=mode, st_ino=1, st_file_attributes=attributes, st_reparse_tag=tag)
+
+
+def test_what_windows_calls_a_link_is_refused_as_a_link():
+    """Symbolic links, junctions and every other reparse point that names another file are links; a reparse point
+    that does not (a file OneDrive keeps online) is a file."""
+    reparse, folder = stat.FILE_ATTRIBUTE_REPARSE_POINT, stat.FILE_ATTRIBUTE_DIRECTORY
+    assert loader._link_kind(_described(stat.S_IFLNK | 0o777, reparse, 0xA000000C)) == "symbolic link"
+    assert loader._link_kind(_described(stat.S_IFDIR | 0o777, reparse | folder, 0xA0000003)) == "junction"
+    assert loader._link_kind(_described(stat.S_IFREG | 0o666, reparse, 0xA000001D)) == "link"  # WSL's
+    assert loader._link_kind(_described(stat.S_IFREG | 0o666, reparse, 0x9000001A)) is None  # OneDrive's
+    assert loader._link_kind(_described(stat.S_IFREG | 0o666)) is None
+    assert loader._link_kind(os.lstat(__file__)) is None
+
+
+class _Junction:
+    """A folder as ``os.lstat`` describes a junction on Windows (the rest as the folder's own description)."""
+
+    st_file_attributes = stat.FILE_ATTRIBUTE_DIRECTORY | stat.FILE_ATTRIBUTE_REPARSE_POINT
+    st_reparse_tag = 0xA0000003
+
+    def __init__(self, info):
+        self._info = info
+
+    def __getattr__(self, name):
+        return getattr(self._info, name)
+
+
+def test_junctions_are_refused_inside_and_at_the_root(tmp_path, monkeypatch):
+    """Read by path, as on Windows: a junction inside the submission is refused with the other links, and a
+    submission that is a junction is refused as a symbolic link is (to ``Path.is_symlink`` and ``os.DirEntry`` a
+    junction is no symbolic link, and a listing shows it as a folder)."""
+    work, _ = _own_and_outside(tmp_path)
+    real_lstat = os.lstat
+    junctions = {str(work / "extra"), str(tmp_path / "mywork")}
+    target = "C:\\Users\\someone\\elsewhere"
+    monkeypatch.setattr(loader, "_relative_reads", lambda: False)
+    monkeypatch.setattr(os, "lstat", lambda path, **kw: _Junction(real_lstat(path, **kw))
+                        if os.fspath(path) in junctions else real_lstat(path, **kw))
+    monkeypatch.setattr(os, "readlink", lambda path, **kw: target)
+    with pytest.raises(SubmissionError) as refused:
+        materialize(work, tmp_path)
+    assert (f"the submission holds symbolic links, which the grader never follows: extra → {target} (a junction)"
+            in str(refused.value))
+    copy_reference(tmp_path / "mywork")
+    with pytest.raises(SubmissionError, match="mywork is a junction, which the grader never follows"):
+        materialize(tmp_path / "mywork", tmp_path)
 
 
 # ------------------------------------------------------------------------------------------ said once
@@ -339,22 +483,69 @@ def test_any_folder_is_loaded_or_refused_with_a_reason(entries):
     with tempfile.TemporaryDirectory() as scratch:
         scratch = Path(scratch)
         root = scratch / "work"
-        root.mkdir()
-        for parts, kind, data in entries:
-            if any(part in ("", ".", "..") or "/" in part for part in parts):
-                continue  # not a name a folder can hold
-            path = root.joinpath(*parts)
-            try:
-                path.parent.mkdir(parents=True, exist_ok=True)
-                if kind == "folder":
-                    path.mkdir(exist_ok=True)
-                elif kind == "link":
-                    path.symlink_to("/etc")
-                else:
-                    path.write_bytes(data)
-            except OSError:  # the file system refused it (a name too long, a file where a folder goes)
-                continue
+        _build_folder(root, entries)
         _loads_or_refuses(root, scratch)
+
+
+def _build_folder(root: Path, entries) -> None:
+    root.mkdir()
+    for parts, kind, data in entries:
+        if any(part in ("", ".", "..") or "/" in part for part in parts):
+            continue  # not a name a folder can hold
+        path = root.joinpath(*parts)
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            if kind == "folder":
+                path.mkdir(exist_ok=True)
+            elif kind == "link":
+                path.symlink_to("/etc")
+            else:
+                path.write_bytes(data)
+        except OSError:  # the file system refused it (a name too long, a file where a folder goes)
+            continue
+
+
+def _read_as(root: Path, relative: bool):
+    """The student's files and notes as the loader reads ``root`` one way or the other, or why it refuses."""
+    with mock.patch.object(loader, "_relative_reads", lambda: relative):
+        try:
+            return loader._student_files(root)
+        except SubmissionError as exc:
+            return str(exc)
+
+
+@pytest.mark.skipif(not loader._relative_reads(), reason="this platform cannot read relative to a descriptor")
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(entries=st.lists(_ENTRY, min_size=1, max_size=8))
+def test_a_folder_read_by_path_is_read_as_relative_to_descriptors(entries):
+    """Both ways of reading a folder (relative to descriptors, by path as on Windows) keep the same files, leave
+    out the same with the same notes, and refuse the same links with the same message."""
+    with tempfile.TemporaryDirectory() as scratch:
+        root = Path(scratch) / "work"
+        _build_folder(root, entries)
+        by_descriptors = _read_as(root, True)
+        event("refused" if isinstance(by_descriptors, str) else "loaded")
+        assert _read_as(root, False) == by_descriptors
+
+
+@pytest.mark.skipif(not loader._relative_reads(), reason="this platform cannot read relative to a descriptor")
+def test_a_work_folder_read_by_path_is_read_as_relative_to_descriptors(tmp_path):
+    """A work folder with what students' folders hold (folders in folders, a notebook, hidden and ignored folders,
+    a file named in bytes that are not UTF-8, a FIFO, files of other kinds) is read alike both ways."""
+    work = odd_file(copy_reference(tmp_path / "work"))
+    (work / "lib" / "deeper").mkdir(parents=True)
+    (work / "lib" / "deeper" / "helpers.py").write_text("H = 1\r\n")
+    (work / "lib" / "data.csv").write_text("1,2\n")
+    (work / ".ipynb_checkpoints").mkdir()
+    (work / ".ipynb_checkpoints" / "problem_06-checkpoint.ipynb").write_text("{}")
+    (work / "__pycache__").mkdir()
+    (work / "problem_06.ipynb").write_text(json.dumps({"cells": [], "metadata": {}, "nbformat": 4,
+                                                       "nbformat_minor": 5}))
+    os.mkfifo(work / "lib" / "stuck.py")
+    files, notes = _read_as(work, True)
+    assert "lib/deeper/helpers.py" in files and "problem_06.ipynb" in files and "lib/data.csv" not in files
+    assert any("stuck.py" in note for note in notes) and any("caf\\xe9.py" in note for note in notes)
+    assert _read_as(work, False) == (files, notes)
 
 
 def test_reading_a_notebook_prints_no_warning_that_quotes_its_cells(tmp_path):
