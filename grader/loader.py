@@ -513,14 +513,32 @@ def _shown_name(name: str) -> str:
     return name if len(name) <= 60 else f"{name[:40]}…{name[-12:]} ({len(name.encode())} bytes)"
 
 
+#: a name that Windows cannot give a file: one of its reserved characters (``:`` among them, which makes ``D:``
+#: a drive and ``a:b`` a stream of the file ``a``) or a control character, a dot or a space at its end (dropped
+#: there), or a device's name with any extension (``con.py``, ``nul.txt``: a write to it reaches the device)
+_NOT_A_WINDOWS_NAME = re.compile(r'[<>:"|?*\\\x00-\x1f]|[. ]$|^(con|prn|aux|nul|com\d|lpt\d)(\.|$)', re.IGNORECASE)
+
+
+def _windows_names() -> bool:
+    """Whether the submission is laid out on Windows, whose names are narrower than a zip archive's."""
+    return os.name == "nt"
+
+
 def _check_names(files: dict[str, bytes]) -> None:
     """Refuse (``SubmissionError``, one reason) the names that cannot be laid over the template: a file or folder
     name longer than ``MAX_NAME_BYTES``, a path longer than ``MAX_PATH_BYTES`` or deeper than ``MAX_DEPTH``, a
-    name that is both a file and a folder of the submission (``foo.py`` and ``foo.py/bar.py``), and a folder
-    where the template has a file (a folder ``rotations.py/``)."""
+    name that is both a file and a folder of the submission (``foo.py`` and ``foo.py/bar.py``), a folder
+    where the template has a file (a folder ``rotations.py/``), and on Windows a name that Windows cannot give a
+    file (``_NOT_A_WINDOWS_NAME``: only an archive made elsewhere holds one)."""
     folders: set[str] = set()
+    windows = _windows_names()
     for name in files:
         parts = name.split("/")
+        odd = next((part for part in parts if _NOT_A_WINDOWS_NAME.search(part)), None) if windows else None
+        if odd is not None:
+            raise SubmissionError(f"the submission holds {_shown_name(odd)!r}, a name that Windows cannot give a "
+                                  "file (it holds one of < > : \" | ? * \\, ends in a dot or a space, or names a "
+                                  "device, such as CON or NUL): rename it.")
         long = next((part for part in parts if len(part.encode()) > MAX_NAME_BYTES), None)
         if long is not None:
             raise SubmissionError(f"the submission holds a name longer than {MAX_NAME_BYTES} bytes, which no file "

@@ -384,6 +384,26 @@ def test_a_submission_of_a_shape_that_crashed_the_loader_is_refused_once(shape, 
     assert expected in json.loads(gs.read_text())["output"]
 
 
+@pytest.mark.parametrize("name", ["D:/evil.py", "rotations.py:stream.py", "con.py", "lib/NUL.txt", "lib./x.py",
+                                  "lib /x.py", "a<b.py", 'say"so".md', "why?.py", "tab\t.py"])
+def test_on_windows_a_name_windows_cannot_give_a_file_is_refused(name, tmp_path, monkeypatch):
+    """On Windows, an archive made elsewhere can hold a name that Windows gives no file: a drive (``D:`` would lay
+    the file out on that drive's current folder), a stream (``a:b``), a device (``con.py``), a name ending in a
+    dot or a space, a reserved character.  It is refused with its name, before anything is laid out; elsewhere
+    it is a name as any."""
+    archive = _zip(tmp_path / "work.zip", [*_reference_entries(), (name, b"x = 1\n")])
+    loader.cleanup(materialize(archive, tmp_path))
+    monkeypatch.setattr(loader, "_windows_names", lambda: True)
+    with pytest.raises(SubmissionError, match="a name that Windows cannot give a file"):
+        materialize(archive, tmp_path)
+
+
+def test_on_windows_the_reference_and_the_template_are_names_windows_gives(tmp_path, monkeypatch):
+    monkeypatch.setattr(loader, "_windows_names", lambda: True)
+    for folder in (copy_reference(tmp_path / "reference"), copy_template(tmp_path / "template")):
+        loader.cleanup(materialize(folder, tmp_path))
+
+
 def test_bounds_of_a_zip_entries_and_path_and_of_a_notebooks_depth(tmp_path):
     """An archive of more entries than a work folder holds is refused before its entries are looked at, a path
     longer than ``MAX_PATH_BYTES`` (within the depth allowed) is refused; a notebook nested deeper than
