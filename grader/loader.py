@@ -813,7 +813,7 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
                     copies.append(name)
                 continue
             out = target / PurePosixPath(name)
-            if out.is_file() and out.read_bytes() == data:
+            if out.is_file() and _same_text(out.read_bytes(), data):
                 copies.append(name)
             out.parent.mkdir(parents=True, exist_ok=True)
             out.write_bytes(data)
@@ -834,6 +834,12 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
         raise
     return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans),
                       tuple(sorted(copies)))
+
+
+def _same_text(template: bytes, data: bytes) -> bool:
+    """Whether a student's file is the template's file: the same bytes, or the same lines ended by ``\\r\\n``
+    (a work folder checked out by git on Windows, ``core.autocrlf``)."""
+    return data == template or data.replace(b"\r\n", b"\n") == template
 
 
 def _overlaps(plans: list[NotebookPlan]) -> list[str]:
@@ -939,7 +945,8 @@ def _template_notebook(name: str, data: bytes) -> bool:
 
 
 def read_answers(package: Path) -> tuple[dict, str | None]:
-    """The parsed answers.toml of a materialized submission, or an error text (no code runs: TOML only)."""
+    """The parsed answers.toml of a materialized submission, or an error text (no code runs: TOML only).  A byte
+    order mark before it (Notepad before 2019 and PowerShell 5 write UTF-8 so) is not part of it."""
     import tomllib
 
     path = package / "answers.toml"
@@ -948,7 +955,7 @@ def read_answers(package: Path) -> tuple[dict, str | None]:
     if path.stat().st_size > MAX_ANSWERS_BYTES:
         return {}, f"answers.toml is larger than {MAX_ANSWERS_BYTES // 1024} kB"
     try:
-        return tomllib.loads(path.read_text(encoding="utf-8")), None
+        return tomllib.loads(path.read_text(encoding="utf-8-sig")), None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         return {}, f"answers.toml is not valid TOML: {exc}"
     except RecursionError:

@@ -2,11 +2,13 @@
 symbolic link, a corrupt zip, an unreadable notebook, an empty folder, a folder that is not a work folder), never a
 traceback, never the same line under every check, and never a walk of a parent folder or of ``/``."""
 
+import codecs
 import json
 import os
 import sqlite3
 import stat
 import tempfile
+import tomllib
 import warnings
 import zipfile
 from pathlib import Path
@@ -28,7 +30,8 @@ from grader.results import Status
 from grader.runner import grade_submission, problem_module
 from grader.sandbox import Limits, sandbox_mode
 
-from .submissions import copy_reference, copy_template
+from .notebooks import problem_06_cells, write_notebook
+from .submissions import ROOT, copy_reference, copy_template
 
 LIMITS = Limits(call_timeout=5.0, import_timeout=10.0)
 ODD = b"caf\xe9.py"  # Latin-1, not UTF-8
@@ -566,6 +569,40 @@ def test_a_work_folder_read_by_path_is_read_as_relative_to_descriptors(tmp_path)
     assert "lib/deeper/helpers.py" in files and "problem_06.ipynb" in files and "lib/data.csv" not in files
     assert any("stuck.py" in note for note in notes) and any("caf\\xe9.py" in note for note in notes)
     assert _read_as(work, False) == (files, notes)
+
+
+def test_the_templates_files_with_windows_line_ends_are_still_the_templates(tmp_path):
+    """A work folder checked out by git on Windows (``core.autocrlf``) holds the template's files with ``\\r\\n``
+    line ends: they are still the template's, so a notebook that leaves out a name the problem needs is told so
+    (not taken as defined in the student's own ``problem_06.py``)."""
+    work = tmp_path / "work"
+    work.mkdir()
+    for name in ("rotations.py", "problem_06.py"):
+        (work / name).write_bytes((loader.template_dir() / name).read_bytes().replace(b"\n", b"\r\n"))
+    cells = [c.replace("def frames():", "def Frames():").replace("A = frames()", "A = Frames()")
+             for c in problem_06_cells(ROOT / "reference")]
+    write_notebook(work / "problem_06.ipynb", ["import numpy as np", *cells])
+    loaded = materialize(work, tmp_path)
+    try:
+        assert {"rotations.py", "problem_06.py"} <= set(loaded.template_copies)
+        assert any("frames (problem_06), which none of your notebooks or files defines" in note
+                   for note in loader.problem_notes(loaded, 6))
+    finally:
+        loader.cleanup(loaded)
+
+
+def test_answers_saved_with_a_byte_order_mark_and_windows_line_ends_are_read(tmp_path):
+    """Notepad before 2019 and PowerShell 5 save UTF-8 with a byte order mark, Windows's editors end lines with
+    ``\\r\\n``: answers.toml is read all the same."""
+    work = copy_reference(tmp_path / "work")
+    text = (work / "answers.toml").read_text(encoding="utf-8")
+    (work / "answers.toml").write_bytes(codecs.BOM_UTF8 + text.replace("\n", "\r\n").encode())
+    loaded = materialize(work, tmp_path)
+    try:
+        answers, error = loader.read_answers(loaded.path)
+        assert error is None and answers == tomllib.loads(text) and answers
+    finally:
+        loader.cleanup(loaded)
 
 
 def test_reading_a_notebook_prints_no_warning_that_quotes_its_cells(tmp_path):
