@@ -22,6 +22,7 @@ loaded, 3 an internal grader error, 130 interrupted by Ctrl-C (a batch also by S
 from __future__ import annotations
 
 import argparse
+import codecs
 import os
 import re
 import shutil
@@ -174,13 +175,67 @@ def cmd_problem(args) -> int:
 
     reports = grade_submission(submission, numbers, seed=args.seed, limits=limits, started=started,
                                workers=workers)
-    colour = sys.stdout.isatty() and "NO_COLOR" not in os.environ
-    print(render_terminal(reports, colour=colour), end="")
+    print(render_terminal(reports, colour=_colours(sys.stdout)), end="")
     if args.html:
         _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))
     _write(args.json, render_json(reports, show_hidden=False))
     _write(args.gradescope, render_gradescope(reports))
     return _exit_code(reports)  # a submission that cannot be loaded: 2, said once in the report with the fix
+
+
+def _colours(stream) -> bool:
+    """Whether the report is coloured on ``stream``: a terminal, unless NO_COLOR is set; on Windows, a console
+    that was asked to read escape sequences and could (``ENABLE_VIRTUAL_TERMINAL_PROCESSING``, Windows 10 and
+    later: an older console would print them as they are)."""
+    try:
+        terminal = stream.isatty()
+    except (AttributeError, ValueError, OSError):
+        return False
+    if not terminal or "NO_COLOR" in os.environ:
+        return False
+    return os.name != "nt" or _windows_escapes(stream)
+
+
+def _windows_escapes(stream) -> bool:
+    """Ask the Windows console of ``stream`` to read escape sequences; whether it does."""
+    try:
+        import ctypes
+        import msvcrt
+        from ctypes import wintypes
+
+        kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
+        kernel32.GetConsoleMode.argtypes = (wintypes.HANDLE, ctypes.POINTER(wintypes.DWORD))
+        kernel32.SetConsoleMode.argtypes = (wintypes.HANDLE, wintypes.DWORD)
+        handle = msvcrt.get_osfhandle(stream.fileno())
+        mode = wintypes.DWORD()
+        if not kernel32.GetConsoleMode(handle, ctypes.byref(mode)):
+            return False
+        if mode.value & _VIRTUAL_TERMINAL:
+            return True
+        return bool(kernel32.SetConsoleMode(handle, mode.value | _VIRTUAL_TERMINAL))
+    except (ImportError, AttributeError, OSError, ValueError):
+        return False
+
+
+#: ENABLE_VIRTUAL_TERMINAL_PROCESSING, the mode of a Windows console that reads escape sequences
+_VIRTUAL_TERMINAL = 0x0004
+
+
+def _readable_output() -> None:
+    """Let every character of a report reach the output (the marks ✔ and ✘, a student's own text): where the
+    encoding of standard output or error cannot write them all (Windows writes a pipe or a file in its ANSI
+    code page, cp1252 say; a terminal of a Latin-1 locale), a pipe or a file gets UTF-8, and a terminal keeps
+    its encoding with what it cannot show replaced."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            if codecs.lookup(stream.encoding).name.startswith("utf"):
+                continue
+            if stream.isatty():
+                stream.reconfigure(errors="replace")
+            else:
+                stream.reconfigure(encoding="utf-8")
+        except (AttributeError, LookupError, TypeError, ValueError, OSError):
+            continue
 
 
 def cmd_demo(args) -> int:
@@ -425,6 +480,7 @@ def main(argv: list[str] | None = None) -> int:
     temporary directory."""
     if argv is None:
         signal.signal(signal.SIGTERM, _terminate)
+    _readable_output()
     try:
         code, command = _run(sys.argv[1:] if argv is None else list(argv))
         if argv is None and command in _QUICK_EXIT:

@@ -324,3 +324,59 @@ def test_a_failing_notebook_cell_is_named(tmp_path, capsys):
     out = capsys.readouterr().out
     assert f'File "problem_06.ipynb, cell {frames + 2}"' in out, out
     assert "scale = 1 / 0  # the slip" in out, out
+
+
+@pytest.mark.parametrize("encoding", ["cp1252", "latin-1"])
+def test_the_report_reaches_a_pipe_of_any_encoding(encoding, tmp_path):
+    """Windows writes a program's output to a pipe or a file in its ANSI code page (cp1252), a Linux of a Latin-1
+    locale in Latin-1: neither can write the report's ✔ and ✘, and the command ended with a UnicodeEncodeError
+    after grading.  Such an output gets the report in UTF-8."""
+    submission = copy_reference(tmp_path / "pkg")
+    done = subprocess.run([sys.executable, "-m", "grader.cli", "problem-6", "--submission", str(submission)],
+                          cwd=tmp_path, env=dict(os.environ, PYTHONIOENCODING=encoding), capture_output=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr.decode("utf-8", "replace")
+    out = done.stdout.decode("utf-8")
+    assert "✔" in out and "10 / 10 points" in " ".join(out.split())
+
+
+def test_no_colours_on_a_windows_console_that_cannot_show_them(monkeypatch):
+    """On Windows, the report is coloured only where the console was asked to read escape sequences and could:
+    elsewhere (a console older than Windows 10, or no console at all) they would be printed as they are."""
+    from grader import cli
+
+    class Console:
+        def isatty(self):
+            return True
+
+        def fileno(self):
+            return 1
+
+    monkeypatch.delenv("NO_COLOR", raising=False)
+    assert cli._colours(Console()) == (os.name != "nt" or cli._windows_escapes(Console()))
+    monkeypatch.setattr(os, "name", "nt")
+    monkeypatch.setitem(sys.modules, "msvcrt", None)  # not Windows here: its console cannot be asked
+    assert not cli._colours(Console())
+    monkeypatch.setenv("NO_COLOR", "1")
+    monkeypatch.setattr(os, "name", "posix")
+    assert not cli._colours(Console())
+
+
+def test_a_terminal_of_another_encoding_keeps_it_with_what_it_cannot_show_replaced(monkeypatch):
+    import io
+
+    from grader import cli
+
+    class Terminal(io.TextIOWrapper):
+        def isatty(self):
+            return True
+
+    terminal, pipe = Terminal(io.BytesIO(), encoding="latin-1"), io.TextIOWrapper(io.BytesIO(), encoding="cp1252")
+    monkeypatch.setattr(sys, "stdout", terminal)
+    monkeypatch.setattr(sys, "stderr", pipe)
+    cli._readable_output()
+    assert (terminal.encoding, terminal.errors) == ("latin-1", "replace")
+    assert pipe.encoding == "utf-8"
+    print("✔ é", file=terminal)
+    terminal.flush()
+    assert terminal.buffer.getvalue() == "? é\n".encode("latin-1")
