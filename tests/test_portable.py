@@ -83,3 +83,18 @@ def test_instructor_grading_never_uses_the_portable_mode(tmp_path, monkeypatch):
     run_gradescope(root, [6], seed=1)
     results = (root / "results" / "results.json").read_text()
     assert json.loads(results)["score"] > 0 and "portable mode" not in results
+
+
+def test_a_portable_worker_reads_writes_and_prints_in_utf8(tmp_path):
+    """The student's code runs in Python's UTF-8 mode: its files (``open("data.txt")``, a probe's ``read_text()``)
+    and its prints are UTF-8 on every platform, as in ``C.UTF-8`` on Linux, not in the ANSI code page of Windows
+    (cp1252, where ``print("ω")`` raises)."""
+    from grader.sandbox import Child
+
+    work = copy_reference(tmp_path / "pkg")
+    (work / "problem_20.py").write_text("import locale\nimport sys\n\nprint('ω')\nMATRICES_A = [sys.flags.utf8_mode, "
+                                        "locale.getpreferredencoding(False), sys.stdout.encoding]\n")
+    with Child(work, LIMITS, portable.portable_mode()) as child:
+        utf8_mode, files, prints = child.call("problem_20.sheet_matrices")
+        assert "ω" in child.output()[0]
+    assert utf8_mode == 1 and {files.lower(), prints.lower()} <= {"utf-8", "utf8"}

@@ -121,7 +121,10 @@ def prepare_portable(submission: Path, output: str, limits: Limits, python: str 
     config = {"limits": limits.for_worker(), "require": required, "submission": str(submission),
               "output": str(output), "home": home}
     worker = runtime_dir() / "portable_worker.py"
-    return PortableLaunch([python, "-I", "-B", str(worker), json.dumps(config)], _portable_env(home), home, home)
+    # -X utf8: files and the student's prints in UTF-8, as in C.UTF-8 on Linux, not in the ANSI code page of
+    # Windows (cp1252: a print("ω") would raise there); -I ignores PYTHONUTF8 and PYTHONIOENCODING
+    argv = [python, "-I", "-B", "-X", "utf8", str(worker), json.dumps(config)]
+    return PortableLaunch(argv, _portable_env(home), home, home)
 
 
 # ------------------------------------------------------------------------------------------ the process
