@@ -1,9 +1,13 @@
 """A student's own laptop (issue 28): the light kit, installed into a fresh virtual environment whose
-start-up (``sitecustomize``'s part, here a ``.pth`` file's) takes away what exists only on Linux or POSIX (as on Windows: no ``resource``, ``fcntl``, ``pwd``,
-``grp``, ``termios``; no ``os.fork``, ``os.killpg``, ``os.setsid``, ``os.setpgrp``, ``os.getuid``, ``os.geteuid``),
-with no bubblewrap on the PATH, run by a user who is not root: ``grade init`` and ``grade problem-6`` work there in
-the portable mode, the reference to full marks and the template to 0; forced into the plain-process mode on the
-same platform, the grader cannot start its worker.  Slow: the kit is installed with its dependencies."""
+start-up (``sitecustomize``'s part, here a ``.pth`` file's) takes away what exists only on Linux or POSIX (as on
+Windows: no ``resource``, ``fcntl``, ``pwd``, ``grp``, ``termios``; no ``os.fork``, ``os.killpg``, ``os.setsid``,
+``os.setpgrp``, ``os.getuid``, ``os.geteuid``; and for reading folders no ``os.O_NOFOLLOW``, ``os.O_DIRECTORY``,
+``os.O_NONBLOCK``, ``os.O_CLOEXEC``, no ``dir_fd=`` (``os.supports_dir_fd`` empty, ``NotImplementedError`` as
+Windows raises it) and no ``os.scandir`` or ``os.listdir`` of a descriptor), whose output to a pipe is in the
+ANSI code page (cp1252) as Windows has it, with no bubblewrap on the PATH, run by a user who is not root:
+``grade init``, ``grade problem-6`` and ``check(6)`` work there in the portable mode, the reference to full marks
+and the template to 0, and a submission that holds a symbolic link is refused; forced into the plain-process mode
+on the same platform, the grader cannot start its worker.  Slow: the kit is installed with its dependencies."""
 
 from __future__ import annotations
 
@@ -20,7 +24,8 @@ from grader.kit import KIT_DEPENDENCIES, build_kit, record_key
 
 from .environments import base_python, public_tmp_dir
 from .kit_support import KIT_SEED
-from .submissions import copy_reference
+from .notebooks import PROBLEM_06_NAMES, definition, write_notebook
+from .submissions import ROOT, copy_reference
 
 pytestmark = pytest.mark.slow
 
@@ -30,15 +35,54 @@ MISSING_FUNCTIONS = ("fork", "killpg", "setsid", "setpgrp", "getuid", "geteuid")
 #: the user the student's commands run as when the tests run as root
 NOBODY = 65534
 
+#: what the simulated platform lacks to read a folder relative to a descriptor of it, never through a link
+MISSING_FLAGS = ("O_NOFOLLOW", "O_DIRECTORY", "O_NONBLOCK", "O_CLOEXEC")
+#: the encoding of a program's output to a pipe on Windows (its ANSI code page; a console gets UTF-8)
+PIPE_ENCODING = "cp1252"
+
 SITECUSTOMIZE = f'''"""A platform without the POSIX-only modules and functions (a stand-in for Windows)."""
 import os
 import sys
 
 for _name in {MISSING_MODULES!r}:
     sys.modules[_name] = None  # import _name: ModuleNotFoundError
-for _name in {MISSING_FUNCTIONS!r}:
+for _name in {MISSING_FUNCTIONS + MISSING_FLAGS!r}:
     if hasattr(os, _name):
         delattr(os, _name)
+
+
+def _no_dir_fd(function):
+    def call(*args, dir_fd=None, **kwargs):
+        if dir_fd is not None:
+            raise NotImplementedError("dir_fd unavailable on this platform")
+        return function(*args, **kwargs)
+
+    call.__name__ = call.__qualname__ = function.__name__
+    return call
+
+
+def _no_descriptor(function):
+    def call(path=None, *args, **kwargs):
+        if isinstance(path, int):
+            raise TypeError(f"{{function.__name__}}: path should be string, bytes, os.PathLike or None, not int")
+        return function(*args, **kwargs) if path is None else function(path, *args, **kwargs)
+
+    call.__name__ = call.__qualname__ = function.__name__
+    return call
+
+
+_replaced = {{}}
+for _function in [*os.supports_dir_fd, os.lstat]:
+    _replaced[_function] = _no_dir_fd(_function)
+for _function in (os.scandir, os.listdir):
+    _replaced[_function] = _no_descriptor(_replaced.get(_function, _function))
+for _old, _new in _replaced.items():
+    setattr(os, _old.__name__, _new)
+os.supports_dir_fd = set()
+os.supports_fd = {{_replaced.get(f, f) for f in os.supports_fd if f.__name__ in ("stat", "truncate")}}
+os.supports_follow_symlinks = {{_replaced.get(f, f) for f in os.supports_follow_symlinks}}
+if hasattr(os, "fwalk"):
+    del os.fwalk
 '''
 
 
@@ -75,27 +119,43 @@ def laptop():
 
 def _student(venv: Path, home: Path, argv: list[str], cwd: Path, **env) -> subprocess.CompletedProcess:
     """``argv`` run by the student: as a user who is not root, with the virtual environment's commands alone on
-    the PATH (no bubblewrap)."""
+    the PATH (no bubblewrap), its output to a pipe in ``PIPE_ENCODING``."""
     if os.geteuid() == 0:
         argv = [shutil.which("setpriv") or "/usr/bin/setpriv", f"--reuid={NOBODY}", f"--regid={NOBODY}", "--clear-groups", "--", *argv]
-    environment = {"PATH": str(venv / "bin"), "HOME": str(home), "LANG": "C.UTF-8", **env}
+    environment = {"PATH": str(venv / "bin"), "HOME": str(home), "LANG": "C.UTF-8", "PYTHONIOENCODING": PIPE_ENCODING,
+                   **env}
     return _run(argv, cwd, environment)
 
 
 def test_the_platform_is_simulated(laptop):
     venv, home = laptop
-    probe = ("import importlib, json, os\n"
+    probe = ("import importlib, json, os, sys\n"
              "def gone(name):\n"
              "    try:\n"
              "        importlib.import_module(name)\n"
              "    except ImportError:\n"
              "        return True\n"
              "    return False\n"
+             "def refused(call, error):\n"
+             "    try:\n"
+             "        call()\n"
+             "    except error:\n"
+             "        return True\n"
+             "    return False\n"
+             "fd = os.open('.', os.O_RDONLY)\n"
              f"print(json.dumps({{'modules': [m for m in {MISSING_MODULES!r} if not gone(m)],"
-             f" 'functions': [f for f in {MISSING_FUNCTIONS!r} if hasattr(os, f)]}}))")
-    for flags in ([], ["-I"]):  # the grader, and its worker (started with -I)
+             f" 'functions': [f for f in {MISSING_FUNCTIONS + MISSING_FLAGS!r} if hasattr(os, f)],"
+             " 'dir_fd': sorted(f.__name__ for f in os.supports_dir_fd),"
+             " 'open_at': refused(lambda: os.open('x', os.O_RDONLY, dir_fd=fd), NotImplementedError),"
+             " 'stat_at': refused(lambda: os.stat('x', dir_fd=fd), NotImplementedError),"
+             " 'scandir_fd': refused(lambda: os.scandir(fd), TypeError),"
+             " 'scandir': os.scandir in os.supports_fd, 'fwalk': hasattr(os, 'fwalk'),"
+             " 'output': sys.stdout.encoding}))")
+    expected = {"modules": [], "functions": [], "dir_fd": [], "open_at": True, "stat_at": True, "scandir_fd": True,
+                "scandir": False, "fwalk": False}
+    for flags in ([], ["-I"]):  # the grader, and its worker (started with -I, which ignores PYTHONIOENCODING)
         done = _student(venv, home, [str(venv / "bin" / "python"), *flags, "-c", probe], home)
-        assert json.loads(done.stdout) == {"modules": [], "functions": []}, done.stderr
+        assert json.loads(done.stdout) == dict(expected, output=PIPE_ENCODING if not flags else "utf-8"), done.stderr
     assert shutil.which("bwrap", path=str(venv / "bin")) is None
 
 
@@ -142,6 +202,62 @@ def test_grade_init_and_problem_6_work_without_posix(laptop):
     full = _graded(done, work / "reference.json")
     assert full["visible_score"] == _points(full) > 0
     assert "portable mode" in full["sandbox"]
+
+
+def test_links_are_refused_without_posix(laptop):
+    """Without ``dir_fd`` and ``O_NOFOLLOW``, a link inside the submission (a module's file, a folder) and a
+    submission that is itself a link are refused, as on Linux, and the files they name are never graded."""
+    venv, home = laptop
+    grade = str(venv / "bin" / "grade")
+    elsewhere = copy_reference(home / "elsewhere")  # followed, a link to it would grade the reference: 10/10
+    linked = copy_reference(home / "linked")
+    (linked / "rotations.py").unlink()
+    (linked / "rotations.py").symlink_to(elsewhere / "rotations.py")
+    (linked / "etc").symlink_to("/etc")
+    done = _student(venv, home, [grade, "problem-6", "--submission", str(linked)], home)
+    assert done.returncode == 2, done.stdout + done.stderr
+    shown = " ".join(done.stdout.split())
+    assert shown.count("the submission holds symbolic links, which the grader never follows") == 1, shown
+    assert "rotations.py →" in shown and "etc → /etc" in shown, shown
+    assert "0 / 10 points" in shown, shown
+
+    (home / "mylink").symlink_to(elsewhere)
+    done = _student(venv, home, [grade, "problem-6", "--submission", str(home / "mylink")], home)
+    assert done.returncode == 2, done.stdout + done.stderr
+    assert "is a symbolic link, which the grader never follows" in " ".join(done.stdout.split()), done.stdout
+
+
+def test_check_6_gives_the_verdicts_of_grade_without_posix(laptop):
+    """``check(6)``, as a notebook's cell calls it (here from a plain Python, naming its notebook), grades the
+    notebook's folder on the simulated platform with the verdicts of ``grade problem-6``: a notebook of the
+    reference's definitions with R3 transposed, so that some checks pass and others fail."""
+    venv, home = laptop
+    done = _student(venv, home, [str(venv / "bin" / "grade"), "init", "books", "--notebook"], home)
+    assert done.returncode == 0, done.stdout + done.stderr
+    work = home / "books"
+    cells = []
+    for module, names in PROBLEM_06_NAMES.items():
+        for name in names:
+            code = definition(ROOT / "reference", module, name)
+            if name == "R3":
+                code = code.replace("[[c, -s, 0.0], [s, c, 0.0]", "[[c, s, 0.0], [-s, c, 0.0]")
+                assert "[[c, s, 0.0]" in code
+            cells.append(code)
+    write_notebook(work / "problem_06.ipynb", ["import numpy as np", *cells])
+
+    done = _student(venv, home, [str(venv / "bin" / "grade"), "problem-6", "--seed", "5", "--json", "grade.json"],
+                    work)
+    assert done.returncode == 1, done.stdout + done.stderr
+    graded = _graded(done, work / "grade.json")
+    verdicts = {r["check_id"]: r["status"] for r in graded["results"]}
+    assert {"passed", "failed"} <= set(verdicts.values()), verdicts
+
+    script = ("import json\nfrom grader import check\n"
+              "print(json.dumps(check(6, notebook='problem_06.ipynb', seed=5).verdicts))")
+    done = _student(venv, home, [str(venv / "bin" / "python"), "-c", script], work)
+    assert done.returncode == 0, done.stdout + done.stderr
+    checked = json.loads(done.stdout.splitlines()[-1])
+    assert {k: v for k, v in checked.items() if k in verdicts} == verdicts
 
 
 def test_without_the_portable_mode_the_platform_cannot_grade(laptop):
