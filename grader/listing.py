@@ -48,11 +48,14 @@ def problem_list() -> list[dict]:
     from .runner import problems
 
     data = [asdict(info) for info in problems()]
+    tmp = cache.with_suffix(f".{os.getpid()}.tmp")
     try:
         cache.parent.mkdir(parents=True, exist_ok=True)
-        tmp = cache.with_suffix(f".{os.getpid()}.tmp")
         tmp.write_text(json.dumps(data))
         os.replace(tmp, cache)
-    except OSError:
-        pass
+    except OSError:  # not written (on Windows, a replace fails while another grade reads the cache): not kept
+        try:
+            tmp.unlink()
+        except OSError:
+            pass
     return data

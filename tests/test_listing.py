@@ -49,3 +49,17 @@ def test_the_readme_states_what_grade_list_lists():
     assert graded == len(infos)
     assert points == round(sum(p.points for p in infos))
     assert set(reading) == set(range(1, 48)) - numbers
+
+
+def test_a_cache_that_cannot_be_replaced_leaves_nothing_behind(tmp_path, monkeypatch):
+    """On Windows, replacing a file that another process has open fails (another ``grade list`` reading the
+    cache): the list is still given, and the temporary file is not left in the cache's folder."""
+    from grader import listing
+
+    def refused(src, dst):
+        raise PermissionError(13, "The process cannot access the file because it is being used by another process")
+
+    monkeypatch.setenv("GRADER_CACHE", str(tmp_path))
+    monkeypatch.setattr(os, "replace", refused)
+    assert [p["number"] for p in listing.problem_list()] == [info.number for info in problems()]
+    assert [p.name for p in tmp_path.rglob("*") if p.is_file()] == []
