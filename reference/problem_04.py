@@ -127,12 +127,67 @@ def assemble(targets, fixed_point=FIXED_POINT):
 def balanced_configuration(fixed_point=FIXED_POINT):
     """A configuration ``q`` (four angles) in which the four-bar is in static equilibrium: the loop closes and
     gravity does no work along the linkage's only possible motion, so it stays at rest (if only for a while).
-    Any such configuration is accepted.  Use ``assemble`` with one target."""
+    Any such configuration is accepted, for the sheet's fixed point and for other points ``(d, 0, 0)`` on the ground
+    within the links' reach (the checks ask such points too); raises ``UnreachableError`` for a point out of reach.
+
+    The balanced configurations are those where the links' centre of gravity is highest or lowest along the
+    motion.  With the fixed point at ``(d, 0, 0)`` one of them is the symmetric trapezoid with link 2 horizontal;
+    ``assemble`` with the target ``q1`` of that trapezoid may find the loop's other configuration with the same
+    ``q1``, which is not balanced."""
     # BEGIN SOLUTION problem 4
-    # With the fixed point at (d, 0), the symmetric trapezoid (link 2 horizontal) balances: by symmetry the
-    # centre of gravity is at its highest point of the motion.
-    d = float(np.linalg.norm(np.asarray(fixed_point, dtype=float)[:2]))
-    return assemble([np.arccos((d - LENGTH) / (2 * LENGTH)), None, None, None], fixed_point)
+    # Walk along the loop with q1 (links 2 and 3 close it, their middle joint on either side), find where
+    # gravity's work along the motion changes sign, bisect there, and keep the highest balanced configuration.
+    P = np.asarray(fixed_point, dtype=float)[:2]
+    if np.linalg.norm(P) > 3 * LENGTH + 1e-12:
+        raise UnreachableError(
+            f"the fixed point ({P[0]:g}, {P[1]:g}) is {np.linalg.norm(P):g} m from joint 1, but the three links "
+            f"of {LENGTH:g} m reach at most {3 * LENGTH:g} m: the loop cannot close")
+
+    def closed(q1, side):
+        """(q1, q2, q3) closing the loop, or None where the end of link 1 is too far from the fixed point."""
+        gap = P - LENGTH * np.array([np.cos(q1), np.sin(q1)])
+        distance = np.linalg.norm(gap)
+        if not 1e-9 < distance <= 2 * LENGTH:
+            return None
+        towards, spread = np.arctan2(gap[1], gap[0]), np.arccos(min(1.0, distance / (2 * LENGTH)))
+        phi2, phi3 = towards + side * spread, towards - side * spread  # the absolute angles of links 2 and 3
+        return np.array([q1, phi2 - q1, phi3 - phi2])
+
+    def work(x):
+        """Gravity's work along the motion: the gradient of the links' centre heights along the closure
+        Jacobian's null vector (the cross product of its two rows)."""
+        phi = np.cumsum(x)
+        J = np.array([[-LENGTH * np.sum(np.sin(phi[j:])) for j in range(3)],
+                      [LENGTH * np.sum(np.cos(phi[j:])) for j in range(3)]])
+        weights = np.array([2.5, 1.5, 0.5])  # links beyond the joint, plus half of its own link
+        gradient = np.array([LENGTH * np.sum(weights[j:] * np.cos(phi[j:])) for j in range(3)])
+        return float(np.cross(J[0], J[1]) @ gradient)
+
+    def height(x):
+        points = loop_points(x)
+        return float(np.sum(points[:-1, 1] + points[1:, 1]))
+
+    balanced = []
+    grid = np.linspace(-np.pi, np.pi, 361)
+    for side in (1.0, -1.0):
+        for a, b in zip(grid[:-1], grid[1:]):
+            x_a, x_b = closed(a, side), closed(b, side)
+            if x_a is None or x_b is None or np.sign(work(x_a)) == np.sign(work(x_b)):
+                continue
+            for _ in range(60):
+                middle = 0.5 * (a + b)
+                x_m = closed(middle, side)
+                if x_m is None:
+                    break
+                if np.sign(work(x_m)) == np.sign(work(x_a)):
+                    a, x_a = middle, x_m
+                else:
+                    b, x_b = middle, x_m
+            balanced.append(x_a if abs(work(x_a)) <= abs(work(x_b)) else x_b)
+    if not balanced:
+        raise AssemblyError(f"no balanced configuration found for the fixed point ({P[0]:g}, {P[1]:g})")
+    x = max(balanced, key=height)
+    return np.angle(np.exp(1j * np.append(x, -np.sum(x))))
     # END SOLUTION
 
 

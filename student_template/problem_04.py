@@ -76,7 +76,13 @@ def assemble(targets, fixed_point=FIXED_POINT):
 def balanced_configuration(fixed_point=FIXED_POINT):
     """A configuration ``q`` (four angles) in which the four-bar is in static equilibrium: the loop closes and
     gravity does no work along the linkage's only possible motion, so it stays at rest (if only for a while).
-    Any such configuration is accepted.  Use ``assemble`` with one target."""
+    Any such configuration is accepted, for the sheet's fixed point and for other points ``(d, 0, 0)`` on the ground
+    within the links' reach (the checks ask such points too); raises ``UnreachableError`` for a point out of reach.
+
+    The balanced configurations are those where the links' centre of gravity is highest or lowest along the
+    motion.  With the fixed point at ``(d, 0, 0)`` one of them is the symmetric trapezoid with link 2 horizontal;
+    ``assemble`` with the target ``q1`` of that trapezoid may find the loop's other configuration with the same
+    ``q1``, which is not balanced."""
     # TODO problem 4: write your solution here
     raise NotImplementedError("Problem 4: balanced_configuration is not implemented yet")
 

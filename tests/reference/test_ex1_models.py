@@ -153,6 +153,32 @@ def test_sheet_cases_of_the_assembly():
     assert abs(problem_04.tangent_acceleration(q, mjcf.HDPE, mjcf.EARTH)) < 1e-9
 
 
+def _assert_balanced(q, fixed_point):
+    """``q`` closes the loop at ``fixed_point`` and the four-bar released at rest there does not accelerate."""
+    assert np.allclose(problem_04.loop_points(q)[-1], np.asarray(fixed_point)[:2], atol=1e-9)
+    assert abs(np.angle(np.exp(1j * np.sum(q)))) < 1e-9
+    assert abs(problem_04.tangent_acceleration(q, mjcf.HDPE, mjcf.EARTH)) < 1e-6
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(0.02, 0.58, **finite))
+def test_the_balanced_configuration_is_balanced_for_fixed_points_on_the_ground(d):
+    """For (0.3, 0, 0) it once landed on the other branch of the target q1 and accelerated at -76 rad/s^2."""
+    _assert_balanced(problem_04.balanced_configuration((d, 0.0, 0.0)), (d, 0.0, 0.0))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(0.02, 0.58, **finite), st.floats(-np.pi, np.pi, **finite))
+def test_the_balanced_configuration_is_balanced_for_any_reachable_fixed_point(distance, direction):
+    fixed_point = (distance * np.cos(direction), distance * np.sin(direction), 0.0)
+    _assert_balanced(problem_04.balanced_configuration(fixed_point), fixed_point)
+
+
+def test_the_balanced_configuration_of_a_point_out_of_reach_raises():
+    with pytest.raises(problem_04.UnreachableError, match="at most 0.6 m"):
+        problem_04.balanced_configuration(problem_04.UNREACHABLE_POINT)
+
+
 @settings(max_examples=8, deadline=None)
 @given(st.floats(-0.85, 0.85, **finite))
 def test_mujoco_acceleration_along_the_loop_is_the_references(q1):
