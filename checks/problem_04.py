@@ -1,11 +1,15 @@
 """Checks of problem 4: the four-bar linkage, its assembly and its balance.
 
 The assembly must meet a single target and close the loop (on random reachable configurations, whichever
-branch it finds), and refuse over-specified targets and unreachable fixed points with the declared exceptions.
-A balanced configuration is accepted when the loop closes and gravity does no work along the linkage's only
-motion, whichever balanced configuration it is.  The MuJoCo model (inside the sandbox) must close the loop with an
-equality constraint at the fixed point, and its acceleration at rest along that motion must be the reference's
-(projected Newton-Euler, independent of MuJoCo) and vanish in the student's balanced configuration.
+branch it finds), and refuse over-specified targets and unreachable fixed points with the declared exceptions; an
+assembly that cannot close the loop (a target that leaves the other links unable to reach the fixed point) raises,
+rather than returning the angles where its iteration stopped.  A balanced configuration is accepted when the loop
+closes and gravity does no work along the linkage's only motion, whichever balanced configuration it is; it is
+asked for the sheet's fixed point and for points on the ground the sheet does not print ((0.3, 0, 0) and one drawn
+per grading), so that the sheet's configuration typed in earns nothing.  The MuJoCo model (inside the sandbox) must
+close the loop with an equality constraint at the fixed point, and its acceleration at rest along that motion must
+be the reference's (projected Newton-Euler, independent of MuJoCo) and vanish in the student's balanced
+configuration.
 """
 
 import numpy as np
@@ -42,6 +46,13 @@ ALL_ZERO = [0.0, 0.0, 0.0, 0.0]
 ONE_TARGET = [0.72273, None, None, None]
 #: an unbalanced configuration for the model's dynamics: joint 1 at 0.4 rad
 DYNAMICS_TARGETS = [0.4, None, None, None]
+#: a fixed point on the ground the sheet does not print, where the trapezoid's q1 as a target of the assembly can
+#: give the loop's other, unbalanced configuration
+GROUND_POINT = (0.3, 0.0, 0.0)
+#: the ground points (d, 0, 0) drawn for each grading: within reach, away from the stretched loop
+GROUND = (0.12, 0.56)
+#: a target that leaves links 2 and 3 unable to close the loop at the sheet's fixed point: link 1 points away from it
+AWAY = [np.pi, None, None, None]
 #: the loop closes and the targets are met to the accuracy of a converged Newton solve
 CLOSURE = Tol("loop closure and targets", 1e-6)
 #: gravity's work along the unit motion of the joints, relative to L (0 in static equilibrium)
@@ -148,7 +159,8 @@ def check_overconstrained(ctx):
 
 
 @check(2, title="4(c): a fixed point out of the links' reach raises UnreachableError ((1, 0, 0), and random far "
-       "points)", stage=STAGE_VALUES, group="unreachable")
+       "points), and so does a target that leaves the other links unable to reach the fixed point",
+       stage=STAGE_VALUES, group="unreachable")
 def check_unreachable(ctx):
     reason = "three links of 0.2 m reach at most 0.6 m, and the fixed point is 1 m away"
     _expect_raise(ctx.student("problem_04.assemble", ONE_TARGET, UNREACHABLE_POINT), "unreachable",
@@ -165,6 +177,43 @@ def check_unreachable(ctx):
                        compare=lambda got, expected, args: _expect_raise(
                            got, "unreachable", _describe_targets(*args),
                            f"the fixed point is {np.linalg.norm(args[1]):.3f} m away, beyond the links' 0.6 m"),
+                       describe=lambda args: _describe_targets(*args))
+    _assert_blocked_targets_raise(ctx)
+
+
+def _blocking(args):
+    """A fixed point within reach and a target on joint 1 or 4 that points its link away from it: the two other
+    links cannot close the loop (their free end is farther than 2 L from where they must go)."""
+    distance, direction, joint, spread = args
+    point = np.array([distance * np.cos(direction), distance * np.sin(direction)])
+    away = direction + np.pi + spread  # the absolute angle of link 1 (joint 1) or of link 3 (joint 4: q4 = -angle)
+    targets = [None] * 4
+    targets[joint] = _wrapped(away if joint == 0 else -away)
+    return targets, [float(point[0]), float(point[1]), 0.0]
+
+
+def _gap(targets, point):
+    """How far the two free links would have to reach [m] for one target on joint 1 (link 1 at the angle q1 from
+    joint 1) or on joint 4 (link 3 at the angle -q4 into the fixed point): the same distance either way."""
+    angle = targets[0] if targets[0] is not None else -targets[3]
+    return float(np.linalg.norm(np.asarray(point[:2]) - LENGTH * np.array([np.cos(angle), np.sin(angle)])))
+
+
+def _assert_blocked_targets_raise(ctx):
+    """Targets that leave links 2 and 3 unable to close the loop, the fixed point within reach: the assembly must
+    raise UnreachableError rather than return the angles where its iteration stopped (the sheet's fixed point with
+    link 1 pointing away from it, and random ones)."""
+    def reason(targets, point):
+        return (f"with that target the two other links would have to reach {_gap(targets, point):.3f} m, beyond "
+                f"their {2 * LENGTH:g} m")
+
+    _expect_raise(ctx.student("problem_04.assemble", AWAY, FIXED_POINT), "unreachable",
+                  _describe_targets(AWAY, FIXED_POINT), reason(AWAY, FIXED_POINT))
+    strategy = st.tuples(st.floats(0.3, 0.55, **FINITE), ANGLES, st.sampled_from([0, 3]),
+                         st.floats(-0.5, 0.5, **FINITE)).map(_blocking)
+    ctx.compare_random("problem_04.assemble", strategy, name="assemble(...)", tol=EXACT, examples=5,
+                       compare=lambda got, expected, args: _expect_raise(got, "unreachable", _describe_targets(*args),
+                                                                         reason(*args)),
                        describe=lambda args: _describe_targets(*args))
 
 
@@ -207,27 +256,62 @@ def _drawing(q):
     return points[:, 0], points[:, 1]
 
 
-@check(2, title="4(b): balanced_configuration() closes the loop and is in static equilibrium (gravity does no "
-       "work along the linkage's motion)", stage=STAGE_STRUCTURE, group="balance")
-def check_balanced(ctx):
-    q = as_array(ctx.student("problem_04.balanced", FIXED_POINT), "balanced_configuration()", (4,))
-    ref = ctx.reference("problem_04.balanced", FIXED_POINT)
-    ctx.add_figure(figure("Problem 4(b): the four-bar in your balanced configuration", "x [m]", "y [m]",
-                          student=[("links", *_drawing(q))], reference=[("links", *_drawing(ref))], equal_axes=True))
-    _assert_assembled(q, [None] * 4, FIXED_POINT, "balanced_configuration()")
+def _ground_point(ctx):
+    """A fixed point ``(d, 0, 0)`` on the ground that the sheet does not print, drawn for this grading."""
+    return (round(float(ctx.draw(lambda rng: rng.uniform(*GROUND))), 4), 0.0, 0.0)
+
+
+def _call(point):
+    return f"balanced_configuration(({point[0]:g}, {point[1]:g}, {point[2]:g}))"
+
+
+TYPED_HINT = (
+    "This is the configuration of the sheet's fixed point (0.5, 0, 0), whatever fixed_point is asked: compute it "
+    "from fixed_point (the symmetric trapezoid has cos(q1) = (d - L) / (2 L) for the fixed point (d, 0, 0)); the "
+    "checks also ask other points on the ground."
+)
+
+
+def _assert_balanced(q, point, sheet_q=None):
+    """``q`` closes the loop at ``point`` and gravity does no work along the linkage's only motion there;
+    ``sheet_q``: the student's configuration for the sheet's fixed point, to name it when it comes back for another
+    point."""
+    call = _call(point)
+    q = as_array(q, call, (4,))
+    if sheet_q is not None and point[:2] != FIXED_POINT[:2] and np.allclose(q, sheet_q, atol=1e-9):
+        if not np.allclose(loop_points(q)[-1], np.asarray(point)[:2], atol=CLOSURE.atol):
+            fail(f"{call} returned {np.round(q, 6).tolist()}, the configuration you return for the sheet's fixed "
+                 f"point (0.5, 0, 0): its loop does not close at ({point[0]:g}, {point[1]:g}).", TYPED_HINT,
+                 "typed_numbers")
+    _assert_assembled(q, [None] * 4, point, call)
     t = np.linalg.svd(closure_jacobian(q))[2][-1]
     work = float(t @ height_gradient(q)) / LENGTH
-    assert_close(work, 0.0, f"gravity's work along the unit motion, over m g L, at q = {np.round(q, 6).tolist()}",
-                 BALANCE, note="In static equilibrium the centre of gravity neither rises nor falls when the linkage "
-                               "moves (its only motion, with q1, q2, q3 along the null space of the closure "
-                               "Jacobian).")
+    assert_close(work, 0.0, f"gravity's work along the unit motion, over m g L, at q = {np.round(q, 6).tolist()} "
+                 f"(fixed point ({point[0]:g}, {point[1]:g}, {point[2]:g}))", BALANCE,
+                 note="In static equilibrium the centre of gravity neither rises nor falls when the linkage moves (its "
+                      "only motion, with q1, q2, q3 along the null space of the closure Jacobian).")
+    return q
+
+
+@check(2, title="4(b): balanced_configuration() closes the loop and is in static equilibrium (gravity does no "
+       "work along the linkage's motion), for the sheet's fixed point and for other points on the ground",
+       stage=STAGE_STRUCTURE, group="balance")
+def check_balanced(ctx):
+    points = [FIXED_POINT, GROUND_POINT, _ground_point(ctx)]
+    ref = ctx.reference("problem_04.balanced", FIXED_POINT)
+    q = as_array(ctx.student("problem_04.balanced", FIXED_POINT), "balanced_configuration()", (4,))
+    ctx.add_figure(figure("Problem 4(b): the four-bar in your balanced configuration", "x [m]", "y [m]",
+                          student=[("links", *_drawing(q))], reference=[("links", *_drawing(ref))], equal_axes=True))
+    _assert_balanced(q, FIXED_POINT)
+    for point in points[1:]:
+        _assert_balanced(ctx.student("problem_04.balanced", point), point, q)
 
 
 # ------------------------------------------------------------------------------------ the MuJoCo model
 
 
-def _model(ctx, q, what):
-    return model_of(student_once(ctx, "problem_04.model", HDPE, EARTH, q, FIXED_POINT), what)
+def _model(ctx, q, what, point=FIXED_POINT):
+    return model_of(student_once(ctx, "problem_04.model", HDPE, EARTH, q, point), what)
 
 
 def _along(desc, what):
@@ -283,11 +367,13 @@ def check_model_dynamics(ctx):
 
 
 @check(1, title="4(b): in your balanced configuration your MuJoCo model stays at rest (no acceleration along the "
-       "linkage's motion)", stage=STAGE_VALUES, group="balance")
+       "linkage's motion), for the sheet's fixed point and another point on the ground", stage=STAGE_VALUES,
+       group="balance")
 def check_model_at_rest(ctx):
-    q = as_array(ctx.student("problem_04.balanced", FIXED_POINT), "balanced_configuration()", (4,))
-    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
-    alpha = _along(_model(ctx, q, what), what)
-    assert_close(alpha, 0.0, f"the acceleration along the linkage's motion in {what}", AT_REST,
-                 note="A balanced four-bar released at rest does not start to move (it is unstable, so it does "
-                      "after a while).")
+    for point in (FIXED_POINT, _ground_point(ctx)):
+        q = as_array(ctx.student("problem_04.balanced", point), _call(point), (4,))
+        what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()}, fixed_point = ({point[0]:g}, 0, 0))"
+        alpha = _along(_model(ctx, q, what, point), what)
+        assert_close(alpha, 0.0, f"the acceleration along the linkage's motion in {what}", AT_REST,
+                     note="A balanced four-bar released at rest does not start to move (it is unstable, so it does "
+                          "after a while).")
