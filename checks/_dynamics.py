@@ -3,9 +3,11 @@
 * Random trees with masses and inertias as plain data (``tree_cases``, ``rich_case``), in the format of
   ``probes._dynamics`` (numpy only: rotations from quaternions, inertias from second moments).
 * The sheet's robot (P32) and walker (P25) as plain data (``ROBOT``, ``WALKER``).
-* Physics checks that need no reference, on the ``_dynamics.lagrange`` probe: ``M`` symmetric positive-definite,
-  the kinetic energy of the student's own Jacobians, ``g`` as minus the gradient of the student's own potential
-  energy, Lagrange's equations for ``f`` with the student's own ``M``.
+* Physics checks on the ``_dynamics.lagrange`` probe, judged on the student's own model: ``M`` symmetric
+  positive-definite, the kinetic energy of the student's own Jacobians, ``g`` as minus the gradient of the
+  student's own potential energy, Lagrange's equations for ``f`` with the student's own ``M``.  The reference's
+  reply at the same case only says whether the student's model is real (``checks._real``): a model that does
+  nothing is consistent with itself and earns nothing.
 * ``compare_mfg``: ``M``, ``f``, ``g`` against the reference with the mistake catalogue of ``_dynamics.mfg_mistakes``.
 * Runs (simulations): the first departure from a reference run, and figures.
 """
@@ -25,6 +27,8 @@ from grader.checking import (
     figure,
     format_array,
 )
+
+from ._real import mass_matrix_flaw, rank_flaw, real, require_real
 
 __all__ = [
     "H",
@@ -272,7 +276,19 @@ def _mfg_of(got, nq):
     return (as_array(got["M"], "M", (nq, nq)), as_array(got["f"], "f", (nq,)), as_array(got["g"], "g", (nq,)))
 
 
-def check_spd(got, args):
+def _stacked(bodies) -> np.ndarray:
+    """Every body's ``B_J_S`` and ``B_J_R`` stacked (6 rows per body): of rank nq when every coordinate moves a
+    body."""
+    return np.vstack([np.vstack([J_S, J_R]) for *_, J_S, J_R in bodies])
+
+
+def _jacobian_findings(got, expected, nq):
+    """Whether the student's Jacobians (all bodies stacked) are real: of the rank of the reference's."""
+    return [("the matrix of every body's B_J_S and B_J_R, stacked,",
+             rank_flaw(_stacked(_bodies(got, nq)), _stacked(_bodies(expected, nq))))]
+
+
+def check_spd(got, expected, args):
     """``M`` is symmetric and positive-definite."""
     nq = len(args[1])
     M = as_array(got["M"], "M", (nq, nq))
@@ -290,11 +306,13 @@ def check_spd(got, args):
              "J_R (with the transposes on the left).", "not_positive_definite")
 
 
-def check_kinetic_energy(got, args):
-    """``qd.T M qd / 2`` equals the kinetic energy of the bodies from the student's own Jacobians."""
+def check_kinetic_energy(got, expected, args):
+    """``qd.T M qd / 2`` equals the kinetic energy of the bodies from the student's own Jacobians (when they are
+    real)."""
     description, q, qd = args[:3]
     nq = len(q)
     M = as_array(got["M"], "M", (nq, nq))
+    require_real("qd.T M qd / 2", "Jacobians", _jacobian_findings(got, expected, nq))
     translation = rotation = 0.0
     for _, m, I, J_S, J_R in _bodies(got, nq):
         v, omega = J_S @ qd, J_R @ qd
@@ -310,8 +328,9 @@ def check_kinetic_energy(got, args):
                "Jacobians)")
 
 
-def check_gravity_gradient(got, args, h=H):
-    """``g = -dV/dq`` for the potential ``V = -sum(m I_grav . I_r_IB)`` of the student's own positions."""
+def check_gravity_gradient(got, expected, args, h=H):
+    """``g = -dV/dq`` for the potential ``V = -sum(m I_grav . I_r_IB)`` of the student's own positions (when
+    they are real: their gradient does not vanish where the reference's ``g`` does not)."""
     description, q, _, I_grav = args[:4]
     masses = {body["name"]: body["m"] for body in description["bodies"]}
     names = [body["name"] for body in got["bodies"]]
@@ -321,17 +340,23 @@ def check_gravity_gradient(got, args, h=H):
                     for name, r in zip(names, positions))
 
     fd = -np.array([(potential(plus) - potential(minus)) / (2 * h) for plus, minus in got["positions"]])
+    require_real("g", "positions", [
+        *(real(f"the position of {name} at q + h e_1", mine, (3,), ours)
+          for name, mine, ours in zip(names, got["positions"][0][0], expected["positions"][0][0])),
+        ("-dV/dq of your own potential energy", rank_flaw(fd, expected["g"]))])
     assert_close(got["g"], fd, "g", DIFFERENCES, [
         Mistake("gravity_sign", -fd, MFG_HINTS["gravity_sign"]),
     ], context=f"(expected: -dV/dq of V = -sum(m I_grav . I_r_IB) from your own positions, I_grav = "
                f"{np.asarray(I_grav).tolist()})")
 
 
-def check_lagrange(got, args, h=H):
-    """Lagrange's equations with the student's own ``M``: ``f = -Mdot qd + d/dq (qd.T M qd / 2)``."""
+def check_lagrange(got, expected, args, h=H):
+    """Lagrange's equations with the student's own ``M`` (when it is real: positive-definite):
+    ``f = -Mdot qd + d/dq (qd.T M qd / 2)``."""
     q, qd = args[1], args[2]
     nq = len(q)
     M, f, _ = _mfg_of(got, nq)
+    require_real("f", "M and Jacobians", [("M", mass_matrix_flaw(M)), *_jacobian_findings(got, expected, nq)])
     plus, minus = (as_array(x, "M", (nq, nq)) for x in got["M_path"])
     M_dot = (plus - minus) / (2 * h)
     dT = np.array([qd @ (as_array(p, "M", (nq, nq)) - as_array(m, "M", (nq, nq))) @ qd / (4 * h)

@@ -4,6 +4,7 @@ import numpy as np
 
 from checks._effects import assert_no_side_effects
 from checks._figures import add_frames, add_vectors
+from checks._real import assert_real, is_real, require_real, rotation_flaw
 from grader import strategies as st
 from grader.errors import StudentFault
 from grader.checking import (
@@ -114,7 +115,7 @@ def assert_turns(A, name):
 @check(1, title="R1, R2, R3 return 3 x 3 numeric matrices", stage=STAGE_SHAPE, group="elementary")
 def check_elementary_shape(ctx):
     for axis in AXES:
-        as_array(ctx.student("problem_06.elementary", axis, 0.3), f"R{axis}(0.3)", (3, 3))
+        assert_real(ctx.student("problem_06.elementary", axis, 0.3), f"R{axis}(0.3)", (3, 3))
 
 
 @check(1, title="R1, R2, R3 are proper rotations (orthonormal, det = +1)", stage=STAGE_STRUCTURE,
@@ -157,14 +158,19 @@ def _own_factors(got, expected):
         return None
     if all(close(own[k], expected[k], EXACT) for k in own):
         return None
-    if any(_does_nothing(own[k], expected[k]) for k in own):
-        return None  # an answer that does nothing earns nothing downstream either
     return {k: np.asarray(v, dtype=float) for k, v in own.items()}
 
 
-def _does_nothing(mine, reference):
-    """True when the student's rotation is the identity where the reference's turns: nothing to carry forward."""
-    return close(mine, np.eye(3), STRUCTURE) and not close(reference, np.eye(3), STRUCTURE)
+def _factor_findings(own, expected, args):
+    """Whether the student's own ``R1(alpha), R2(beta), R3(gamma)`` are real rotations (``checks._real``): an
+    answer that does nothing (zeros, a constant, the identity) leaves nothing to carry forward."""
+    return [(f"R{k}({angle:.6g})", rotation_flaw(own[f"R{k}"], expected[f"R{k}"]))
+            for k, angle in zip((1, 2, 3), args)]
+
+
+def _frame_findings(own, expected):
+    """Whether the student's own frames ``{key: A}`` are real rotations, against the reference's ``expected``."""
+    return [(key, rotation_flaw(own[key], expected[key])) for key in KEYS]
 
 
 def _own_cardan_mistakes(own):
@@ -197,8 +203,10 @@ def check_cardan_rotation(ctx):
         assert_rotation(A, name)
         assert_turns(A, name)
     except CheckFailure:
-        if not _carried_structure(A, _own_factors(got, expected)):
+        own = _own_factors(got, expected)
+        if not _carried_structure(A, own):
             raise
+        require_real(name, "R1, R2, R3", _factor_findings(own, expected, args))
         ctx.carry_forward(ELEMENTARY, "R1, R2, R3")
 
 
@@ -213,12 +221,14 @@ def check_cardan_values(ctx):
         if close(A, expected["cardan"], EXACT):
             return
         own = _own_factors(got, expected)
-        if own is None:
-            assert_close(A, expected["cardan"], name, EXACT, catalogue)
-            return
-        product = own["R3"] @ own["R2"] @ own["R1"]
-        if close(A, product, EXACT):
+        findings = [] if own is None else _factor_findings(own, expected, args)
+        product = None if own is None else own["R3"] @ own["R2"] @ own["R1"]
+        if product is not None and close(A, product, EXACT):
+            require_real(name, "R1, R2, R3", findings)
             ctx.carry_forward(ELEMENTARY, "R1, R2, R3")
+            return
+        if own is None or not is_real(findings):  # nothing of theirs to judge it on
+            assert_close(A, expected["cardan"], name, EXACT, catalogue)
             return
         assert_close(A, product, name, EXACT, _own_cardan_mistakes(own) + catalogue,
                      context="(judged on your own R1, R2, R3: R3(gamma) @ R2(beta) @ R1(alpha))",
@@ -238,21 +248,24 @@ def check_cardan_values(ctx):
 # ------------------------------------------------------------------------------------ the sheet's numbers
 
 
-def _own_frames(got, expected):
-    """The frames the student's own upstream functions give at the sheet's angles, each with the check that
-    grades them: ``[(check id, what, {key: A})]``, only those that differ from the reference's frames."""
+def _own_frames(got, expected, args):
+    """The frames the student's own upstream functions give at the sheet's angles ``args = (alpha, beta, gamma)``,
+    each with the check that grades them and whether what they are built from is real:
+    ``[(check id, what, {key: A}, findings)]``, only those that differ from the reference's frames."""
     candidates = []
     own = _own_factors(got, expected)
     if own is not None:
         A1 = own["R3"]
         candidates.append((ELEMENTARY, "R1, R2, R3", {"A_IC1": A1, "A_IC2": A1 @ own["R2"],
-                                                     "A_IC3": A1 @ own["R2"] @ own["R1"]}))
+                                                     "A_IC3": A1 @ own["R2"] @ own["R1"]},
+                           _factor_findings(own, expected, args)))
     cardan = got.get("cardan") or [None] * 3
     if all(c is not None for c in cardan):
         partial = dict(zip(KEYS, (np.asarray(c, dtype=float) for c in cardan)))
-        if not all(close(partial[k], expected["frames"][k], EXACT) for k in KEYS) and not any(
-                _does_nothing(partial[k], expected["frames"][k]) for k in KEYS):
-            candidates.append((CARDAN, "cardan", partial))
+        if not all(close(partial[k], expected["frames"][k], EXACT) for k in KEYS):
+            findings = [(f"cardan{sequence}", rotation_flaw(partial[key], expected["frames"][key]))
+                        for key, sequence in zip(KEYS, ("(0, 0, gamma)", "(0, beta, gamma)", "(alpha, beta, gamma)"))]
+            candidates.append((CARDAN, "cardan", partial, findings))
     return candidates
 
 
@@ -283,10 +296,15 @@ def check_frames(ctx):
         answer = ctx.student("problem_06.frames_with_factors", a, b, g)
     except StudentFault:  # R1..R3 or cardan crashed the worker or ran out of time: nothing to carry forward
         answer = {}
-    for upstream, what, own in _own_frames(answer, reference):
-        if all(close(frames[key], own[key], EXACT) for key in KEYS):
+    explained = [(upstream, what, findings)
+                 for upstream, what, own, findings in _own_frames(answer, reference, (a, b, g))
+                 if all(close(frames[key], own[key], EXACT) for key in KEYS)]
+    for upstream, what, findings in explained:
+        if is_real(findings):
             ctx.carry_forward(upstream, what)
             return
+    for upstream, what, findings in explained:
+        require_real("frames()", what, findings)
     for key in KEYS:
         A = assert_rotation(frames[key], key)
         assert_close(A, expected[key], key, EXACT, [
@@ -346,17 +364,19 @@ def check_vectors(ctx):
     own_frames = answer["frames"]
     if own_frames is not None and all(own_frames[key] is not None for key in KEYS):
         own_frames = {key: np.asarray(own_frames[key], dtype=float) for key in KEYS}
-        if not all(close(own_frames[key], frames[key], EXACT) for key in KEYS) and not any(
-                _does_nothing(own_frames[key], frames[key]) for key in KEYS):
+        if not all(close(own_frames[key], frames[key], EXACT) for key in KEYS):
+            findings = _frame_findings(own_frames, frames)
             own = _vectors_of(own_frames, v)
             if all(close(vectors[key], own[key], EXACT) for key in SHEET_VECTORS):
+                require_real("vectors()", "frames A_IC1, A_IC2, A_IC3", findings)
                 ctx.carry_forward(FRAMES, "frames A_IC1, A_IC2, A_IC3")
                 return
-            for key in SHEET_VECTORS:
-                assert_close(vectors[key], own[key], key, EXACT, _vector_mistakes(own_frames, v, key),
-                             context="(judged on your own frames)",
-                             note="Your frames differ from the reference's (their own check says how); the "
-                                  "coordinates are judged on them.")
+            if is_real(findings):  # else nothing of theirs to judge the coordinates on
+                for key in SHEET_VECTORS:
+                    assert_close(vectors[key], own[key], key, EXACT, _vector_mistakes(own_frames, v, key),
+                                 context="(judged on your own frames)",
+                                 note="Your frames differ from the reference's (their own check says how); the "
+                                      "coordinates are judged on them.")
     for key, target in SHEET_VECTORS.items():
         typed = [Mistake("typed_numbers", target, TYPED_HINT)] if key != "C3_v" else []
         assert_close(vectors[key], expected[key], key, EXACT, typed + _vector_mistakes(frames, v, key),

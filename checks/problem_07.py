@@ -4,6 +4,7 @@ import numpy as np
 
 from checks._effects import assert_no_side_effects
 from checks._figures import add_frames
+from checks._real import assert_real
 from checks._rigid import ROTATIONS, skew
 from grader import strategies as st
 from grader.checking import (
@@ -13,7 +14,6 @@ from grader.checking import (
     STAGE_VALUES,
     Mistake,
     Tol,
-    as_array,
     assert_close,
     assert_rotation,
     check,
@@ -45,9 +45,9 @@ SIGN_HINT = ("Your result has the opposite sign: skew(w) has -w3 at [0, 1], +w2 
 
 @check(1, title="skew(w) is a 3 x 3 matrix and unskew returns a 3-vector", stage=STAGE_SHAPE, group="skew")
 def check_skew_shape(ctx):
-    as_array(ctx.student("problem_07.skew", np.array([1.0, 2.0, 3.0])), "skew((1, 2, 3))", (3, 3))
+    assert_real(ctx.student("problem_07.skew", np.array([1.0, 2.0, 3.0])), "skew((1, 2, 3))", (3, 3))
     W = np.array([[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]])
-    as_array(ctx.student("problem_07.unskew", W), "unskew(skew((1, 2, 3)))", (3,))
+    assert_real(ctx.student("problem_07.unskew", W), "unskew(skew((1, 2, 3)))", (3,))
 
 
 @check(1, title="skew(w) @ x equals the cross product w × x on random vectors", stage=STAGE_RANDOM, group="skew")

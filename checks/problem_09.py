@@ -3,6 +3,7 @@
 import numpy as np
 
 from checks._figures import add_vectors
+from checks._real import require_real, rotation_flaw
 from checks._rigid import ROTATIONS
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, as_array, assert_close, check, close, fail
@@ -87,6 +88,9 @@ def check_set_transform(ctx):
                        name="set_transform", tol=EXACT, compare=compare, examples=10)
 
 
+#: the transformations of the student's own ``build_chain()`` that ``vectors()`` is judged on (probe order)
+CHAIN_TRANSFORMS = ("C3.get_transform()", "C3.get_transform(C1)", "C3.get_transform(C2)", "C3.get_transform(C3)")
+
 TYPED_HINT = (
     "These are the sheet's printed numbers (four decimals), not computed ones: compute them with get_transform "
     "over the chain; they are compared at full precision."
@@ -115,6 +119,8 @@ def check_vectors(ctx):
         v = np.ones(3)
         own = dict(zip(SHEET_VECTORS, (np.asarray(T, dtype=float) @ v for T in chain)))
         if all(close(vectors[key], own[key], EXACT) for key in SHEET_VECTORS):
+            require_real("vectors()", "frames of build_chain()", [
+                (name, rotation_flaw(T, ours)) for name, T, ours in zip(CHAIN_TRANSFORMS, chain, reference["chain"])])
             ctx.carry_forward(CHAIN, "frames of build_chain()")
             return
     for key, target in SHEET_VECTORS.items():

@@ -27,6 +27,7 @@ from grader.checking import (
     format_array,
 )
 
+from ._real import assert_real
 from ._rigid import (
     DT,
     KINEMATIC_MISTAKES,
@@ -63,10 +64,12 @@ MANUAL = {
 @check(1, title="integration_step keeps A_IB (3 x 3) and B_r_IB, B_v_B, B_omega_B (3-vectors) numeric",
        stage=STAGE_SHAPE, group="integration")
 def check_integration_shape(ctx):
+    expected = ctx.reference("problem_12.integrate", initial(ctx, 2), DT, 1)
     got = ctx.student("problem_12.integrate", initial(ctx, 2), DT, 1)
     shapes = {"A_IB": (2, 3, 3), "B_r_IB": (2, 3), "B_v_B": (2, 3), "B_omega_B": (2, 3)}
     for key, shape in shapes.items():
-        as_array(trace_array(got, key, shape)[1], f"{key} after one step", shape[1:])
+        assert_real(trace_array(got, key, shape)[1], f"{key} after one step", shape[1:],
+                    np.asarray(expected[key], dtype=float)[1])
 
 
 GENERIC = {

@@ -7,6 +7,7 @@ accepted); the motion itself is compared with the reference.
 import numpy as np
 
 from checks._figures import add_screw_run
+from checks._real import real, require_real
 from checks._rigid import SIMULATION, STATE, assert_traces, compact, sheet_state, trace_array
 from checks.problem_13 import assert_screw
 from checks.problem_12 import GENERIC
@@ -55,11 +56,15 @@ def check_run_state(ctx):
 @check(3, title="the sheet's run: at every step T lies on the screw axis and moves parallel to omega",
        stage=STAGE_VALUES, group="run")
 def check_run_screw(ctx):
+    expected = ctx.reference("problem_14.screw_run", _start(ctx), DT, STEPS)
     got = ctx.student("problem_14.screw_run", _start(ctx), DT, STEPS)
     add_screw_run(ctx, "Problem 14: the body's path and its screw axis at t = 0, 0.25, 0.5, 0.75, 1 s", got,
-                  ctx.reference("problem_14.screw_run", _start(ctx), DT, STEPS))
+                  expected)
     n = STEPS + 1
     screws = trace_array(got, "screw", (n, 2, 3))
     w, v = trace_array(got, "B_omega_B", (n, 3)), trace_array(got, "B_v_B", (n, 3))
+    require_real("the screw axis along your run", "run (B_omega_B and B_v_B at every step)", [
+        real("B_omega_B over the run", w, reference=expected["B_omega_B"]),
+        real("B_v_B over the run", v, reference=expected["B_v_B"])])
     for i in range(n):
         assert_screw(screws[i], w[i], v[i], where=f"after {i} step{'s' * (i != 1)} (t = {i * DT:g} s)")

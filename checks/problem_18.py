@@ -6,6 +6,7 @@ the defining property, I_a_Q = 0.
 
 import numpy as np
 
+from checks._real import assert_real
 from checks._rigid import FINITE
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, assert_close, as_array, check, fail
@@ -66,11 +67,13 @@ def check_zero_acceleration(ctx):
        stage=STAGE_STRUCTURE, group="no_solution")
 def check_no_solution(ctx):
     solvable = (1.0, 2.0, 0.5, 0.5)
+    expected = ctx.reference("problem_18.non_accelerating", *solvable)
     got = ctx.student("problem_18.non_accelerating", *solvable)
     if isinstance(got, str):
         fail(f"non_accelerating_point{solvable} raised {got}, but a solution exists (a . r = 1.5 >= 0): raising "
              "ValueError counts only where there is no solution.",
              "Raise ValueError only when a . r < 0 or r = 0; otherwise return (omega, omega_dot).", "always_raises")
+    assert_real(got, f"non_accelerating_point{solvable}", (2,), expected)  # raising counts beside a computed answer
     for args, why in (((1.0, 0.0, -1.0, 0.5), "a . r < 0: omega² would be negative"),
                       ((1.0, 2.0, 0.0, 0.0), "Q coincides with B (r = 0)")):
         got = ctx.student("problem_18.non_accelerating", *args)

@@ -22,6 +22,7 @@ from grader.checking import (
 )
 
 from ._figures import add_planar_arm
+from ._real import rank_flaw, require_real
 from ._planar import (
     CENTRAL_DIFFERENCES,
     CONFIGURATIONS,
@@ -78,8 +79,9 @@ def _assert_derivative(ctx, case):
     joints, rows = SIZES[case]
     for q in CONFIGURATIONS[case]:
         call = f"(q={list(q)}, d={FD_LINK})"
+        ours = ctx.reference("problem_21.jacobian", case, q, FD_LINK)
         mistakes = [
-            Mistake("chain_wrong", ctx.reference("problem_21.jacobian", case, q, FD_LINK), (
+            Mistake("chain_wrong", ours, (
                 f"Your jacobian_{case} is right, but it is not the derivative of your chain_{case}: chain_{case} is "
                 f"wrong (see its check).")),
             Mistake("degrees", ctx.reference("problem_21.jacobian", case, as_degrees(q), FD_LINK), DEGREES_HINT),
@@ -91,6 +93,8 @@ def _assert_derivative(ctx, case):
                         for x in as_list(got[side], f"chain_{case} at q {sign} h e_j, one per joint", joints)]
                        for side, sign in (("plus", "+"), ("minus", "-")))
         central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])
+        require_real(f"jacobian_{case}{call}", f"chain_{case}", [
+            (f"the central-difference Jacobian of your chain_{case} at q = {list(q)}", rank_flaw(central, ours))])
         assert_derivative(J, central, f"jacobian_{case}{call}", f"chain_{case}", mistakes, (
             f"Column j of J_{case} holds the derivatives of all coordinates of x_{case} with respect to q_j: "
             f"differentiate each entry of your chain_{case} again."))

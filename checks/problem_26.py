@@ -6,6 +6,7 @@ from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
 
 from ._figures import add_chairoplane, seat_between
+from ._real import rank_flaw, require_real
 from ._planar import (
     ANGLES,
     CENTRAL_DIFFERENCES,
@@ -84,8 +85,9 @@ def check_position_values(ctx):
 def check_jacobian_derivative(ctx):
     for args in CONFIGURATIONS:
         call = _describe("jacobian")(args)
+        ours = ctx.reference("problem_26.jacobian", *args)
         known = [
-            Mistake("position_wrong", ctx.reference("problem_26.jacobian", *args), "Your jacobian is right, but it is "
+            Mistake("position_wrong", ours, "Your jacobian is right, but it is "
                     "not the derivative of your position: position is wrong (see its check)."),
             Mistake("degrees", ctx.reference("problem_26.jacobian", *np.deg2rad(args[:2]), *args[2:]), DEGREES_HINT),
         ]
@@ -97,6 +99,8 @@ def check_jacobian_derivative(ctx):
         plus, minus = ([as_array(x, "position", (3,)) for x in as_list(got[side], f"position at q {sign} h e_j", 2)]
                        for side, sign in (("plus", "+"), ("minus", "-")))
         central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])
+        require_real(call, "position", [(f"the central-difference Jacobian of your position at (beta, phi) = "
+                                          f"{args[:2]}", rank_flaw(central, ours))])
         _assert_not_transposed(got["J"], central, call, CENTRAL_DIFFERENCES)
         J = as_array(got["J"], call, (3, 2))
         assert_derivative(J, central, call, "position", known, "Column 1 of J_f is d x / d beta, column 2 is d x / d "

@@ -18,6 +18,7 @@ from grader.checking import (
     figure,
 )
 
+from ._real import rank_flaw, require_real, rotation_flaw
 from ._shapes import as_dict, as_list
 from ._trees import (
     DIFFERENCES,
@@ -113,6 +114,10 @@ def check_gravity_potential(ctx):
                         for name, body in zip(names, bodies))
 
         fd = -np.array([(potential(plus) - potential(minus)) / (2 * H) for plus, minus in shifted])
+        require_real("generalized_gravity(tree, q, I_grav)", "positions and orientations", [
+            *((f"A_IB of {name} at q + h e_1", rotation_flaw(body.get("A_IB"), ours.get("A_IB")))
+              for name, body, ours in zip(names, shifted[0][0], expected["shifted"][0][0])),
+            ("-dV/dq of your own potential energy", rank_flaw(fd, expected["g"]))])
         assert_close(got["g"], fd, "generalized_gravity(tree, q, I_grav)", DIFFERENCES, [
             Mistake("sign_flip", -fd, "g(q) = -dV/dq points downhill, it is the generalized force of gravity."),
         ], context=f"(expected: -dV/dq of your own positions, I_grav = {I_GRAV.tolist()})")

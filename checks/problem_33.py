@@ -17,6 +17,7 @@ from grader.checking import (
     close,
 )
 
+from ._real import real, require_real, rotation_flaw
 from ._trees import (
     bodies_of,
     candidates,
@@ -86,6 +87,11 @@ def check_no_slip(ctx):
         q, names = args[0], expected["names"]
         known = candidates(ctx, description, *args, models=WALKER_MODELS)
         mine = bodies_of(got, names)
+        leg, ours = (bodies[names.index("stance_leg")] for bodies in (mine, bodies_of(expected, names)))
+        require_real("the contact point's motion", "motion of the stance leg", [
+            ("A_IB of stance_leg", rotation_flaw(leg.get("A_IB"), ours.get("A_IB"))),
+            *(real(f"{quantity} of stance_leg", leg.get(quantity), (3,), ours.get(quantity))
+              for quantity in ("B_r_IB", "B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B"))])
         v, a, w = _contact(mine, names, q, radius)
         expected_a = np.array([0.0, radius * w[2] ** 2, 0.0])
         if close(v, np.zeros(3), NO_SLIP) and close(a, expected_a, NO_SLIP):

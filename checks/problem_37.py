@@ -1,13 +1,13 @@
 """Checks of problem 37: the equations of motion by projected Newton-Euler (``DynamicBody.mfg_contribution``,
 ``forward_dynamics``), the three controllers and the robot's simulation under each.
 
-Physics first (no reference needed): ``M`` symmetric positive-definite, the kinetic energy and the potential energy
-of the student's own kinematics, Lagrange's equations for ``f`` with the student's own ``M``.  Then the values
-against the reference with a catalogue of known mistakes, on the robot (square Jacobians) and on random trees.  The
-controllers are judged by their torques at random states and by their behaviour: computed torques track the path,
-gravity compensation holds the arm still while it is not commanded to move, PD alone sags.  The student's
-simulations run once per grading, in the sandbox, on the reference's desired trajectory; the reference's runs are
-cached on disk.
+Physics first: ``M`` symmetric positive-definite, the kinetic energy and the potential energy of the student's own
+kinematics, Lagrange's equations for ``f`` with the student's own ``M`` (each where the student's own model is real:
+``checks._real``).  Then the values against the reference with a catalogue of known mistakes, on the robot (square
+Jacobians) and on random trees.  The controllers are judged by their torques at random states and by their
+behaviour: computed torques track the path, gravity compensation holds the arm still while it is not commanded to
+move, PD alone sags.  The student's simulations run once per grading, in the sandbox, on the reference's desired
+trajectory; the reference's runs are cached on disk.
 """
 
 import numpy as np
@@ -43,6 +43,7 @@ from ._dynamics import (
     run_figure,
     tree_cases,
 )
+from ._real import is_real, mass_matrix_flaw, real, require_real
 
 TITLE = "Robotic Arm. 2 - Controller Evaluation"
 
@@ -86,9 +87,10 @@ ODE_HINT = ("Your robot_ode differs from the reference's at three states of the 
 def _physics(ctx, compare, examples=8):
     extra = (H,)
     args = rich_case(extra=extra)
-    compare(ctx.student("_dynamics.lagrange", *args), args)
-    ctx.compare_random("_dynamics.lagrange", tree_cases(extra=extra), name="M, f, g", tol=EXACT,
-                       compare=lambda got, expected, a: compare(got, a), examples=examples, describe=describe_case)
+    expected = ctx.reference("_dynamics.lagrange", *args)
+    compare(ctx.student("_dynamics.lagrange", *args), expected, args)
+    ctx.compare_random("_dynamics.lagrange", tree_cases(extra=extra), name="M, f, g", tol=EXACT, compare=compare,
+                       examples=examples, describe=describe_case)
 
 
 @check(2, title="M is symmetric positive-definite on random trees (rotational, prismatic, rolling, 3-DOF and rigid "
@@ -305,6 +307,7 @@ def check_robot_ode(ctx):
         if own is None:
             assert_close(got[0], expected[0], name, EXACT, found)
             return
+        require_real(name, "M, f, g of the robot", _mfg_findings(own, reference[0]["mfg"]))
         own_ode = _own_ode(controller, rows, t, y, own)
         if close(got[0], own_ode, EXACT):
             ctx.carry_forward(ROBOT_MFG, "M, f, g")
@@ -336,6 +339,13 @@ def _own_mfg(answer, reference):
     if all(close(own[key], ours[key], EXACT) for key in ("M", "f", "g")):
         return None
     return own
+
+
+def _mfg_findings(own, ours):
+    """Whether the student's own M, f, g are a real model (``checks._real``): M positive-definite, f and g not zero
+    or constant where the reference's are not."""
+    return [("M", mass_matrix_flaw(own["M"])), real("f", own["f"], reference=ours["f"]),
+            real("g", own["g"], reference=ours["g"])]
 
 
 # ------------------------------------------------------------------------------------------ simulations
@@ -374,7 +384,8 @@ def _own_model(ctx, controller, table, probes):
     answer = ctx.student("problem_37.robot_ode_with_mfg", controller, table, probes)
     if not isinstance(answer, list) or len(answer) != len(probes) or not all(isinstance(a, dict) for a in answer):
         return False
-    if not all(_own_mfg([mine], [ours]) is not None for mine, ours in zip(answer, reference)):
+    if not all(_own_mfg([mine], [ours]) is not None and is_real(_mfg_findings(mine["mfg"], ours["mfg"]))
+               for mine, ours in zip(answer, reference)):
         return False
     return all(close(mine.get("ode"), _own_ode(controller, table, t, y, mine["mfg"]), EXACT)
                for mine, (t, y) in zip(answer, probes))

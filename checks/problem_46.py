@@ -29,6 +29,7 @@ from grader.checking import (
 )
 
 from ._dynamics import assert_run, run_array, subsample
+from ._real import rank_flaw, require_real
 
 TITLE = "Robotic Arm. 3 - Event Detection"
 MANUAL = {"derivation": ("46: derive the constraint terms J_lambda and sigma_lambda (and the Baumgarte terms).", 2)}
@@ -134,6 +135,7 @@ def check_constraint_jacobian(ctx):
     def compare(got, expected, args):
         J = as_array(got["J"], "J_lam", (1, 3))
         fd = np.array([[(plus - minus) / (2 * H) for plus, minus in got["shifted"]]])
+        require_real("J_lam", "event residual", [("d/dq of your own event residual", rank_flaw(fd, expected["J"]))])
         assert_close(J, -fd, "J_lam", DIFFERENCES, [
             Mistake("jacobian_sign", fd, CONSTRAINT_HINTS["jacobian_sign"]),
         ], context=f"at q = {np.round(args[0], 4).tolist()} (expected: -d/dq of your own event residual)")
