@@ -29,6 +29,7 @@ from grader.checking import (
 )
 
 from ._dynamics import assert_run, run_array, subsample
+from ._effects import assert_no_side_effects
 from ._real import rank_flaw, require_real
 
 TITLE = "Robotic Arm. 3 - Event Detection"
@@ -189,8 +190,17 @@ def _impacts(draw):
     return ([(M, J, qd)],)
 
 
+#: two closing impacts ``(M, J, qd_minus)`` without special structure, for the side-effect check of plastic_impact
+SIDE_IMPACTS = (
+    (np.array([[2.0, 0.3, -0.2], [0.3, 1.5, 0.4], [-0.2, 0.4, 1.2]]), np.array([[0.6, -0.3, 0.8]]),
+     np.array([-1.1, 0.7, -0.9])),
+    (np.array([[1.4, -0.2, 0.1], [-0.2, 2.2, 0.3], [0.1, 0.3, 0.9]]), np.array([[-0.4, 0.9, 0.5]]),
+     np.array([0.8, -1.3, -0.6])),
+)
+
+
 @check(3, title="plastic_impact: J qd+ = 0, Lam > 0 and no energy gained on random closing impacts, and the values "
-       "of the reference", stage=STAGE_STRUCTURE, group="wire")
+       "of the reference; qd_minus is left as it was", stage=STAGE_STRUCTURE, group="wire")
 def check_plastic_impact(ctx):
     def compare(got, expected, args):
         M, J, qd_minus = args[0][0]
@@ -221,6 +231,7 @@ def check_plastic_impact(ctx):
     ctx.compare_random("problem_46.impact", _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
                        describe=lambda args: "M = {}, J = {}, qd_minus = {}".format(
                            *(np.round(x, 4).tolist() for x in args[0][0])))
+    assert_no_side_effects(ctx, "problem_46", "plastic_impact", *SIDE_IMPACTS, ("M", "J", "qd_minus"))
 
 
 @st.composite

@@ -8,8 +8,9 @@ values (the sheet's conventions) against the reference at random pins and states
 """
 
 import numpy as np
-from grader import strategies as st
 
+from checks._effects import assert_no_side_effects
+from grader import strategies as st
 from grader.checking import (
     EXACT,
     STAGE_RANDOM,
@@ -112,8 +113,15 @@ def _describe_impact(args):
             f"x_cog = {x_cog:.4g}, y_cog = {y_cog:.4g}")
 
 
+#: two closing impacts ``(q_minus, qd_minus, m, theta, x_cog, y_cog)`` for the side-effect check of plastic_impact
+SIDE_IMPACTS = (
+    (np.array([0.3, 0.05, 0.4]), np.array([0.7, -2.1, 0.3]), 2.0, 0.15, 0.25, 0.4),
+    (np.array([-0.2, 0.02, -0.3]), np.array([-0.4, -1.6, -0.2]), 1.5, 0.1, 0.3, 0.35),
+)
+
+
 @check(3, title="plastic_impact: q+ = q-, J qd+ = 0 with your own J and Lam > 0 on random closing impacts, and the "
-       "values of the reference", stage=STAGE_VALUES, group="contact")
+       "values of the reference; q_minus and qd_minus are left as they were", stage=STAGE_VALUES, group="contact")
 def check_plastic_impact(ctx):
     def compare(got, expected, args):
         q_minus, qd_minus = args[:2]
@@ -137,6 +145,8 @@ def check_plastic_impact(ctx):
 
     ctx.compare_random("problem_47.impact", _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
                        describe=_describe_impact)
+    assert_no_side_effects(ctx, "problem_47", "plastic_impact", *SIDE_IMPACTS,
+                           ("q_minus", "qd_minus", "m", "theta", "x_cog", "y_cog"))
 
 
 @st.composite
