@@ -140,31 +140,58 @@ def check_mass_inertia(ctx):
                      MASS)
 
 
-@check(2, title="2(a): damping 8e-5 N m/(deg/s) declared in N m s/rad, input torque 0.06 sin(t) N m on the joint; "
-       "2(b): neither", stage=STAGE_VALUES, group="model")
-def check_damping_torque(ctx):
-    desc, what = _model(ctx, *TUTORIAL)
+#: damping [N m/(deg/s)] and torque amplitude [N m] that the sheet does not print: the model takes them from its
+#: arguments, so the tutorial's 8e-5 and 0.06 typed into the MJCF earn nothing
+UNPRINTED = (ALUMINIUM, EARTH, 2.5e-4, 0.11)
+TYPED_HINT = ("Your model declares the tutorial's {what} whatever {argument} it is given: build it from the argument "
+              "{argument} (the checks also ask other values).")
+
+
+def _unit_torque(desc):
+    """The joint torque of a model's motors at control 1."""
+    return sum((np.asarray(a["unit_torque"]) for a in desc["actuators"]), np.zeros(1))
+
+
+def _assert_inputs(ctx, args, tutorial=None):
+    """The joint's damping and the motor's torque at control 1 of ``pendulum(*args)`` are the reference's;
+    ``tutorial``: the reference's model of the tutorial, whose values typed in are a known mistake here."""
+    desc, what = _model(ctx, *args)
     joint = hinges(desc, 1, what)[0]
-    ref = reference_of(ctx.reference("problem_02.model", *TUTORIAL, persist=True), "tutorial model")
-    damping = ref["joints"][0]["damping"]
+    ref = reference_of(ctx.reference("problem_02.model", *args, persist=True), f"the model {what}")
+    damping, expected = ref["joints"][0]["damping"], _unit_torque(ref)
+    typed_damping, typed_torque = [], []
+    if tutorial is not None:
+        typed_damping = [Mistake("typed_numbers", tutorial["joints"][0]["damping"],
+                                 TYPED_HINT.format(what="damping (8e-5 N m/(deg/s), converted)", argument="damping"))]
+        typed_torque = [Mistake("typed_numbers", _unit_torque(tutorial),
+                                TYPED_HINT.format(what="torque amplitude 0.06", argument="torque"))]
     assert_close(joint["damping"], damping, f"the joint's damping [N m s/rad] in {what}", DAMPING, mistakes=[
         Mistake("damping_per_degree", damping * np.pi / 180, "The tutorial's 8e-5 is per DEGREE per second; MuJoCo's "
                 "damping is per RADIAN per second: multiply by 180/pi (1 rad/s = 57.3 deg/s)."),
         Mistake("damping_wrong_conversion", damping * (np.pi / 180) ** 2, "The conversion goes the other way: "
                 "N m/(deg/s) times 180/pi gives N m s/rad."),
+        *typed_damping,
     ])
-    torque = sum((np.asarray(a["unit_torque"]) for a in desc["actuators"]), np.zeros(1))
     if not desc["actuators"]:
-        fail(f"{what} has no actuator: the input torque 0.06 sin(t) has nothing to act through.",
+        fail(f"{what} has no actuator: the input torque {args[3]:g} sin(t) has nothing to act through.",
              '<actuator><motor joint="..." gear="torque"/></actuator>: the grader sets its control to sin(t).',
              "no_actuator")
-    expected = sum(np.asarray(a["unit_torque"]) for a in ref["actuators"])
-    assert_close(torque, expected, f"the joint torque at control 1 (the amplitude of torque sin(t)) in {what}",
-                 DAMPING, mistakes=[Mistake("unit_gear", np.ones_like(expected), "The grader sets the control to "
-                                            "sin(t); the motor's gear must scale it to torque sin(t): gear=\"torque\".")])
+    assert_close(_unit_torque(desc), expected, f"the joint torque at control 1 (the amplitude of torque sin(t)) in "
+                 f"{what}", DAMPING, mistakes=[
+                     Mistake("unit_gear", np.ones_like(expected), "The grader sets the control to sin(t); the "
+                             "motor's gear must scale it to torque sin(t): gear=\"torque\"."),
+                     *typed_torque])
+
+
+@check(2, title="2(a): damping 8e-5 N m/(deg/s) declared in N m s/rad, input torque 0.06 sin(t) N m on the joint "
+       "(and other damping and torque when asked); 2(b): neither", stage=STAGE_VALUES, group="model")
+def check_damping_torque(ctx):
+    tutorial = reference_of(ctx.reference("problem_02.model", *TUTORIAL, persist=True), "tutorial model")
+    _assert_inputs(ctx, TUTORIAL)
+    _assert_inputs(ctx, UNPRINTED, tutorial)
     quiet, quiet_what = _model(ctx, HDPE, EARTH)
     joint = hinges(quiet, 1, quiet_what)[0]
-    torque = sum((np.asarray(a["unit_torque"]) for a in quiet["actuators"]), np.zeros(1))
+    torque = _unit_torque(quiet)
     if joint["damping"] != 0.0 or np.any(torque != 0.0):
         fail(f"{quiet_what} must have no damping and no input torque: got damping {joint['damping']:g} N m s/rad "
              f"and a torque of {float(torque[0]):g} N m at control 1.",
