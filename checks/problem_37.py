@@ -377,6 +377,45 @@ def _simulation(ctx, controller):
     return table, got, expected, probes, ode, n
 
 
+#: where the table of the start check begins [s] (mid-motion: q_des and qd_des differ from those at 0), and how long
+#: that run lasts [s]
+LATER_START, START_RUN = 1.0, 0.045
+#: the sheet's q_des(0), printed with five decimals
+PRINTED = Tol("the sheet's five decimals", 1e-5)
+TYPED_START_HINT = ("Your simulation starts from the sheet's q_des(0) whatever table it is given: start from the "
+                    "table's first row, y0 = (q_des(0), qd_des(0)) of the trajectory passed to simulate (the checks "
+                    "also pass tables that start elsewhere).")
+
+
+def _later_table(table, start=LATER_START):
+    """The desired trajectory from ``start`` on, its times shifted to begin at 0: a table the sheet does not print,
+    whose first row is not q_des(0) of the sheet."""
+    rows = np.asarray(table["t"]) >= start - 1e-12
+    later = {key: np.asarray(table[key])[rows] for key in table}
+    later["t"] = later["t"] - later["t"][0]
+    return later
+
+
+def _assert_starts_on_the_table(ctx, controller):
+    """The run starts at the first row of the table it is given (a table that starts mid-motion), not at the
+    sheet's q_des(0) typed in."""
+    table = _table(ctx)
+    later = _later_table(table)
+    call = f"simulate({controller!r}, a table starting at q_des = {np.round(later['q'][0], 4).tolist()}, {START_RUN:g})"
+    got = ctx.student("problem_37.simulate", controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
+    n = int(np.sum(np.asarray(later["t"]) <= START_RUN))
+    q, qd = (run_array(got, key, (n, 3), call) for key in ("q", "qd"))
+    mine, start = np.concatenate([q[0], qd[0]]), np.concatenate([later["q"][0], later["qd"][0]])
+    if close(mine, start, EXACT):
+        return
+    try:
+        assert_close(mine, start, f"the state (q, qd) at t = 0 of {call}", EXACT, context="(the table's first row)")
+    except CheckFailure as exc:
+        typed = close(mine, np.concatenate([table["q"][0], table["qd"][0]]), PRINTED)
+        raise CheckFailure(exc.message, TYPED_START_HINT if typed else INITIAL_HINT,
+                           "typed_numbers" if typed else "initial_state") from None
+
+
 def _own_model(ctx, controller, table, probes):
     """True when the student's M, f, g of the robot differ from the reference's at the states ``probes`` of the
     reference's run while their robot_ode is right given them: their run is then judged on their own model."""
@@ -438,6 +477,7 @@ def _follow_reference(got, expected, controller):
        "follows the reference's", stage=STAGE_VALUES, group="runs")
 def check_computed_torques_run(ctx):
     controller = "computed_torques"
+    _assert_starts_on_the_table(ctx, controller)
     table, got, expected, probes, ode, n = _simulation(ctx, controller)
 
     def tracks():
@@ -458,6 +498,7 @@ def check_computed_torques_run(ctx):
        "follows the reference's until 0.75 s", stage=STAGE_VALUES, group="runs")
 def check_gravity_compensation_run(ctx):
     controller = "gravity_compensation"
+    _assert_starts_on_the_table(ctx, controller)
     table, got, expected, probes, ode, n = _simulation(ctx, controller)
 
     def holds():
@@ -479,6 +520,7 @@ def check_gravity_compensation_run(ctx):
        "reference's until 0.75 s", stage=STAGE_VALUES, group="runs")
 def check_pd_run(ctx):
     controller = "pd"
+    _assert_starts_on_the_table(ctx, controller)
     table, got, expected, probes, ode, n = _simulation(ctx, controller)
 
     def sags():
