@@ -269,6 +269,15 @@ def check_constrained_dynamics(ctx):
 # ------------------------------------------------------------------------------------------ the run
 
 
+#: a wire the sheet does not print: hung 10 cm higher and 10 cm longer, it becomes taut at about 0.987 s (the
+#: sheet's at 0.933 s), so that the sheet's event time typed in instead of detected earns nothing
+OTHER_WIRE = (np.array([-1.0, -0.9, -1.0]), 2.1)
+#: the run with the other wire ends shortly after its impact
+T_OTHER = 1.1
+TYPED_EVENT_HINT = ("Your run has the sheet's event time whatever wire it is given: detect the event with "
+                    "solve_ivp(..., events=[wire_stretched]) for the anchor and wire_length passed to simulate.")
+
+
 def _run(ctx, baumgarte):
     """The student's run and the reference's; the student's is simulated once per grading (kept on the context,
     which lives for the checks of this problem)."""
@@ -287,11 +296,11 @@ def _violation(run, what):
     return t[after], np.linalg.norm(ANCHOR - x[after], axis=1) - WIRE_LENGTH
 
 
-def _event(got, what):
+def _event(got, what, expected=0.933):
     if not isinstance(got, dict) or got.get("t_event") is None:
         fail(f"{what}: no event, the wire never became taut (t_event is None); the reference's run hits it at "
-             f"t = 0.933 s.", "The residual |anchor - I_r_E| - wire_length rises through zero: the event needs "
-             "direction = +1 (and terminal = True).", "no_event")
+             f"t = {expected:.3f} s.", "The residual |anchor - I_r_E| - wire_length rises through zero: the event "
+             "needs direction = +1 (and terminal = True).", "no_event")
     return float(got["t_event"])
 
 
@@ -307,7 +316,8 @@ def _aligned(got, expected, margin=0.01):
 
 
 @check(3, title="the run: the wire becomes taut at t = 0.933 s (within 2e-3 s of a tight run), q+ = q-, the impact "
-       "leaves J qd+ = 0 with Lam > 0, and q+, qd+ match within the erratum's bands", stage=STAGE_VALUES, group="wire")
+       "leaves J qd+ = 0 with Lam > 0, and q+, qd+ match within the erratum's bands; with a wire hung elsewhere, the "
+       "event and q+ follow", stage=STAGE_VALUES, group="wire")
 def check_event_and_impact(ctx):
     got, expected = _run(ctx, True)
     what = "simulate(trajectory, baumgarte=True)"
@@ -332,6 +342,33 @@ def check_event_and_impact(ctx):
                      f"prints {SHEET_Q_PLUS.tolist()})", note=ERRATUM)
         assert_close(qd_plus, expected["qd_plus"], "qd_plus", QD_PLUS, context=f"(a tight reference run; the sheet "
                      f"prints {SHEET_QD_PLUS.tolist()})", note=ERRATUM)
+    except CheckFailure as exc:
+        raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
+    _assert_other_wire(ctx)
+
+
+def _assert_other_wire(ctx):
+    """The run with a wire hung elsewhere (``OTHER_WIRE``) becomes taut when the reference's does, and the impact
+    happens there: the sheet's event time typed in fails."""
+    table = ctx.reference("problem_37.trajectory", persist=True)
+    anchor, length = OTHER_WIRE
+    expected = ctx.reference("problem_46.simulate", table, True, T_OTHER, OTHER_WIRE, persist=True)
+    what = (f"simulate(trajectory, baumgarte=True, t_end={T_OTHER:g}, anchor={anchor.tolist()}, "
+            f"wire_length={length:g})")
+    got = ctx.student("problem_46.simulate", table, True, T_OTHER, OTHER_WIRE, timeout=SIMULATION_TIMEOUT)
+    t_event = _event(got, what, expected["t_event"])
+    try:
+        assert_close(t_event, expected["t_event"], f"t_event of {what}", EVENT_TIME,
+                     [Mistake("typed_numbers", SHEET_EVENT_TIME, TYPED_EVENT_HINT)],
+                     context="(a tight reference run; a wire the sheet does not print)")
+    except CheckFailure as exc:
+        if exc.diagnosis:
+            raise
+        raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
+    q_minus, q_plus = (as_array(got[key], f"{key} of {what}", (3,)) for key in ("q_minus", "q_plus"))
+    assert_close(q_plus, q_minus, f"q_plus of {what}", EXACT, context="(an impact changes velocities only)")
+    try:
+        assert_close(q_plus, expected["q_plus"], f"q_plus of {what}", Q_PLUS, context="(a tight reference run)")
     except CheckFailure as exc:
         raise CheckFailure(exc.message, INTEGRATION_HINT, "integration") from None
 

@@ -28,9 +28,14 @@ def event(pkg, states):
             "direction": None if direction is None else float(direction)}
 
 
-def _terms(pkg, tree, q, qd, baumgarte):
+def _wire(wire):
+    """The keyword arguments of the wire ``(anchor, wire_length)``, or none for the sheet's wire."""
+    return {} if wire is None else {"anchor": np.asarray(wire[0], dtype=float), "wire_length": float(wire[1])}
+
+
+def _terms(pkg, tree, q, qd, baumgarte, wire=None):
     tree.forward_kinematics(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), np.zeros(3))
-    J, sigma = module(pkg, "problem_46").constraint_terms(tree["end_effector"], bool(baumgarte))
+    J, sigma = module(pkg, "problem_46").constraint_terms(tree["end_effector"], bool(baumgarte), **_wire(wire))
     return {"J": _matrix(J, 1), "sigma": np.asarray(sigma, dtype=float).reshape(-1)}
 
 
@@ -50,10 +55,10 @@ def constraint_mistakes(pkg, q, qd, baumgarte):
     E = tree.forward_kinematics(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), np.zeros(3))["end_effector"]
     A_IE, J_S, a_E = (np.asarray(x, dtype=float) for x in (E.A_IB, E.B_J_S, E.B_a_B))
     I_r_E, I_v_E = A_IE @ np.asarray(E.B_r_IB, dtype=float), A_IE @ np.asarray(E.B_v_B, dtype=float)
-    anchor, length = np.asarray(p46.ANCHOR, dtype=float), float(p46.WIRE_LENGTH)
+    hook, length = np.asarray(p46.ANCHOR, dtype=float), float(p46.WIRE_LENGTH)
     P_B, D_B = float(p46.P_BAUMGARTE), float(p46.D_BAUMGARTE)
-    distance = np.linalg.norm(I_r_E - anchor)
-    direction = (I_r_E - anchor) / distance
+    distance = np.linalg.norm(I_r_E - hook)
+    direction = (I_r_E - hook) / distance
     J = -(direction @ A_IE @ J_S).reshape(1, 3)
     bias = -direction @ A_IE @ a_E
     centripetal = -np.linalg.norm(np.cross(direction, I_v_E)) ** 2 / length
@@ -109,11 +114,13 @@ def constrained(pkg, cases):
 
 
 @probe
-def simulate(pkg, table, baumgarte, t_end):
+def simulate(pkg, table, baumgarte, t_end, wire=None):
     """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every
-    output time, and at the impact the constraint Jacobian from ``constraint_terms`` (``J_plus``)."""
+    output time, and at the impact the constraint Jacobian from ``constraint_terms`` (``J_plus``).  ``wire``:
+    ``(anchor, wire_length)`` of a wire hung elsewhere than the sheet's, passed to ``simulate`` and
+    ``constraint_terms``."""
     p46 = module(pkg, "problem_46")
-    run = p46.simulate(table, bool(baumgarte), t_end)
+    run = p46.simulate(table, bool(baumgarte), t_end, **_wire(wire))
     t, q, qd = trace(run, 3, "problem_46.simulate")
     tree = _robot(pkg)
     x = np.array([np.asarray(E.A_IB, dtype=float) @ np.asarray(E.B_r_IB, dtype=float)
@@ -125,5 +132,5 @@ def simulate(pkg, table, baumgarte, t_end):
     for key in ("q_minus", "qd_minus", "q_plus", "qd_plus"):
         out[key] = np.asarray(run[key], dtype=float).reshape(3)
     out["Lam"] = np.asarray(run["Lam"], dtype=float).reshape(-1)
-    out["J_plus"] = _terms(pkg, tree, out["q_plus"], out["qd_plus"], False)["J"]
+    out["J_plus"] = _terms(pkg, tree, out["q_plus"], out["qd_plus"], False, wire)["J"]
     return out

@@ -1,6 +1,8 @@
 """Problem 46: the robot arm of problem 37, under computed torques, caught by a wire.
 
-Problem data P46: the wire hangs at ``anchor = (-1, -1, -1)`` and is ``wire_length = 2`` long.  It becomes taut
+Problem data P46: the wire hangs at ``anchor = (-1, -1, -1)`` and is ``wire_length = 2`` long (``ANCHOR``,
+``WIRE_LENGTH``; the functions below take them as arguments with these defaults, and the grader also hangs the wire
+elsewhere).  It becomes taut
 when the end effector E reaches the distance ``wire_length`` from the anchor: the event residual
 ``|anchor - I_r_E| - wire_length`` crosses zero upwards (terminal, direction +1).  The wire does not stretch: a
 fully plastic impact, then motion under the unilateral constraint ``c = wire_length - |anchor - I_r_E| = 0`` with
@@ -56,7 +58,7 @@ SHEET_Q_PLUS = np.array([0.45214, -0.59389, -1.6775])
 SHEET_QD_PLUS = np.array([0.98849, 0.01024, -0.99379])
 
 
-def make_wire_event(tree):
+def make_wire_event(tree, anchor=ANCHOR, wire_length=WIRE_LENGTH):
     """The event function ``wire_stretched(t, y, *args)`` for ``scipy.integrate.solve_ivp`` (``y = (q, qd)``; the
     ``args`` that solve_ivp also passes to events are ignored): the residual ``|anchor - I_r_E| - wire_length`` of
     the end effector of ``tree``, with the attributes ``terminal`` (stop the integration) and ``direction`` (+1:
@@ -65,7 +67,7 @@ def make_wire_event(tree):
     raise NotImplementedError("Problem 46: make_wire_event is not implemented yet")
 
 
-def constraint_terms(end_effector, baumgarte=True):
+def constraint_terms(end_effector, baumgarte=True, anchor=ANCHOR, wire_length=WIRE_LENGTH):
     """``(J_lam, sigma_lam)`` of the taut wire from the current state of the ``end_effector`` body (after a pass of
     ``forward_kinematics(q, qd, 0)``, so that its ``B_a_B`` is the bias acceleration): the 1 x 3 constraint
     Jacobian and the 1-vector of its bias acceleration (see the module), with the Baumgarte terms
@@ -88,16 +90,17 @@ def constrained_dynamics(M, f, g, tau, J, sigma):
     raise NotImplementedError("Problem 46: constrained_dynamics is not implemented yet")
 
 
-def constrained_ode(t, y, tree, trajectory, baumgarte):
+def constrained_ode(t, y, tree, trajectory, baumgarte, anchor=ANCHOR, wire_length=WIRE_LENGTH):
     """The right-hand side ``dy/dt = (qd, qdd)`` of the robot on the taut wire under computed torques,
     ``y = (q, qd)``."""
     # TODO problem 46: write your solution here
     raise NotImplementedError("Problem 46: constrained_ode is not implemented yet")
 
 
-def simulate(trajectory, baumgarte=True, t_end=T_END):
-    """The robot under computed torques (problem 37) from the start of ``trajectory`` until the wire is taut, the
-    plastic impact, then the constrained motion to ``t_end``; output at the table's times.  Returns ``{"t", "q",
+def simulate(trajectory, baumgarte=True, t_end=T_END, anchor=ANCHOR, wire_length=WIRE_LENGTH):
+    """The robot under computed torques (problem 37) from the start of ``trajectory`` until the wire (hung at
+    ``anchor``, ``wire_length`` long) is taut, the plastic impact, then the constrained motion to ``t_end``; output
+    at the table's times.  Returns ``{"t", "q",
     "qd"}`` (both phases; the row at the event time is the state after the impact), ``"t_event"``,
     ``"q_minus"``, ``"qd_minus"``, ``"q_plus"``, ``"qd_plus"``, ``"Lam"`` (``t_event`` None and no impact values if
     the wire never becomes taut)."""

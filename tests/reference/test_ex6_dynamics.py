@@ -321,6 +321,22 @@ def test_plastic_impact_closes_the_constraint(wire_runs):
     assert (J @ run["qd_minus"])[0] < 0
 
 
+def test_a_wire_hung_elsewhere_becomes_taut_where_its_own_length_is_reached(trajectory):
+    """Hung 10 cm higher and 10 cm longer, the wire becomes taut about 0.05 s later than the sheet's, when the end
+    effector reaches its length from its anchor, and the impact closes that constraint."""
+    anchor, length = np.array([-1.0, -0.9, -1.0]), 2.1
+    run = problem_46.simulate(trajectory, True, 1.1, anchor, length)
+    assert run["t_event"] - problem_46.SHEET_EVENT_TIME > 0.04
+    tree = problem_37.build_dynamic_robot()
+    I_r_E = tree.forward_kinematics(run["q_minus"], run["qd_minus"], np.zeros(3))["end_effector"].I_r_IB
+    assert np.linalg.norm(anchor - I_r_E) == pytest.approx(length, abs=1e-9)
+    J, _ = problem_46.constraint_terms(tree["end_effector"], False, anchor, length)
+    assert (J @ run["qd_minus"])[0] < 0 and run["Lam"][0] > 0
+    tree.forward_kinematics(run["q_plus"], run["qd_plus"], np.zeros(3))
+    J, _ = problem_46.constraint_terms(tree["end_effector"], False, anchor, length)
+    assert abs((J @ run["qd_plus"])[0]) < 1e-12
+
+
 def test_the_wire_stays_taut_after_the_impact(wire_runs):
     tree = problem_37.build_dynamic_robot()
     event = problem_46.make_wire_event(tree)
