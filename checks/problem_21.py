@@ -135,8 +135,14 @@ def check_jacobian_b_values(ctx):
 # ------------------------------------------------------------------------------------ the sheet's numbers
 
 
-@check(1, title="case (2), q_b: the end effector is at (-0.1799, 0.3616, 1.0472) as on the sheet",
-       stage=STAGE_VALUES, group="sheet")
+#: added to the sheet's q_b: a configuration the sheet does not print, where the printed pose typed in earns nothing
+UNPRINTED_SHIFT = np.array([0.15, -0.3, 0.1, 0.4])
+TYPED_HINT = ("These are the sheet's printed numbers for q_b, whatever q is given: compute the pose from q and d "
+              "(the checks also ask configurations the sheet does not print).")
+
+
+@check(1, title="case (2), q_b: the end effector is at (-0.1799, 0.3616, 1.0472) as on the sheet (and where the "
+       "reference's is at a configuration the sheet does not print)", stage=STAGE_VALUES, group="sheet")
 def check_sheet_target(ctx):
     case = ctx.reference("problem_21.sheet_case")
     q_b, d, target = case["q_b"], case["d"], np.asarray(case["target"], dtype=float)
@@ -147,3 +153,10 @@ def check_sheet_target(ctx):
     mistakes += sign_flips(x_b[6:], target, SHEET, SIGN_HINT)
     assert_close(x_b[6:], target, "(xe, ye, gammae) of case (2) with q_b", SHEET, mistakes,
                  context="(the sheet's value)")
+    other = [float(x) for x in np.asarray(q_b, dtype=float) + UNPRINTED_SHIFT]
+    expected = np.asarray(ctx.reference("problem_21.chain", "b", other, d), dtype=float)[6:]
+    x_other = as_array(ctx.student("problem_21.chain", "b", other, d), f"chain_b({np.round(other, 4).tolist()}, {d:g})",
+                       (9,))
+    assert_close(x_other[6:], expected, f"(xe, ye, gammae) at q = {np.round(other, 4).tolist()}", EXACT,
+                 [Mistake("typed_numbers", target, TYPED_HINT)],
+                 context="(a configuration the sheet does not print, against the reference)")

@@ -64,12 +64,33 @@ def _misaligned_mistakes(I1, alpha):
                     "(1/1000 rad).")]
 
 
-@check(2, title="(b) I2 = A I1 A.T for the misalignment alpha = 1e-3 about 3: the sheet's value", stage=STAGE_VALUES,
-       group="I2")
+#: a rotor and a misalignment the sheet does not print (the sheet's I2 and forces typed in earn nothing there)
+OTHER_I1, OTHER_ALPHA = np.diag([2.0, 5.0, 5.0]), 2e-2
+OTHER_ROTOR = (np.array([[2.0, -0.1, 0.0], [-0.1, 5.0, 0.0], [0.0, 0.0, 5.0]]), 3.0, 2.0, 9.81, 1.5)
+TYPED_HINT = ("These are the sheet's model answers whatever the arguments: compute them from the arguments (the "
+              "checks also ask values the sheet does not print).")
+
+
+def _assert_misaligned(got, expected, I1, alpha, extra=(), context=""):
+    """``I2`` of ``inertia_misaligned(I1, alpha)``: the small-angle rotation (the reference's) or the exact one."""
+    exact = _rot3(alpha) @ I1 @ _rot3(alpha).T
+    if close(got, exact, EXACT):
+        return
+    assert_close(got, expected, f"inertia_misaligned(I1, {alpha:.6g})", EXACT,
+                 [*extra, *_misaligned_mistakes(I1, alpha)],
+                 context=context or "(with sin alpha = alpha, cos alpha = 1; the exact rotation is accepted as well)")
+
+
+@check(2, title="(b) I2 = A I1 A.T for the misalignment alpha = 1e-3 about 3: the sheet's value (and the reference's "
+       "for a rotor the sheet does not print)", stage=STAGE_VALUES, group="I2")
 def check_inertia_misaligned(ctx):
     got = ctx.student("problem_39.inertia_misaligned", I1_SHEET, ALPHA)
     assert_close(got, I2_SHEET, f"inertia_misaligned(I1, {ALPHA:g})", SMALL_ANGLE,
                  _misaligned_mistakes(I1_SHEET, ALPHA), context="(the sheet's model answer; an exact rotation by alpha is accepted as well)")
+    expected = ctx.reference("problem_39.inertia_misaligned", OTHER_I1, OTHER_ALPHA)
+    _assert_misaligned(ctx.student("problem_39.inertia_misaligned", OTHER_I1, OTHER_ALPHA), expected, OTHER_I1,
+                       OTHER_ALPHA, [Mistake("typed_numbers", I2_SHEET, TYPED_HINT)],
+                       "(a rotor the sheet does not print; the exact rotation is accepted as well)")
 
 
 @st.composite
@@ -83,12 +104,7 @@ def _inertias(draw):
        "exact)", stage=STAGE_RANDOM, group="I2")
 def check_inertia_misaligned_random(ctx):
     def compare(got, expected, args):
-        I1, alpha = args
-        exact = _rot3(alpha) @ I1 @ _rot3(alpha).T
-        if close(got, exact, EXACT):
-            return
-        assert_close(got, expected, f"inertia_misaligned(I1, {alpha:.6g})", EXACT, _misaligned_mistakes(I1, alpha),
-                     context="(with sin alpha = alpha, cos alpha = 1; the exact rotation is accepted as well)")
+        _assert_misaligned(got, expected, *args)
 
     ctx.compare_random("problem_39.inertia_misaligned", _inertias(), name="I2", tol=EXACT, compare=compare,
                        examples=10)
@@ -110,21 +126,26 @@ def _force_mistakes(I2, omega, m, g, d, expected):
     ]
 
 
-def _assert_forces(got, expected, args, tol, context=""):
-    """``[F1, F2]`` (rows) against the expected forces, with the known mistakes of the pair."""
+def _assert_forces(got, expected, args, tol, context="", extra=()):
+    """``[F1, F2]`` (rows) against the expected forces, with the known mistakes of the pair (and ``extra``)."""
     if not isinstance(got, list) or len(got) != 2:
         fail(f"bearing_forces must return the two forces (F1, F2), got {str(got)[:200]}", diagnosis="format")
-    found = [Mistake(mistake, np.array(value), hint) for mistake, value, hint in _force_mistakes(*args, expected)]
+    found = [*extra, *(Mistake(mistake, np.array(value), hint)
+                       for mistake, value, hint in _force_mistakes(*args, expected))]
     assert_close(np.array(got, dtype=float), np.array(expected), "(F1, F2) (one force per row)", tol, found,
                  context=context)
 
 
 @check(2, title="(c) the sheet's forces: F1 = (0, 1.5e6, 0) N and F2 = (0, -0.5e6, 0) N at 1500 rpm (pi = sqrt(10), "
-       "g = 10)", stage=STAGE_VALUES, group="forces")
+       "g = 10), and the reference's for a rotor the sheet does not print", stage=STAGE_VALUES, group="forces")
 def check_bearing_forces(ctx):
     args = (I2_SHEET, OMEGA, MASS, GRAVITY, DISTANCE)
     got = ctx.student("problem_39.bearing_forces", *args)
     _assert_forces(got, [F1_SHEET, F2_SHEET], args, FORCES, "(the sheet's model answer)")
+    expected = ctx.reference("problem_39.bearing_forces", *OTHER_ROTOR)
+    _assert_forces(ctx.student("problem_39.bearing_forces", *OTHER_ROTOR), expected, OTHER_ROTOR, EXACT,
+                   "(a rotor the sheet does not print, against the reference)",
+                   [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
 
 
 @st.composite

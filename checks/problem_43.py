@@ -266,8 +266,15 @@ def check_accelerations_values(ctx):
                        examples=8, describe=_describe)
 
 
+#: a state and a bar the sheet does not print: the sheet's qdd and lam typed in earn nothing there
+OTHER_CASE = (np.array([0.8, 1.3, np.pi / 6]), np.zeros(3), 0.7, 1.4, GRAVITY)
+TYPED_HINT = ("These are the sheet's numbers whatever the state: compute qdd and lam from the arguments (the checks "
+              "also ask states the sheet does not print).")
+
+
 @check(2, title="(c) at q = (1, 1, 45 deg) at rest (m = 0.5, theta = 1, g = 9.81): qdd = (-2.4525, -7.3575, "
-       "-2.4525) and lam = 1.7342 (the sheet's 1.742 is a misprint)", stage=STAGE_VALUES, group="bar")
+       "-2.4525) and lam = 1.7342 (the sheet's 1.742 is a misprint); the reference's at a state the sheet does not "
+       "print", stage=STAGE_VALUES, group="bar")
 def check_sheet(ctx):
     args = (Q0, np.zeros(3), MASS, THETA, GRAVITY)
     expected = ctx.reference("problem_43.accelerations", *args)
@@ -277,3 +284,12 @@ def check_sheet(ctx):
     lam_mistakes = [*mistakes["lam"], Mistake("sheet_misprint", np.array([SHEET_LAMBDA]), ERRATUM)]
     assert_close(got["qdd"], SHEET_QDD, "qdd", SHEET, mistakes["qdd"], context="(the sheet's state)")
     assert_close(got["lam"], np.array([lam]), "lam", SHEET, lam_mistakes, context="(the sheet's state)", note=ERRATUM)
+    expected = ctx.reference("problem_43.accelerations", *OTHER_CASE)
+    mistakes = {key: _mistakes(ctx, OTHER_CASE, key) for key in ("qdd", "lam")}
+    got = ctx.student("problem_43.accelerations", *OTHER_CASE)
+    where = f"at {_describe(OTHER_CASE)} (a state the sheet does not print)"
+    assert_close(got["qdd"], expected["qdd"], "qdd", EXACT, [Mistake("typed_numbers", SHEET_QDD, TYPED_HINT),
+                                                             *mistakes["qdd"]], context=where)
+    assert_close(got["lam"], expected["lam"], "lam", EXACT, [Mistake("typed_numbers", np.array([lam]), TYPED_HINT),
+                                                             Mistake("typed_numbers", np.array([SHEET_LAMBDA]),
+                                                                     TYPED_HINT), *mistakes["lam"]], context=where)
