@@ -20,6 +20,15 @@ def test_template_is_current():
     assert done.returncode == 0, done.stderr
 
 
+def test_the_template_package_says_what_it_is():
+    """The template's package docstring is its own: a student's package to fill in, not the reference solution."""
+    template = ast.get_docstring(ast.parse((ROOT / "student_template" / "__init__.py").read_text()))
+    reference = ast.get_docstring(ast.parse((ROOT / "reference" / "__init__.py").read_text()))
+    assert reference.startswith("Reference solution")
+    assert "Reference solution" not in template and "NotImplementedError" in template
+    assert "answers.toml" in template and "grade problem-6" in template
+
+
 def _api(source: str) -> dict:
     """Public names and signatures: module __all__, functions, classes and their methods."""
     tree = ast.parse(source)

@@ -8,12 +8,14 @@ Every region between ``# BEGIN SOLUTION problem N`` and ``# END SOLUTION`` is re
 method.  A top-level block between ``# BEGIN REFERENCE ONLY`` and ``# END REFERENCE ONLY`` (the grader's own
 computations, e.g. of multiple-choice keys) is left out of the template entirely; its names stay out of
 ``__all__``.  ``reference/answers.toml`` becomes ``answers.toml`` with every answer blank ("") and a comment saying
-what kind of value is expected.  Everything else is copied verbatim.
+what kind of value is expected.  The package's docstring is the template's own (``PACKAGE_DOCSTRING``).
+Everything else is copied verbatim.
 """
 
 from __future__ import annotations
 
 import argparse
+import ast
 import re
 import sys
 import tomllib
@@ -40,6 +42,23 @@ imports (`from .rotations import skew`).
 Grade one problem with `grade problem-6` (from this folder), or `grade problem-6 --html report.html` for a report
 with plots.  `grade list` shows every problem and its points.
 """
+
+
+#: the template package's own docstring, in place of the reference's (which says it is the solution)
+PACKAGE_DOCSTRING = '''"""Your multibody-dynamics package: the student template of the course.
+
+The package is a small multibody library (rotations, coordinate systems, rigid bodies, inertia, kinematic trees)
+plus one ``problem_NN`` module per problem of the exercise sheet.  Fill in every function that raises
+``NotImplementedError("Problem N: ...")``, and the answers in ``answers.toml``; keep the names and signatures, which
+the grader calls.  ``grade problem-6`` in this folder grades problem 6.
+
+Notation (see ``conventions``): ``A_XY`` maps Y-coordinates to X-coordinates, ``B_r_IB`` is the position of B
+from I expressed in B, adjacent frame letters cancel (``A_IB @ A_BC == A_IC``).  SI units, radians.
+
+Import inside the package with relative imports (``from .rotations import skew``): the grader imports the package
+under another name.
+"""
+'''
 
 
 class TemplateError(ValueError):
@@ -112,6 +131,17 @@ def stub_source(source: str, filename: str = "<source>") -> str:
     return "".join(out)
 
 
+def with_docstring(source: str, docstring: str, filename: str = "<source>") -> str:
+    """``source`` with its module docstring replaced by ``docstring`` (a string literal and its newline)."""
+    tree = ast.parse(source, filename)
+    first = tree.body[0] if tree.body else None
+    if not (isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant)
+            and isinstance(first.value.value, str)):
+        raise TemplateError(f"{filename}: the package has no docstring to replace")
+    lines = source.splitlines(keepends=True)
+    return "".join(lines[: first.lineno - 1]) + docstring + "".join(lines[first.end_lineno:])
+
+
 def _describe(value) -> str:
     if isinstance(value, bool):
         return "true or false"
@@ -159,6 +189,7 @@ def render() -> dict[str, str]:
     files: dict[str, str] = {}
     for path in sorted(REFERENCE.glob("*.py")):
         files[path.name] = stub_source(path.read_text(), str(path))
+    files["__init__.py"] = with_docstring(files["__init__.py"], PACKAGE_DOCSTRING, str(REFERENCE / "__init__.py"))
     answers = REFERENCE / "answers.toml"
     if answers.exists():
         files["answers.toml"] = answers_template(answers.read_text())
