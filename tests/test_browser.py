@@ -240,7 +240,8 @@ def test_the_class_summary_of_a_large_class_fits_1280_px(browser, tmp_path):
 
 
 def test_the_readme_example_report(browser, tmp_path, capsys):
-    """The README's example, `grade problem-8 --html report.html` on a finished submission, opens with its plot."""
+    """The README's example for a student, `grade problem-8 --html report.html` on a finished submission, opens with
+    its plot."""
     from grader.cli import main
 
     copy_reference(tmp_path / "mywork")

@@ -397,9 +397,9 @@ def test_a_canvas_export_as_roster_matches_every_student_and_canvas_reads_their_
     assert main(["export", str(out)]) == 0 and (out / "canvas.csv").is_file()
 
 
-def test_the_readmes_course_file_reads_as_it_says():
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
-    text = re.search(r"```toml\n(.*?)```", readme, re.S).group(1)
+def test_the_guides_course_file_reads_as_it_says():
+    guide = (Path(__file__).resolve().parents[1] / "docs" / "instructors.md").read_text()
+    text = re.search(r"```toml\n(.*?)```", guide, re.S).group(1)
     course = parse_course(text, Path("course.toml"), set(range(1, 48)))
     assert [a.name for a in course.assignments] == ["Exercise II", "Exercise III"]
     assert course.late == LatePolicy(per_day=0.10, max_days=5, cap=0.30, grace_days=2)

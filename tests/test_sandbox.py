@@ -510,7 +510,7 @@ def test_the_test_run_says_how_student_code_runs_here(monkeypatch):
     assert sandbox_header() == ["sandbox: a plain process with resource limits (bubblewrap is not available)"]
 
 
-# ------------------------------------------------------------------------------------------ what the README says
+# ------------------------------------------------------------------------------------------ what the guide says
 
 
 def test_the_report_says_what_a_plain_process_had(tmp_path):
@@ -532,9 +532,10 @@ def test_the_report_says_what_a_plain_process_had(tmp_path):
         child.__exit__(None, None, None)
 
 
-#: each sentence of the README's sandbox section, and what holds it: hostile submissions (``tests/hostile/NAME``,
-#: graded in bubblewrap and as plain processes, fresh and warm) and tests (``module::function``)
-README_SANDBOX = {
+#: each sentence of the instructors' guide's sandbox section (docs/instructors.md), and what holds it: hostile
+#: submissions (``tests/hostile/NAME``, graded in bubblewrap and as plain processes, fresh and warm) and tests
+#: (``module::function``)
+SANDBOX_SECTION = {
     "Student code never runs as root, and each report says how it ran.":
         ("kill_everything", "test_hostile::test_fallback_is_reported",
          "test_sandbox::test_concurrent_children_run_under_different_unprivileged_uids"),
@@ -576,7 +577,8 @@ README_SANDBOX = {
         ("test_sandbox::test_the_report_says_what_a_plain_process_had", "test_hostile::test_fallback_is_reported",
          "test_install::test_a_student_without_bubblewrap_is_told_plainly_and_keeps_their_cache"),
     "The student kit on a student's own machine without bubblewrap uses the portable mode instead (see "
-    "[Students](#students)): no filter and no confinement, only a guard of the grading against crashes and hangs.":
+    "[students.md](students.md#where-your-code-runs)): no filter and no confinement, only a guard of the grading "
+    "against crashes and hangs.":
         ("test_portable::test_the_kit_on_a_laptop_chooses_the_portable_mode",
          "test_portable::test_a_portable_grading_says_what_it_protects", "test_hostile::test_hostile_submission_portable",
          "test_laptops::test_grade_init_and_problem_6_work_without_posix"),
@@ -593,22 +595,23 @@ README_SANDBOX = {
 }
 
 
-def readme_sandbox_sentences() -> list[str]:
-    """The sentences of the README's sandbox section (from "Student code never runs as root" to the students')."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = text[text.index("Student code never runs as root"):text.index("## Students")]
+def sandbox_sentences() -> list[str]:
+    """The sentences of the sandbox section of docs/instructors.md (from "Student code never runs as root" to the
+    next section, the student kit's)."""
+    text = (ROOT / "docs" / "instructors.md").read_text(encoding="utf-8")
+    section = text[text.index("Student code never runs as root"):text.index("## The student kit")]
     lines = [line.removeprefix("- ") for line in section.splitlines() if not line.rstrip().endswith(":")]
     flowing = " ".join(" ".join(lines).split())
     return re.split(r"(?<=[.)])\s+(?=[A-Z`])", flowing)
 
 
-def test_each_sentence_of_the_readme_sandbox_section_is_held_by_a_test():
+def test_each_sentence_of_the_guides_sandbox_section_is_held_by_a_test():
     import importlib
 
     from .submissions import hostile_names
 
-    assert readme_sandbox_sentences() == list(README_SANDBOX)
-    for sentence, holders in README_SANDBOX.items():
+    assert sandbox_sentences() == list(SANDBOX_SECTION)
+    for sentence, holders in SANDBOX_SECTION.items():
         for holder in holders:
             if "::" in holder:
                 module, function = holder.split("::")

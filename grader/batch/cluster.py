@@ -150,8 +150,8 @@ def grade_remote(job: dict) -> tuple[str, object, float]:
 
 #: Dask's own monitoring, quietened for a local grading cluster: its statistical profiler samples each worker's
 #: running task every 10 ms (about 3 % of a core per worker, which the students' grading then lacks), and the
-#: event-loop and memory monitors poll 50 and 10 times a second.  The README says how to set the same on the
-#: workers of a cluster a course starts itself.
+#: event-loop and memory monitors poll 50 and 10 times a second.  docs/instructors.md says how to set the same on
+#: the workers of a cluster a course starts itself.
 QUIET_MONITORING = {
     "distributed.worker.profile.enabled": False,
     "distributed.admin.tick.interval": "1s",
@@ -207,7 +207,7 @@ def transport(address: str, credentials: Credentials = Credentials()) -> str:
                    if not path]
         if missing:
             raise ClusterRefused(f"the cluster {address} speaks TLS: give the certificate files {', '.join(missing)} "
-                                 "(see the README's cluster section)")
+                                 "(see the cluster section of docs/instructors.md)")
         unreadable = [path for path in credentials.files if not os.access(path, os.R_OK)]
         if unreadable:
             raise ClusterRefused(f"the certificate file {unreadable[0]} cannot be read")
@@ -218,8 +218,9 @@ def transport(address: str, credentials: Credentials = Credentials()) -> str:
         if not credentials.insecure:
             raise ClusterRefused(f"the cluster {address} speaks plain TCP ({scheduler}): anyone who can reach its "
                                  "scheduler runs code as its workers' user. Start it with TLS and pass tls://... "
-                                 "with --tls-ca-file, --tls-cert and --tls-key (see the README's cluster section), "
-                                 "or pass --insecure to use it as it is (recorded in the gradebook)")
+                                 "with --tls-ca-file, --tls-cert and --tls-key (see the cluster section of "
+                                 "docs/instructors.md), or pass --insecure to use it as it is (recorded in the "
+                                 "gradebook)")
         if any(credentials.files):
             raise ClusterRefused("--tls-* files are for a tls:// cluster: this one speaks plain TCP")
         return "--insecure: plain TCP, unauthenticated (the instructor's choice)"

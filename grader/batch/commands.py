@@ -182,7 +182,7 @@ def add_batch_parser(sub) -> None:
     p.add_argument("--cluster", default=None, metavar="ADDRESS",
                    help="grade on a Dask cluster: the scheduler's address (tls://host:8786) or scheduler file, or "
                         "local:N for N worker processes on this machine, with TLS and temporary credentials (see "
-                        "the README); instead of --jobs")
+                        "docs/instructors.md); instead of --jobs")
     p.add_argument("--tls-ca-file", default=None, metavar="PEM",
                    help="the certificate authority of a tls:// cluster (as `dask scheduler --tls-ca-file`)")
     p.add_argument("--tls-cert", default=None, metavar="PEM", help="this client's certificate for a tls:// cluster")
