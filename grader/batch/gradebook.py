@@ -191,7 +191,7 @@ def now() -> str:
 
 
 #: the grader's modules that run every check: the import graph from these reaches the rest of the machinery
-_MACHINERY = ("grader.runner", "grader.context", "grader.sandbox.worker")
+_MACHINERY = ("grader.runner", "grader.context", "grader.sandbox.worker", "grader.sandbox.forkserver")
 #: third-party packages whose versions can change a verdict (random inputs, numerics)
 _VERDICT_DEPENDENCIES = ("numpy", "scipy", "sympy", "hypothesis", "mujoco")
 _PROJECT_PACKAGES = ("grader", "checks", "probes", "reference")

@@ -178,12 +178,14 @@ def _make_readable(root: Path) -> None:
 
 @functools.lru_cache(maxsize=1)
 def runtime_dir() -> Path:
-    """A private directory holding the worker, its protocol module and the probes (the package this process
-    imports): the only grader code the child sees."""
+    """A private directory holding the worker (its serving loop, its confinement and the fork server of a batch
+    slot, with the modules they use) and the probes (the package this process imports): the only grader code the
+    child sees."""
     root = Path(tempfile.mkdtemp(prefix="grader-runtime-"))
     atexit.register(shutil.rmtree, root, True)
     here = Path(__file__).parent
-    for name in ("worker.py", "protocol.py", "notebook.py", "seccomp.py", "portable_worker.py"):
+    for name in ("worker.py", "confinement.py", "forkserver.py", "protocol.py", "notebook.py", "seccomp.py",
+                 "portable_worker.py"):
         shutil.copy2(here / name, root / name)
     probes = Path(importlib.import_module("probes").__file__).parent
     shutil.copytree(probes, root / "probes", ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
@@ -475,8 +477,7 @@ def _bwrap_argv(python: str, submission: Path, worker_args: list[str], root: boo
     argv += ["--ro-bind", str(runtime), "/grader"]
     if zygote:
         argv += ["--ro-bind", str(submission), "/slot", "--dir", "/submission", "--chdir", "/tmp"]
-        return [*argv, "--", python, "-I", "-B", "/grader/worker.py", "zygote", worker_args[0], "/slot",
-                worker_args[1]]
+        return [*argv, "--", python, "-I", "-B", "/grader/forkserver.py", worker_args[0], "/slot", worker_args[1]]
     argv += ["--ro-bind", str(submission), "/submission", "--chdir", "/tmp"]
     return [*argv, "--", python, "-I", "-B", "/grader/worker.py", *worker_args[:2], "/submission", worker_args[2]]
 
@@ -546,8 +547,8 @@ def prepare_zygote(staging: Path, control_fd: int, mode: SandboxMode, preload: l
         return Launch(argv, child_env("/tmp"), tempfile.gettempdir())
     if root:
         _refuse_unsafe(python)
-    worker = runtime_dir() / "worker.py"
-    argv = [python, "-I", "-B", str(worker), "zygote", str(control_fd), str(staging), json.dumps(config)]
+    forkserver = runtime_dir() / "forkserver.py"
+    argv = [python, "-I", "-B", str(forkserver), str(control_fd), str(staging), json.dumps(config)]
     return Launch(argv, child_env(str(staging)), str(staging))
 
 

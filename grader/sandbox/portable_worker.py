@@ -7,7 +7,8 @@ Requests arrive on standard input and replies leave on standard output; before a
 both pipes to descriptors of their own and points standard input at the null device and standard output at the
 file ``config["output"]``, so that what the student's code prints (from Python, C or a program it starts) can
 never be taken for a reply.  Limits of ``resource`` are applied where the platform has that module.  Standard
-library only, plus ``worker.py`` and ``protocol.py``, which the grader copies next to it.
+library only, plus ``worker.py``, ``protocol.py`` and what ``worker.py`` imports (its confinement is never
+called here), which the grader copies next to it.
 """
 
 from __future__ import annotations
@@ -83,17 +84,12 @@ def main(argv: list[str]) -> int:
     try:
         info = {"python": sys.executable, "version": sys.version.split()[0], "portable": True,
                 "limits": apply_limits(config.get("limits", {}))}
-        worker._import_dependencies(config.get("require", []))
+        worker.import_dependencies(config.get("require", []))
     except BaseException as exc:  # noqa: BLE001 - reported to the grader as a fault of the set-up
-        reply = worker._error(0, "setup", exc, f"{type(exc).__name__}: {exc}")
-        reply["missing"] = getattr(exc, "name", None) if isinstance(exc, ImportError) else None
-        protocol.write_message(reply_fd, reply)
+        protocol.write_message(reply_fd, worker.setup_fault(exc))
         return 70
-    sys.meta_path.insert(0, worker._BlockTrustedPackages())
-    for name in [m for m in sys.modules if m.split(".")[0] in worker.BLOCKED]:
-        del sys.modules[name]
+    worker.seal()
     os.environ["GRADER_SUBMISSION"] = submission
-    sys.setrecursionlimit(3000)
     protocol.write_message(reply_fd, {"id": 0, "ok": True, "op": "ready", "info": info})
     return worker.serve(request_fd, reply_fd, submission)
 

@@ -1,9 +1,10 @@
-"""A warm child per batch slot: a sandboxed process that has imported what the students' workers need (numpy and,
-where the batch's problems use them, scipy, sympy, mujoco and the probes) and forks one worker per student.
+"""The grader's handle on the warm child of a batch slot: a sandboxed process (``forkserver.py``, the fork server)
+that has imported what the students' workers need (numpy and, where the batch's problems use them, scipy, sympy,
+mujoco and the probes) and forks one worker per student.
 
 Starting a fresh worker costs an interpreter, a sandbox and the imports, for every student; forking a warm one
 costs a few milliseconds.  The isolation is the fresh worker's, established in the fork before any student code
-runs (``worker._forked``):
+runs (``forkserver._forked``):
 
 * files: under bubblewrap the zygote is started once per slot with the slot's *staging folder* at ``/slot`` (the
   grader materializes each student's package there, one student at a time).  Each forked worker enters a mount
@@ -17,7 +18,7 @@ runs (``worker._forked``):
 * uid: as root, every student's worker switches to a uid claimed for that student alone (``users``); the zygote
   itself stays root and never runs student code.  Without root, the zygote runs in bubblewrap's user namespace
   with CAP_SYS_ADMIN for those mounts, and the worker drops every capability before the student's code runs.
-* limits, Landlock, network: applied in the fork exactly as a fresh worker applies them (``worker.confine``).
+* limits, Landlock, network: applied in the fork exactly as a fresh worker applies them (``confinement.confine``).
 * nothing of the previous student: the fork is a copy of the zygote, which never imported a submission; no
   module, global, thread, environment variable or open file of another student can be in it, the numpy global
   random state is reseeded, and after each student the zygote kills every process the student left (in the
