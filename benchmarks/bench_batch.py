@@ -40,7 +40,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from bench_grade import timed  # noqa: E402
 from grader.batch import run_batch  # noqa: E402
 from grader.gradebook import GRADEBOOK_NAME  # noqa: E402
-from grader.runner import problems as all_problems  # noqa: E402
+from grader.problems import problems as all_problems  # noqa: E402
 from grader.sandbox import Limits, sandbox_mode  # noqa: E402
 from tests.batch_fixtures import BATCH_LIMITS, notebook_submission, zip_folder  # noqa: E402
 from tests.submissions import (build_hostile, build_planted, copy_reference, copy_template,  # noqa: E402

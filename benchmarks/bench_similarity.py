@@ -34,8 +34,7 @@ from grader.batch.gradebook import Gradebook, grader_version  # noqa: E402
 from grader.checking import checks_of  # noqa: E402
 from grader.loader import submission_digest  # noqa: E402
 from grader.results import CheckResult, ProblemReport, Status  # noqa: E402
-from grader.runner import problem_module  # noqa: E402
-from grader.runner import problems as all_problems  # noqa: E402
+from grader.problems import check_id, problem_module, problems as all_problems  # noqa: E402
 from tests.submissions import Planted, copy_reference, correct_variants, plant, planted_mistakes  # noqa: E402
 
 #: per student: planted mistakes and correct variants drawn from the whole catalogue
@@ -114,16 +113,16 @@ def synthesize(results: Path, submissions: Path, planted: dict[str, list[Planted
                 results_ = []
                 answers = []
                 for spec in checks_of(modules[number]):
-                    check_id = f"p{number:02d}.{spec.name}"
-                    mistake = failing.get(check_id)
+                    name = check_id(number, spec.name)
+                    mistake = failing.get(name)
                     if mistake is None:
-                        results_.append(CheckResult(check_id, number, spec.title, Status.PASSED, spec.points,
+                        results_.append(CheckResult(name, number, spec.title, Status.PASSED, spec.points,
                                                     spec.points, visibility=spec.visibility, stage=spec.stage))
                         continue
-                    results_.append(CheckResult(check_id, number, spec.title, Status.FAILED, 0.0, spec.points,
+                    results_.append(CheckResult(name, number, spec.title, Status.FAILED, 0.0, spec.points,
                                                 f"got ..., expected ... ({mistake.name})", diagnosis=mistake.diagnosis,
                                                 visibility=spec.visibility, stage=spec.stage))
-                    answers += [Answer(check_id, f"{check_id}.probe({i})", _digest(f"{check_id}:{i}"),
+                    answers += [Answer(name, f"{name}.probe({i})", _digest(f"{name}:{i}"),
                                        _digest(f"{mistake.name}:{i}"), f"[{i}.0, ...] ({mistake.name})",
                                        f"[{i}.5, ...]")
                                 for i in range(2)]

@@ -30,30 +30,15 @@ import signal
 import sys
 from pathlib import Path
 
+from .arguments import parse_problems, positive_int, problem_number
 from .errors import EXIT_FAILED, EXIT_GRADER, EXIT_OK, EXIT_USAGE, GraderFault  # noqa: F401 - the command's codes
+from .problems import NoChecks, require_problem
 
 #: commands for the instructor: not listed by the student kit's help
 INSTRUCTOR_COMMANDS = ("demo", "kit", "gradescope", "prairielearn", "similarity", "batch", "import-manual",
                        "export")
 #: the first words that ask for a problem: problem-6, problem6, p6, 6 (any case)
 _PROBLEM_WORD = re.compile(r"(?:problem-?|p)?\d{1,2}", re.IGNORECASE)
-
-
-def _problem_number(text: str) -> int:
-    match = re.fullmatch(r"(?:problem-?|p)?(\d{1,2})", text.strip().lower())
-    if not match:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a problem (write e.g. problem-6)")
-    return int(match.group(1))
-
-
-def _positive_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number of at least 1")
-    return value
 
 
 def _write(path: str | None, text: str) -> None:
@@ -107,12 +92,6 @@ def _exit_code(reports) -> int:
     return exit_code(reports)
 
 
-def _has_checks(number: int) -> bool:
-    import importlib.util
-
-    return importlib.util.find_spec(f"checks.problem_{number:02d}") is not None
-
-
 def _start_workers(source: Path, limits, count: int):
     """Materialize the submission and start its sandboxed workers (``count``, each with a copy of its own) before
     the grader imports what grading needs (numpy, the checks): their start-up overlaps those imports.  A list of
@@ -159,10 +138,12 @@ def cmd_problem(args) -> int:
     from .sandbox import Limits
 
     numbers = args.problems
-    for number in numbers:
-        if not _has_checks(number):
-            print(f"error: problem {number} has no checks (see `grade list`)", file=sys.stderr)
-            return EXIT_USAGE
+    try:
+        for number in numbers:
+            require_problem(number)
+    except NoChecks as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
     submission = Path(args.submission)
     if not submission.exists():
         print(f"error: {submission} does not exist", file=sys.stderr)
@@ -270,7 +251,7 @@ def cmd_kit(args) -> int:
 
 
 def cmd_gradescope(args) -> int:
-    from .gradescope import build_autograder, parse_problems
+    from .gradescope import build_autograder
     from .kit import KitError
 
     try:
@@ -292,7 +273,6 @@ def cmd_problem_spelling(args) -> int:
 
 
 def cmd_prairielearn(args) -> int:
-    from .gradescope import parse_problems
     from .kit import KitError
     from .prairielearn import build_fragment, run
 
@@ -367,7 +347,7 @@ def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     p_list.set_defaults(func=cmd_list)
 
     p_demo = sub.add_parser("demo", help="grade the bundled sample submissions")
-    p_demo.add_argument("--problems", type=_problem_number, nargs="+", default=None,
+    p_demo.add_argument("--problems", type=problem_number, nargs="+", default=None,
                         help="problems to grade (default: those with checks)")
     p_demo.add_argument("--out", default=None, help="also write the demo's reports into this folder")
     p_demo.set_defaults(func=cmd_demo)
@@ -375,7 +355,7 @@ def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     p_kit = sub.add_parser("kit", help="build the student kit (a wheel without the reference) into OUT_DIR")
     p_kit.add_argument("out_dir", help="the folder to write the wheel into")
     p_kit.add_argument("--seed", type=int, default=None, help="the kit's seed (pools of random inputs)")
-    p_kit.add_argument("--problems", type=_problem_number, nargs="+", default=None,
+    p_kit.add_argument("--problems", type=problem_number, nargs="+", default=None,
                        help="problems whose public checks the key covers (default: all)")
     p_kit.set_defaults(func=cmd_kit)
 
@@ -405,7 +385,7 @@ def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     p_sim = sub.add_parser("similarity", help="after a batch: pairs of students whose wrong answers, diagnosed "
                            "mistakes or code agree (evidence for a person, never a verdict)")
     p_sim.add_argument("results", help="the results folder of `grade batch`")
-    p_sim.add_argument("--top", type=_positive_int, default=50, help="pairs the HTML report shows (default 50)")
+    p_sim.add_argument("--top", type=positive_int, default=50, help="pairs the HTML report shows (default 50)")
     p_sim.set_defaults(func=cmd_similarity)
 
     from .batch import add_batch_parser
@@ -437,7 +417,7 @@ def _suggestion(word: str) -> str | None:
 
 def _problem_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="grade problem-N", description="Grade one problem of a submission.")
-    parser.add_argument("problems", type=_problem_number, nargs="+", help="problem-N (several allowed)")
+    parser.add_argument("problems", type=problem_number, nargs="+", help="problem-N (several allowed)")
     parser.add_argument("--submission", "-s", default=".",
                         help="a folder, a .zip archive or a .ipynb notebook (default: the current folder)")
     parser.add_argument("--html", help="write an HTML report with plots to this file")
@@ -445,7 +425,7 @@ def _problem_parser() -> argparse.ArgumentParser:
     parser.add_argument("--gradescope", help="write a Gradescope results.json to this file")
     parser.add_argument("--seed", type=int, default=None, help="seed of the randomized checks (to reproduce)")
     parser.add_argument("--timeout", type=float, default=None, help="seconds allowed per call of your code")
-    parser.add_argument("--workers", type=_positive_int, default=None,
+    parser.add_argument("--workers", type=positive_int, default=None,
                         help="sandboxed workers grading the problems side by side (default: 2 for several problems "
                              "on two cores or more, else 1)")
     parser.set_defaults(func=cmd_problem)

@@ -9,9 +9,10 @@ import tempfile
 import time
 from pathlib import Path
 
+from .problems import problems
 from .render import render_gradescope, render_html, render_terminal, terminal_env
 from .results import Status
-from .runner import grade_submission, problems
+from .runner import grade_submission
 from .sandbox import Limits, sandbox_mode
 
 PROJECT_ROOT = Path(__file__).resolve().parents[1]

@@ -51,11 +51,11 @@ from pathlib import Path
 
 from . import __version__
 from .errors import GraderFault
+from .problems import NoChecks, require_problems, withheld_check_ids
 from .results import CheckResult, ManualItem, ProblemReport, Status, student_view
 from .terminal import say
 
-__all__ = ["parse_problems", "build_autograder", "Autograder", "results_json", "render_results",
-           "withheld_check_ids", "fault_results",
+__all__ = ["build_autograder", "Autograder", "results_json", "render_results", "fault_results",
            "find_student", "check_installation", "run", "main", "WHEEL_NAME", "WHEEL_PACKAGES", "WITHHELD",
            "SETUP", "RUN", "CONFIG", "FAULT", "GRADER_HOME", "PYTHON_MIN", "EXIT_GRADED", "EXIT_FAULT"]
 
@@ -73,49 +73,6 @@ PYTHON_MIN = (3, 11)
 EXIT_GRADED, EXIT_FAULT = 0, 3
 
 
-# ---------------------------------------------------------------------------------------------- problems
-
-
-def parse_problems(texts: list[str] | str | None) -> list[int] | None:
-    """``["6,7", "10-12"]`` → ``[6, 7, 10, 11, 12]`` (sorted, each once); None or empty: None (every problem)."""
-    if texts is None:
-        return None
-    if isinstance(texts, str):
-        texts = [texts]
-    numbers: set[int] = set()
-    for text in texts:
-        for part in text.replace(" ", ",").split(","):
-            if not part:
-                continue
-            first, dash, last = part.partition("-")
-            try:
-                low = int(first.lower().removeprefix("problem").removeprefix("p"))
-                high = int(last) if dash else low
-            except ValueError:
-                raise ValueError(f"{part!r} is not a problem or a range of problems (write e.g. 6,7 or 6-20)")
-            if high < low:
-                raise ValueError(f"{part!r} is an empty range")
-            numbers.update(range(low, high + 1))
-    return sorted(numbers) or None
-
-
-def _assigned(problems: list[int] | None) -> list[int]:
-    from .runner import problem_module, problems as all_problems
-
-    if not problems:
-        return [p.number for p in all_problems()]
-    missing = []
-    for number in problems:
-        try:
-            problem_module(number)
-        except KeyError:
-            missing.append(number)
-    if missing:
-        raise ValueError(f"no checks for problem{'s' if len(missing) > 1 else ''} "
-                         f"{', '.join(map(str, missing))} (see `grade list`)")
-    return list(problems)
-
-
 # ---------------------------------------------------------------------------------------------- results.json
 
 
@@ -127,23 +84,6 @@ def _env():
     from .render import _env as render_env
 
     return render_env(False)
-
-
-def withheld_check_ids(numbers: list[int]) -> set[str]:
-    """The checks whose tests students see only when grades are published: secret and hidden ones.  A problem
-    without a check module here (a gradebook of checks since removed) adds none: its hidden checks are still
-    withheld by their own visibility; its secret checks, if any, cannot be known."""
-    from .kit import secret_check_ids
-    from .runner import problem_module
-
-    known = []
-    for number in sorted(set(numbers)):
-        try:
-            problem_module(number)
-        except KeyError:
-            continue
-        known.append(number)
-    return secret_check_ids(known) if known else set()
 
 
 def _check_output(r: CheckResult, load_error: str) -> str:
@@ -354,8 +294,8 @@ def check_installation(problems: list[int], *, sandbox: bool = False, reference:
         raise GraderFault("an answer key is installed: this is the student kit, which cannot grade submissions "
                           "(the autograder needs the full project)")
     try:
-        _assigned(problems)
-    except ValueError as exc:
+        require_problems(problems)
+    except NoChecks as exc:
         raise GraderFault(f"the assigned problems cannot be graded: {exc}") from exc
     line = f"grader {__version__} at {Path(__file__).parent}, live reference, problems {problems}"
     if sandbox:
@@ -469,7 +409,7 @@ def build_autograder(out: str | Path, problems: list[int] | None = None) -> Auto
                        "solution: the reference is not installed here (the student kit cannot build the "
                        "autograder). Run it where the course's project is installed (`pip install -e .` in its "
                        "folder).")
-    numbers = _assigned(problems)
+    numbers = require_problems(problems)
     files = kit_files(WHEEL_PACKAGES)
     if f"grader/{KEY_FILE}" in files or not any(name.startswith("reference/") for name in files):
         raise GraderFault("the autograder's wheel must hold the reference and no answer key")

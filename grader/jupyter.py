@@ -158,12 +158,12 @@ def check(problem, *more, notebook: str | os.PathLike | None = None, seed: int |
     them, and return the report (shown inline by Jupyter).  ``notebook``: the notebook's file, where the kernel
     cannot tell it; ``seed``: the random inputs' seed (to reproduce a failure); ``timeout``: seconds per call of
     your code."""
-    from .cli import _problem_number
+    from .arguments import problem_number
     from .oracle import reference_available
     from .runner import grade_submission
     from .sandbox import Limits, student_mode
 
-    numbers = [_problem_number(str(p)) for p in (problem, *more)]
+    numbers = [problem_number(str(p)) for p in (problem, *more)]
     shell = _ipython()
     path = Path(notebook).resolve() if notebook is not None else notebook_path(shell)
     notes: list[str] = []

@@ -27,13 +27,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import __version__
-from .checking import checks_of
 from .context import Context
 from .errors import GraderFault
 from .oracle import KEY_FILE, AnswerKey, RecordingOracle, reference_available
 from .results import ProblemReport, Status
 
-__all__ = ["ReferenceChild", "Kit", "record_key", "build_kit", "write_wheel", "kit_files", "secret_check_ids",
+__all__ = ["ReferenceChild", "Kit", "record_key", "build_kit", "write_wheel", "kit_files",
            "KitError", "KIT_NAME", "KIT_PACKAGES", "KIT_DEPENDENCIES", "KIT_EXTRAS", "kit_dependencies", "kit_extras"]
 
 #: the distribution name of the kit
@@ -87,7 +86,8 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
                progress=None) -> tuple[AnswerKey, list[ProblemReport]]:
     """Grade the reference on ``problems`` (default: every problem) while recording the answer key.  Every public
     check must pass: a key recorded from a failing reference would grade students wrongly."""
-    from .runner import _run_checks, problem_module, problems as all_problems
+    from .runner import _run_checks
+    from .problems import problem_module, problems as all_problems
 
     if not reference_available():
         raise KitError("grade kit needs the full project: the reference solution is not installed here")
@@ -281,12 +281,3 @@ def build_kit(out_dir: str | Path, *, seed: int | None = None, problems: list[in
     files[f"grader/{KEY_FILE}"] = data
     wheel = write_wheel(out_dir, files, kit_dependencies(), extras=kit_extras())
     return Kit(wheel, key, len(data), tuple(reports))
-
-
-def secret_check_ids(problems: list[int] | None = None) -> set[str]:
-    """The checks whose verdicts the kit leaves to the graded submission (secret or hidden)."""
-    from .runner import problem_module, problems as all_problems
-
-    numbers = problems or [p.number for p in all_problems()]
-    return {f"p{n:02d}.{spec.name}" for n in numbers for spec in checks_of(problem_module(n))
-            if spec.secret or spec.visibility == "hidden"}

@@ -45,7 +45,7 @@ def problem_list() -> list[dict]:
             return data
     except (OSError, ValueError):
         pass
-    from .runner import problems
+    from .problems import problems
 
     data = [asdict(info) for info in problems()]
     tmp = cache.with_suffix(f".{os.getpid()}.tmp")

@@ -226,15 +226,15 @@ def build_fragment(out: str | Path, problems: list[int] | None = None, *, image:
     """Write the PrairieLearn course fragment for ``problems`` (default: every problem with checks) into ``out``."""
     import tempfile
 
-    from .gradescope import WHEEL_NAME, WHEEL_PACKAGES, _assigned, _points
+    from .gradescope import WHEEL_NAME, WHEEL_PACKAGES, _points
     from .kit import KitError, kit_files, runtime_dependencies, write_wheel
     from .oracle import KEY_FILE, reference_available
-    from .runner import problem_module
+    from .problems import problem_module, require_problems
 
     if not reference_available():
         raise KitError("grade prairielearn needs the full project: the reference solution is not installed here "
                        "(the student kit cannot build the questions' grader)")
-    numbers = _assigned(problems)
+    numbers = require_problems(problems)
     files = kit_files(WHEEL_PACKAGES)
     if f"grader/{KEY_FILE}" in files or not any(name.startswith("reference/") for name in files):
         raise GraderFault("the grader's wheel must hold the reference and no answer key")

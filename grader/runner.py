@@ -6,71 +6,24 @@ grades several problems of one submission with a single sandboxed worker.
 
 from __future__ import annotations
 
-import importlib
-import pkgutil
 import random
 import re
 import time
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
 
-from . import __version__
+from . import __version__, problems
 from .checking import CheckFailure, NotAnswered, checks_of
 from .context import Context
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .faults import fault_of
 from .loader import cleanup, materialize, problem_notes, read_answers
+from .problems import problem_module
 from .results import CheckResult, ManualItem, ProblemReport, Status
 from .sandbox import Child, Limits, SandboxMode, sandbox_mode
 
-__all__ = ["ProblemInfo", "problems", "problem_module", "grade_problem", "grade_submission", "carry_forward",
-           "unloadable_reports"]
-
-
-@dataclass(frozen=True)
-class ProblemInfo:
-    number: int
-    title: str
-    points: float  # automatically graded points
-    manual_points: float  # points scored by hand
-    checks: int
-    hidden: int
-
-
-@lru_cache(maxsize=None)
-def problem_module(number: int):
-    try:
-        return importlib.import_module(f"checks.problem_{number:02d}")
-    except ModuleNotFoundError as exc:
-        if exc.name == f"checks.problem_{number:02d}":
-            raise KeyError(number) from None
-        raise
-
-
-def problems() -> list[ProblemInfo]:
-    """Every problem that has a check module, in order."""
-    import checks
-
-    infos = []
-    for info in pkgutil.iter_modules(checks.__path__):
-        if not info.name.startswith("problem_"):
-            continue
-        number = int(info.name.removeprefix("problem_"))
-        module = problem_module(number)
-        specs = checks_of(module)
-        manual = getattr(module, "MANUAL", {})
-        infos.append(
-            ProblemInfo(
-                number,
-                module.TITLE,
-                sum(s.points for s in specs),
-                sum(points for _, points in manual.values()),
-                len(specs),
-                sum(1 for s in specs if s.visibility == "hidden"),
-            )
-        )
-    return sorted(infos, key=lambda p: p.number)
+__all__ = ["grade_problem", "grade_submission", "carry_forward", "unloadable_reports", "not_run"]
 
 
 # ------------------------------------------------------------------------------------------ one check
@@ -135,7 +88,7 @@ def _said_once(said: dict, title: str, message: str, hint: str) -> tuple[str, st
 
 
 def _run_check(spec, ctx: Context, problem: int, said: dict | None = None) -> CheckResult:
-    ctx.begin(f"p{problem:02d}.{spec.name}")
+    ctx.begin(problems.check_id(problem, spec.name))
     start = time.perf_counter()
     hint = diagnosis = ""
     try:
@@ -157,7 +110,7 @@ def _run_check(spec, ctx: Context, problem: int, said: dict | None = None) -> Ch
             shown = str(exc) if isinstance(exc, GraderFault) else f"{type(exc).__name__}: {exc}"
             status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {shown}"
     return CheckResult(
-        check_id=f"p{problem:02d}.{spec.name}",
+        check_id=problems.check_id(problem, spec.name),
         problem=problem,
         title=spec.title,
         status=status,
@@ -179,10 +132,11 @@ DEFERRED_MESSAGE = ("graded when you submit: the key of this check stays with yo
                     "taken from your submission)")
 
 
-def _not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
-    """The result of a check that did not run (an earlier stage failed, or the submission cannot be loaded)."""
+def not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
+    """The result of a check that did not run (an earlier stage failed, the submission cannot be loaded, a batch
+    stopped the student's grading)."""
     return CheckResult(
-        check_id=f"p{problem:02d}.{spec.name}",
+        check_id=problems.check_id(problem, spec.name),
         problem=problem,
         title=spec.title,
         status=status,
@@ -201,17 +155,17 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
     carried: dict[str, list[tuple[str, str]]] = {}  # a passed check -> its (upstream check, what) judged on
     said: dict[str, str] = {}  # a failure of the submission's import, said in full once
     for spec in checks_of(module):
-        check_id = f"p{problem:02d}.{spec.name}"
+        check_id = problems.check_id(problem, spec.name)
         if not ctx.oracle.runs(spec, check_id):
-            results.append(_not_run(spec, problem, Status.DEFERRED, DEFERRED_MESSAGE))
+            results.append(not_run(spec, problem, Status.DEFERRED, DEFERRED_MESSAGE))
             continue
         block = blocked.get(spec.group)
         if block is not None and spec.stage > block[0]:
             if block[3]:  # the earlier check is the grader's fault: so is this one's not running
-                results.append(_not_run(spec, problem, Status.GRADER_ERROR, "internal grader error (not your "
+                results.append(not_run(spec, problem, Status.GRADER_ERROR, "internal grader error (not your "
                                         f"fault): not run, the earlier check could not run ({block[1]})"))
             else:
-                results.append(_not_run(spec, problem, Status.SKIPPED,
+                results.append(not_run(spec, problem, Status.SKIPPED,
                                         f"not run: an earlier check failed first ({block[1]})"))
                 blockers[check_id] = block[2]
             continue
@@ -502,6 +456,6 @@ def unloadable_reports(source, numbers: list[int], reason: str, *, seed: int,
 def _unloadable(number, module, source, reason, mode, seed) -> ProblemReport:
     """The report of a submission that could not be loaded: the reason once, for the problem (``load_error``);
     every check scores 0 with the status of the student's error and no message of its own."""
-    results = tuple(_not_run(spec, number, Status.ERROR, "") for spec in checks_of(module))
+    results = tuple(not_run(spec, number, Status.ERROR, "") for spec in checks_of(module))
     return ProblemReport(number, module.TITLE, results, sandbox=mode.note, isolated=mode.isolated, seed=seed,
                          submission=str(source), grader_version=__version__, load_error=reason)

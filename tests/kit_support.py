@@ -41,7 +41,7 @@ def kit_oracle(answer_key):
 @pytest.fixture(scope="session")
 def deferred_ids(answer_key):
     """The checks the kit does not grade: secret and hidden ones, and public ones that share their values."""
-    from grader.kit import secret_check_ids
+    from grader.problems import secret_check_ids
 
     return secret_check_ids() | set(answer_key.withheld)
 
@@ -82,7 +82,8 @@ def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED, zygot
     from grader.loader import cleanup, materialize, read_answers
     from grader.oracle import LiveOracle
     from grader.results import ProblemReport
-    from grader.runner import _manual_items, _run_checks, problem_module
+    from grader.runner import _manual_items, _run_checks
+    from grader.problems import problem_module
 
     module = problem_module(problem)
     submission = materialize(source, zygote.staging if zygote is not None else None)

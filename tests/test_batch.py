@@ -27,7 +27,8 @@ from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
 from grader.gradescope import WITHHELD
 from grader.results import student_view
 from grader.checking import checks_of
-from grader.runner import grade_submission, problem_module, problems as all_problems
+from grader.runner import grade_submission
+from grader.problems import problem_module, problems as all_problems
 from grader.sandbox import Limits, sandbox_mode
 
 from .batch_fixtures import (

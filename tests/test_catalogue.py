@@ -4,7 +4,8 @@ answer key is recorded, so that the key holds them for every input the kit may g
 from grader.context import Context
 from grader.kit import ReferenceChild, record_key
 from grader.oracle import LiveOracle, RecordingOracle
-from grader.runner import _run_checks, problem_module
+from grader.runner import _run_checks
+from grader.problems import problem_module
 from grader.results import Status
 
 MISTAKEN = "_trees.mistaken_states"

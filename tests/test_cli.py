@@ -155,7 +155,7 @@ def hidden_problem(monkeypatch):
     ``grade problem-99``."""
     from importlib.machinery import ModuleSpec
 
-    from grader.runner import problem_module
+    from grader.problems import problem_module
 
     from .batch_fixtures import HIDDEN_PROBLEM, hidden_check_module
 

@@ -265,7 +265,7 @@ def test_planted_and_hostile_submissions_get_the_verdicts_of_a_fresh_worker_on_w
     from grader.batch import run_batch
     from grader.batch.gradebook import Gradebook
     from grader.runner import grade_submission
-    from grader.runner import problems as all_problems
+    from grader.problems import problems as all_problems
 
     from .submissions import build_hostile, build_with_mistakes
 

@@ -145,7 +145,7 @@ def test_manual_scores_are_checked_then_merged(book):
 
 
 def test_grader_version_follows_the_check_module(tmp_path, monkeypatch):
-    from grader.runner import problem_module
+    from grader.problems import problem_module
 
     source = tmp_path / "problem_98.py"
     source.write_text("TITLE = 'x'\n")

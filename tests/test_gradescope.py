@@ -28,8 +28,9 @@ from pathlib import Path
 import jsonschema
 import pytest
 
+from grader.arguments import parse_problems
 from grader.gradescope import (CONFIG, FAULT, RUN, SETUP, WHEEL_PACKAGES, WITHHELD, build_autograder,
-                               fault_results, parse_problems, results_json)
+                               fault_results, results_json)
 from grader.results import CheckResult, ManualItem, ProblemReport, Status
 
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes

@@ -165,7 +165,7 @@ def test_no_predicted_output_is_in_the_kit(wheel_files):
 
 
 def test_key_holds_nothing_of_secret_or_hidden_checks(answer_key, deferred_ids):
-    from grader.kit import secret_check_ids
+    from grader.problems import secret_check_ids
 
     secret = secret_check_ids()
     assert {"p10.a", "p10.b", "p20.part_a", "p20.part_b"} <= secret
@@ -178,7 +178,8 @@ def test_key_holds_nothing_of_secret_or_hidden_checks(answer_key, deferred_ids):
     from grader.kit import ReferenceChild
     from grader.kit import _reference_answers as reference_answers
     from grader.oracle import RecordingOracle
-    from grader.runner import _run_checks, problem_module
+    from grader.runner import _run_checks
+    from grader.problems import problem_module
 
     shadow = RecordingOracle(KIT_SEED, secret=True)
     for number in (10, 20):

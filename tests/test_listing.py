@@ -6,7 +6,7 @@ import os
 import subprocess
 import sys
 
-from grader.runner import problems
+from grader.problems import problems
 
 from .submissions import ROOT
 

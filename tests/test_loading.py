@@ -27,7 +27,8 @@ from grader.errors import SubmissionError
 from grader.gradebook import Gradebook
 from grader.loader import FIX, materialize, submission_digest
 from grader.results import Status
-from grader.runner import grade_submission, problem_module
+from grader.runner import grade_submission
+from grader.problems import problem_module
 from grader.sandbox import Limits, sandbox_mode
 
 from .notebooks import problem_06_cells, write_notebook

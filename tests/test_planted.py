@@ -12,7 +12,8 @@ forked one, and the two must agree.
 
 import pytest
 
-from grader import grade_problem, grade_submission, problems
+from grader import grade_problem, grade_submission
+from grader.problems import problems
 from grader.results import Status
 from grader.sandbox import Limits, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules

@@ -73,7 +73,7 @@ def test_draw_pool_draws_without_importing_hypothesis():
 def test_no_check_module_brings_hypothesis_onto_the_passing_path():
     """Every check module draws its random inputs with ``grader.strategies``: importing all of them (and the
     grader's checking layer) leaves hypothesis unimported, so a passing comparison never runs its engine."""
-    code = ("import sys; from grader.runner import problems, problem_module; "
+    code = ("import sys; from grader.problems import problems, problem_module; "
             "[problem_module(p.number) for p in problems()]; import grader.context; "
             "print(len(problems()), sorted(m for m in sys.modules if m.split('.')[0] == 'hypothesis')[:3])")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)

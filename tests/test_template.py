@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from grader import grade_submission, problems
+from grader import grade_submission
+from grader.problems import problems
 from grader.results import Status
 from tools.make_template import TemplateError, answers_template, strip_reference_only, stub_source
 

@@ -13,7 +13,8 @@ import signal
 import pytest
 
 from grader.results import Status
-from grader.runner import grade_submission, problems as all_problems
+from grader.runner import grade_submission
+from grader.problems import problems as all_problems
 from grader.sandbox import Limits, plain_mode, refusal, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules
 

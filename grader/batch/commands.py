@@ -10,9 +10,8 @@ __all__ = ["add_batch_parser", "cmd_batch", "cmd_import_manual", "cmd_export"]
 
 
 def cmd_batch(args) -> int:
-    from ..cli import EXIT_GRADER, EXIT_OK, EXIT_USAGE
-    from ..errors import SubmissionError
-    from ..runner import problem_module
+    from ..errors import EXIT_GRADER, EXIT_OK, EXIT_USAGE, SubmissionError
+    from ..problems import NoChecks, require_problem
     from ..sandbox import Limits
     from ..terminal import say
     from .cluster import ClusterRefused, Credentials
@@ -25,12 +24,12 @@ def cmd_batch(args) -> int:
     if refused is not None:  # before anything is looked at: the kit cannot grade a class
         print(f"error: {refused}", file=sys.stderr)
         return EXIT_USAGE
-    for number in args.problems or ():
-        try:
-            problem_module(number)
-        except KeyError:
-            print(f"error: problem {number} has no checks (see `grade list`)", file=sys.stderr)
-            return EXIT_USAGE
+    try:
+        for number in args.problems or ():
+            require_problem(number)
+    except NoChecks as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
     try:
         course = batch_course(args)
     except CourseError as exc:
@@ -91,7 +90,7 @@ def batch_course(args):
 
 
 def cmd_import_manual(args) -> int:
-    from ..cli import EXIT_OK, EXIT_USAGE
+    from ..errors import EXIT_OK, EXIT_USAGE
     from .course import CourseError
     from .exports import export_results
     from .gradebook import GRADEBOOK_NAME, Gradebook, ManualScoreError
@@ -123,7 +122,7 @@ def cmd_import_manual(args) -> int:
 
 
 def cmd_export(args) -> int:
-    from ..cli import EXIT_OK, EXIT_USAGE
+    from ..errors import EXIT_OK, EXIT_USAGE
     from .course import CourseError
     from .exports import LMS_META, RECORDED, export_results
     from .gradebook import GRADEBOOK_NAME, Gradebook
@@ -158,7 +157,7 @@ def cmd_export(args) -> int:
 
 
 def add_batch_parser(sub) -> None:
-    from ..cli import _positive_int, _problem_number
+    from ..arguments import positive_int, problem_number
 
     p = sub.add_parser(
         "batch",
@@ -168,9 +167,9 @@ def add_batch_parser(sub) -> None:
     )
     p.add_argument("submissions", help="the folder of submissions")
     p.add_argument("--out", required=True, help="the results folder (gradebook, grades.csv, reports, summary)")
-    p.add_argument("--problems", type=_problem_number, nargs="+", default=None, metavar="N",
+    p.add_argument("--problems", type=problem_number, nargs="+", default=None, metavar="N",
                    help="problems to grade (default: every problem with checks)")
-    p.add_argument("--jobs", "-j", type=_positive_int, default=None, metavar="N",
+    p.add_argument("--jobs", "-j", type=positive_int, default=None, metavar="N",
                    help="parallel workers (default: the number of CPUs)")
     p.add_argument("--force", action="store_true", help="regrade students whose submission is unchanged")
     p.add_argument("--timeout", type=float, default=None, help="seconds per call of a student's code (default 10)")

@@ -246,7 +246,7 @@ def verdict_sources(problem: int) -> list[Path]:
     machinery, the probes the checks name (``"_trees.tree_state"``) or import, the reference modules those
     probes reach (by import or by name, ``module(pkg, "tree")``), the matching student-template modules (laid
     under every submission) and the reference's answers."""
-    from ..runner import problem_module
+    from ..problems import problem_module
 
     seeds = [problem_module(problem).__name__, *_MACHINERY, "probes", "probes._codec", "reference"]
     seen: dict[str, Path] = {}

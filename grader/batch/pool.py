@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from multiprocessing.connection import wait
 
 from ..errors import GraderFault
-from ..results import CheckResult, ProblemReport, Status
+from ..results import ProblemReport, Status
 from ..sandbox import Limits, SandboxMode
 from .discover import Entry
 
@@ -83,7 +83,8 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
     zygote = None
     try:
         try:
-            from ..runner import grade_submission, problem_module
+            from ..runner import grade_submission
+            from ..problems import problem_module
 
             for number in problems:
                 problem_module(number)
@@ -306,16 +307,13 @@ def stopped_reports(task: Task, status: Status, message: str, seconds: float) ->
     """Reports for a student whose grading the batch stopped after ``seconds``: every check with ``status``."""
     from .. import __version__
     from ..checking import checks_of
-    from ..runner import problem_module
+    from ..problems import problem_module
+    from ..runner import not_run
 
     reports = []
     for number in task.problems:
         module = problem_module(number)
-        results = tuple(
-            CheckResult(f"p{number:02d}.{spec.name}", number, spec.title, status, 0.0, spec.points, message,
-                        visibility=spec.visibility, stage=spec.stage)
-            for spec in checks_of(module)
-        )
+        results = tuple(not_run(spec, number, status, message) for spec in checks_of(module))
         reports.append(ProblemReport(number, module.TITLE, results, seed=task.entry.seed,
                                      duration=seconds / len(task.problems), submission=str(task.entry.path),
                                      grader_version=__version__))

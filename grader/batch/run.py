@@ -145,7 +145,7 @@ def empty_folder(submissions, ignored: list[str]) -> str:
 def default_student_timeout(limits: Limits, problems: list[int]) -> float:
     """The import time-out plus twice the call time-out per check."""
     from ..checking import checks_of
-    from ..runner import problem_module
+    from ..problems import problem_module
 
     checks = sum(len(checks_of(problem_module(n))) for n in problems)
     return limits.import_timeout + 2 * limits.call_timeout * max(checks, 1)
@@ -182,7 +182,7 @@ def run_batch(
 
     In the main thread, SIGTERM stops the batch as Ctrl-C does (``interrupted`` in the report); the process
     ignores SIGTERM from then on, as it is asked to end."""
-    from ..runner import problems as all_problems
+    from ..problems import problems as all_problems
 
     start = time.monotonic()
     out = Path(out)

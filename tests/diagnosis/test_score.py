@@ -17,7 +17,7 @@ from collections import Counter
 import pytest
 
 from grader.checking import checks_of
-from grader.runner import problem_module
+from grader.problems import problem_module
 
 from .score import (
     EXERCISES,
