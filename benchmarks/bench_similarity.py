@@ -30,11 +30,12 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from grader.answers import Answer  # noqa: E402
-from grader.batch.gradebook import Gradebook, grader_version  # noqa: E402
+from grader.batch.gradebook import Gradebook  # noqa: E402
 from grader.checking import checks_of  # noqa: E402
 from grader.loader import submission_digest  # noqa: E402
 from grader.results import CheckResult, ProblemReport, Status  # noqa: E402
 from grader.problems import check_id, problem_module, problems as all_problems  # noqa: E402
+from grader.sources import grader_version  # noqa: E402
 from tests.submissions import Planted, copy_reference, correct_variants, plant, planted_mistakes  # noqa: E402
 
 #: per student: planted mistakes and correct variants drawn from the whole catalogue

@@ -4,7 +4,6 @@ importing the checks only when that digest changes."""
 
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 from dataclasses import asdict
@@ -13,20 +12,13 @@ from pathlib import Path
 __all__ = ["problem_list"]
 
 
-def _checks_dir() -> Path:
-    import importlib.util
+def _digest() -> str:
+    from .sources import digest, package_files
 
-    spec = importlib.util.find_spec("checks")
-    if spec is None or not spec.submodule_search_locations:
+    checks = package_files("checks")
+    if not checks:
         raise FileNotFoundError("the checks package is not installed")
-    return Path(next(iter(spec.submodule_search_locations)))
-
-
-def _digest(checks: Path) -> str:
-    digest = hashlib.sha256()
-    for path in [*sorted(checks.glob("*.py")), Path(__file__).with_name("checking.py")]:
-        digest.update(path.name.encode() + b"\0" + path.read_bytes())
-    return digest.hexdigest()[:16]
+    return digest([*checks, Path(__file__).with_name("checking.py")])[:16]
 
 
 def _cache_file(digest: str) -> Path:
@@ -37,7 +29,7 @@ def _cache_file(digest: str) -> Path:
 
 def problem_list() -> list[dict]:
     """Every problem with checks, in order: number, title, points, manual_points, checks, hidden."""
-    digest = _digest(_checks_dir())
+    digest = _digest()
     cache = _cache_file(digest)
     try:
         data = json.loads(cache.read_text())

@@ -206,16 +206,10 @@ class AnswerKey:
 
 
 def sources_fingerprint() -> str:
-    """A hash of what decides which reference calls a check makes: the check modules and the probes."""
-    digest = hashlib.sha256()
-    for package in ("checks", "probes"):
-        spec = importlib.util.find_spec(package)
-        if spec is None or not spec.submodule_search_locations:
-            continue
-        root = Path(list(spec.submodule_search_locations)[0])
-        for path in sorted(root.glob("*.py")):
-            digest.update(f"{package}/{path.name}".encode() + b"\0" + path.read_bytes() + b"\0")
-    return digest.hexdigest()[:16]
+    """A digest of what decides which reference calls a check makes: the check modules and the probes."""
+    from .sources import digest, package_files
+
+    return digest(package_files("checks", "probes"))[:16]
 
 
 # ---------------------------------------------------------------------------------------------- oracles
@@ -267,13 +261,10 @@ def _reference_package():
 
 @lru_cache(maxsize=1)
 def _source_hash() -> str:
-    """A hash of the reference and probe sources: persisted reference results are valid for one hash only."""
-    digest = hashlib.sha256()
-    for package in ("reference", "probes"):
-        root = Path(importlib.import_module(package).__file__).parent
-        for path in sorted(root.glob("*.py")):
-            digest.update(path.name.encode() + b"\0" + path.read_bytes())
-    return digest.hexdigest()[:16]
+    """A digest of the reference and probe sources: persisted reference results are valid for one digest only."""
+    from .sources import digest, package_files
+
+    return digest(package_files("reference", "probes"))[:16]
 
 
 def _cache_base() -> Path:

@@ -98,37 +98,6 @@ def _package_dir(name: str) -> Path:
     return Path(spec.origin).parent
 
 
-def _parsed(path: Path):
-    import ast
-
-    return ast.parse(path.read_text(encoding="utf-8"))
-
-
-def _texts(tree) -> set[str]:
-    import ast
-
-    return {n.value for n in ast.walk(tree) if isinstance(n, ast.Constant) and isinstance(n.value, str)}
-
-
-def _named_modules(tree) -> set[str]:
-    """The modules a probe module reaches by name: ``module(pkg, "rotations")``."""
-    import ast
-
-    return {n.args[1].value for n in ast.walk(tree)
-            if isinstance(n, ast.Call) and getattr(n.func, "id", None) == "module" and len(n.args) >= 2
-            and isinstance(n.args[1], ast.Constant) and isinstance(n.args[1].value, str)}
-
-
-def _relative_imports(tree) -> set[str]:
-    import ast
-
-    found = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.ImportFrom) and node.level == 1:
-            found |= {node.module.split(".")[0]} if node.module else {alias.name for alias in node.names}
-    return found
-
-
 def problem_files(number: int) -> list[str]:
     """The files a student uploads for ``number``: its own module first, then the template's modules holding code
     the student writes that its checks reach (``rotations.py`` for problem 7, which builds on R1, R2, R3), and
@@ -138,27 +107,28 @@ def problem_files(number: int) -> list[str]:
     import tomllib
 
     from .loader import template_dir, template_index
+    from .sources import named_modules, parsed, relative_imports, strings
 
     template, reference, probes, checks = template_dir(), *map(_package_dir, ("reference", "probes", "checks"))
     modules = {path.stem for path in template.glob("*.py")}
     written = {module for stubs in template_index()[1].values() for module, _ in stubs}
     own = f"problem_{number:02d}"
     reached = {own} | {module for module, _ in template_index()[1].get(number, ())}
-    texts = _texts(_parsed(checks / f"{own}.py"))
+    texts = strings(parsed(checks / f"{own}.py"))
     reached |= texts & modules
     probe_modules = {own} | {text.partition(".")[0] for text in texts
                              if "." in text and text.partition(".")[0].isidentifier()
                              and (probes / f"{text.partition('.')[0]}.py").is_file()}
     for name in sorted(probe_modules):
         if (probes / f"{name}.py").is_file():
-            reached |= _named_modules(_parsed(probes / f"{name}.py"))
+            reached |= named_modules(parsed(probes / f"{name}.py"))
     queue, seen = sorted(reached), set()
     while queue:
         name = queue.pop()
         if name in seen or not (reference / f"{name}.py").is_file():
             continue
         seen.add(name)
-        queue += sorted(_relative_imports(_parsed(reference / f"{name}.py")))
+        queue += sorted(relative_imports(parsed(reference / f"{name}.py")))
     files = [f"{own}.py"] if (template / f"{own}.py").is_file() else []
     files += sorted(f"{name}.py" for name in seen & written if name != own)
     answers = tomllib.loads((template / "answers.toml").read_text(encoding="utf-8"))

@@ -23,7 +23,8 @@ from grader.batch.run import NotInstructorInstallation
 from grader.batch.pool import Slot
 from grader.cli import main
 from grader.errors import SubmissionError
-from grader.gradebook import GRADEBOOK_NAME, Gradebook, grader_version
+from grader.gradebook import GRADEBOOK_NAME, Gradebook
+from grader.sources import grader_version
 from grader.gradescope import WITHHELD
 from grader.results import student_view
 from grader.checking import checks_of

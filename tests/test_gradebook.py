@@ -11,7 +11,8 @@ from types import ModuleType
 
 import pytest
 
-from grader.gradebook import Gradebook, ManualScoreError, grader_version
+from grader.gradebook import Gradebook, ManualScoreError
+from grader.sources import grader_version
 
 from .batch_fixtures import VERSIONS, synthetic_report
 from .submissions import ROOT
@@ -165,7 +166,7 @@ def test_grader_version_follows_the_check_module(tmp_path, monkeypatch):
 
 VERSIONS_SCRIPT = """
 import json
-from grader.gradebook import grader_version
+from grader.sources import grader_version
 print(json.dumps({n: grader_version(n) for n in (6, 12, 24, 31)}))
 """
 

@@ -19,6 +19,8 @@ import ast
 import sys
 from pathlib import Path
 
+from grader.sources import parsed, project_imports, strings
+
 ROOT = Path(__file__).resolve().parents[1]
 DOCUMENT = ROOT / "docs" / "architecture.md"
 BEGIN = "<!-- BEGIN problem index: python -m tools.problem_index -->"
@@ -30,29 +32,14 @@ def _modules(package: str) -> set[str]:
 
 
 def _parsed(package: str, name: str) -> ast.Module:
-    return ast.parse((ROOT / package / f"{name}.py").read_text(encoding="utf-8"))
+    return parsed(ROOT / package / f"{name}.py")
 
 
 def _imports(tree: ast.Module, package: str) -> set[str]:
     """The modules of ``package`` that ``tree`` (a module of that package, or one that names it absolutely)
     imports, anywhere in the file."""
-    found = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.ImportFrom):
-            if node.level == 1 or node.module == package:
-                if node.module and node.level == 1:
-                    found.add(node.module.split(".")[0])
-                else:
-                    found.update(alias.name for alias in node.names)
-            elif node.module and node.module.startswith(package + "."):
-                found.add(node.module.split(".")[1])
-        elif isinstance(node, ast.Import):
-            found.update(alias.name.split(".")[1] for alias in node.names if alias.name.startswith(package + "."))
-    return found
-
-
-def _strings(tree: ast.Module) -> set[str]:
-    return {node.value for node in ast.walk(tree) if isinstance(node, ast.Constant) and isinstance(node.value, str)}
+    return {name.split(".")[1] for name in project_imports(tree, package)
+            if name.startswith(package + ".")}
 
 
 def problem_row(number: int) -> dict[str, list[str]] | None:
@@ -73,11 +60,11 @@ def problem_row(number: int) -> dict[str, list[str]] | None:
     for current in check_modules:
         tree = _parsed("checks", current)
         probe_modules |= _imports(tree, "probes") & probes
-        strings = _strings(tree)
-        probe_modules |= {text.split(".")[0] for text in strings if "." in text} & probes
-        named |= strings
+        texts = strings(tree)
+        probe_modules |= {text.split(".")[0] for text in texts if "." in text} & probes
+        named |= texts
     for current in probe_modules:
-        named |= _strings(_parsed("probes", current))
+        named |= strings(_parsed("probes", current))
     library = {module for module in reference if not module.startswith("problem_")}
     reference_modules = named & library
     if name in reference:

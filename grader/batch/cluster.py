@@ -107,7 +107,7 @@ def _slot(limits, mode, problems: tuple[int, ...]) -> Slot:
 def _worker_facts(problems: list[int], no_sandbox: bool) -> dict:
     """What the client checks of a worker before it sends students: the grader versions and the sandbox."""
     from ..sandbox import sandbox_mode
-    from .gradebook import grader_version
+    from ..sources import grader_version
 
     mode = sandbox_mode()
     return {"versions": {n: grader_version(n) for n in problems}, "isolated": mode.isolated, "note": mode.note,

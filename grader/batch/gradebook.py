@@ -7,16 +7,14 @@ batch killed at any point leaves each student either completely graded or not at
 synchronisation keeps committed students through a crash or a power loss, and lets readers (exports, a
 progress poll) read while a batch writes.
 
-The grader version of a problem is the package version plus a digest of every file that decides its verdicts (its
-check module and the shared check, probe, grader and reference code it reaches) and of the versions of the
-libraries that can change them: editing the checks of problem 6 regrades problem 6 and nothing else, editing
+The grader version of a problem (``grader.sources.grader_version``) is the package version plus a digest of every
+file that decides its verdicts: editing the checks of problem 6 regrades problem 6 and nothing else, editing
 ``checks/_trees.py`` regrades every tree problem.
 """
 
 from __future__ import annotations
 
 import csv
-import hashlib
 import io
 import json
 import os
@@ -25,10 +23,8 @@ import sqlite3
 from contextlib import contextmanager
 from dataclasses import asdict, dataclass, replace
 from datetime import datetime, timezone
-from functools import lru_cache
 from pathlib import Path
 
-from .. import __version__
 from ..results import CheckResult, Figure, ManualItem, ProblemReport, Series, Status
 
 __all__ = [
@@ -37,7 +33,6 @@ __all__ = [
     "Gradebook",
     "Graded",
     "ManualScoreError",
-    "grader_version",
     "now",
     "spreadsheet_cell",
     "spreadsheet_text",
@@ -188,135 +183,6 @@ def spreadsheet_text(cell: str) -> str:
 
 def now() -> str:
     return datetime.now(timezone.utc).isoformat(timespec="microseconds")
-
-
-#: the grader's modules that run every check: the import graph from these reaches the rest of the machinery
-_MACHINERY = ("grader.runner", "grader.context", "grader.sandbox.worker", "grader.sandbox.forkserver")
-#: third-party packages whose versions can change a verdict (random inputs, numerics)
-_VERDICT_DEPENDENCIES = ("numpy", "scipy", "sympy", "hypothesis", "mujoco")
-_PROJECT_PACKAGES = ("grader", "checks", "probes", "reference")
-
-
-def _module_file(name: str) -> Path | None:
-    import importlib.util
-    import sys
-
-    loaded = sys.modules.get(name)
-    origin = getattr(loaded, "__file__", None) if loaded is not None else None
-    if origin is None:
-        try:
-            spec = importlib.util.find_spec(name)
-        except (ImportError, ValueError):
-            return None
-        origin = spec.origin if spec else None
-    return Path(origin) if origin and origin.endswith(".py") else None
-
-
-def _imports_and_strings(path: Path, package: str) -> tuple[set[str], set[str]]:
-    """The project modules ``path`` imports (anywhere in the file, relative ones resolved against ``package``)
-    and its string constants."""
-    return _parsed(path.read_bytes(), package)
-
-
-@lru_cache(maxsize=None)
-def _parsed(source: bytes, package: str) -> tuple[set[str], set[str]]:
-    import ast
-
-    tree = ast.parse(source)
-    names, strings = set(), set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            names.update(alias.name for alias in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                parts = package.split(".")
-                base = ".".join(parts[: len(parts) - node.level + 1])
-                module = f"{base}.{node.module}" if node.module else base
-            else:
-                module = node.module or ""
-            names.add(module)
-            names.update(f"{module}.{alias.name}" for alias in node.names)
-        elif isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) < 80:
-            strings.add(node.value)
-    return {n for n in names if n.split(".")[0] in _PROJECT_PACKAGES}, strings
-
-
-def verdict_sources(problem: int) -> list[Path]:
-    """Every file that decides a verdict of ``problem``: its check module and what it imports, the grader's
-    machinery, the probes the checks name (``"_trees.tree_state"``) or import, the reference modules those
-    probes reach (by import or by name, ``module(pkg, "tree")``), the matching student-template modules (laid
-    under every submission) and the reference's answers."""
-    from ..problems import problem_module
-
-    seeds = [problem_module(problem).__name__, *_MACHINERY, "probes", "probes._codec", "reference"]
-    seen: dict[str, Path] = {}
-    queue = list(seeds)
-    reference_names: set[str] = set()
-    while queue:
-        name = queue.pop()
-        if name in seen:
-            continue
-        path = _module_file(name)
-        if path is None:
-            continue
-        seen[name] = path
-        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-        imported, strings = _imports_and_strings(path, package)
-        queue += sorted(imported)
-        top = name.split(".")[0]
-        for text in strings:
-            head = text.split(".")[0]
-            if top == "checks" and "." in text and _module_file(f"probes.{head}") is not None:
-                queue.append(f"probes.{head}")
-            if top in ("probes", "checks") and text.isidentifier():
-                reference_names.add(text)
-        if top == "reference":
-            reference_names.add(name.rpartition(".")[2])
-    for text in sorted(reference_names):
-        if _module_file(f"reference.{text}") is not None:
-            queue.append(f"reference.{text}")
-    while queue:  # the reference modules named by probes, and their own imports
-        name = queue.pop()
-        if name in seen or (path := _module_file(name)) is None:
-            continue
-        seen[name] = path
-        queue += sorted(_imports_and_strings(path, name.rpartition(".")[0])[0])
-    files = set(seen.values())
-    for name, path in seen.items():
-        if name.split(".")[0] == "reference":
-            files.add(path.with_name("answers.toml"))
-            template = _module_file("student_template" + name.removeprefix("reference"))
-            if template is not None:
-                files.add(template)
-    return sorted(p for p in files if p.is_file())
-
-
-@lru_cache(maxsize=1)
-def _runtime_versions() -> bytes:
-    """Python's version and the versions of the libraries that can change a verdict, read once per process (reading
-    a distribution's metadata parses it; the modules a process grades with are those it loaded, whatever is
-    installed later)."""
-    import importlib.metadata
-    import sys
-
-    parts = [f"python {sys.version_info[0]}.{sys.version_info[1]}\0"]
-    for name in _VERDICT_DEPENDENCIES:
-        try:
-            parts.append(f"{name} {importlib.metadata.version(name)}\0")
-        except importlib.metadata.PackageNotFoundError:
-            parts.append(f"{name} -\0")
-    return "".join(parts).encode()
-
-
-def grader_version(problem: int) -> str:
-    """The package version and a digest of every file that decides the problem's verdicts
-    (``verdict_sources``) and of the versions of the libraries that can change them: editing shared check or
-    probe code regrades the problems that use it, and only those."""
-    digest = hashlib.sha256(_runtime_versions())
-    for path in verdict_sources(problem):
-        package = next((p for p in reversed(path.parts[:-1]) if p in (*_PROJECT_PACKAGES, "student_template")), "")
-        digest.update(f"{package}/{path.name}\0".encode() + hashlib.sha256(path.read_bytes()).digest())
-    return f"{__version__}+{digest.hexdigest()[:12]}"
 
 
 class ManualScoreError(ValueError):

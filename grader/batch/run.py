@@ -16,10 +16,11 @@ from ..errors import SandboxError, SubmissionError
 from ..faults import stored
 from ..results import Status
 from ..sandbox import BWRAP_FIX, Limits, canary, sandbox_mode
+from ..sources import grader_version
 from .course import Course, entry_time
 from .discover import discover, student_seed
 from .exports import COURSE_META, RECORDED, StudentExporter, export_results
-from .gradebook import Gradebook, grader_version
+from .gradebook import Gradebook
 from .pool import Task, run_pool, stopped_reports
 from .progress import Progress
 

@@ -29,7 +29,6 @@ runs (``forkserver._forked``):
 
 from __future__ import annotations
 
-import ast
 import json
 import os
 import secrets
@@ -53,25 +52,10 @@ __all__ = ["Zygote", "ForkedProcess", "warm_modules"]
 _PROJECT = ("grader", "checks", "probes", "reference", "student_template", "tests", "tools")
 
 
-def _imports(path: Path) -> set[str]:
-    """The absolute imports anywhere in ``path`` (function bodies included)."""
-    try:
-        tree = ast.parse(path.read_bytes())
-    except (OSError, SyntaxError, ValueError):
-        return set()
-    names = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            names.update(alias.name for alias in node.names)
-        elif isinstance(node, ast.ImportFrom) and not node.level and node.module:
-            names.add(node.module)
-    return names
-
-
 def warm_modules(problems) -> list[str]:
     """What a zygote imports for ``problems``: their probe modules and the third-party modules that the probes and
     the reference modules they reach import (the students' packages are built on the same modules)."""
-    from ..batch.gradebook import verdict_sources
+    from ..sources import absolute_imports, parsed, verdict_sources
 
     modules = {"probes", "probes._codec"}
     third_party: set[str] = set()
@@ -82,7 +66,11 @@ def warm_modules(problems) -> list[str]:
                 continue
             if path.parent.name == "probes" and path.stem != "__init__":
                 modules.add(f"probes.{path.stem}")
-            third_party |= {name for name in _imports(path)
+            try:
+                imported = absolute_imports(parsed(path))
+            except (OSError, SyntaxError, ValueError):
+                imported = set()
+            third_party |= {name for name in imported
                             if name.split(".")[0] not in _PROJECT and name.split(".")[0] not in sys.stdlib_module_names}
     return sorted(third_party) + sorted(modules)
 
