@@ -151,7 +151,10 @@ def cmd_problem(args) -> int:
     limits = Limits(call_timeout=args.timeout) if args.timeout else None
     workers = min(args.workers or default_workers(len(numbers)), len(numbers))
     started = _start_workers(submission, limits, workers)
-    from .render import render_gradescope, render_html, render_json, render_terminal
+    from .report.data import render_json
+    from .report.gradescope_results import render_results
+    from .report.html import render_html
+    from .report.text import render_terminal
     from .runner import grade_submission
 
     reports = grade_submission(submission, numbers, seed=args.seed, limits=limits, started=started,
@@ -160,7 +163,7 @@ def cmd_problem(args) -> int:
     if args.html:
         _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))
     _write(args.json, render_json(reports, show_hidden=False))
-    _write(args.gradescope, render_gradescope(reports))
+    _write(args.gradescope, render_results(reports))
     return _exit_code(reports)  # a submission that cannot be loaded: 2, said once in the report with the fix
 
 

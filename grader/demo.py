@@ -10,7 +10,10 @@ import time
 from pathlib import Path
 
 from .problems import problems
-from .render import render_gradescope, render_html, render_terminal, terminal_env
+from .report.environment import environment
+from .report.gradescope_results import render_results
+from .report.html import render_html
+from .report.text import render_terminal
 from .results import Status
 from .runner import grade_submission
 from .sandbox import Limits, sandbox_mode
@@ -78,8 +81,8 @@ def run_demo(args) -> int:
                 (out / slug).mkdir(parents=True, exist_ok=True)
                 (out / slug / "report.txt").write_text(render_terminal(reports))
                 (out / slug / "report.html").write_text(render_html(reports, title=f"Demo: {name}"))
-                (out / slug / "results.json").write_text(render_gradescope(reports))
-    text = terminal_env().get_template("demo.txt.j2").render(
+                (out / slug / "results.json").write_text(render_results(reports))
+    text = environment("terminal").get_template("demo.txt.j2").render(
         rows=rows, width=max(len(r["name"]) for r in rows) + 2, problems=numbers, sandbox=sandbox_mode().note, out=out)
     print(text.rstrip("\n"))
     return 0

@@ -51,14 +51,14 @@ class Checked:
         return sum(report.visible_score for report in self.reports)
 
     def __str__(self) -> str:
-        from .render import render_terminal
+        from .report.text import render_terminal
 
         return "\n".join([*self.notes, f"graded: {self.source}", render_terminal(list(self.reports))])
 
     __repr__ = __str__
 
     def _repr_html_(self) -> str:
-        from .render import render_notebook
+        from .report.html import render_notebook
 
         return render_notebook(list(self.reports), self.source, self.notes, FRAME_HEIGHT)
 

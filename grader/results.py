@@ -1,11 +1,14 @@
-"""Results as data: frozen dataclasses that every renderer and the gradebook read."""
+"""Results as data: frozen dataclasses that every renderer and the gradebook read, and what a class's results add
+up to (each student's rows, the possible points every student is measured against)."""
 
 from __future__ import annotations
 
+from collections import defaultdict
 from dataclasses import asdict, dataclass, field, replace
 from enum import Enum
 
-__all__ = ["Status", "Series", "Figure", "CheckResult", "ManualItem", "ProblemReport", "student_view"]
+__all__ = ["Status", "Series", "Figure", "CheckResult", "ManualItem", "ProblemReport", "student_view", "Graded",
+           "rows_by_student", "scored_items", "problem_possible", "possible"]
 
 
 class Status(str, Enum):
@@ -177,3 +180,49 @@ def student_view(report: ProblemReport) -> ProblemReport:
     )
     manual = tuple(replace(m, model_answer="") for m in report.manual)
     return replace(report, results=results, manual=manual, wrong_answers=())
+
+
+@dataclass(frozen=True)
+class Graded:
+    """The current result of one problem of one student, as a batch's gradebook keeps it."""
+
+    student: str
+    content_hash: str
+    grader_version: str
+    run_id: int
+    graded_at: str
+    outcome: str
+    report: ProblemReport
+
+
+# ---------------------------------------------------------------------------------------------- a class's results
+
+
+def rows_by_student(graded: list[Graded]) -> dict[str, list[Graded]]:
+    """The rows of each student, by name in order."""
+    students: dict[str, list[Graded]] = defaultdict(list)
+    for g in graded:
+        students[g.student].append(g)
+    return dict(sorted(students.items()))
+
+
+def scored_items(graded: list[Graded]) -> dict[int, dict[str, float]]:
+    """Per problem, the free-text answers that a person has scored for some student of the class, with their
+    points: from then on they count in every student's possible points, before that in no one's."""
+    items: dict[int, dict[str, float]] = defaultdict(dict)
+    for g in graded:
+        for m in g.report.manual:
+            if m.score is not None:
+                items[m.problem][m.key] = m.max_score
+    return dict(items)
+
+
+def problem_possible(report, scored: dict[int, dict[str, float]]) -> float:
+    """A problem's possible points: its checks' (hidden ones included), and its free-text answers' once scored for
+    someone (``scored_items``); the same for every student, whether their submission could be loaded or not."""
+    return report.auto_max_score + sum(scored.get(report.problem, {}).values())
+
+
+def possible(items: list[Graded], scored: dict[int, dict[str, float]]) -> float:
+    """A student's possible points over the problems graded (``problem_possible``)."""
+    return sum(problem_possible(g.report, scored) for g in items)

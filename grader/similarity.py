@@ -468,7 +468,7 @@ def _csv(rows: list[list]) -> str:
 
 def write_similarity(results: str | Path, *, top: int = TOP, jobs: int | None = None) -> Similarity:
     """Compute ``similarity`` and write ``similarity.csv`` and ``similarity.html`` into ``results``."""
-    from .render import _env
+    from .report.environment import environment
 
     results = Path(results)
     found = similarity(results, top=top, jobs=jobs)
@@ -480,7 +480,7 @@ def write_similarity(results: str | Path, *, top: int = TOP, jobs: int | None = 
                      sum(1 for s in pair.shared if s.kind == "wrong answer"),
                      sum(1 for s in pair.shared if s.kind == "diagnosis"), " ".join(pair.checks)])
     _write(results / "similarity.csv", _csv(rows))
-    html = _env(True).get_template("similarity.html.j2").render(
+    html = environment("html").get_template("similarity.html.j2").render(
         found=found, shown=found.pairs[:top], top=top, known=KNOWN_MISTAKE, token_weight=TOKEN_WEIGHT,
         common_share=COMMON_SHARE, common_least=COMMON_LEAST, full_match=FULL_MATCH,
         scale=math.log(max(found.students, 2)))

@@ -9,7 +9,7 @@ bidirectional overrides and isolates that reorder what a line seems to say, and 
 terminal can be sent).  A line end ``\\r\\n`` is a newline.
 
 Every piece of terminal text goes through ``inert``: the jinja2 environment of the terminal templates applies it
-to each expression it writes (``grader.render.terminal_env``), the batch's progress to each line, and the commands'
+to each expression it writes (``grader.report.environment``), the batch's progress to each line, and the commands'
 messages go out with ``say``.  Styling the grader adds itself (colours, bold) is ``Styled``: built from inert text,
 and passed through as it is.
 """

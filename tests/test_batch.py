@@ -25,7 +25,7 @@ from grader.cli import main
 from grader.errors import SubmissionError
 from grader.gradebook import GRADEBOOK_NAME, Gradebook
 from grader.sources import grader_version
-from grader.gradescope import WITHHELD
+from grader.report.gradescope_results import WITHHELD
 from grader.results import student_view
 from grader.checking import checks_of
 from grader.runner import grade_submission
@@ -397,7 +397,7 @@ def test_sigterm_repeated_stops_the_batch_once_and_its_clean_up_runs_to_the_end(
     ((state, graded),) = rows(out / GRADEBOOK_NAME, "SELECT state, graded FROM runs")
     assert state == "interrupted" and 1 <= graded < 3 and len(graded_rows(out / GRADEBOOK_NAME)) == graded
 
-    def left():  # jinja2 keeps its compiled templates in the temporary directory on purpose (grader/render.py)
+    def left():  # jinja2 keeps its compiled templates in the temporary directory on purpose (grader/report/environment.py)
         return sorted(p.name for p in temporary.iterdir() if not p.name.startswith("_jinja2-cache"))
 
     deadline = time.monotonic() + 20
@@ -603,7 +603,8 @@ def test_manual_scores_import_updates_the_gradebook_and_exports(hidden_problem, 
     assert "Comment from your course staff" in block
     assert "say why the columns are orthogonal: &lt;A_IB^T A_IB = E&gt;." in block and "<A_IB" not in block
     # the JSON report (as `grade problem-N --json` writes it) and the terminal's
-    from grader.render import render_json, render_terminal
+    from grader.report.data import render_json
+    from grader.report.text import render_terminal
 
     with Gradebook.in_folder(out) as book:
         reports = [g.report for g in book.current(student="good")]

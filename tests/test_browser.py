@@ -206,7 +206,7 @@ def graded(tmp_path_factory):
 
 
 def test_a_report_with_figures_is_drawn_and_fits_1280_px(browser, graded, tmp_path):
-    from grader.render import render_html
+    from grader.report.html import render_html
 
     figures = [(r.check_id, fig.title) for report in graded for r in report.results for fig in r.figures]
     assert ("p06.frames", "Problem 6: the frames C1, C2, C3 in I") in figures
@@ -223,7 +223,7 @@ def test_a_report_with_figures_is_drawn_and_fits_1280_px(browser, graded, tmp_pa
 
 def test_the_class_summary_of_a_large_class_fits_1280_px(browser, tmp_path):
     """Forty students over many problems: the gradebook table, the mistakes and the plots stay within the page."""
-    from grader.batch.exports import class_summary
+    from grader.report.summary import class_summary
     from grader.batch.gradebook import Graded
 
     numbers = list(range(1, 41))
@@ -291,7 +291,7 @@ def test_the_class_summary_breaks_no_word_at_1280_px_or_on_a_phone(browser, tmp_
     """Headers, names and check ids were broken in the middle ("Proble m", "ali ce", a vertical "S c o r e") at
     1280 px.  No word of a table is broken at 1280 px, nor on a phone, where a wide table scrolls in its own box and
     the page stays within the window."""
-    from grader.batch.exports import class_summary
+    from grader.report.summary import class_summary
 
     measured = open_page(browser, class_summary(summary_class()), tmp_path / str(width), width=width)
     assert_no_broken_word(measured, width)
@@ -341,7 +341,7 @@ window.addEventListener("load", () => {
 def test_a_passing_report_shows_legends_at_its_text_size_and_the_reference_under_the_answer(browser, tmp_path):
     """The reference graded: every figure's legend reads at the report's text size (not a few pixels high, as wide
     figures scaled down to the column were), and the reference's line shows around the student's right answer."""
-    from grader.render import render_html
+    from grader.report.html import render_html
     from grader.runner import grade_submission
 
     reports = grade_submission(copy_reference(tmp_path / "ref"), [6, 8, 14, 17])

@@ -96,7 +96,9 @@ def test_init_and_list(tmp_path, capsys):
 
 
 def test_html_report_embeds_figures_and_hides_hidden_checks():
-    from grader.render import render_html, render_json, render_terminal
+    from grader.report.data import render_json
+    from grader.report.html import render_html
+    from grader.report.text import render_terminal
     from grader.results import CheckResult, Figure, ProblemReport, Series, Status
 
     fig = Figure("traces", "x", "y", (Series("yours: B", (0.0, 1.0), (0.0, 1.0), "student"),
@@ -176,7 +178,7 @@ def test_the_gradescope_file_follows_the_specification_and_withholds_hidden_and_
     """``grade problem-N --gradescope`` writes the autograder's results.json (one builder): the specification's
     JSON Schema, and on the instructor's side too a hidden or secret check is shown only when grades are
     published."""
-    from grader.gradescope import WITHHELD
+    from grader.report.gradescope_results import WITHHELD
 
     from .batch_fixtures import HIDDEN_PROBLEM
 

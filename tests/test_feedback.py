@@ -124,7 +124,7 @@ def test_a_wrong_gravity_costs_only_the_equations_of_motion(tmp_path):
 
 def test_the_class_summary_counts_the_root_mistake_once(tmp_path):
     """Two students with a transposed R3: the class summary names the root check, never the checks judged on it."""
-    from grader.batch.exports import class_summary
+    from grader.report.summary import class_summary
     from grader.batch.gradebook import Graded
 
     _, report = graded("p06-R3-transpose", tmp_path)

@@ -38,7 +38,7 @@ def spatial_figure():
 
 def test_a_figure_in_space_with_panels_renders_and_survives_the_gradebook():
     from grader.batch.gradebook import _figure
-    from grader.render import _figure_png
+    from grader.report.figures import _figure_png
 
     fig = spatial_figure()
     assert fig.spatial and _figure(asdict(fig)) == fig
@@ -63,7 +63,7 @@ def reference_reports(tmp_path_factory):
 
 @pytest.mark.slow
 def test_every_problem_with_a_shape_draws_it_for_the_reference(reference_reports):
-    from grader.render import render_html
+    from grader.report.html import render_html
 
     reports = reference_reports
     for report in reports:
@@ -130,7 +130,7 @@ SHAPES = {
 def test_a_figure_holds_all_its_text(shape):
     """The margins are set rather than measured on the whole figure: every title, label, tick label and legend
     entry still lies inside the picture, and a legend under panels stays clear of their axis labels."""
-    from grader.render import _pyplot, figure_canvas
+    from grader.report.figures import _pyplot, figure_canvas
 
     canvas = figure_canvas(SHAPES[shape])
     try:
@@ -166,7 +166,7 @@ def _two_curves(student_shift=0.0, title="Problem 38: the walker's angles"):
 def test_figures_equal_to_the_pixel_are_drawn_once_and_others_anew(monkeypatch):
     """A batch's exporter draws the picture of a right answer once for every student whose curve agrees with it to
     a fraction of a pixel; a curve that differs visibly, or another title, is drawn for itself."""
-    import grader.render as render
+    import grader.report.figures as render
 
     drawn = []
     canvas = render.figure_canvas
@@ -182,7 +182,7 @@ def test_figures_equal_to_the_pixel_are_drawn_once_and_others_anew(monkeypatch):
 
 
 def test_the_pictures_kept_are_bounded(monkeypatch):
-    import grader.render as render
+    import grader.report.figures as render
 
     monkeypatch.setattr(render, "_drawn", type(render._drawn)())
     monkeypatch.setattr(render, "DRAWN_KEPT", 3)
@@ -200,7 +200,7 @@ def test_on_the_grid_no_point_moves_by_a_tenth_of_a_pixel(values):
     most 1/8192 of the extent (0.07 px); values that are not finite stay as they are."""
     import math
 
-    from grader.render import on_grid
+    from grader.report.figures import on_grid
 
     fig = Figure("f", "x", "y", (Series("yours", values, values, "student"),))
     (series,) = on_grid(fig).series
@@ -256,7 +256,7 @@ def _texts_3d(ax) -> list:
 @pytest.mark.parametrize("panels", [1, 3, 4])
 def test_tick_labels_in_space_do_not_overlap(panels):
     """Neither the tick labels of one axis, nor those of two axes where they meet, nor an axis's name over them."""
-    from grader.render import _pyplot, figure_canvas
+    from grader.report.figures import _pyplot, figure_canvas
 
     canvas = figure_canvas(_frames_figure(panels))
     try:
@@ -276,7 +276,7 @@ def test_a_right_answer_leaves_the_reference_visible():
     import numpy as np
     from matplotlib import image
 
-    from grader.render import _figure_drawn
+    from grader.report.figures import _figure_drawn
 
     png, facts = _figure_drawn(_frames_figure(1))
     pixels = image.imread(io.BytesIO(base64.b64decode(png)))[..., :3]
@@ -289,7 +289,7 @@ def test_a_right_answer_leaves_the_reference_visible():
 
 @pytest.mark.slow
 def test_no_figure_in_space_of_the_reference_crowds_its_text(reference_reports):
-    from grader.render import _pyplot, figure_canvas, on_grid
+    from grader.report.figures import _pyplot, figure_canvas, on_grid
 
     crowded = {}
     for report in reference_reports:

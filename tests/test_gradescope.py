@@ -29,8 +29,8 @@ import jsonschema
 import pytest
 
 from grader.arguments import parse_problems
-from grader.gradescope import (CONFIG, FAULT, RUN, SETUP, WHEEL_PACKAGES, WITHHELD, build_autograder,
-                               fault_results, results_json)
+from grader.gradescope import CONFIG, FAULT, RUN, SETUP, WHEEL_PACKAGES, build_autograder
+from grader.report.gradescope_results import WITHHELD, fault_results, results_json
 from grader.results import CheckResult, ManualItem, ProblemReport, Status
 
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
@@ -245,7 +245,7 @@ def test_the_zip_holds_what_gradescope_needs_and_nothing_it_forbids(autograder):
         assert wheel.read("reference/answers.toml") == (ROOT / "reference" / "answers.toml").read_bytes()
         assert {f"checks/problem_{n:02d}.py" for n in PROBLEMS} <= set(names)
         assert not [n for n in names if "__pycache__" in n or n.endswith((".pyc", ".gz"))]
-        assert "grader/templates/gradescope/setup.sh.j2" in names
+        assert "grader/report/templates/gradescope/setup.sh.j2" in names
 
 
 def test_grade_gradescope_command(tmp_path, capsys, monkeypatch):

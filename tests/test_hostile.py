@@ -422,7 +422,7 @@ def test_no_raw_control_character_of_a_submission_reaches_grades_output(tmp_path
 
 
 def test_the_terminal_report_in_colour_holds_only_the_graders_own_escape_sequences(tmp_path):
-    from grader.render import render_terminal
+    from grader.report.text import render_terminal
 
     report = grade_problem(6, terminal_submission(tmp_path / "pkg"), seed=3, limits=LIMITS)
     text = render_terminal([report], colour=True)

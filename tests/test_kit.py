@@ -322,7 +322,9 @@ def test_a_lookup_table_of_the_key_passes_in_the_kit_and_fails_live(answer_key, 
 def test_deferred_checks_are_rendered_and_do_not_fail_the_exit_code(kit_oracle, tmp_path):
     from grader import grade_submission
     from grader.cli import EXIT_OK, _exit_code
-    from grader.render import render_html, render_json, render_terminal
+    from grader.report.data import render_json
+    from grader.report.html import render_html
+    from grader.report.text import render_terminal
 
     submission = copy_reference(tmp_path / "pkg")
     reports = grade_submission(submission, [10, 20], seed=SEED, oracle=kit_oracle)

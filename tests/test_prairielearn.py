@@ -30,9 +30,9 @@ from pathlib import Path
 import jsonschema
 import pytest
 
-from grader.prairielearn import (ENTRYPOINT, FAULT_FILE, IMAGE_DIR, PROBLEM_FILE, QUESTIONS, RESULTS_BYTES,
-                                 SERVER_FILES, build_fragment, fault_results, problem_files, question_timeout,
-                                 results_json, unloadable_results)
+from grader.prairielearn import (ENTRYPOINT, FAULT_FILE, IMAGE_DIR, PROBLEM_FILE, QUESTIONS, SERVER_FILES,
+                                 build_fragment, problem_files, question_timeout)
+from grader.report.prairielearn_results import RESULTS_BYTES, fault_results, results_json, unloadable_results
 from grader.results import CheckResult, Figure, ManualItem, ProblemReport, Series, Status
 
 from .environments import public_tmp_dir
@@ -284,7 +284,7 @@ def test_the_fragment_holds_questions_course_files_and_the_image(fragment):
     with zipfile.ZipFile(server / fragment.wheel) as wheel:
         names = wheel.namelist()
         assert wheel.read("reference/rotations.py") == (ROOT / "reference" / "rotations.py").read_bytes()
-        assert "grader/templates/prairielearn/entrypoint.sh.j2" in names
+        assert "grader/report/templates/prairielearn/entrypoint.sh.j2" in names
         assert not [n for n in names if n.endswith("answer_key.json.gz")]
     # the image: no code of the project (it is public), the entry point in it, executable
     image = out / IMAGE_DIR

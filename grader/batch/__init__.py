@@ -14,7 +14,8 @@ child is forked, or on the workers of a Dask cluster (``cluster``); the parent a
 
 RESULTS receives the gradebook (``gradebook.sqlite``), ``grades.csv``, ``summary.html`` (the class summary),
 ``manual_answers.csv`` (free-text answers, with a score column to fill in and import) and, per student,
-``students/NAME/results.json`` (Gradescope's, built as the autograder builds it: ``grader.gradescope.results_json``) and ``students/NAME/report.html`` (the student's view).
+``students/NAME/results.json`` (Gradescope's, built as the autograder builds it:
+``grader.report.gradescope_results``) and ``students/NAME/report.html`` (the student's view).
 With a course file (``course``: assignments, due dates, extensions, a late policy), grades.csv has each assignment's
 raw score, late penalty and final score, recomputed at every export; ``canvas.csv`` and ``moodle.csv`` (``lms``) are
 the LMS's grade import files.
@@ -40,16 +41,14 @@ __all__ = [
     "run_batch",
     "export_results",
     "export_student",
-    "class_summary",
     "add_batch_parser",
-    "DIAGNOSES",
 ]
 
 _WHERE = {
     "Progress": "progress",
     "BatchReport": "run", "BatchLocked": "run", "run_batch": "run", "_locked": "run",
     "default_student_timeout": "run",
-    "export_results": "exports", "export_student": "exports", "class_summary": "exports", "DIAGNOSES": "exports",
+    "export_results": "exports", "export_student": "exports",
     "add_batch_parser": "commands",
 }
 

@@ -21,11 +21,11 @@ import os
 import secrets
 import sqlite3
 from contextlib import contextmanager
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, replace
 from datetime import datetime, timezone
 from pathlib import Path
 
-from ..results import CheckResult, Figure, ManualItem, ProblemReport, Series, Status
+from ..results import CheckResult, Figure, Graded, ManualItem, ProblemReport, Series, Status
 
 __all__ = [
     "GRADEBOOK_NAME",
@@ -187,19 +187,6 @@ def now() -> str:
 
 class ManualScoreError(ValueError):
     """A manual-scores file that cannot be imported: every problem found, one per line."""
-
-
-@dataclass(frozen=True)
-class Graded:
-    """The current result of one problem of one student."""
-
-    student: str
-    content_hash: str
-    grader_version: str
-    run_id: int
-    graded_at: str
-    outcome: str
-    report: ProblemReport
 
 
 def _figure(data: dict) -> Figure:

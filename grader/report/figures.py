@@ -1,94 +1,19 @@
-"""Renderers: every report goes out through a jinja2 template (terminal text, HTML) or as plain data (JSON;
-Gradescope's results.json comes from its one builder, ``grader.gradescope.results_json``)."""
+"""Figures as pictures: a result's ``Figure`` (the student's curves over the reference's) drawn with matplotlib,
+laid out to read at the report's text size, and encoded as a base64 PNG; ``png`` draws a plain plot (the class
+summary's).  matplotlib is imported only when a picture is drawn."""
 
 from __future__ import annotations
 
 import base64
 import hashlib
 import io
-import json
 import math
 from collections import OrderedDict
 from dataclasses import replace
-from functools import lru_cache
 
-from jinja2 import Environment, FileSystemBytecodeCache, PackageLoader, StrictUndefined, pass_environment
-from jinja2.filters import do_indent, do_wordwrap
+from ..results import Figure
 
-from .results import Figure, ProblemReport, Status, student_view
-from .terminal import inert, styled
-
-__all__ = ["render_terminal", "render_html", "render_notebook", "render_json", "render_gradescope", "terminal_env"]
-
-COLOURS = {
-    "passed": "32",
-    "failed": "31",
-    "error": "31",
-    "timeout": "31",
-    "not_implemented": "33",
-    "skipped": "90",
-    "grader_error": "35",
-    "deferred": "34",
-    "hint": "36",
-}
-
-
-def _fmt(x) -> str:
-    return f"{x:g}"
-
-
-def _environment(autoescape: bool, cache_pattern: str, **options) -> Environment:
-    try:
-        cache = FileSystemBytecodeCache(pattern=cache_pattern)
-    except RuntimeError:  # jinja2 cannot tell a folder safe for it (a POSIX system without uids): compiled each run
-        cache = None
-    env = Environment(
-        loader=PackageLoader("grader", "templates"),
-        bytecode_cache=cache,
-        autoescape=autoescape,
-        undefined=StrictUndefined,
-        trim_blocks=False,
-        keep_trailing_newline=True,
-        **options,
-    )
-    env.globals["fmt"] = _fmt
-    return env
-
-
-@lru_cache(maxsize=2)
-def _env(autoescape: bool) -> Environment:
-    """The templates' environment.  Compiled templates are kept in jinja2's own per-user cache (a folder under the
-    temporary directory that jinja2 makes readable by its owner only and refuses if anyone else owns it), so that a
-    command compiles a template once rather than at every run."""
-    return _environment(autoescape, "__jinja2_%s.cache")
-
-
-@lru_cache(maxsize=1)
-def terminal_env() -> Environment:
-    """The environment of the templates a terminal shows (``terminal.txt.j2``, ``demo.txt.j2``): every expression
-    they write goes out through ``grader.terminal.inert``, so that no control character of a student's text
-    reaches the terminal raw.  Its compiled templates are cached apart from ``_env``'s: the cache knows a template
-    by its name and text, not by the environment that compiled it."""
-    env = _environment(False, "__jinja2_terminal_%s.cache", finalize=inert)
-    # the filters that break text into lines take it inert, so that the line breaks of Python's splitlines (\r,
-    # \x0b, \x0c, \x1c-\x1e, \x85) are shown escaped too, rather than turned into lines
-    env.filters["indent"] = lambda text, *args, **options: do_indent(inert(text), *args, **options)
-    env.filters["wordwrap"] = pass_environment(
-        lambda environment, text, *args, **options: do_wordwrap(environment, inert(text), *args, **options))
-    return env
-
-
-def render_terminal(reports: list[ProblemReport], colour: bool = False, show_hidden: bool = False) -> str:
-    def paint(text, key):
-        return styled(text, COLOURS[key]) if colour and key in COLOURS else text
-
-    def bold(text):
-        return styled(text, "1") if colour else text
-
-    if not show_hidden:
-        reports = [student_view(r) for r in reports]
-    template = terminal_env().get_template("terminal.txt.j2")
-    return template.render(reports=reports, paint=paint, bold=bold, show_hidden=show_hidden).strip("\n") + "\n"
+__all__ = ["png", "figure_canvas", "on_grid"]
 
 
 def _pyplot():
@@ -114,7 +39,6 @@ def png(draw, height: float = 4.2) -> str:
     ax.grid(True, alpha=0.3)
     _place(canvas, [ax], _lines(ax.get_title()), 0.0, 0.0, False)
     return _encode(canvas)
-
 
 
 #: the line of a curve by its role (style, width in points, drawing order): the reference's wide and pale beneath,
@@ -420,55 +344,3 @@ def _figure_drawn(fig: Figure) -> tuple[str, dict]:
     else:
         _drawn.move_to_end(key)
     return drawn
-
-
-def render_html(reports: list[ProblemReport], show_hidden: bool = False, title: str = "Grading report",
-                deadlines: list[str] = ()) -> str:
-    """The HTML report; ``deadlines``: what the course's due dates made of the work, one line per assignment."""
-    if not show_hidden:
-        reports = [student_view(r) for r in reports]
-    images = {}
-    for report in reports:
-        for result in report.results:
-            if result.visibility == "visible" or show_hidden:
-                for index, fig in enumerate(result.figures):
-                    images[(result.check_id, index)] = _figure_drawn(fig)
-    template = _env(True).get_template("report.html.j2")
-    return template.render(reports=reports, images=images, show_hidden=show_hidden, title=title, Status=Status,
-                           deadlines=list(deadlines))
-
-
-def render_notebook(reports: list[ProblemReport], source: str, notes=(), height: int = 640) -> str:
-    """The report shown inline in a notebook: a line of scores and the HTML report in a frame of its own."""
-    page = render_html(reports, title=f"Problem {', '.join(str(r.problem) for r in reports)}")
-    template = _env(True).get_template("notebook.html.j2")
-    return template.render(reports=[student_view(r) for r in reports], page=page, source=source, notes=list(notes),
-                           height=height)
-
-
-def _visible_dict(report: ProblemReport, show_hidden: bool) -> dict:
-    data = report.to_dict() if show_hidden else student_view(report).to_dict()
-    if not show_hidden:
-        for item in data["manual"]:
-            item.pop("model_answer")
-        hidden = [r for r in data["results"] if r["visibility"] == "hidden"]
-        data["results"] = [r for r in data["results"] if r["visibility"] != "hidden"]
-        data["hidden_checks"] = {"count": len(hidden), "max_score": sum(r["max_score"] for r in hidden)}
-        data.pop("score")
-        data["visible_score"] = sum(r["score"] for r in data["results"])
-    for result in data["results"]:
-        result.pop("figures", None)
-        result["figure_count"] = len([f for r in report.results if r.check_id == result["check_id"]
-                                      for f in r.figures])
-    return data
-
-
-def render_json(reports: list[ProblemReport], show_hidden: bool = True) -> str:
-    return json.dumps({"reports": [_visible_dict(r, show_hidden) for r in reports]}, indent=2) + "\n"
-
-
-def render_gradescope(reports: list[ProblemReport]) -> str:
-    """Gradescope's results.json: the one builder, ``grader.gradescope.results_json`` (JSON, no template)."""
-    from .gradescope import render_results
-
-    return render_results(reports)
