@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from checks._effects import same
-from grader import problems
+from grader.problems import problems
 from grader.context import Context
 from grader.errors import StudentFault
 from grader.loader import cleanup, materialize, read_answers
