@@ -240,12 +240,12 @@ def describe_case(args):
 # ------------------------------------------------------------------------------------------ physics checks
 
 MFG_HINTS = {
-    "no_gyroscopic": "f misses the gyroscopic term: f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + skew(omega) I "
+    "missing_gyroscopic": "f misses the gyroscopic term: f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + skew(omega) I "
                      "omega)); omega x (I omega) does no work, so only a comparison of the whole vector shows it "
                      "(DynamicBody.mfg_contribution, problem 37).",
     "gyroscopic_sign": "The gyroscopic term is skew(omega) I omega = omega x (I omega), not (I omega) x omega "
                        "(DynamicBody.mfg_contribution, problem 37).",
-    "no_bias": "f misses the bias accelerations: f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + skew(omega) I "
+    "missing_bias": "f misses the bias accelerations: f = -sum(J_S.T m sigma_S + J_R.T (I sigma_R + skew(omega) I "
                "omega)) with sigma_S = B_a_B and sigma_R = B_omegaDot_B from the pass with qdd = 0 (the centripetal "
                "and Coriolis accelerations; DynamicBody.mfg_contribution, problem 37).",
     "gravity_sign": "g is the generalized force of gravity, g = sum(J_S.T A_IB.T I_grav m) with I_grav pointing "
@@ -365,7 +365,7 @@ def check_lagrange(got, expected, args, h=H):
     gyroscopic = -sum(J_R.T @ np.cross(J_R @ qd, I @ (J_R @ qd)) for _, _, I, _, J_R in _bodies(got, nq))
     assert_close(f, lagrange, "f", DIFFERENCES, [
         Mistake("f_sign", -lagrange, MFG_HINTS["f_sign"]),
-        Mistake("no_gyroscopic", lagrange - gyroscopic, MFG_HINTS["no_gyroscopic"]),
+        Mistake("missing_gyroscopic", lagrange - gyroscopic, MFG_HINTS["missing_gyroscopic"]),
         Mistake("gyroscopic_sign", lagrange - 2 * gyroscopic, MFG_HINTS["gyroscopic_sign"]),
     ], context="(expected: Lagrange's equations with your own M, f = -Mdot qd + d/dq (qd.T M qd / 2), "
                "Mdot = dM/dt along qd; the gyroscopic terms from your own Jacobians)")

@@ -63,7 +63,7 @@ def swapped_columns(J, names=None):
     for i, j in combinations(range(J.shape[1]), 2):
         swapped = J.copy()
         swapped[:, [i, j]] = J[:, [j, i]]
-        found.append(Mistake("swapped_columns", swapped, (
+        found.append(Mistake("swapped", swapped, (
             f"Columns {i + 1} and {j + 1} are swapped: column j of J holds the derivatives with respect to the j-th "
             f"joint variable (column {i + 1}: {names[i]}, column {j + 1}: {names[j]}).")))
     return found

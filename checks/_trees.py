@@ -296,18 +296,18 @@ MODELS = (
     Model("coordinate_order", "The virtual 3-DOF joint's coordinates are q = (dx, dy, gamma): A_DpDs = R3(q[2]), "
           "Dp_r_DpDs = (q[0], q[1], 0), S = [e1 e2 0], R = [0 0 e3] (Virtual3DOFJoint, problem 34).",
           joint="virtual_order"),
-    Model("coriolis", f"The Coriolis term 2 skew(Dp_omega) r_rel_dot is missing: {_DS_A} (Joint.successor_motion, "
+    Model("missing_coriolis", f"The Coriolis term 2 skew(Dp_omega) r_rel_dot is missing: {_DS_A} (Joint.successor_motion, "
           "problem 31).", motion=(("coriolis", 0.0),)),
-    Model("coriolis", f"The Coriolis term needs the factor 2: {_DS_A}. One skew(Dp_omega) r_rel_dot comes from "
+    Model("coriolis_factor", f"The Coriolis term needs the factor 2: {_DS_A}. One skew(Dp_omega) r_rel_dot comes from "
           "differentiating r_rel in the rotating frame Dp, the other from differentiating skew(Dp_omega) r_rel "
           "(Joint.successor_motion, problem 31).", motion=(("coriolis", 1.0),)),
     Model("transport", "The angular acceleration misses skew(Dp_omega) omega_rel: the relative angular velocity "
           "turns with Dp, Ds_omegaDot = A_DpDs.T (Dp_omegaDot + omega_rel_dot + skew(Dp_omega) omega_rel) "
           "(Joint.successor_motion, problem 31).", motion=(("transport", 0.0),)),
-    Model("centripetal", "Moving the predecessor's acceleration to Dp misses the centripetal term: Dp_a = A_PDp.T "
+    Model("missing_centripetal", "Moving the predecessor's acceleration to Dp misses the centripetal term: Dp_a = A_PDp.T "
           "(P_a + (skew(P_omegaDot) + skew(P_omega)^2) P_r_PDp) (Joint.successor_motion, problem 31).",
           motion=(("centripetal_dp", 0.0),)),
-    Model("centripetal", "Moving the acceleration from Ds to the body misses the centripetal term: S_a = A_SDs Ds_a "
+    Model("missing_centripetal", "Moving the acceleration from Ds to the body misses the centripetal term: S_a = A_SDs Ds_a "
           "- (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs (Joint.successor_motion, problem 31).",
           motion=(("centripetal_ds", 0.0),)),
     Model("offset_sign", "S_r_SDs enters the velocities with a minus sign (it points from S to Ds): S_v = A_SDs Ds_v "
@@ -498,7 +498,7 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from
             found = [Mistake(m_name, state[k][quantity], m_hint)
                      for m_name, m_hint, state in mistakes if _agrees_before(state, expected, k, quantity, tol)]
             if quantity == "B_r_IB":
-                found.append(Mistake("inertial_coordinates", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
+                found.append(Mistake("wrong_frame", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],
                        context=context, note=_where(expected, k, quantity))
     if departed:
@@ -566,7 +566,7 @@ def compare_jacobians(got, expected, h=H, tol=DIFFERENCES):
             _with_hint(body.get(quantity), fd, f"{quantity} of {name}", tol, [
                 Mistake("column_offset", np.roll(fd, -1, axis=1), COLUMN_HINT),
                 Mistake("column_offset", np.roll(fd, 1, axis=1), COLUMN_HINT),
-                Mistake("inertial_coordinates", A @ fd, JACOBIAN_FRAME_HINT),
+                Mistake("wrong_frame", A @ fd, JACOBIAN_FRAME_HINT),
             ], _GENERIC_HINTS[quantity], context=f"(expected: the derivative of your own {of} by q, 3 x {nq})",
                 note=f"{name} is the first body, in recursion order, whose {quantity} is not the derivative of "
                      f"its own kinematics ({before}).")

@@ -239,7 +239,7 @@ def _traces_check(ctx, case):
                    f"Your model integrates with {got['integrator']} at {got['timestep'] * 1000:g} ms: declare "
                    '<option integrator="RK4" timestep="0.001"/>.' if coarse else
                    "The checks of what the model declares (above) name the likely cause.",
-                   "integrator" if coarse else "")
+                   "integration" if coarse else "")
 
 
 @check(2, title="2(a): the tutorial model's angle and rate follow the reference over 10 s", stage=STAGE_VALUES,

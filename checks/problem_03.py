@@ -212,7 +212,7 @@ def _chaos_traces(ctx, variant, title):
             'chaotic motion: declare <option integrator="RK4" timestep="0.001"/>.' if coarse else
             "The checks of what the model declares (above) name the likely cause.")
     compare_traces(expected["t"], mine, ref, tols, horizon, f"of {VARIANTS[variant]}", hint,
-                   "integrator" if coarse else "", note=why)
+                   "integration" if coarse else "", note=why)
 
 
 @check(2, title="3(a): both joints' angles and rates follow the reference up to the chaos horizon",

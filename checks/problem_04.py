@@ -360,7 +360,7 @@ def check_model_dynamics(ctx):
     what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
     alpha = _along(_model(ctx, q, what), what)
     assert_close(alpha, expected["alpha"], f"the acceleration along the linkage's motion in {what}", ALONG,
-                 mistakes=[Mistake("no_gravity", 0.0, "Nothing accelerates the linkage: gravity must be "
+                 mistakes=[Mistake("missing_gravity", 0.0, "Nothing accelerates the linkage: gravity must be "
                                    "(0, -g, 0), in the plane of the motion.")],
                  note="alpha = t.T qfrc_smooth / (t.T M t) with t the unit null vector of the constraint Jacobian: "
                       "exact even though MuJoCo's soft constraint lets qacc itself differ from alpha t.")

@@ -118,7 +118,7 @@ def check_get_coords(ctx):
     def compare(got, expected, args):
         A_IC, C_v, A_IX = args
         mistakes = {"X_v": [Mistake("transpose", A_IX @ A_IC @ C_v, TRANSPOSE_HINT + " X_v = A_IX.T @ I_v.")],
-                    "C_v": [Mistake("inertial", A_IC @ C_v, "Without an argument get_coords() returns the "
+                    "C_v": [Mistake("wrong_frame", A_IC @ C_v, "Without an argument get_coords() returns the "
                                     "components in C itself, i.e. C_v.")]}
         _assert_entries(got, expected, ("X_v", "C_v"), mistakes, "(v.get_coords(X) and v.get_coords())")
 

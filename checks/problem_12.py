@@ -144,20 +144,20 @@ def _point_mistakes(method, state, q):
     Om, Omd = skew(state["B_omega_B"]), skew(state["B_omegaDot_B"])
     body = "The result must be in inertial coordinates: multiply the body-frame vector by A_IB."
     if method == "position_of_point":
-        return [Mistake("body_coordinates", r + q, body),
+        return [Mistake("wrong_frame", r + q, body),
                 Mistake("offset_not_rotated", A @ r + q, "B_r_BQ is in body coordinates: I_r_IQ = A_IB @ "
                         "(B_r_IB + B_r_BQ), the offset is rotated too.")]
     if method == "velocity_of_point":
         return [Mistake("missing_omega_x_r", A @ v, "The velocity of Q adds omega x r_BQ to the velocity of B: "
                         "I_v_Q = A_IB @ (B_v_B + B_omega_B x B_r_BQ)."),
                 Mistake("sign_flip", A @ (v - Om @ q), "The cross product is omega x r_BQ, not r_BQ x omega."),
-                Mistake("body_coordinates", v + Om @ q, body),
+                Mistake("wrong_frame", v + Om @ q, body),
                 Mistake("offset_not_rotated", A @ v + Om @ q, "omega x B_r_BQ is in body coordinates as well: "
                         "I_v_Q = A_IB @ (B_v_B + B_omega_B x B_r_BQ), the whole sum is rotated into I.")]
     return [Mistake("missing_centripetal", A @ (a + Omd @ q), "The centripetal term is missing: I_a_Q = A_IB @ "
                     "(B_a_B + omegaDot x r_BQ + omega x (omega x r_BQ)); skew(omega) @ skew(omega) @ r_BQ."),
             Mistake("missing_tangential", A @ (a + Om @ Om @ q), "The tangential term omegaDot x r_BQ is missing."),
-            Mistake("body_coordinates", a + (Omd + Om @ Om) @ q, body),
+            Mistake("wrong_frame", a + (Omd + Om @ Om) @ q, body),
             Mistake("offset_not_rotated", A @ a + (Omd + Om @ Om) @ q, "The terms of the offset B_r_BQ are in body "
                     "coordinates as well: I_a_Q = A_IB @ (B_a_B + (skew(omegaDot) + skew(omega)^2) @ B_r_BQ), the "
                     "whole sum is rotated into I.")]

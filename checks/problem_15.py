@@ -53,7 +53,7 @@ SHEET_CASE_6 = [[0.1564, 0.9877, 0.0004], [-0.9876, 0.1564, 0.0145], [0.0142, -0
 MOMENTUM = Tol("conservation, first order in dt", 0.02)
 
 DYNAMIC_MISTAKES = {
-    "no_gyroscopic": (
+    "missing_gyroscopic": (
         "The gyroscopic term is missing: without torque, Euler's equation is B_I_B @ omegaDot = -omega x (B_I_B @ "
         "omega), which is not zero unless omega is a principal axis."
     ),
@@ -91,7 +91,7 @@ def natural_dynamics(state, mistake=None):
     I, w = np.asarray(state["B_I_B"], dtype=float), np.asarray(state["B_omega_B"], dtype=float)
     gyroscopic = -skew(w) @ I @ w
     omega_dot = {
-        "no_gyroscopic": lambda: np.zeros(3),
+        "missing_gyroscopic": lambda: np.zeros(3),
         "gyroscopic_sign": lambda: np.linalg.solve(I, -gyroscopic),
         "multiplied_not_solved": lambda: I @ gyroscopic,
         "principal_axes_only": lambda: gyroscopic / np.diag(I),
@@ -188,7 +188,7 @@ def _compare_accelerations(got, expected, state):
 def check_angular_momentum(ctx):
     def mistakes(args, expected):
         state = args[0]
-        return [Mistake("inertial_frame", state["A_IB"] @ expected, "B_L_B is the angular momentum in BODY "
+        return [Mistake("wrong_frame", state["A_IB"] @ expected, "B_L_B is the angular momentum in BODY "
                         "coordinates: B_I_B @ B_omega_B, without A_IB (the check maps it to I itself).")]
 
     ctx.student("problem_15.angular_momentum", case_state(ctx, 3))

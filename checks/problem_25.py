@@ -109,7 +109,7 @@ def _x_mistakes(ctx, alpha, gamma, target):
              for name, hint, bodies in candidates(ctx, description, [alpha, gamma], models=WALKER_MODELS)]
     walker = ctx.reference("problem_25.walker", alpha, gamma)
     body = _x_of(walker["bodies"], walker["names"], frame="body")
-    return [Mistake("body_coordinates", _on_branch(body, target), BODY_HINT), *found]
+    return [Mistake("wrong_frame", _on_branch(body, target), BODY_HINT), *found]
 
 
 # ------------------------------------------------------------------------------------ part (c)

@@ -60,7 +60,7 @@ def _gravity_mistakes(ctx, description, q, I_grav, expected):
     return [
         Mistake("sign_flip", -np.asarray(expected), "g(q) is the generalized gravity force, sum(B_J_S.T @ (A_IB.T @ "
                 "I_grav) * m); yours has the opposite sign."),
-        Mistake("body_frame", sum(body["B_J_S"].T @ I_grav * m for body, m in bodies), FRAME_HINT),
+        Mistake("wrong_frame", sum(body["B_J_S"].T @ I_grav * m for body, m in bodies), FRAME_HINT),
         Mistake("missing_mass", sum(body["B_J_S"].T @ (body["A_IB"].T @ I_grav) for body, _ in bodies), MASS_HINT),
     ]
 

@@ -39,7 +39,7 @@ def _mistakes(part, expected):
     return [
         Mistake("missing_foe_story", "\n".join(lines[:2]),
                 "TweedleDum.TellStory ends with obj.foe.TellStory(): his foe, TweedleDee, continues the story."),
-        Mistake("swapped_names",
+        Mistake("swapped",
                 lambda got, exp: len(got) == len(exp) and all(g in (e, _swapped(e)) for g, e in zip(got, exp)),
                 "In TweedleDee.TellStory, obj is TweedleDee and obj.foe is TweedleDum (who created him with "
                 "TweedleDee('TweedleDee', obj)): 'For ' + obj.name + ' said ' + obj.foe.name."),

@@ -114,7 +114,7 @@ def check_forces(ctx):
         assert_close(got["f"], expected["f"], "f", EXACT, context="(the free bar has no velocity terms)")
         assert_close(got["g"], expected["g"], "g", EXACT, [
             Mistake("gravity_sign", -np.asarray(expected["g"]), HINTS["gravity_sign"]),
-            Mistake("no_mass", np.asarray(expected["g"]) / m, "g is a force: the weight m g, not the acceleration "
+            Mistake("missing_mass", np.asarray(expected["g"]) / m, "g is a force: the weight m g, not the acceleration "
                     "of gravity."),
         ], context=f"(m = {m:.4g}, g = {g:.4g})")
 

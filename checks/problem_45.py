@@ -82,7 +82,7 @@ def check_jacobian(ctx):
                     "phi = 0 its y-entries are +1."),
             Mistake("support_side", other_side, "The second support sits at x = +s: c2 = y cos phi - (x - s) sin phi "
                     "- d, whose phi-derivative at q- is s - l."),
-            Mistake("rows_swapped", fd[::-1], "The first row is the first (left) contact c1, the second the new "
+            Mistake("swapped", fd[::-1], "The first row is the first (left) contact c1, the second the new "
                     "contact c2 at s."),
         ], context=f"at {_describe(args)} (expected: the gradients of c1 and c2 at q- = (l, d, 0))")
 

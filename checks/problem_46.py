@@ -75,9 +75,9 @@ CONSTRAINT_HINTS = {
     "constraint_sign": "The sheet writes the constraint as c = wire_length - |anchor - I_r_E| (J_lam = -dir.T A_IE "
                        "B_J_S,E): then lambda > 0 is the wire's pull. Yours is the same constraint with the other sign "
                        "(J and sigma both flipped).",
-    "body_frame": "B_J_S,E and B_a_E are in the end effector's coordinates: bring them to I with A_IE before the dot "
+    "wrong_frame": "B_J_S,E and B_a_E are in the end effector's coordinates: bring them to I with A_IE before the dot "
                   "product with dir (which is in I).",
-    "no_centripetal": "sigma_lam = -dir.T A_IE B_a_E - |dir x I_v_E|^2 / wire_length: the second derivative of "
+    "missing_centripetal": "sigma_lam = -dir.T A_IE B_a_E - |dir x I_v_E|^2 / wire_length: the second derivative of "
                       "|anchor - I_r_E| has a centripetal part (the direction turns).",
     "centripetal_sign": "The centripetal part of sigma_lam is -|dir x I_v_E|^2 / wire_length (c_ddot = J qdd + "
                         "sigma with c = wire_length - |anchor - I_r_E|).",

@@ -209,7 +209,7 @@ def check_maximum(ctx):
         ], context=where, note=note)
         assert_close(Lam_max, expected_max, "Lam_max", EXACT, [
             Mistake("impulse_sign", -expected_max, "The lane pushes: Lam_max > 0 for a falling pin (yd- < 0)."),
-            Mistake("no_mass", expected_max / m, "An impulse stops a momentum: m yd-, not the velocity alone."),
+            Mistake("missing_mass", expected_max / m, "An impulse stops a momentum: m yd-, not the velocity alone."),
         ], context=where)
 
     ctx.compare_random("problem_47.maximum", _maximum_cases(), name="phi_hat, Lam_max", tol=EXACT, compare=compare,

@@ -31,7 +31,7 @@ __all__ = [
 ]
 
 #: mistakes of a body's share of M, f, g (see ``_mistaken_share``)
-MFG_MISTAKES = ("no_gyroscopic", "no_bias", "gravity_sign", "gravity_body_frame", "transpose", "f_sign",
+MFG_MISTAKES = ("missing_gyroscopic", "missing_bias", "gravity_sign", "gravity_body_frame", "transpose", "f_sign",
                 "gyroscopic_sign")
 
 
@@ -86,8 +86,8 @@ def _mistaken_share(body, I_grav, mistake):
     omega, sigma_S, sigma_R = (np.asarray(x, dtype=float) for x in (body.B_omega_B, body.B_a_B, body.B_omegaDot_B))
     A_IB = np.asarray(body.A_IB, dtype=float)
     P_S, P_R = (J_S, J_R) if mistake == "transpose" else (J_S.T, J_R.T)
-    gyroscopic = {"no_gyroscopic": 0.0, "gyroscopic_sign": -1.0}.get(mistake, 1.0) * _skew(omega) @ I @ omega
-    bias = 0.0 if mistake == "no_bias" else 1.0
+    gyroscopic = {"missing_gyroscopic": 0.0, "gyroscopic_sign": -1.0}.get(mistake, 1.0) * _skew(omega) @ I @ omega
+    bias = 0.0 if mistake == "missing_bias" else 1.0
     gravity = -I_grav if mistake == "gravity_sign" else I_grav
     B_grav = gravity if mistake == "gravity_body_frame" else A_IB.T @ gravity
     M = m * P_S @ P_S.T + P_R @ I @ P_R.T

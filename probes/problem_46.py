@@ -72,8 +72,8 @@ def constraint_mistakes(pkg, q, qd, baumgarte):
         "missing_baumgarte": terms(J, bias + centripetal),
         "jacobian_sign": terms(-J, bias + centripetal + stabilisation),
         "constraint_sign": terms(-J, -(bias + centripetal + stabilisation)),
-        "body_frame": terms(-(direction @ J_S).reshape(1, 3), -direction @ a_E + centripetal + stabilisation),
-        "no_centripetal": terms(J, bias + stabilisation),
+        "wrong_frame": terms(-(direction @ J_S).reshape(1, 3), -direction @ a_E + centripetal + stabilisation),
+        "missing_centripetal": terms(J, bias + stabilisation),
         "centripetal_sign": terms(J, bias - centripetal + stabilisation),
     }
 
