@@ -43,7 +43,7 @@ def _evaluate(ctx, kind, points):
             f"{' and r' if kind == 'rolling_contact' else ''} only")
         fail(f"{what}, so it cannot be evaluated.",
              "Use the symbols of the dict's q, qd, qdd (and r): derivatives d_<name>, dd_<name> are in qd, qdd.",
-             "free_symbols" if problem != "missing" else "missing")
+             "free_symbols" if problem != "missing" else "format")
     values = as_list(got["values"], f"the values of {kind}_joint_function() at the {len(points)} points", len(points))
     return [as_dict(value, f"{kind}_joint_function() at a point", KEYS) for value in values]
 

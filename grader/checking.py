@@ -13,6 +13,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from checks._diagnoses import DIAGNOSES, student_phrase, unknown_names
+
+from .errors import GraderFault
 from .results import Figure, Series
 
 __all__ = [
@@ -31,6 +34,7 @@ __all__ = [
     "checks_of",
     "CheckFailure",
     "NotAnswered",
+    "known_diagnosis",
     "Mistake",
     "diagnose",
     "fail",
@@ -120,12 +124,24 @@ def checks_of(module) -> list[CheckSpec]:
 # ---------------------------------------------------------------------------------------------- failures
 
 
+def known_diagnosis(diagnosis: str) -> str:
+    """``diagnosis`` when every name of it is in the vocabulary (``checks._diagnoses``); a name that is not is a
+    defect of the checks, refused as the grader's fault (never the student's)."""
+    unknown = unknown_names(diagnosis)
+    if unknown:
+        raise GraderFault(f"the check names a diagnosis that is not in the vocabulary (checks/_diagnoses.py): "
+                          f"{', '.join(map(repr, unknown))}")
+    return diagnosis
+
+
 class CheckFailure(Exception):
     """The property does not hold.  ``message`` explains got/expected; ``hint`` names the likely mistake.
     ``candidates``: the known mistakes whose value the student's matched (None when no catalogue was consulted),
-    which a randomized comparison narrows down with a second failing input."""
+    which a randomized comparison narrows down with a second failing input.  ``diagnosis`` is a name of the
+    vocabulary (or names joined by " or "): an unknown one is refused as the grader's fault."""
 
     def __init__(self, message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None):
+        known_diagnosis(diagnosis)
         super().__init__(message)
         self.message = message
         self.hint = hint
@@ -143,11 +159,17 @@ def fail(message: str, hint: str = "", diagnosis: str = "", candidates: tuple | 
 
 @dataclass(frozen=True)
 class Mistake:
-    """A known mistake: what a student would get by making it, and what to tell them."""
+    """A known mistake: what a student would get by making it, and what to tell them.  ``name`` is a name of the
+    vocabulary (``checks._diagnoses``): an unknown one is refused as the grader's fault."""
 
     name: str
     value: object
     hint: str
+
+    def __post_init__(self):
+        if self.name not in DIAGNOSES:
+            raise GraderFault(f"a known mistake is named {self.name!r}, which is not one name of the vocabulary "
+                              f"(checks/_diagnoses.py)")
 
 
 def diagnose(matches) -> tuple[str, str]:
@@ -163,7 +185,7 @@ def diagnose(matches) -> tuple[str, str]:
         return mistake.hint, mistake.name
     names = list(unique)
     hint = (f"{len(names)} known mistakes give exactly your value here, so it could be "
-            f"{' or '.join(n.replace('_', ' ') for n in names)}:\n"
+            f"{' or '.join(student_phrase(n) for n in names)}:\n"
             + "\n".join(f"- {m.hint}" for m in unique.values()))
     return hint, " or ".join(names)
 

@@ -277,7 +277,7 @@ def test_class_summary_has_every_plot_and_table(small_class):
         assert re.search(rf'<table id="{table}">.*?<tr>.*?</table>', html, re.S), table
     gradebook = re.search(r'<table id="students">(.*?)</table>', html, re.S).group(1)
     assert gradebook.count("<tr>") == 1 + 7
-    assert "14% of students</strong> transposed a rotation matrix (A_BI for A_IB) in problem 6" in html
+    assert "14% of students</strong> transposed a matrix (A_BI for A_IB) in problem 6" in html
     assert "14% of students</strong> used degrees where radians are expected in problem 6" in html
     trouble = re.search(r'<table id="trouble-table">(.*?)</table>', html, re.S).group(1)
     assert "gina" in trouble and "alice" not in trouble and "frank" not in trouble

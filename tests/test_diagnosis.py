@@ -5,8 +5,8 @@ mistakes still match, the report says it could be any of them instead of naming 
 The comparison here is a small made-up function, ``f(a, b) = a + b``, with a stub sandbox child (the student) and
 a stub oracle (the reference), so that the inputs and the mistakes are fully known:
 
-* the student computes ``a - b`` (the mistake "sign_of_b");
-* the catalogue also holds "forgot_a" (``-b``): at ``a = 0``, where hypothesis shrinks every failure to, both
+* the student computes ``a - b`` (the mistake "sign_flip", of b);
+* the catalogue also holds "ignored_argument" (``-b``: a forgotten): at ``a = 0``, where hypothesis shrinks every failure to, both
   mistakes give the student's value, and only a drawn input with ``a != 0`` tells them apart.
 """
 
@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from grader import strategies as st
+from checks._diagnoses import student_phrase
 from grader.checking import EXACT, CheckFailure, Mistake, assert_close, diagnose
 from grader.context import Context
 
@@ -34,9 +35,9 @@ def student_f(a, b):
 
 def catalogue(args, expected, twin=False):
     a, b = args
-    mistakes = [Mistake("forgot_a", np.array([-b]), FORGOT_HINT), Mistake("sign_of_b", np.array([a - b]), SIGN_HINT)]
+    mistakes = [Mistake("ignored_argument", np.array([-b]), FORGOT_HINT), Mistake("sign_flip", np.array([a - b]), SIGN_HINT)]
     if twin:  # a second name for the same computation: never told apart
-        mistakes.append(Mistake("subtracted_b", np.array([a - b]), TWIN_HINT))
+        mistakes.append(Mistake("offset_sign", np.array([a - b]), TWIN_HINT))
     return mistakes
 
 
@@ -84,14 +85,14 @@ def compare(oracle, twin=False, seed=7):
 
 
 def test_diagnose_names_one_mistake_or_all_that_match():
-    sign = Mistake("sign_of_b", None, SIGN_HINT)
-    forgot = Mistake("forgot_a", None, FORGOT_HINT)
+    sign = Mistake("sign_flip", None, SIGN_HINT)
+    forgot = Mistake("ignored_argument", None, FORGOT_HINT)
     assert diagnose(()) == ("", "")
-    assert diagnose([sign]) == (SIGN_HINT, "sign_of_b")
-    assert diagnose([sign, Mistake("sign_of_b", None, "another wording")]) == (SIGN_HINT, "sign_of_b")
+    assert diagnose([sign]) == (SIGN_HINT, "sign_flip")
+    assert diagnose([sign, Mistake("sign_flip", None, "another wording")]) == (SIGN_HINT, "sign_flip")
     hint, name = diagnose([forgot, sign])
-    assert name == "forgot_a or sign_of_b"
-    assert "could be forgot a or sign of b" in hint
+    assert name == "ignored_argument or sign_flip"
+    assert f"could be {student_phrase('ignored_argument')} or {student_phrase('sign_flip')}" in hint
     assert FORGOT_HINT in hint and SIGN_HINT in hint
 
 
@@ -100,8 +101,8 @@ def test_degenerate_input_alone_is_ambiguous():
     args = (0.0, 1.0)
     with pytest.raises(CheckFailure) as caught:
         assert_close(student_f(*args), reference_f(*args), "f(a, b)", EXACT, catalogue(args, None))
-    assert caught.value.diagnosis == "forgot_a or sign_of_b"
-    assert {m.name for m in caught.value.candidates} == {"forgot_a", "sign_of_b"}
+    assert caught.value.diagnosis == "ignored_argument or sign_flip"
+    assert {m.name for m in caught.value.candidates} == {"ignored_argument", "sign_flip"}
 
 
 def test_live_shrunk_input_is_degenerate_and_the_drawn_one_names_the_mistake():
@@ -110,7 +111,7 @@ def test_live_shrunk_input_is_degenerate_and_the_drawn_one_names_the_mistake():
     a, b = shown
     assert a == 0.0 and b != 0.0  # shrunk to the degenerate input, where both mistakes give the same value
     assert np.allclose(student_f(a, b), -b)
-    assert failure.diagnosis == "sign_of_b"
+    assert failure.diagnosis == "sign_flip"
     assert failure.hint == SIGN_HINT
     assert "(a=0.0, b=" in failure.message
 
@@ -118,7 +119,7 @@ def test_live_shrunk_input_is_degenerate_and_the_drawn_one_names_the_mistake():
 def test_live_two_mistakes_that_always_agree_are_both_named():
     failure, shown = compare(StubOracle(), twin=True)
     assert shown[0] == 0.0
-    assert failure.diagnosis == "sign_of_b or subtracted_b"
+    assert failure.diagnosis == "sign_flip or offset_sign"
     assert SIGN_HINT in failure.hint and TWIN_HINT in failure.hint and FORGOT_HINT not in failure.hint
 
 
@@ -127,13 +128,13 @@ def test_kit_pool_simplest_failure_is_degenerate_and_the_first_drawn_one_names_t
     failure, shown = compare(StubOracle(pool))
     assert shown == (0.0, 0.5)  # the simplest failing input of the pool: a = 0, both mistakes agree there
     assert "the simplest of the 3 failing inputs among the 4 recorded random inputs" in failure.message
-    assert failure.diagnosis == "sign_of_b"
+    assert failure.diagnosis == "sign_flip"
 
 
 def test_kit_pool_with_only_degenerate_failures_stays_ambiguous():
     failure, shown = compare(StubOracle([(0.0, 0.0), (0.0, 0.5), (0.0, -1.5)]))
     assert shown == (0.0, 0.5)
-    assert failure.diagnosis == "forgot_a or sign_of_b"
+    assert failure.diagnosis == "ignored_argument or sign_flip"
 
 
 def test_a_mistake_matching_only_on_the_degenerate_input_is_not_named():

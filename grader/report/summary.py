@@ -1,6 +1,6 @@
 """The class summary of a batch (``summary.html``): the score distributions, the checks failed most often and the
-mistakes diagnosed behind them ("35% of students transposed a rotation matrix in problem 6", each student counted
-once per mistake and problem), the students whose code errored or timed out, the free-text answers to score, and
+mistakes diagnosed behind them ("35% of students transposed a matrix (A_BI for A_IB) in problem 6", counted by
+family of the vocabulary of diagnoses, ``checks._diagnoses``, each student once per family and problem), the students whose code errored or timed out, the free-text answers to score, and
 the gradebook.  It is written from the gradebook's rows (``grader.batch.gradebook.Graded``), without their plots."""
 
 from __future__ import annotations
@@ -9,25 +9,14 @@ import statistics
 from collections import Counter, defaultdict
 from datetime import datetime, timezone
 
+from checks._diagnoses import DIAGNOSES, FAMILIES, names_of
+
 from ..results import Graded, Status, possible, problem_possible, rows_by_student, scored_items
 from .environment import environment
 from .figures import png
 
-__all__ = ["class_summary", "DIAGNOSES", "TROUBLE"]
+__all__ = ["class_summary", "TROUBLE"]
 
-#: how the class summary words a diagnosis: "31% of students transposed a rotation matrix ..."
-DIAGNOSES = {
-    "transpose": "transposed a rotation matrix (A_BI for A_IB)",
-    "degrees": "used degrees where radians are expected",
-    "rotation_order": "multiplied the rotations in the wrong order",
-    "argument_order": "swapped the arguments",
-    "wrong_axis": "rotated about the wrong axis",
-    "reflection": "built a reflection instead of a rotation (det = -1)",
-    "sign": "flipped a sign",
-    "shape": "returned an array of the wrong shape",
-    "none": "returned nothing (a missing return)",
-    "not_finite": "returned NaN or infinite values",
-}
 TROUBLE = (Status.ERROR, Status.TIMEOUT, Status.GRADER_ERROR)
 
 
@@ -91,9 +80,36 @@ def _distributions(graded: list[Graded], images: dict) -> tuple[list[dict], floa
     return problems, top
 
 
+def _family(diagnosis: str) -> str:
+    """The family a diagnosis is counted under in the class summary: its names' family (families joined by " or "
+    for a diagnosis that could be several); a name the vocabulary does not know (a gradebook of an older grader)
+    counts as a family of its own."""
+    families: list[str] = []
+    for name in names_of(diagnosis):
+        family = DIAGNOSES[name].family if name in DIAGNOSES else name
+        if family not in families:
+            families.append(family)
+    return " or ".join(families)
+
+
+def _phrase(family: str, names: Counter) -> str:
+    """How the summary words a family of mistakes: the one diagnosis's phrase when its students all have the same
+    one, else the family's phrase and the diagnoses behind it."""
+    def words(name: str) -> str:
+        known = [DIAGNOSES[n].summary for n in names_of(name) if n in DIAGNOSES]
+        return " or ".join(known) if known else f"made the mistake “{name.replace('_', ' ')}”"
+
+    if len(names) == 1:
+        return words(next(iter(names)))
+    parts = [FAMILIES[f].summary if f in FAMILIES else words(f) for f in family.split(" or ")]
+    behind = ", ".join(f"{name.replace('_', ' ')} {count}" for name, count in names.most_common())
+    return f"{' or '.join(parts)} ({behind})"
+
+
 def _failures(graded: list[Graded], images: dict, top: int) -> tuple[list[dict], list[dict]]:
     """The checks that students did not pass, most frequent first (with a bar chart), and the diagnosed mistakes
-    behind them, per problem and diagnosis: "31% of students transposed ... in problem 6"."""
+    behind them, per problem and family of the vocabulary (``checks._diagnoses``): "31% of students transposed ...
+    in problem 6", each student counted once per family and problem."""
     checks: dict[str, dict] = {}
     diagnosed: dict[tuple[int, str], dict] = {}
     per_problem = Counter(g.report.problem for g in graded)
@@ -105,8 +121,10 @@ def _failures(graded: list[Graded], images: dict, top: int) -> tuple[list[dict],
             if not r.passed:
                 stat["how"][r.status.value] += 1
             if r.diagnosis:
-                entry = diagnosed.setdefault((r.problem, r.diagnosis), {"students": set(), "checks": Counter()})
+                entry = diagnosed.setdefault((r.problem, _family(r.diagnosis)),
+                                             {"students": set(), "names": {}, "checks": Counter()})
                 entry["students"].add(g.student)
+                entry["names"].setdefault(r.diagnosis, set()).add(g.student)
                 entry["checks"][r.check_id] += 1
     failing = sorted((c for c in checks.values() if c["how"]), key=lambda c: (-c["how"].total(), c["check_id"]))
     for c in failing:
@@ -117,16 +135,17 @@ def _failures(graded: list[Graded], images: dict, top: int) -> tuple[list[dict],
         shown = failing[:top]
         images["failures"] = _failure_bars([c["check_id"] for c in shown],
                                            [c["not_passed"] / c["students"] for c in shown])
-    mistakes = [
-        {"problem": problem, "diagnosis": diagnosis, "count": len(entry["students"]),
-         "percent": _percent(len(entry["students"]), per_problem[problem]),
-         "phrase": DIAGNOSES.get(diagnosis, f"made the mistake “{diagnosis.replace('_', ' ')}”"),
-         "checks": [{"check_id": check_id, "title": checks[check_id]["title"], "count": n,
-                     "percent": _percent(n, checks[check_id]["students"])}
-                    for check_id, n in sorted(entry["checks"].items(), key=lambda item: (-item[1], item[0]))]}
-        for (problem, diagnosis), entry in diagnosed.items()
-    ]
-    mistakes.sort(key=lambda m: (-m["count"], m["problem"], m["diagnosis"]))
+    mistakes = []
+    for (problem, family), entry in diagnosed.items():
+        names = Counter({name: len(students) for name, students in entry["names"].items()})
+        mistakes.append({
+            "problem": problem, "family": family, "diagnosis": ", ".join(sorted(names)),
+            "count": len(entry["students"]), "percent": _percent(len(entry["students"]), per_problem[problem]),
+            "phrase": _phrase(family, names),
+            "checks": [{"check_id": check_id, "title": checks[check_id]["title"], "count": n,
+                        "percent": _percent(n, checks[check_id]["students"])}
+                       for check_id, n in sorted(entry["checks"].items(), key=lambda item: (-item[1], item[0]))]})
+    mistakes.sort(key=lambda m: (-m["count"], m["problem"], m["family"]))
     return failing, mistakes
 
 
