@@ -9,6 +9,7 @@ student's code is reached only through ``ctx.student(probe, *args)`` (sandboxed 
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -138,15 +139,20 @@ class CheckFailure(Exception):
     """The property does not hold.  ``message`` explains got/expected; ``hint`` names the likely mistake.
     ``candidates``: the known mistakes whose value the student's matched (None when no catalogue was consulted),
     which a randomized comparison narrows down with a second failing input.  ``diagnosis`` is a name of the
-    vocabulary (or names joined by " or "): an unknown one is refused as the grader's fault."""
+    vocabulary (or names joined by " or "): an unknown one is refused as the grader's fault.  ``evidence``: the
+    failing comparison (``grader.diagnosis.Evidence``) for the diagnosis engine, which names a cause when no
+    catalogued mistake does; ``explained`` once it has been asked."""
 
-    def __init__(self, message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None):
+    def __init__(self, message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None,
+                 evidence=None, explained: bool = False):
         known_diagnosis(diagnosis)
         super().__init__(message)
         self.message = message
         self.hint = hint
         self.diagnosis = diagnosis
         self.candidates = candidates
+        self.evidence = evidence
+        self.explained = explained
 
 
 class NotAnswered(Exception):
@@ -232,8 +238,22 @@ def _within(got, expected, tol: Tol):
     return np.abs(got - expected) <= tol.atol + tol.rtol * np.abs(expected)
 
 
+#: while the student kit's answer key is recorded: the recording context of the running check (see
+#: ``grader.diagnosis.recording``), so that each comparison makes the reference calls the diagnosis engine may need
+_RECORDING = threading.local()
+
+
+def _compared(expected) -> None:
+    ctx = getattr(_RECORDING, "ctx", None)
+    if ctx is not None:
+        from .diagnosis import note_comparison
+
+        note_comparison(ctx, expected)
+
+
 def close(got, expected, tol: Tol) -> bool:
     """True when ``got`` has the shape of ``expected`` and matches it entrywise within ``tol``."""
+    _compared(expected)
     try:
         got = np.asarray(got, dtype=float)
         expected = np.asarray(expected, dtype=float)
@@ -251,6 +271,11 @@ def as_array(value, name: str, shape: tuple | None = None) -> np.ndarray:
     except (TypeError, ValueError):
         fail(f"{name} must be numeric, got a value of type {type(value).__name__}: {str(value)[:200]}")
     if shape is not None and array.shape != tuple(shape):
+        if len(shape) == 2 and shape[0] != shape[1] and array.shape == tuple(shape)[::-1] and _engine():
+            fail(f"{name} must have shape {tuple(shape)}, got shape {array.shape}: the transposed shape.",
+                 f"Your {array.shape[0]} x {array.shape[1]} array looks like the transpose of the {shape[0]} x "
+                 f"{shape[1]} one asked for: swap its rows and columns (build it the other way round, or return "
+                 "its .T).", "transpose")
         if array.size == int(np.prod(shape)):
             fail(
                 f"{name} must have shape {tuple(shape)}, got shape {array.shape}.",
@@ -265,8 +290,12 @@ def as_array(value, name: str, shape: tuple | None = None) -> np.ndarray:
 
 def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str = "", note: str = ""):
     """Fail unless ``got`` matches ``expected`` within ``tol``; name the known mistake that matches (every one
-    that matches, when several do)."""
+    that matches, when several do).  The failure carries the comparison as evidence for the diagnosis engine,
+    which names a cause when no known mistake matches."""
+    raw_got, raw_expected = got, expected
+    _compared(raw_expected)
     expected = np.asarray(expected, dtype=float)
+    _transposed(got, expected, name, tol)
     got = as_array(got, name, expected.shape)
     if close(got, expected, tol):
         return got
@@ -280,7 +309,34 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
     mistakes = list(mistakes or ())
     matches = tuple(mistake for mistake in mistakes if _matches(got, mistake, tol))
     hint, diagnosis = diagnose(matches)
-    fail("\n".join(lines), hint, diagnosis, matches if mistakes else None)
+    from .diagnosis import Evidence
+
+    raise CheckFailure("\n".join(lines), hint, diagnosis, matches if mistakes else None,
+                       Evidence(got, expected, tol, name, raw_got, raw_expected))
+
+
+def _engine() -> bool:
+    """Whether the diagnosis engine's grammar is used (a transposed shape is one of its slips)."""
+    from . import diagnosis
+
+    return diagnosis.ENABLED
+
+
+def _transposed(got, expected, name: str, tol: Tol) -> None:
+    """Fail with ``transpose`` when ``got`` has the transposed shape of a non-square ``expected`` and is its
+    transpose: the cause of the wrong shape, not only the shape."""
+    if expected.ndim != 2 or expected.shape[0] == expected.shape[1] or not _engine():
+        return
+    try:
+        array = np.asarray(got, dtype=float)
+    except (TypeError, ValueError):
+        return
+    if array.shape == expected.shape[::-1] and close(array.T, expected, tol):
+        fail(f"{name} must have shape {expected.shape}, got shape {array.shape}: it is the transpose of the expected "
+             f"value.\ngot:\n{format_array(array)}\nexpected:\n{format_array(expected)}",
+             f"Your {array.shape[0]} x {array.shape[1]} array is the transpose of the expected {expected.shape[0]} x "
+             f"{expected.shape[1]} one: swap its rows and columns (build it the other way round, or return its .T).",
+             "transpose")
 
 
 def _matches(got, mistake: Mistake, tol: Tol) -> bool:

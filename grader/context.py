@@ -16,13 +16,14 @@ from __future__ import annotations
 import threading
 
 from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
+from .diagnosis import explain, prepared, recording, remember_run
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 
 #: hypothesis's engine is not meant to run in two threads at once
 _HYPOTHESIS = threading.Lock()
 
-__all__ = ["Context", "Catalogue", "simplicity"]
+__all__ = ["Context", "Catalogue", "simplicity", "explained"]
 
 
 class Context:
@@ -49,9 +50,15 @@ class Context:
         self._asked: list[tuple[str, tuple, object]] = []  # the running check's fixed calls of the student's code
         self._referenced: list[tuple[str, tuple, object]] = []  # the running check's fixed calls of the reference
         self._common: list[tuple[str, str, str, object]] = []  # failed randomized comparisons: check, site, probe
+        #: the running check's calls ``(side, probe, args, value)``, side "reference" or "student": the diagnosis
+        #: engine finds there where a compared value came from
+        self.calls: list[tuple] = []
+        #: True while a randomized comparison evaluates its inputs (the engine's second input is then its own)
+        self.randomized = False
 
     def begin(self, check_id: str) -> None:
-        """Start a check: its figures, its seed and the numbering of its draw sites begin afresh."""
+        """Start a check: its figures, its seed, the numbering of its draw sites and its log of calls begin
+        afresh."""
         self.check_id = check_id
         self.figures = []
         self.last_seed = None
@@ -60,6 +67,9 @@ class Context:
         self._fixed = True
         self._asked = []
         self._referenced = []
+        self.calls = []
+        self.__dict__.pop("_engine_prepared", None)
+        recording(self if self.oracle.mode == "record" else None)
 
     def end(self, passed: bool) -> None:
         """End the running check: when recording and the check did not pass, keep the student's answers on its
@@ -94,6 +104,8 @@ class Context:
         """Run ``probe`` on the student's package in the sandbox."""
         value = self.child.call(probe, *args, timeout=timeout)
         self._note(probe, args, value)
+        self.calls.append(("student", probe, args, value))
+        remember_run(self, probe, args, value)
         return value
 
     def student_later(self, probe: str, *args, timeout: float | None = None):
@@ -103,15 +115,17 @@ class Context:
         later = getattr(self.child, "call_later", None)
         if later is not None:
             wait = later(probe, *args, timeout=timeout)
-            if not (self._recording and self._fixed):
-                return wait
+            noting = self._recording and self._fixed
 
-            def noted():
+            def value_later():
                 value = wait()
-                self._asked.append((probe, args, value))
+                if noting:
+                    self._asked.append((probe, args, value))
+                self.calls.append(("student", probe, args, value))
+                remember_run(self, probe, args, value)
                 return value
 
-            return noted
+            return value_later
         try:
             value = self.student(probe, *args, timeout=timeout)
         except StudentFault as exc:
@@ -129,6 +143,9 @@ class Context:
         value = self.oracle.reference(probe, args, persist, check=self.check_id)
         if self._recording and self._fixed:
             self._referenced.append((probe, args, value))
+        self.calls.append(("reference", probe, args, value))
+        if self.oracle.mode == "record":
+            prepared(self, probe, args)
         return value
 
     def catalogue(self, compute):
@@ -246,11 +263,26 @@ class Context:
                 self.wrong_answers.append(found)
 
     def _compare_random(self, site: str, strategy, evaluate, examples: int, describe) -> None:
+        """Run a randomized comparison: find the failing input to show, name its mistake (the catalogue's narrowed
+        on a second failing input, else the diagnosis engine's), and raise its failure."""
+        self.randomized = True
+        try:
+            shown, where, failures = self._compare(site, strategy, examples, evaluate)
+        finally:
+            self.randomized = False
+        if shown is None:
+            return
+        args, exc = shown
+        _raise_at(args, self._narrowed(exc, failures), describe, where)
+
+    def _compare(self, site, strategy, examples, evaluate):
+        """``(shown, where, failures)`` of a randomized comparison: the failing input to show (None when every
+        input passes), where it comes from, and every failure found."""
         if self.oracle.pooled:
             inputs = self.oracle.pool(site, strategy, examples, check=self.check_id)
             failures = _failures(inputs, evaluate)
             if not failures:
-                return
+                return None, "", failures
             shown = _simplest(failures)
             where = (f"(the simplest of the {len(failures)} failing input{'s' * (len(failures) != 1)} among the "
                      f"{len(inputs)} recorded random inputs of this check)")
@@ -259,15 +291,31 @@ class Context:
             inputs = self._fresh_inputs(strategy, examples)
             failures = _failures(inputs, evaluate, until_generic=True)
             if not failures:
-                return
+                return None, "", failures
             shown = self._shrink(strategy, examples, evaluate)
             if shown is not None:
                 where = f"(minimal failing input found by hypothesis; seed {self.seed})"
             else:
                 shown = _simplest(failures)
                 where = f"(the simplest failing input of the {len(inputs)} random inputs drawn; seed {self.seed})"
-        args, exc = shown
-        _raise_at(args, _narrowed(exc, _generic(failures)[1]), describe, where)
+        return shown, where, failures
+
+    def _narrowed(self, shown, failures):
+        """The failure of the input shown, its diagnosis checked on the second failing input (``_narrowed``); when
+        no known mistake names it, the diagnosis engine is asked with the comparison shown and the one of another
+        failing input, the generic one where it can (a single failing input names no cause: a slip of the grammar
+        fails on every generic input)."""
+        failure = _narrowed(shown, _generic(failures)[1])
+        if not isinstance(failure, CheckFailure) or failure.diagnosis or failure.explained:
+            return failure
+        first = shown.message.partition("\n")[0]
+        others = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
+                  if exc is not shown and isinstance(exc, CheckFailure) and exc.evidence is not None
+                  and exc.message.partition("\n")[0] == first]
+        if failure.evidence is None or not others:
+            return CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates,
+                                failure.evidence, explained=True)
+        return explained(self, failure, [failure.evidence, others[0].evidence])
 
     def _fresh_inputs(self, strategy, examples: int) -> list:
         try:
@@ -416,7 +464,19 @@ def _narrowed(shown, other):
     names = {mistake.name for mistake in other.candidates}
     common = tuple(mistake for mistake in shown.candidates if mistake.name in names)
     hint, diagnosis = diagnose(common)
-    return CheckFailure(shown.message, hint, diagnosis, common)
+    return CheckFailure(shown.message, hint, diagnosis, common, shown.evidence)
+
+
+def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
+    """``failure`` with the cause the diagnosis engine names from ``evidences`` (default: the failure's own
+    comparison), when no known mistake named one; its hint becomes the cause's.  Asked once per failure."""
+    if failure.diagnosis or failure.explained or failure.evidence is None:
+        return failure
+    finding = explain(ctx, evidences or [failure.evidence])
+    if finding is None:
+        return CheckFailure(failure.message, failure.hint, "", failure.candidates, failure.evidence, explained=True)
+    return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
+                        explained=True)
 
 
 def simplicity(args) -> tuple:
@@ -458,7 +518,8 @@ def _raise_at(args, exc, describe, where: str):
     where = f"on the randomized input {shown}\n{where}"
     if isinstance(exc, CheckFailure):
         first, _, rest = exc.message.partition("\n")
-        raise CheckFailure(f"{first}\n{where}\n{rest}", exc.hint, exc.diagnosis, exc.candidates)
+        raise CheckFailure(f"{first}\n{where}\n{rest}", exc.hint, exc.diagnosis, exc.candidates, exc.evidence,
+                           exc.explained)
     if isinstance(exc, StudentCodeError) and not exc.not_implemented:
         raise StudentCodeError(exc.kind, exc.type_name, f"{exc.message}\n{where}", exc.traceback, exc.phase)
     raise exc

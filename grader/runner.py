@@ -15,7 +15,7 @@ from pathlib import Path
 
 from . import __version__, problems
 from .checking import CheckFailure, NotAnswered, checks_of
-from .context import Context
+from .context import Context, explained
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .faults import fault_of
 from .loader import cleanup, materialize, problem_notes, read_answers
@@ -95,6 +95,7 @@ def _run_check(spec, ctx: Context, problem: int, said: dict | None = None) -> Ch
         spec.func(ctx)
         status, message = Status.PASSED, ""
     except CheckFailure as exc:
+        exc = explained(ctx, exc)  # no known mistake named it: the diagnosis engine's cause, if any
         status, message, hint, diagnosis = Status.FAILED, exc.message, exc.hint, exc.diagnosis
     except NotAnswered as exc:
         status, message = Status.NOT_IMPLEMENTED, str(exc)

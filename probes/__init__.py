@@ -3,17 +3,46 @@
 A probe runs twice with the same arguments: in the sandboxed child on the student's package, and in the grader
 on the reference.  Probes import nothing from ``reference``, ``checks`` or ``grader``; they receive the package
 as their first argument.  Arguments and results are JSON-able data (numpy arrays are encoded by ``_codec``).
+
+A probe may declare, as plain data beside ``@probe``, what its arguments and result are, so that the grader's
+diagnosis engine can try common slips on them (``grader.diagnosis``) when the student's value is wrong:
+
+* ``args``: a role per argument (nested like the argument for a dict or a tuple; "" for none): ``"angle"`` (a
+  scalar in radians), ``"angles"`` (an array of them), ``"vector"``, ``"rotation"`` (a rotation matrix),
+  ``"scalar"`` (a number such as a mass or a length), ``"matrix"``, ``"step"`` and ``"count"``;
+* ``rotation``: the argument (an index, or a path ``(index, key)``) that holds the problem's rotation, to try the
+  result and the vector arguments in the other frame;
+* ``terms``: the probe (same arguments, run on the reference) that splits the result into named terms:
+  ``{"terms": {name: value shaped like the result}, "extra": {name: ...}}``, where the ``terms`` sum to the result
+  and the ``extra`` ones are terms that do not belong (gravity counted twice, say); the names are those of
+  ``checks._diagnoses.TERMS``;
+* ``motion``: for a run, ``{"time": key, "states": (keys,), "events": (keys,)}``;
+* ``constants``: the probe (no arguments) of the problem's named constants (a mass, g, a length);
+* ``draw``: False when the engine must not draw a second input itself (the probe is slow, or its arguments must
+  keep their relations).
 """
 
 import importlib
 
 __all__ = ["probe", "module"]
 
+#: the keywords a probe may declare
+DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw")
 
-def probe(func):
-    """Mark ``func(package, *args)`` as callable from the grader."""
-    func.is_probe = True
-    return func
+
+def probe(func=None, **declared):
+    """Mark ``func(package, *args)`` as callable from the grader (``@probe``, or ``@probe(args=..., ...)`` with
+    the declarations of the module's docstring)."""
+    unknown = set(declared) - set(DECLARATIONS)
+    if unknown:
+        raise TypeError(f"unknown probe declarations: {sorted(unknown)}")
+
+    def mark(f):
+        f.is_probe = True
+        f.declared = dict(declared)
+        return f
+
+    return mark(func) if func is not None else mark
 
 
 def module(package, name):
