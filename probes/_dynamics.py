@@ -28,6 +28,9 @@ __all__ = [
     "energies",
     "trace",
     "pendulum_motion",
+    "fixed_step",
+    "pendulum_motion_fixed",
+    "mfg_terms",
 ]
 
 #: mistakes of a body's share of M, f, g (see ``_mistaken_share``)
@@ -61,7 +64,7 @@ def _mfg(pkg, tree, q, qd, I_grav):
     return {"M": np.array(M, dtype=float), "f": np.array(f, dtype=float), "g": np.array(g, dtype=float)}
 
 
-@probe
+@probe(args=("", "vector", "vector", "vector"), terms="_dynamics.mfg_terms")
 def mfg(pkg, description, q, qd, I_grav):
     """``{"M", "f", "g"}`` of the described tree at ``(q, qd)`` (``equations_of_motion``)."""
     return _mfg(pkg, build(pkg, description), *_vectors(q, qd), I_grav)
@@ -110,6 +113,31 @@ def mfg_mistakes(pkg, description, q, qd, I_grav):
         shares = [_mistaken_share(body, I_grav, mistake) for body in tree.bodies]
         out[mistake] = {key: sum(share[k] for share in shares) for k, key in enumerate(("M", "f", "g"))}
     return out
+
+
+@probe
+def mfg_terms(pkg, description, q, qd, I_grav):
+    """``M``, ``f``, ``g`` of the described tree at ``(q, qd)`` split into named terms, from the package's
+    kinematics (the diagnosis engine calls it on the reference): ``M`` = translation + rotation, ``f`` = bias +
+    gyroscopic, ``g`` = gravity; and terms that do not belong: gravity counted in ``f`` as well."""
+    tree = build(pkg, description)
+    q, qd = _vectors(q, qd)
+    tree.forward_kinematics(q, qd, np.zeros(q.size))
+    I_grav = np.asarray(I_grav, dtype=float)
+    n = q.size
+    translation, rotation = np.zeros((n, n)), np.zeros((n, n))
+    bias, gyroscopic, gravity = np.zeros(n), np.zeros(n), np.zeros(n)
+    for body in tree.bodies:
+        J_S, J_R, I, m = (np.asarray(x, dtype=float) for x in (body.B_J_S, body.B_J_R, body.B_I_B, body.m))
+        omega, sigma_S, sigma_R = (np.asarray(x, dtype=float) for x in (body.B_omega_B, body.B_a_B, body.B_omegaDot_B))
+        translation += m * J_S.T @ J_S
+        rotation += J_R.T @ I @ J_R
+        bias -= m * J_S.T @ sigma_S + J_R.T @ I @ sigma_R
+        gyroscopic -= J_R.T @ _skew(omega) @ I @ omega
+        gravity += m * J_S.T @ np.asarray(body.A_IB, dtype=float).T @ I_grav
+    return {"terms": {"translation": {"M": translation}, "rotation": {"M": rotation}, "bias": {"f": bias},
+                      "gyroscopic": {"f": gyroscopic}, "gravity": {"g": gravity}},
+            "extra": {"gravity": {"f": gravity}}}
 
 
 def _positions(tree):
@@ -184,7 +212,8 @@ def trace(run, n, what):
     return t, arrays[0], arrays[1]
 
 
-@probe
+@probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
+               "schemes": ("euler", "symplectic")})
 def pendulum_motion(pkg, t_end, I_grav):
     """Problem 24: the package's ``problem_24.simulate(t_end)`` and, at every output time, the energies ``T`` and
     ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
@@ -193,3 +222,46 @@ def pendulum_motion(pkg, t_end, I_grav):
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}
+
+
+def fixed_step(fun, y0, t_end, h, scheme, event=None, direction=-1.0):
+    """A run of ``dy/dt = fun(t, y)`` from ``y0`` at ``t = 0`` to ``t_end`` with a fixed step ``h``: ``scheme``
+    "euler" (explicit Euler) or "symplectic" (semi-implicit Euler on ``y = (q, qd)``: ``qd`` first, then ``q`` with
+    the new ``qd``).  With ``event``, the run ends at the first step over which ``event(t, y)`` crosses zero in its
+    ``direction`` (-1: from + to -; +1: from - to +).  ``{"t", "y", "t_event"}``: times and rows of the run.
+
+    The grader's diagnosis engine compares a student's run with such runs of the reference's own right-hand side
+    (an error that has the shape of a fixed-step integration's, and scales with its step)."""
+    y = np.asarray(y0, dtype=float)
+    t, times, rows, t_event = 0.0, [0.0], [y], None
+    half = y.size // 2
+    for k in range(int(round(t_end / h))):
+        slope = np.asarray(fun(t, y), dtype=float)
+        if scheme == "symplectic":
+            qd = y[half:] + h * slope[half:]
+            following = np.concatenate([y[:half] + h * qd, qd])
+        else:
+            following = y + h * slope
+        t_next = (k + 1) * h
+        if event is not None:
+            before, after = event(t, y), event(t_next, following)
+            if (direction <= 0 and before > 0 >= after) or (direction >= 0 and before < 0 <= after):
+                t_event = t_next
+                times.append(t_next)
+                rows.append(following)
+                break
+        t, y = t_next, following
+        times.append(t)
+        rows.append(y)
+    return {"t": np.array(times), "y": np.array(rows), "t_event": t_event}
+
+
+@probe
+def pendulum_motion_fixed(pkg, t_end, I_grav, h, scheme):
+    """Problem 24's pendulum released as in ``problem_24.simulate``, run by a fixed-step ``scheme`` at step ``h``
+    with the package's own ``pendulum_ode`` (the diagnosis engine calls it on the reference)."""
+    p24 = module(pkg, "problem_24")
+    tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
+    y0 = np.concatenate([np.asarray(p24.Q, dtype=float), np.zeros(3)])
+    run = fixed_step(lambda t, y: p24.pendulum_ode(t, y, tree), y0, t_end, h, scheme)
+    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}

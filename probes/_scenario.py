@@ -18,7 +18,11 @@ import numpy as np
 
 from . import module, probe
 
-__all__ = ["run", "body_run"]
+__all__ = ["run", "body_run", "BODY_ROLES"]
+
+#: the roles of a rigid body's state (a probe's ``state`` argument) for the diagnosis engine's declarations
+BODY_ROLES = {"A_IB": "rotation", "B_r_IB": "vector", "B_v_B": "vector", "B_a_B": "vector", "B_omega_B": "vector",
+              "B_omegaDot_B": "vector"}
 
 
 def _value(value, objects):

@@ -3,13 +3,13 @@
 from . import module, probe
 
 
-@probe
+@probe(args=("", "angle"))
 def elementary(pkg, axis, angle):
     rotations = module(pkg, "rotations")
     return {1: rotations.R1, 2: rotations.R2, 3: rotations.R3}[axis](angle)
 
 
-@probe
+@probe(args=("angle", "angle", "angle"))
 def cardan(pkg, alpha, beta, gamma):
     return module(pkg, "rotations").cardan(alpha, beta, gamma)
 
@@ -36,7 +36,7 @@ def _own(call):
         return None
 
 
-@probe
+@probe(args=("angle", "angle", "angle"))
 def cardan_with_factors(pkg, alpha, beta, gamma):
     """``cardan(alpha, beta, gamma)`` with the package's own factors ``R1(alpha), R2(beta), R3(gamma)``."""
     rotations = module(pkg, "rotations")

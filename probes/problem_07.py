@@ -5,7 +5,7 @@ from . import module, probe
 NAMES = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
 
 
-@probe
+@probe(args=("vector",))
 def skew(pkg, w):
     return module(pkg, "rotations").skew(w)
 
@@ -15,12 +15,12 @@ def unskew(pkg, W):
     return module(pkg, "rotations").unskew(W)
 
 
-@probe
+@probe(args=("rotation", ""), rotation=0)
 def omega_body(pkg, A, dA):
     return module(pkg, "rotations").omega_body(A, dA)
 
 
-@probe
+@probe(args=("rotation", ""), rotation=0)
 def omega_inertial(pkg, A, dA):
     return module(pkg, "rotations").omega_inertial(A, dA)
 

@@ -5,12 +5,12 @@ import numpy as np
 from . import module, probe
 
 
-@probe
+@probe(args=("angle", "angle", "angle"))
 def rate_matrix(pkg, alpha, beta, gamma):
     return module(pkg, "rotations").cardan_rate_matrix(alpha, beta, gamma)
 
 
-@probe
+@probe(args=("", "", "vector", "scalar"), rotation=1)
 def step(pkg, which, x, I_omega, dt):
     p8 = module(pkg, "problem_08")
     func = {"euler": p8.euler_matrix_step, "cardan": p8.cardan_euler_step, "exp": p8.exponential_step}[which]

@@ -16,7 +16,7 @@ def chain(pkg, relatives):
     }
 
 
-@probe
+@probe(args=("rotation", "rotation"))
 def set_later(pkg, A_IB, A_BC):
     """Create C at the identity, then place it relative to B with set_transform; return A_BC read back and A_IC."""
     CoSys = module(pkg, "cosys").CoSys

@@ -14,7 +14,7 @@ def _objects(A_IC, I_r_IC, C_v, C_r_CO, A_IX=None):
     return objects
 
 
-@probe
+@probe(args=("rotation", "vector", "vector", "vector"), rotation=0)
 def vector(pkg, A_IC, I_r_IC, C_v, C_r_CO):
     """The vector in inertial components, its start point, and its components in I and in C."""
     objects = [*_objects(A_IC, I_r_IC, C_v, C_r_CO), ("I", COSYS, {})]
@@ -23,7 +23,7 @@ def vector(pkg, A_IC, I_r_IC, C_v, C_r_CO):
     return run(pkg, objects, read=read)["final"]
 
 
-@probe
+@probe(args=("rotation", "vector", "vector", "vector", "rotation", "vector"), rotation=0)
 def moved(pkg, A_IC, I_r_IC, C_v, C_r_CO, A_new, I_r_new):
     """The vector after its coordinate system was turned to ``A_new`` and moved to ``I_r_new``."""
     steps = [("C.set_transform", [A_new]), ("C.set_offset", [I_r_new])]
@@ -31,7 +31,7 @@ def moved(pkg, A_IC, I_r_IC, C_v, C_r_CO, A_new, I_r_new):
     return run(pkg, _objects(A_IC, I_r_IC, C_v, C_r_CO), steps, read=read)["final"]
 
 
-@probe
+@probe(args=("rotation", "vector", "rotation", "vector", "vector"), rotation=0)
 def set_in(pkg, A_IC, I_r_IC, A_IX, X_v, X_r):
     """The vector after ``set_vector(X_v, X)`` and ``set_offset(X_r, X)`` with another coordinate system X."""
     steps = [("v.set_vector", [X_v, "@X"]), ("v.set_offset", [X_r, "@X"])]
@@ -39,7 +39,7 @@ def set_in(pkg, A_IC, I_r_IC, A_IX, X_v, X_r):
     return run(pkg, _objects(A_IC, I_r_IC, [0, 0, 0], [0, 0, 0], A_IX), steps, read=read)["final"]
 
 
-@probe
+@probe(args=("rotation", "vector", "rotation"), rotation=0)
 def coords(pkg, A_IC, C_v, A_IX):
     """``get_coords(X)`` and ``get_coords()`` of a vector on C."""
     read = [("X_v", "v.get_coords", ["@X"]), ("C_v", "v.get_coords", [])]

@@ -1,26 +1,26 @@
 """Probes of problem 12: a kinematic rigid body integrated from a state, and the motion of its points."""
 
 from . import module, probe
-from ._scenario import body_run
+from ._scenario import BODY_ROLES, body_run
 
 BODY = "rigid_body.RigidBodyKinematics"
 STATE = ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")
 
 
-@probe
+@probe(draw=False, motion={"time": "step", "states": ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")})
 def integrate(pkg, state, dt, n, every=1):
     """``n`` calls of ``integration_step(dt)`` from ``state``: the traces of the state (every ``every`` steps)."""
     out = body_run(pkg, BODY, state, [("integration_step", [dt])], n, trace=[(k, k) for k in STATE], every=every)
     return {"step": out["step"], **out["trace"]}
 
 
-@probe
+@probe(args=(BODY_ROLES, "", "vector"), rotation=(0, "A_IB"))
 def point(pkg, state, method, B_r_BQ):
     """``position_of_point``, ``velocity_of_point`` or ``acceleration_of_point`` of Q for a body in ``state``."""
     return body_run(pkg, BODY, state, [], 0, read=[("value", method, [B_r_BQ])])["final"]["value"]
 
 
-@probe
+@probe(draw=False, motion={"time": "step", "states": ("I_r_IB", "I_r_IQ")})
 def wheel(pkg, state, dt, n, B_r_BQ, every=1):
     """Part (b): the inertial traces of B and of the body point Q over ``n`` steps."""
     trace = [("I_r_IB", "position_of_point", [[0.0, 0.0, 0.0]]), ("I_r_IQ", "position_of_point", [B_r_BQ])]

@@ -1,10 +1,10 @@
 """Probes of problem 13: the screw axis of a body's twist."""
 
 from . import probe
-from ._scenario import body_run
+from ._scenario import BODY_ROLES, body_run
 
 
-@probe
+@probe(args=(BODY_ROLES,), rotation=(0, "A_IB"))
 def screw(pkg, state):
     """``screw_axis()`` of a kinematic body in ``state``: ``[B_r_BT, B_v_T]``."""
     out = body_run(pkg, "rigid_body.RigidBodyKinematics", state, [], 0, read=[("screw", "screw_axis", [])])

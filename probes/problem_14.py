@@ -6,7 +6,7 @@ from ._scenario import body_run
 STATE = ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")
 
 
-@probe
+@probe(draw=False, motion={"time": "step", "states": ("B_r_BT", "B_v_T")})
 def screw_run(pkg, state, dt, n):
     """``n`` integration steps from ``state``; the state and ``screw_axis()`` before and after every step."""
     trace = [(k, k) for k in STATE] + [("screw", "screw_axis", [])]

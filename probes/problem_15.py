@@ -1,25 +1,25 @@
 """Probes of problem 15: the torque-free rigid body, one evaluation of its dynamics or a whole simulation."""
 
 from . import module, probe
-from ._scenario import body_run
+from ._scenario import BODY_ROLES, body_run
 
 BODY = "rigid_body.RigidBodyDynamics"
 STATE = ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")
 
 
-@probe
+@probe(args=(BODY_ROLES,), rotation=(0, "A_IB"))
 def accelerations(pkg, state):
     """``B_a_B`` and ``B_omegaDot_B`` after one call of ``compute_natural_dynamics()``."""
     read = [("B_a_B", "B_a_B"), ("B_omegaDot_B", "B_omegaDot_B")]
     return body_run(pkg, BODY, state, [("compute_natural_dynamics", [])], 1, read=read)["final"]
 
 
-@probe
+@probe(args=(BODY_ROLES,), rotation=(0, "A_IB"))
 def angular_momentum(pkg, state):
     return body_run(pkg, BODY, state, [], 0, read=[("L", "angular_momentum", [])])["final"]["L"]
 
 
-@probe
+@probe(draw=False, motion={"time": "step", "states": ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")})
 def simulate(pkg, state, dt, n, every=1, momentum=False):
     """``n`` steps of natural dynamics then integration step: the traces of the state (and of
     ``angular_momentum()`` if ``momentum``), every ``every`` steps."""

@@ -8,7 +8,7 @@ BODIES = ("cuboid", "ellipsoid", "particles")
 SYMBOLS = ("m", "a", "b", "c")
 
 
-@probe
+@probe(args=("vector", ""))
 def centre_of_gravity(pkg, masses, points):
     return module(pkg, "inertia").centre_of_gravity(masses, points)
 
@@ -18,7 +18,7 @@ def point_masses(pkg, masses, points):
     return module(pkg, "inertia").point_masses_inertia(masses, points)
 
 
-@probe
+@probe(args=("", "scalar", "scalar", "scalar", "scalar"))
 def body(pkg, name, m, a, b, c):
     return getattr(module(pkg, "inertia"), f"{name}_inertia")(m, a, b, c)
 
@@ -41,6 +41,6 @@ def symbolic(pkg, name, points):
     return np.array(values)
 
 
-@probe
+@probe(args=("scalar", "scalar", "scalar", "scalar"))
 def dimensions(pkg, m, I1, I2, I3):
     return module(pkg, "problem_16").part_b(m, I1, I2, I3)

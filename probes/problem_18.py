@@ -3,7 +3,7 @@
 from . import module, probe
 
 
-@probe
+@probe(args=("scalar", "scalar", "scalar", "scalar"))
 def non_accelerating(pkg, a_x, a_y, r_x, r_y):
     """``(omega, omega_dot)``, or ``"ValueError: ..."`` if the function raises ``ValueError``."""
     try:

@@ -3,7 +3,7 @@
 from . import module, probe
 
 
-@probe
+@probe(args=("", "scalar", "vector"))
 def parallel_axis(pkg, I_G, m, r):
     return module(pkg, "inertia").parallel_axis(I_G, m, r)
 

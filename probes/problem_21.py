@@ -7,12 +7,12 @@ from . import module, probe
 CHAINS = {"a": ("chain_a", "jacobian_a"), "b": ("chain_b", "jacobian_b")}
 
 
-@probe
+@probe(args=("", "vector", "scalar"))
 def chain(pkg, case, q, d):
     return getattr(module(pkg, "planar"), CHAINS[case][0])(q, d)
 
 
-@probe
+@probe(args=("", "vector", "scalar"))
 def jacobian(pkg, case, q, d):
     return getattr(module(pkg, "planar"), CHAINS[case][1])(q, d)
 

@@ -6,12 +6,12 @@ import sys
 from . import module, probe
 
 
-@probe
+@probe(args=("vector", "scalar"))
 def loop(pkg, q, d):
     return module(pkg, "planar").end_effector_loop(q, d)
 
 
-@probe
+@probe(args=("vector", "scalar"))
 def recursive(pkg, q, d):
     return module(pkg, "planar").end_effector_recursive(q, d)
 

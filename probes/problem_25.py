@@ -8,7 +8,7 @@ from . import _trees, module, probe
 _SYMBOLIC = {}
 
 
-@probe
+@probe(args=("angle", "angle"))
 def walker(pkg, alpha, gamma):
     """The walker of ``build_walker`` at ``q = (alpha, gamma)``: body states, outline and ``cog_positions``."""
     p25 = module(pkg, "problem_25")
@@ -67,7 +67,7 @@ def walker_case(pkg):
             "gamma_c": p25.GAMMA_C}
 
 
-@probe
+@probe(args=("angle", "angle"))
 def leg_jacobians(pkg, alpha, gamma):
     """Rows ``I_J_S[0:2]`` and ``I_J_R[2]`` of each leg's Jacobians at ``q = (alpha, gamma)`` (6 x 2), the
     Jacobian of ``x = (x_st, y_st, gamma_st, x_sw, y_sw, gamma_sw)``."""

@@ -5,12 +5,12 @@ import numpy as np
 from . import module, probe
 
 
-@probe
+@probe(args=("angle", "angle", "scalar", "scalar", "scalar"))
 def position(pkg, beta, phi, l1, l2, l3):
     return module(pkg, "problem_26").position(beta, phi, l1, l2, l3)
 
 
-@probe
+@probe(args=("angle", "angle", "scalar", "scalar", "scalar"))
 def jacobian(pkg, beta, phi, l1, l2, l3):
     return module(pkg, "problem_26").jacobian(beta, phi, l1, l2, l3)
 

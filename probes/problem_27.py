@@ -3,12 +3,12 @@
 from . import module, probe
 
 
-@probe
+@probe(args=("vector", "vector"))
 def revolute_column(pkg, p, p_e):
     return module(pkg, "problem_27").revolute_column(p, p_e)
 
 
-@probe
+@probe(args=("vector",))
 def prismatic_column(pkg, u):
     return module(pkg, "problem_27").prismatic_column(u)
 

@@ -5,7 +5,7 @@ import numpy as np
 from . import _trees, module, probe
 
 
-@probe
+@probe(args=("vector", "vector", "vector"))
 def pendulum(pkg, q, qd, qdd):
     """The triple pendulum of ``build_triple_pendulum`` after a full pass at ``(q, qd, qdd)``."""
     tree = module(pkg, "problem_24").build_triple_pendulum()

@@ -5,7 +5,7 @@ import numpy as np
 from . import _trees, module, probe
 
 
-@probe
+@probe(args=("vector",))
 def robot(pkg, q):
     """The arm of ``build_robot`` at ``q``: body states, outline and ``end_effector_position``."""
     p32 = module(pkg, "problem_32")
@@ -14,7 +14,7 @@ def robot(pkg, q):
     return {**_trees.state(tree, motion=False), "outline": _trees.outline(tree), "end_effector": end_effector}
 
 
-@probe
+@probe(args=("", "vector", "vector"))
 def gravity(pkg, description, q, I_grav):
     tree_module = module(pkg, "tree")
     return tree_module.generalized_gravity(_trees.build(tree_module, description), np.asarray(q, dtype=float),

@@ -6,7 +6,7 @@ import numpy as np
 from . import _trees, module, probe
 
 
-@probe
+@probe(args=("vector", "vector", "vector"))
 def walker(pkg, q, qd, qdd):
     """The walker of ``build_walker`` after a full pass at ``(q, qd, qdd)``."""
     tree = module(pkg, "problem_25").build_walker()

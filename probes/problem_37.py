@@ -4,7 +4,7 @@ simulation under each controller (with the end effector's motion from the packag
 import numpy as np
 
 from . import module, probe
-from ._dynamics import trace
+from ._dynamics import fixed_step, trace
 
 TABLE = ("t", "x", "xd", "q", "qd", "qdd")
 
@@ -41,7 +41,8 @@ def robot_ode(pkg, controller, table, cases):
             for t, y in cases]
 
 
-@probe
+@probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_37.simulate_fixed",
+               "schemes": ("euler", "symplectic")})
 def simulate(pkg, controller, table, t_end):
     """``simulate(controller, table, t_end)`` and the end effector's inertial position ``x`` and velocity ``xd`` at
     every output time, from the package's own kinematics."""
@@ -56,7 +57,7 @@ def simulate(pkg, controller, table, t_end):
     return {"t": t, "q": q, "qd": qd, "x": np.array(x).reshape(-1, 3), "xd": np.array(xd).reshape(-1, 3)}
 
 
-@probe
+@probe(terms="problem_37.robot_ode_terms")
 def robot_ode_with_mfg(pkg, controller, table, cases):
     """``robot_ode`` as in the probe ``robot_ode``, each with the package's own ``M, f, g`` of the robot at the
     case's ``(q, qd)`` (``equations_of_motion``; None when they cannot be had)."""
@@ -98,3 +99,35 @@ def own_run(pkg, controller, table, t_end):
         rows.append(y)
     rows = np.array(rows)
     return {"t": times, "q": rows[:, :3], "qd": rows[:, 3:]}
+
+
+@probe
+def simulate_fixed(pkg, controller, table, t_end, h, scheme):
+    """The robot of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``robot_ode``
+    (the diagnosis engine calls it on the reference)."""
+    p37 = module(pkg, "problem_37")
+    tree = p37.build_dynamic_robot()
+    y0 = np.concatenate([np.asarray(table["q"][0], dtype=float), np.asarray(table["qd"][0], dtype=float)])
+    run = fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, controller), y0, t_end, h, scheme)
+    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}
+
+
+@probe
+def robot_ode_terms(pkg, controller, table, cases):
+    """``robot_ode`` of ``robot_ode_with_mfg`` split into named terms (the diagnosis engine calls it on the
+    reference): ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g) + (0, M^-1 tau)``, with the package's own ``M, f, g``
+    and the controller's torques at each case."""
+    p37 = module(pkg, "problem_37")
+    tree = p37.build_dynamic_robot()
+    terms = {"velocity": [], "f": [], "gravity": [], "torque": []}
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        q, qd = y[:3], y[3:]
+        M, f, g = (np.array(x, dtype=float) for x in p37.equations_of_motion(tree, q.copy(), qd.copy(), p37.I_GRAV))
+        tau = np.array(p37.controller_torque(controller, M, f, g, q, qd, *p37.desired_state(table, float(t))),
+                       dtype=float)
+        zero = np.zeros(3)
+        terms["velocity"].append({"ode": np.concatenate([qd, zero])})
+        for name, value in (("f", f), ("gravity", g), ("torque", tau)):
+            terms[name].append({"ode": np.concatenate([zero, np.linalg.solve(M, value)])})
+    return {"terms": terms, "extra": {}}

@@ -4,10 +4,10 @@ walker at every output time."""
 import numpy as np
 
 from . import module, probe
-from ._dynamics import energies, trace
+from ._dynamics import energies, fixed_step, trace
 
 
-@probe
+@probe(terms="problem_38.walker_ode_terms")
 def walker_ode(pkg, cases):
     """``walker_ode(t, y, build_dynamic_walker())`` for every ``(t, y)`` of ``cases``."""
     p38 = module(pkg, "problem_38")
@@ -15,7 +15,8 @@ def walker_ode(pkg, cases):
     return [np.array(p38.walker_ode(float(t), np.asarray(y, dtype=float), tree), dtype=float) for t, y in cases]
 
 
-@probe
+@probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_38.simulate_fixed",
+               "schemes": ("euler", "symplectic")})
 def simulate(pkg, t_end, n, I_grav):
     """``simulate(t_end, n)`` and the energies ``T``, ``V`` (under ``I_grav``) of the package's own walker at every
     output time."""
@@ -24,3 +25,33 @@ def simulate(pkg, t_end, n, I_grav):
     tree = p38.build_dynamic_walker()
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}
+
+
+@probe
+def simulate_fixed(pkg, t_end, n, I_grav, h, scheme):
+    """The walker of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own
+    ``walker_ode`` (the diagnosis engine calls it on the reference)."""
+    p38 = module(pkg, "problem_38")
+    tree = p38.build_dynamic_walker()
+    y0 = np.concatenate([np.asarray(p38.Q0, dtype=float), np.asarray(p38.QD0, dtype=float)])
+    run = fixed_step(lambda t, y: p38.walker_ode(t, y, tree), y0, t_end, h, scheme)
+    return {"t": run["t"], "q": run["y"][:, :2], "qd": run["y"][:, 2:]}
+
+
+@probe
+def walker_ode_terms(pkg, cases):
+    """``walker_ode`` of every case split into named terms (the diagnosis engine calls it on the reference):
+    ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g)`` with the package's own ``M, f, g``."""
+    p38 = module(pkg, "problem_38")
+    tree = p38.build_dynamic_walker()
+    terms = {"velocity": [], "f": [], "gravity": []}
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        q, qd = y[:2], y[2:]
+        M, f, g = (np.array(x, dtype=float) for x in module(pkg, "dynamics").equations_of_motion(
+            tree, q.copy(), qd.copy(), p38.I_GRAV))
+        zero = np.zeros(2)
+        terms["velocity"].append(np.concatenate([qd, zero]))
+        terms["f"].append(np.concatenate([zero, np.linalg.solve(M, f)]))
+        terms["gravity"].append(np.concatenate([zero, np.linalg.solve(M, g)]))
+    return {"terms": terms, "extra": {}}

@@ -5,17 +5,17 @@ import numpy as np
 from . import module, probe
 
 
-@probe
+@probe(args=("scalar", "scalar"))
 def inertia_aligned(pkg, I_axial, I_transverse):
     return np.array(module(pkg, "problem_39").inertia_aligned(I_axial, I_transverse), dtype=float)
 
 
-@probe
+@probe(args=("", "angle"))
 def inertia_misaligned(pkg, I1, alpha):
     return np.array(module(pkg, "problem_39").inertia_misaligned(np.asarray(I1, dtype=float), alpha), dtype=float)
 
 
-@probe
+@probe(args=("", "scalar", "scalar", "scalar", "scalar"))
 def bearing_forces(pkg, I2, omega, m, g, d):
     """``[F1, F2]`` of ``bearing_forces(I2, omega, m, g, d)``."""
     F1, F2 = module(pkg, "problem_39").bearing_forces(np.asarray(I2, dtype=float), omega, m, g, d)

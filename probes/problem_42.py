@@ -4,6 +4,7 @@ of question (b)."""
 import numpy as np
 
 from . import module, probe
+from ._dynamics import fixed_step
 
 
 def _attribute(function, name):
@@ -32,7 +33,9 @@ def _optional(value):
     return None if value is None else float(value)
 
 
-@probe
+@probe(args=("scalar", "scalar"), draw=False,
+       motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
+               "schemes": ("euler",)})
 def throw(pkg, v0, drag):
     """``throw(v0, drag)``: the apex and the landing, and the run ``t``, ``y`` (rows ``(height, velocity)``)."""
     run = module(pkg, "problem_42").throw(float(v0), float(drag))
@@ -51,3 +54,13 @@ def key(pkg):
     """``{"b"}``: the key of (b), computed by the package's reference-only function (called on the reference
     only)."""
     return {"b": int(module(pkg, "problem_42").answer_b())}
+
+
+@probe
+def throw_fixed(pkg, v0, drag, h, scheme):
+    """The ball of ``throw`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``ball_ode``, until
+    the height falls through zero (the diagnosis engine calls it on the reference)."""
+    p42 = module(pkg, "problem_42")
+    run = fixed_step(lambda t, y: p42.ball_ode(t, y, float(drag), p42.GRAVITY), [0.0, float(v0)], p42.T_MAX, h,
+                     scheme, event=lambda t, y: y[0] if t > 0 else 1.0)
+    return {"t": run["t"], "y": run["y"], "t_land": run["t_event"]}

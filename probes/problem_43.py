@@ -14,12 +14,12 @@ def _vector(x):
     return np.asarray(x, dtype=float)
 
 
-@probe
+@probe(args=("scalar", "scalar"))
 def mass_matrix(pkg, m, theta):
     return np.asarray(_p43(pkg).mass_matrix(m, theta), dtype=float)
 
 
-@probe
+@probe(args=("scalar", "scalar"))
 def forces(pkg, m, g):
     """``{"f", "g"}`` of ``forces(m, g)``."""
     f, G = _p43(pkg).forces(m, g)
@@ -43,14 +43,14 @@ def constraint_terms(pkg, q, qd, d, h):
     return {"c": c, "J": J, "sigma": _bias(p43, q, qd), "c_coordinates": coordinates, "c_path": path}
 
 
-@probe
+@probe(args=("vector", "vector", "scalar", "scalar", "scalar"))
 def constrained_system(pkg, q, qd, m, theta, g):
     """``{"A", "b"}`` of ``constrained_system(q, qd, m, theta, g)``."""
     A, b = _p43(pkg).constrained_system(_vector(q), _vector(qd), m, theta, g)
     return {"A": _vector(A), "b": _vector(b).reshape(-1)}
 
 
-@probe
+@probe(args=("vector", "vector", "scalar", "scalar", "scalar"))
 def accelerations(pkg, q, qd, m, theta, g):
     """``{"qdd", "lam"}`` of ``accelerations(q, qd, m, theta, g)``, and the package's own ``M``, ``f``, ``g``,
     ``J`` and ``sigma`` at that state."""

@@ -4,10 +4,10 @@ own constraint of problem 43 along the run)."""
 import numpy as np
 
 from . import module, probe
-from ._dynamics import trace
+from ._dynamics import fixed_step, trace
 
 
-@probe
+@probe(args=("", "scalar", "scalar"))
 def event(pkg, states, s, d):
     """The values of ``make_contact_event(s, d)`` at every state ``y = (q, qd)``, and its ``terminal`` and
     ``direction`` attributes (``None`` when missing)."""
@@ -18,7 +18,8 @@ def event(pkg, states, s, d):
             "direction": None if direction is None else float(direction)}
 
 
-@probe
+@probe(motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
+               "schemes": ("euler", "symplectic")})
 def simulate(pkg, q0, t_end, s):
     """``simulate(q0, t_end, s)`` (the sheet's bar otherwise): the run, the event, and ``c`` of the package's own
     ``problem_43.constraint`` at every output time (the first support, ``d = 0``)."""
@@ -32,3 +33,14 @@ def simulate(pkg, q0, t_end, s):
         for key in ("q_event", "qd_event"):
             out[key] = np.asarray(run[key], dtype=float).reshape(3)
     return out
+
+
+@probe
+def simulate_fixed(pkg, q0, t_end, s, h, scheme):
+    """The bar of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``bar_ode``,
+    until it hits the second support (the diagnosis engine calls it on the reference)."""
+    p44 = module(pkg, "problem_44")
+    event = p44.make_contact_event(float(s))
+    y0 = np.concatenate([np.asarray(q0, dtype=float), np.zeros(3)])
+    run = fixed_step(lambda t, y: p44.bar_ode(t, y), y0, float(t_end), h, scheme, event=event, direction=-1.0)
+    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:], "t_event": run["t_event"]}

@@ -4,7 +4,7 @@ dynamics and the whole run (with the end effector's positions from the package's
 import numpy as np
 
 from . import module, probe
-from ._dynamics import trace
+from ._dynamics import fixed_step, trace
 
 
 def _robot(pkg):
@@ -113,7 +113,8 @@ def constrained(pkg, cases):
     return out
 
 
-@probe
+@probe(motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_46.simulate_fixed",
+               "schemes": ("euler", "symplectic")})
 def simulate(pkg, table, baumgarte, t_end, wire=None):
     """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every
     output time, and at the impact the constraint Jacobian from ``constraint_terms`` (``J_plus``).  ``wire``:
@@ -134,3 +135,19 @@ def simulate(pkg, table, baumgarte, t_end, wire=None):
     out["Lam"] = np.asarray(run["Lam"], dtype=float).reshape(-1)
     out["J_plus"] = _terms(pkg, tree, out["q_plus"], out["qd_plus"], False, wire)["J"]
     return out
+
+
+@probe
+def simulate_fixed(pkg, table, baumgarte, t_end, *rest):
+    """The robot of ``simulate`` under computed torques run by a fixed-step ``scheme`` at step ``h`` with the
+    package's own ``robot_ode`` of problem 37, until the wire becomes taut (the diagnosis engine calls it on the
+    reference, with the arguments of ``simulate`` followed by ``h, scheme``: ``rest`` is ``(h, scheme)`` or
+    ``(wire, h, scheme)``; the impact and the constrained motion after it are not run)."""
+    *wire, h, scheme = rest
+    p37, p46 = module(pkg, "problem_37"), module(pkg, "problem_46")
+    tree = _robot(pkg)
+    event = p46.make_wire_event(_robot(pkg), **_wire(wire[0] if wire else None))
+    y0 = np.concatenate([np.asarray(table["q"][0], dtype=float), np.asarray(table["qd"][0], dtype=float)])
+    run = fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, "computed_torques"), y0, float(t_end), h, scheme,
+                     event=event, direction=1.0)
+    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:], "t_event": run["t_event"]}

@@ -10,7 +10,7 @@ def _p47(pkg):
     return module(pkg, "problem_47")
 
 
-@probe
+@probe(args=("vector", "scalar", "scalar", ""))
 def contact(pkg, q, x_cog, y_cog, h):
     """``c`` and ``J`` at ``q``, and ``c`` at ``q +- h e_i`` (``"c_coordinates"``)."""
     p47 = _p47(pkg)
@@ -20,7 +20,7 @@ def contact(pkg, q, x_cog, y_cog, h):
             "J": np.asarray(p47.constraint_jacobian(q, x_cog, y_cog), dtype=float), "c_coordinates": shifted}
 
 
-@probe
+@probe(args=("vector", "vector", "scalar", "scalar", "scalar", "scalar"))
 def impact(pkg, q_minus, qd_minus, m, theta, x_cog, y_cog):
     """``{"q_plus", "qd_plus", "Lam"}`` of ``plastic_impact`` and the package's own ``J`` at ``q_minus``."""
     p47 = _p47(pkg)
@@ -31,12 +31,12 @@ def impact(pkg, q_minus, qd_minus, m, theta, x_cog, y_cog):
             "J": np.asarray(p47.constraint_jacobian(q_minus, x_cog, y_cog), dtype=float)}
 
 
-@probe
+@probe(args=("angle", "scalar", "scalar", "scalar", "scalar", "scalar"))
 def impulse(pkg, phi, yd_minus, m, theta, x_cog, y_cog):
     return float(_p47(pkg).impulse(phi, yd_minus, m, theta, x_cog, y_cog))
 
 
-@probe
+@probe(args=("scalar", "scalar", "scalar", "scalar", "scalar", ""))
 def maximum(pkg, yd_minus, m, theta, x_cog, y_cog, delta):
     """``phi_hat`` and ``Lam_max``, and the package's own ``impulse`` at ``phi_hat`` and at ``phi_hat -+ delta``."""
     p47 = _p47(pkg)
