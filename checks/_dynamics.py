@@ -398,9 +398,11 @@ def run_array(run, key, shape, what):
     return as_array(run[key], f"{key} of {what}", shape)
 
 
-def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note=""):
+def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", roots=None):
     """Fail at the first output time where one of ``keys`` of the run ``got`` leaves the reference run
-    ``expected`` (tolerance per key in ``tols``); the message names the time and shows both states."""
+    ``expected`` (tolerance per key in ``tols``); the message names the time and shows both states.  The failure
+    carries the whole run as evidence for the diagnosis engine (``roots``: the probes' whole results, the
+    student's and the reference's, when ``got`` and ``expected`` are parts of them)."""
     t = np.asarray(expected["t"], dtype=float)
     run_array(got, "t", t.shape, what)
     mine = {key: run_array(got, key, np.shape(expected[key]), what) for key in keys}
@@ -414,7 +416,11 @@ def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note=""):
                      note=f"Your run first leaves the reference's at t = {t[i]:.6g} s (output {i + 1} of {t.size}); "
                           f"up to there it agrees.{(' ' + note) if note else ''}")
     except CheckFailure as exc:
-        raise CheckFailure(exc.message, hint, diagnosis) from None
+        from grader.diagnosis import Evidence
+
+        mine_root, our_root = roots if roots is not None else (mine[key], expected[key])
+        evidence = Evidence(mine[key], np.asarray(expected[key], dtype=float), tols[key], key, mine_root, our_root)
+        raise CheckFailure(exc.message, hint, diagnosis, evidence=evidence) from None
 
 
 def subsample(t, y, n=250):

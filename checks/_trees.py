@@ -177,7 +177,8 @@ def compare_fixed(ctx, probe, args, compare, describe=None):
     except CheckFailure as exc:
         first, _, rest = exc.message.partition("\n")
         shown = (describe or describe_case)(args)
-        raise CheckFailure(f"{first}\non the fixed case {shown}\n{rest}", exc.hint, exc.diagnosis) from None
+        raise CheckFailure(f"{first}\non the fixed case {shown}\n{rest}", exc.hint, exc.diagnosis, exc.candidates,
+                           exc.evidence) from None
 
 
 def compare_trees(ctx, probe, kinds, compare, motion=True, masses=False, extra=(), examples=15, name="the tree"):
@@ -296,19 +297,19 @@ MODELS = (
     Model("coordinate_order", "The virtual 3-DOF joint's coordinates are q = (dx, dy, gamma): A_DpDs = R3(q[2]), "
           "Dp_r_DpDs = (q[0], q[1], 0), S = [e1 e2 0], R = [0 0 e3] (Virtual3DOFJoint, problem 34).",
           joint="virtual_order"),
-    Model("missing_coriolis", f"The Coriolis term 2 skew(Dp_omega) r_rel_dot is missing: {_DS_A} (Joint.successor_motion, "
-          "problem 31).", motion=(("coriolis", 0.0),)),
+    Model("missing_coriolis", f"The Coriolis term 2 skew(Dp_omega) r_rel_dot is missing: {_DS_A} "
+          "(Joint.successor_motion, problem 31).", motion=(("coriolis", 0.0),)),
     Model("coriolis_factor", f"The Coriolis term needs the factor 2: {_DS_A}. One skew(Dp_omega) r_rel_dot comes from "
           "differentiating r_rel in the rotating frame Dp, the other from differentiating skew(Dp_omega) r_rel "
           "(Joint.successor_motion, problem 31).", motion=(("coriolis", 1.0),)),
     Model("transport", "The angular acceleration misses skew(Dp_omega) omega_rel: the relative angular velocity "
           "turns with Dp, Ds_omegaDot = A_DpDs.T (Dp_omegaDot + omega_rel_dot + skew(Dp_omega) omega_rel) "
           "(Joint.successor_motion, problem 31).", motion=(("transport", 0.0),)),
-    Model("missing_centripetal", "Moving the predecessor's acceleration to Dp misses the centripetal term: Dp_a = A_PDp.T "
-          "(P_a + (skew(P_omegaDot) + skew(P_omega)^2) P_r_PDp) (Joint.successor_motion, problem 31).",
+    Model("missing_centripetal", "Moving the predecessor's acceleration to Dp misses the centripetal term: "
+          "Dp_a = A_PDp.T (P_a + (skew(P_omegaDot) + skew(P_omega)^2) P_r_PDp) (Joint.successor_motion, problem 31).",
           motion=(("centripetal_dp", 0.0),)),
-    Model("missing_centripetal", "Moving the acceleration from Ds to the body misses the centripetal term: S_a = A_SDs Ds_a "
-          "- (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs (Joint.successor_motion, problem 31).",
+    Model("missing_centripetal", "Moving the acceleration from Ds to the body misses the centripetal term: "
+          "S_a = A_SDs Ds_a - (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs (Joint.successor_motion, problem 31).",
           motion=(("centripetal_ds", 0.0),)),
     Model("offset_sign", "S_r_SDs enters the velocities with a minus sign (it points from S to Ds): S_v = A_SDs Ds_v "
           "- skew(S_omega) S_r_SDs, S_a = A_SDs Ds_a - (skew(S_omegaDot) + skew(S_omega)^2) S_r_SDs and S_J_S = ... "
@@ -409,7 +410,7 @@ def _with_hint(value, expected, name, tol, mistakes, hint, **kwargs):
     except CheckFailure as exc:
         if exc.diagnosis or exc.hint or not hint:
             raise
-        raise CheckFailure(exc.message, hint) from None
+        raise CheckFailure(exc.message, hint, "", exc.candidates, exc.evidence) from None
 
 
 def _where(expected, k, quantity):

@@ -237,6 +237,11 @@ def check_driven_model(ctx):
         fail(f"{what} has no actuator: nothing drives joint 1.",
              'A stiff servo drives a joint kinematically: <intvelocity joint="joint1" kp="1000"/>, with its control '
              "(the rate) and the start in motion in a keyframe.", "no_actuator")
+    driven = sorted({int(actuator["joint"]) for actuator in desc["actuators"]})
+    if driven != [0]:
+        which = ", ".join(f"joint {j + 1}" if j >= 0 else "no joint" for j in driven)
+        fail(f"{what}: its actuator drives {which}; the sheet drives joint 1 (q1 = t) and leaves joint 2 free.",
+             'Attach the servo to the first hinge: <intvelocity joint="joint1" kp="1000"/>.', "actuator_joint")
 
 
 @check(2, title="3(c): joint 1 moves at the prescribed rate, q1 = t, from the start (1 rad/s at t = 0)", stage=STAGE_VALUES,

@@ -169,7 +169,7 @@ def check_natural_dynamics(ctx):
     except CheckFailure as exc:
         first, _, rest = exc.message.partition("\n")
         raise CheckFailure(f"{first}\non the fixed state {describe_state(state)}\n{rest}", exc.hint,
-                           exc.diagnosis) from None
+                           exc.diagnosis, exc.candidates, exc.evidence) from None
     ctx.compare_random("problem_15.accelerations", st.tuples(STATES), name="the accelerations", tol=EXACT,
                        compare=compare, examples=15, describe=lambda args: describe_state(args[0]))
 
@@ -300,7 +300,7 @@ def check_random_runs(ctx):
     except CheckFailure as exc:
         first, _, rest = exc.message.partition("\n")
         raise CheckFailure(f"{first}\nfrom the fixed state {describe_state(GENERIC_STATE)}, dt = 0.01, 5 steps\n"
-                           f"{rest}", exc.hint, exc.diagnosis) from None
+                           f"{rest}", exc.hint, exc.diagnosis, exc.candidates, exc.evidence) from None
     ctx.compare_random(
         "problem_15.simulate", st.tuples(STATES, st.floats(1e-3, 0.05, **FINITE), st.integers(1, 20)),
         name="the state", tol=EXACT, compare=compare, examples=10,

@@ -70,10 +70,6 @@ T_RUN = {"computed_torques": T_END, "gravity_compensation": 0.75, "pd": 0.75}
 SIMULATION_TIMEOUT = 30.0
 _SEEDS = st.integers(0, 2**32 - 1)
 
-INTEGRATION_HINT = ("Your right-hand side robot_ode agrees with the reference at three states of the reference's "
-                    "run, so the integration loses accuracy: use scipy.integrate.solve_ivp (any method at its default "
-                    "tolerances is accurate enough); a fixed-step Euler loop needs a step far below the 0.01 s of the "
-                    "table (the arm has a fast mode of about 110 1/s under D = 50).")
 INITIAL_HINT = ("The simulation starts on the desired trajectory at rest: y0 = (q_des(0), qd_des(0)), the first row "
                 "of the table passed to simulate.")
 ODE_HINT = ("Your robot_ode differs from the reference's at three states of the reference's run (the check of "
@@ -447,24 +443,32 @@ def _judged_on_own_model(ctx, controller, table, got, expected, probes):
 
 
 def _diagnosis(ctx, controller, got, expected, probes, ode):
-    """``(hint, diagnosis)`` of a run that goes wrong: a wrong start, a right-hand side that differs from the
-    reference's at three states of the reference's run, or else the integration."""
+    """``(hint, diagnosis)`` of a run that goes wrong where the run shows it: a wrong start, or a right-hand side
+    that differs from the reference's at three states of the reference's run; else None (the failure says where the
+    run leaves the reference's, and the diagnosis engine names a cause if it finds one)."""
     start = np.concatenate([expected["q"][0], expected["qd"][0]])
     if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
         return INITIAL_HINT, "initial_state"
     if not close(ctx.student("problem_37.robot_ode", controller, _table(ctx), probes), ode, EXACT):
-        return ODE_HINT, "ode"
-    return INTEGRATION_HINT, "integration"
+        return ODE_HINT, "wrong_ode"
+    return None
 
 
 def _diagnosed(ctx, controller, got, expected, probes, ode, check):
-    """Run ``check()``; a failure gets the diagnosis of the run."""
+    """Run ``check()``; a failure gets the diagnosis of the run, when the run shows one."""
     try:
         check()
     except CheckFailure as exc:
-        hint, diagnosis = _diagnosis(ctx, controller, got, expected, probes, ode)
-        raise CheckFailure(exc.message, hint if diagnosis != "integration" or not exc.hint else exc.hint,
-                           diagnosis if diagnosis != "integration" or not exc.diagnosis else exc.diagnosis) from None
+        found = _diagnosis(ctx, controller, got, expected, probes, ode)
+        if found is not None:
+            raise CheckFailure(exc.message, *found, evidence=exc.evidence, explained=True) from None
+        if exc.diagnosis:
+            raise
+        from grader.diagnosis import Evidence  # the whole run, for the diagnosis engine
+
+        run = Evidence(np.asarray(got["q"], dtype=float), np.asarray(expected["q"], dtype=float), BAND["q"], "q",
+                       got, expected)
+        raise CheckFailure(exc.message, exc.hint, "", exc.candidates, run) from None
 
 
 def _follow_reference(got, expected, controller):

@@ -115,7 +115,8 @@ def _force_mistakes(I2, omega, m, g, d, expected):
     weight = np.array([0.0, m * g / 2, 0.0])
     dynamic1, dynamic2 = F1 - weight, F2 - weight
     return [
-        ("missing_gravity", [dynamic1, dynamic2], "The bearings carry the rotor's weight as well: F1 + F2 = (0, m g, 0)."),
+        ("missing_gravity", [dynamic1, dynamic2], "The bearings carry the rotor's weight as well: F1 + F2 = "
+         "(0, m g, 0)."),
         ("missing_gyroscopic", [weight, weight], "The misaligned rotor needs a moment to keep turning about the fixed "
          "axis: omega x (I2 omega) (omegaDot = 0), carried by the bearings as a couple."),
         ("gyroscopic_sign", [weight - dynamic1, weight - dynamic2], "The moment the bearings exert is "
