@@ -60,7 +60,8 @@ def test_could_be_x_or_y_has_the_families_of_its_names():
     assert family_of("transpose or angle_sign") == "transpose or sign"
     assert family_of("gravity_sign or sign_flip") == "sign"  # one family named once
     assert families_of("wrong_frame or transpose or omega_frame") == ("frame", "transpose")
-    assert student_phrase("transpose or degrees") == f"{DIAGNOSES['transpose'].student} or {DIAGNOSES['degrees'].student}"
+    both = f"{DIAGNOSES['transpose'].student} or {DIAGNOSES['degrees'].student}"
+    assert student_phrase("transpose or degrees") == both
     assert summary_phrase("transpose") == DIAGNOSES["transpose"].summary
     assert is_known("transpose or degrees") and not is_known("transpose or sideways")
     with pytest.raises(KeyError):
