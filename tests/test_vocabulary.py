@@ -162,7 +162,8 @@ def test_every_literal_diagnosis_in_the_checks_is_in_the_table():
 
 
 def _literal_collection(node, scopes):
-    """A dict, list or tuple literal that ``node`` is or names (in the function's scope or the module's)."""
+    """A dict, list or tuple literal that ``node`` is or names (in the function's scope or the module's; a
+    parameter by its default value)."""
     if isinstance(node, (ast.Dict, ast.List, ast.Tuple)):
         return node
     if isinstance(node, ast.Name):
@@ -172,6 +173,15 @@ def _literal_collection(node, scopes):
                         isinstance(target, ast.Name) and target.id == node.id for target in statement.targets):
                     if isinstance(statement.value, (ast.Dict, ast.List, ast.Tuple)):
                         return statement.value
+        for scope in scopes:
+            for function in ast.walk(scope):
+                if not isinstance(function, ast.FunctionDef):
+                    continue
+                positional = function.args.args[len(function.args.args) - len(function.args.defaults):]
+                for parameter, default in zip([*positional, *function.args.kwonlyargs],
+                                              [*function.args.defaults, *function.args.kw_defaults]):
+                    if parameter.arg == node.id and default is not None and default is not node:
+                        return _literal_collection(default, scopes)
     return None
 
 
