@@ -243,17 +243,17 @@ def _within(got, expected, tol: Tol):
 _RECORDING = threading.local()
 
 
-def _compared(expected) -> None:
+def _compared(expected, tol) -> None:
     ctx = getattr(_RECORDING, "ctx", None)
     if ctx is not None:
         from .diagnosis import note_comparison
 
-        note_comparison(ctx, expected)
+        note_comparison(ctx, expected, tol)
 
 
 def close(got, expected, tol: Tol) -> bool:
     """True when ``got`` has the shape of ``expected`` and matches it entrywise within ``tol``."""
-    _compared(expected)
+    _compared(expected, tol)
     try:
         got = np.asarray(got, dtype=float)
         expected = np.asarray(expected, dtype=float)
@@ -293,7 +293,7 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
     that matches, when several do).  The failure carries the comparison as evidence for the diagnosis engine,
     which names a cause when no known mistake matches."""
     raw_got, raw_expected = got, expected
-    _compared(raw_expected)
+    _compared(raw_expected, tol)
     expected = np.asarray(expected, dtype=float)
     _transposed(got, expected, name, tol)
     got = as_array(got, name, expected.shape)

@@ -308,10 +308,10 @@ class Context:
         failure = _narrowed(shown, _generic(failures)[1])
         if not isinstance(failure, CheckFailure) or failure.diagnosis or failure.explained:
             return failure
-        first = shown.message.partition("\n")[0]
+        first = _property(shown)
         others = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
                   if exc is not shown and isinstance(exc, CheckFailure) and exc.evidence is not None
-                  and exc.message.partition("\n")[0] == first]
+                  and _property(exc) == first]
         if failure.evidence is None or not others:
             return CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates,
                                 failure.evidence, explained=True)
@@ -465,6 +465,14 @@ def _narrowed(shown, other):
     common = tuple(mistake for mistake in shown.candidates if mistake.name in names)
     hint, diagnosis = diagnose(common)
     return CheckFailure(shown.message, hint, diagnosis, common, shown.evidence)
+
+
+def _property(failure: CheckFailure) -> str:
+    """The property a failure is about: the first line of its message without the numbers in it (a comparison's
+    name often shows its input, as in ``walker_ode at y = [...]``)."""
+    import re
+
+    return re.sub(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?", "#", failure.message.partition("\n")[0])
 
 
 def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:

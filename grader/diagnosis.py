@@ -19,10 +19,10 @@ The grammar:
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
-  wrong row, a wrong initial state, an event found late or early, an error that halves with the step.
+  wrong row, a wrong initial state, an event found late or early, an error that grows with the step.
 
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
-rotation=..., motion=..., constants=..., step=...)``); the reference's values come through the oracle (the
+rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
 grading context), never from ``reference`` itself.  Every reference call the engine may need is a function of the
 probe's arguments alone, so the student kit's answer key holds them: while the key is recorded, every comparison
 of a declared probe makes them (``prepare``).
@@ -63,7 +63,7 @@ __all__ = [
 DISTINCT = 10.0
 #: the reference calls one explanation may make (inputs transformed, terms, a second input and its variants)
 MAX_REFERENCE_CALLS = 80
-#: the student's calls one explanation may make (a second input, an argument changed, a smaller step)
+#: the student's calls one explanation may make (a second input, an argument changed)
 MAX_STUDENT_CALLS = 6
 #: how long one of the engine's calls of the student's code may take [s]
 STUDENT_TIMEOUT = 5.0
@@ -95,7 +95,6 @@ class Declaration:
     rotation: object = None
     motion: dict = field(default_factory=dict)
     constants: str = ""
-    step: tuple = ()
     draw: bool = True
 
 
@@ -126,7 +125,6 @@ def declaration(probe: str) -> Declaration | None:
         rotation=declared.get("rotation"),
         motion=dict(declared.get("motion", {})),
         constants=declared.get("constants", ""),
-        step=tuple(declared.get("step", ())),
         draw=bool(declared.get("draw", True)),
     )
     _DECLARATIONS[probe] = found
@@ -298,9 +296,10 @@ def _outputs(E: np.ndarray, constants: dict, rotation) -> list:
                      "degrees once too often)"), E * np.pi / 180.0))
     for cname, c in constants.items():
         if abs(c) > 1e-12 and not any(abs(abs(c) - v) < 1e-9 for v in (1.0, 2.0, 0.5)):
+            mass = cname in ("m", "mass")  # a value without its mass: the vocabulary's missing_mass
             add((_Hypothesis(f"const:*{cname}", "constant_factor", 2,
                              f"your value is the expected one times {cname} = {c:.6g}"), E * c))
-            add((_Hypothesis(f"const:/{cname}", "constant_factor", 2,
+            add((_Hypothesis(f"const:/{cname}", "missing_mass" if mass else "constant_factor", 2,
                              f"your value is the expected one divided by {cname} = {c:.6g}"), E / c))
     if E.ndim == 2 and E.size <= ENTRYWISE:
         rows, cols = E.shape
@@ -582,16 +581,19 @@ class _Scene:
         return [int(x) for x in drawn]
 
 
-def _constants(scene: _Scene, decl: Declaration) -> dict:
-    if not decl.constants:
-        return {}
-    value = scene.reference(decl.constants, ())
-    if not isinstance(value, dict):
-        return {}
+def _constants(scene: _Scene, decl: Declaration, args: tuple) -> dict:
+    """The problem's named constants a value may be scaled by: the declared scalar arguments (a mass, g, a length:
+    by their names) and the numbers of the declared probe of constants."""
     found = {}
-    for key, item in value.items():
-        if isinstance(item, (int, float)) and not isinstance(item, bool) and np.isfinite(item):
-            found[key] = float(item)
+    for path, role, value in _leaves(decl.args, list(args)):
+        array = _array(value)
+        if role == "scalar" and len(path) == 1 and array is not None and array.ndim == 0:
+            found[_label(decl, path)] = float(array)
+    if decl.constants:
+        value = scene.reference(decl.constants, ())
+        for key, item in (value.items() if isinstance(value, dict) else ()):
+            if isinstance(item, (int, float)) and not isinstance(item, bool) and np.isfinite(item):
+                found.setdefault(key, float(item))
     return found
 
 
@@ -992,9 +994,11 @@ def _equal_args(a, b) -> bool:
 
 
 def _candidates(decl: Declaration, args) -> list:
-    """The arguments the test of an ignored argument changes (the first four declared ones at the top level)."""
+    """The arguments the test of an ignored argument changes: the first four declared numbers (angles and scalars:
+    a constant written in their place; a vector or a rotation that changes nothing points to a term left out,
+    which the other slips name)."""
     return [(path, role, value) for path, role, value in _leaves(decl.args, list(args))
-            if role in ("angle", "angles", "vector", "rotation", "scalar") and len(path) == 1][:4]
+            if role in ("angle", "scalar") and len(path) == 1][:4]
 
 
 def _perturbations(decl: Declaration, args) -> list:
@@ -1093,7 +1097,7 @@ def _explain(scene: _Scene, evidences: list) -> Finding | None:
     if first.source is None:  # a value derived from the student's own: the engine names no cause for it
         return _finding(found, "here")
     decl = declaration(first.source.probe)
-    constants = _constants(scene, decl) if decl is not None else {}
+    constants = _constants(scene, decl, first.source.args) if decl is not None else {}
     if len(evidences) == 1 and decl is not None and not decl.motion:
         second = _second_input(scene, first)
         if second is not None:
@@ -1106,7 +1110,7 @@ def _explain(scene: _Scene, evidences: list) -> Finding | None:
     if all(_same_shape(e) for e in evidences) and not (decl is not None and decl.motion):
         found += _precision(first.got, first.expected, first.tol)
     if not found or min(h.cost for h in found) >= 3:
-        found += _ignored(scene, evidences[-1])
+        found += _ignored(scene, evidences[0])
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
 
 
@@ -1191,13 +1195,14 @@ def recording(ctx) -> None:
     _RECORDING.ctx = ctx
 
 
-def note_comparison(ctx, expected) -> None:
-    """A comparison with ``expected`` is made while the key is recorded: prepare the engine's calls for the probe
-    call it came from (only the calls of declared probes are searched)."""
+def note_comparison(ctx, expected, tol: Tol | None = None) -> None:
+    """A comparison with ``expected`` (within ``tol``) is made while the key is recorded: prepare the engine's calls
+    for the probe call it came from, found as ``explain`` finds it (only the calls of declared probes are
+    searched)."""
     declared = [entry for entry in getattr(ctx, "calls", ()) if declaration(entry[1]) is not None]
     if not declared:
         return
-    source = locate(declared, expected, "reference")
+    source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None)
     if source is None:
         return
     seen = ctx.__dict__.setdefault("_engine_prepared", set())
@@ -1234,7 +1239,7 @@ def prepare(ctx, source: Source) -> None:
         return
     scene = _Scene(ctx)
     try:
-        _constants(scene, decl)
+        _constants(scene, decl, source.args)
         for _, args in _inputs(decl, source.args):
             scene.reference(source.probe, args)
         for args in _perturbations(decl, source.args):
