@@ -213,7 +213,7 @@ def trace(run, n, what):
 
 
 @probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
-               "schemes": ("euler", "symplectic")})
+               "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02)})
 def pendulum_motion(pkg, t_end, I_grav):
     """Problem 24: the package's ``problem_24.simulate(t_end)`` and, at every output time, the energies ``T`` and
     ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
