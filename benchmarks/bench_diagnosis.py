@@ -1,6 +1,6 @@
 """What the diagnosis engine costs a grading: nothing on a passing one, at most 10% on a failing one.
 
-    python benchmarks/bench_diagnosis.py [--runs 5]
+    python benchmarks/bench_diagnosis.py [--runs 5] [--cases TEXT ...]
 
 Grades, in one process and as ``grade batch`` grades (a worker forked from a warm slot, the live reference), the
 reference on a few problems (every check passes: the engine is never asked) and mistakes that fail checks no
@@ -90,6 +90,8 @@ def timed(grade, problem, submission, on: bool) -> tuple[float, float, int]:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=5, help="timed gradings of each case, with and without")
+    parser.add_argument("--cases", nargs="*", default=None,
+                        help="only the cases whose label contains one of these texts (default: all)")
     args = parser.parse_args()
     from grader import grade_problem
     from grader.sandbox import Limits, sandbox_mode
@@ -97,6 +99,11 @@ def main() -> int:
 
     instrument()
     passing, failing = cases()
+    if args.cases:
+        passing, failing = ([c for c in items if any(text in c[0] for text in args.cases)]
+                            for items in (passing, failing))
+        if not passing or not failing:
+            parser.error("--cases must keep a passing and a failing case")
     problems = sorted({p for _, p, _ in passing + failing})
     print(f"{'case':<44}{'on':>9}{'off':>9}{'on/off':>8}{'engine':>9}{'share':>7}{'asked':>6}")
     sums, shares = {}, {}

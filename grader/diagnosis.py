@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from checks._diagnoses import DIAGNOSES, TERMS
+from checks._diagnoses import DIAGNOSES
 
 from .checking import Tol, format_array
 from .errors import GraderFault, StudentFault
@@ -489,8 +489,9 @@ def _perturbed(value):
         x = float(array)
         return x * 1.37 + 0.29
     if array.shape == (3, 3) and np.max(np.abs(array.T @ array - np.eye(3))) < 1e-6:
-        c, s = np.cos(0.61), np.sin(0.61)
-        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) @ array
+        turn = np.eye(3)  # a turn by 0.61 rad about the 3-axis
+        turn[:2, :2] = [[np.cos(0.61), -np.sin(0.61)], [np.sin(0.61), np.cos(0.61)]]
+        return turn @ array
     pattern = np.linspace(0.31, 0.97, array.size).reshape(array.shape)
     changed = array * 1.21 + pattern
     return changed.tolist() if isinstance(value, list) else changed
@@ -658,11 +659,15 @@ def _term_hypotheses(inputs: list) -> list:
     the inputs and checked entrywise within the tolerance; several when the inputs cannot tell them apart."""
     if any(one.terms is None for one in inputs):
         return []
-    present = sorted(set.intersection(*(set(one.terms) for one in inputs)))
-    extra = sorted(set.intersection(*(set(one.extras or {}) for one in inputs)))
+    present = sorted(set().union(*(set(one.terms) for one in inputs)))
+    extra = sorted(set().union(*(set(one.extras or {}) for one in inputs)))
     columns = [("term", t) for t in present] + [("extra", t) for t in extra]
     if not columns or len(columns) > 8:
         return []
+    for one in inputs:  # a term that is zero on an input (a flag off there, say) is a column of zeros
+        zero = np.zeros_like(one.evidence.expected)
+        one.terms = {t: one.terms.get(t, zero) for t in present}
+        one.extras = {t: (one.extras or {}).get(t, zero) for t in extra}
     rows, rhs = [], []
     for one in inputs:
         ev = one.evidence
@@ -701,13 +706,13 @@ def _term_hypotheses(inputs: list) -> list:
         for c, (kind, term) in zip(changes, columns):
             if not c:
                 continue
-            words = TERMS.get(term, term)
+            fit = "a least-squares fit of your values on the reference's terms over the inputs"
             if kind == "term" and c == -1.0:
-                name, detail = f"missing_{term}", f"{words} is missing"
+                name, detail = f"missing_{term}", f"{fit} leaves it out and reproduces them"
             elif kind == "term":
-                name, detail = f"{term}_sign", f"{words} has the wrong sign"
+                name, detail = f"{term}_sign", f"{fit} turns it around and reproduces them"
             else:
-                name, detail = f"extra_{term}", f"{words} is added where it does not belong"
+                name, detail = f"extra_{term}", f"{fit} adds it and reproduces them"
             if name in DIAGNOSES:
                 found.append(_Hypothesis(f"term:{kind}:{term}:{c}", name, 1 + fewest, detail))
     return found

@@ -29,6 +29,7 @@ __all__ = [
     "trace",
     "pendulum_motion",
     "fixed_step",
+    "fixed_run",
     "pendulum_motion_fixed",
     "mfg_terms",
 ]
@@ -224,6 +225,13 @@ def pendulum_motion(pkg, t_end, I_grav):
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}
 
 
+def fixed_run(run, n):
+    """``{"t", "q", "qd"}`` of a ``fixed_step`` run of ``y = (q, qd)`` with ``n`` coordinates (and its
+    ``t_event``)."""
+    times, states = run["t"], run["y"]
+    return {"t": times, "q": states[:, :n], "qd": states[:, n:], "t_event": run["t_event"]}
+
+
 def fixed_step(fun, y0, t_end, h, scheme, event=None, direction=-1.0):
     """A run of ``dy/dt = fun(t, y)`` from ``y0`` at ``t = 0`` to ``t_end`` with a fixed step ``h``: ``scheme``
     "euler" (explicit Euler) or "symplectic" (semi-implicit Euler on ``y = (q, qd)``: ``qd`` first, then ``q`` with
@@ -263,5 +271,4 @@ def pendulum_motion_fixed(pkg, t_end, I_grav, h, scheme):
     p24 = module(pkg, "problem_24")
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     y0 = np.concatenate([np.asarray(p24.Q, dtype=float), np.zeros(3)])
-    run = fixed_step(lambda t, y: p24.pendulum_ode(t, y, tree), y0, t_end, h, scheme)
-    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}
+    return fixed_run(fixed_step(lambda t, y: p24.pendulum_ode(t, y, tree), y0, t_end, h, scheme), 3)

@@ -4,7 +4,7 @@ simulation under each controller (with the end effector's motion from the packag
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_step, trace
+from ._dynamics import fixed_run, fixed_step, trace
 
 TABLE = ("t", "x", "xd", "q", "qd", "qdd")
 
@@ -108,8 +108,7 @@ def simulate_fixed(pkg, controller, table, t_end, h, scheme):
     p37 = module(pkg, "problem_37")
     tree = p37.build_dynamic_robot()
     y0 = np.concatenate([np.asarray(table["q"][0], dtype=float), np.asarray(table["qd"][0], dtype=float)])
-    run = fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, controller), y0, t_end, h, scheme)
-    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}
+    return fixed_run(fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, controller), y0, t_end, h, scheme), 3)
 
 
 @probe

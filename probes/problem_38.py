@@ -4,7 +4,7 @@ walker at every output time."""
 import numpy as np
 
 from . import module, probe
-from ._dynamics import energies, fixed_step, trace
+from ._dynamics import energies, fixed_run, fixed_step, trace
 
 
 @probe(terms="problem_38.walker_ode_terms")
@@ -34,8 +34,7 @@ def simulate_fixed(pkg, t_end, n, I_grav, h, scheme):
     p38 = module(pkg, "problem_38")
     tree = p38.build_dynamic_walker()
     y0 = np.concatenate([np.asarray(p38.Q0, dtype=float), np.asarray(p38.QD0, dtype=float)])
-    run = fixed_step(lambda t, y: p38.walker_ode(t, y, tree), y0, t_end, h, scheme)
-    return {"t": run["t"], "q": run["y"][:, :2], "qd": run["y"][:, 2:]}
+    return fixed_run(fixed_step(lambda t, y: p38.walker_ode(t, y, tree), y0, t_end, h, scheme), 2)
 
 
 @probe

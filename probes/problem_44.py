@@ -4,7 +4,7 @@ own constraint of problem 43 along the run)."""
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_step, trace
+from ._dynamics import fixed_run, fixed_step, trace
 
 
 @probe(args=("", "scalar", "scalar"))
@@ -41,6 +41,6 @@ def simulate_fixed(pkg, q0, t_end, s, h, scheme):
     until it hits the second support (the diagnosis engine calls it on the reference)."""
     p44 = module(pkg, "problem_44")
     event = p44.make_contact_event(float(s))
-    y0 = np.concatenate([np.asarray(q0, dtype=float), np.zeros(3)])
-    run = fixed_step(lambda t, y: p44.bar_ode(t, y), y0, float(t_end), h, scheme, event=event, direction=-1.0)
-    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:], "t_event": run["t_event"]}
+    at_rest = np.append(np.asarray(q0, dtype=float), [0.0, 0.0, 0.0])
+    return fixed_run(fixed_step(lambda t, y: p44.bar_ode(t, y), at_rest, float(t_end), h, scheme, event=event,
+                                direction=-1.0), 3)

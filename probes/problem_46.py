@@ -4,7 +4,7 @@ dynamics and the whole run (with the end effector's positions from the package's
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_step, trace
+from ._dynamics import fixed_run, fixed_step, trace
 
 
 def _robot(pkg):
@@ -39,17 +39,17 @@ def _terms(pkg, tree, q, qd, baumgarte, wire=None):
     return {"J": _matrix(J, 1), "sigma": np.asarray(sigma, dtype=float).reshape(-1)}
 
 
-@probe
+@probe(terms="problem_46.constraint_terms_split")
 def constraint_terms(pkg, cases):
     """``{"J", "sigma"}`` of ``constraint_terms`` for every ``(q, qd, baumgarte)``."""
     tree = _robot(pkg)
     return [_terms(pkg, tree, q, qd, baumgarte) for q, qd, baumgarte in cases]
 
 
-@probe
-def constraint_mistakes(pkg, q, qd, baumgarte):
-    """``{mistake: {"J", "sigma"}}``: the constraint terms that known mistakes give, from the package's kinematics
-    and the sheet's data in its ``problem_46`` (called on the reference only)."""
+def _wire_parts(pkg, q, qd):
+    """The wire's pieces at ``(q, qd)`` from the package's kinematics and the sheet's data in its ``problem_46``:
+    ``J``, the bias ``-dir.T A_IE B_a_E``, the centripetal part, the Baumgarte stabilisation, and the end effector's
+    frame, Jacobian, acceleration and direction (called on the reference only)."""
     p46 = module(pkg, "problem_46")
     tree = _robot(pkg)
     E = tree.forward_kinematics(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), np.zeros(3))["end_effector"]
@@ -59,10 +59,38 @@ def constraint_mistakes(pkg, q, qd, baumgarte):
     P_B, D_B = float(p46.P_BAUMGARTE), float(p46.D_BAUMGARTE)
     distance = np.linalg.norm(I_r_E - hook)
     direction = (I_r_E - hook) / distance
-    J = -(direction @ A_IE @ J_S).reshape(1, 3)
-    bias = -direction @ A_IE @ a_E
-    centripetal = -np.linalg.norm(np.cross(direction, I_v_E)) ** 2 / length
-    stabilisation = P_B * (length - distance) + D_B * (0.0 - direction @ I_v_E) if baumgarte else 0.0
+    return {"J": -(direction @ A_IE @ J_S).reshape(1, 3), "bias": -direction @ A_IE @ a_E,
+            "centripetal": -np.linalg.norm(np.cross(direction, I_v_E)) ** 2 / length,
+            "stabilisation": P_B * (length - distance) + D_B * (0.0 - direction @ I_v_E),
+            "J_S": J_S, "a_E": a_E, "direction": direction}
+
+
+@probe
+def constraint_terms_split(pkg, cases):
+    """``sigma`` of ``constraint_terms`` for every ``(q, qd, baumgarte)`` split into named terms (the diagnosis
+    engine calls it on the reference): the bias, the centripetal part and, with ``baumgarte``, the stabilisation;
+    without it the stabilisation is a term that does not belong."""
+    terms = {"bias": [], "centripetal": [], "baumgarte": []}
+    extra = {"baumgarte": []}
+    for q, qd, baumgarte in cases:
+        wire = _wire_parts(pkg, q, qd)
+        zero = {"J": np.zeros((1, 3)), "sigma": np.zeros(1)}
+        terms["bias"].append({"sigma": np.array([wire["bias"]])})
+        terms["centripetal"].append({"sigma": np.array([wire["centripetal"]])})
+        stabilisation = {"sigma": np.array([wire["stabilisation"]])}
+        terms["baumgarte"].append(stabilisation if baumgarte else zero)
+        extra["baumgarte"].append(zero if baumgarte else stabilisation)
+    return {"terms": terms, "extra": extra}
+
+
+@probe
+def constraint_mistakes(pkg, q, qd, baumgarte):
+    """``{mistake: {"J", "sigma"}}``: the constraint terms that known mistakes give, from the package's kinematics
+    and the sheet's data in its ``problem_46`` (called on the reference only)."""
+    wire = _wire_parts(pkg, q, qd)
+    J, bias, centripetal, direction = wire["J"], wire["bias"], wire["centripetal"], wire["direction"]
+    J_S, a_E = wire["J_S"], wire["a_E"]
+    stabilisation = wire["stabilisation"] if baumgarte else 0.0
 
     def terms(J_, sigma_):
         return {"J": J_, "sigma": np.array([sigma_])}
@@ -148,6 +176,5 @@ def simulate_fixed(pkg, table, baumgarte, t_end, *rest):
     tree = _robot(pkg)
     event = p46.make_wire_event(_robot(pkg), **_wire(wire[0] if wire else None))
     y0 = np.concatenate([np.asarray(table["q"][0], dtype=float), np.asarray(table["qd"][0], dtype=float)])
-    run = fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, "computed_torques"), y0, float(t_end), h, scheme,
-                     event=event, direction=1.0)
-    return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:], "t_event": run["t_event"]}
+    return fixed_run(fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, "computed_torques"), y0, float(t_end),
+                                h, scheme, event=event, direction=1.0), 3)

@@ -66,3 +66,15 @@ def test_bench_similarity_prints_its_time_and_ranks_the_copied_folders_first():
                        done.stdout, re.MULTILINE)
     assert timing and float(timing.group(1)) > 0 and float(timing.group(2)) > 0, done.stdout
     assert "the 3 copied folders rank [1, 2, 3] of" in done.stdout, done.stdout
+
+
+def test_bench_diagnosis_prints_the_engines_cost_on_passing_and_failing_gradings():
+    done = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_diagnosis.py"), "--runs", "1", "--cases",
+                           "problem 6", "engine-inverse-rate-matrix", "engine-state-row-bar"],
+                          capture_output=True, text=True, timeout=600, cwd=ROOT)
+    assert done.returncode in (0, 1), done.stdout[-2000:] + done.stderr[-2000:]
+    assert re.search(r"^reference, problem 6\s+[\d.]+s\s+[\d.]+s\s+[\d.]+\s+0\.000s\s+0\.0%\s+0$", done.stdout, re.M)
+    assert re.search(r"^engine-inverse-rate-matrix\s+[\d.]+s\s+[\d.]+s\s+[\d.]+\s+[\d.]+s\s+[\d.]+%\s+[1-9]",
+                     done.stdout, re.M), done.stdout
+    assert "passing gradings: the engine was asked 0 times" in done.stdout
+    assert re.search(r"failing gradings: the engine's share [\d.]+% of the time", done.stdout), done.stdout
