@@ -11,7 +11,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from grader.checking import Tol, fail, figure
+from grader.checking import CheckFailure, Tol, fail, figure
 from grader.oracle import call_key
 from grader.results import Series
 
@@ -136,7 +136,19 @@ def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", 
         f"tolerance: {tols[label]}",
         *rows,
     ]
-    fail("\n".join(lines), hint, diagnosis)
+    raise CheckFailure("\n".join(lines), hint, diagnosis, evidence=_traces(t, got, expected, inside, tols, label))
+
+
+def _traces(t, got, expected, inside, tols, label):
+    """The traces up to the window as a run for the diagnosis engine (a time shift, an offset, a trace that is
+    another's, a wrong start)."""
+    from grader.diagnosis import Evidence, Source
+
+    mine = {k: np.asarray(got[k], dtype=float)[inside] for k in tols}
+    ours = {k: np.asarray(expected[k], dtype=float)[inside] for k in tols}
+    runs = [Source("", (), (label,), {"t": t[inside], **traces}) for traces in (ours, mine)]
+    return Evidence(mine[label], ours[label], tols[label], label, source=runs[0], student=runs[1],
+                    motion={"time": "t", "states": tuple(tols)})
 
 
 def trace_figure(title, t, got, expected, horizon=None):

@@ -105,6 +105,8 @@ def declaration(probe: str) -> Declaration | None:
     """The declaration of a probe (``"problem_06.cardan"``), or None when it declares nothing."""
     if probe in _DECLARATIONS:
         return _DECLARATIONS[probe]
+    if "." not in probe:
+        return None
     import importlib
 
     module_name, _, func_name = probe.rpartition(".")
@@ -157,6 +159,9 @@ class Evidence:
     raw_expected: object = None
     source: Source | None = None
     student: Source | None = None
+    #: a run compared by a check's own code, declared there (``{"time": ..., "states": (...)}``, with ``source`` and
+    #: ``student`` holding the two runs): the check's traces of a MuJoCo model and of the reference's ODE, say
+    motion: dict | None = None
 
 
 @dataclass(frozen=True)
@@ -1101,7 +1106,7 @@ def _explain(scene: _Scene, evidences: list) -> Finding | None:
     run = first if _is_run(first) else _run_in_log(scene.ctx, first)
     found: list[_Hypothesis] = []
     if run is not None:
-        decl = declaration(run.source.probe)
+        decl = Declaration(motion=run.motion) if run.motion else declaration(run.source.probe)
         steps = _step_size(scene, run, decl)
         found += steps + [h for h in _motion_hypotheses(run, decl) if not (steps and h.name.startswith("event"))]
     if first.source is None:  # a value derived from the student's own: the engine names no cause for it
@@ -1125,6 +1130,8 @@ def _explain(scene: _Scene, evidences: list) -> Finding | None:
 
 
 def _is_run(evidence: Evidence) -> bool:
+    if evidence.motion:
+        return evidence.source is not None and evidence.student is not None
     decl = declaration(evidence.source.probe) if evidence.source is not None else None
     return decl is not None and bool(decl.motion) and evidence.student is not None
 
