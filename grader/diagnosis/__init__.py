@@ -1,0 +1,84 @@
+"""The differential diagnosis engine: names the cause of a failing comparison that no catalogued mistake explains.
+
+When a check's comparison fails and its catalogue of known mistakes has no match, the engine evaluates the
+reference under a grammar of common slips on the same inputs and keeps the hypotheses that reproduce the
+student's answer within the comparison's tolerance on the input shown *and* on a second, non-degenerate one (the
+randomized comparison's second failing input, or an input the engine draws itself); it ranks them by simplicity
+and says "looks like X" (one), "could be X or Y" (several at the simplest level) or nothing (none).  It never
+names a default cause.
+
+The grammar:
+
+* outputs (the expected value transformed): transpose, inverse, the sign of the whole value, of a row, a column
+  or an entry, rows, columns or entries swapped, a factor 2, 1/2, pi/180, 180/pi or a named constant of the
+  problem, float32 rounding, rounding to a few decimals, the output in the other frame (conjugation by the
+  problem's rotation);
+* inputs (the reference on transformed arguments): arguments swapped, angles as degrees, negated angles, a
+  rotation argument transposed, a vector argument in the other frame, an argument ignored (the student's value
+  does not change when it does);
+* formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
+  terms), found by least squares over the inputs;
+* motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
+  wrong row, a wrong initial state, an event found late or early, an error that grows with the step.
+
+What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
+rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
+grading context), never from ``reference`` itself.  Every reference call the engine may need is a function of the
+probe's arguments alone, so the student kit's answer key holds them: while the key is recorded, every comparison
+of a declared probe makes them (``prepare``).
+
+The package: ``evidence`` (declarations, evidence, where values came from), ``grammar`` (slips of values and
+arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code, with budgets) and ``engine``
+(explaining, and recording the key).
+"""
+
+from __future__ import annotations
+
+from ..errors import GraderFault
+from .engine import find, note_comparison, prepare, prepared, recording
+from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
+from .runs import remember_run
+from .scene import MAX_REFERENCE_CALLS, Budget, Scene
+
+__all__ = [
+    "Evidence",
+    "Finding",
+    "Source",
+    "Declaration",
+    "declaration",
+    "explain",
+    "prepare",
+    "prepared",
+    "locate",
+    "recording",
+    "note_comparison",
+    "remember_run",
+    "MAX_REFERENCE_CALLS",
+    "ENABLED",
+    "STRICT",
+]
+
+#: raise the engine's own defects instead of naming no cause (the engine's tests set it)
+STRICT = False
+#: the engine is asked at all (its tests and the benchmark turn it off to compare)
+ENABLED = True
+#: the declarations of the probes, by name (the engine's tests add their own)
+_DECLARATIONS = DECLARATIONS
+
+
+def explain(ctx, evidences: list) -> Finding | None:
+    """Name the cause of a failing comparison from its ``evidences`` (the input shown first; a randomized
+    comparison gives its second failing input too), or None.  ``ctx`` is the grading context (its oracle, its
+    child, its log of calls)."""
+    evidences = [e for e in evidences if e is not None]
+    if not evidences or not ENABLED:
+        return None
+    scene = Scene(ctx)
+    try:
+        return find(scene, evidences)
+    except (Budget, GraderFault):
+        return None
+    except Exception:  # noqa: BLE001 - a defect of the engine never costs the student the failure's message
+        if STRICT:
+            raise
+        return None

@@ -1,0 +1,329 @@
+"""Explaining a failing comparison: the hypotheses of the grammar, of the declared terms and of runs evaluated on
+the input shown and a second one, the simplest that reproduce the student's answer kept; and, while the kit's key
+is recorded, the engine's reference calls made for every comparison of a declared probe."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from checks._diagnoses import DIAGNOSES
+
+from ..checking import Tol
+from ..errors import GraderFault, StudentFault
+from .evidence import (
+    array_of,
+    at,
+    Declaration,
+    declaration,
+    distinct,
+    Evidence,
+    Finding,
+    Hypothesis,
+    locate,
+    Source,
+    within,
+)
+from .grammar import (
+    ignore_candidates,
+    input_slips,
+    label_of,
+    output_slips,
+    perturbations,
+    perturbed,
+    precision_slips,
+    redraw,
+    replaced,
+    rotation_of,
+)
+from .scene import Budget, constants_of, Scene
+from .terms import term_slips, term_values
+from .runs import FIXED_STEPS, is_run, motion_slips, run_in_log, step_slips
+
+__all__ = [
+    "find",
+    "recording",
+    "note_comparison",
+    "prepared",
+    "prepare",
+]
+
+
+@dataclass
+class _Input:
+    """One input's evidence and what the engine computed for it: hypothesis key -> predicted value."""
+
+    evidence: Evidence
+    predicted: dict = field(default_factory=dict)
+    hypotheses: dict = field(default_factory=dict)
+    terms: dict | None = None
+    extras: dict | None = None
+
+
+def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: bool = True) -> _Input:
+    """The hypotheses' predicted values on one input."""
+    one = _Input(evidence)
+    source = evidence.source
+    decl = declaration(source.probe) if source is not None else None
+    rotation = rotation_of(decl, source.args) if decl is not None else None
+    for hypothesis, value in output_slips(evidence.expected, constants, rotation):
+        one.hypotheses[hypothesis.key] = hypothesis
+        one.predicted[hypothesis.key] = value
+    if decl is None or not with_inputs:
+        return one
+    for hypothesis, args in input_slips(decl, source.args):
+        try:
+            value = array_of(at(scene.reference(source.probe, args), source.path))
+        except GraderFault:
+            continue
+        if value is not None:
+            one.hypotheses[hypothesis.key] = hypothesis
+            one.predicted[hypothesis.key] = value
+    if decl.terms:
+        try:
+            split = scene.reference(decl.terms, source.args)
+        except GraderFault:
+            split = None
+        if isinstance(split, dict):
+            one.terms = term_values(split.get("terms", {}), source.path, evidence.expected.shape)
+            one.extras = term_values(split.get("extra", {}), source.path, evidence.expected.shape)
+    return one
+
+
+def _sources(ctx, evidence: Evidence) -> None:
+    log = getattr(ctx, "calls", ())
+    if evidence.source is None:
+        evidence.source = locate(log, evidence.raw_expected, "reference", evidence.tol)
+    if evidence.student is None:
+        evidence.student = locate(log, evidence.raw_got, "student")
+
+
+def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
+    """The same comparison on an input the engine draws (the probe's declared angles, vectors, rotations and
+    scalars drawn anew): the student's value there and the reference's, or None."""
+    source, student = evidence.source, evidence.student
+    if source is None or student is None or source.probe != student.probe:
+        return None
+    if not _equal_args(source.args, student.args):
+        return None
+    decl = declaration(source.probe)
+    if decl is None or decl.motion:
+        return None
+    args = redraw(decl, source.args, scene.draw_seed(source))
+    if args is None:
+        return None
+    expected_root = scene.reference(source.probe, args)
+    try:
+        got_root = scene.student(source.probe, args)
+    except StudentFault:
+        return None
+    expected, got = array_of(at(expected_root, source.path)), array_of(at(got_root, student.path))
+    if expected is None or got is None or got.shape != expected.shape:
+        return None
+    return Evidence(got, expected, evidence.tol, evidence.name, None, None,
+                    Source(source.probe, tuple(args), source.path, expected_root),
+                    Source(source.probe, tuple(args), student.path, got_root))
+
+
+def _equal_args(a, b) -> bool:
+    from ..oracle import call_key
+
+    try:
+        return call_key("", tuple(a)) == call_key("", tuple(b))
+    except Exception:  # noqa: BLE001
+        return False
+
+
+def _ignored(scene: Scene, evidence: Evidence) -> list:
+    """An argument the student's function ignores: their value stays the same when the argument changes (every
+    declared argument changes the reference's value)."""
+    source, student = evidence.source, evidence.student
+    if source is None or student is None or not _equal_args(source.args, student.args):
+        return []
+    decl = declaration(source.probe)
+    if decl is None or decl.motion:
+        return []
+    leaves = ignore_candidates(decl, source.args)
+    found = []
+    for path, role, value in leaves:
+        changed = perturbed(value)
+        if changed is None:
+            continue
+        args = replaced(source.args, path, changed)
+        theirs = array_of(at(scene.reference(source.probe, args), source.path))
+        if theirs is None or theirs.shape != evidence.expected.shape \
+                or not distinct(theirs, evidence.expected, evidence.tol):
+            continue  # the reference's value does not depend on it either
+        try:
+            other = array_of(at(scene.student(source.probe, args), student.path))
+        except StudentFault:
+            continue
+        if other is not None and other.shape == evidence.got.shape and within(other, evidence.got, evidence.tol):
+            found.append(Hypothesis(f"ignored:{path}", "ignored_argument", 3,
+                                     f"your value does not change when {label_of(decl, path)} does: the function "
+                                     f"ignores it"))
+    if len(leaves) > 1 and len(found) == len(leaves):  # nothing changes it: no use of the input at all
+        return [Hypothesis("ignored:all", "constant_answer", 3, "your value does not change when any of the "
+                            f"arguments ({', '.join(label_of(decl, p) for p, _, _ in leaves)}) does")]
+    return found
+
+
+def _keep(inputs: list, keys) -> list:
+    """The hypotheses (keys) that reproduce the student's value on every input and give a value clearly other than
+    the expected one, and clearly other than zero (which a loose tolerance lets a small value match), on one of them
+    at least."""
+    kept = []
+    for key in keys:
+        if not all(key in one.predicted for one in inputs):
+            continue
+        values = [one.predicted[key] for one in inputs]
+        if not all(within(one.evidence.got, v, one.evidence.tol) for one, v in zip(inputs, values)):
+            continue
+        if not any(distinct(v, one.evidence.expected, one.evidence.tol) for one, v in zip(inputs, values)):
+            continue
+        if not any(distinct(v, np.zeros_like(v), one.evidence.tol) for one, v in zip(inputs, values)):
+            continue
+        kept.append(inputs[0].hypotheses[key])
+    return kept
+
+
+def find(scene: Scene, evidences: list) -> Finding | None:
+    for evidence in evidences:
+        _sources(scene.ctx, evidence)
+    first = evidences[0]
+    run = first if is_run(first) else run_in_log(scene.ctx, first)
+    found: list[Hypothesis] = []
+    if run is not None:
+        decl = Declaration(motion=run.motion) if run.motion else declaration(run.source.probe)
+        steps = step_slips(scene, run, decl)
+        found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))]
+    if first.source is None:  # a value derived from the student's own: the engine names no cause for it
+        return _finding(found, "here")
+    decl = declaration(first.source.probe)
+    constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
+    if len(evidences) == 1 and decl is not None and not decl.motion:
+        second = _second_input(scene, first)
+        if second is not None:
+            evidences = [first, second]
+    inputs = [_predict(scene, e, constants) for e in evidences]
+    if len(inputs) == 1:
+        inputs[0] = _single(inputs[0])
+    found += _keep(inputs, list(inputs[0].predicted))
+    found += term_slips(inputs)
+    if all(_same_shape(e) for e in evidences) and not (decl is not None and decl.motion):
+        found += precision_slips(first.got, first.expected, first.tol)
+    if not found or min(h.cost for h in found) >= 3:
+        found += _ignored(scene, evidences[0])
+    return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
+
+
+def _same_shape(evidence: Evidence) -> bool:
+    return evidence.got.shape == evidence.expected.shape
+
+
+def _single(one: _Input) -> _Input:
+    """With a single input (nothing to draw), only hypotheses whose value is clearly another than the expected one
+    are kept: a near-degenerate input tells little."""
+    ev = one.evidence
+    for key in list(one.predicted):
+        if not distinct(one.predicted[key], ev.expected, ev.tol):
+            del one.predicted[key]
+    return one
+
+
+def _finding(found: list, where: str) -> Finding | None:
+    """The simplest hypotheses found, by name, and the hint that says what they are and where they hold."""
+    if not found:
+        return None
+    cost = min(h.cost for h in found)
+    simplest = [h for h in found if h.cost == cost]
+    by_name: dict[str, list[Hypothesis]] = {}
+    for h in simplest:
+        by_name.setdefault(h.name, []).append(h)
+    names = tuple(by_name)
+    if len(names) == 1:
+        name = names[0]
+        details = "; ".join(dict.fromkeys(h.detail for h in by_name[name]))
+        hint = f"Looks like {DIAGNOSES[name].student}: {details}. This reproduces your answer {where}."
+        return Finding(names, hint)
+    lines = [f"- {DIAGNOSES[name].student}: {'; '.join(dict.fromkeys(h.detail for h in hs))}"
+             for name, hs in by_name.items()]
+    hint = (f"Could be {' or '.join(DIAGNOSES[n].student for n in names)}: each reproduces your answer {where}.\n"
+            + "\n".join(lines))
+    return Finding(names, hint)
+
+
+def recording(ctx) -> None:
+    """While the kit's answer key is recorded, every comparison of a declared probe's value makes the engine's
+    reference calls for it (``prepare``); ``ctx`` is the recording context of the check that runs (None: none)."""
+    from ..checking import _RECORDING
+
+    _RECORDING.ctx = ctx
+
+
+def note_comparison(ctx, expected, tol: Tol | None = None) -> None:
+    """A comparison with ``expected`` (within ``tol``) is made while the key is recorded: prepare the engine's calls
+    for the probe call it came from, found as ``explain`` finds it (only the calls of declared probes are
+    searched)."""
+    declared = [entry for entry in getattr(ctx, "calls", ()) if declaration(entry[1]) is not None]
+    if not declared:
+        return
+    source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None)
+    if source is None:
+        return
+    seen = ctx.__dict__.setdefault("_engine_prepared", set())
+    from ..oracle import call_key
+
+    key = call_key(source.probe, source.args)
+    if key in seen:
+        return
+    seen.add(key)
+    prepare(ctx, source)
+
+
+def prepared(ctx, probe: str, args: tuple) -> None:
+    """While the key is recorded: a run (a probe that declares ``motion``) is compared by the checks' own code
+    rather than a comparison of its value, so the engine's calls for it are made as soon as it is asked for."""
+    decl = declaration(probe)
+    if decl is None or not decl.motion:
+        return
+    from ..oracle import call_key
+
+    key = call_key(probe, args)
+    seen = ctx.__dict__.setdefault("_engine_prepared", set())
+    if key not in seen:
+        seen.add(key)
+        prepare(ctx, Source(probe, tuple(args), ()))
+
+
+def prepare(ctx, source: Source) -> None:
+    """Make every reference call the engine may need to explain a failing comparison with a value of ``source``'s
+    call: its inputs transformed, its terms, the problem's constants, and a second input drawn with its own
+    variants (the kit's key then holds them)."""
+    decl = declaration(source.probe)
+    if decl is None:
+        return
+    scene = Scene(ctx)
+    try:
+        constants_of(scene, decl, source.args)
+        for _, args in input_slips(decl, source.args):
+            scene.reference(source.probe, args)
+        for args in perturbations(decl, source.args):
+            scene.reference(source.probe, args)
+        if decl.terms:
+            scene.reference(decl.terms, source.args)
+        if decl.motion.get("fixed_step"):
+            for scheme in decl.motion.get("schemes", ("euler",)):
+                for h in decl.motion.get("steps", FIXED_STEPS):
+                    scene.reference(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
+        if not decl.motion and not getattr(ctx, "randomized", False):
+            args = redraw(decl, source.args, scene.draw_seed(source))
+            if args is not None:
+                scene.reference(source.probe, args)
+                for _, variant in input_slips(decl, args):
+                    scene.reference(source.probe, variant)
+                if decl.terms:
+                    scene.reference(decl.terms, args)
+    except Budget:
+        pass

@@ -1,0 +1,218 @@
+"""What the diagnosis engine works on: the declarations of probes (``probes.probe(...)``), the evidence of a
+failing comparison and the calls its values came from (``locate``), the hypotheses it tries and what it finds."""
+
+from __future__ import annotations
+
+import inspect
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..checking import Tol
+
+
+__all__ = [
+    "DISTINCT",
+    "Declaration",
+    "DECLARATIONS",
+    "declaration",
+    "Source",
+    "Evidence",
+    "Finding",
+    "Hypothesis",
+    "walk",
+    "equal",
+    "locate",
+    "at",
+    "array_of",
+    "within",
+    "distinct",
+]
+
+
+#: a hypothesis counts as another answer when it differs from the expected value by this many times the tolerance
+#: (on one input at least); below that it is the expected value up to rounding
+DISTINCT = 10.0
+
+
+@dataclass(frozen=True)
+class Declaration:
+    """What a probe declares for the engine (``probes.probe(...)``'s keywords), with the probe's argument names."""
+
+    args: tuple = ()
+    names: tuple = ()
+    terms: str = ""
+    rotation: object = None
+    motion: dict = field(default_factory=dict)
+    constants: str = ""
+    draw: bool = True
+
+
+DECLARATIONS: dict[str, Declaration | None] = {}
+
+
+def declaration(probe: str) -> Declaration | None:
+    """The declaration of a probe (``"problem_06.cardan"``), or None when it declares nothing."""
+    if probe in DECLARATIONS:
+        return DECLARATIONS[probe]
+    if "." not in probe:
+        return None
+    import importlib
+
+    module_name, _, func_name = probe.rpartition(".")
+    try:
+        func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
+    except (ImportError, AttributeError):
+        DECLARATIONS[probe] = None
+        return None
+    declared = getattr(func, "declared", None) or {}
+    if not declared:
+        DECLARATIONS[probe] = None
+        return None
+    names = tuple(list(inspect.signature(func).parameters)[1:])
+    found = Declaration(
+        args=tuple(declared.get("args", ())),
+        names=names,
+        terms=declared.get("terms", ""),
+        rotation=declared.get("rotation"),
+        motion=dict(declared.get("motion", {})),
+        constants=declared.get("constants", ""),
+        draw=bool(declared.get("draw", True)),
+    )
+    DECLARATIONS[probe] = found
+    return found
+
+
+@dataclass(frozen=True)
+class Source:
+    """Where a compared value came from: the probe, its arguments and the path into its result."""
+
+    probe: str
+    args: tuple
+    path: tuple
+    root: object = None  # the probe's whole result
+
+
+@dataclass
+class Evidence:
+    """One failing comparison: the student's value, the expected one, the tolerance, and the very objects the check
+    compared (to find the calls they came from)."""
+
+    got: np.ndarray
+    expected: np.ndarray
+    tol: Tol
+    name: str
+    raw_got: object = None
+    raw_expected: object = None
+    source: Source | None = None
+    student: Source | None = None
+    #: a run compared by a check's own code, declared there (``{"time": ..., "states": (...)}``, with ``source`` and
+    #: ``student`` holding the two runs): the check's traces of a MuJoCo model and of the reference's ODE, say
+    motion: dict | None = None
+
+
+@dataclass(frozen=True)
+class Finding:
+    """The engine's answer: the names it keeps (one, or several at the simplest level) and the hint."""
+
+    names: tuple
+    hint: str
+
+    @property
+    def diagnosis(self) -> str:
+        return " or ".join(self.names)
+
+
+@dataclass(frozen=True)
+class Hypothesis:
+    key: str  # the same slip on every input (e.g. "sign:row:1")
+    name: str  # its diagnosis
+    cost: int  # simplicity: 1 simplest
+    detail: str  # what it is, for the hint
+
+
+def walk(value, path=(), depth=0):
+    """``(path, sub-value)`` of a probe's result, depth first (dicts, lists, tuples)."""
+    yield path, value
+    if depth >= 6:
+        return
+    if isinstance(value, dict):
+        for key, item in value.items():
+            yield from walk(item, (*path, key), depth + 1)
+    elif isinstance(value, (list, tuple)) and len(value) <= 64:
+        for index, item in enumerate(value):
+            yield from walk(item, (*path, index), depth + 1)
+
+
+def equal(a, b) -> bool:
+    try:
+        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    except (TypeError, ValueError):
+        return False
+    return a.shape == b.shape and a.size > 0 and bool(np.array_equal(a, b))
+
+
+def locate(log, raw, side: str, tol: Tol | None = None) -> Source | None:
+    """The call of ``log`` (``(side, probe, args, value)``, most recent last) whose result holds ``raw``: by
+    identity first, else by equal value, else (with ``tol``: a printed number of the sheet, say) by a value within
+    the tolerance, each only when one path of one call has it."""
+    if raw is None:
+        return None
+    calls = [entry for entry in reversed(log) if entry[0] == side]
+    for _, probe, args, value in calls:
+        for path, item in walk(value):
+            if item is raw:
+                return Source(probe, tuple(args), path, value)
+    found = []
+    for _, probe, args, value in calls:
+        for path, item in walk(value):
+            if not isinstance(item, (dict, str)) and equal(item, raw):
+                found.append(Source(probe, tuple(args), path, value))
+    if len({(s.probe, repr(s.args)[:2000], s.path) for s in found}) == 1:
+        return found[0]
+    target = array_of(raw)
+    if tol is None or found or target is None or target.size == 0:
+        return None
+    near = []
+    for _, probe, args, value in calls:
+        for path, item in walk(value):
+            if isinstance(item, (dict, str)):
+                continue
+            candidate = array_of(item)
+            if candidate is not None and candidate.shape == target.shape and within(candidate, target, tol):
+                near.append(Source(probe, tuple(args), path, value))
+    if len({(s.probe, repr(s.args)[:2000], s.path) for s in near}) == 1:
+        return near[0]
+    return None
+
+
+def at(value, path):
+    for key in path:
+        if isinstance(value, dict):
+            value = value.get(key if key in value else str(key))
+        elif isinstance(value, (list, tuple)) and isinstance(key, int) and -len(value) <= key < len(value):
+            value = value[key]
+        else:
+            return None
+        if value is None:
+            return None
+    return value
+
+
+def array_of(value):
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        return None
+    return array if np.all(np.isfinite(array)) else None
+
+
+def within(got, value, tol: Tol) -> bool:
+    return got.shape == value.shape and bool(np.all(np.abs(got - value) <= tol.atol + tol.rtol * np.abs(value)))
+
+
+def distinct(value, expected, tol: Tol) -> bool:
+    """``value`` differs from ``expected`` clearly (beyond ``DISTINCT`` tolerances somewhere)."""
+    if value.shape != expected.shape:
+        return True
+    return bool(np.any(np.abs(value - expected) > DISTINCT * (tol.atol + tol.rtol * np.abs(expected))))

@@ -1,0 +1,316 @@
+"""The grammar of slips on values and arguments: the expected value transformed (transpose, inverse, signs, swaps,
+factors, the other frame, rounding) and the arguments transformed (swapped, as degrees, negated, transposed, in the
+other frame), the arguments changed one at a time (an argument ignored) and a second input drawn from the declared
+roles."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from ..checking import Tol
+from .evidence import array_of, at, Declaration, equal, Hypothesis, within
+
+__all__ = [
+    "ENTRYWISE",
+    "output_slips",
+    "precision_slips",
+    "leaves_of",
+    "replaced",
+    "label_of",
+    "rotation_of",
+    "input_slips",
+    "perturbed",
+    "ignore_candidates",
+    "perturbations",
+    "redraw",
+]
+
+
+#: arrays with more entries than this are not searched entry by entry (signs, swaps)
+ENTRYWISE = 36
+
+
+def _ordinal(i: int) -> str:
+    return f"{i + 1}"
+
+
+def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
+    """``(hypothesis, value)`` of the output slips of an expected value ``E``."""
+    out = []
+    add = out.append
+    if E.ndim == 2 and E.shape[0] == E.shape[1] and E.shape[0] > 1:
+        add((Hypothesis("transpose", "transpose", 1, "your matrix is the transpose of the expected one"), E.T))
+        if np.linalg.cond(E) < 1e8:
+            add((Hypothesis("inverse", "inverse", 2, "your matrix is the inverse of the expected one"),
+                 np.linalg.inv(E)))
+    if E.size == 1 and abs(float(E.ravel()[0])) > 1e-9:
+        add((Hypothesis("inverse", "inverse", 2, "your value is the reciprocal of the expected one"), 1.0 / E))
+    add((Hypothesis("sign", "sign_flip", 1, "your value is the expected one with the opposite sign"), -E))
+    for factor, name, words in ((2.0, "factor_two", "twice"), (0.5, "factor_half", "half")):
+        add((Hypothesis(f"scale:{factor}", name, 1, f"your value is {words} the expected one"), factor * E))
+    add((Hypothesis("scale:deg", "degrees", 1, "your value is the expected one converted to degrees (times "
+                     "180/pi)"), E * 180.0 / np.pi))
+    add((Hypothesis("scale:rad", "degrees", 1, "your value is the expected one times pi/180 (converted from "
+                     "degrees once too often)"), E * np.pi / 180.0))
+    for cname, c in constants.items():
+        if abs(c) > 1e-12 and not any(abs(abs(c) - v) < 1e-9 for v in (1.0, 2.0, 0.5)):
+            mass = cname in ("m", "mass")  # a value without its mass: the vocabulary's missing_mass
+            add((Hypothesis(f"const:*{cname}", "constant_factor", 2,
+                             f"your value is the expected one times {cname} = {c:.6g}"), E * c))
+            add((Hypothesis(f"const:/{cname}", "missing_mass" if mass else "constant_factor", 2,
+                             f"your value is the expected one divided by {cname} = {c:.6g}"), E / c))
+    if E.ndim == 2 and E.size <= ENTRYWISE:
+        rows, cols = E.shape
+        for i in range(rows if rows > 1 else 0):
+            value = E.copy()
+            value[i] *= -1
+            add((Hypothesis(f"sign:row:{i}", "sign_flip", 2, f"row {_ordinal(i)} has the opposite sign"), value))
+        for j in range(cols if cols > 1 else 0):
+            value = E.copy()
+            value[:, j] *= -1
+            add((Hypothesis(f"sign:col:{j}", "sign_flip", 2, f"column {_ordinal(j)} has the opposite sign"),
+                 value))
+        for i, j in itertools.combinations(range(rows), 2):
+            value = E.copy()
+            value[[i, j]] = value[[j, i]]
+            add((Hypothesis(f"swap:row:{i}:{j}", "swapped", 2, f"rows {_ordinal(i)} and {_ordinal(j)} are "
+                             "swapped"), value))
+        for i, j in itertools.combinations(range(cols), 2):
+            value = E.copy()
+            value[:, [i, j]] = value[:, [j, i]]
+            add((Hypothesis(f"swap:col:{i}:{j}", "swapped", 2, f"columns {_ordinal(i)} and {_ordinal(j)} are "
+                             "swapped"), value))
+        for index in np.ndindex(E.shape):
+            value = E.copy()
+            value[index] *= -1
+            add((Hypothesis(f"sign:entry:{index}", "sign_flip", 3,
+                             f"the entry [{','.join(map(str, index))}] has the opposite sign"), value))
+    if E.ndim == 1 and 1 < E.size <= ENTRYWISE:
+        for i in range(E.size):
+            value = E.copy()
+            value[i] *= -1
+            add((Hypothesis(f"sign:entry:{i}", "sign_flip", 2, f"entry {_ordinal(i)} has the opposite sign"),
+                 value))
+        for i, j in itertools.combinations(range(E.size), 2):
+            value = E.copy()
+            value[[i, j]] = value[[j, i]]
+            add((Hypothesis(f"swap:entry:{i}:{j}", "swapped", 2, f"entries {_ordinal(i)} and {_ordinal(j)} are "
+                             "swapped"), value))
+        if E.size > 2:
+            add((Hypothesis("swap:reversed", "swapped", 2, "the entries are in reverse order"), E[::-1].copy()))
+        if E.size == 3:
+            for shift in (1, 2):
+                add((Hypothesis(f"swap:cyclic:{shift}", "swapped", 3, "the axes are permuted cyclically"),
+                     np.roll(E, shift)))
+    if rotation is not None:
+        A = rotation
+        if E.shape == (3,):
+            add((Hypothesis("frame:A", "wrong_frame", 2, "your vector is the expected one mapped with the "
+                             "problem's rotation A (the other frame's coordinates)"), A @ E))
+            add((Hypothesis("frame:AT", "wrong_frame", 2, "your vector is the expected one mapped with A.T "
+                             "(the other frame's coordinates)"), A.T @ E))
+        elif E.shape == (3, 3):
+            add((Hypothesis("frame:A", "wrong_frame", 2, "your matrix is the expected one in the other frame "
+                             "(A X A.T)"), A @ E @ A.T))
+            add((Hypothesis("frame:AT", "wrong_frame", 2, "your matrix is the expected one in the other frame "
+                             "(A.T X A)"), A.T @ E @ A))
+    return out
+
+
+def precision_slips(got, E, tol: Tol) -> list:
+    """Rounding slips: the student's value is the expected one in float32, or rounded to a few decimals."""
+    found = []
+    single = E.astype(np.float32).astype(float)
+    if (np.all(got == got.astype(np.float32).astype(float)) and not np.all(E == single)
+            and np.all(np.abs(got - E) <= 4 * np.finfo(np.float32).eps * np.maximum(np.abs(E), 1e-30))
+            and not within(got, E, tol)):
+        found.append(Hypothesis("float32", "float32", 1, "your values are the expected ones in single precision "
+                                 "(float32): compute in float64 (numpy's default)"))
+    for decimals in range(0, 7):
+        rounded = np.round(E, decimals)
+        if np.all(np.abs(got - rounded) <= 1e-12 * np.maximum(1.0, np.abs(E))) and not within(rounded, E, tol):
+            found.append(Hypothesis(f"rounded:{decimals}", "rounded", 1,
+                                     f"your values are the expected ones rounded to {decimals} decimals: return "
+                                     "them unrounded"))
+            break
+    return found
+
+
+def leaves_of(roles, args, path=()):
+    """``(path, role, value)`` of every declared argument (roles may be nested like the arguments: a dict of roles
+    for a dict argument)."""
+    if isinstance(roles, dict):
+        for key, role in roles.items():
+            if isinstance(args, dict) and key in args:
+                yield from leaves_of(role, args[key], (*path, key))
+    elif isinstance(roles, (list, tuple)):
+        for i, role in enumerate(roles):
+            if isinstance(args, (list, tuple)) and i < len(args):
+                yield from leaves_of(role, args[i], (*path, i))
+    elif roles:
+        yield path, roles, args
+
+
+def replaced(args, path, value):
+    """``args`` with the leaf at ``path`` replaced (copies along the path; the rest shared)."""
+    if not path:
+        return value
+    head, rest = path[0], path[1:]
+    if isinstance(args, dict):
+        return {**args, head: replaced(args[head], rest, value)}
+    items = list(args)
+    items[head] = replaced(items[head], rest, value)
+    return tuple(items) if isinstance(args, tuple) else items
+
+
+def label_of(decl: Declaration, path) -> str:
+    head = decl.names[path[0]] if path and path[0] < len(decl.names) else f"argument {path[0] + 1}"
+    return head + "".join(f"[{k!r}]" for k in path[1:])
+
+
+def _same_kind(a, b) -> bool:
+    """Two arguments that could be swapped: both numbers, or arrays of one shape."""
+    first, second = array_of(a), array_of(b)
+    return first is not None and second is not None and first.shape == second.shape
+
+
+def _angle(value, f):
+    if isinstance(value, (list, tuple)):
+        return [f(float(v)) for v in value]
+    array = np.asarray(value, dtype=float)
+    return float(f(float(array))) if array.ndim == 0 else f(array)
+
+
+def _negated(value):
+    return [-float(v) for v in value] if isinstance(value, list) else -np.asarray(value, dtype=float)
+
+
+def rotation_of(decl: Declaration, args):
+    if decl.rotation is None:
+        return None
+    path = decl.rotation if isinstance(decl.rotation, tuple) else (decl.rotation,)
+    value = at(list(args), path)
+    A = array_of(value)
+    if A is None or A.shape != (3, 3) or np.max(np.abs(A.T @ A - np.eye(3))) > 1e-6:
+        return None
+    return A
+
+
+def input_slips(decl: Declaration, args: tuple) -> list:
+    """``(hypothesis, transformed args)`` of the input slips of a declared probe."""
+    out = []
+    leaves = [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))]
+    angles = [(path, value) for path, role, value in leaves if role in ("angle", "angles")]
+    for path, value in angles:
+        label = label_of(decl, path)
+        out.append((Hypothesis(f"in:deg:{path}", "degrees", 2, f"{label} is used as if it were in degrees "
+                                "(radians are given)"), replaced(args, path, _angle(value, np.deg2rad))))
+        out.append((Hypothesis(f"in:neg:{path}", "angle_sign", 2, f"{label} enters with the opposite sign (a "
+                                "rotation the other way)"), replaced(args, path, _angle(value, np.negative))))
+    if len(angles) > 1:
+        every = tuple(args)
+        for path, value in angles:
+            every = replaced(every, path, _angle(value, np.deg2rad))
+        out.append((Hypothesis("in:deg:all", "degrees", 2, "every angle is used as if it were in degrees (radians "
+                                "are given)"), every))
+    for (p1, r1, v1), (p2, r2, v2) in itertools.combinations(leaves, 2):
+        if r1 == r2 and len(p1) == len(p2) == 1 and _same_kind(v1, v2) and not equal(v1, v2):
+            swapped = replaced(replaced(args, p1, v2), p2, v1)
+            out.append((Hypothesis(f"in:swap:{p1}:{p2}", "argument_order", 2, f"{label_of(decl, p1)} and "
+                                    f"{label_of(decl, p2)} are swapped"), swapped))
+    A = rotation_of(decl, args)
+    for path, role, value in leaves:
+        array = array_of(value)
+        if role == "vector" and array is not None and array.size > 1:
+            out.append((Hypothesis(f"in:neg:{path}", "sign_flip", 2, f"{label_of(decl, path)} enters with the "
+                                    "opposite sign"), replaced(args, path, _negated(value))))
+        if role == "rotation" and array is not None and array.shape == (3, 3):
+            out.append((Hypothesis(f"in:T:{path}", "transpose", 2, f"{label_of(decl, path)} is used transposed "
+                                    "(A_BI for A_IB)"), replaced(args, path, array.T)))
+        if role == "vector" and A is not None and array is not None and array.shape == (3,):
+            out.append((Hypothesis(f"in:frame:A:{path}", "wrong_frame", 3, f"{label_of(decl, path)} is taken in "
+                                    "the other frame (mapped with A)"), replaced(args, path, A @ array)))
+            out.append((Hypothesis(f"in:frame:AT:{path}", "wrong_frame", 3, f"{label_of(decl, path)} is taken in "
+                                    "the other frame (mapped with A.T)"), replaced(args, path, A.T @ array)))
+    return out
+
+
+def perturbed(value):
+    """Another value of an argument, of the same kind (for the test of an ignored argument)."""
+    array = array_of(value)
+    if array is None:
+        return None
+    if array.ndim == 0:
+        x = float(array)
+        return x * 1.37 + 0.29
+    if array.shape == (3, 3) and np.max(np.abs(array.T @ array - np.eye(3))) < 1e-6:
+        turn = np.eye(3)  # a turn by 0.61 rad about the 3-axis
+        turn[:2, :2] = [[np.cos(0.61), -np.sin(0.61)], [np.sin(0.61), np.cos(0.61)]]
+        return turn @ array
+    pattern = np.linspace(0.31, 0.97, array.size).reshape(array.shape)
+    changed = array * 1.21 + pattern
+    return changed.tolist() if isinstance(value, list) else changed
+
+
+def ignore_candidates(decl: Declaration, args) -> list:
+    """The arguments the test of an ignored argument changes: the first four declared numbers (angles and scalars:
+    a constant written in their place; a vector or a rotation that changes nothing points to a term left out,
+    which the other slips name)."""
+    return [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
+            if role in ("angle", "scalar") and len(path) == 1][:4]
+
+
+def perturbations(decl: Declaration, args) -> list:
+    """The arguments of the test of an ignored argument, one changed at a time."""
+    if decl.motion:
+        return []
+    out = []
+    for path, _, value in ignore_candidates(decl, args):
+        changed = perturbed(value)
+        if changed is not None:
+            out.append(replaced(tuple(args), path, changed))
+    return out
+
+
+def _draw_leaf(role, value, rng):
+    array = array_of(value)
+    if array is None:
+        return value
+    if role == "angle":
+        return float(rng.uniform(-2.8, 2.8)) if array.ndim == 0 else rng.uniform(-2.8, 2.8, array.shape)
+    if role == "angles":
+        drawn = rng.uniform(-2.8, 2.8, array.shape)
+        return drawn.tolist() if isinstance(value, list) else drawn
+    if role == "vector":
+        drawn = rng.uniform(-2.0, 2.0, array.shape)
+        return drawn.tolist() if isinstance(value, list) else drawn
+    if role == "rotation" and array.shape == (3, 3):
+        w, x, y, z = rng.normal(size=4)
+        n = np.sqrt(w * w + x * x + y * y + z * z)
+        w, x, y, z = w / n, x / n, y / n, z / n
+        return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    if role == "scalar":
+        scale = max(abs(float(array.ravel()[0])), 0.1) if array.size else 1.0
+        drawn = array * rng.uniform(0.6, 1.6, array.shape) if array.ndim else float(scale * rng.uniform(0.6, 1.6))
+        return drawn
+    return value
+
+
+def redraw(decl: Declaration, args: tuple, seed_words) -> tuple | None:
+    """A second input like ``args`` with every declared angle, vector, rotation and scalar drawn anew (None when
+    the probe declares nothing to draw)."""
+    if not decl.draw:
+        return None
+    leaves = [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
+              if role in ("angle", "angles", "vector", "rotation", "scalar")]
+    if not leaves:
+        return None
+    rng = np.random.default_rng(seed_words)
+    drawn = tuple(args)
+    for path, role, value in leaves:
+        drawn = replaced(drawn, path, _draw_leaf(role, value, rng))
+    return drawn

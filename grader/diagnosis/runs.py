@@ -1,0 +1,312 @@
+"""Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
+constant offset, a state from the wrong row, a wrong start, an event found late or early, and an error that grows
+with the step (against fixed-step runs of the reference's own right-hand side)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..checking import Tol, format_array
+from .evidence import array_of, at, Declaration, declaration, distinct, Evidence, Hypothesis, Source, within
+from .scene import Scene
+
+__all__ = [
+    "FIXED_STEPS",
+    "STEP_WINDOW",
+    "STEP_SHAPE",
+    "run_of",
+    "aligned_runs",
+    "motion_slips",
+    "event_slips",
+    "event_times",
+    "step_slips",
+    "interpolated",
+    "time_shift",
+    "is_run",
+    "run_in_log",
+    "remember_run",
+]
+
+
+#: the steps of the reference's fixed-step runs that a run's error is compared with [s]
+FIXED_STEPS = (0.005, 0.01, 0.02, 0.05)
+
+
+#: a run's error is compared with a fixed-step run's while it is at most this many tolerances
+STEP_WINDOW = 30.0
+
+
+#: a run's error has the shape of a fixed-step integration's when what is left of it, once the best multiple of the
+#: latter's error is taken away, is at most this fraction of it (root mean square)
+STEP_SHAPE = 0.2
+
+
+def run_of(root, motion: dict):
+    """``(t, {state key: 2-D array (samples x components)})`` of a run's result, or None."""
+    if not isinstance(root, dict):
+        return None
+    t = array_of(root.get(motion.get("time", "t")))
+    if t is None or t.ndim != 1 or t.size < 3:
+        return None
+    states = {}
+    for key in motion.get("states", ()):
+        value = array_of(root.get(key))
+        if value is None or value.shape[0] != t.size:
+            return None
+        states[key] = value.reshape(t.size, -1)
+    return (t, states) if states else None
+
+
+def aligned_runs(evidence: Evidence, decl: Declaration):
+    """The student's run and the reference's on the student's output times (the reference's interpolated there),
+    from both runs' start to the first event or end of either: ``(t, {key: mine}, {key: ours}, reference's times,
+    reference's run)``, or None."""
+    motion = decl.motion
+    mine = run_of(evidence.student.root if evidence.student else None, motion)
+    ours = run_of(evidence.source.root, motion)
+    if mine is None or ours is None:
+        return None
+    (t_s, G), (t_r, R) = mine, ours
+    keys = [k for k in G if k in R and G[k].shape[1] == R[k].shape[1]]
+    end = min([t_s[-1], t_r[-1], *event_times(evidence.student.root, motion),
+               *event_times(evidence.source.root, motion)])
+    inside = (t_s >= max(t_s[0], t_r[0]) - 1e-12) & (t_s <= end + 1e-12)
+    if inside.sum() < 3 or not keys:
+        return None
+    t = t_s[inside]
+    ours_at = {k: np.column_stack([np.interp(t, t_r, R[k][:, j]) for j in range(R[k].shape[1])]) for k in keys}
+    return t, {k: G[k][inside] for k in keys}, ours_at, t_r, {k: R[k] for k in keys}
+
+
+def motion_slips(evidence: Evidence, decl: Declaration) -> list:
+    """The motion slips that reproduce the student's run: an event found late or early, a constant offset, a state
+    read from the wrong row, a time shift, a wrong initial state."""
+    motion = decl.motion
+    tol = evidence.tol
+    found = event_slips(evidence, decl)
+    aligned = aligned_runs(evidence, decl)
+    if aligned is None:
+        return found
+    t, G, R, t_r, R_full = aligned
+    keys = list(G)
+    wrong = [k for k in keys if not within(G[k], R[k], tol)]
+    if not wrong:
+        return found
+    # a constant offset
+    offsets = {k: np.mean(G[k] - R[k], axis=0) for k in keys}
+    if all(within(G[k] - offsets[k], R[k], tol) for k in keys):
+        words = "; ".join(f"{k}: {format_array(offsets[k])}" for k in wrong)
+        found.append(Hypothesis("motion:offset", "offset", 2, f"your run is the reference's plus a constant offset "
+                                 f"({words})"))
+        if abs(t[0] - t_r[0]) < 1e-9:  # a run from a start moved by the offset looks the same where the motion
+            # does not depend on where it is (a height, say)
+            found.append(Hypothesis("motion:offset-start", "initial_state", 2, f"your run starts at {words} from "
+                                     "the given state and keeps that offset"))
+    # a state read from the wrong row
+    columns = [(k, j) for k in keys for j in range(R[k].shape[1])]
+    mapping, explained = {}, True
+    for k in wrong:
+        for i in range(G[k].shape[1]):
+            if within(G[k][:, i], R[k][:, i], tol):
+                continue
+            rows = [(k2, j) for k2, j in columns if (k2, j) != (k, i) and within(G[k][:, i], R[k2][:, j], tol)
+                    and distinct(R[k2][:, j], R[k][:, i], tol)]
+            if not rows:
+                explained = False
+                break
+            mapping[(k, i)] = rows[0]
+        if not explained:
+            break
+    if explained and mapping:
+        words = ", ".join(f"{k}[{i}] is the reference's {k2}[{j}]" for (k, i), (k2, j) in mapping.items())
+        found.append(Hypothesis("motion:row", "state_row", 2, f"your run has a state from the wrong row: {words}"))
+    # a time shift
+    shift = time_shift(t, G, t_r, R_full, tol)
+    if shift is not None:
+        found.append(Hypothesis("motion:shift", "time_shift", 2, f"your run is the reference's shifted in time: "
+                                 f"yours at t is the reference's at t {shift:+.4g}"))
+    # a wrong initial state: the start differs from the given one
+    start = [k for k in motion.get("states", ()) if k in G and abs(t[0] - t_r[0]) < 1e-9
+             and not within(G[k][0], R[k][0], tol)]
+    if start:
+        words = "; ".join(f"{k}(t0) = {format_array(G[k][0])}, expected {format_array(R[k][0])}" for k in start)
+        found.append(Hypothesis("motion:start", "initial_state", 3, f"your run starts from another state: {words}"))
+    return found
+
+
+def event_slips(evidence: Evidence, decl: Declaration) -> list:
+    """An event found late or early: the student's event time differs from the reference's, while their run agrees
+    with the reference's up to the earlier of the two."""
+    motion = decl.motion
+    tol = evidence.tol
+    mine = run_of(evidence.student.root if evidence.student else None, motion)
+    ours = run_of(evidence.source.root, motion)
+    if mine is None or ours is None:
+        return []
+    (t_s, G), (t_r, R) = mine, ours
+    found = []
+    for key in motion.get("events", ()):
+        mine_event, our_event = array_of(at(evidence.student.root, (key,))), array_of(at(evidence.source.root, (key,)))
+        if mine_event is None or our_event is None or mine_event.size != 1 or our_event.size != 1:
+            continue
+        te, tr = float(mine_event), float(our_event)
+        before = (t_s <= min(te, tr) + 1e-12) & (t_s >= t_r[0])
+        if before.sum() < 3:
+            continue
+        agree = all(within(G[k][before], np.column_stack([np.interp(t_s[before], t_r, R[k][:, j])
+                                                           for j in range(R[k].shape[1])]), tol)
+                    for k in G if k in R and G[k].shape[1] == R[k].shape[1])
+        if agree and abs(te - tr) > tol.atol + tol.rtol * abs(tr):
+            if te > tr:
+                found.append(Hypothesis(f"event:late:{key}", "event_late", 2,
+                                         f"your run agrees with the reference's up to its event, but your {key} "
+                                         f"is {te:.6g} where it is {tr:.6g}: the event is found {te - tr:.3g} s "
+                                         "late (a coarse search for it, or a step that jumps over it)"))
+            else:
+                found.append(Hypothesis(f"event:early:{key}", "event_early", 2,
+                                         f"your run agrees with the reference's until it stops, but your {key} is "
+                                         f"{te:.6g} where it is {tr:.6g}: the event is found {tr - te:.3g} s early"))
+    return found
+
+
+def event_times(root, motion: dict) -> list:
+    times = []
+    for key in motion.get("events", ()):
+        value = array_of(at(root, (key,)))
+        if value is not None and value.size == 1:
+            times.append(float(value))
+    return times
+
+
+def step_slips(scene: Scene, evidence: Evidence, decl: Declaration) -> list:
+    """An integration error that scales with the step: the student's run leaves the reference's as a fixed-step
+    run of the reference's own right-hand side does (the probe ``motion["fixed_step"]``, at the steps
+    ``FIXED_STEPS``), by a multiple of its error between 1/2 and 2 (the step, to first order), up to the first event
+    of either run and while the error is still small (``STEP_WINDOW`` tolerances: past that, a chaotic or unstable
+    run's error no longer scales)."""
+    motion = decl.motion
+    probe = motion.get("fixed_step")
+    student, source = evidence.student, evidence.source
+    if not probe or student is None:
+        return []
+    mine, ours = run_of(student.root, motion), run_of(source.root, motion)
+    if mine is None or ours is None:
+        return []
+    (t_s, G), (t_r, R) = mine, ours
+    keys = [key for key in G if key in R and G[key].shape[1] == R[key].shape[1]]
+    if abs(t_s[0] - t_r[0]) > 1e-9 or not all(within(G[k][0], R[k][0], evidence.tol) for k in keys):
+        return []  # another start: a fixed-step run from the given one does not explain the run
+    end = min([t_s[-1], t_r[-1], *event_times(student.root, motion), *event_times(source.root, motion)])
+    inside = (t_s >= max(t_s[0], t_r[0])) & (t_s < end - 1e-12)
+    t = t_s[inside]
+    if t.size < 5 or not keys:
+        return []
+    ours_at = {key: np.column_stack([np.interp(t, t_r, R[key][:, j]) for j in range(R[key].shape[1])])
+               for key in keys}
+    error = np.concatenate([G[key][inside] - ours_at[key] for key in keys], axis=1)
+    size = evidence.tol.atol + evidence.tol.rtol * np.abs(np.concatenate([ours_at[k] for k in keys], axis=1))
+    beyond = np.any(np.abs(error) > size, axis=1)
+    if not beyond.any():
+        return []
+    large = np.flatnonzero(np.any(np.abs(error) > STEP_WINDOW * size, axis=1))
+    n = max(5, int(large[0])) if large.size else t.size
+    e_s = error[:n].ravel()
+    best = None
+    for scheme in motion.get("schemes", ("euler",)):
+        for h in motion.get("steps", FIXED_STEPS):
+            fixed = run_of(scene.reference(probe, (*source.args, h, scheme), persist=True), motion)
+            if fixed is None or fixed[0][-1] < t[n - 1] - 1e-12:
+                continue
+            t_f, F = fixed
+            e_h = np.concatenate([np.column_stack([np.interp(t[:n], t_f, F[key][:, j]) for j in range(F[key].shape[1])])
+                                  - ours_at[key][:n] for key in keys], axis=1).ravel()
+            if e_h.shape != e_s.shape or not np.any(e_h):
+                continue
+            scale = float(e_s @ e_h / (e_h @ e_h))
+            rest = float(np.linalg.norm(e_s - scale * e_h) / np.linalg.norm(e_s))
+            if 0.5 <= scale <= 2.0 and rest <= STEP_SHAPE and (best is None or rest < best[0]):
+                best = (rest, scheme, scale * h)
+    if best is None:
+        return []
+    _, scheme, step = best
+    words = {"euler": "explicit Euler", "symplectic": "semi-implicit (symplectic) Euler"}.get(scheme, scheme)
+    return [Hypothesis("motion:step", "step_size", 2,
+                        f"your run leaves the reference's as a fixed-step {words} integration does, with a step of "
+                        f"about {step:.2g} s (its error grows with the step): integrate with "
+                        "scipy.integrate.solve_ivp (any method at its default tolerances) or a far smaller step")]
+
+
+def interpolated(t, t_r, R):
+    """The rows of ``R`` (samples at the times ``t_r``, increasing) linearly interpolated at the times ``t``."""
+    k = np.clip(np.searchsorted(t_r, t) - 1, 0, t_r.size - 2)
+    w = ((t - t_r[k]) / np.where(t_r[k + 1] > t_r[k], t_r[k + 1] - t_r[k], 1.0))[:, None]
+    return (1.0 - w) * R[k] + w * R[k + 1]
+
+
+def time_shift(t, G, t_r, R, tol: Tol):
+    """The shift ``tau`` (larger than half an output step) that makes the student's run at ``t`` the reference's
+    at ``t + tau`` within the tolerance, on the times both cover (half of them at least); None when there is none."""
+    span = t_r[-1] - t_r[0]
+    if span <= 0 or t.size < 4 or t_r.size < 2:
+        return None
+    mine = np.concatenate([G[k] for k in G], axis=1)
+    ours = np.concatenate([R[k] for k in G], axis=1)
+
+    def residual(tau):
+        inside = (t + tau >= t_r[0]) & (t + tau <= t_r[-1])
+        if inside.sum() < max(3, t.size // 2):
+            return np.inf
+        moved = interpolated(t[inside] + tau, t_r, ours)
+        return float(np.max(np.abs(mine[inside] - moved) - (tol.atol + tol.rtol * np.abs(moved))))
+
+    grid = np.linspace(-0.2 * span, 0.2 * span, 81)
+    values = [residual(tau) for tau in grid]
+    best = int(np.argmin(values))
+    if not np.isfinite(values[best]):
+        return None
+    lo, hi = grid[max(best - 1, 0)], grid[min(best + 1, grid.size - 1)]
+    for _ in range(30):
+        a, b = lo + (hi - lo) / 3, hi - (hi - lo) / 3
+        if residual(a) <= residual(b):
+            hi = b
+        else:
+            lo = a
+    tau = 0.5 * (lo + hi)
+    step = float(np.median(np.diff(t)))
+    return tau if residual(tau) <= 0.0 and abs(tau) > 0.5 * step else None
+
+
+def is_run(evidence: Evidence) -> bool:
+    if evidence.motion:
+        return evidence.source is not None and evidence.student is not None
+    decl = declaration(evidence.source.probe) if evidence.source is not None else None
+    return decl is not None and bool(decl.motion) and evidence.student is not None
+
+
+def run_in_log(ctx, evidence: Evidence) -> Evidence | None:
+    """The run behind a failing comparison of a check of a run that compares some other value (a constraint along
+    the run, an end effector's position): the last probe of the check's log that declares ``motion`` and was asked
+    of the reference and of the student with the same arguments, judged with the comparison's tolerance."""
+    from ..oracle import call_key
+
+    calls = getattr(ctx, "calls", ())
+    students = dict(getattr(ctx, "runs", {}))
+    for side, probe, args, value in reversed(calls):
+        decl = declaration(probe)
+        if side != "reference" or decl is None or not decl.motion:
+            continue
+        theirs = students.get(call_key(probe, tuple(args)))
+        if theirs is not None:
+            return Evidence(evidence.got, evidence.expected, evidence.tol, evidence.name, None, None,
+                            Source(probe, tuple(args), (), value), Source(probe, tuple(args), (), theirs))
+    return None
+
+
+def remember_run(ctx, probe: str, args: tuple, value) -> None:
+    """Keep the student's runs (the values of probes that declare ``motion``) on the grading context for the
+    problem's later checks, which may compare the run that an earlier check asked for."""
+    decl = declaration(probe)
+    if decl is not None and decl.motion:
+        from ..oracle import call_key
+
+        ctx.__dict__.setdefault("runs", {})[call_key(probe, tuple(args))] = value

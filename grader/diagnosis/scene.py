@@ -1,0 +1,84 @@
+"""The engine's access to the reference (through the grading context's oracle) and to the student's code, with
+budgets on both, and the problem's named constants."""
+
+from __future__ import annotations
+
+import zlib
+
+import numpy as np
+
+from .evidence import array_of, Declaration, Source
+from .grammar import label_of, leaves_of
+
+__all__ = [
+    "MAX_REFERENCE_CALLS",
+    "MAX_STUDENT_CALLS",
+    "STUDENT_TIMEOUT",
+    "Budget",
+    "Scene",
+    "constants_of",
+]
+
+
+#: the reference calls one explanation may make (inputs transformed, terms, a second input and its variants)
+MAX_REFERENCE_CALLS = 80
+
+
+#: the student's calls one explanation may make (a second input, an argument changed)
+MAX_STUDENT_CALLS = 6
+
+
+#: how long one of the engine's calls of the student's code may take [s]
+STUDENT_TIMEOUT = 5.0
+
+
+class Budget(Exception):
+    """The engine ran out of calls: what it found so far is not enough to name a cause."""
+
+
+class Scene:
+    """The engine's access to the reference (through the grading context's oracle) and to the student's code, with
+    its budgets."""
+
+    def __init__(self, ctx):
+        self.ctx = ctx
+        self.reference_calls = 0
+        self.student_calls = 0
+
+    def reference(self, probe: str, args: tuple, persist: bool = False):
+        self.reference_calls += 1
+        if self.reference_calls > MAX_REFERENCE_CALLS:
+            raise Budget()
+        return self.ctx.oracle.reference(probe, tuple(args), persist, check=self.ctx.check_id)
+
+    def student(self, probe: str, args: tuple):
+        self.student_calls += 1
+        if self.student_calls > MAX_STUDENT_CALLS:
+            raise Budget()
+        return self.ctx.child.call(probe, *args, timeout=STUDENT_TIMEOUT)
+
+    def draw_seed(self, source: Source) -> list:
+        """The seed of the engine's own second input for a source: the oracle's draw of a site named after the
+        call (live from the run's seed; in the kit the draw recorded with the key)."""
+        from ..oracle import call_key
+
+        site = f"{self.ctx.check_id}~engine~{zlib.crc32(call_key(source.probe, source.args).encode()):08x}"
+        drawn = self.ctx.oracle.draw(site, lambda rng: [int(x) for x in rng.integers(0, 2**32, 2)],
+                                     self.ctx.seed, check=self.ctx.check_id)
+        return [int(x) for x in drawn]
+
+
+def constants_of(scene: Scene, decl: Declaration, args: tuple) -> dict:
+    """The problem's named constants a value may be scaled by: the declared scalar arguments (a mass, g, a length:
+    by their names) and the numbers of the declared probe of constants."""
+    found = {}
+    for path, role, value in leaves_of(decl.args, list(args)):
+        array = array_of(value)
+        if role == "scalar" and len(path) == 1 and array is not None and array.ndim == 0:
+            found[label_of(decl, path)] = float(array)
+    if decl.constants:
+        value = scene.reference(decl.constants, ())
+        for key, item in (value.items() if isinstance(value, dict) else ()):
+            if isinstance(item, (int, float)) and not isinstance(item, bool) and np.isfinite(item):
+                found.setdefault(key, float(item))
+    return found
