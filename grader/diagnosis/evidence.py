@@ -10,7 +10,6 @@ import numpy as np
 
 from ..checking import Tol
 
-
 __all__ = [
     "DISTINCT",
     "Declaration",

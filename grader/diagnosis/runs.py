@@ -30,12 +30,8 @@ __all__ = [
 
 #: the steps of the reference's fixed-step runs that a run's error is compared with [s]
 FIXED_STEPS = (0.005, 0.01, 0.02, 0.05)
-
-
 #: a run's error is compared with a fixed-step run's while it is at most this many tolerances
 STEP_WINDOW = 30.0
-
-
 #: a run's error has the shape of a fixed-step integration's when what is left of it, once the best multiple of the
 #: latter's error is taken away, is at most this fraction of it (root mean square)
 STEP_SHAPE = 0.2

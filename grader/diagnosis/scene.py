@@ -22,12 +22,8 @@ __all__ = [
 
 #: the reference calls one explanation may make (inputs transformed, terms, a second input and its variants)
 MAX_REFERENCE_CALLS = 80
-
-
 #: the student's calls one explanation may make (a second input, an argument changed)
 MAX_STUDENT_CALLS = 6
-
-
 #: how long one of the engine's calls of the student's code may take [s]
 STUDENT_TIMEOUT = 5.0
 
