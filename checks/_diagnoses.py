@@ -100,7 +100,10 @@ _FAMILIES = (
     Family("typed_numbers", "the sheet's printed numbers typed in", "typed in the sheet's printed numbers"),
     Family("identity", "an answer that leaves everything as it was (the identity, no motion)",
            "returned something that does nothing (the identity, no motion)"),
-    Family("constant", "an answer that does not depend on its input", "returned a constant answer"),
+    Family("constant", "an answer that does nothing (all zeros, one constant, the same for every input)",
+           "returned answers that do nothing (zeros, a constant)"),
+    Family("degenerate_input", "credit resting on earlier results of yours that do nothing",
+           "built on earlier results that do nothing"),
     Family("stub", "a function that returns nothing", "returned nothing (a missing return)"),
 )
 
@@ -434,6 +437,11 @@ _TABLE = (
     _D("constant_answer", "constant", "the same answer for every input", "returned the same answer for every input"),
     _D("always_zero", "constant", "zeros for every input", "returned zeros for every input"),
     _D("always_raises", "constant", "an error raised for every input", "raised for every input"),
+    _D("degenerate", "constant", "a value that does nothing (all zeros, one constant everywhere)",
+       "returned a value that does nothing (all zeros, a constant)"),
+    _D("degenerate_input", "degenerate_input",
+       "a value judged on earlier results of yours that do nothing (zeros, a constant, not a rotation)",
+       "had their own earlier results do nothing, so nothing could be carried forward"),
     _D("none", "stub", "nothing returned (a missing return)", "returned nothing (a missing return)"),
 )
 
@@ -515,22 +523,38 @@ def summary_phrase(diagnosis: str) -> str:
 # ---------------------------------------------------------------------------------------------- literals in code
 
 #: callables that take a diagnosis, and the index of that argument: ``Mistake(name, ...)``, the trees' ``Model(name,
-#: ...)``, ``fail(message, hint, diagnosis)``, ``CheckFailure(message, hint, diagnosis)``; any other callable is
-#: found by a parameter named ``diagnosis`` (``literal_diagnoses``'s ``helpers``), and any call by a ``diagnosis=``
-#: keyword
-DIAGNOSIS_PARAMETERS = {"Mistake": 0, "Model": 0, "fail": 2, "CheckFailure": 2}
+#: ...)``, ``fail(message, hint, diagnosis)``, ``CheckFailure(message, hint, diagnosis)``, the diagnosis engine's
+#: ``Hypothesis(key, name, ...)``; any other callable is found by a parameter named ``diagnosis``
+#: (``literal_diagnoses``'s ``helpers``), and any call by a ``diagnosis=`` keyword
+DIAGNOSIS_PARAMETERS = {"Mistake": 0, "Model": 0, "fail": 2, "CheckFailure": 2, "Hypothesis": 1}
 
 
-def _strings(node) -> list[str]:
-    """The string constants an expression can evaluate to: a constant, either branch of ``a if c else b``, the
-    operands of ``a or b``."""
+def _strings(node, constants: dict) -> list[str]:
+    """The string constants an expression can evaluate to: a constant, a name the module binds to one
+    (``constants``), either branch of ``a if c else b``, the operands of ``a or b``."""
     if isinstance(node, ast.Constant) and isinstance(node.value, str):
         return [node.value]
+    if isinstance(node, ast.Name) and node.id in constants:
+        return [constants[node.id]]
     if isinstance(node, ast.IfExp):
-        return _strings(node.body) + _strings(node.orelse)
+        return _strings(node.body, constants) + _strings(node.orelse, constants)
     if isinstance(node, ast.BoolOp):
-        return [text for value in node.values for text in _strings(value)]
+        return [text for value in node.values for text in _strings(value, constants)]
     return []
+
+
+def _module_constants(module: ast.Module) -> dict:
+    """The names a module binds once, at its top level, to a string (``DEGENERATE = "degenerate"``)."""
+    bound: dict = {}
+    for statement in module.body:
+        targets = statement.targets if isinstance(statement, ast.Assign) else \
+            [statement.target] if isinstance(statement, ast.AnnAssign) and statement.value is not None else []
+        for target in targets:
+            if isinstance(target, ast.Name):
+                value = statement.value
+                text = value.value if isinstance(value, ast.Constant) and isinstance(value.value, str) else None
+                bound[target.id] = text if target.id not in bound else None
+    return {name: text for name, text in bound.items() if text is not None}
 
 
 def _called(node) -> str | None:
@@ -539,12 +563,15 @@ def _called(node) -> str | None:
 
 
 def literal_diagnoses(source: str, helpers: dict | None = None) -> list[tuple[int, str]]:
-    """``(line, name)`` of every diagnosis written as a string literal in ``source``: the diagnosis argument of the
+    """``(line, name)`` of every diagnosis written as a string literal in ``source`` (or as a name the module binds
+    to one at its top level, ``DEGENERATE = "degenerate"``): the diagnosis argument of the
     callables of ``DIAGNOSIS_PARAMETERS``, of ``helpers`` (callable name -> index of its diagnosis parameter) and of
     the functions ``source`` defines with a parameter named ``diagnosis``, and every ``diagnosis=`` keyword.  A name
     that is not in the table is a defect of the checks (a test holds every check module to the table); names
     computed at run time are refused when the failure or the mistake is made."""
-    nodes = list(ast.walk(ast.parse(source)))
+    module = ast.parse(source)
+    constants = _module_constants(module)
+    nodes = list(ast.walk(module))
     positions = {**DIAGNOSIS_PARAMETERS, **(helpers or {})}
     for node in nodes:
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -562,6 +589,6 @@ def literal_diagnoses(source: str, helpers: dict | None = None) -> list[tuple[in
         if _called(node) in ("Mistake", "Model"):
             values += [keyword.value for keyword in node.keywords if keyword.arg == "name"]
         for value in values:
-            for text in _strings(value):
+            for text in _strings(value, constants):
                 found += [(node.lineno, name) for name in names_of(text)]
     return found

@@ -24,6 +24,7 @@ from grader.errors import GraderFault
 
 ROOT = Path(__file__).resolve().parents[1]
 CHECKS = sorted((ROOT / "checks").glob("*.py"))
+GRADER = sorted((ROOT / "grader").rglob("*.py"))
 
 #: the families the diagnosis engine's grammar and the checks' catalogues need
 REQUIRED_FAMILIES = {
@@ -143,9 +144,13 @@ fail("message", diagnosis="a" if flag else "b or c")
 CheckFailure(message, hint, "shape")
 helper(1, "hint", "reflection")
 anything(diagnosis="none")
+DEGENERATE = "degenerate"
+fail("message", "hint", DEGENERATE)
+Hypothesis("sign:row:1", "sign_flip", 1, "row 1")
 '''
     found = [name for _, name in literal_diagnoses(source)]
-    assert sorted(found) == sorted(["transpose", "swapped", "degrees", "a", "b", "c", "shape", "reflection", "none"])
+    assert sorted(found) == sorted(["transpose", "swapped", "degrees", "a", "b", "c", "shape", "reflection", "none",
+                                    "degenerate", "sign_flip"])
 
 
 def test_every_literal_diagnosis_in_the_checks_is_in_the_table():
@@ -158,6 +163,18 @@ def test_every_literal_diagnosis_in_the_checks_is_in_the_table():
             if name not in DIAGNOSES:
                 unknown.append(f"{path.name}:{line}: {name}")
     assert count > 300
+    assert not unknown, "diagnoses that are not in checks/_diagnoses.py:\n" + "\n".join(unknown)
+
+
+def test_every_literal_diagnosis_in_the_grader_is_in_the_table():
+    """The grader's own diagnoses (a shape, NaN entries) and the diagnosis engine's hypotheses."""
+    unknown, found = [], set()
+    for path in GRADER:
+        for line, name in literal_diagnoses(path.read_text()):
+            found.add(name)
+            if name not in DIAGNOSES:
+                unknown.append(f"{path.relative_to(ROOT)}:{line}: {name}")
+    assert {"shape", "not_finite", "step_size", "time_shift", "state_row"} <= found
     assert not unknown, "diagnoses that are not in checks/_diagnoses.py:\n" + "\n".join(unknown)
 
 
