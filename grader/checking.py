@@ -243,12 +243,12 @@ def _within(got, expected, tol: Tol):
 _RECORDING = threading.local()
 
 
-def _compared(expected, tol) -> None:
+def _compared(expected, tol, got=None) -> None:
     ctx = getattr(_RECORDING, "ctx", None)
     if ctx is not None:
         from .diagnosis import note_comparison
 
-        note_comparison(ctx, expected, tol)
+        note_comparison(ctx, expected, tol, got)
 
 
 def close(got, expected, tol: Tol) -> bool:
@@ -293,7 +293,7 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
     that matches, when several do).  The failure carries the comparison as evidence for the diagnosis engine,
     which names a cause when no known mistake matches."""
     raw_got, raw_expected = got, expected
-    _compared(raw_expected, tol)
+    _compared(raw_expected, tol, raw_got)
     expected = np.asarray(expected, dtype=float)
     _transposed(got, expected, name, tol)
     got = as_array(got, name, expected.shape)

@@ -16,7 +16,7 @@ from __future__ import annotations
 import threading
 
 from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
-from .diagnosis import explain, prepared, recording, remember_run
+from .diagnosis import explain, prepare_call, prepared, recording, remember_run
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 
@@ -222,10 +222,17 @@ class Context:
             expected = self.reference(probe, *args)
             found = mistakes(args, expected) if mistakes and compare is None else ()
             got = got()
-            if compare is not None:
-                compare(got, expected, args)
-            else:
+            if compare is None:
                 assert_close(got, expected, name, tol, found)
+                return
+            if self.oracle.mode == "record":
+                prepare_call(self, probe, args)
+            try:
+                compare(got, expected, args)
+            except CheckFailure as exc:  # the engine may explain the results the compared values came from
+                if exc.evidence is not None and exc.evidence.call is None:
+                    exc.evidence.call = (probe, tuple(args), got, expected)
+                raise
 
         site = self._site()
         fixed, self._fixed = self._fixed, False  # each student's own random inputs: never recorded

@@ -252,6 +252,94 @@ def test_a_fixed_comparison_is_checked_on_an_input_the_engine_draws(monkeypatch)
         assert explained(ctx, caught.value).diagnosis == expected
 
 
+POSITIVE = st.tuples(st.floats(0.5, 2.0, allow_nan=False), st.floats(0.5, 2.0, allow_nan=False))
+
+
+def compare_positive(student, seed=7):
+    """``compare`` on positive arguments (a reciprocal stays finite)."""
+    oracle = StubOracle({"stub.f": reference_f})
+    ctx = Context(99, StubChild(lambda probe, *args: student(*args)), {}, None, seed, oracle)
+    ctx.begin("p99.f_values")
+    with pytest.raises(CheckFailure) as caught:
+        ctx.compare_random("stub.f", POSITIVE, name="f(a, b)", tol=EXACT, examples=10)
+    return caught.value
+
+
+def test_a_number_among_the_arguments_at_twice_half_or_its_reciprocal(monkeypatch):
+    declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
+    doubled = compare_positive(lambda a, b: reference_f(a, 2.0 * b))
+    assert doubled.diagnosis == "scaled_argument" and "b enters at twice its value" in doubled.hint
+    halved = compare_positive(lambda a, b: reference_f(0.5 * a, b))
+    assert halved.diagnosis == "scaled_argument" and "a enters at half its value" in halved.hint
+    flipped = compare_positive(lambda a, b: reference_f(a, 1.0 / b))
+    assert flipped.diagnosis == "reciprocal_argument" and "b enters as its reciprocal" in flipped.hint
+    assert family_of("scaled_argument") == "scale" and family_of("reciprocal_argument") == "inverse"
+
+
+def test_a_whole_value_off_by_another_simple_factor(monkeypatch):
+    declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
+    quarter = compare(lambda a, b: 0.25 * reference_f(a, b))
+    assert quarter.diagnosis == "wrong_factor" and "times 1/4" in quarter.hint
+    assert compare(lambda a, b: np.sqrt(2.0) * reference_f(a, b)).diagnosis == "wrong_factor"
+    assert compare(lambda a, b: 1.37 * reference_f(a, b)).diagnosis == ""  # not a simple factor: nothing
+
+
+def test_a_declared_term_twice_or_half(monkeypatch):
+    declare(monkeypatch, "stub.h", args=("scalar", "scalar"), names=("a", "b"), terms="stub.h_terms")
+    oracle = StubOracle({"stub.h": reference_h, "stub.h_terms": terms_of})
+    for student, expected, words in (
+            (lambda a, b: reference_h(a, b) - 0.5 * terms_of(a, b)["terms"]["coriolis"], "factor_half", "half"),
+            (lambda a, b: reference_h(a, b) + terms_of(a, b)["terms"]["gravity"], "factor_two", "twice")):
+        ctx = Context(99, StubChild(lambda probe, a, b, student=student: student(a, b)), {}, None, 11, oracle)
+        ctx.begin("p99.h_values")
+        with pytest.raises(CheckFailure) as caught:
+            ctx.compare_random("stub.h", SCALARS, name="h(a, b)", tol=EXACT)
+        assert caught.value.diagnosis == expected and words in caught.value.hint
+
+
+def test_a_printed_value_is_traced_to_the_reference_through_the_students_call(monkeypatch):
+    """The sheet's printed value is compared before the check asks the reference: the engine asks the reference
+    with the arguments of the student's call, takes its value (the printed one within the tolerance) as the
+    expected one, and names the slip; in the kit the key holds that call (it is made while the key is recorded)."""
+    declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
+    printed = np.round(reference_f(0.5, 1.5), 2)
+    sheet = Tol("the sheet's decimals", 0.01)
+    oracle = StubOracle({"stub.f": reference_f})
+    ctx = Context(99, StubChild(lambda probe, a, b: reference_f(a, 2.0 * b)), {}, None, 3, oracle)
+    ctx.begin("p99.f_sheet")
+    with pytest.raises(CheckFailure) as caught:
+        assert_close(ctx.student("stub.f", 0.5, 1.5), printed, "f", sheet)
+    finding = explained(ctx, caught.value)
+    assert finding.diagnosis == "scaled_argument" and "b enters at twice its value" in finding.hint
+    assert ("stub.f", (0.5, 1.5)) in oracle.asked
+    untraced = Context(99, StubChild(lambda probe, a, b: reference_f(a, 2.0 * b)), {}, None, 3, oracle)
+    untraced.begin("p99.f_sheet")
+    with pytest.raises(CheckFailure) as caught:  # a printed value the reference does not give: no source
+        assert_close(untraced.student("stub.f", 0.5, 1.5), printed + 1.0, "f", sheet)
+    assert explained(untraced, caught.value).diagnosis == ""
+
+
+def test_a_property_of_derived_values_is_explained_by_the_results_they_came_from(monkeypatch):
+    """A randomized comparison's own ``compare`` judges a property of the student's result (here the trace of
+    f's matrix): where it fails, each result that differs from the reference's on both failing inputs is explained
+    as a comparison of its own, and the cause they agree on is named."""
+    declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
+
+    def trace(got, expected, args):
+        assert_close(np.trace(np.asarray(got)), np.trace(np.asarray(expected)), "the trace of f", EXACT)
+
+    for student, diagnosis in ((lambda a, b: -reference_f(a, b), "sign_flip"),
+                               (lambda a, b: reference_f(a, b) + np.eye(2) * (a * a + 0.3), "")):
+        oracle = StubOracle({"stub.f": reference_f})
+        ctx = Context(99, StubChild(lambda probe, a, b, student=student: student(a, b)), {}, None, 7, oracle)
+        ctx.begin("p99.f_trace")
+        with pytest.raises(CheckFailure) as caught:
+            ctx.compare_random("stub.f", SCALARS, name="f(a, b)", tol=EXACT, compare=trace)
+        assert caught.value.diagnosis == diagnosis
+        if diagnosis:
+            assert caught.value.hint.startswith("Your result: looks like a sign slip")
+
+
 # ------------------------------------------------------------------------------------------ runs
 
 
@@ -363,6 +451,25 @@ def slot():
     with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
         zygote.start()
         yield zygote
+
+
+def test_the_development_sets_hold_no_mistake_of_the_held_out_measure():
+    """The engine is tuned on its own mistakes (``tests/engine/``), never on the held-out set of
+    ``tests/diagnosis/`` (nor on the planted suite's, which the catalogues name)."""
+    from tests.diagnosis.score import FRESH, NAMED, fresh_mistakes
+
+    from .engine.score_development import REALISTIC
+
+    def key(file, old, new):
+        return file, old.strip(), new.strip()
+
+    held_out = {key(m.file, m.old, m.new) for m in fresh_mistakes(FRESH) + fresh_mistakes(NAMED)}
+    planted = {key(e["file"], e["old"], e["new"]) for path in (ROOT / "tests" / "planted").glob("problem_*.toml")
+               for e in tomllib.loads(path.read_text()).get("mistake", [])}
+    development = [key(m.file, m.old, m.new) for m in DEVELOPMENT] + [
+        key(m.file, m.old, m.new) for m in fresh_mistakes(REALISTIC)]
+    assert len(development) > 30
+    assert not set(development) & (held_out | planted)
 
 
 def test_every_family_of_the_grammar_has_its_mistake():

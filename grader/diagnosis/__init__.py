@@ -35,7 +35,7 @@ arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import find, note_comparison, prepare, prepared, recording
+from .engine import find, note_comparison, prepare, prepare_call, prepared, recording
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
@@ -48,6 +48,7 @@ __all__ = [
     "declaration",
     "explain",
     "prepare",
+    "prepare_call",
     "prepared",
     "locate",
     "recording",

@@ -46,7 +46,9 @@ __all__ = [
     "recording",
     "note_comparison",
     "prepared",
+    "prepare_call",
     "prepare",
+    "RESULT_LEAVES",
 ]
 
 
@@ -91,12 +93,31 @@ def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: boo
     return one
 
 
-def _sources(ctx, evidence: Evidence) -> None:
-    log = getattr(ctx, "calls", ())
+def _sources(scene: Scene, evidence: Evidence) -> None:
+    log = getattr(scene.ctx, "calls", ())
     if evidence.source is None:
         evidence.source = locate(log, evidence.raw_expected, "reference", evidence.tol)
     if evidence.student is None:
         evidence.student = locate(log, evidence.raw_got, "student")
+    if evidence.source is None and evidence.student is not None:
+        evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
+        if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one
+            evidence.expected = array_of(at(evidence.source.root, evidence.source.path))
+
+
+def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
+    """The reference's call with the arguments of the student's call of a declared probe, when its value is the
+    expected one within the tolerance (a value the sheet prints, compared before the check asks the reference):
+    the source of the expected value, or None."""
+    decl = declaration(student.probe)
+    target = array_of(expected)
+    if decl is None or decl.motion or target is None:
+        return None
+    root = scene.reference(student.probe, student.args)
+    value = array_of(at(root, student.path))
+    if value is None or value.shape != target.shape or not within(value, target, tol):
+        return None
+    return Source(student.probe, tuple(student.args), student.path, root)
 
 
 def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
@@ -190,7 +211,7 @@ def _keep(inputs: list, keys) -> list:
 
 def find(scene: Scene, evidences: list) -> Finding | None:
     for evidence in evidences:
-        _sources(scene.ctx, evidence)
+        _sources(scene, evidence)
     first = evidences[0]
     run = first if is_run(first) else run_in_log(scene.ctx, first)
     found: list[Hypothesis] = []
@@ -198,8 +219,8 @@ def find(scene: Scene, evidences: list) -> Finding | None:
         decl = Declaration(motion=run.motion) if run.motion else declaration(run.source.probe)
         steps = step_slips(scene, run, decl)
         found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))]
-    if first.source is None:  # a value derived from the student's own: the engine names no cause for it
-        return _finding(found, "here")
+    if first.source is None:  # a value derived from the student's own: explain the results it came from
+        return _finding(found, "here") if found or first.call is None else _from_results(scene, evidences)
     decl = declaration(first.source.probe)
     constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
     if len(evidences) == 1 and decl is not None and not decl.motion:
@@ -216,6 +237,63 @@ def find(scene: Scene, evidences: list) -> Finding | None:
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
+
+
+#: the results of a call judged by a property that the engine compares with the reference's, at most
+RESULT_LEAVES = 3
+
+
+def _leaves(value, path=()):
+    """``(path, array)`` of the numeric arrays of a probe's result, outermost first (a list of numbers is one)."""
+    if isinstance(value, dict):
+        for key, item in value.items():
+            yield from _leaves(item, (*path, key))
+        return
+    array = None if isinstance(value, str) else array_of(value)
+    if array is not None and array.size:
+        yield path, array
+    elif isinstance(value, (list, tuple)) and len(value) <= 64:
+        for index, item in enumerate(value):
+            yield from _leaves(item, (*path, index))
+
+
+def _result_evidences(evidence: Evidence) -> dict:
+    """``{path: Evidence}``: the results of ``evidence.call`` (not a run's) that differ from the reference's beyond
+    the comparison's tolerance."""
+    if evidence.call is None:
+        return {}
+    probe, args, got_root, expected_root = evidence.call
+    decl = declaration(probe)
+    if decl is not None and decl.motion:
+        return {}
+    found = {}
+    for path, expected in _leaves(expected_root):
+        got = array_of(at(got_root, path))
+        if got is None or got.shape != expected.shape or within(got, expected, evidence.tol):
+            continue
+        label = " ".join(str(k) for k in path if isinstance(k, str)) or "result"
+        found[path] = Evidence(got, expected, evidence.tol, label, None, None,
+                               Source(probe, tuple(args), path, expected_root),
+                               Source(probe, tuple(args), path, got_root))
+    return found
+
+
+def _from_results(scene: Scene, evidences: list) -> Finding | None:
+    """The cause of a failing property of values derived from a call's results (``Evidence.call``): each result
+    that differs from the reference's on both failing inputs is explained as a comparison of its own, and a cause
+    is named when the results explained agree on it."""
+    if len(evidences) < 2:
+        return None
+    first, second = _result_evidences(evidences[0]), _result_evidences(evidences[1])
+    findings = []
+    for path in [path for path in first if path in second][:RESULT_LEAVES]:
+        finding = find(scene, [first[path], second[path]])
+        if finding is not None:
+            findings.append((first[path].name, finding))
+    if not findings or len({f.diagnosis for _, f in findings}) != 1:
+        return None
+    hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
+    return Finding(findings[0][1].names, hint)
 
 
 def _same_shape(evidence: Evidence) -> bool:
@@ -262,14 +340,21 @@ def recording(ctx) -> None:
     _RECORDING.ctx = ctx
 
 
-def note_comparison(ctx, expected, tol: Tol | None = None) -> None:
-    """A comparison with ``expected`` (within ``tol``) is made while the key is recorded: prepare the engine's calls
-    for the probe call it came from, found as ``explain`` finds it (only the calls of declared probes are
-    searched)."""
+def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
+    """A comparison of ``got`` with ``expected`` (within ``tol``) is made while the key is recorded: prepare the
+    engine's calls for the probe call it came from, found as ``explain`` finds it (only the calls of declared probes
+    are searched; a printed value is traced through the student's call, ``traced``)."""
     declared = [entry for entry in getattr(ctx, "calls", ()) if declaration(entry[1]) is not None]
     if not declared:
         return
     source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None)
+    if source is None and got is not None and isinstance(tol, Tol):
+        student = locate(declared, got, "student")
+        if student is not None:
+            try:
+                source = traced(Scene(ctx), student, expected, tol)
+            except (Budget, GraderFault):
+                source = None
     if source is None:
         return
     seen = ctx.__dict__.setdefault("_engine_prepared", set())
@@ -280,6 +365,20 @@ def note_comparison(ctx, expected, tol: Tol | None = None) -> None:
         return
     seen.add(key)
     prepare(ctx, source)
+
+
+def prepare_call(ctx, probe: str, args: tuple) -> None:
+    """While the key is recorded: the results of a call that a randomized comparison judges by its own ``compare``
+    may be explained against the reference's (``Evidence.call``): make the engine's calls for it."""
+    if declaration(probe) is None or declaration(probe).motion:
+        return
+    from ..oracle import call_key
+
+    key = call_key(probe, args)
+    seen = ctx.__dict__.setdefault("_engine_prepared", set())
+    if key not in seen:
+        seen.add(key)
+        prepare(ctx, Source(probe, tuple(args), ()))
 
 
 def prepared(ctx, probe: str, args: tuple) -> None:
@@ -305,25 +404,33 @@ def prepare(ctx, source: Source) -> None:
     if decl is None:
         return
     scene = Scene(ctx)
+
+    def ask(probe, args, persist=False):
+        """A call the engine may make; where the reference refuses the transformed input (a number that breaks
+        its preconditions), the engine skips that hypothesis, here and when it explains."""
+        try:
+            return scene.reference(probe, args, persist=persist)
+        except GraderFault:
+            return None
+
     try:
         constants_of(scene, decl, source.args)
         for _, args in input_slips(decl, source.args):
-            scene.reference(source.probe, args)
+            ask(source.probe, args)
         for args in perturbations(decl, source.args):
-            scene.reference(source.probe, args)
+            ask(source.probe, args)
         if decl.terms:
-            scene.reference(decl.terms, source.args)
+            ask(decl.terms, source.args)
         if decl.motion.get("fixed_step"):
             for scheme in decl.motion.get("schemes", ("euler",)):
                 for h in decl.motion.get("steps", FIXED_STEPS):
-                    scene.reference(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
+                    ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
         if not decl.motion and not getattr(ctx, "randomized", False):
             args = redraw(decl, source.args, scene.draw_seed(source))
-            if args is not None:
-                scene.reference(source.probe, args)
+            if args is not None and ask(source.probe, args) is not None:
                 for _, variant in input_slips(decl, args):
-                    scene.reference(source.probe, variant)
+                    ask(source.probe, variant)
                 if decl.terms:
-                    scene.reference(decl.terms, args)
-    except Budget:
+                    ask(decl.terms, args)
+    except (Budget, GraderFault):
         pass

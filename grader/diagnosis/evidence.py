@@ -108,6 +108,9 @@ class Evidence:
     #: a run compared by a check's own code, declared there (``{"time": ..., "states": (...)}``, with ``source`` and
     #: ``student`` holding the two runs): the check's traces of a MuJoCo model and of the reference's ODE, say
     motion: dict | None = None
+    #: ``(probe, args, got, expected)``: the call whose results a randomized comparison's own ``compare`` judged
+    #: (by a property of the student's result, say), when the values compared were derived from them
+    call: tuple | None = None
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,8 @@ from .evidence import array_of, at, Declaration, equal, Hypothesis, within
 
 __all__ = [
     "ENTRYWISE",
+    "FACTORS",
+    "ARGUMENT_FACTORS",
     "output_slips",
     "precision_slips",
     "leaves_of",
@@ -30,6 +32,16 @@ __all__ = [
 
 #: arrays with more entries than this are not searched entry by entry (signs, swaps)
 ENTRYWISE = 36
+#: the other simple factors a whole value may be off by (a formula's 1/3 for 1/12, semi-axes for full axes, a
+#: square root of 2, a turn in radians): (factor, how it is written)
+FACTORS = (
+    (3.0, "3"), (1 / 3, "1/3"), (4.0, "4"), (0.25, "1/4"), (6.0, "6"), (1 / 6, "1/6"), (12.0, "12"), (1 / 12, "1/12"),
+    (np.sqrt(2.0), "sqrt(2)"), (1 / np.sqrt(2.0), "1/sqrt(2)"), (np.sqrt(3.0), "sqrt(3)"),
+    (1 / np.sqrt(3.0), "1/sqrt(3)"), (np.pi, "pi"), (1 / np.pi, "1/pi"), (2 * np.pi, "2 pi"),
+    (1 / (2 * np.pi), "1/(2 pi)"),
+)
+#: the factors a number among the arguments may be off by (a full length for a half, a diameter for a radius)
+ARGUMENT_FACTORS = ((2.0, "twice"), (0.5, "half"))
 
 
 def _ordinal(i: int) -> str:
@@ -50,6 +62,9 @@ def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
     add((Hypothesis("sign", "sign_flip", 1, "your value is the expected one with the opposite sign"), -E))
     for factor, name, words in ((2.0, "factor_two", "twice"), (0.5, "factor_half", "half")):
         add((Hypothesis(f"scale:{factor}", name, 1, f"your value is {words} the expected one"), factor * E))
+    for factor, words in FACTORS:
+        add((Hypothesis(f"scale:{words}", "wrong_factor", 2, f"your value is the expected one times {words}"),
+             factor * E))
     add((Hypothesis("scale:deg", "degrees", 1, "your value is the expected one converted to degrees (times "
                      "180/pi)"), E * 180.0 / np.pi))
     add((Hypothesis("scale:rad", "degrees", 1, "your value is the expected one times pi/180 (converted from "
@@ -220,6 +235,17 @@ def input_slips(decl: Declaration, args: tuple) -> list:
             swapped = replaced(replaced(args, p1, v2), p2, v1)
             out.append((Hypothesis(f"in:swap:{p1}:{p2}", "argument_order", 2, f"{label_of(decl, p1)} and "
                                     f"{label_of(decl, p2)} are swapped"), swapped))
+    for path, role, value in leaves:
+        array = array_of(value)
+        if role == "scalar" and len(path) == 1 and array is not None and array.ndim == 0 and float(array) != 0.0:
+            for factor, words in ARGUMENT_FACTORS:
+                out.append((Hypothesis(f"in:scale:{factor}:{path}", "scaled_argument", 2,
+                                       f"{label_of(decl, path)} enters at {words} its value"),
+                            replaced(args, path, float(array) * factor)))
+            label = label_of(decl, path)
+            out.append((Hypothesis(f"in:reciprocal:{path}", "reciprocal_argument", 2,
+                                   f"{label} enters as its reciprocal, 1/{label}"),
+                        replaced(args, path, 1.0 / float(array))))
     A = rotation_of(decl, args)
     for path, role, value in leaves:
         array = array_of(value)

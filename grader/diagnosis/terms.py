@@ -7,7 +7,7 @@ import itertools
 
 import numpy as np
 
-from checks._diagnoses import DIAGNOSES
+from checks._diagnoses import DIAGNOSES, TERMS
 from .evidence import array_of, at, Hypothesis, within
 
 __all__ = [
@@ -27,8 +27,9 @@ def term_values(terms: dict, path, shape) -> dict:
 
 def term_slips(inputs: list) -> list:
     """The declared terms' slips that reproduce every input: the coefficients of ``got - expected`` on the terms
-    (each present term's change: -1 missing, -2 sign-flipped; each extra term's: +-1), found by least squares over
-    the inputs and checked entrywise within the tolerance; several when the inputs cannot tell them apart."""
+    (each present term's change: -1 missing, -2 sign-flipped, +1 doubled, -1/2 halved; each extra term's: +-1),
+    found by least squares over the inputs and checked entrywise within the tolerance; several when the inputs
+    cannot tell them apart."""
     if any(one.terms is None for one in inputs):
         return []
     present = sorted(set().union(*(set(one.terms) for one in inputs)))
@@ -48,7 +49,7 @@ def term_slips(inputs: list) -> list:
         rhs.append((ev.got - ev.expected).ravel())
     A, b = np.vstack(rows), np.concatenate(rhs)
     solution = np.linalg.lstsq(A, b, rcond=None)[0]
-    allowed = {"term": (0.0, -1.0, -2.0), "extra": (0.0, 1.0, -1.0)}
+    allowed = {"term": (0.0, -1.0, -2.0, 1.0, -0.5), "extra": (0.0, 1.0, -1.0)}
     guess = tuple(min(allowed[kind], key=lambda v: abs(v - s)) for (kind, _), s in zip(columns, solution))
     candidates = {guess}
     for changes in itertools.product(*(allowed[kind] for kind, _ in columns)):
@@ -81,6 +82,9 @@ def term_slips(inputs: list) -> list:
             fit = "a least-squares fit of your values on the reference's terms over the inputs"
             if kind == "term" and c == -1.0:
                 name, detail = f"missing_{term}", f"{fit} leaves it out and reproduces them"
+            elif kind == "term" and c in (1.0, -0.5):
+                name = "factor_two" if c == 1.0 else "factor_half"
+                detail = f"{fit} takes {TERMS.get(term, term)} {'twice' if c == 1.0 else 'half'} and reproduces them"
             elif kind == "term":
                 name, detail = f"{term}_sign", f"{fit} turns it around and reproduces them"
             else:
