@@ -286,8 +286,8 @@ def test_every_planted_diagnosis_is_in_the_table():
 
 
 def test_the_class_summary_counts_a_family_once_per_student_and_names_the_diagnoses():
-    from grader.batch.exports import class_summary
-    from grader.batch.gradebook import Graded
+    from grader.report.summary import class_summary
+    from grader.results import Graded
     from grader.results import CheckResult, ProblemReport, Status
 
     def report(*diagnoses):

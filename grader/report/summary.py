@@ -1,7 +1,7 @@
 """The class summary of a batch (``summary.html``): the score distributions, the checks failed most often and the
 mistakes diagnosed behind them ("35% of students transposed a matrix (A_BI for A_IB) in problem 6", counted by
-family of the vocabulary of diagnoses, ``checks._diagnoses``, each student once per family and problem), the students whose code errored or timed out, the free-text answers to score, and
-the gradebook.  It is written from the gradebook's rows (``grader.batch.gradebook.Graded``), without their plots."""
+family of the vocabulary of diagnoses, ``checks._diagnoses``, each student once per family and problem), the
+students whose code errored or timed out, the free-text answers to score, and the gradebook.  It is written from the gradebook's rows (``grader.batch.gradebook.Graded``), without their plots."""
 
 from __future__ import annotations
 
