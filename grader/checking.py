@@ -9,7 +9,6 @@ student's code is reached only through ``ctx.student(probe, *args)`` (sandboxed 
 
 from __future__ import annotations
 
-import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,6 +17,7 @@ from checks._diagnoses import DIAGNOSES, student_phrase, unknown_names
 
 from .errors import GraderFault
 from .results import Figure, Series
+from .values import Tol, format_array
 
 __all__ = [
     "Tol",
@@ -50,19 +50,6 @@ __all__ = [
 
 
 # ---------------------------------------------------------------------------------------------- tolerances
-
-
-@dataclass(frozen=True)
-class Tol:
-    """A named tolerance: ``|got - expected| <= atol + rtol * |expected|`` entrywise."""
-
-    name: str
-    atol: float
-    rtol: float = 0.0
-
-    def __str__(self) -> str:
-        rtol = f", rtol={self.rtol:g}" if self.rtol else ""
-        return f"{self.name} (atol={self.atol:g}{rtol})"
 
 
 #: the same computation as the reference, up to floating-point rounding
@@ -199,12 +186,6 @@ def diagnose(matches) -> tuple[str, str]:
 # ---------------------------------------------------------------------------------------------- formatting
 
 
-def format_array(a, digits: int = 4) -> str:
-    a = np.asarray(a, dtype=float)
-    with np.printoptions(precision=digits, suppress=True, floatmode="fixed", linewidth=120):
-        return np.array2string(a, separator=", ")
-
-
 def _digits(got, expected, tol: Tol) -> int:
     """Enough decimals for the smallest difference outside the tolerance to be visible (4 at least, 10 at most)."""
     diffs = np.abs(got - expected)[~_within(got, expected, tol)]
@@ -238,16 +219,15 @@ def _within(got, expected, tol: Tol):
     return np.abs(got - expected) <= tol.atol + tol.rtol * np.abs(expected)
 
 
-#: while the student kit's answer key is recorded: the recording context of the running check (see
-#: ``grader.diagnosis.recording``), so that each comparison makes the reference calls the diagnosis engine may need
-_RECORDING = threading.local()
 
 
 def _compared(expected, tol, got=None) -> None:
-    ctx = getattr(_RECORDING, "ctx", None)
-    if ctx is not None:
-        from .diagnosis import note_comparison
+    """While the student kit's answer key is recorded, each comparison makes the reference calls the diagnosis
+    engine may need (``grader.diagnosis.recording``)."""
+    from .diagnosis import RECORDING, note_comparison
 
+    ctx = getattr(RECORDING, "ctx", None)
+    if ctx is not None:
         note_comparison(ctx, expected, tol, got)
 
 

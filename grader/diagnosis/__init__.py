@@ -35,12 +35,13 @@ arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import find, note_comparison, prepare, prepare_call, prepared, recording
+from .engine import RECORDING, find, note_comparison, prepare, prepare_call, prepared, recording
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
 
 __all__ = [
+    "RECORDING",
     "Evidence",
     "Finding",
     "Source",

@@ -4,17 +4,19 @@ is recorded, the engine's reference calls made for every comparison of a declare
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from checks._diagnoses import DIAGNOSES
 
-from ..checking import Tol
+from ..values import Tol
 from ..errors import GraderFault, StudentFault
 from .evidence import (
     array_of,
     at,
+    call_key,
     Declaration,
     declaration,
     distinct,
@@ -42,6 +44,7 @@ from .terms import term_slips, term_values
 from .runs import FIXED_STEPS, is_run, motion_slips, run_in_log, step_slips
 
 __all__ = [
+    "RECORDING",
     "find",
     "recording",
     "note_comparison",
@@ -50,6 +53,11 @@ __all__ = [
     "prepare",
     "RESULT_LEAVES",
 ]
+
+
+#: while the student kit's answer key is recorded: the recording context of the running check (``recording``), so
+#: that each comparison (``grader.checking``) makes the reference calls the engine may need
+RECORDING = threading.local()
 
 
 @dataclass
@@ -148,8 +156,6 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
 
 
 def _equal_args(a, b) -> bool:
-    from ..oracle import call_key
-
     try:
         return call_key("", tuple(a)) == call_key("", tuple(b))
     except Exception:  # noqa: BLE001
@@ -335,9 +341,7 @@ def _finding(found: list, where: str) -> Finding | None:
 def recording(ctx) -> None:
     """While the kit's answer key is recorded, every comparison of a declared probe's value makes the engine's
     reference calls for it (``prepare``); ``ctx`` is the recording context of the check that runs (None: none)."""
-    from ..checking import _RECORDING
-
-    _RECORDING.ctx = ctx
+    RECORDING.ctx = ctx
 
 
 def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
@@ -358,8 +362,6 @@ def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
     if source is None:
         return
     seen = ctx.__dict__.setdefault("_engine_prepared", set())
-    from ..oracle import call_key
-
     key = call_key(source.probe, source.args)
     if key in seen:
         return
@@ -372,8 +374,6 @@ def prepare_call(ctx, probe: str, args: tuple) -> None:
     may be explained against the reference's (``Evidence.call``): make the engine's calls for it."""
     if declaration(probe) is None or declaration(probe).motion:
         return
-    from ..oracle import call_key
-
     key = call_key(probe, args)
     seen = ctx.__dict__.setdefault("_engine_prepared", set())
     if key not in seen:
@@ -387,8 +387,6 @@ def prepared(ctx, probe: str, args: tuple) -> None:
     decl = declaration(probe)
     if decl is None or not decl.motion:
         return
-    from ..oracle import call_key
-
     key = call_key(probe, args)
     seen = ctx.__dict__.setdefault("_engine_prepared", set())
     if key not in seen:

@@ -8,10 +8,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..checking import Tol
+from ..values import Tol
 
 __all__ = [
     "DISTINCT",
+    "call_key",
     "Declaration",
     "DECLARATIONS",
     "declaration",
@@ -131,6 +132,16 @@ class Hypothesis:
     name: str  # its diagnosis
     cost: int  # simplicity: 1 simplest
     detail: str  # what it is, for the hint
+
+
+def call_key(probe: str, args: tuple) -> str:
+    """A stable text key of a probe call, the engine's own (the names of the engine's draw sites, the calls it has
+    prepared): the probe's name and its arguments as plain data."""
+    import json
+
+    from probes._codec import encode
+
+    return probe + json.dumps(encode(list(args)), sort_keys=True)
 
 
 def walk(value, path=(), depth=0):

@@ -9,7 +9,7 @@ import itertools
 
 import numpy as np
 
-from ..checking import Tol
+from ..values import Tol
 from .evidence import array_of, at, Declaration, equal, Hypothesis, within
 
 __all__ = [

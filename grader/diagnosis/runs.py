@@ -6,8 +6,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..checking import Tol, format_array
-from .evidence import array_of, at, Declaration, declaration, distinct, Evidence, Hypothesis, Source, within
+from ..values import Tol, format_array
+from .evidence import (
+    array_of,
+    at,
+    call_key,
+    Declaration,
+    declaration,
+    distinct,
+    Evidence,
+    Hypothesis,
+    Source,
+    within,
+)
 from .scene import Scene
 
 __all__ = [
@@ -289,8 +300,6 @@ def run_in_log(ctx, evidence: Evidence) -> Evidence | None:
     """The run behind a failing comparison of a check of a run that compares some other value (a constraint along
     the run, an end effector's position): the last probe of the check's log that declares ``motion`` and was asked
     of the reference and of the student with the same arguments, judged with the comparison's tolerance."""
-    from ..oracle import call_key
-
     calls = getattr(ctx, "calls", ())
     students = dict(getattr(ctx, "runs", {}))
     for side, probe, args, value in reversed(calls):
@@ -309,6 +318,4 @@ def remember_run(ctx, probe: str, args: tuple, value) -> None:
     problem's later checks, which may compare the run that an earlier check asked for."""
     decl = declaration(probe)
     if decl is not None and decl.motion:
-        from ..oracle import call_key
-
         ctx.__dict__.setdefault("runs", {})[call_key(probe, tuple(args))] = value

@@ -7,7 +7,7 @@ import zlib
 
 import numpy as np
 
-from .evidence import array_of, Declaration, Source
+from .evidence import array_of, call_key, Declaration, Source
 from .grammar import label_of, leaves_of
 
 __all__ = [
@@ -56,8 +56,6 @@ class Scene:
     def draw_seed(self, source: Source) -> list:
         """The seed of the engine's own second input for a source: the oracle's draw of a site named after the
         call (live from the run's seed; in the kit the draw recorded with the key)."""
-        from ..oracle import call_key
-
         site = f"{self.ctx.check_id}~engine~{zlib.crc32(call_key(source.probe, source.args).encode()):08x}"
         drawn = self.ctx.oracle.draw(site, lambda rng: [int(x) for x in rng.integers(0, 2**32, 2)],
                                      self.ctx.seed, check=self.ctx.check_id)
