@@ -269,7 +269,10 @@ def _label(entry):
 
 def naming(prefer_engine: bool = True) -> Naming:
     """The engine's table when ``checks/_diagnoses.py`` provides one (a name it does not hold is looked up in
-    ``FALLBACK``), else ``FALLBACK``."""
+    ``FALLBACK``), else ``FALLBACK``.  The vocabulary also has families for symptoms and verdicts (``shape``,
+    ``format``, ``not_orthonormal``, ...), which are none of the grammar's causes: a name in one of those that
+    ``FALLBACK`` reads as a symptom counts as naming no cause, as the module's docstring says; any other name whose
+    family is not the grammar's stays unknown (wrong)."""
     engine = _engine_table() if prefer_engine else None
 
     def fallback(name: str):
@@ -280,9 +283,12 @@ def naming(prefer_engine: bool = True) -> Naming:
 
     def family_of(name: str):
         try:
-            return _normalized(engine(name))
+            family = _normalized(engine(name))
         except Exception:  # noqa: BLE001 - a name the table does not hold (or refuses) is looked up in the fallback
             return fallback(name)
+        if family == "?" and name in FALLBACK and FALLBACK[name] is None:
+            return None  # a family of the vocabulary outside the grammar's (a shape, a format, ...): a symptom
+        return family
 
     return Naming(family_of, "the table of checks/_diagnoses.py (names it lacks: the fallback table)")
 
