@@ -1,10 +1,44 @@
-"""Comparison of written answers: predicted program output (problems 28, 36) and class diagrams (problems 30, 36)."""
+"""Written answers: the chosen option of a multiple-choice question, predicted program output (problems 28, 36)
+and class diagrams (problems 30, 36)."""
 
 import difflib
+import math
 
 from grader.checking import fail
 
-__all__ = ["text_lines", "answer_text", "assert_same_text", "EXAMPLE", "diagram_pairs", "assert_same_diagram"]
+__all__ = ["option_number", "choice", "text_lines", "answer_text", "assert_same_text", "EXAMPLE", "diagram_pairs",
+           "assert_same_diagram"]
+
+
+def option_number(value):
+    """The option number a written answer means, or None: ``4``, ``4.0``, ``"4"`` and ``" 4.0 "`` all mean option 4;
+    a boolean, a fraction, a word or anything else means none."""
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, str):
+        try:
+            value = float(value.strip())
+        except ValueError:
+            return None
+    if isinstance(value, int):
+        return value
+    if isinstance(value, float) and math.isfinite(value) and value.is_integer():
+        return int(value)
+    return None
+
+
+def choice(ctx, key, options, question=""):
+    """The option chosen in ``answers.toml [problem_NN] key``: one of ``options`` (integers), written as ``4``,
+    ``4.0`` or ``"4"``, or a failure (diagnosis ``format``) that says how to write it.  Every multiple-choice check
+    reads its answer through here, so that every natural way of writing a number is the same choice."""
+    value = ctx.answer(key)
+    number = option_number(value)
+    options = list(options)
+    if number in options:
+        return number
+    where = f"{question}: " if question else ""
+    fail(f"{where}answers.toml [problem_{ctx.problem:02d}] {key} must be the number of one option, {options[0]} to "
+         f"{options[-1]}; got {value!r}.", f"Write the option's number, e.g. {key} = {options[0]}.", "format")
 
 
 def text_lines(text, caseless=()):

@@ -6,6 +6,7 @@ them to the graded submission).
 
 import numpy as np
 
+from checks._answers import choice as _choice
 from grader.checking import STAGE_VALUES, as_array, check, fail, format_array
 
 TITLE = "Understanding rotation matrices"
@@ -17,17 +18,10 @@ READ_OFF = 0.1
 C_ANGLE_DEG = 25.0
 
 
-def _choice(ctx, key, options):
-    value = ctx.answer(key)
-    if isinstance(value, bool) or not isinstance(value, int) or value not in options:
-        fail(f"answers.toml: [problem_10] {key} must be one of {list(options)}, got {value!r}.")
-    return value
-
-
 @check(1, title="(a) the matrix that is NOT orthonormal", stage=STAGE_VALUES, secret=True)
 def check_a(ctx):
     key = ctx.reference("problem_10.key_a")
-    choice = _choice(ctx, "a", range(1, 5))
+    choice = _choice(ctx, "a", range(1, 5), "(a)")
     if choice != key["key"]:
         fail(f"option {choice} is orthonormal: max |A.T A - E| = {key['defects'][choice - 1]:.3f} "
              f"(zero up to the printed three decimals).",
@@ -37,7 +31,7 @@ def check_a(ctx):
 @check(1, title="(b) the matrix that IS a rotation", stage=STAGE_VALUES, secret=True)
 def check_b(ctx):
     key = ctx.reference("problem_10.key_b")
-    choice = _choice(ctx, "b", range(1, 5))
+    choice = _choice(ctx, "b", range(1, 5), "(b)")
     if choice != key["key"]:
         orthonormal = key["orthonormal"][choice - 1]
         why = (f"it is orthonormal but det = {key['det'][choice - 1]:+.3f}: a reflection"

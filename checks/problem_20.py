@@ -7,6 +7,7 @@ follows the physics: as printed, options 2, 3 and 4 are all not inertia matrices
 
 import numpy as np
 
+from checks._answers import choice
 from checks._rigid import compact, quaternion_rotation
 from grader.checking import STAGE_STRUCTURE, STAGE_VALUES, check, fail
 
@@ -30,11 +31,8 @@ def _sheet(ctx, k):
 
 
 def _option(ctx, key):
-    """The chosen option as an integer (``3`` or ``"3"``), or the raw answer if it is not one."""
-    given = ctx.answer(key)
-    if isinstance(given, str) and given.strip().isdigit():
-        return int(given)
-    return given if isinstance(given, int) and not isinstance(given, bool) else repr(given)
+    """The chosen option of 20(``key``) as an integer (``3``, ``3.0`` or ``"3"``)."""
+    return choice(ctx, key, (1, 2, 3, 4), f"20({key})")
 
 
 #: judged with every set of matrices, with the opposite verdict expected: a constant answer cannot pass a check

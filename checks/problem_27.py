@@ -25,6 +25,7 @@ from grader.checking import (
     format_array,
 )
 
+from ._answers import choice
 from ._planar import FINITE, sign_flips, swapped_columns
 
 TITLE = "Understanding Jacobians"
@@ -48,13 +49,7 @@ POINTS = st.tuples(COORDINATES, COORDINATES)
 
 
 def _choice(ctx, key):
-    value = ctx.answer(key)
-    if isinstance(value, str) and value.strip().isdigit():
-        value = int(value.strip())
-    if isinstance(value, bool) or value not in (1, 2, 3, 4):
-        fail(f"{QUESTIONS[key]}: answers.toml [problem_27] {key} must be the number of one option, 1 to 4; got "
-             f"{value!r}.", f"Write e.g. {key} = 2 (a number, no quotes).", "format")
-    return value
+    return choice(ctx, key, (1, 2, 3, 4), QUESTIONS[key])
 
 
 def _key(ctx, key):

@@ -5,6 +5,7 @@ motion, tree or configuration) and stay with the instructor: the checks are secr
 by what the computation shows about the chosen option, without naming the key.
 """
 
+from checks._answers import choice
 from grader.checking import STAGE_VALUES, check, fail
 
 TITLE = "Understanding Dynamics"
@@ -21,13 +22,7 @@ L, M = 1.3, 0.7
 
 
 def _choice(ctx, key):
-    value = ctx.answer(key)
-    if isinstance(value, str) and value.strip().isdigit():
-        value = int(value.strip())
-    if isinstance(value, bool) or value not in (1, 2, 3, 4):
-        fail(f"{QUESTIONS[key]}: answers.toml [problem_41] {key} must be the number of one option, 1 to 4; got "
-             f"{value!r}.", f"Write e.g. {key} = 2 (a number, no quotes).", "format")
-    return value
+    return choice(ctx, key, (1, 2, 3, 4), QUESTIONS[key])
 
 
 def _key(ctx, key):

@@ -23,6 +23,7 @@ from grader.checking import (
     figure,
 )
 
+from ._answers import choice
 from ._dynamics import subsample
 
 TITLE = "Event Detection"
@@ -162,12 +163,7 @@ def check_flight_random(ctx):
 @check(1, title="(b) the chosen outcome of a landing event with direction 0 is what the integration shows",
        stage=STAGE_VALUES, group="b", secret=True)
 def check_direction_choice(ctx):
-    value = ctx.answer("b")
-    if isinstance(value, str) and value.strip().isdigit():
-        value = int(value.strip())
-    if isinstance(value, bool) or value not in (1, 2, 3, 4):
-        fail(f"(b): answers.toml [problem_42] b must be the number of one option, 1 to 4; got {value!r}.",
-             "Write e.g. b = 3 (a number, no quotes).", "format")
+    value = choice(ctx, "b", (1, 2, 3, 4), "(b)")
     key = ctx.reference("problem_42.key", persist=True)
     if value != key["b"]:
         fail(f"(b): option {value} is not what the integration shows: run throw() with the landing event's "
