@@ -18,6 +18,7 @@ import threading
 from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
 from .diagnosis import explain, prepare_call, prepared, recording, remember_run
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
+from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 
 #: hypothesis's engine is not meant to run in two threads at once
@@ -101,24 +102,27 @@ class Context:
     # -------------------------------------------------------------- the student's code and the reference
 
     def student(self, probe: str, *args, timeout: float | None = None):
-        """Run ``probe`` on the student's package in the sandbox."""
-        value = self.child.call(probe, *args, timeout=timeout)
+        """Run ``probe`` on the student's package in the sandbox; the reply has the probe's form (``grader.gate``),
+        or the check fails saying that it cannot be graded."""
+        form_of(probe)  # a probe that cannot be asked of a student is the grader's defect, found before it runs
+        value = admit(probe, args, self.child.call(probe, *args, timeout=timeout))
         self._note(probe, args, value)
         self.calls.append(("student", probe, args, value))
         remember_run(self, probe, args, value)
         return value
 
     def student_later(self, probe: str, *args, timeout: float | None = None):
-        """Send the call of ``probe`` to the student's code now; returns a function that waits for its value, so
-        that the grader's own work in between (the reference, a catalogue of mistakes) overlaps the student's
-        code.  A child without ``call_later`` is called at once."""
+        """Send the call of ``probe`` to the student's code now; returns a function that waits for its value (held
+        to the probe's form, as ``student``'s), so that the grader's own work in between (the reference, a
+        catalogue of mistakes) overlaps the student's code.  A child without ``call_later`` is called at once."""
+        form_of(probe)
         later = getattr(self.child, "call_later", None)
         if later is not None:
             wait = later(probe, *args, timeout=timeout)
             noting = self._recording and self._fixed
 
             def value_later():
-                value = wait()
+                value = admit(probe, args, wait())
                 if noting:
                     self._asked.append((probe, args, value))
                 self.calls.append(("student", probe, args, value))

@@ -24,6 +24,9 @@ PLANTED = ("p06-cardan-rotation-order", "p06-R3-transpose", "p07-omega-body-in-i
            "p08-exponential-is-euler", "p09-get-transform-transposed", "p10-b-reflection")
 HOSTILE = ("syntax_error", "infinite_loop_call", "memory_bomb", "fake_json", "steal_reference_import",
            "terminal_escapes")
+#: how much of a failure's first line a row shows, where the failure names no diagnosis (enough for "cannot be
+#: graded: frames()['A_IC3'] must be numeric, got ..." to show what it got)
+FINDING_LENGTH = 100
 
 
 def _samples_module():
@@ -42,7 +45,7 @@ def _finding(reports) -> str:
     for report in reports:
         for r in report.results:
             if r.status in (Status.FAILED, Status.ERROR, Status.TIMEOUT) and r.visibility == "visible":
-                detail = r.diagnosis or r.message.splitlines()[0][:60]
+                detail = r.diagnosis or r.message.splitlines()[0][:FINDING_LENGTH]
                 return f"P{report.problem} {r.status.value}: {detail}"
     if all(r.status is Status.NOT_IMPLEMENTED or r.status is Status.SKIPPED
            for report in reports for r in report.results):

@@ -30,15 +30,24 @@ __all__ = ["probe", "module"]
 DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw")
 
 
-def probe(func=None, **declared):
-    """Mark ``func(package, *args)`` as callable from the grader (``@probe``, or ``@probe(args=..., ...)`` with
-    the declarations of the module's docstring)."""
+def probe(func=None, *, returns=None, says="", reference_only=False, **declared):
+    """Mark ``func(package, *args)`` as callable from the grader: ``@probe(returns=FORM, ...)``.
+
+    ``returns``: the form of its reply (``probes._forms``), to which the grader holds every reply of the student's
+    side before a check uses it; ``says``: how a message names the call (``"R{0}({1})"``, formatted with the
+    arguments shown short); ``reference_only``: the probe reads the reference's own data (a key, a constant, a
+    catalogue of mistakes, the terms of a value) and is never run on a student's package; the other keywords are
+    the declarations of the module's docstring.  ``probe(func)`` alone only marks it (a probe replaced inside the
+    student's process)."""
     unknown = set(declared) - set(DECLARATIONS)
     if unknown:
         raise TypeError(f"unknown probe declarations: {sorted(unknown)}")
 
     def mark(f):
         f.is_probe = True
+        f.returns = returns
+        f.says = says
+        f.reference_only = reference_only
         f.declared = dict(declared)
         return f
 

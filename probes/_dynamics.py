@@ -16,8 +16,10 @@ from types import SimpleNamespace
 import numpy as np
 
 from . import _trees, module, probe
+from ._forms import Arr, Dict, Num, Seq, Text, Tup
 
 __all__ = [
+    "MFG",
     "MFG_MISTAKES",
     "classes",
     "build",
@@ -34,6 +36,8 @@ __all__ = [
     "mfg_terms",
 ]
 
+#: ``{"M", "f", "g"}`` of ``equations_of_motion`` (n x n, n, n)
+MFG = Dict({"M": Arr(None, None), "f": Arr(None), "g": Arr(None)})
 #: mistakes of a body's share of M, f, g (see ``_mistaken_share``)
 MFG_MISTAKES = ("missing_gyroscopic", "missing_bias", "gravity_sign", "gravity_body_frame", "transpose", "f_sign",
                 "gyroscopic_sign")
@@ -65,7 +69,7 @@ def _mfg(pkg, tree, q, qd, I_grav):
     return {"M": np.array(M, dtype=float), "f": np.array(f, dtype=float), "g": np.array(g, dtype=float)}
 
 
-@probe(args=("", "vector", "vector", "vector"), terms="_dynamics.mfg_terms")
+@probe(returns=MFG, args=("", "vector", "vector", "vector"), terms="_dynamics.mfg_terms")
 def mfg(pkg, description, q, qd, I_grav):
     """``{"M", "f", "g"}`` of the described tree at ``(q, qd)`` (``equations_of_motion``)."""
     return _mfg(pkg, build(pkg, description), *_vectors(q, qd), I_grav)
@@ -99,7 +103,7 @@ def _mistaken_share(body, I_grav, mistake):
     return M, (-f if mistake == "f_sign" else f), m * P_S @ B_grav
 
 
-@probe
+@probe(reference_only=True)
 def mfg_mistakes(pkg, description, q, qd, I_grav):
     """``{mistake: {"M", "f", "g"}}`` for the mistakes of ``MFG_MISTAKES`` (``transpose`` only when every Jacobian is
     square), from the package's kinematics of the described tree at ``(q, qd)``."""
@@ -116,7 +120,7 @@ def mfg_mistakes(pkg, description, q, qd, I_grav):
     return out
 
 
-@probe
+@probe(reference_only=True)
 def mfg_terms(pkg, description, q, qd, I_grav):
     """``M``, ``f``, ``g`` of the described tree at ``(q, qd)`` split into named terms, from the package's
     kinematics (the diagnosis engine calls it on the reference): ``M`` = translation + rotation, ``f`` = bias +
@@ -146,7 +150,19 @@ def _positions(tree):
             for body in tree.bodies]
 
 
-@probe
+@probe(
+    returns=Dict(
+        {
+            **MFG.fields,
+            "bodies": Seq(
+                Dict({"name": Text(), "m": Num(), "I": Arr(3, 3), "B_J_S": Arr(3, None), "B_J_R": Arr(3, None)})
+            ),
+            "M_coordinates": Seq(Tup(Arr(None, None), Arr(None, None))),
+            "M_path": Tup(Arr(None, None), Arr(None, None)),
+            "positions": Seq(Tup(Seq(Arr(3)), Seq(Arr(3)))),
+        }
+    )
+)
 def lagrange(pkg, description, q, qd, I_grav, h):
     """What the physics checks need from the package alone: ``M``, ``f``, ``g`` at ``(q, qd)``; every body's mass,
     inertia and Jacobians after that pass (``"bodies"``); ``M`` at ``q +- h e_i`` (``"M_coordinates"``) and at
@@ -175,7 +191,7 @@ def lagrange(pkg, description, q, qd, I_grav, h):
             "positions": positions}
 
 
-@probe
+@probe(returns=Arr(None), says="forward_dynamics(M, f, g, tau)")
 def forward_dynamics(pkg, M, f, g, tau):
     """``dynamics.forward_dynamics(M, f, g, tau)``."""
     args = (np.asarray(x, dtype=float) for x in (M, f, g, tau))
@@ -213,8 +229,20 @@ def trace(run, n, what):
     return t, arrays[0], arrays[1]
 
 
-@probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
-               "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02)})
+@probe(
+    returns=Dict(
+        {
+            "t": Arr(None),
+            "q": Arr(None, 3),
+            "qd": Arr(None, 3),
+            "T": Arr(None, finite=False),
+            "V": Arr(None, finite=False),
+        }
+    ),
+    says="problem_24.simulate({0})",
+    motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
+               "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02)},
+)
 def pendulum_motion(pkg, t_end, I_grav):
     """Problem 24: the package's ``problem_24.simulate(t_end)`` and, at every output time, the energies ``T`` and
     ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
@@ -264,7 +292,7 @@ def fixed_step(fun, y0, t_end, h, scheme, event=None, direction=-1.0):
     return {"t": np.array(times), "y": np.array(rows), "t_event": t_event}
 
 
-@probe
+@probe(reference_only=True)
 def pendulum_motion_fixed(pkg, t_end, I_grav, h, scheme):
     """Problem 24's pendulum released as in ``problem_24.simulate``, run by a fixed-step ``scheme`` at step ``h``
     with the package's own ``pendulum_ode`` (the diagnosis engine calls it on the reference)."""

@@ -10,6 +10,7 @@ import copy
 import numpy as np
 
 from . import module, probe
+from ._forms import ANY, Dict, Seq
 
 __all__ = ["calls", "snapshot", "fresh_copies"]
 
@@ -28,7 +29,7 @@ def fresh_copies(args):
     return [np.array(a, dtype=float) if isinstance(a, (list, np.ndarray)) else copy.deepcopy(a) for a in args]
 
 
-@probe
+@probe(returns=Dict({"first": ANY, "first_later": ANY, "again": ANY, "args_after": Seq(ANY)}), says="{0}.{1}")
 def calls(pkg, module_name, function, first, second):
     """``module.function(*first)``, then ``(*second)``, then ``(*first)`` again, each on fresh copies:
 

@@ -14,7 +14,14 @@ import math
 import re
 import xml.etree.ElementTree as ElementTree
 
+from ._forms import Arr, Dict, Either, Flag, Maybe, Num, Seq, Text
+
 __all__ = [
+    "REFUSED",
+    "DESCRIPTION",
+    "RUN",
+    "RESULT_OF_DESCRIBE",
+    "RESULT_OF_RUN",
     "MAX_CHARS",
     "MAX_ELEMENTS",
     "MAX_BODIES",
@@ -29,6 +36,28 @@ __all__ = [
 ]
 
 MAX_CHARS = 100_000
+
+#: a model refused or not loaded: ``{"error": message}``
+REFUSED = Dict({"error": Text()})
+#: ``describe(model, data)``
+DESCRIPTION = Dict({
+    "gravity": Arr(3), "timestep": Num(), "integrator": Text(), "keyframes": Num(), "contacts": Num(),
+    "qpos": Arr(None), "qvel": Arr(None),
+    "bodies": Seq(Dict({"name": Text(), "parent": Num(), "mass": Num(), "com": Arr(3), "inertia": Arr(3, 3)})),
+    "joints": Seq(Dict({"name": Text(), "type": Text(), "body": Num(), "anchor": Arr(3), "axis": Arr(3),
+                        "damping": Num(), "armature": Num(), "frictionloss": Num(), "stiffness": Num()})),
+    "actuators": Seq(Dict({"name": Text(), "joint": Num(), "gear": Num(), "unit_torque": Arr(None),
+                           "stateful": Flag()})),
+    "equalities": Seq(Dict({"type": Text(), "active": Flag(), "point1": Arr(3), "point2": Arr(3),
+                            "to_world": Flag()}, optional=("point1", "point2", "to_world"))),
+})
+#: ``run(model, data, ...)``: after a divergence the samples stay NaN
+RUN = Dict({"t": Arr(None), "qpos": Arr(None, None, finite=False), "qvel": Arr(None, None, finite=False),
+            "steps": Num(), "timestep": Num(), "integrator": Text(), "max_contacts": Num(),
+            "diverged": Maybe(Dict({"time": Num(), "reason": Text()}))})
+#: what a probe that describes (runs) a student's model replies: the model, or why it was not used
+RESULT_OF_DESCRIBE = Either(REFUSED, DESCRIPTION)
+RESULT_OF_RUN = Either(REFUSED, RUN)
 MAX_ELEMENTS = 1_000
 MAX_BODIES = 20
 MAX_DOFS = 30

@@ -17,6 +17,7 @@ arrays; values read back are copied, never returned as the package's own objects
 import numpy as np
 
 from . import module, probe
+from ._forms import ANY, Arr, Dict, Items
 
 __all__ = ["run", "body_run", "BODY_ROLES"]
 
@@ -78,7 +79,7 @@ def _stack(label, values):
     return np.array(values)
 
 
-@probe
+@probe(returns=Dict({"final": Items(ANY), "trace": Items(Arr(any_shape=True, finite=False)), "step": Arr(None)}))
 def run(pkg, objects, steps=(), repeat=1, read=(), trace=(), every=1):
     """Build ``objects``, apply ``steps`` ``repeat`` times, and return the reads and traces (see the module)."""
     built = _build(pkg, objects)

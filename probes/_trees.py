@@ -16,9 +16,15 @@ the generic recursion meets relative translations without any joint type the stu
 import numpy as np
 
 from . import module, probe
+from ._forms import ANY, Arr, Dict, Items, Maybe, Seq, Text, Tup
 from ._effects import fresh_copies, snapshot
 
 __all__ = [
+    "QUANTITY",
+    "BODIES",
+    "STATE",
+    "POSES",
+    "OUTLINE",
     "POSE",
     "MOTION",
     "CLASSES",
@@ -44,6 +50,19 @@ CLASSES = {
     "rigid": "RigidJoint",
 }
 _E3 = np.array([0.0, 0.0, 1.0])
+
+#: a body's quantity as the probe reads it back from the student's body (None where not set): numeric, of any shape
+#: (the checks compare it with the reference's and say what is wrong with its shape or values)
+QUANTITY = Maybe(Arr(any_shape=True, finite=False))
+#: the bodies' states (one dict of quantities per body)
+BODIES = Seq(Items(QUANTITY))
+#: ``state(tree)``: the names, the joints leading to the bodies, the bodies' states
+STATE = Dict({"names": Seq(Text()), "bodies": BODIES,
+              "joints": Seq(Maybe(Dict({"type": Text(), "predecessor": Text(), "q_index": Arr(None)})))})
+#: ``state(tree, motion=False)``: the same, poses only
+POSES = STATE
+#: the points of a tree's outline (a figure only), or None
+OUTLINE = Maybe(Arr(any_shape=True, finite=False))
 _TEST_JOINTS = {}
 
 
@@ -159,7 +178,7 @@ def outline(tree, start=None):
     return np.array(points)
 
 
-@probe
+@probe(returns=STATE, says="forward_kinematics of the tree")
 def tree_state(pkg, description, q, qd=None, qdd=None):
     """The state of the described tree, built with the package's classes, after ``forward_kinematics``."""
     tree = build(module(pkg, "tree"), description)
@@ -178,7 +197,7 @@ def _same_bodies(bodies, others):
     return a.shape == b.shape and (a.size == 0 or float(np.max(np.abs(a - b))) <= 1e-12)
 
 
-@probe
+@probe(reference_only=True)
 def mistaken_states(pkg, specs, description, q, qd=None, qdd=None):
     """The bodies' states (``state(...)["bodies"]``) of the described tree as a recursion with a known mistake
     computes them, one per mistake ``spec`` (see ``mistaken_classes`` of the package's ``tree`` module, which only
@@ -198,7 +217,7 @@ def mistaken_states(pkg, specs, description, q, qd=None, qdd=None):
     return found
 
 
-@probe
+@probe(returns=Dict({"state": STATE, "shifted": Seq(Tup(BODIES, BODIES))}), says="forward_kinematics of the tree")
 def jacobian_differences(pkg, description, q, h):
     """The full state at ``q`` (at rest) and the poses at ``q +- h e_i`` for every coordinate ``i``."""
     tree = build(module(pkg, "tree"), description)
@@ -216,7 +235,7 @@ def jacobian_differences(pkg, description, q, h):
     return {"state": at, "shifted": shifted}
 
 
-@probe
+@probe(returns=Tup(STATE, STATE, STATE), says="forward_kinematics of the tree")
 def path_differences(pkg, description, q, qd, qdd, h):
     """Full states at ``t = -h, 0, +h`` along ``q(t) = q + qd t + qdd t^2 / 2``."""
     tree = build(module(pkg, "tree"), description)
@@ -228,7 +247,10 @@ def path_differences(pkg, description, q, qd, qdd, h):
     return states
 
 
-@probe
+@probe(
+    returns=Dict({"first": STATE, "second": STATE, "fresh_second": STATE, "again": STATE, "args_after": Seq(ANY)}),
+    says="forward_kinematics of the tree",
+)
 def tree_calls(pkg, description, first, second):
     """One tree of the described bodies, built once: ``forward_kinematics(*first)``, then ``(*second)``, then
     ``(*first)`` again (each a tuple ``(q[, qd, qdd])`` on fresh copies), and a fresh tree at ``second``:

@@ -1,6 +1,7 @@
 """Probes of problem 1: the course's packages, imported inside the sandbox, and a tiny MuJoCo model."""
 
 from . import _mjcf, module, probe
+from ._forms import ANY, Dict, Items, Maybe, Text
 
 #: the smallest model that exercises MuJoCo: one hinged link falling under gravity (problem 2b's pendulum)
 TINY_MODEL = """<mujoco model="tiny">
@@ -15,7 +16,17 @@ TINY_MODEL = """<mujoco model="tiny">
 """
 
 
-@probe
+@probe(
+    returns=Dict(
+        {
+            "python": Text(),
+            "packages": Items(Dict({"version": Maybe(Text()), "distribution": Maybe(Text()), "error": Maybe(Text())})),
+            "student": ANY,
+        },
+        optional=("student",),
+    ),
+    says="versions()",
+)
 def environment(pkg, names):
     """Python's version and, per package, the version it reports on import (or why it does not import) and its
     installed distribution's version; then the package's own ``problem_01.versions()``, asked only when every
@@ -41,7 +52,7 @@ def environment(pkg, names):
     return found
 
 
-@probe
+@probe(returns=_mjcf.RESULT_OF_RUN)
 def tiny_model(pkg, duration, sample):
     """``TINY_MODEL`` loaded and run by MuJoCo: its traces (or why it failed)."""
     return _mjcf.guarded(lambda: _mjcf.run(*_mjcf.load(TINY_MODEL), duration, sample))

@@ -7,14 +7,14 @@ def _xml(pkg, density, gravity, damping, torque):
     return module(pkg, "problem_02").pendulum(density, gravity, damping, torque)
 
 
-@probe
+@probe(returns=_mjcf.RESULT_OF_DESCRIBE, says="pendulum({0}, {1}, {2}, {3})")
 def model(pkg, density, gravity, damping=0.0, torque=0.0):
     """What ``pendulum(...)`` declares (``_mjcf.describe``), or ``{"error": ...}``."""
     xml = _xml(pkg, density, gravity, damping, torque)
     return _mjcf.guarded(lambda: _mjcf.describe(*_mjcf.load(xml)))
 
 
-@probe
+@probe(returns=_mjcf.RESULT_OF_RUN, says="pendulum({0}, {1}, {2}, {3})")
 def run(pkg, density, gravity, damping, torque, duration, sample):
     """``pendulum(...)`` run for ``duration`` seconds; every actuator gets the control sin(t) (the tutorial's
     sine-wave source)."""
@@ -25,11 +25,11 @@ def run(pkg, density, gravity, damping, torque, duration, sample):
 # The reference's own computations (its ODE, independent of MuJoCo): called on the reference only.
 
 
-@probe
+@probe(reference_only=True)
 def ode(pkg, density, gravity, damping, torque, duration, sample):
     return module(pkg, "problem_02").pendulum_ode(density, gravity, damping, torque, duration, sample)
 
 
-@probe
+@probe(reference_only=True)
 def period(pkg, density, gravity):
     return module(pkg, "problem_02").pendulum_period(density, gravity)

@@ -2,9 +2,13 @@
 its MJCF loaded by MuJoCo in the sandbox with the acceleration along the linkage's free motion."""
 
 from . import _mjcf, module, probe
+from ._forms import Arr, Dict, Either, Num, Text
 
 
-@probe
+@probe(
+    returns=Either(Dict({"raised": Text(), "message": Text(), "kind": Text()}), Dict({"q": Arr(4)})),
+    says="assemble({0}, {1})",
+)
 def assemble(pkg, targets, fixed_point):
     """``{"q": angles}``, or the exception ``assemble`` raised: ``{"raised": type, "message", "kind"}`` where kind
     is ``"overconstrained"``, ``"unreachable"``, ``"assembly"`` (another AssemblyError) or ``"other"``."""
@@ -24,12 +28,25 @@ def assemble(pkg, targets, fixed_point):
         return {"raised": type(exc).__name__, "message": str(exc)[:1000], "kind": kind}
 
 
-@probe
+@probe(returns=Arr(4), says="balanced_configuration({0})")
 def balanced(pkg, fixed_point):
     return module(pkg, "problem_04").balanced_configuration(fixed_point)
 
 
-@probe
+@probe(
+    returns=Either(
+        _mjcf.REFUSED,
+        Dict(
+            {
+                **_mjcf.DESCRIPTION.fields,
+                "at_rest": Either(
+                    _mjcf.REFUSED, Dict({"alpha": Num(), "tangent": Arr(None), "violation": Num(), "qacc": Arr(None)})
+                ),
+            }
+        ),
+    ),
+    says="four_bar({0}, {1}, {2}, {3})",
+)
 def model(pkg, density, gravity, q, fixed_point):
     """What ``four_bar(...)`` declares, and the acceleration along the linkage's free motion at rest
     (``_mjcf.tangent_acceleration``); or ``{"error": ...}``."""
@@ -45,7 +62,7 @@ def model(pkg, density, gravity, q, fixed_point):
 # The reference's own computation (its planar dynamics, independent of MuJoCo): called on the reference only.
 
 
-@probe
+@probe(reference_only=True)
 def tangent_acceleration(pkg, q, density, gravity):
     p4 = module(pkg, "problem_04")
     return {"alpha": p4.tangent_acceleration(q, density, gravity), "tangent": p4.loop_tangent(q)}

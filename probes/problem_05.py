@@ -3,13 +3,13 @@
 from . import _mjcf, module, probe
 
 
-@probe
+@probe(returns=_mjcf.RESULT_OF_DESCRIBE, says="fixed_model()")
 def fixed(pkg):
     xml = module(pkg, "problem_05").fixed_model()
     return _mjcf.guarded(lambda: _mjcf.describe(*_mjcf.load(xml)))
 
 
-@probe
+@probe(returns=_mjcf.RESULT_OF_DESCRIBE, says="BROKEN_MODEL")
 def broken(pkg):
     xml = module(pkg, "problem_05").BROKEN_MODEL
     return _mjcf.guarded(lambda: _mjcf.describe(*_mjcf.load(xml)))

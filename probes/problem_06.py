@@ -1,25 +1,31 @@
 """Probes of problem 6: elementary rotations, the Cardan sequence, and the sheet's frames and vectors."""
 
 from . import module, probe
+from ._forms import ANY, Arr, Dict, Maybe, Tup
+
+#: the student's own value of an upstream function (``_own``): a rotation, or None when it cannot be had
+OWN = Maybe(Arr(3, 3))
+#: ``vectors()``: the coordinates of V in I, C1, C2, C3
+VECTORS = Dict({"I_v": Arr(3), "C1_v": Arr(3), "C2_v": Arr(3), "C3_v": Arr(3)})
 
 
-@probe(args=("", "angle"))
+@probe(returns=Arr(3, 3), says="R{0}({1})", args=("", "angle"))
 def elementary(pkg, axis, angle):
     rotations = module(pkg, "rotations")
     return {1: rotations.R1, 2: rotations.R2, 3: rotations.R3}[axis](angle)
 
 
-@probe(args=("angle", "angle", "angle"))
+@probe(returns=Arr(3, 3), says="cardan({0}, {1}, {2})", args=("angle", "angle", "angle"))
 def cardan(pkg, alpha, beta, gamma):
     return module(pkg, "rotations").cardan(alpha, beta, gamma)
 
 
-@probe
+@probe(returns=Dict({"A_IC1": Arr(3, 3), "A_IC2": Arr(3, 3), "A_IC3": Arr(3, 3)}), says="frames()")
 def frames(pkg):
     return module(pkg, "problem_06").frames()
 
 
-@probe
+@probe(returns=VECTORS, says="vectors()")
 def vectors(pkg):
     return module(pkg, "problem_06").vectors()
 
@@ -36,7 +42,11 @@ def _own(call):
         return None
 
 
-@probe(args=("angle", "angle", "angle"))
+@probe(
+    returns=Dict({"cardan": Arr(3, 3), "R1": OWN, "R2": OWN, "R3": OWN}),
+    says="cardan({0}, {1}, {2})",
+    args=("angle", "angle", "angle"),
+)
 def cardan_with_factors(pkg, alpha, beta, gamma):
     """``cardan(alpha, beta, gamma)`` with the package's own factors ``R1(alpha), R2(beta), R3(gamma)``."""
     rotations = module(pkg, "rotations")
@@ -48,7 +58,7 @@ def cardan_with_factors(pkg, alpha, beta, gamma):
     }
 
 
-@probe
+@probe(returns=Dict({"frames": ANY, "R1": OWN, "R2": OWN, "R3": OWN, "cardan": Tup(OWN, OWN, OWN)}), says="frames()")
 def frames_with_factors(pkg, alpha, beta, gamma):
     """``frames()`` with the package's own ``R3(gamma), R2(beta), R1(alpha)`` and ``cardan`` of the partial
     sequences ``(0, 0, gamma), (0, beta, gamma), (alpha, beta, gamma)``."""
@@ -63,7 +73,10 @@ def frames_with_factors(pkg, alpha, beta, gamma):
     }
 
 
-@probe
+@probe(
+    returns=Dict({"vectors": VECTORS, "frames": Maybe(Dict({"A_IC1": OWN, "A_IC2": OWN, "A_IC3": OWN}))}),
+    says="vectors()",
+)
 def vectors_with_frames(pkg):
     """``vectors()`` with the package's own ``frames()`` (None when they cannot be had)."""
     problem = module(pkg, "problem_06")

@@ -1,31 +1,32 @@
 """Probes of problem 7: skew/unskew, angular velocity from a transformation, the symbolic derivation."""
 
 from . import module, probe
+from ._forms import Arr, Dict, Items, Seq
 
 NAMES = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
 
 
-@probe(args=("vector",))
+@probe(returns=Arr(3, 3), says="skew({0})", args=("vector",))
 def skew(pkg, w):
     return module(pkg, "rotations").skew(w)
 
 
-@probe
+@probe(returns=Arr(3), says="unskew({0})")
 def unskew(pkg, W):
     return module(pkg, "rotations").unskew(W)
 
 
-@probe(args=("rotation", ""), rotation=0)
+@probe(returns=Arr(3), says="omega_body(A_IC, dA_IC)", args=("rotation", ""), rotation=0)
 def omega_body(pkg, A, dA):
     return module(pkg, "rotations").omega_body(A, dA)
 
 
-@probe(args=("rotation", ""), rotation=0)
+@probe(returns=Arr(3), says="omega_inertial(A_IC, dA_IC)", args=("rotation", ""), rotation=0)
 def omega_inertial(pkg, A, dA):
     return module(pkg, "rotations").omega_inertial(A, dA)
 
 
-@probe
+@probe(returns=Items(Seq(Arr(any_shape=True))), says="derive()")
 def symbolic(pkg, points):
     """Evaluate every expression of ``derive()`` at the given points (dicts of the six symbol values)."""
     import sympy as sp
@@ -49,12 +50,12 @@ def symbolic(pkg, points):
     return out
 
 
-@probe
+@probe(returns=Dict({"A_IC3": Arr(3, 3), "angles": Arr(3)}), says="animate()")
 def animate(pkg):
     return module(pkg, "problem_07").animate()
 
 
-@probe
+@probe(reference_only=True)
 def expressions(pkg, points):
     """The values of ``derive()``'s expressions at the given points, from the package's numeric rotations
     (``R3``, ``R2``, ``cardan``, ``cardan_rate_matrix``): what a correct derivation evaluates to."""

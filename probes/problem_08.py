@@ -3,26 +3,35 @@
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, ByArgs, Dict, Items, Maybe
 
 
-@probe(args=("angle", "angle", "angle"))
+@probe(returns=Arr(3, 3), says="cardan_rate_matrix({0}, {1}, {2})", args=("angle", "angle", "angle"))
 def rate_matrix(pkg, alpha, beta, gamma):
     return module(pkg, "rotations").cardan_rate_matrix(alpha, beta, gamma)
 
 
-@probe(args=("", "", "vector", "scalar"), rotation=1)
+@probe(
+    returns=ByArgs(lambda which, *_: Arr(3) if which == "cardan" else Arr(3, 3)),
+    says="the {0} step",
+    args=("", "", "vector", "scalar"),
+    rotation=1,
+)
 def step(pkg, which, x, I_omega, dt):
     p8 = module(pkg, "problem_08")
     func = {"euler": p8.euler_matrix_step, "cardan": p8.cardan_euler_step, "exp": p8.exponential_step}[which]
     return func(x, I_omega, dt)
 
 
-@probe
+@probe(
+    returns=ByArgs(lambda which: Dict({"A_IC": Arr(3, 3), "angles": Arr(3)}) if which == "b" else Arr(3, 3)),
+    says="part_{0}()",
+)
 def part(pkg, which):
     return getattr(module(pkg, "problem_08"), f"part_{which}")()
 
 
-@probe
+@probe(returns=Items(Maybe(Arr(None, 3, 3, finite=False))), says="the three runs")
 def paths(pkg):
     """A_IC at every step of the three runs (the package's own steps, start, step size and, for (b), its cardan):
     ``{"a": [...], "b": [...], "c": [...]}``, n + 1 matrices each; a run whose step raises is None."""

@@ -1,9 +1,13 @@
 """Probes of problem 9: relative coordinate systems."""
 
 from . import module, probe
+from ._forms import ANY, Arr, Dict, Maybe, Seq
+
+#: ``vectors()``: the coordinates of V in I, C1, C2, C3
+VECTORS = Dict({"I_v": Arr(3), "C1_v": Arr(3), "C2_v": Arr(3), "C3_v": Arr(3)})
 
 
-@probe
+@probe(returns=Dict({"to_inertial": Seq(ANY), "pairs": Seq(ANY)}), says="CoSys.get_transform over the chain")
 def chain(pkg, relatives):
     """Build C1 (relative to I), C2 (relative to C1), ... from the given A_BC; return every get_transform."""
     CoSys = module(pkg, "cosys").CoSys
@@ -16,7 +20,7 @@ def chain(pkg, relatives):
     }
 
 
-@probe(args=("rotation", "rotation"))
+@probe(returns=Dict({"A_BC": Arr(3, 3), "A_IC": Arr(3, 3)}), says="CoSys.set_transform", args=("rotation", "rotation"))
 def set_later(pkg, A_IB, A_BC):
     """Create C at the identity, then place it relative to B with set_transform; return A_BC read back and A_IC."""
     CoSys = module(pkg, "cosys").CoSys
@@ -26,12 +30,12 @@ def set_later(pkg, A_IB, A_BC):
     return {"A_BC": C.get_transform(B), "A_IC": C.get_transform()}
 
 
-@probe
+@probe(returns=VECTORS, says="vectors()")
 def vectors(pkg):
     return module(pkg, "problem_09").vectors()
 
 
-@probe
+@probe(returns=Dict({"vectors": VECTORS, "chain": Maybe(Seq(Arr(3, 3), length=4))}), says="vectors()")
 def vectors_with_chain(pkg):
     """``vectors()`` with the transformations of the package's own ``build_chain()``: ``A_IC3`` and ``A_CkC3``
     (None when they cannot be had)."""

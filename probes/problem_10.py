@@ -7,20 +7,20 @@ alone; the checks that use them are secret (graded on submission, never recorded
 from . import module, probe
 
 
-@probe
+@probe(reference_only=True)
 def course_c(pkg):
     """The course's approximate A_IC of (c), as printed (not orthonormal)."""
     return module(pkg, "problem_10").COURSE_C
 
 
-@probe
+@probe(reference_only=True)
 def key_a(pkg):
     """The key of (a) and the orthonormality defect of every option."""
     p10 = module(pkg, "problem_10")
     return {"key": p10.answer_a(), "defects": [p10.orthonormality_defect(A) for A in p10.MATRICES_A]}
 
 
-@probe
+@probe(reference_only=True)
 def key_b(pkg):
     """The key of (b), and for every option whether it is orthonormal and its determinant."""
     import numpy as np

@@ -3,27 +3,28 @@
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Either, Text
 
 BODIES = ("cuboid", "ellipsoid", "particles")
 SYMBOLS = ("m", "a", "b", "c")
 
 
-@probe(args=("vector", ""))
+@probe(returns=Arr(3), says="centre_of_gravity(masses, points)", args=("vector", ""))
 def centre_of_gravity(pkg, masses, points):
     return module(pkg, "inertia").centre_of_gravity(masses, points)
 
 
-@probe
+@probe(returns=Arr(3, 3), says="point_masses_inertia(masses, points)")
 def point_masses(pkg, masses, points):
     return module(pkg, "inertia").point_masses_inertia(masses, points)
 
 
-@probe(args=("", "scalar", "scalar", "scalar", "scalar"))
+@probe(returns=Arr(3, 3), says="{0}_inertia({1}, {2}, {3}, {4})", args=("", "scalar", "scalar", "scalar", "scalar"))
 def body(pkg, name, m, a, b, c):
     return getattr(module(pkg, "inertia"), f"{name}_inertia")(m, a, b, c)
 
 
-@probe
+@probe(returns=Either(Text(), Arr(None, 3, 3)), says="{0}_inertia_symbolic()")
 def symbolic(pkg, name, points):
     """The symbolic inertia of body ``name`` evaluated at each ``(m, a, b, c)`` of ``points``; a string says why
     it cannot be evaluated."""
@@ -41,6 +42,10 @@ def symbolic(pkg, name, points):
     return np.array(values)
 
 
-@probe(args=("scalar", "scalar", "scalar", "scalar"))
+@probe(
+    returns=Dict({"cuboid": Arr(3), "ellipsoid": Arr(3), "particles": Arr(3)}),
+    says="part_b({0}, {1}, {2}, {3})",
+    args=("scalar", "scalar", "scalar", "scalar"),
+)
 def dimensions(pkg, m, I1, I2, I3):
     return module(pkg, "problem_16").part_b(m, I1, I2, I3)

@@ -1,9 +1,10 @@
 """Probes of problem 20: the validity test of inertia matrices."""
 
 from . import module, probe
+from ._forms import Flag, Seq, Text, Tup
 
 
-@probe
+@probe(returns=Seq(Tup(Flag(), Text()), length=lambda matrices: len(matrices)), says="is_inertia_matrix")
 def is_inertia(pkg, matrices):
     """``[ok, reason]`` of ``is_inertia_matrix`` for each matrix."""
     out = []
@@ -14,20 +15,20 @@ def is_inertia(pkg, matrices):
     return out
 
 
-@probe
+@probe(reference_only=True)
 def sheet_matrices(pkg):
     """The four matrices of part (a) as printed."""
     return module(pkg, "problem_20").MATRICES_A
 
 
-@probe
+@probe(reference_only=True)
 def key_a(pkg):
     """The options of (a) that are not inertia matrices, and the verdict on every option."""
     p20 = module(pkg, "problem_20")
     return {"keys": p20.key_a(), "classify": {k: [bool(ok), str(reason)] for k, (ok, reason) in p20.classify().items()}}
 
 
-@probe
+@probe(reference_only=True)
 def key_b(pkg):
     """The key of (b), from the package's answers.toml."""
     import tomllib

@@ -3,21 +3,25 @@
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Seq
 
 CHAINS = {"a": ("chain_a", "jacobian_a"), "b": ("chain_b", "jacobian_b")}
 
 
-@probe(args=("", "vector", "scalar"))
+@probe(returns=Arr(None), says="chain_{0}(q, d)", args=("", "vector", "scalar"))
 def chain(pkg, case, q, d):
     return getattr(module(pkg, "planar"), CHAINS[case][0])(q, d)
 
 
-@probe(args=("", "vector", "scalar"))
+@probe(returns=Arr(None, None), says="jacobian_{0}(q, d)", args=("", "vector", "scalar"))
 def jacobian(pkg, case, q, d):
     return getattr(module(pkg, "planar"), CHAINS[case][1])(q, d)
 
 
-@probe
+@probe(
+    returns=Dict({"J": Arr(None, None), "plus": Seq(Arr(None)), "minus": Seq(Arr(None))}),
+    says="chain_{0} and jacobian_{0}",
+)
 def jacobian_and_steps(pkg, case, q, d, h):
     """The analytic Jacobian and the chain at ``q +- h e_j`` for every joint j (for central differences)."""
     planar = module(pkg, "planar")
@@ -33,7 +37,7 @@ def _complex_step(f, q):
     return np.column_stack([np.imag(f(q + 1e-30j * e)) / 1e-30 for e in np.eye(q.size)])
 
 
-@probe
+@probe(reference_only=True)
 def mistakes(pkg, q, d):
     """What ``chain_a`` / ``chain_b`` (by the length of ``q``) and their Jacobians give with each known mistake
     (``mistaken_layout``, which only the reference has): ``{"chain": {mistake: x}, "jacobian": {mistake: J}}``."""
@@ -45,7 +49,7 @@ def mistakes(pkg, q, d):
     }
 
 
-@probe
+@probe(reference_only=True)
 def sheet_case(pkg):
     """Case (2) of the sheet with ``q_b``: the joint coordinates, ``d`` and the printed end-effector pose."""
     p21 = module(pkg, "problem_21")

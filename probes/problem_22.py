@@ -4,26 +4,27 @@ import os
 import sys
 
 from . import module, probe
+from ._forms import ANY, Arr, Dict, Maybe, Num, Seq, Text
 
 
-@probe(args=("vector", "scalar"))
+@probe(returns=Arr(3), says="end_effector_loop(q, d)", args=("vector", "scalar"))
 def loop(pkg, q, d):
     return module(pkg, "planar").end_effector_loop(q, d)
 
 
-@probe(args=("vector", "scalar"))
+@probe(returns=Arr(3), says="end_effector_recursive(q, d)", args=("vector", "scalar"))
 def recursive(pkg, q, d):
     return module(pkg, "planar").end_effector_recursive(q, d)
 
 
-@probe
+@probe(returns=Seq(Arr(3)), says="point_k(q, k)")
 def points(pkg, q):
     """``[point_k(q, k) for k = 0..n]``."""
     point_k = module(pkg, "planar").point_k
     return [point_k(q, k) for k in range(len(q) // 2 + 1)]
 
 
-@probe
+@probe(reference_only=True)
 def mistakes(pkg, q, d):
     """The arm with each known mistake (``mistaken_walk``, which only the reference has): ``{mistake: {"points":
     [(x_k, y_k, g_(k-1), g_k) for k = 1..n], "end": (xe, ye, g_n)}}``."""
@@ -35,14 +36,14 @@ def mistakes(pkg, q, d):
     return found
 
 
-@probe
+@probe(reference_only=True)
 def sheet_case(pkg):
     """The sheet's case q3 (corrected in the problem data), ``d`` and the printed end-effector pose."""
     p22 = module(pkg, "problem_22")
     return {"q": p22.joint_vector("q3"), "d": p22.D, "target": p22.TARGET_Q3}
 
 
-@probe
+@probe(returns=Dict({"depth": Num(), "function": Text(), "value": ANY}), says="{0}")
 def nesting(pkg, call, q, d):
     """Run ``point_k(q, n)`` or ``end_effector_recursive(q, d)`` and report the deepest nesting of one function of
     the package and what the call returned: ``{"depth": calls of that function active at once, "function": its
@@ -82,7 +83,7 @@ def nesting(pkg, call, q, d):
     return {"depth": deepest[code], "function": code.co_name, "value": value}
 
 
-@probe
+@probe(returns=Dict({"end": Arr(3), "point": Maybe(Arr(3))}), says="end_effector_recursive(q, d)")
 def recursive_with_point(pkg, q, d):
     """``end_effector_recursive(q, d)`` with the package's own ``point_k(q, n)`` (None when it cannot be had)."""
     import numpy as np

@@ -4,11 +4,17 @@ contacts."""
 import numpy as np
 
 from . import _trees, module, probe
+from ._forms import Arr, Dict, Either, Seq, Text
+from ._trees import OUTLINE, POSES
 
 _SYMBOLIC = {}
 
 
-@probe(args=("angle", "angle"))
+@probe(
+    returns=Dict({**POSES.fields, "outline": OUTLINE, "x": Arr(any_shape=True)}),
+    says="build_walker()",
+    args=("angle", "angle"),
+)
 def walker(pkg, alpha, gamma):
     """The walker of ``build_walker`` at ``q = (alpha, gamma)``: body states, outline and ``cog_positions``."""
     p25 = module(pkg, "problem_25")
@@ -18,7 +24,7 @@ def walker(pkg, alpha, gamma):
     return {**_trees.state(tree, motion=False), "outline": _trees.outline(tree), "x": x}
 
 
-@probe
+@probe(returns=POSES, says="forward_kinematics of the tree")
 def tree_poses(pkg, description, q):
     return _trees.tree_state(pkg, description, q)
 
@@ -38,7 +44,21 @@ def _symbolic(pkg):
     return _SYMBOLIC[pkg.__name__]
 
 
-@probe
+@probe(
+    returns=Either(
+        Dict({"free_symbols": Seq(Text()), "symbols": Seq(Text())}),
+        Dict(
+            {
+                "x": Seq(Arr(any_shape=True)),
+                "J": Seq(Arr(any_shape=True)),
+                "plus": Seq(Seq(Arr(any_shape=True))),
+                "minus": Seq(Seq(Arr(any_shape=True))),
+                "symbols": Seq(Text()),
+            }
+        ),
+    ),
+    says="cog_positions_symbolic()",
+)
 def symbolic(pkg, points, h):
     """``x`` and ``J`` of ``cog_positions_symbolic`` at every point ``(alpha, gamma)``, and ``x`` at the points
     shifted by ``+-h`` in each coordinate."""
@@ -59,7 +79,7 @@ def symbolic(pkg, points, h):
     return result
 
 
-@probe
+@probe(reference_only=True)
 def walker_case(pkg):
     """The walker of ``build_walker`` as a plain-data description, and part (c)'s configuration."""
     p25 = module(pkg, "problem_25")
@@ -67,7 +87,7 @@ def walker_case(pkg):
             "gamma_c": p25.GAMMA_C}
 
 
-@probe(args=("angle", "angle"))
+@probe(reference_only=True, args=("angle", "angle"))
 def leg_jacobians(pkg, alpha, gamma):
     """Rows ``I_J_S[0:2]`` and ``I_J_R[2]`` of each leg's Jacobians at ``q = (alpha, gamma)`` (6 x 2), the
     Jacobian of ``x = (x_st, y_st, gamma_st, x_sw, y_sw, gamma_sw)``."""

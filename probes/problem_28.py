@@ -4,9 +4,10 @@ import contextlib
 import io
 
 from . import module, probe
+from ._forms import Text
 
 
-@probe
+@probe(returns=Text(), says="main()")
 def output(pkg):
     buffer = io.StringIO()
     with contextlib.redirect_stdout(buffer):

@@ -3,9 +3,15 @@
 import numpy as np
 
 from . import _trees, module, probe
+from ._forms import Arr, Dict, Seq, Tup
+from ._trees import BODIES, OUTLINE, POSES
 
 
-@probe(args=("vector",))
+@probe(
+    returns=Dict({**POSES.fields, "outline": OUTLINE, "end_effector": Arr(any_shape=True, finite=False)}),
+    says="build_robot()",
+    args=("vector",),
+)
 def robot(pkg, q):
     """The arm of ``build_robot`` at ``q``: body states, outline and ``end_effector_position``."""
     p32 = module(pkg, "problem_32")
@@ -14,14 +20,14 @@ def robot(pkg, q):
     return {**_trees.state(tree, motion=False), "outline": _trees.outline(tree), "end_effector": end_effector}
 
 
-@probe(args=("", "vector", "vector"))
+@probe(returns=Arr(None), says="generalized_gravity(tree, q, I_grav)", args=("", "vector", "vector"))
 def gravity(pkg, description, q, I_grav):
     tree_module = module(pkg, "tree")
     return tree_module.generalized_gravity(_trees.build(tree_module, description), np.asarray(q, dtype=float),
                                            np.asarray(I_grav, dtype=float))
 
 
-@probe
+@probe(returns=Dict({"g": Arr(None), "shifted": Seq(Tup(BODIES, BODIES))}), says="generalized_gravity(tree, q, I_grav)")
 def potential(pkg, description, q, I_grav, h):
     """``generalized_gravity`` at ``q`` and the poses at ``q +- h e_i``."""
     tree_module = module(pkg, "tree")
@@ -38,14 +44,14 @@ def potential(pkg, description, q, I_grav, h):
     return {"g": g, "shifted": shifted, "names": [body.name for body in tree.bodies]}
 
 
-@probe
+@probe(returns=Dict({"t": Arr(None), "q": Arr(None, 3)}), says="desired_trajectory()")
 def trajectory(pkg):
     """The desired joint trajectory ``{"t", "q"}`` (inverse kinematics on the 209-point grid)."""
     table = module(pkg, "problem_32").desired_trajectory()
     return {"t": table["t"], "q": table["q"]}
 
 
-@probe
+@probe(returns=Seq(Arr(3)), says="gravity_compensation(tree, q)")
 def torques(pkg, qs):
     """``gravity_compensation(build_robot(), q)`` for every row of ``qs``."""
     p32 = module(pkg, "problem_32")
@@ -53,7 +59,7 @@ def torques(pkg, qs):
     return [p32.gravity_compensation(tree, q) for q in np.asarray(qs, dtype=float)]
 
 
-@probe
+@probe(reference_only=True)
 def robot_case(pkg):
     """The arm of ``build_robot`` as a plain-data description, and the start of the end effector's path."""
     p32 = module(pkg, "problem_32")

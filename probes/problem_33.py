@@ -4,9 +4,11 @@ with rolling contacts."""
 import numpy as np
 
 from . import _trees, module, probe
+from ._forms import Dict
+from ._trees import OUTLINE, STATE
 
 
-@probe(args=("vector", "vector", "vector"))
+@probe(returns=Dict({**STATE.fields, "outline": OUTLINE}), says="build_walker()", args=("vector", "vector", "vector"))
 def walker(pkg, q, qd, qdd):
     """The walker of ``build_walker`` after a full pass at ``(q, qd, qdd)``."""
     tree = module(pkg, "problem_25").build_walker()
@@ -14,7 +16,7 @@ def walker(pkg, q, qd, qdd):
     return {**_trees.state(tree), "outline": _trees.outline(tree)}
 
 
-@probe
+@probe(reference_only=True)
 def walker_case(pkg):
     """The sheet's test state: the walker as a plain-data description, ``Q``, ``QD``, ``QDD``, and the foot's
     radius."""

@@ -2,9 +2,11 @@
 3-DOF joints."""
 
 from . import _trees, module, probe
+from ._trees import OUTLINE, STATE
+from ._forms import Dict
 
 
-@probe
+@probe(returns=Dict({**STATE.fields, "outline": OUTLINE}), says="build_biped()")
 def biped(pkg, t):
     """The biped of ``build_biped`` following ``gait(t)``; the outline starts at the main body."""
     p34 = module(pkg, "problem_34")
@@ -13,7 +15,7 @@ def biped(pkg, t):
     return {**_trees.state(tree), "outline": _trees.outline(tree, tree["main_body"])}
 
 
-@probe
+@probe(reference_only=True)
 def biped_case(pkg, frame):
     """The biped of ``build_biped`` as a plain-data description, the time of the gait's ``frame`` and ``gait(t)``
     there (``q``, ``qd``, ``qdd``)."""

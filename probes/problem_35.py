@@ -3,6 +3,7 @@
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Items, Seq, Text
 
 #: the entries of a joint-function dict, vectors as 3 x 1 and S, R as 3 x nq
 KEYS = ("A_DpDs", "Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "omega_rel", "omega_rel_dot", "S", "R")
@@ -35,7 +36,9 @@ def _functions(pkg, kind):
     return _FUNCTIONS[key]
 
 
-@probe
+@probe(
+    returns=Dict({"problems": Items(Text()), "values": Seq(Items(Arr(any_shape=True)))}), says="{0}_joint_function()"
+)
 def joint_function(pkg, kind, points):
     """The entries of ``<kind>_joint_function()`` at every point ``{"q", "qd", "qdd", "r"}``."""
     functions, problems = _functions(pkg, kind)
@@ -46,7 +49,7 @@ def joint_function(pkg, kind, points):
     return {"problems": problems, "values": values}
 
 
-@probe
+@probe(reference_only=True)
 def numeric_joint_function(pkg, kind, points):
     """The package's numeric joint function of ``kind`` (the joint class of its ``tree`` module) at every point, as
     dicts with the entries of ``KEYS`` (vectors as 3-vectors)."""

@@ -4,9 +4,10 @@ import contextlib
 import io
 
 from . import module, probe
+from ._forms import ANY, Text
 
 
-@probe
+@probe(returns=Text(), says="{0}()")
 def output(pkg, part):
     script = getattr(module(pkg, "problem_36"), part)
     buffer = io.StringIO()
@@ -15,6 +16,6 @@ def output(pkg, part):
     return buffer.getvalue()
 
 
-@probe
+@probe(returns=ANY, says="class_hierarchy()")
 def class_hierarchy(pkg):
     return module(pkg, "problem_36").class_hierarchy()

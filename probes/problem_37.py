@@ -4,12 +4,13 @@ simulation under each controller (with the end effector's motion from the packag
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_run, fixed_step, trace
+from ._dynamics import MFG, fixed_run, fixed_step, trace
+from ._forms import Arr, Dict, Maybe, Seq
 
 TABLE = ("t", "x", "xd", "q", "qd", "qdd")
 
 
-@probe
+@probe(reference_only=True)
 def trajectory(pkg):
     """The desired trajectory of problem 32 (``{"t", "x", "xd", "q", "qd", "qdd"}``, one row per time); the grader
     calls it on the reference and hands the table to the student's simulation, as the course's data file did."""
@@ -17,7 +18,7 @@ def trajectory(pkg):
     return {key: np.array(table[key], dtype=float) for key in TABLE}
 
 
-@probe
+@probe(returns=Seq(Arr(3), length=lambda controller, cases: len(cases)), says="the {0} torque")
 def torques(pkg, controller, cases):
     """The torques of ``gravity_compensation_torque`` or ``computed_torque`` (``controller``) for every case
     ``(M, f, g, q, qd, q_des, qd_des, qdd_des)``."""
@@ -32,7 +33,7 @@ def torques(pkg, controller, cases):
     return out
 
 
-@probe
+@probe(returns=Seq(Arr(6), length=lambda controller, table, cases: len(cases)), says="robot_ode")
 def robot_ode(pkg, controller, table, cases):
     """``robot_ode(t, y, build_dynamic_robot(), table, controller)`` for every ``(t, y)`` of ``cases``."""
     p37 = module(pkg, "problem_37")
@@ -41,8 +42,12 @@ def robot_ode(pkg, controller, table, cases):
             for t, y in cases]
 
 
-@probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_37.simulate_fixed",
-               "schemes": ("euler", "symplectic")})
+@probe(
+    returns=Dict({"t": Arr(None), "q": Arr(None, 3), "qd": Arr(None, 3), "x": Arr(None, 3), "xd": Arr(None, 3)}),
+    says="simulate({0!s}, table, {2})",
+    motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_37.simulate_fixed",
+               "schemes": ("euler", "symplectic")},
+)
 def simulate(pkg, controller, table, t_end):
     """``simulate(controller, table, t_end)`` and the end effector's inertial position ``x`` and velocity ``xd`` at
     every output time, from the package's own kinematics."""
@@ -57,7 +62,11 @@ def simulate(pkg, controller, table, t_end):
     return {"t": t, "q": q, "qd": qd, "x": np.array(x).reshape(-1, 3), "xd": np.array(xd).reshape(-1, 3)}
 
 
-@probe(terms="problem_37.robot_ode_terms")
+@probe(
+    returns=Seq(Dict({"ode": Arr(6), "mfg": Maybe(MFG)}), length=lambda controller, table, cases: len(cases)),
+    says="robot_ode",
+    terms="problem_37.robot_ode_terms",
+)
 def robot_ode_with_mfg(pkg, controller, table, cases):
     """``robot_ode`` as in the probe ``robot_ode``, each with the package's own ``M, f, g`` of the robot at the
     case's ``(q, qd)`` (``equations_of_motion``; None when they cannot be had)."""
@@ -77,7 +86,7 @@ def robot_ode_with_mfg(pkg, controller, table, cases):
     return out
 
 
-@probe
+@probe(returns=Dict({"t": Arr(None), "q": Arr(None, 3), "qd": Arr(None, 3)}), says="your robot_ode integrated")
 def own_run(pkg, controller, table, t_end):
     """The robot under ``controller`` integrated from the package's own ``robot_ode`` by this probe's loop (scipy's
     ``solve_ivp``, RK45, rtol 1e-6, piece by piece between the table's times, output at them up to ``t_end``), from
@@ -101,7 +110,7 @@ def own_run(pkg, controller, table, t_end):
     return {"t": times, "q": rows[:, :3], "qd": rows[:, 3:]}
 
 
-@probe
+@probe(reference_only=True)
 def simulate_fixed(pkg, controller, table, t_end, h, scheme):
     """The robot of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``robot_ode``
     (the diagnosis engine calls it on the reference)."""
@@ -111,7 +120,7 @@ def simulate_fixed(pkg, controller, table, t_end, h, scheme):
     return fixed_run(fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, controller), y0, t_end, h, scheme), 3)
 
 
-@probe
+@probe(reference_only=True)
 def robot_ode_terms(pkg, controller, table, cases):
     """``robot_ode`` of ``robot_ode_with_mfg`` split into named terms (the diagnosis engine calls it on the
     reference): ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g) + (0, M^-1 tau)``, with the package's own ``M, f, g``

@@ -5,9 +5,10 @@ import numpy as np
 
 from . import module, probe
 from ._dynamics import energies, fixed_run, fixed_step, trace
+from ._forms import Arr, Dict, Seq
 
 
-@probe(terms="problem_38.walker_ode_terms")
+@probe(returns=Seq(Arr(4), length=lambda cases: len(cases)), says="walker_ode", terms="problem_38.walker_ode_terms")
 def walker_ode(pkg, cases):
     """``walker_ode(t, y, build_dynamic_walker())`` for every ``(t, y)`` of ``cases``."""
     p38 = module(pkg, "problem_38")
@@ -15,8 +16,20 @@ def walker_ode(pkg, cases):
     return [np.array(p38.walker_ode(float(t), np.asarray(y, dtype=float), tree), dtype=float) for t, y in cases]
 
 
-@probe(motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_38.simulate_fixed",
-               "schemes": ("euler", "symplectic")})
+@probe(
+    returns=Dict(
+        {
+            "t": Arr(None),
+            "q": Arr(None, 2),
+            "qd": Arr(None, 2),
+            "T": Arr(None, finite=False),
+            "V": Arr(None, finite=False),
+        }
+    ),
+    says="simulate({0}, {1})",
+    motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_38.simulate_fixed",
+               "schemes": ("euler", "symplectic")},
+)
 def simulate(pkg, t_end, n, I_grav):
     """``simulate(t_end, n)`` and the energies ``T``, ``V`` (under ``I_grav``) of the package's own walker at every
     output time."""
@@ -27,7 +40,7 @@ def simulate(pkg, t_end, n, I_grav):
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}
 
 
-@probe
+@probe(reference_only=True)
 def simulate_fixed(pkg, t_end, n, I_grav, h, scheme):
     """The walker of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own
     ``walker_ode`` (the diagnosis engine calls it on the reference)."""
@@ -37,7 +50,7 @@ def simulate_fixed(pkg, t_end, n, I_grav, h, scheme):
     return fixed_run(fixed_step(lambda t, y: p38.walker_ode(t, y, tree), y0, t_end, h, scheme), 2)
 
 
-@probe
+@probe(reference_only=True)
 def walker_ode_terms(pkg, cases):
     """``walker_ode`` of every case split into named terms (the diagnosis engine calls it on the reference):
     ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g)`` with the package's own ``M, f, g``."""

@@ -4,11 +4,17 @@ grader sends (the grader never sees the expressions themselves)."""
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Either, Seq, Text
 
 #: the symbols the answer may use
 NAMES = ("q1", "q2", "dq1", "dq2", "l1", "l2", "m1", "m2", "g")
 SHAPES = {"M": (2, 2), "f": (2,), "g": (2,)}
 _ANSWERS = {}
+
+
+def _each(points):
+    """One value per point."""
+    return len(points)
 
 
 def _answer(pkg):
@@ -44,7 +50,13 @@ def _functions(pkg):
     return _ANSWERS[cache]
 
 
-@probe
+@probe(
+    returns=Either(
+        Dict({"problem": Text()}),
+        Dict({"M": Seq(Arr(2, 2), length=_each), "f": Seq(Arr(2), length=_each), "g": Seq(Arr(2), length=_each)}),
+    ),
+    says="equations_of_motion_symbolic()",
+)
 def evaluate(pkg, points):
     """``{"M": [...], "f": [...], "g": [...]}``: the answer at every point ``{symbol name: value}``; or
     ``{"problem": text}`` if an expression has the wrong shape or uses symbols outside ``NAMES``."""

@@ -5,13 +5,13 @@ import numpy as np
 from . import module, probe
 
 
-@probe
+@probe(reference_only=True)
 def keys(pkg):
     """``{"a", "b", "c"}``: the keys, computed by the package's reference-only functions."""
     return {key: int(value) for key, value in module(pkg, "problem_41").answers().items()}
 
 
-@probe
+@probe(reference_only=True)
 def residuals(pkg, l, m):
     """Per question, per option: (a) the relative residual of the statement on a random motion, (b) of the option
     against the virtual work, (c) the largest entry of the option minus the ball's ``m J.T J`` for ``l``, ``m``."""

@@ -5,6 +5,10 @@ import numpy as np
 
 from . import module, probe
 from ._dynamics import fixed_step
+from ._forms import Arr, Dict, Either, Flag, Maybe, Num, Text
+
+#: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
+EVENT = Dict({"values": Arr(None), "terminal": Maybe(Flag()), "direction": Maybe(Num())})
 
 
 def _attribute(function, name):
@@ -14,7 +18,7 @@ def _attribute(function, name):
     return bool(value) if name == "terminal" else float(value)
 
 
-@probe
+@probe(returns=Either(Dict({"problem": Text()}), Dict({"apex": EVENT, "landing": EVENT})), says="make_events()")
 def events(pkg, states):
     """``{"apex", "landing"}``: each event function's values at every state ``y = (height, velocity)`` and its
     ``terminal`` and ``direction`` attributes (``None`` when missing); ``{"problem": text}`` when
@@ -33,9 +37,23 @@ def _optional(value):
     return None if value is None else float(value)
 
 
-@probe(args=("scalar", "scalar"), draw=False,
-       motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
-               "schemes": ("euler",)})
+@probe(
+    returns=Dict(
+        {
+            "t_apex": Maybe(Num()),
+            "height_apex": Maybe(Num()),
+            "t_land": Maybe(Num()),
+            "v_land": Maybe(Num()),
+            "t": Arr(None),
+            "y": Arr(None, 2),
+        }
+    ),
+    says="throw({0}, {1})",
+    args=("scalar", "scalar"),
+    draw=False,
+    motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
+               "schemes": ("euler",)},
+)
 def throw(pkg, v0, drag):
     """``throw(v0, drag)``: the apex and the landing, and the run ``t``, ``y`` (rows ``(height, velocity)``)."""
     run = module(pkg, "problem_42").throw(float(v0), float(drag))
@@ -49,14 +67,14 @@ def throw(pkg, v0, drag):
     return {key: _optional(run.get(key)) for key in ("t_apex", "height_apex", "t_land", "v_land")} | {"t": t, "y": y}
 
 
-@probe
+@probe(reference_only=True)
 def key(pkg):
     """``{"b"}``: the key of (b), computed by the package's reference-only function (called on the reference
     only)."""
     return {"b": int(module(pkg, "problem_42").answer_b())}
 
 
-@probe
+@probe(reference_only=True)
 def throw_fixed(pkg, v0, drag, h, scheme):
     """The ball of ``throw`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``ball_ode``, until
     the height falls through zero (the diagnosis engine calls it on the reference)."""

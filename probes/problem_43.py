@@ -4,6 +4,7 @@ constrained system and its solution), with what the physics checks need from the
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Num, Seq, Tup
 
 
 def _p43(pkg):
@@ -14,12 +15,12 @@ def _vector(x):
     return np.asarray(x, dtype=float)
 
 
-@probe(args=("scalar", "scalar"))
+@probe(returns=Arr(3, 3), says="mass_matrix({0}, {1})", args=("scalar", "scalar"))
 def mass_matrix(pkg, m, theta):
     return np.asarray(_p43(pkg).mass_matrix(m, theta), dtype=float)
 
 
-@probe(args=("scalar", "scalar"))
+@probe(returns=Dict({"f": Arr(3), "g": Arr(3)}), says="forces({0}, {1})", args=("scalar", "scalar"))
 def forces(pkg, m, g):
     """``{"f", "g"}`` of ``forces(m, g)``."""
     f, G = _p43(pkg).forces(m, g)
@@ -30,7 +31,18 @@ def _bias(p43, q, qd):
     return _vector(p43.constraint_bias(q, qd)).reshape(-1)
 
 
-@probe
+@probe(
+    returns=Dict(
+        {
+            "c": Num(),
+            "J": Arr(ndim=2),
+            "sigma": Arr(1),
+            "c_coordinates": Seq(Tup(Num(), Num()), length=3),
+            "c_path": Arr(3),
+        }
+    ),
+    says="constraint, constraint_jacobian and constraint_bias",
+)
 def constraint_terms(pkg, q, qd, d, h):
     """``c``, ``J`` and ``sigma`` at ``(q, qd)``, and ``c`` at ``q +- h e_i`` (``"c_coordinates"``) and at
     ``q + (-1, 0, 1) h qd`` (``"c_path"``), for the derivatives of the package's own constraint."""
@@ -43,14 +55,24 @@ def constraint_terms(pkg, q, qd, d, h):
     return {"c": c, "J": J, "sigma": _bias(p43, q, qd), "c_coordinates": coordinates, "c_path": path}
 
 
-@probe(args=("vector", "vector", "scalar", "scalar", "scalar"))
+@probe(
+    returns=Dict({"A": Arr(4, 4), "b": Arr(4)}),
+    says="constrained_system(q, qd, {2}, {3}, {4})",
+    args=("vector", "vector", "scalar", "scalar", "scalar"),
+)
 def constrained_system(pkg, q, qd, m, theta, g):
     """``{"A", "b"}`` of ``constrained_system(q, qd, m, theta, g)``."""
     A, b = _p43(pkg).constrained_system(_vector(q), _vector(qd), m, theta, g)
     return {"A": _vector(A), "b": _vector(b).reshape(-1)}
 
 
-@probe(args=("vector", "vector", "scalar", "scalar", "scalar"))
+@probe(
+    returns=Dict(
+        {"qdd": Arr(3), "lam": Arr(1), "M": Arr(3, 3), "f": Arr(3), "g": Arr(3), "J": Arr(ndim=2), "sigma": Arr(1)}
+    ),
+    says="accelerations(q, qd, {2}, {3}, {4})",
+    args=("vector", "vector", "scalar", "scalar", "scalar"),
+)
 def accelerations(pkg, q, qd, m, theta, g):
     """``{"qdd", "lam"}`` of ``accelerations(q, qd, m, theta, g)``, and the package's own ``M``, ``f``, ``g``,
     ``J`` and ``sigma`` at that state."""
@@ -63,7 +85,7 @@ def accelerations(pkg, q, qd, m, theta, g):
             "J": _vector(p43.constraint_jacobian(q)), "sigma": _bias(p43, q, qd)}
 
 
-@probe
+@probe(reference_only=True)
 def system_mistakes(pkg, q, qd, m, theta, g):
     """``{mistake: {"A", "b", "qdd", "lam"}}``: the constrained system that known mistakes give, built from the
     package's own pieces, and its solution (called on the reference only)::

@@ -5,9 +5,12 @@ import numpy as np
 
 from . import module, probe
 from ._dynamics import fixed_run, fixed_step, trace
+from ._forms import Arr, Dict, Flag, Maybe, Num
 
+#: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
+EVENT = Dict({"values": Arr(None), "terminal": Maybe(Flag()), "direction": Maybe(Num())})
 
-@probe(args=("", "scalar", "scalar"))
+@probe(returns=EVENT, says="make_contact_event({1}, {2})", args=("", "scalar", "scalar"))
 def event(pkg, states, s, d):
     """The values of ``make_contact_event(s, d)`` at every state ``y = (q, qd)``, and its ``terminal`` and
     ``direction`` attributes (``None`` when missing)."""
@@ -18,8 +21,23 @@ def event(pkg, states, s, d):
             "direction": None if direction is None else float(direction)}
 
 
-@probe(motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
-               "schemes": ("euler", "symplectic")})
+@probe(
+    returns=Dict(
+        {
+            "t": Arr(None),
+            "q": Arr(None, 3),
+            "qd": Arr(None, 3),
+            "c": Arr(None),
+            "t_event": Maybe(Num()),
+            "q_event": Arr(3),
+            "qd_event": Arr(3),
+        },
+        optional=("q_event", "qd_event"),
+    ),
+    says="simulate(q0, {1}, {2})",
+    motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
+               "schemes": ("euler", "symplectic")},
+)
 def simulate(pkg, q0, t_end, s):
     """``simulate(q0, t_end, s)`` (the sheet's bar otherwise): the run, the event, and ``c`` of the package's own
     ``problem_43.constraint`` at every output time (the first support, ``d = 0``)."""
@@ -35,7 +53,7 @@ def simulate(pkg, q0, t_end, s):
     return out
 
 
-@probe
+@probe(reference_only=True)
 def simulate_fixed(pkg, q0, t_end, s, h, scheme):
     """The bar of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``bar_ode``,
     until it hits the second support (the diagnosis engine calls it on the reference)."""

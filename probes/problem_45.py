@@ -4,6 +4,7 @@ impulses, the limit of s), evaluated at points the grader sends (the grader neve
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Either, Seq, Text
 
 #: the symbols the answers may use
 NAMES = ("s", "l", "d", "m", "theta", "phid")
@@ -38,7 +39,10 @@ def _problem(key, matrix):
     return None
 
 
-@probe
+@probe(
+    returns=Either(Dict({"problem": Text()}), Seq(Arr(any_shape=True), length=lambda key, points: len(points))),
+    says="the answer {0}",
+)
 def evaluate(pkg, key, points):
     """``[value at every point {symbol name: value}]`` of the answer ``key`` (``"J"``: ``impact_jacobian()``,
     ``"Lam"``: ``impulses()``, ``"s_limit"``: ``opening_limit()``); or ``{"problem": text}`` if it has the wrong

@@ -5,6 +5,10 @@ import numpy as np
 
 from . import module, probe
 from ._dynamics import fixed_run, fixed_step, trace
+from ._forms import Arr, Dict, Flag, Maybe, Num, Seq, Tup
+
+#: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
+EVENT = Dict({"values": Arr(None), "terminal": Maybe(Flag()), "direction": Maybe(Num())})
 
 
 def _robot(pkg):
@@ -16,7 +20,7 @@ def _matrix(value, rows):
     return array.reshape(rows, -1) if array.size and array.size % rows == 0 else array
 
 
-@probe
+@probe(returns=EVENT, says="make_wire_event(robot)")
 def event(pkg, states):
     """The event function of ``make_wire_event(robot)`` at every state ``y``, and its ``terminal`` and
     ``direction`` attributes (``None`` when missing)."""
@@ -39,7 +43,11 @@ def _terms(pkg, tree, q, qd, baumgarte, wire=None):
     return {"J": _matrix(J, 1), "sigma": np.asarray(sigma, dtype=float).reshape(-1)}
 
 
-@probe(terms="problem_46.constraint_terms_split")
+@probe(
+    returns=Seq(Dict({"J": Arr(ndim=2), "sigma": Arr(1)}), length=lambda cases: len(cases)),
+    says="constraint_terms",
+    terms="problem_46.constraint_terms_split",
+)
 def constraint_terms(pkg, cases):
     """``{"J", "sigma"}`` of ``constraint_terms`` for every ``(q, qd, baumgarte)``."""
     tree = _robot(pkg)
@@ -65,7 +73,7 @@ def _wire_parts(pkg, q, qd):
             "J_S": J_S, "a_E": a_E, "direction": direction}
 
 
-@probe
+@probe(reference_only=True)
 def constraint_terms_split(pkg, cases):
     """``sigma`` of ``constraint_terms`` for every ``(q, qd, baumgarte)`` split into named terms (the diagnosis
     engine calls it on the reference): the bias, the centripetal part and, with ``baumgarte``, the stabilisation;
@@ -83,7 +91,7 @@ def constraint_terms_split(pkg, cases):
     return {"terms": terms, "extra": extra}
 
 
-@probe
+@probe(reference_only=True)
 def constraint_mistakes(pkg, q, qd, baumgarte):
     """``{mistake: {"J", "sigma"}}``: the constraint terms that known mistakes give, from the package's kinematics
     and the sheet's data in its ``problem_46`` (called on the reference only)."""
@@ -106,7 +114,10 @@ def constraint_mistakes(pkg, q, qd, baumgarte):
     }
 
 
-@probe
+@probe(
+    returns=Dict({"J": Arr(ndim=2), "shifted": Seq(Tup(Num(), Num()), length=3)}),
+    says="constraint_terms and the wire event",
+)
 def event_differences(pkg, q, h):
     """The constraint Jacobian at ``(q, qd = 0)`` and the event function at ``q +- h e_i`` (at rest)."""
     tree = _robot(pkg)
@@ -118,7 +129,7 @@ def event_differences(pkg, q, h):
     return {"J": J, "shifted": shifted}
 
 
-@probe
+@probe(returns=Seq(Dict({"qd_plus": Arr(3), "Lam": Arr(1)}), length=lambda cases: len(cases)), says="plastic_impact")
 def impact(pkg, cases):
     """``{"qd_plus", "Lam"}`` of ``plastic_impact(M, J, qd_minus)`` for every case."""
     p46 = module(pkg, "problem_46")
@@ -130,7 +141,7 @@ def impact(pkg, cases):
     return out
 
 
-@probe
+@probe(returns=Seq(Dict({"qdd": Arr(3), "lam": Arr(1)}), length=lambda cases: len(cases)), says="constrained_dynamics")
 def constrained(pkg, cases):
     """``{"qdd", "lam"}`` of ``constrained_dynamics(M, f, g, tau, J, sigma)`` for every case."""
     p46 = module(pkg, "problem_46")
@@ -141,8 +152,24 @@ def constrained(pkg, cases):
     return out
 
 
-@probe(motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_46.simulate_fixed",
-               "schemes": ("euler", "symplectic")})
+@probe(
+    returns=Dict(
+        {
+            "t": Arr(None),
+            "q": Arr(None, 3),
+            "qd": Arr(None, 3),
+            "x": Arr(None, 3),
+            "t_event": Maybe(Num()),
+            **{key: Arr(3) for key in ("q_minus", "qd_minus", "q_plus", "qd_plus")},
+            "Lam": Arr(1),
+            "J_plus": Arr(ndim=2),
+        },
+        optional=("q_minus", "qd_minus", "q_plus", "qd_plus", "Lam", "J_plus"),
+    ),
+    says="simulate(table, {1}, {2})",
+    motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_46.simulate_fixed",
+               "schemes": ("euler", "symplectic")},
+)
 def simulate(pkg, table, baumgarte, t_end, wire=None):
     """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every
     output time, and at the impact the constraint Jacobian from ``constraint_terms`` (``J_plus``).  ``wire``:
@@ -165,7 +192,7 @@ def simulate(pkg, table, baumgarte, t_end, wire=None):
     return out
 
 
-@probe
+@probe(reference_only=True)
 def simulate_fixed(pkg, table, baumgarte, t_end, *rest):
     """The robot of ``simulate`` under computed torques run by a fixed-step ``scheme`` at step ``h`` with the
     package's own ``robot_ode`` of problem 37, until the wire becomes taut (the diagnosis engine calls it on the

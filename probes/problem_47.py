@@ -4,13 +4,18 @@ maximum."""
 import numpy as np
 
 from . import module, probe
+from ._forms import Arr, Dict, Num, Seq, Tup
 
 
 def _p47(pkg):
     return module(pkg, "problem_47")
 
 
-@probe(args=("vector", "scalar", "scalar", ""))
+@probe(
+    returns=Dict({"c": Num(), "J": Arr(ndim=2), "c_coordinates": Seq(Tup(Num(), Num()), length=3)}),
+    says="constraint and constraint_jacobian",
+    args=("vector", "scalar", "scalar", ""),
+)
 def contact(pkg, q, x_cog, y_cog, h):
     """``c`` and ``J`` at ``q``, and ``c`` at ``q +- h e_i`` (``"c_coordinates"``)."""
     p47 = _p47(pkg)
@@ -20,7 +25,11 @@ def contact(pkg, q, x_cog, y_cog, h):
             "J": np.asarray(p47.constraint_jacobian(q, x_cog, y_cog), dtype=float), "c_coordinates": shifted}
 
 
-@probe(args=("vector", "vector", "scalar", "scalar", "scalar", "scalar"))
+@probe(
+    returns=Dict({"q_plus": Arr(3), "qd_plus": Arr(3), "Lam": Arr(1), "J": Arr(ndim=2)}),
+    says="plastic_impact(q_minus, qd_minus, ...)",
+    args=("vector", "vector", "scalar", "scalar", "scalar", "scalar"),
+)
 def impact(pkg, q_minus, qd_minus, m, theta, x_cog, y_cog):
     """``{"q_plus", "qd_plus", "Lam"}`` of ``plastic_impact`` and the package's own ``J`` at ``q_minus``."""
     p47 = _p47(pkg)
@@ -31,12 +40,16 @@ def impact(pkg, q_minus, qd_minus, m, theta, x_cog, y_cog):
             "J": np.asarray(p47.constraint_jacobian(q_minus, x_cog, y_cog), dtype=float)}
 
 
-@probe(args=("angle", "scalar", "scalar", "scalar", "scalar", "scalar"))
+@probe(returns=Num(), says="impulse({0}, {1}, ...)", args=("angle", "scalar", "scalar", "scalar", "scalar", "scalar"))
 def impulse(pkg, phi, yd_minus, m, theta, x_cog, y_cog):
     return float(_p47(pkg).impulse(phi, yd_minus, m, theta, x_cog, y_cog))
 
 
-@probe(args=("scalar", "scalar", "scalar", "scalar", "scalar", ""))
+@probe(
+    returns=Dict({"phi_hat": Num(), "Lam_max": Num(), "impulses": Arr(3)}),
+    says="angle_of_max_impulse and max_impulse",
+    args=("scalar", "scalar", "scalar", "scalar", "scalar", ""),
+)
 def maximum(pkg, yd_minus, m, theta, x_cog, y_cog, delta):
     """``phi_hat`` and ``Lam_max``, and the package's own ``impulse`` at ``phi_hat`` and at ``phi_hat -+ delta``."""
     p47 = _p47(pkg)

@@ -50,6 +50,23 @@ def strict(monkeypatch):
     monkeypatch.setattr(engine, "STRICT", True)
 
 
+@pytest.fixture(autouse=True)
+def stub_probes(monkeypatch):
+    """The made-up probes as a module of probes (``probes.stub``) whose every reply has its form, since the gate
+    holds each reply of the student's side to the form its probe declares (``grader.gate``); their declarations
+    for the engine are the tests' own (``declare``)."""
+    import sys
+    import types
+
+    from probes import probe
+    from probes._forms import ANY
+
+    stub = types.ModuleType("probes.stub")
+    for name in ("f", "g", "h", "R", "run", "fixed", "h_terms"):
+        setattr(stub, name, probe(returns=ANY)(lambda pkg, *args: None))
+    monkeypatch.setitem(sys.modules, "probes.stub", stub)
+
+
 # ------------------------------------------------------------------------------------------ stand-ins
 
 

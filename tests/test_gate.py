@@ -6,11 +6,97 @@ from __future__ import annotations
 
 import pytest
 
+import importlib
+import math
+import pkgutil
+
+import numpy as np
+
+import probes
 from checks._answers import option_number
 from grader import grade_submission
+from grader.checking import CheckFailure
+from grader.errors import GraderFault
+from grader.gate import admit
 from grader.results import Status
+from probes._forms import ANY, Arr, ByArgs, Dict, Either, Flag, Items, Maybe, Num, Seq, Text, Tup
 
 from .submissions import copy_reference
+
+# ---------------------------------------------------------------------------------------------- the forms
+
+
+def _probe_functions():
+    for info in pkgutil.iter_modules(probes.__path__):
+        module = importlib.import_module(f"probes.{info.name}")
+        for name, func in vars(module).items():
+            if getattr(func, "is_probe", False) and func.__module__ == module.__name__:
+                yield f"{info.name}.{name}", func
+
+
+def test_every_probe_declares_the_form_of_its_reply():
+    found = dict(_probe_functions())
+    assert len(found) > 150
+    undeclared = [name for name, func in found.items() if func.returns is None and not func.reference_only]
+    assert not undeclared, f"probes without a form (@probe(returns=...)) or reference_only: {undeclared}"
+    both = [name for name, func in found.items() if func.returns is not None and func.reference_only]
+    assert not both
+
+
+def test_a_probe_of_the_references_own_data_is_never_asked_of_a_student():
+    from grader.context import Context
+
+    class Child:
+        def call(self, *args, **kwargs):
+            raise AssertionError("the probe must not be sent")
+
+    ctx = Context(10, Child(), {}, None, 1)
+    with pytest.raises(GraderFault, match="never run on a submission"):
+        ctx.student("problem_10.key_a")
+
+
+@pytest.mark.parametrize("form, value", [
+    (Num(), 1), (Num(), -2.5), (Num(), np.float64(3.0)), (Num(finite=False), math.nan),
+    (Arr(3), [1, 2, 3]), (Arr(3), np.zeros(3)), (Arr(None, 2), np.zeros((5, 2))), (Arr(2, 2), [[1, 0], [0, 1]]),
+    (Arr(), np.zeros((2, 3, 4))), (Arr(ndim=2), np.zeros((3, 1))), (Arr(3, finite=False), [math.nan, 0, 1]),
+    (Arr(lambda q: len(q)), np.zeros(4)), (Text(), "x"), (Flag(), False), (Maybe(Arr(3)), None),
+    (Dict({"a": Num()}), {"a": 1, "extra": "ignored"}), (Dict({"a": Num(), "b": Num()}, optional=("b",)), {"a": 1}),
+    (Items(Num()), {"x": 1, "y": 2}), (Seq(Num()), []), (Seq(Num(), length=2), [1, 2]), (Tup(Num(), Text()), [1, "s"]),
+    (Either(Text(), Arr(2)), "why not"), (Either(Text(), Arr(2)), [1, 2]), (ANY, object()),
+    (ByArgs(lambda which: Arr(3) if which == "v" else Arr(3, 3)), np.zeros(3)),
+])
+def test_a_reply_of_its_form_passes(form, value):
+    args = (np.zeros(4),) if isinstance(form, Arr) and form.dims and callable(form.dims[0]) else ("v",)
+    assert form.fault(value, args) is None
+
+
+@pytest.mark.parametrize("form, value, diagnosis, text", [
+    (Num(), True, "", "must be a number"), (Num(), "1", "", "must be a number"), (Num(), None, "none", "is None"),
+    (Num(), math.inf, "not_finite", "finite"), (Arr(3), [1, 2], "shape", "must have shape (3,), got shape (2,)"),
+    (Arr(3, 3), np.zeros(9), "shape", "got shape (9,)"), (Arr(3), ["x", 1, 2], "", "must be numeric"),
+    (Arr(3), [True, 1.0, 2.0], "", "must be numeric"), (Arr(3), np.array([math.nan, 0, 0]), "not_finite", "NaN"),
+    (Arr(3), np.array([1, "x", 2], dtype=object), "", "not numbers"), (Arr(2, 2), [[1, 2], [3]], "shape", "unequal"),
+    (Arr(ndim=2), np.zeros(3), "shape", "2 dimensions"), (Text(), 3, "", "must be text"),
+    (Flag(), 1, "", "True or False"), (Dict({"a": Num()}), [1], "shape", "must be a dict"),
+    (Dict({"a": Num(), "b": Num()}), {"a": 1}, "shape", "has no entries ['b']"),
+    (Dict({"a": Arr(2)}), {"a": [1]}, "shape", "got shape (1,)"), (Items(Num()), {"x": "1"}, "", "must be a number"),
+    (Seq(Num(), length=2), [1], "shape", "must have 2 entries, got 1"), (Seq(Num()), {"a": 1}, "shape", "a list"),
+    (Tup(Num(), Num()), [1, 2, 3], "shape", "must have 2 entries"), (Either(Text(), Arr(2)), [1], "shape", "(2,)"),
+])
+def test_a_reply_of_another_form_is_named(form, value, diagnosis, text):
+    fault = form.fault(value, ())
+    assert fault is not None and fault.diagnosis == diagnosis and text in fault.text, fault
+
+
+def test_the_gate_says_where_in_the_reply_and_that_it_cannot_be_graded():
+    bodies = {"bodies": [{"A_IB": np.eye(3)}, {"A_IB": "x"}]}
+    with pytest.raises(CheckFailure) as failure:
+        admit("problem_06.frames", (), {"A_IC1": np.eye(3), "A_IC2": np.eye(3), "A_IC3": np.zeros(9)})
+    assert failure.value.message == ("cannot be graded: frames()['A_IC3'] must have shape (3, 3), got shape (9,).")
+    assert failure.value.diagnosis == "shape" and "np.reshape(x, (3, 3))" in failure.value.hint
+    assert admit("problem_06.elementary", (1, 0.3), np.eye(3)) is not None
+    with pytest.raises(CheckFailure, match=r"cannot be graded: R1\(0.3\) must be numeric"):
+        admit("problem_06.elementary", (1, 0.3), bodies)
 
 # ---------------------------------------------------------------------------------------------- choices
 
@@ -67,3 +153,88 @@ def test_an_answer_that_is_no_option_is_the_students_error(written, tmp_path):
         assert result.status is Status.FAILED and result.diagnosis == "format", (check_id, result.message)
         assert "must be the number of one option, 1 to 4" in result.message
     assert not [r.check_id for r in results.values() if r.status is Status.GRADER_ERROR]
+
+
+# ---------------------------------------------------------------------------------------------- crafted replies
+
+
+def test_a_crafted_reply_is_the_students_error_and_grade_exits_1(tmp_path, capsys):
+    """A worker whose JSON encoder is patched (tests/hostile/codec_patch: NaN, text, booleans, flat arrays, a list
+    for a dict) made three checks of problem 6 internal grader errors and ``grade`` exit 3, the code of a broken
+    installation: now every check that reads a reply fails saying that it cannot be graded, and ``grade`` exits 1."""
+    from grader.cli import EXIT_FAILED, main
+
+    from .submissions import build_hostile
+
+    submission = build_hostile("codec_patch", tmp_path / "pkg")
+    code = main(["problem-6", "--submission", str(submission), "--seed", "7", "--json", str(tmp_path / "r.json")])
+    assert code == EXIT_FAILED, capsys.readouterr().out
+    import json
+
+    results = json.loads((tmp_path / "r.json").read_text())["reports"][0]["results"]
+    assert sum(r["score"] for r in results) == 0
+    ran = [r for r in results if r["status"] != "skipped"]
+    assert ran and all(r["status"] == "failed" and r["message"].startswith("cannot be graded: ") for r in ran), ran
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_no_crafted_reply_crashes_a_check_of_any_problem(seed, tmp_path):
+    """Every probe's reply meets the gate: a worker whose encoder shuffles what it sends (a dict as a list, keys
+    dropped, numbers as NaN, text or booleans, arrays of other shapes, lists shortened) never makes a check of any
+    problem an internal grader error."""
+    from grader.problems import problems
+
+    submission = copy_reference(tmp_path / "pkg")
+    (submission / "__init__.py").write_text((submission / "__init__.py").read_text() + SHUFFLING_ENCODER % seed)
+    reports = grade_submission(submission, [p.number for p in problems()], seed=seed, workers=2)
+    crashed = [(r.check_id, r.message[:200]) for report in reports for r in report.results
+               if r.status is Status.GRADER_ERROR]
+    assert not crashed
+
+
+#: appended to a reference's __init__.py: every reply of the worker reshuffled at random (seeded)
+SHUFFLING_ENCODER = '''
+import math as _math
+import random as _random
+
+import probes._codec as _codec
+
+_real_encode = _codec.encode
+_rng = _random.Random(%d)
+
+
+def _shuffled(data):
+    if isinstance(data, dict) and "__array__" in data:
+        values, shape = data["data"], data["__array__"]
+        kind = _rng.choice(["keep", "keep", "nan", "text", "flag", "flat", "drop", "column", "number", "none"])
+        if kind == "nan":
+            return {"__array__": shape, "data": [_math.nan] * len(values)}
+        if kind in ("text", "flag"):
+            return {"__array__": shape, "data": ["x" if kind == "text" else True] * len(values)}
+        if kind == "flat":
+            return {"__array__": [len(values)], "data": values}
+        if kind == "drop":
+            return {"__array__": [max(len(values) - 1, 0)], "data": values[:-1]}
+        if kind == "column":
+            return {"__array__": [len(values), 1], "data": values}
+        return {"number": 0.5, "none": None}.get(kind, data)
+    if isinstance(data, dict):
+        if _rng.random() < 0.1:
+            return [_shuffled(value) for value in data.values()]
+        return {key: _shuffled(value) for key, value in data.items() if _rng.random() > 0.1}
+    if isinstance(data, list):
+        items = [_shuffled(value) for value in data]
+        return items[:-1] if items and _rng.random() < 0.15 else items
+    if isinstance(data, (int, float)) and not isinstance(data, bool) and _rng.random() < 0.3:
+        return _rng.choice([_math.nan, _math.inf, "x", True, [data, data], None])
+    if isinstance(data, str) and _rng.random() < 0.3:
+        return _rng.choice([3.0, None, ["x"]])
+    return data
+
+
+def _encode(value, depth=0):
+    return _shuffled(_real_encode(value, depth))
+
+
+_codec.encode = _encode
+'''

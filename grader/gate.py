@@ -1,0 +1,96 @@
+"""One gate for every answer: each reply of the student's side is held to the form its probe declares
+(``probes._forms``) before any check uses it.
+
+A reply of the wrong form (a string where a number belongs, a list for a dict, a missing key, a matrix of the wrong
+shape, NaN) is the student's error: the check fails with "cannot be graded: ..." and says where and what, never
+with a crash of the check (an internal grader error, exit code 3).  A hostile worker can send any JSON at all; a
+student's function can return anything; both meet the same gate.
+"""
+
+from __future__ import annotations
+
+import importlib
+from functools import lru_cache
+
+from .checking import CheckFailure
+from .errors import GraderFault
+
+__all__ = ["admit", "form_of", "describe_call", "GATE_PREFIX"]
+
+#: how every failure of the gate begins
+GATE_PREFIX = "cannot be graded: "
+
+
+@lru_cache(maxsize=None)
+def _probe_function(name: str):
+    module_name, _, func_name = name.rpartition(".")
+    try:
+        func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
+    except (ImportError, AttributeError) as exc:
+        raise GraderFault(f"the check names a probe that does not exist: {name} ({exc})") from exc
+    if not getattr(func, "is_probe", False):
+        raise GraderFault(f"{name} is not a probe")
+    return func
+
+
+def _name(probe) -> str:
+    if callable(probe):
+        return f"{getattr(probe, '__module__', '').removeprefix('probes.')}.{probe.__name__}"
+    return str(probe)
+
+
+def form_of(probe):
+    """``(form, says)`` of a probe (its name or its function); a probe without a declared form, or one that reads
+    the reference's own data, is the grader's defect when it is asked of a student."""
+    name = _name(probe)
+    func = _probe_function(name)
+    if getattr(func, "reference_only", False):
+        raise GraderFault(f"the probe {name} reads the reference's own data and is never run on a submission")
+    form = getattr(func, "returns", None)
+    if form is None:
+        raise GraderFault(f"the probe {name} declares no form for its reply (@probe(returns=...))")
+    return form, getattr(func, "says", "") or ""
+
+
+def _short(value) -> str:
+    import numpy as np
+
+    if isinstance(value, bool) or value is None:
+        return repr(value)
+    if isinstance(value, (int, float)):
+        return f"{value:.6g}"
+    if isinstance(value, str):
+        return repr(value) if len(value) <= 40 else repr(value[:37] + "...")
+    if isinstance(value, np.ndarray) and value.size <= 6 and value.dtype.kind in "iuf":
+        return np.array2string(value.ravel(), precision=4, separator=", ") if value.ndim == 1 else f"array{value.shape}"
+    if isinstance(value, np.ndarray):
+        return f"array{value.shape}"
+    if isinstance(value, (list, tuple)):
+        return f"[{len(value)} entries]" if len(value) > 4 else "[" + ", ".join(_short(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{...}"
+    return type(value).__name__
+
+
+def describe_call(probe, args, says: str = "") -> str:
+    """How a message names the call of ``probe``: its ``says`` with the arguments shown short, or the probe's own
+    name with them."""
+    shown = [_short(a) for a in args]
+    if says:
+        try:
+            return says.format(*shown)
+        except (IndexError, KeyError, ValueError):
+            pass
+    return f"{_name(probe).rpartition('.')[2]}({', '.join(shown)})"
+
+
+def admit(probe, args: tuple, value):
+    """``value`` (the decoded reply of the student's side to ``probe(*args)``) if it has the probe's form; else a
+    ``CheckFailure`` that says it cannot be graded, where and why."""
+    form, says = form_of(probe)
+    fault = form.fault(value, args)
+    if fault is None:
+        return value
+    where = describe_call(probe, args, says)
+    subject = f"{where}{fault.path}" if fault.path else where
+    raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}.", fault.hint, fault.diagnosis, None)
