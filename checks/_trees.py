@@ -33,6 +33,7 @@ from probes import _trees as probe_trees
 
 from ._effects import MUTATION_HINT, same, shown
 from ._shapes import as_dict, as_list
+from ._upstream import judging
 
 __all__ = [
     "H",
@@ -57,6 +58,7 @@ __all__ = [
     "compare_path",
     "compare_jacobian_differences",
     "compare_path_differences",
+    "judged_states",
     "configuration_figure",
     "assert_tree_no_side_effects",
 ]
@@ -182,7 +184,10 @@ def compare_fixed(ctx, probe, args, compare, describe=None):
 
 
 def compare_trees(ctx, probe, kinds, compare, motion=True, masses=False, extra=(), examples=15, name="the tree"):
-    """``compare`` on the fixed rich case, then on random trees of the given ``kinds``."""
+    """``compare`` on the fixed rich case, then on random trees of the given ``kinds``; where it fails on the
+    student's own shared functions of earlier problems (their ``R3`` inside every rotational joint), the states are
+    judged on what the reference's recursion makes of them (error carried forward, ``checks._upstream``)."""
+    compare = judging(ctx, probe, compare, judged_states)
     compare_fixed(ctx, probe, rich_case(kinds, motion, masses, extra), compare)
     ctx.compare_random(probe, cases(kinds, motion, masses, extra), name=name, tol=EXACT, compare=compare,
                        examples=examples, describe=describe_case)
@@ -614,11 +619,19 @@ def compare_path(got, expected, h=H, tol=DIFFERENCES):
                             f"derivative of its own kinematics ({before}).")
 
 
+def judged_states(got, value, args):
+    """The student's tree states against the reference's recursion on the student's own shared functions (see
+    ``checks._upstream.judging``): every body's quantities, as ``compare_states`` reads them."""
+    compare_states(got, value)
+
+
 def compare_jacobian_differences(ctx, probe, kinds, examples=10):
     """Jacobians of random trees against finite differences of the student's own positions and orientations."""
 
-    def compare(got, expected, args):
+    def jacobians(got, expected, args):
         compare_jacobians(got, expected)
+
+    compare = judging(ctx, probe, jacobians, lambda got, value, args: compare_states(got["state"], value["state"]))
 
     compare_fixed(ctx, probe, rich_case(kinds, motion=False, extra=(H,)), compare)
     ctx.compare_random(probe, cases(kinds, motion=False, extra=(H,)), name="B_J_S, B_J_R", tol=DIFFERENCES,
@@ -628,8 +641,10 @@ def compare_jacobian_differences(ctx, probe, kinds, examples=10):
 def compare_path_differences(ctx, probe, kinds, examples=10):
     """Velocities and accelerations of random trees against time derivatives of the student's own kinematics."""
 
-    def compare(got, expected, args):
+    def path(got, expected, args):
         compare_path(got, expected)
+
+    compare = judging(ctx, probe, path, lambda got, value, args: [compare_states(a, b) for a, b in zip(got, value)])
 
     compare_fixed(ctx, probe, rich_case(kinds, extra=(H,)), compare)
     ctx.compare_random(probe, cases(kinds, extra=(H,)), name="velocities and accelerations", tol=DIFFERENCES,

@@ -6,6 +6,7 @@ from checks._effects import assert_no_side_effects
 from checks._figures import add_frames
 from checks._real import assert_real
 from checks._rigid import ROTATIONS, skew
+from checks._upstream import assert_close_judged, judged
 from grader import strategies as st
 from grader.checking import (
     EXACT,
@@ -141,6 +142,7 @@ def check_animation(ctx):
         return ctx.reference("problem_06.cardan", *(float(x) for x in angles))
 
     expected = ctx.reference("problem_07.animate")
+    own = judged(ctx, "problem_07.animate")  # the reference's animation with the student's cardan (problem 6)
     start = np.deg2rad(START_DEG)
     mistakes = [
         Mistake("step_count", cardan(start + np.pi * (1 + 1 / 100)),
@@ -155,7 +157,7 @@ def check_animation(ctx):
         fail("animate() must return a dict with the entries 'angles' and 'A_IC3'.")
     add_frames(ctx, "Problem 7: the frame C3 at the end of the animation", got, expected, ("A_IC3",), ["C3 at t = pi"])
     A = assert_rotation(got["A_IC3"], "A_IC3")
-    assert_close(A, expected["A_IC3"], "A_IC3 at t = pi", EXACT, mistakes)
+    assert_close_judged(ctx, A, expected["A_IC3"], own, "A_IC3 at t = pi", EXACT, mistakes, pick=lambda v: v["A_IC3"])
 
 
 # ------------------------------------------------------------------------------------ side effects

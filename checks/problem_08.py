@@ -4,6 +4,7 @@ import numpy as np
 
 from checks._figures import add_integrator_paths, student_or_none
 from checks._rigid import ROTATIONS, expm_skew, skew
+from checks._upstream import assert_close_judged, judged, judged_comparison
 from grader import strategies as st
 from grader.checking import (
     EXACT,
@@ -75,7 +76,8 @@ def check_rate_matrix(ctx):
 def check_euler_step(ctx):
     ctx.compare_random("problem_08.step", st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("euler", *t)),
                        name="A_IC after one Euler step", tol=EXACT,
-                       mistakes=lambda args, e: _step_mistakes(ctx, "euler")(args[1:], e))
+                       compare=judged_comparison(ctx, "problem_08.step", "A_IC after one Euler step", EXACT,
+                                                 lambda args, e: _step_mistakes(ctx, "euler")(args[1:], e)))
 
 
 @check(1, title="exponential_step keeps A_IC orthonormal (even for a large step)", stage=STAGE_STRUCTURE,
@@ -104,7 +106,8 @@ def assert_moves(got, start, name):
 def check_exponential_step(ctx):
     ctx.compare_random("problem_08.step", st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("exp", *t)),
                        name="A_IC after one exponential step", tol=EXACT,
-                       mistakes=lambda args, e: _step_mistakes(ctx, "exp")(args[1:], e))
+                       compare=judged_comparison(ctx, "problem_08.step", "A_IC after one exponential step", EXACT,
+                                                 lambda args, e: _step_mistakes(ctx, "exp")(args[1:], e)))
 
 
 @check(2, title="cardan_euler_step advances the angles by dt * (A_IC @ B)^-1 @ I_omega", stage=STAGE_RANDOM,
@@ -113,24 +116,25 @@ def check_cardan_step(ctx):
     angles = st.tuples(ANGLES, PITCH, ANGLES).map(np.array)
     ctx.compare_random("problem_08.step", st.tuples(angles, VECTORS, STEPS).map(lambda t: ("cardan", *t)),
                        name="angles after one step", tol=EXACT,
-                       mistakes=lambda args, e: _step_mistakes(ctx, "cardan")(args[1:], e))
+                       compare=judged_comparison(ctx, "problem_08.step", "angles after one step", EXACT,
+                                                 lambda args, e: _step_mistakes(ctx, "cardan")(args[1:], e)))
 
 
 @check(1, title="(a) after 100 Euler steps the matrix has grown (not orthonormal) exactly as Euler predicts",
        stage=STAGE_VALUES, group="runs")
 def check_part_a(ctx):
     expected = ctx.reference("problem_08.part", "a")
+    own = judged(ctx, "problem_08.part", "a")  # the reference's run with the student's R3 and skew (problems 6, 7)
     got = ctx.student("problem_08.part", "a")
-    assert_close(got, expected, "A_IC after (a)", RUN)
+    assert_close_judged(ctx, got, expected, own, "A_IC after (a)", RUN)
 
 
 @check(1, title="(b) after 100 Euler steps of the Cardan angles", stage=STAGE_VALUES, group="runs")
 def check_part_b(ctx):
     expected = ctx.reference("problem_08.part", "b")
+    own = judged(ctx, "problem_08.part", "b")  # the reference's run with the student's cardan (problem 6)
     got = ctx.student("problem_08.part", "b")
-    if not isinstance(got, dict) or "A_IC" not in got:
-        fail("part_b() must return a dict with the entries 'angles' and 'A_IC'.")
-    assert_close(got["A_IC"], expected["A_IC"], "A_IC after (b)", RUN)
+    assert_close_judged(ctx, got["A_IC"], expected["A_IC"], own, "A_IC after (b)", RUN, pick=lambda v: v["A_IC"])
 
 
 @check(2, title="(c) the exponential returns exactly to A_IC(t0) = R3(90°) after 2 pi", stage=STAGE_VALUES,
@@ -138,6 +142,7 @@ def check_part_b(ctx):
 def check_part_c(ctx):
     start = ctx.reference("problem_06.elementary", 3, np.pi / 2)
     euler = ctx.reference("problem_08.part", "a")
+    own = judged(ctx, "problem_08.part", "c")  # the reference's run with the student's R3, skew and unskew
     paths = ctx.reference("problem_08.paths")
     add_integrator_paths(ctx, "Problem 8: the body's axes along the three runs",
                          student_or_none(ctx, "problem_08.paths"), paths)
@@ -147,6 +152,6 @@ def check_part_c(ctx):
                    (3, 3))
     assert_moves(one, start, "exponential_step(R3(90°), w, 2 pi / 100)")
     got = as_array(ctx.student("problem_08.part", "c"), "A_IC after (c)", (3, 3))
-    assert_close(got, start, "A_IC after (c)", Tol("exact rotation", 1e-9), [
+    assert_close_judged(ctx, got, start, own, "A_IC after (c)", Tol("exact rotation", 1e-9), [
         Mistake("lost_orthonormality", euler, EULER_HINT),
     ])

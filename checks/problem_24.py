@@ -15,6 +15,7 @@ from ._trees import (
     rich_case,
     tree_comparison,
 )
+from ._upstream import held, judged
 
 TITLE = "Rotational Joint and Recursive Forward Kinematics"
 
@@ -45,12 +46,14 @@ def check_orientations(ctx):
 def check_pendulum(ctx):
     description, q = _pendulum(ctx)
     mistakes = candidates(ctx, description, q)
+    own = judged(ctx, "problem_24.pendulum", q)  # the reference's pendulum with the student's R3 (problem 6)
     got = ctx.student("problem_24.pendulum", q)
     expected = ctx.reference("problem_24.pendulum", q)
     drawing = configuration_figure("Problem 24: the triple pendulum at q = (pi/6, -pi/4, pi/3)", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=mistakes, context="(the sheet's configuration)")
+    held(ctx, own, lambda: compare_states(got, expected, mistakes=mistakes, context="(the sheet's configuration)"),
+         lambda value: compare_states(got, value, context="(the sheet's configuration)"))
 
 
 @check(3, title="random trees of rotational joints: A_IB and B_r_IB of every body, in recursion order",

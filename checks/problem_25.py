@@ -27,8 +27,10 @@ from ._trees import (
     compare_states,
     compare_trees,
     configuration_figure,
+    judged_states,
     tree_comparison,
 )
+from ._upstream import held, judged, judging
 from ._shapes import as_dict, as_list
 
 TITLE = "Rolling Contact Joint"
@@ -121,21 +123,28 @@ def check_sheet_values(ctx):
     case = _walker(ctx)
     alpha, gamma = case["alpha_c"], case["gamma_c"]
     mistakes = _x_mistakes(ctx, alpha, gamma, SHEET_X)
+    own = judged(ctx, "problem_25.walker", alpha, gamma)  # the reference's walker with the student's R3 (problem 6)
     got = ctx.student("problem_25.walker", alpha, gamma)
     expected = ctx.reference("problem_25.walker", alpha, gamma)
     drawing = configuration_figure("Problem 25: the walker at alpha = -30 deg, gamma = +60 deg", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    x = as_array(as_dict(got, "the walker read back by the probe", ("x",))["x"], "cog_positions(alpha, gamma)",
-                 (6,)).copy()
-    for i in ANGLES:  # signed angles; the course printed acos(A11), which loses the sign
-        if abs(_wrap(x[i] - SHEET_X[i])) <= SHEET.atol or abs(x[i] - abs(SHEET_X[i])) <= SHEET.atol:
-            x[i] = SHEET_X[i]
-    if close(x, SHEET_X, SHEET):
-        return
-    assert_close(x, SHEET_X, "x = cog_positions(-30 deg, +60 deg)", SHEET, mistakes,
-                 context="(the sheet's values with the erratum's angles)",
-                 note="The leg angles may be signed (ours) or unsigned as the course printed them (acos(A11)).")
+    raw = as_array(as_dict(got, "the walker read back by the probe", ("x",))["x"], "cog_positions(alpha, gamma)",
+                   (6,))
+
+    def against(target, name, context, found=()):
+        x = raw.copy()
+        for i in ANGLES:  # signed angles; the course printed acos(A11), which loses the sign
+            if abs(_wrap(x[i] - target[i])) <= SHEET.atol or abs(x[i] - abs(target[i])) <= SHEET.atol:
+                x[i] = target[i]
+        if not close(x, target, SHEET):
+            assert_close(x, target, name, SHEET, found, context=context,
+                         note="The leg angles may be signed (ours) or unsigned as the course printed them "
+                              "(acos(A11)).")
+
+    held(ctx, own, lambda: against(SHEET_X, "x = cog_positions(-30 deg, +60 deg)",
+                                   "(the sheet's values with the erratum's angles)", mistakes),
+         lambda value: against(np.asarray(value["x"], dtype=float), "x = cog_positions(-30 deg, +60 deg)", ""))
 
 
 @check(2, title="the walker of build_walker at random (alpha, gamma): A_IB and B_r_IB of every body",
@@ -149,6 +158,7 @@ def check_walker_random(ctx):
     def describe(args):
         return f"q = (alpha, gamma) = ({args[0]!r}, {args[1]!r})"
 
+    compare = judging(ctx, "problem_25.walker", compare, judged_states)
     compare_fixed(ctx, "problem_25.walker", (0.4, -0.9), compare, describe)
     ctx.compare_random("problem_25.walker", st.tuples(ALPHA, GAMMA), name="the walker", tol=EXACT, compare=compare,
                        examples=10, describe=describe)

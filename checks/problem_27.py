@@ -27,6 +27,7 @@ from grader.checking import (
 
 from ._answers import choice
 from ._planar import FINITE, sign_flips, swapped_columns
+from ._upstream import held, judged
 
 TITLE = "Understanding Jacobians"
 
@@ -244,9 +245,14 @@ def check_governor_jacobian(ctx):
 def check_frame_residuals(ctx):
     for seed, t in ((0, 0.3), (3, -0.2)):
         expected = _residuals(ctx, "problem_27.frame_derivative_residuals", seed, t)
+        own = judged(ctx, "problem_27.frame_derivative_residuals", seed, t)  # with the student's cardan, skew, ...
         got = ctx.student("problem_27.frame_derivative_residuals", seed, t)
         if not isinstance(got, dict) or sorted(map(str, got)) != ["1", "2", "3", "4"]:
             fail(f"frame_derivative_residuals({seed}, {t}) must return a dict with the keys 1, 2, 3, 4; got "
                  f"{str(got)[:200]}")
-        assert_close([got[str(k)] for k in (1, 2, 3, 4)], [expected[k] for k in (1, 2, 3, 4)],
-                     f"|lhs - rhs| of statements 1-4, frame_derivative_residuals({seed}, {t})", RESIDUALS)
+        name = f"|lhs - rhs| of statements 1-4, frame_derivative_residuals({seed}, {t})"
+        mine = [got[str(k)] for k in (1, 2, 3, 4)]
+        held(ctx, own, lambda mine=mine, expected=expected, name=name: assert_close(
+            mine, [expected[k] for k in (1, 2, 3, 4)], name, RESIDUALS),
+             lambda value, mine=mine, name=name: assert_close(mine, [value[str(k)] for k in (1, 2, 3, 4)], name,
+                                                              RESIDUALS))

@@ -13,6 +13,7 @@ from ._trees import (
     rich_case,
     tree_comparison,
 )
+from ._upstream import held, judged
 
 TITLE = "Kinematics with Velocities, Accelerations, and Jacobians"
 
@@ -29,9 +30,12 @@ def check_pendulum(ctx):
     case = ctx.reference("problem_31.pendulum_case")
     values = case["q"], case["qd"], case["qdd"]
     mistakes = candidates(ctx, case["description"], *values)
+    own = judged(ctx, "problem_31.pendulum", *values)  # the reference's recursion with the student's R3 and skew
     got = ctx.student("problem_31.pendulum", *values)
     expected = ctx.reference("problem_31.pendulum", *values)
-    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)", poses_from=(ctx, *POSES))
+    held(ctx, own, lambda: compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)",
+                                          poses_from=(ctx, *POSES)),
+         lambda value: compare_states(got, value, context="(the sheet's test case)"))
 
 
 @check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "

@@ -34,6 +34,7 @@ from ._trees import (
     rich_case,
     tree_comparison,
 )
+from ._upstream import held, judged, judging
 
 TITLE = "Robotic Arm. 1 - Gravity compensation"
 
@@ -82,14 +83,21 @@ def check_end_effector(ctx):
     for q, target, title in ((np.zeros(3), np.array([0.0, -3.0, 0.0]), ""),
                              (Q_DES_0, robot["x_start"], "Problem 32: the robot at q_des(0), front view")):
         mistakes = candidates(ctx, robot["description"], q)
+        own = judged(ctx, "problem_32.robot", q)  # the reference's robot with the student's R3 (problem 6)
         got = ctx.student("problem_32.robot", q)
         expected = ctx.reference("problem_32.robot", q)
         drawing = configuration_figure(title, got, expected) if title else None
         if drawing is not None:
             ctx.add_figure(drawing)
-        compare_states(got, expected, mistakes=mistakes, context=f"(the robot at q = {q.tolist()})")
-        assert_close(got.get("end_effector"), target, f"end_effector_position(tree, {q.tolist()})", SHEET,
-                     context="(the sheet's value)")
+        where = f"(the robot at q = {q.tolist()})"
+
+        def robot_at(value, found=(), target=target, where=where, q=q):
+            compare_states(got, value, mistakes=found, context=where)
+            end = target if value is expected else np.asarray(value["end_effector"], dtype=float)
+            assert_close(got.get("end_effector"), end, f"end_effector_position(tree, {q.tolist()})", SHEET,
+                         context="(the sheet's value)" if value is expected else where)
+
+        held(ctx, own, lambda: robot_at(expected, mistakes), robot_at)
 
 
 @check(1, title="generalized_gravity is minus the gradient of your own potential energy V(q) = -sum(m I_grav . "
@@ -123,6 +131,10 @@ def check_gravity_potential(ctx):
         ], context=f"(expected: -dV/dq of your own positions, I_grav = {I_GRAV.tolist()})")
 
     extra = (I_GRAV, H)
+    name = "generalized_gravity(tree, q, I_grav)"
+    compare = judging(ctx, "problem_32.potential", compare,
+                      lambda got, value, args: assert_close(got["g"], value["g"], name, EXACT,
+                                                            context=f"(I_grav = {I_GRAV.tolist()})"))
     compare_fixed(ctx, "problem_32.potential", rich_case(KINDS, motion=False, masses=True, extra=extra), compare)
     ctx.compare_random("problem_32.potential", cases(KINDS, motion=False, masses=True, extra=extra),
                        name="generalized_gravity", tol=DIFFERENCES, compare=compare, examples=10,
@@ -138,6 +150,9 @@ def check_gravity_random(ctx):
             assert_close(got, expected, "generalized_gravity(tree, q, I_grav)", EXACT, mistakes,
                          context=f"(I_grav = {I_GRAV.tolist()})")
 
+    compare = judging(ctx, "problem_32.gravity", compare,
+                      lambda got, value, args: assert_close(got, value, "generalized_gravity(tree, q, I_grav)", EXACT,
+                                                            context=f"(I_grav = {I_GRAV.tolist()})"))
     compare_fixed(ctx, "problem_32.gravity", rich_case(KINDS, motion=False, masses=True, extra=(I_GRAV,)), compare)
     ctx.compare_random("problem_32.gravity", cases(KINDS, motion=False, masses=True, extra=(I_GRAV,)),
                        name="generalized_gravity", tol=EXACT, compare=compare, examples=15, describe=describe_case)
@@ -148,12 +163,17 @@ def check_gravity_random(ctx):
 def check_gravity_trajectory(ctx):
     trajectory = ctx.reference("problem_32.trajectory", persist=True)
     t, q = trajectory["t"], trajectory["q"]
+    own = judged(ctx, "problem_32.torques", q)  # the reference's torques with the student's R3 (problem 6)
     got = as_array(ctx.student("problem_32.torques", q), "the torques along the trajectory", (t.size, 3))
     expected = np.asarray(ctx.reference("problem_32.torques", q, persist=True))
     ctx.add_figure(figure("Problem 32: gravity-compensating torques", "t [s]", "tau [Nm]",
                           student=[(f"tau_{k + 1}", t, got[:, k]) for k in range(3)],
                           reference=[(f"tau_{k + 1}", t, expected[:, k]) for k in range(3)]))
-    for k in range(t.size):
-        assert_close(got[k], expected[k], f"gravity_compensation(tree, q_des(t = {t[k]:.6g}))", EXACT,
-                     [Mistake("sign_flip", -expected[k], SIGN_HINT)],
-                     context=f"(q_des = {np.round(q[k], 5).tolist()}, the first time that differs)")
+
+    def along(values, signs=True):
+        for k in range(t.size):
+            assert_close(got[k], values[k], f"gravity_compensation(tree, q_des(t = {t[k]:.6g}))", EXACT,
+                         [Mistake("sign_flip", -values[k], SIGN_HINT)] if signs else [],
+                         context=f"(q_des = {np.round(q[k], 5).tolist()}, the first time that differs)")
+
+    held(ctx, own, lambda: along(expected), lambda value: along(np.asarray(value, dtype=float), signs=False))

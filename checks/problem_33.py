@@ -29,6 +29,7 @@ from ._trees import (
     configuration_figure,
     tree_comparison,
 )
+from ._upstream import held, judged
 from .problem_25 import WALKER_MODELS
 
 TITLE = "Rolling Contact Joint (velocities, accelerations, Jacobians)"
@@ -69,12 +70,15 @@ def check_sheet(ctx):
     case = _walker(ctx)
     values = case["q"], case["qd"], case["qdd"]
     mistakes = candidates(ctx, case["description"], *values, models=WALKER_MODELS)
+    own = judged(ctx, "problem_33.walker", *values)  # the reference's recursion with the student's R3 and skew
     got = ctx.student("problem_33.walker", *values)
     expected = ctx.reference("problem_33.walker", *values)
     drawing = configuration_figure("Problem 33: the walker at the test state", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=mistakes, context="(the sheet's test state)", poses_from=(ctx, *POSES))
+    held(ctx, own, lambda: compare_states(got, expected, mistakes=mistakes, context="(the sheet's test state)",
+                                          poses_from=(ctx, *POSES)),
+         lambda value: compare_states(got, value, context="(the sheet's test state)"))
 
 
 @check(1, title="the stance foot rolls without slipping: the foot's point on the ground is at rest and accelerates "

@@ -12,6 +12,7 @@ from ._trees import (
     configuration_figure,
     tree_comparison,
 )
+from ._upstream import held, judged
 
 TITLE = "Biped"
 
@@ -25,12 +26,14 @@ def check_biped(ctx):
     case = ctx.reference("problem_34.biped_case", FRAME)
     t = case["t"]
     mistakes = candidates(ctx, case["description"], case["q"], case["qd"], case["qdd"])
+    own = judged(ctx, "problem_34.biped", t)  # the reference's recursion with the student's R3 and skew
     got = ctx.student("problem_34.biped", t)
     expected = ctx.reference("problem_34.biped", t)
     drawing = configuration_figure(f"Problem 34: the biped at frame {FRAME} (t = {t:g} s)", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    compare_states(got, expected, mistakes=mistakes, context=f"(frame {FRAME}, t = {t:g} s)")
+    held(ctx, own, lambda: compare_states(got, expected, mistakes=mistakes, context=f"(frame {FRAME}, t = {t:g} s)"),
+         lambda value: compare_states(got, value, context=f"(frame {FRAME}, t = {t:g} s)"))
 
 
 @check(1, title="the Jacobians of random trees with translational and virtual 3-DOF joints are the derivatives of "

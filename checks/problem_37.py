@@ -44,6 +44,7 @@ from ._dynamics import (
     tree_cases,
 )
 from ._real import is_real, mass_matrix_flaw, real, require_real
+from ._upstream import judging
 
 TITLE = "Robotic Arm. 2 - Controller Evaluation"
 
@@ -81,12 +82,16 @@ ODE_HINT = ("Your robot_ode differs from the reference's at three states of the 
 
 
 def _physics(ctx, compare, examples=8):
+    """``compare(got, expected, args)`` (a property of the student's own model) on a rich case and on random trees;
+    where it fails on the student's own shared functions of earlier problems (their ``R3`` inside every rotational
+    joint), ``M``, ``f``, ``g`` are judged on what the reference's code makes of them (error carried forward)."""
     extra = (H,)
     args = rich_case(extra=extra)
     expected = ctx.reference("_dynamics.lagrange", *args)
-    compare(ctx.student("_dynamics.lagrange", *args), expected, args)
-    ctx.compare_random("_dynamics.lagrange", tree_cases(extra=extra), name="M, f, g", tol=EXACT, compare=compare,
-                       examples=examples, describe=describe_case)
+    judged_compare = judging(ctx, "_dynamics.lagrange", compare, lambda got, value, a: compare_mfg(got, value, {}))
+    judged_compare(ctx.student("_dynamics.lagrange", *args), expected, args)
+    ctx.compare_random("_dynamics.lagrange", tree_cases(extra=extra), name="M, f, g", tol=EXACT,
+                       compare=judged_compare, examples=examples, describe=describe_case)
 
 
 @check(2, title="M is symmetric positive-definite on random trees (rotational, prismatic, rolling, 3-DOF and rigid "
@@ -120,7 +125,7 @@ def _compare_mfg(ctx):
     def compare(got, expected, args):
         compare_mfg(got, expected, ctx.reference("_dynamics.mfg_mistakes", *args))
 
-    return compare
+    return judging(ctx, "_dynamics.mfg", compare, lambda got, value, args: compare_mfg(got, value, {}))
 
 
 @check(2, title="M, f, g of the robot arm (problem 32) at random states", stage=STAGE_RANDOM, group="robot")

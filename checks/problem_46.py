@@ -30,6 +30,7 @@ from grader.checking import (
 from ._dynamics import assert_run, run_array, subsample
 from ._effects import assert_no_side_effects
 from ._real import rank_flaw, require_real
+from ._upstream import judging
 
 TITLE = "Robotic Arm. 3 - Event Detection"
 MANUAL = {"derivation": ("46: derive the constraint terms J_lambda and sigma_lambda (and the Baumgarte terms).", 2)}
@@ -115,6 +116,7 @@ def check_event_function(ctx):
                  "direction = +1 detects only crossings from - to +; -1 would wait for the wire to go slack again "
                  "(it never does) and 0 also fires on that.", "event_direction")
 
+    compare = judging(ctx, "problem_46.event", compare)
     ctx.compare_random("problem_46.event", _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
                        describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}")
 
@@ -139,6 +141,9 @@ def check_constraint_jacobian(ctx):
             Mistake("jacobian_sign", fd, CONSTRAINT_HINTS["jacobian_sign"]),
         ], context=f"at q = {np.round(args[0], 4).tolist()} (expected: -d/dq of your own event residual)")
 
+    compare = judging(ctx, "problem_46.event_differences", compare,
+                      lambda got, value, args: assert_close(got["J"], value["J"], "J_lam", EXACT,
+                                                            context=f"at q = {np.round(args[0], 4).tolist()}"))
     ctx.compare_random("problem_46.event_differences", _states().map(lambda a: (a[0], H)), name="J_lam",
                        tol=DIFFERENCES, compare=compare, examples=6,
                        describe=lambda args: f"q = {np.round(args[0], 4).tolist()}")
@@ -165,6 +170,7 @@ def check_constraint_terms(ctx):
                      if not close(terms[key], value, EXACT)]
             assert_close(got[0][key], value, name, EXACT, found, context=f"(baumgarte = {baumgarte})")
 
+    compare = judging(ctx, "problem_46.constraint_terms", compare)
     ctx.compare_random("problem_46.constraint_terms", _term_cases(), name="J_lam, sigma_lam", tol=EXACT,
                        compare=compare, examples=10,
                        describe=lambda args: f"q = {np.round(args[0][0][0], 4).tolist()}, qd = "

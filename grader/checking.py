@@ -36,6 +36,7 @@ __all__ = [
     "CheckFailure",
     "NotAnswered",
     "known_diagnosis",
+    "JudgedOnSubmission",
     "Mistake",
     "diagnose",
     "fail",
@@ -144,6 +145,16 @@ class CheckFailure(Exception):
 
 class NotAnswered(Exception):
     """A question in answers.toml is still blank."""
+
+
+class JudgedOnSubmission(Exception):
+    """The student kit cannot grade this check: the student's own functions of earlier problems differ from the
+    reference's, and the check judges the answer on them through the reference's code, which only a graded
+    submission has (``grader.upstream``).  ``message`` names those functions and the checks that grade them."""
+
+    def __init__(self, message: str):
+        super().__init__(message)
+        self.message = message
 
 
 def fail(message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None):

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import threading
 
-from .checking import CheckFailure, NotAnswered, Tol, assert_close, diagnose
+from .checking import CheckFailure, JudgedOnSubmission, NotAnswered, Tol, assert_close, diagnose
 from .diagnosis import explain, prepare_call, prepared, recording, remember_run
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
@@ -24,7 +24,7 @@ from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 #: hypothesis's engine is not meant to run in two threads at once
 _HYPOTHESIS = threading.Lock()
 
-__all__ = ["Context", "Catalogue", "simplicity", "explained"]
+__all__ = ["Context", "Catalogue", "Judged", "simplicity", "explained"]
 
 
 class Context:
@@ -56,6 +56,13 @@ class Context:
         self.calls: list[tuple] = []
         #: True while a randomized comparison evaluates its inputs (the engine's second input is then its own)
         self.randomized = False
+        self._hybrid = None
+
+    def close(self) -> None:
+        """End the problem's grading: the reference's code composed with the student's functions is dropped."""
+        if self._hybrid is not None:
+            self._hybrid.close()
+            self._hybrid = None
 
     def begin(self, check_id: str) -> None:
         """Start a check: its figures, its seed, the numbering of its draw sites and its log of calls begin
@@ -177,6 +184,27 @@ class Context:
         once, at the failing check that finds it, and the passing check gets full credit with a pointer there."""
         if (upstream, what) not in self.carried:
             self.carried.append((upstream, what))
+
+    def upstream(self, probe: str, args: tuple, shared: dict, flaw) -> "Judged":
+        """What the reference's code of ``probe(*args)`` gives on the student's own functions of earlier problems
+        (error carried forward across problems, ``grader.upstream``): a ``Judged`` whose ``result()`` is computed
+        when first asked, i.e. when the student's answer differs from the reference's.  ``shared`` maps
+        ``"module.function"`` to ``(the problem that owns it, the check that grades it)``; ``flaw(mine,
+        reference)`` says why a value of the student's is not real ("" when it is).  While the kit's key is
+        recorded, the calls are recorded at once; in the kit the student's functions are compared at those calls."""
+        from .oracle import call_key
+
+        key = call_key(probe, args)
+        if self.oracle.mode == "record":
+            self.oracle.record_upstream(key, self._hybrid_for(shared, flaw).calls_of(probe, args))
+        return Judged(self, probe, tuple(args), key, shared, flaw)
+
+    def _hybrid_for(self, shared, flaw):
+        from .upstream import Hybrid
+
+        if self._hybrid is None:
+            self._hybrid = Hybrid(self.problem, shared, self.student, self.reference, flaw)
+        return self._hybrid
 
     # -------------------------------------------------------------- answers.toml
 
@@ -384,6 +412,66 @@ class Context:
         if state["fatal"] is not None:
             raise state["fatal"]
         return state["last"]
+
+
+class Judged:
+    """The reference's code of one probe call on the student's own upstream functions (``Context.upstream``),
+    computed when ``result()`` is first asked.  ``result()`` is None when those functions give the reference's
+    values along the way (nothing to carry forward), else an ``grader.upstream.Upstream``; in the kit, where
+    nothing can be composed, the student's functions are compared at the recorded calls, and where one differs
+    and is real the check is left to the graded submission (``JudgedOnSubmission``)."""
+
+    def __init__(self, ctx, probe, args, key, shared, flaw):
+        self._ctx, self._probe, self._args, self._key = ctx, probe, args, key
+        self._shared, self._flaw = shared, flaw
+        self._result = None
+        self._done = False
+
+    def result(self):
+        if not self._done:
+            self._result = self._compute()
+            self._done = True
+        return self._result
+
+    def _compute(self):
+        from .problems import check_title
+        from .upstream import Upstream, UpstreamCall, same
+
+        ctx = self._ctx
+        if ctx.oracle.composes:
+            found = ctx._hybrid_for(self._shared, self._flaw).run(self._probe, self._args)
+            return found if found.differing else None
+        differing: dict[int, UpstreamCall] = {}
+        for index, (function, args, parent) in enumerate(ctx.oracle.upstream_calls(self._key)):
+            module_name, _, name = function.rpartition(".")
+            theirs = ctx.reference("_upstream.call", module_name, name, list(args))
+            try:
+                mine = ctx.student("_upstream.call", module_name, name, list(args))
+            except (StudentFault, CheckFailure) as exc:
+                call = UpstreamCall(function, args, None, theirs, str(getattr(exc, "message", exc)).split("\n")[0])
+                return Upstream(None, (call,), f"your {name} could not be called ({call.error})")
+            if same(mine, theirs):
+                continue
+            call = UpstreamCall(function, args, mine, theirs, parent=parent)
+            flaw = self._flaw(mine, theirs)
+            if flaw:
+                return Upstream(None, (call,), f"your {call.shown()} {flaw}")
+            differing[index] = call
+        if not differing:
+            return None
+        explained = {call.parent for call in differing.values()}  # a difference of the calls made inside it
+        first: dict[str, UpstreamCall] = {}
+        for index, call in differing.items():
+            if index not in explained:
+                first.setdefault(call.function, call)
+        calls = list(first.values())
+        one = len(calls) == 1
+        names = ", ".join(call.function.rpartition(".")[2] for call in calls)
+        graded = "; ".join(dict.fromkeys(check_title(self._shared[call.function][1]) for call in calls))
+        raise JudgedOnSubmission(
+            f"judged on your own {names} when you submit: {'it differs' if one else 'they differ'} from the "
+            f"reference's (e.g. {calls[0].shown()}) and {'is' if one else 'are'} graded by {graded}; only the "
+            f"graded submission can compute this answer from {'it' if one else 'them'} (error carried forward)")
 
 
 class Catalogue:

@@ -139,6 +139,10 @@ class AnswerKey:
     argument tuples of a randomized comparison; ``draws``: site → the encoded data a check drew with ``ctx.draw``.
     ``withheld``: public checks that use a value a secret or hidden check uses (a port that prints the predicted
     output, say): the key holds nothing of theirs, and the kit defers them like the secret ones.
+    ``upstream``: ``call_key(probe, args)`` of a probe that a check judges on the student's own functions of
+    earlier problems → the calls ``[function, encoded args, parent]`` that the reference's logic of it makes of them
+    (``parent``: the index of the call within whose own code it was made, -1 for the probe's own code; see
+    ``grader.upstream``; their values are among ``calls``, as the probe ``_upstream.call``).
     ``fingerprint`` identifies the checks and probes the key was recorded with; ``seed`` is the kit's seed.
     """
 
@@ -149,6 +153,7 @@ class AnswerKey:
     pools: dict = field(default_factory=dict)
     draws: dict = field(default_factory=dict)
     withheld: list = field(default_factory=list)
+    upstream: dict = field(default_factory=dict)
 
     def drop_checks(self, check_ids) -> None:
         """Remove everything recorded only for ``check_ids``: their calls (unless another check made them too),
@@ -173,6 +178,7 @@ class AnswerKey:
             "pools": self.pools,
             "draws": self.draws,
             "withheld": self.withheld,
+            "upstream": self.upstream,
         }
 
     def dumps(self) -> bytes:
@@ -194,7 +200,8 @@ class AnswerKey:
         if not isinstance(raw, dict) or raw.get("format") != KEY_FORMAT or raw.get("version") != KEY_VERSION:
             raise GraderFault("the answer key has an unknown format: reinstall the kit your instructor gave you")
         return cls(int(raw["seed"]), str(raw["fingerprint"]), str(raw.get("grader_version", "")),
-                   dict(raw["calls"]), dict(raw["pools"]), dict(raw.get("draws", {})), list(raw.get("withheld", [])))
+                   dict(raw["calls"]), dict(raw["pools"]), dict(raw.get("draws", {})), list(raw.get("withheld", [])),
+                   dict(raw.get("upstream", {})))
 
     @classmethod
     def load(cls, path: str | Path) -> "AnswerKey":
@@ -222,6 +229,8 @@ class Oracle:
     mode = "live"
     #: randomized comparisons draw from recorded pools (kit, record) rather than fresh hypothesis inputs
     pooled = False
+    #: the reference's code can run on the student's own upstream functions (``grader.upstream``): not in the kit
+    composes = True
 
     def reference(self, probe: str, args: tuple, persist: bool = False, check: str | None = None):
         raise NotImplementedError
@@ -237,6 +246,14 @@ class Oracle:
     def runs(self, spec, check_id: str) -> bool:
         """Whether a check runs here: the kit (and the recording of its key) leave out secret and hidden checks."""
         return True
+
+    def record_upstream(self, key: str, calls) -> None:
+        """While a key is recorded: the forwarded calls ``[(function, args, parent)]`` of the probe call ``key``
+        (see ``grader.upstream``)."""
+
+    def upstream_calls(self, key: str) -> list:
+        """In the kit: the forwarded calls ``[(function, args, parent)]`` recorded for the probe call ``key``."""
+        raise NotImplementedError
 
     def model_answers(self) -> dict:
         """The reference's answers.toml (model answers of free-text questions); empty without the reference."""
@@ -455,12 +472,18 @@ class RecordingOracle(LiveOracle):
     def runs(self, spec, check_id: str) -> bool:
         return _secret(spec) == self.secret
 
+    def record_upstream(self, key: str, calls) -> None:
+        from probes._codec import encode
+
+        self.key.upstream.setdefault(key, [[function, encode(list(args)), parent] for function, args, parent in calls])
+
 
 class KeyOracle(Oracle):
     """The recorded answer key of the student kit."""
 
     mode = "kit"
     pooled = True
+    composes = False
 
     def __init__(self, key: AnswerKey, check_fingerprint: bool = True):
         self.key = key
@@ -500,6 +523,14 @@ class KeyOracle(Oracle):
 
     def runs(self, spec, check_id: str) -> bool:
         return not _secret(spec) and check_id not in self._withheld
+
+    def upstream_calls(self, key: str) -> list:
+        from probes._codec import decode
+
+        if key not in self.key.upstream:
+            shown = key if len(key) <= 300 else key[:300] + "..."
+            raise GraderFault(f"the answer key holds no upstream calls for {shown}")
+        return [(function, tuple(decode(args)), int(parent)) for function, args, parent in self.key.upstream[key]]
 
     @property
     def _withheld(self) -> set:

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 __all__ = ["ProblemInfo", "NoChecks", "problem_module", "has_checks", "require_problem", "require_problems",
-           "problems", "check_id", "secret_check_ids", "withheld_check_ids"]
+           "problems", "check_id", "check_title", "secret_check_ids", "withheld_check_ids"]
 
 
 @dataclass(frozen=True)
@@ -38,6 +38,19 @@ class NoChecks(ValueError):
 def check_id(problem: int, name: str) -> str:
     """The id of the check ``name`` of ``problem``: ``p06.cardan_values``."""
     return f"p{problem:02d}.{name}"
+
+
+def check_title(check_id: str) -> str:
+    """``problem N's check “title”`` of a check id (``"p06.elementary_values"``), or "" when there is no such
+    check."""
+    from .checking import checks_of
+
+    try:
+        number, name = int(check_id[1:3]), check_id[4:]
+        spec = next(spec for spec in checks_of(problem_module(number)) if spec.name == name)
+    except (ValueError, KeyError, StopIteration):
+        return ""
+    return f"problem {number}'s check “{spec.title}”"
 
 
 def _module_name(number: int) -> str:

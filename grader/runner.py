@@ -14,7 +14,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from . import __version__, problems
-from .checking import CheckFailure, NotAnswered, checks_of
+from .checking import CheckFailure, JudgedOnSubmission, NotAnswered, checks_of
 from .context import Context, explained
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .faults import fault_of
@@ -99,6 +99,8 @@ def _run_check(spec, ctx: Context, problem: int, said: dict | None = None) -> Ch
         status, message, hint, diagnosis = Status.FAILED, exc.message, exc.hint, exc.diagnosis
     except NotAnswered as exc:
         status, message = Status.NOT_IMPLEMENTED, str(exc)
+    except JudgedOnSubmission as exc:
+        status, message = Status.DEFERRED, exc.message
     except SandboxError:  # the installation's fault: no check can run, nothing is graded
         raise
     except Exception as exc:  # noqa: BLE001 - whose fault it is, is the table's (grader.faults)
@@ -150,6 +152,13 @@ def not_run(spec, problem: int, status: Status, message: str) -> CheckResult:
 
 
 def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
+    try:
+        return _run_all(module, ctx, problem)
+    finally:
+        ctx.close()
+
+
+def _run_all(module, ctx: Context, problem: int) -> list[CheckResult]:
     results = []
     blocked: dict[str, tuple[int, str, str, bool]] = {}  # group → (stage, title, check id, grader at fault)
     blockers: dict[str, str] = {}  # a skipped check -> the failed check that blocked it
@@ -175,7 +184,7 @@ def _run_checks(module, ctx: Context, problem: int) -> list[CheckResult]:
         results.append(result)
         if result.passed and ctx.carried:
             carried[check_id] = list(ctx.carried)
-        if not result.passed and (block is None or spec.stage < block[0]):
+        if not result.passed and result.status is not Status.DEFERRED and (block is None or spec.stage < block[0]):
             blocked[spec.group] = (spec.stage, spec.title, check_id, result.status is Status.GRADER_ERROR)
     return carry_forward(results, carried, blockers)
 
@@ -216,14 +225,16 @@ def carry_forward(results: list[CheckResult], carried: dict, blockers: dict) -> 
                 break
         if root is None:
             elsewhere = [title for title in (_title_elsewhere(upstream, by_id) for upstream, _ in hops) if title]
-            notes[check_id] = (f"Judged on your own {what}, which differ from the reference's (error carried forward: "
-                               f"full credit here); " + (f"they are graded by {elsewhere[0]}." if elsewhere else
-                                                         "compare them with the reference's."))
+            one = "," not in what
+            notes[check_id] = (f"Judged on your own {what}, which {'differs' if one else 'differ'} from the "
+                               "reference's (error carried forward: full credit here); " +
+                               (f"{'it is' if one else 'they are'} graded by {elsewhere[0]}." if elsewhere else
+                                f"compare {'it' if one else 'them'} with the reference's."))
             continue
         followers.setdefault(root, []).append(check_id)
         names.setdefault(root, what)
-        notes[check_id] = (f"Judged on your own {what} (error carried forward: full credit). They are wrong: see "
-                           f"“{by_id[root].title}”.")
+        notes[check_id] = (f"Judged on your own {what} (error carried forward: full credit). "
+                           f"{'It is' if ',' not in what else 'They are'} wrong: see “{by_id[root].title}”.")
     out = []
     for result in results:
         if result.check_id in notes:
@@ -240,14 +251,7 @@ def carry_forward(results: list[CheckResult], carried: dict, blockers: dict) -> 
 
 def _title_elsewhere(check_id: str, by_id: dict) -> str:
     """``problem N's check “title”`` for a check of another problem than the one graded, else ""."""
-    if check_id in by_id:
-        return ""
-    try:
-        number, name = int(check_id[1:3]), check_id[4:]
-        spec = next(spec for spec in checks_of(problem_module(number)) if spec.name == name)
-    except (ValueError, KeyError, StopIteration):
-        return ""
-    return f"problem {number}'s check “{spec.title}”"
+    return "" if check_id in by_id else problems.check_title(check_id)
 
 
 def _join(first: str, second: str) -> str:

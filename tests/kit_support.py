@@ -4,6 +4,7 @@ the comparison of a live report with a kit report."""
 from __future__ import annotations
 
 import copy
+import re
 
 import pytest
 
@@ -107,15 +108,46 @@ def public_verdicts(report) -> dict:
     return {r.check_id: (r.status.value, r.diagnosis) for r in report.results if r.status is not Status.DEFERRED}
 
 
+#: how the kit begins the message of a check it leaves to the graded submission because the check is judged on the
+#: student's own functions of earlier problems, which differ from the reference's (``grader.upstream``)
+JUDGED_ON_SUBMISSION = re.compile(r"^judged on your own .* when you submit")
+#: how a message names another problem's check
+CHECK_NAMED = re.compile(r"problem \d+'s check “[^”]*”")
+
+
+def judged_on_submission(result) -> bool:
+    return result.status is Status.DEFERRED and bool(JUDGED_ON_SUBMISSION.match(result.message))
+
+
+def assert_judged_alike(name: str, live, kit) -> None:
+    """Parity where the kit cannot judge: a check that the kit leaves to the graded submission because it is judged on
+    the student's own functions of earlier problems is, live, judged on them: it passed with the error carried
+    forward or failed judged on them (or with nothing to carry), and both name the same check of the earlier
+    problem."""
+    pointed = set(CHECK_NAMED.findall(kit.message))
+    assert pointed, (name, kit.check_id, kit.message)
+    text = f"{live.message}\n{live.hint}"
+    if live.status is Status.PASSED:
+        assert live.hint.startswith("Judged on your own") or "\nJudged on your own" in live.hint, (name, live.hint)
+    else:
+        assert live.status is Status.FAILED and ("judged on your own" in live.message
+                                                 or "nothing is carried forward" in live.message), (name, text)
+    assert pointed & set(CHECK_NAMED.findall(text)), (name, kit.check_id, kit.message, text)
+
+
 def assert_same_verdicts(name: str, live, kit, secret: set[str]) -> None:
     """The kit gives every public check of ``live`` the same status and diagnosis, and defers exactly the ones
-    named in ``secret`` (secret, hidden, withheld)."""
-    deferred = {r.check_id for r in kit.results if r.status is Status.DEFERRED}
+    named in ``secret`` (secret, hidden, withheld) and the ones it cannot judge on the student's own functions of
+    earlier problems (``assert_judged_alike``)."""
+    judged = {r.check_id: r for r in kit.results if judged_on_submission(r) and r.check_id not in secret}
+    deferred = {r.check_id for r in kit.results if r.status is Status.DEFERRED} - set(judged)
     assert deferred == {r.check_id for r in live.results if r.check_id in secret}, name
     mine = {r.check_id: r for r in live.results}
+    for check_id, result in judged.items():
+        assert_judged_alike(name, mine[check_id], result)
     different = []
     for check_id, verdict in public_verdicts(kit).items():
-        if (name, check_id) in KNOWN_DIVERGENT:
+        if (name, check_id) in KNOWN_DIVERGENT or check_id in judged:
             continue
         expected = (mine[check_id].status.value, mine[check_id].diagnosis)
         if verdict != expected:
