@@ -5,9 +5,11 @@ the bodies, joints and the link of the broken one, and add only a small mass.  T
 fix and the question of energy are read and scored by hand.
 """
 
+import numpy as np
+
 from grader.checking import STAGE_DEFINED, STAGE_STRUCTURE, Tol, assert_close, check, fail
 
-from ._mujoco import model_of, reference_of
+from ._mujoco import POSITION, model_of, reference_of
 
 TITLE = "Debugging a model"
 MANUAL = {
@@ -21,16 +23,24 @@ SMALL = 0.1
 SAME = Tol("the link as in the broken model", 1e-9, 1e-6)
 
 
+def _configuration(rng):
+    """A configuration of the model's joints (the hinge's angle, the ball joint's unit quaternion), drawn anew at
+    each grading: what the model declares there is asked of no key."""
+    quaternion = rng.normal(size=4)
+    return [float(rng.uniform(-np.pi, np.pi)), *(float(x) for x in quaternion / np.linalg.norm(quaternion))]
+
+
 @check(1, title="fixed_model() loads in MuJoCo", stage=STAGE_DEFINED, group="fixed")
 def check_fixed_loads(ctx):
-    model_of(ctx.student("problem_05.fixed"), "fixed_model()")
+    model_of(ctx.student("problem_05.fixed", ctx.draw(_configuration)), "fixed_model()")
 
 
 @check(2, title="fixed_model() keeps the broken model's joints and link, and adds only a small mass (at most a "
        "tenth of the link's) where one was missing", stage=STAGE_STRUCTURE, group="fixed")
 def check_fixed_minimal(ctx):
-    got = model_of(ctx.student("problem_05.fixed"), "fixed_model()")
-    ref = reference_of(ctx.reference("problem_05.fixed", persist=True), "fixed model")
+    qpos = ctx.draw(_configuration)
+    got = model_of(ctx.student("problem_05.fixed", qpos), "fixed_model()")
+    ref = reference_of(ctx.reference("problem_05.fixed", qpos), "fixed model")
     kinds, expected_kinds = [j["type"] for j in got["joints"]], [j["type"] for j in ref["joints"]]
     if kinds != expected_kinds:
         fail(f"fixed_model() has the joints {kinds}; the broken model has {expected_kinds}.",
@@ -38,6 +48,8 @@ def check_fixed_minimal(ctx):
     link = ref["bodies"][int(ref["joints"][-1]["body"]) - 1]
     mine = got["bodies"][int(got["joints"][-1]["body"]) - 1]
     assert_close(mine["mass"], link["mass"], "the mass of the link (the body of the spherical joint)", SAME)
+    assert_close(mine["com"], link["com"], "the centre of mass of the link", POSITION,
+                 context=f"(at the joint configuration qpos = {np.round(qpos, 4).tolist()})")
     carrier = got["bodies"][int(got["joints"][0]["body"]) - 1]
     if not 0 < carrier["mass"] <= SMALL * link["mass"]:
         fail(f"the body of the revolute joint has a mass of {carrier['mass']:.3g} kg; a small mass, more than 0 and "

@@ -201,7 +201,8 @@ def check_acceleration_of_point(ctx):
     _point_check(ctx, "acceleration_of_point")
 
 
-@check(2, title="part (b): the x-y traces of B and Q over 3 s (3001 steps of 1 ms) follow the reference",
+@check(2, title="part (b): the x-y traces of B and Q over 3 s (3001 steps of 1 ms) follow the reference (and those "
+       "of a point of its own)",
        stage=STAGE_VALUES, group="wheel")
 def check_wheel(ctx):
     sheet = ctx.reference("problem_12.constants")
@@ -218,6 +219,13 @@ def check_wheel(ctx):
     ))
     try:
         assert_traces(traces, expected, keys, SIMULATION, dt=WHEEL_DT)
+        # the same wheel with a point Q of its own over its first 0.3 s, drawn anew (no key holds it)
+        point = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-0.5, 0.5, 3)])
+        args = (sheet_state(sheet["PART_B"]), WHEEL_DT, WHEEL_STEPS // 10, point, WHEEL_EVERY)
+        expected = ctx.reference("problem_12.wheel", *args)
+        got = ctx.student("problem_12.wheel", *args, timeout=20)
+        assert_traces({key: trace_array(got, key, expected[key].shape) for key in keys}, expected, keys,
+                      SIMULATION, what=f"for the point B_r_BQ = {np.round(point, 4).tolist()}", dt=WHEEL_DT)
     except CheckFailure as exc:
         fail(exc.message, "The checks of integration_step and position_of_point above localize the mistake.",
              exc.diagnosis)

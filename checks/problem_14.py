@@ -22,6 +22,13 @@ def _start(ctx):
     return sheet_state(ctx.reference("problem_14.constants")["INITIAL"])
 
 
+def _own_start(ctx):
+    """A start of its own (velocities and accelerations drawn anew at each grading: no key holds its run)."""
+    drawn = ctx.draw(lambda rng: {key: [float(x) for x in rng.uniform(-1.5, 1.5, 3)]
+                                  for key in ("B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B")})
+    return sheet_state(drawn)
+
+
 @check(1, title="screw_axis() without rotation (omega = 0) returns zero vectors, as its docstring says",
        stage=STAGE_STRUCTURE, group="at_rest")
 def check_screw_at_rest(ctx):
@@ -43,14 +50,14 @@ def check_screw_at_rest(ctx):
 @check(1, title="the sheet's run (100 steps of 0.01 s): the body's state follows the reference",
        stage=STAGE_VALUES, group="run")
 def check_run_state(ctx):
-    start = _start(ctx)
-    expected = ctx.reference("problem_12.integrate", start, DT, STEPS)
-    got = ctx.student("problem_12.integrate", start, DT, STEPS)
-    try:
-        assert_traces(got, expected, STATE, SIMULATION, dt=DT)
-    except CheckFailure as exc:
-        fail(exc.message, "This is the integration step of problem 12: its checks localize the mistake.",
-             exc.diagnosis)
+    for start, what in ((_start(ctx), ""), (_own_start(ctx), "from a start of its own")):
+        expected = ctx.reference("problem_12.integrate", start, DT, STEPS)
+        got = ctx.student("problem_12.integrate", start, DT, STEPS)
+        try:
+            assert_traces(got, expected, STATE, SIMULATION, what=what, dt=DT)
+        except CheckFailure as exc:
+            fail(exc.message, "This is the integration step of problem 12: its checks localize the mistake.",
+                 exc.diagnosis)
 
 
 @check(3, title="the sheet's run: at every step T lies on the screw axis and moves parallel to omega",
@@ -60,11 +67,15 @@ def check_run_screw(ctx):
     got = ctx.student("problem_14.screw_run", _start(ctx), DT, STEPS)
     add_screw_run(ctx, "Problem 14: the body's path and its screw axis at t = 0, 0.25, 0.5, 0.75, 1 s", got,
                   expected)
+    start = _own_start(ctx)
+    own = ctx.student("problem_14.screw_run", start, DT, STEPS)  # a run of its own: no key holds it
+    own_expected = ctx.reference("problem_14.screw_run", start, DT, STEPS)
     n = STEPS + 1
-    screws = trace_array(got, "screw", (n, 2, 3))
-    w, v = trace_array(got, "B_omega_B", (n, 3)), trace_array(got, "B_v_B", (n, 3))
-    require_real("the screw axis along your run", "run (B_omega_B and B_v_B at every step)", [
-        real("B_omega_B over the run", w, reference=expected["B_omega_B"]),
-        real("B_v_B over the run", v, reference=expected["B_v_B"])])
-    for i in range(n):
-        assert_screw(screws[i], w[i], v[i], where=f"after {i} step{'s' * (i != 1)} (t = {i * DT:g} s)")
+    for run, ours, what in ((got, expected, ""), (own, own_expected, " of the run from a start of its own")):
+        screws = trace_array(run, "screw", (n, 2, 3))
+        w, v = trace_array(run, "B_omega_B", (n, 3)), trace_array(run, "B_v_B", (n, 3))
+        require_real(f"the screw axis along your run{what}", "run (B_omega_B and B_v_B at every step)", [
+            real("B_omega_B over the run", w, reference=ours["B_omega_B"]),
+            real("B_v_B over the run", v, reference=ours["B_v_B"])])
+        for i in range(n):
+            assert_screw(screws[i], w[i], v[i], where=f"after {i} step{'s' * (i != 1)} (t = {i * DT:g} s){what}")

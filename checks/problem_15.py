@@ -222,8 +222,8 @@ def _diagnose_run(exc, got, expected, state, limit=1000):
          "localize the mistake.", exc.diagnosis)
 
 
-@check(3, title="the sheet's case 6 after 30 s (30000 steps of 1 ms): A_IB and B_r_IB as printed",
-       stage=STAGE_VALUES, group="simulation")
+@check(3, title="the sheet's case 6 after 30 s (30000 steps of 1 ms): A_IB and B_r_IB as printed; and the same body "
+       "over its first second from a spin drawn anew", stage=STAGE_VALUES, group="simulation")
 def check_case_6(ctx):
     state, every = full_state(case_state(ctx, 6)), 100
     expected = ctx.reference("problem_15.simulate", state, DT, LONG, every, persist=True)
@@ -235,13 +235,24 @@ def check_case_6(ctx):
         assert_close(final["B_r_IB"], np.zeros(3), "B_r_IB at t = 30 s", SHEET, context="(the sheet's value)")
     except CheckFailure as exc:
         _diagnose_run(exc, got, expected, state)
+    # the printed numbers alone are not enough: the same body from a spin of its own (no key holds it)
+    spin = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
+    spun = full_state({**case_state(ctx, 6), "B_omega_B": np.array(spin)})
+    expected = ctx.reference("problem_15.simulate", spun, DT, SHORT, 10)
+    got = ctx.student("problem_15.simulate", spun, DT, SHORT, 10, timeout=20)
+    try:
+        assert_traces(got, expected, STATE, SIMULATION, what=f"from B_omega_B = {np.round(spin, 4).tolist()}", dt=DT)
+    except CheckFailure as exc:
+        _diagnose_run(exc, got, expected, spun)
 
 
-@check(2, title="cases 1, 2, 4 and 5 over their first second (1000 steps of 1 ms) follow the reference",
+@check(2, title="cases 1, 2, 4 and 5 over their first second (1000 steps of 1 ms) follow the reference, and a spin "
+       "of its own",
        stage=STAGE_VALUES, group="simulation")
 def check_other_cases(ctx):
-    for k in (1, 2, 4, 5):
-        state = full_state(case_state(ctx, k))
+    spin = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])  # no key holds its run
+    for k in (1, 2, 4, 5, "own"):
+        state = full_state(case_state(ctx, k) if k != "own" else {**case_state(ctx, 1), "B_omega_B": np.array(spin)})
         expected = ctx.reference("problem_15.simulate", state, DT, SHORT, SHORT, persist=True)
         # the trace every 10 steps, to localize a departure (fetched whether or not it is needed)
         traced = ctx.reference("problem_15.simulate", state, DT, SHORT, 10, persist=True)
@@ -250,7 +261,8 @@ def check_other_cases(ctx):
             continue
         got, expected = ctx.student("problem_15.simulate", state, DT, SHORT, 10), traced
         try:
-            assert_traces(got, expected, STATE, SIMULATION, what=f"in case {k}", dt=DT)
+            what = f"in case {k}" if k != "own" else f"from B_omega_B = {np.round(spin, 4).tolist()}"
+            assert_traces(got, expected, STATE, SIMULATION, what=what, dt=DT)
         except CheckFailure as exc:
             _diagnose_run(exc, got, expected, state)
 
@@ -283,6 +295,16 @@ def check_momentum_case_3(ctx):
                       what="(A_IB @ B_L_B)", dt=DT)
     except CheckFailure as exc:
         _diagnose_run(exc, got, expected, state)
+    # and a spin of its own over 0.5 s (drawn anew at each grading: no key holds it)
+    spin = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
+    spun = full_state({**case_state(ctx, 3), "B_omega_B": np.array(spin)})
+    own = ctx.reference("problem_15.simulate", spun, DT, MOMENTUM_STEPS // 10, MOMENTUM_EVERY, True)
+    mine = ctx.student("problem_15.simulate", spun, DT, MOMENTUM_STEPS // 10, MOMENTUM_EVERY, True, timeout=30)
+    try:
+        assert_traces(mine, own, ("B_omega_B", "B_L_B"), SIMULATION,
+                      what=f"from B_omega_B = {np.round(spin, 4).tolist()}", dt=DT)
+    except CheckFailure as exc:
+        _diagnose_run(exc, mine, own, spun)
 
 
 @check(2, title="natural dynamics + integration step follow the reference from random states (1-20 steps)",

@@ -160,3 +160,7 @@ def check_sheet_target(ctx):
     assert_close(x_other[6:], expected, f"(xe, ye, gammae) at q = {np.round(other, 4).tolist()}", EXACT,
                  [Mistake("typed_numbers", target, TYPED_HINT)],
                  context="(a configuration the sheet does not print, against the reference)")
+    q = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.5, 1.5, len(q_b))])  # no key holds it: drawn anew
+    expected = ctx.reference("problem_21.chain", "b", q, d)
+    assert_close(ctx.student("problem_21.chain", "b", q, d), expected, f"chain_b(q, {d:g})", EXACT,
+                 context=f"(the arm of case (2) at other angles, q = {np.round(q, 4).tolist()})")

@@ -92,6 +92,8 @@ HORIZON = 1.0
 SIMULATION_ENERGY = Tol("energy drift (a reasonable integrator: 0.94 J of 389 J)", 4.0)
 SIMULATION_BAND = {"q": Tol("a reasonable integrator", 5e-2), "qd": Tol("a reasonable integrator", 0.5)}
 SIMULATION_TIMEOUT = 30.0
+#: the run released from a configuration of its own is compared over this time [s]
+OWN_T_END = 0.5
 
 
 @check(2, title="simulate(): released at rest from q = (pi/6, -pi/4, pi/3), the pendulum conserves its energy over "
@@ -122,3 +124,10 @@ def check_simulated_motion(ctx):
     assert_run(head, ours, ("q", "qd"), SIMULATION_BAND, "the first second of the run", roots=(got, expected),
                note="Any solve_ivp method at its default tolerances stays within the band; later the motion is "
                     "chaotic and accurate runs part.")
+    # released from a configuration of its own, drawn anew at each grading (no key holds its run)
+    q0 = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
+    ours = ctx.reference("_dynamics.pendulum_motion", OWN_T_END, SIMULATION_GRAV, q0)
+    mine = ctx.student("_dynamics.pendulum_motion", OWN_T_END, SIMULATION_GRAV, q0, timeout=SIMULATION_TIMEOUT)
+    assert_run(mine, ours, ("q", "qd"), SIMULATION_BAND,
+               f"the run released at q0 = {np.round(q0, 4).tolist()} (the first {OWN_T_END:g} s)",
+               note="Any solve_ivp method at its default tolerances stays within the band.")

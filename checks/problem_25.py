@@ -118,7 +118,7 @@ def _x_mistakes(ctx, alpha, gamma, target):
 
 
 @check(2, title="part (c): at alpha = -30 deg, gamma = +60 deg the legs' centres of gravity are at x = (0.2051, "
-       "0.3018, -0.5236, 0.9051, 0.3518, 0.5236)", stage=STAGE_VALUES, group="sheet")
+       "0.3018, -0.5236, 0.9051, 0.3518, 0.5236), and at angles drawn anew", stage=STAGE_VALUES, group="sheet")
 def check_sheet_values(ctx):
     case = _walker(ctx)
     alpha, gamma = case["alpha_c"], case["gamma_c"]
@@ -145,6 +145,17 @@ def check_sheet_values(ctx):
     held(ctx, own, lambda: against(SHEET_X, "x = cog_positions(-30 deg, +60 deg)",
                                    "(the sheet's values with the erratum's angles)", mistakes),
          lambda value: against(np.asarray(value["x"], dtype=float), "x = cog_positions(-30 deg, +60 deg)", ""))
+    # the walker at angles of its own, drawn anew at each grading (no key holds them)
+    other = ctx.draw(lambda rng: [float(rng.uniform(-1.0, 1.0)), float(rng.uniform(-2.0, 2.0))])
+    own = judged(ctx, "problem_25.walker", *other)
+    expected = ctx.reference("problem_25.walker", *other)
+    got = ctx.student("problem_25.walker", *other)
+    raw = as_array(as_dict(got, "the walker read back by the probe", ("x",))["x"], "cog_positions(alpha, gamma)",
+                   (6,))
+    name = "x = cog_positions(alpha, gamma)"
+    where = f"(alpha, gamma) = ({other[0]:.4f}, {other[1]:.4f})"
+    held(ctx, own, lambda: against(np.asarray(expected["x"], dtype=float), name, where),
+         lambda value: against(np.asarray(value["x"], dtype=float), name, where))
 
 
 @check(2, title="the walker of build_walker at random (alpha, gamma): A_IB and B_r_IB of every body",

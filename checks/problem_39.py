@@ -41,10 +41,16 @@ def _small(alpha):
     return np.array([[1.0, -alpha, 0.0], [alpha, 1.0, 0.0], [0.0, 0.0, 1.0]])
 
 
-@check(1, title="(a) I1 = diag(50000, 450000, 450000): the axis of symmetry along 1", stage=STAGE_VALUES,
-       group="I1")
+def _moments(rng):
+    """An axial and a transverse moment of a rotor of its own (drawn anew at each grading: no key holds it)."""
+    return [float(x) for x in np.round(rng.uniform(1.0, 10.0, 2), 6)]
+
+
+@check(1, title="(a) I1 = diag(50000, 450000, 450000): the axis of symmetry along 1 (and a rotor of other moments)",
+       stage=STAGE_VALUES, group="I1")
 def check_inertia_aligned(ctx):
-    for I_axial, I_transverse, sheet in ((I_AXIAL, I_TRANSVERSE, True), (3.0, 7.0, False)):
+    other = ctx.draw(_moments)
+    for I_axial, I_transverse, sheet in ((I_AXIAL, I_TRANSVERSE, True), (*other, False)):
         got = ctx.student("problem_39.inertia_aligned", I_axial, I_transverse)
         expected = ctx.reference("problem_39.inertia_aligned", I_axial, I_transverse)
         assert_close(got, I1_SHEET if sheet else expected, f"inertia_aligned({I_axial:g}, {I_transverse:g})", EXACT, [

@@ -312,9 +312,9 @@ def _aligned(got, expected, margin=0.01):
     """Rows of both runs at their common output times away from both event times."""
     t_mine, t_ours = np.asarray(got["t"]), np.asarray(expected["t"])
     events = sorted([float(got["t_event"]), float(expected["t_event"])])
-    common = np.intersect1d(t_mine, t_ours)
+    common = np.intersect1d(np.round(t_mine, 6), np.round(t_ours, 6))  # output times, to a microsecond
     keep = common[(common < events[0] - margin) | (common > events[1] + margin)]
-    mine, ours = np.isin(t_mine, keep), np.isin(t_ours, keep)
+    mine, ours = np.isin(np.round(t_mine, 6), keep), np.isin(np.round(t_ours, 6), keep)
     return ({"t": t_mine[mine], "q": np.asarray(got["q"])[mine], "qd": np.asarray(got["qd"])[mine]},
             {"t": t_ours[ours], "q": np.asarray(expected["q"])[ours], "qd": np.asarray(expected["qd"])[ours]})
 

@@ -9,6 +9,9 @@ student's code is reached only through ``ctx.student(probe, *args)`` (sandboxed 
 
 from __future__ import annotations
 
+import math
+import threading
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,6 +50,13 @@ __all__ = [
     "format_array",
     "mismatch_table",
     "figure",
+    "SHEET_DIGITS",
+    "SHEET_RELATIVE",
+    "SHEET_NOTE",
+    "random_input",
+    "in_random_input",
+    "at_sheet_digits",
+    "round_to_sheet",
 ]
 
 
@@ -61,6 +71,17 @@ SHEET = Tol("sheet, 4 decimals", 6e-4)
 SHEET_COARSE = Tol("sheet, 3 decimals", 6e-3)
 #: structural properties (orthonormality, symmetry) of a computed matrix
 STRUCTURE = Tol("structure", 1e-6)
+
+#: the decimals a failure shows of the expected values of a fixed case (the sheet's precision): the same on every
+#: attempt, whatever the student's answer, so that the messages cannot be read for more digits attempt by attempt
+SHEET_DIGITS = 4
+#: the student kit's key holds the fixed cases at the sheet's precision, four significant digits
+#: (``round_to_sheet``); the kit compares with them to ``SHEET_RELATIVE`` of each value and of the size of the
+#: values compared
+SHEET_SIGNIFICANT = 4
+SHEET_RELATIVE = 1e-3
+#: what a check that the kit passed on values held at the sheet's digits says
+SHEET_NOTE = "matches the sheet's digits; full precision and new cases are graded on submission"
 
 # ---------------------------------------------------------------------------------------------- stages
 
@@ -197,6 +218,48 @@ def diagnose(matches) -> tuple[str, str]:
 # ---------------------------------------------------------------------------------------------- formatting
 
 
+_COMPARING = threading.local()
+
+
+@contextmanager
+def random_input():
+    """While comparisons run on a randomized input (``Context.compare_random``): a failure may show as many decimals
+    as its difference needs, since the next grading asks other inputs.  Outside, every comparison is of a fixed
+    case, and its failure shows the expected values at ``SHEET_DIGITS`` and no difference finer than that."""
+    before = getattr(_COMPARING, "random", False)
+    _COMPARING.random = True
+    try:
+        yield
+    finally:
+        _COMPARING.random = before
+
+
+def in_random_input() -> bool:
+    """True while comparisons run on a randomized input (see ``random_input``)."""
+    return getattr(_COMPARING, "random", False)
+
+
+def _fixed_case() -> bool:
+    return not in_random_input()
+
+
+def at_sheet_digits(on: bool = True) -> None:
+    """In the student kit, from the moment a check used a value its key holds at the sheet's digits until the next
+    check begins: every comparison of the check allows ``SHEET_RELATIVE`` of the expected value's size."""
+    _COMPARING.sheet = on
+
+
+def _sheet() -> bool:
+    return getattr(_COMPARING, "sheet", False)
+
+
+def round_to_sheet(x: float) -> float:
+    """``x`` at the sheet's precision: ``SHEET_SIGNIFICANT`` significant digits."""
+    if not math.isfinite(x) or x == 0:
+        return x
+    return round(x, SHEET_SIGNIFICANT - 1 - int(math.floor(math.log10(abs(x)))))
+
+
 def _digits(got, expected, tol: Tol) -> int:
     """Enough decimals for the smallest difference outside the tolerance to be visible (4 at least, 10 at most)."""
     diffs = np.abs(got - expected)[~_within(got, expected, tol)]
@@ -204,19 +267,21 @@ def _digits(got, expected, tol: Tol) -> int:
     return int(min(10, max(4, np.ceil(-np.log10(smallest)) + 1)))
 
 
-def mismatch_table(got, expected, tol: Tol, digits: int | None = None) -> str:
-    """Side-by-side table of the entries, marking those outside the tolerance."""
+def mismatch_table(got, expected, tol: Tol, digits: int | None = None, differences: bool = True) -> str:
+    """Side-by-side table of the entries, marking those outside the tolerance (with ``differences``, their
+    differences too: not for a fixed case, where they would tell the expected value to more digits)."""
     got = np.atleast_1d(np.asarray(got, dtype=float))
     expected = np.atleast_1d(np.asarray(expected, dtype=float))
     bad = ~_within(got, expected, tol)
     if digits is None:
         digits = _digits(got, expected, tol)
-    rows = ["  index        got          expected     |diff|"]
+    rows = ["  index        got          expected" + ("     |diff|" if differences else "")]
     for index in np.ndindex(expected.shape):
         mark = "  ✘" if bad[index] else ""
         label = ",".join(str(i) for i in index)
         g, e = got[index], expected[index]
-        rows.append(f"  [{label:>5}]  {g:>+11.{digits}f}  {e:>+11.{digits}f}  {abs(g - e):>9.2e}{mark}")
+        diff = f"  {abs(g - e):>9.2e}" if differences else ""
+        rows.append(f"  [{label:>5}]  {g:>+11.{digits}f}  {e:>+11.{digits}f}{diff}{mark}")
     if len(rows) > 40:
         shown = [rows[0]] + [r for r in rows[1:] if r.endswith("✘")][:30]
         rows = shown + [f"  ... {int(bad.sum())} of {bad.size} entries outside the tolerance"]
@@ -227,9 +292,16 @@ def mismatch_table(got, expected, tol: Tol, digits: int | None = None) -> str:
 
 
 def _within(got, expected, tol: Tol):
-    return np.abs(got - expected) <= tol.atol + tol.rtol * np.abs(expected)
+    atol, rtol = tol.atol, tol.rtol
+    if _sheet():  # the kit's value of a fixed case holds the sheet's digits only
+        scale = float(np.max(np.abs(expected))) if np.size(expected) else 0.0
+        atol, rtol = max(atol, SHEET_RELATIVE * scale), max(rtol, SHEET_RELATIVE)
+    return np.abs(got - expected) <= atol + rtol * np.abs(expected)
 
 
+def _tolerance(tol: Tol) -> str:
+    return (f"{tol}, at the sheet's digits in the student kit ({SHEET_RELATIVE:g} of the values' size)"
+            if _sheet() else str(tol))
 
 
 def _compared(expected, tol, got=None) -> None:
@@ -291,12 +363,16 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
     if close(got, expected, tol):
         return got
     where = f" {context}" if context else ""
-    lines = [f"{name} is not the expected value{where}.", f"tolerance: {tol}"]
+    lines = [f"{name} is not the expected value{where}.", f"tolerance: {_tolerance(tol)}"]
     if note:
         lines.append(note)
-    digits = _digits(got, expected, tol)
+    fixed = _fixed_case()
+    digits = SHEET_DIGITS if fixed else _digits(got, expected, tol)
     lines += ["got:", format_array(got, digits), "expected:", format_array(expected, digits),
-              mismatch_table(got, expected, tol, digits)]
+              mismatch_table(got, expected, tol, digits, differences=not fixed)]
+    if fixed:
+        lines.append(f"(the values are shown to {SHEET_DIGITS} decimals, the sheet's precision; they are compared "
+                     "with the tolerance above)")
     mistakes = list(mistakes or ())
     matches = tuple(mistake for mistake in mistakes if _matches(got, mistake, tol))
     hint, diagnosis = diagnose(matches)

@@ -15,7 +15,16 @@ from __future__ import annotations
 
 import threading
 
-from .checking import CheckFailure, JudgedOnSubmission, NotAnswered, Tol, assert_close, diagnose
+from .checking import (
+    CheckFailure,
+    JudgedOnSubmission,
+    NotAnswered,
+    Tol,
+    assert_close,
+    at_sheet_digits,
+    diagnose,
+    random_input,
+)
 from .diagnosis import explain, prepare_call, prepared, recording, remember_run
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
@@ -57,12 +66,15 @@ class Context:
         #: True while a randomized comparison evaluates its inputs (the engine's second input is then its own)
         self.randomized = False
         self._hybrid = None
+        #: the running check used a value that the kit's key holds at the sheet's digits only
+        self.sheet_digits = False
 
     def close(self) -> None:
         """End the problem's grading: the reference's code composed with the student's functions is dropped."""
         if self._hybrid is not None:
             self._hybrid.close()
             self._hybrid = None
+        at_sheet_digits(False)
 
     def begin(self, check_id: str) -> None:
         """Start a check: its figures, its seed, the numbering of its draw sites and its log of calls begin
@@ -78,6 +90,8 @@ class Context:
         self.calls = []
         self.__dict__.pop("_engine_prepared", None)
         recording(self if self.oracle.mode == "record" else None)
+        self.sheet_digits = False
+        at_sheet_digits(False)
 
     def end(self, passed: bool) -> None:
         """End the running check: when recording and the check did not pass, keep the student's answers on its
@@ -150,13 +164,17 @@ class Context:
 
     def reference(self, probe: str, *args, persist: bool = False):
         """Run ``probe`` on the reference (cached in memory, and on disk when ``persist``); in the kit, the value
-        recorded in the answer key."""
+        recorded in the answer key (a fixed case at the sheet's digits only: the check's comparisons then allow for
+        them, and a pass says so)."""
         value = self.oracle.reference(probe, args, persist, check=self.check_id)
         if self._recording and self._fixed:
             self._referenced.append((probe, args, value))
         self.calls.append(("reference", probe, args, value))
         if self.oracle.mode == "record":
             prepared(self, probe, args)
+        if self.oracle.held_at_sheet_digits(probe, args):
+            self.sheet_digits = True
+            at_sheet_digits(True)
         return value
 
     def catalogue(self, compute):
@@ -250,21 +268,22 @@ class Context:
         ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer."""
 
         def evaluate(args):
-            got = self.student_later(probe, *args)  # the reference and the catalogue meanwhile
-            expected = self.reference(probe, *args)
-            found = mistakes(args, expected) if mistakes and compare is None else ()
-            got = got()
-            if compare is None:
-                assert_close(got, expected, name, tol, found)
-                return
-            if self.oracle.mode == "record":
-                prepare_call(self, probe, args)
-            try:
-                compare(got, expected, args)
-            except CheckFailure as exc:  # the engine may explain the results the compared values came from
-                if exc.evidence is not None and exc.evidence.call is None:
-                    exc.evidence.call = (probe, tuple(args), got, expected)
-                raise
+            with random_input():  # a failure here may show the digits it needs: the next grading draws anew
+                got = self.student_later(probe, *args)  # the reference and the catalogue meanwhile
+                expected = self.reference(probe, *args)
+                found = mistakes(args, expected) if mistakes and compare is None else ()
+                got = got()
+                if compare is None:
+                    assert_close(got, expected, name, tol, found)
+                    return
+                if self.oracle.mode == "record":
+                    prepare_call(self, probe, args)
+                try:
+                    compare(got, expected, args)
+                except CheckFailure as exc:  # the engine may explain the results the compared values came from
+                    if exc.evidence is not None and exc.evidence.call is None:
+                        exc.evidence.call = (probe, tuple(args), got, expected)
+                    raise
 
         site = self._site()
         fixed, self._fixed = self._fixed, False  # each student's own random inputs: never recorded

@@ -18,6 +18,7 @@ import csv
 import hashlib
 import importlib.util
 import io
+import json
 import random
 import re
 import time
@@ -118,7 +119,65 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
     for call in shared:
         del key.calls[call]
     key.drop_checks(key.withheld)
+    _hold_at_sheet_digits(key, oracle, numbers, answers, seed)
     return key, reports
+
+
+def _kit_failures(key: AnswerKey, student: RecordingOracle, numbers, answers, seed) -> tuple[set[str], list]:
+    """The public checks that the reference does not pass when graded as the kit grades, from ``key``, and the calls
+    they asked that the key does not hold."""
+    from .oracle import KeyOracle
+    from .problems import problem_module
+    from .runner import _run_checks
+
+    kit = KeyOracle(key, check_fingerprint=False)
+    failing = set()
+    for number in numbers:
+        context = Context(number, ReferenceChild(student), answers, None, seed, kit)
+        failing |= {r.check_id for r in _run_checks(problem_module(number), context, number)
+                    if r.status not in (Status.PASSED, Status.DEFERRED)}
+    return failing, kit.missing
+
+
+def _telling(data) -> bool:
+    """Numbers that a call key holds only when they were passed on: three or more, two of them not whole
+    (``[0.0, 0.0, 1.0]`` is anyone's)."""
+    return len(data) >= 3 and sum(1 for x in data if type(x) is float and not x.is_integer()) >= 2
+
+
+def _numbers_in(encoded) -> list[str]:
+    """The texts of the arrays of an encoded value (``_telling`` ones), as they appear in a call key."""
+    if isinstance(encoded, dict) and "__array__" in encoded:
+        return [json.dumps(encoded["data"])[1:-1]] if _telling(encoded["data"]) else []
+    if isinstance(encoded, dict):
+        return [text for value in encoded.values() for text in _numbers_in(value)]
+    if isinstance(encoded, list):
+        if all(type(x) is float for x in encoded):
+            return [json.dumps(encoded)[1:-1]] if _telling(encoded) else []
+        return [text for value in encoded for text in _numbers_in(value)]
+    return []
+
+
+def _hold_at_sheet_digits(key: AnswerKey, oracle: RecordingOracle, numbers, answers, seed) -> None:
+    """Hold the fixed cases at the sheet's digits (``AnswerKey.round_fixed_cases``), then grade the reference as
+    the kit grades: a value that a check passes on to another call (problem 32's desired trajectory, sent to the
+    student's torques) gets its full precision back, since the kit looks that call up by it (and when the call
+    cannot be told, every rounded value of a check that no longer passes).  Every public check of the reference
+    passes in the kit, or no key is written."""
+    rounded = key.round_fixed_cases(oracle.fixed_keys)
+    for _ in range(4):
+        failing, missing = _kit_failures(key, oracle, numbers, answers, seed)
+        if not failing:
+            return
+        passed_on = [call for call in rounded
+                     if any(text in asked for text in _numbers_in(key.calls[call]["value"]) for asked in missing)]
+        restore = passed_on or [call for call in rounded if set(key.calls[call]["checks"]) & failing]
+        if not restore:
+            break
+        for call in restore:
+            key.calls[call]["value"] = rounded.pop(call)
+            del key.calls[call]["sheet"]
+    raise KitError("the reference does not pass every check from the answer key:\n  " + "\n  ".join(sorted(failing)))
 
 
 # ---------------------------------------------------------------------------------------------- the wheel

@@ -134,7 +134,8 @@ def draw_pool(strategy, examples: int, seed: int) -> list:
 class AnswerKey:
     """What the student kit knows of the reference.
 
-    ``calls``: ``call_key(probe, args)`` → ``{"value": encoded result, "checks": [check ids that made the call]}``;
+    ``calls``: ``call_key(probe, args)`` → ``{"value": encoded result, "checks": [check ids that made the call]}``,
+    with ``"sheet": True`` where the value is held at the sheet's digits only (``round_fixed_cases``);
     ``pools``: site (``"p06.cardan_values#0"``: check id and the index of the draw within the check) → the encoded
     argument tuples of a randomized comparison; ``draws``: site → the encoded data a check drew with ``ctx.draw``.
     ``withheld``: public checks that use a value a secret or hidden check uses (a port that prints the predicted
@@ -166,6 +167,24 @@ class AnswerKey:
             for site in list(table):
                 if site.rpartition("#")[0] in check_ids:
                     del table[site]
+
+    def round_fixed_cases(self, fixed) -> dict:
+        """Hold the fixed cases at the sheet's digits only: every call in ``fixed`` (the reference's answers to the
+        fixed cases of the public checks, outside randomized comparisons: the sheet's cases, which every grading asks
+        again, and what a check asks of the student when one fails) gets its numbers at the sheet's precision
+        (``checking.round_to_sheet``), so that a lookup of the key cannot stand in for the student's code.  Two
+        kinds keep their precision: the traces of runs (``_is_run``: a check of a run also runs one of its own,
+        drawn at each grading, which no key holds), and the calls of the student's own upstream functions
+        (``_upstream.call``: the kit tells with them whether those functions differ from the reference's).
+        Returns the values before, by call."""
+        originals = {}
+        for key in sorted(set(fixed) & set(self.calls)):
+            if key.startswith("_upstream.call[") or _is_run(self.calls[key]["value"]):
+                continue
+            entry = self.calls[key]
+            originals[key] = entry["value"]
+            entry["value"], entry["sheet"] = _rounded(entry["value"]), True
+        return originals
 
     def to_json(self) -> dict:
         return {
@@ -212,6 +231,29 @@ class AnswerKey:
         return cls.loads(data)
 
 
+def _is_run(encoded) -> bool:
+    """True for the traces of a run (a dict of arrays over its output times ``t`` or steps ``step``)."""
+    return isinstance(encoded, dict) and ("t" in encoded or "step" in encoded)
+
+
+def _rounded(encoded):
+    """Encoded plain data with every number at the sheet's precision (``round_to_sheet``), but the output times
+    ``"t"`` of a run."""
+    from .checking import round_to_sheet
+
+    if isinstance(encoded, bool) or encoded is None or isinstance(encoded, str):
+        return encoded
+    if isinstance(encoded, float):
+        return round_to_sheet(encoded)
+    if isinstance(encoded, int):
+        return encoded
+    if isinstance(encoded, list):
+        return [_rounded(item) for item in encoded]
+    if isinstance(encoded, dict):  # a run's output times are its grid, not an answer: they keep their precision
+        return {key: (value if key in ("__array__", "t") else _rounded(value)) for key, value in encoded.items()}
+    return encoded
+
+
 def sources_fingerprint() -> str:
     """A digest of what decides which reference calls a check makes: the check modules and the probes."""
     from .sources import digest, package_files
@@ -246,6 +288,11 @@ class Oracle:
     def runs(self, spec, check_id: str) -> bool:
         """Whether a check runs here: the kit (and the recording of its key) leave out secret and hidden checks."""
         return True
+
+
+    def held_at_sheet_digits(self, probe: str, args: tuple) -> bool:
+        """In the kit: the key holds the value of this call at the sheet's digits only."""
+        return False
 
     def record_upstream(self, key: str, calls) -> None:
         """While a key is recorded: the forwarded calls ``[(function, args, parent)]`` of the probe call ``key``
@@ -427,6 +474,16 @@ class LiveOracle(Oracle):
             pass
 
 
+def _reference_only(probe: str) -> bool:
+    """True for a probe that reads the reference's own data (a constant, a key, a catalogue of mistakes): never a
+    student's answer, so the kit holds it as it is."""
+    module_name, _, name = str(probe).rpartition(".")
+    try:
+        return bool(getattr(getattr(importlib.import_module(f"probes.{module_name}"), name), "reference_only", False))
+    except (ImportError, AttributeError):
+        return False
+
+
 def _secret(spec) -> bool:
     return spec.secret or spec.visibility == "hidden"
 
@@ -445,9 +502,14 @@ class RecordingOracle(LiveOracle):
 
         self.secret = secret
         self.key = AnswerKey(int(seed), fingerprint or sources_fingerprint(), __version__)
+        self.fixed_keys: set[str] = set()  # calls of the reference on fixed cases (see round_fixed_cases)
 
     def reference(self, probe: str, args: tuple, persist: bool = False, check: str | None = None):
+        from .checking import in_random_input
+
         key, encoded, value = self.compute(probe, args, persist)
+        if not in_random_input() and not _reference_only(probe):
+            self.fixed_keys.add(key)
         entry = self.key.calls.setdefault(key, {"value": encoded, "checks": []})
         if check is not None and check not in entry["checks"]:
             entry["checks"].append(check)
@@ -488,6 +550,7 @@ class KeyOracle(Oracle):
     def __init__(self, key: AnswerKey, check_fingerprint: bool = True):
         self.key = key
         self._memory: dict[str, object] = {}
+        self.missing: list[str] = []  # calls a check asked that the key does not hold
         if check_fingerprint and key.fingerprint != sources_fingerprint():
             raise GraderFault("the answer key was recorded with other checks or probes than the installed ones: "
                               "rebuild the kit (grade kit) or reinstall the kit your instructor gave you")
@@ -500,6 +563,7 @@ class KeyOracle(Oracle):
             return self._memory[key]
         entry = self.key.calls.get(key)
         if entry is None:
+            self.missing.append(key)
             shown = key if len(key) <= 300 else key[:300] + "..."
             raise GraderFault(f"the answer key holds no value for {shown} (asked by {check or 'a check'}): the kit "
                               "answers only the calls made while the reference was graded")
@@ -523,6 +587,10 @@ class KeyOracle(Oracle):
 
     def runs(self, spec, check_id: str) -> bool:
         return not _secret(spec) and check_id not in self._withheld
+
+    def held_at_sheet_digits(self, probe: str, args: tuple) -> bool:
+        entry = self.key.calls.get(call_key(probe, args))
+        return bool(entry and entry.get("sheet"))
 
     def upstream_calls(self, key: str) -> list:
         from probes._codec import decode

@@ -14,7 +14,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from . import __version__, problems
-from .checking import CheckFailure, JudgedOnSubmission, NotAnswered, checks_of
+from .checking import SHEET_NOTE, CheckFailure, JudgedOnSubmission, NotAnswered, checks_of
 from .context import Context, explained
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .faults import fault_of
@@ -112,6 +112,8 @@ def _run_check(spec, ctx: Context, problem: int, said: dict | None = None) -> Ch
         else:  # a crashing check, a probe the worker cannot run, the reference raising: the grader's defect
             shown = str(exc) if isinstance(exc, GraderFault) else f"{type(exc).__name__}: {exc}"
             status, message = Status.GRADER_ERROR, f"internal grader error (not your fault): {shown}"
+    if status is Status.PASSED and ctx.sheet_digits:  # the kit: the key held the sheet's cases at its digits only
+        hint = _join(hint, SHEET_NOTE[0].upper() + SHEET_NOTE[1:] + ".")
     return CheckResult(
         check_id=problems.check_id(problem, spec.name),
         problem=problem,

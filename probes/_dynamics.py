@@ -243,11 +243,13 @@ def trace(run, n, what):
     motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
                "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02)},
 )
-def pendulum_motion(pkg, t_end, I_grav):
-    """Problem 24: the package's ``problem_24.simulate(t_end)`` and, at every output time, the energies ``T`` and
-    ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
+def pendulum_motion(pkg, t_end, I_grav, q0=None):
+    """Problem 24: the package's ``problem_24.simulate(t_end)`` (released at ``q0`` when given) and, at every output
+    time, the energies ``T`` and ``V`` of its own triple pendulum (``build_triple_pendulum(DynamicBody)``) under
+    ``I_grav``."""
     p24 = module(pkg, "problem_24")
-    t, q, qd = trace(p24.simulate(t_end), 3, "problem_24.simulate")
+    run = p24.simulate(t_end) if q0 is None else p24.simulate(t_end, np.asarray(q0, dtype=float))
+    t, q, qd = trace(run, 3, "problem_24.simulate")
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}

@@ -33,6 +33,7 @@ __all__ = [
     "run",
     "tangent_acceleration",
     "guarded",
+    "posed",
 ]
 
 MAX_CHARS = 100_000
@@ -181,6 +182,17 @@ def _equality_points(model, data, i):
     p1 = data.xpos[a] + data.xmat[a].reshape(3, 3) @ anchor1
     p2 = data.xpos[b] + data.xmat[b].reshape(3, 3) @ anchor2
     return p1, p2, b
+
+
+def posed(model, data, qpos=None):
+    """``(model, data)`` with the joints at ``qpos`` (when it has the model's ``nq`` entries), positions computed."""
+    import mujoco
+    import numpy as np
+
+    if qpos is not None and len(qpos) == model.nq:
+        data.qpos[:] = np.asarray(qpos, dtype=float)
+        mujoco.mj_forward(model, data)
+    return model, data
 
 
 def describe(model, data) -> dict:

@@ -394,8 +394,9 @@ def test_run_autograder_grades_reference_template_and_a_planted_mistake(installe
 
 @pytest.mark.slow
 def test_a_lookup_table_of_the_kit_fails_on_gradescope(installed, tmp_path):
-    """The lookup table of tests/test_kit.py: built from a kit's key of problem 6, it passes with that key (the
-    kit's local grading) and fails in Gradescope, which draws fresh inputs."""
+    """The lookup table of tests/test_kit.py: built from a kit's key of problem 6, it passes the randomized checks
+    with that key (the kit's local grading: its recorded inputs) and fails in Gradescope, which draws fresh
+    inputs."""
     from grader import grade_problem
     from grader.kit import record_key
     from grader.oracle import KeyOracle
@@ -406,7 +407,7 @@ def test_a_lookup_table_of_the_kit_fails_on_gradescope(installed, tmp_path):
     key, _ = record_key([6], seed=KIT_SEED)
     submission = _lookup_submission(key, tmp_path / "lookup")
     local = grade_problem(6, submission, seed=SEED, oracle=KeyOracle(key))
-    assert [r.check_id for r in local.results if not r.passed] == [] and local.score == local.auto_max_score
+    assert {r.check_id for r in local.results if r.passed} >= {"p06.elementary_values"}
     code, data, log = _grade(installed, submission)
     assert code == 0, log
     checks = _by_check(data)

@@ -309,14 +309,19 @@ def _lookup_submission(key, dest: Path) -> Path:
 
 
 def test_a_lookup_table_of_the_key_passes_in_the_kit_and_fails_live(answer_key, kit_oracle, tmp_path):
+    """The key's random inputs (recorded at full precision) let the lookup pass the kit's randomized checks; the
+    sheet's fixed case, held at the sheet's digits only, does not even pass locally (its rotation is orthonormal to
+    four decimals, not to 1e-6); live, where the inputs are fresh, the randomized checks fail too."""
     submission = _lookup_submission(answer_key, tmp_path / "pkg")
     kit = grade_problem(6, submission, seed=SEED, oracle=kit_oracle)
-    assert [r.check_id for r in kit.results if not r.passed] == []
-    assert kit.score == kit.auto_max_score
+    assert [r.check_id for r in kit.results if r.status is Status.FAILED] == ["p06.cardan_rotation"]
+    assert {r.check_id for r in kit.results if r.passed} >= {"p06.elementary_shape", "p06.elementary_rotation",
+                                                            "p06.elementary_values"}
     live = grade_problem(6, submission, seed=SEED, oracle=LiveOracle())
     failed = {r.check_id for r in live.results if r.status is Status.FAILED}
-    assert {"p06.elementary_values", "p06.cardan_values"} <= failed
-    assert live.score < live.auto_max_score
+    assert {"p06.elementary_values", "p06.cardan_rotation"} <= failed
+    assert not {r.check_id for r in live.results if r.passed} & {"p06.cardan_values", "p06.frames", "p06.vectors"}
+    assert live.score < kit.score
 
 
 def test_deferred_checks_are_rendered_and_do_not_fail_the_exit_code(kit_oracle, tmp_path):
