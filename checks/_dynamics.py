@@ -52,6 +52,7 @@ __all__ = [
     "assert_run",
     "run_figure",
     "run_array",
+    "same_crossings",
     "assert_energy_conserved",
     "subsample",
 ]
@@ -457,3 +458,16 @@ def assert_energy_conserved(got, tol, what, hint):
                               f"t = {t[int(np.argmax(drift))]:.4g} s.")
         except CheckFailure as exc:
             raise CheckFailure(exc.message, hint, "energy_drift") from None
+
+
+def same_crossings(mine, values, zero=1e-9) -> bool:
+    """True when the student's event values cross zero where the reference's do: the same sign at every state where
+    the reference's is not zero, and zero where it is (a positive multiple of the residual, say, or a squared
+    distance less a squared length): another formulation of the same event, which gives the same run."""
+    mine, values = np.asarray(mine, dtype=float), np.asarray(values, dtype=float)
+    if mine.shape != values.shape or not np.all(np.isfinite(mine)):
+        return False
+    scale = max(1.0, float(np.abs(mine).max()))
+    at_zero = np.abs(values) <= zero
+    return bool(np.all(np.sign(mine[~at_zero]) == np.sign(values[~at_zero]))
+                and np.all(np.abs(mine[at_zero]) <= zero * scale))

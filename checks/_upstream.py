@@ -117,13 +117,17 @@ def carried_note(found) -> str:
 
 
 def assert_close_judged(ctx, got, expected, judged_value, name: str, tol: Tol, mistakes=(), pick=None,
-                        context: str = "", note: str = ""):
+                        context: str = "", note: str = "", normalize=None):
     """``assert_close(got, expected, ...)``, where a difference may come from the student's own shared functions of
     earlier problems: ``judged_value`` (from ``judged``, made before the student's answer was looked at) gives what
     the reference's code makes of them, ``pick`` the part of the probe's value that ``expected`` is.  The answer
     passes (error carried forward, with a pointer to the check that finds the mistake) when it matches that;
     otherwise it fails, judged on it, or, when nothing can be carried forward, against the reference's value with a
-    note why."""
+    note why.  ``normalize(got, target)`` brings the answer to the form of the value it is compared with (angles
+    moved by whole turns next to the target's, say)."""
+    answer = got
+    if normalize is not None:
+        got = normalize(answer, expected)
     if close(got, expected, tol):
         return
     found = judged_value.result()
@@ -136,6 +140,8 @@ def assert_close_judged(ctx, got, expected, judged_value, name: str, tol: Tol, m
         assert_close(got, expected, name, tol, mistakes, context=context, note=_join(note, extra))
         return
     value = pick(found.value) if pick is not None else found.value
+    if normalize is not None:
+        got = normalize(answer, value)
     if close(got, value, tol):
         for function in found.functions:
             if function in SHARED:
@@ -154,7 +160,7 @@ def _join_context(context: str, extra: str) -> str:
     return f"{context} ({extra})" if context else f"({extra})"
 
 
-def judged_comparison(ctx, probe: str, name: str, tol: Tol, mistakes=None, pick=None):
+def judged_comparison(ctx, probe: str, name: str, tol: Tol, mistakes=None, pick=None, normalize=None):
     """A ``compare`` for ``ctx.compare_random`` on ``probe``: the reference's value, or where the student's own
     shared functions differ, what the reference's code makes of them (``assert_close_judged``); ``mistakes(args,
     expected)`` is the catalogue of known mistakes."""
@@ -162,7 +168,7 @@ def judged_comparison(ctx, probe: str, name: str, tol: Tol, mistakes=None, pick=
     def compare(got, expected, args):
         judged_value = judged(ctx, probe, *args)
         found = list(mistakes(args, expected)) if mistakes else ()
-        assert_close_judged(ctx, got, expected, judged_value, name, tol, found, pick)
+        assert_close_judged(ctx, got, expected, judged_value, name, tol, found, pick, normalize=normalize)
 
     return compare
 
