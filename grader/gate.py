@@ -43,7 +43,7 @@ def form_of(probe):
     """``(form, says)`` of a probe (its name or its function); a probe without a declared form, or one that reads
     the reference's own data, is the grader's defect when it is asked of a student."""
     name = _name(probe)
-    func = _probe_function(name)
+    func = probe if callable(probe) and getattr(probe, "is_probe", False) else _probe_function(name)
     if getattr(func, "reference_only", False):
         raise GraderFault(f"the probe {name} reads the reference's own data and is never run on a submission")
     form = getattr(func, "returns", None)

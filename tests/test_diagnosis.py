@@ -17,6 +17,8 @@ from grader import strategies as st
 from checks._diagnoses import student_phrase
 from grader.checking import EXACT, CheckFailure, Mistake, assert_close, diagnose
 from grader.context import Context
+from probes import probe
+from probes._forms import Arr, Num
 
 SIGN_HINT = "b enters with the wrong sign: f = a + b."
 FORGOT_HINT = "a is missing: f = a + b."
@@ -27,6 +29,22 @@ INPUTS = st.tuples(st.floats(-2.0, 2.0, allow_nan=False), st.floats(-2.0, 2.0, a
 
 def reference_f(a, b):
     return np.array([a + b])
+
+
+@probe(returns=Arr(1), says="f({0}, {1})")
+def f(pkg, a, b):
+    """The made-up probe: the stubs below answer it (every probe declares the form of its reply)."""
+    return module_f(pkg)(a, b)
+
+
+@probe(returns=Num())
+def double(pkg, x):
+    """A made-up probe of one number."""
+    return 2 * x
+
+
+def module_f(pkg):
+    return pkg.f
 
 
 def student_f(a, b):
@@ -79,7 +97,7 @@ def compare(oracle, twin=False, seed=7):
     ctx = Context(99, StubChild(student_f), {}, None, seed, oracle)
     ctx.begin("p99.f_values")
     with pytest.raises(CheckFailure) as caught:
-        ctx.compare_random("f", INPUTS, name="f(a, b)", tol=EXACT, examples=10, describe=describe,
+        ctx.compare_random(f, INPUTS, name="f(a, b)", tol=EXACT, examples=10, describe=describe,
                            mistakes=lambda args, expected: catalogue(args, expected, twin))
     return caught.value, shown[-1]
 
@@ -147,7 +165,7 @@ def test_a_mistake_matching_only_on_the_degenerate_input_is_not_named():
     ctx = Context(99, StubChild(doubled), {}, None, 3, StubOracle([(0.0, 1.0), (1.0, 1.0)]))
     ctx.begin("p99.f_values")
     with pytest.raises(CheckFailure) as caught:
-        ctx.compare_random("f", INPUTS, name="f(a, b)", tol=EXACT, examples=2,
+        ctx.compare_random(f, INPUTS, name="f(a, b)", tol=EXACT, examples=2,
                            mistakes=lambda args, expected: catalogue(args, expected))
     assert caught.value.diagnosis == ""
     assert caught.value.hint == ""
@@ -163,7 +181,7 @@ def test_a_child_without_call_later_is_called_at_once_and_its_failure_raised_whe
             return args[0] * 2
 
     ctx = Context(99, Plain(), {}, None, 1, StubOracle())
-    assert ctx.student_later("f", 2)() == 4
-    later = ctx.student_later("f", -1)
+    assert ctx.student_later(double, 2)() == 4
+    later = ctx.student_later(double, -1)
     with pytest.raises(StudentCodeError, match="negative"):
         later()

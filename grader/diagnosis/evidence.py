@@ -52,7 +52,10 @@ DECLARATIONS: dict[str, Declaration | None] = {}
 
 
 def declaration(probe: str) -> Declaration | None:
-    """The declaration of a probe (``"problem_06.cardan"``), or None when it declares nothing."""
+    """The declaration of a probe (``"problem_06.cardan"``), or None when it declares nothing.  A probe given by
+    its function rather than its name (a test's own probe, held by the gate to its form) is none of the engine's."""
+    if not isinstance(probe, str):
+        return None
     if probe in DECLARATIONS:
         return DECLARATIONS[probe]
     if "." not in probe:
