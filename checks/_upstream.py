@@ -8,8 +8,9 @@ reference's even where the later code is right.  ``assert_close_judged`` compare
 reference's and, where they differ, with what the *reference's* code of the later problem gives on the *student's*
 shared functions (``grader.upstream``): when the answer matches that, the check passes with full credit and points
 at the check that finds the mistake; when it does not, it fails against that value and says so.  Credit is carried
-forward only where the student's values are real (``flaw``): an upstream function that returns zeros, a constant,
-NaN or a matrix that is no rotation gives nothing to carry.
+forward only where the student's values are real (``flaw``, the rule of ``checks._real``): an upstream function
+that returns zeros, a constant, NaN, a matrix that is not orthonormal or the identity where the reference's turns
+gives nothing to carry.
 
 ``SHARED`` lists the shared functions (``"module.function"``), with the problem that owns each (its solution
 region) and the check that grades it; a test holds it to the reference's regions.  The student kit cannot compose
@@ -21,6 +22,9 @@ import numpy as np
 
 from grader.checking import STRUCTURE, CheckFailure, Tol, assert_close, close
 from grader.problems import check_title
+
+from ._real import flaw as real_flaw
+from ._real import rotation_flaw
 
 __all__ = ["SHARED", "flaw", "judged", "assert_close_judged", "judged_comparison", "judging", "judge_failure",
            "held", "carried_note"]
@@ -45,10 +49,6 @@ SHARED = {
     "problem_43.accelerations": (43, "p43.accelerations_values"),
 }
 
-#: below this, every entry of a value counts as the same number (a constant) or as zero
-_FLAT = 1e-12
-
-
 def _numeric(value):
     try:
         array = np.asarray(value, dtype=float)
@@ -63,9 +63,10 @@ def _is_rotation(A) -> bool:
 
 def flaw(mine, reference) -> str:
     """Why the student's value ``mine`` of a shared function is not a real result to carry forward, judged against
-    the reference's value of the same call ("" when it is real): not numeric where the reference's is, another
-    shape, NaN or infinite, all zeros or one constant where the reference's is not, not a rotation where the
-    reference's is one.  Lists and dicts are judged entry by entry."""
+    the reference's value of the same call ("" when it is real), by the one rule of ``checks._real``: not numeric
+    where the reference's is, another shape, NaN or infinite, all zeros or one constant where the reference's is
+    not; where the reference's is a rotation, not orthonormal or the identity.  Lists and dicts are judged entry by
+    entry."""
     if isinstance(reference, dict):
         if not isinstance(mine, dict) or mine.keys() != reference.keys():
             return "does not have the reference's entries"
@@ -83,18 +84,9 @@ def flaw(mine, reference) -> str:
     ours = _numeric(mine)
     if ours is None or ours.dtype == object:
         return "is not numeric"
-    if ours.shape != theirs.shape:
-        return f"has shape {ours.shape}, not {theirs.shape}"
-    if not np.all(np.isfinite(ours)):
-        return "is not finite (NaN or infinite entries)"
-    scale = max(1.0, float(np.abs(theirs).max())) if theirs.size else 1.0
-    if ours.size and np.all(np.abs(ours) <= _FLAT * scale) and not np.all(np.abs(theirs) <= _FLAT * scale):
-        return "is all zeros"
-    if ours.size > 1 and np.ptp(ours) <= _FLAT * scale and np.ptp(theirs) > _FLAT * scale:
-        return "is one constant everywhere"
-    if _is_rotation(theirs) and not _is_rotation(ours):
-        return "is not a rotation (orthonormal, det = +1)"
-    return ""
+    if _is_rotation(theirs):
+        return rotation_flaw(ours, theirs)
+    return real_flaw(ours, reference=theirs)
 
 
 def judged(ctx, probe: str, *args):
