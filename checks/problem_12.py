@@ -61,15 +61,23 @@ MANUAL = {
 }
 
 
+def _own_start(ctx):
+    """A start of its own: the sheet's body with velocities and accelerations drawn anew at each grading (no key
+    holds its step)."""
+    return sheet_state(ctx.draw(lambda rng: {key: [float(x) for x in rng.uniform(-1.5, 1.5, 3)]
+                                             for key in ("B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B")}))
+
+
 @check(1, title="integration_step keeps A_IB (3 x 3) and B_r_IB, B_v_B, B_omega_B (3-vectors) numeric",
        stage=STAGE_SHAPE, group="integration")
 def check_integration_shape(ctx):
-    expected = ctx.reference("problem_12.integrate", initial(ctx, 2), DT, 1)
-    got = ctx.student("problem_12.integrate", initial(ctx, 2), DT, 1)
     shapes = {"A_IB": (2, 3, 3), "B_r_IB": (2, 3), "B_v_B": (2, 3), "B_omega_B": (2, 3)}
-    for key, shape in shapes.items():
-        assert_real(trace_array(got, key, shape)[1], f"{key} after one step", shape[1:],
-                    np.asarray(expected[key], dtype=float)[1])
+    for start, what in ((initial(ctx, 2), ""), (_own_start(ctx), " from a start of its own")):
+        expected = ctx.reference("problem_12.integrate", start, DT, 1)
+        got = ctx.student("problem_12.integrate", start, DT, 1)
+        for key, shape in shapes.items():
+            assert_real(trace_array(got, key, shape)[1], f"{key} after one step{what}", shape[1:],
+                        np.asarray(expected[key], dtype=float)[1])
 
 
 GENERIC = {
