@@ -25,8 +25,10 @@ import json
 import os
 import shutil
 import tempfile
+import threading
 import zlib
 from collections import OrderedDict
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -170,9 +172,9 @@ class AnswerKey:
 
     def round_fixed_cases(self, fixed) -> dict:
         """Hold the fixed cases at the sheet's digits only: every call in ``fixed`` (the reference's answers to the
-        fixed cases of the public checks, outside randomized comparisons: the sheet's cases, which every grading asks
-        again, and what a check asks of the student when one fails) gets its numbers at the sheet's precision
-        (``checking.round_to_sheet``), so that a lookup of the key cannot stand in for the student's code.  Two
+        fixed cases of the public checks, outside randomized comparisons and the diagnosis engine's own calls: the
+        sheet's cases, which every grading asks again, and what a check asks of the student when one fails) gets its
+        numbers at the sheet's precision (``checking.round_to_sheet``), so that a lookup of the key cannot stand in for the student's code.  Two
         kinds keep their precision: the traces of runs (``_is_run``: a check of a run also runs one of its own,
         drawn at each grading, which no key holds), and the calls of the student's own upstream functions
         (``_upstream.call``: the kit tells with them whether those functions differ from the reference's).
@@ -289,10 +291,21 @@ class Oracle:
         """Whether a check runs here: the kit (and the recording of its key) leave out secret and hidden checks."""
         return True
 
-
     def held_at_sheet_digits(self, probe: str, args: tuple) -> bool:
         """In the kit: the key holds the value of this call at the sheet's digits only."""
         return False
+
+    @contextmanager
+    def diagnosing(self):
+        """While the diagnosis engine asks the reference (its inputs transformed, its terms, its own second input):
+        what it asks is a value a diagnosis needs, which the kit's key holds at full precision
+        (``AnswerKey.round_fixed_cases``) unless a check asks the same call for a fixed case."""
+        before = _in_diagnosis()
+        _ASKING.diagnosis = True
+        try:
+            yield
+        finally:
+            _ASKING.diagnosis = before
 
     def record_upstream(self, key: str, calls) -> None:
         """While a key is recorded: the forwarded calls ``[(function, args, parent)]`` of the probe call ``key``
@@ -474,6 +487,14 @@ class LiveOracle(Oracle):
             pass
 
 
+#: whether the diagnosis engine is asking the reference (``Oracle.diagnosing``), per thread
+_ASKING = threading.local()
+
+
+def _in_diagnosis() -> bool:
+    return getattr(_ASKING, "diagnosis", False)
+
+
 def _reference_only(probe: str) -> bool:
     """True for a probe that reads the reference's own data (a constant, a key, a catalogue of mistakes): never a
     student's answer, so the kit holds it as it is."""
@@ -508,7 +529,7 @@ class RecordingOracle(LiveOracle):
         from .checking import in_random_input
 
         key, encoded, value = self.compute(probe, args, persist)
-        if not in_random_input() and not _reference_only(probe):
+        if not in_random_input() and not _in_diagnosis() and not _reference_only(probe):
             self.fixed_keys.add(key)
         entry = self.key.calls.setdefault(key, {"value": encoded, "checks": []})
         if check is not None and check not in entry["checks"]:
