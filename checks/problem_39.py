@@ -143,8 +143,16 @@ def _assert_forces(got, expected, args, tol, context="", extra=()):
                  context=context)
 
 
+def _own_rotor(rng):
+    """A rotor of its own (drawn anew at each grading: no key holds its forces): I2, omega, m, g, d."""
+    A = rng.uniform(-1.0, 1.0, (3, 3))
+    omega, m, g, d = (float(x) for x in rng.uniform([1.0, 0.5, 1.0, 0.5], [10.0, 5.0, 10.0, 5.0]))
+    return [(A @ A.T + np.eye(3)).tolist(), omega, m, g, d]
+
+
 @check(2, title="(c) the sheet's forces: F1 = (0, 1.5e6, 0) N and F2 = (0, -0.5e6, 0) N at 1500 rpm (pi = sqrt(10), "
-       "g = 10), and the reference's for a rotor the sheet does not print", stage=STAGE_VALUES, group="forces")
+       "g = 10), and the reference's for a rotor the sheet does not print and for one drawn at each grading",
+       stage=STAGE_VALUES, group="forces")
 def check_bearing_forces(ctx):
     args = (I2_SHEET, OMEGA, MASS, GRAVITY, DISTANCE)
     got = ctx.student("problem_39.bearing_forces", *args)
@@ -152,6 +160,12 @@ def check_bearing_forces(ctx):
     expected = ctx.reference("problem_39.bearing_forces", *OTHER_ROTOR)
     _assert_forces(ctx.student("problem_39.bearing_forces", *OTHER_ROTOR), expected, OTHER_ROTOR, EXACT,
                    "(a rotor the sheet does not print, against the reference)",
+                   [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
+    I2, *rest = ctx.draw(_own_rotor)
+    rotor = (np.array(I2), *rest)
+    expected = ctx.reference("problem_39.bearing_forces", *rotor)
+    _assert_forces(ctx.student("problem_39.bearing_forces", *rotor), expected, rotor, EXACT,
+                   f"(a rotor of its own, omega = {rest[0]:.4g} rad/s, m = {rest[1]:.4g} kg, against the reference)",
                    [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
 
 
