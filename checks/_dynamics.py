@@ -10,6 +10,9 @@
   nothing is consistent with itself and earns nothing.
 * ``compare_mfg``: ``M``, ``f``, ``g`` against the reference with the mistake catalogue of ``_dynamics.mfg_mistakes``.
 * Runs (simulations): the first departure from a reference run, and figures.
+* Right-hand sides along a run: called at several states in turn on one tree, as an integrator calls them, they
+  give what they give on a fresh tree (``assert_fresh_along_a_run``): a mass matrix computed once and reused is
+  ``stale_mass_matrix``.
 """
 
 import numpy as np
@@ -28,7 +31,9 @@ from grader.checking import (
     format_array,
 )
 
+from ._effects import same, shown
 from ._real import mass_matrix_flaw, rank_flaw, real, require_real
+from ._shapes import as_list
 
 __all__ = [
     "H",
@@ -55,6 +60,8 @@ __all__ = [
     "same_crossings",
     "assert_energy_conserved",
     "subsample",
+    "ALONG_A_RUN_HINT",
+    "assert_fresh_along_a_run",
 ]
 
 #: step of the finite differences of the physics checks and their tolerance (central differences: error ~ h^2)
@@ -471,3 +478,45 @@ def same_crossings(mine, values, zero=1e-9) -> bool:
     at_zero = np.abs(values) <= zero
     return bool(np.all(np.sign(mine[~at_zero]) == np.sign(values[~at_zero]))
                 and np.all(np.abs(mine[at_zero]) <= zero * scale))
+
+
+# ------------------------------------------------------------------------------------------ along a run
+
+ALONG_A_RUN_HINT = (
+    "An integrator calls the right-hand side again and again on the same tree, at a new state each time: compute "
+    "everything from t and y at every call. Something is kept from an earlier call (an attribute set on the tree, a "
+    "module-level variable, a cache keyed on the wrong thing); if it is the tree's forward_kinematics that keeps "
+    "state, problems 24 and 31 say so."
+)
+_ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth")
+
+
+def _ordinal(k: int) -> str:
+    return _ORDINALS[k] if k < len(_ORDINALS) else f"{k + 1}th"
+
+
+def assert_fresh_along_a_run(ctx, probe, head, cases, what, stale=(), describe=str):
+    """The student's right-hand side, called by the probe ``probe(*head, cases)`` at ``cases`` in turn on one tree
+    (as an integrator calls it), gives at every case what it gives on a fresh tree (``probe(*head, [case])``).
+    Otherwise it keeps something between calls: ``stale`` lists ``(name, values, hint)``, the values along the
+    cases of a known way of doing so (the reference's, with a model computed once at the first case and reused,
+    from a probe called before this); the check fails with the names of those the student's values match, else
+    with ``state_between_calls``.  Needs nothing of the reference otherwise: the values themselves are graded by
+    the comparisons with the reference that come before.  Returns the values on fresh trees."""
+    cases = list(cases)
+    along = as_list(ctx.student(probe, *head, cases), f"the values of {what} along a run", len(cases))
+    fresh = [as_list(ctx.student(probe, *head, [case]), f"the value of {what} on a fresh tree", 1)[0]
+             for case in cases]
+    for k, (case, alone) in enumerate(zip(cases, fresh)):
+        if same(along[k], alone):
+            continue
+        matches = [(name, hint) for name, values, hint in stale
+                   if all(same(mine, ours) for mine, ours in zip(along, values))]
+        names = list(dict.fromkeys(name for name, _ in matches))
+        fail(f"{what} keeps something between calls: called at {len(cases)} states in turn on one tree, as an "
+             f"integrator calls it, it gives at the {_ordinal(k)} ({describe(case)})\n{shown(along[k])}\nwhere a "
+             f"fresh tree gives\n{shown(alone)}\n(tolerance {EXACT}; the states before it: "
+             f"{'; '.join(describe(c) for c in cases[:k])})",
+             matches[0][1] if len(names) == 1 else ALONG_A_RUN_HINT,
+             " or ".join(names) if names else "state_between_calls")
+    return fresh

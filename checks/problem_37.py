@@ -6,8 +6,10 @@ kinematics, Lagrange's equations for ``f`` with the student's own ``M`` (each wh
 ``checks._real``).  Then the values against the reference with a catalogue of known mistakes, on the robot (square
 Jacobians) and on random trees.  The controllers are judged by their torques at random states and by their
 behaviour: computed torques track the path, gravity compensation holds the arm still while it is not commanded to
-move, PD alone sags.  The student's simulations run once per grading, in the sandbox, on the reference's desired
-trajectory; the reference's runs are cached on disk.
+move, PD alone sags.  ``robot_ode`` is also called at several states in turn on one tree, as an integrator calls
+it: a mass matrix computed once and reused gives the right value on a fresh tree, and computed torques cancel
+whichever ``M`` they are given, so neither the random states nor that run show it.  The student's simulations run
+once per grading, in the sandbox, on the reference's desired trajectory; the reference's runs are cached on disk.
 """
 
 import numpy as np
@@ -30,6 +32,7 @@ from grader.checking import (
 from ._dynamics import (
     H,
     ROBOT,
+    assert_fresh_along_a_run,
     assert_run,
     check_gravity_gradient,
     check_kinetic_energy,
@@ -283,7 +286,8 @@ def _own_ode(controller, rows, t, y, mfg):
 
 
 @check(2, title="robot_ode(t, y, tree, trajectory, controller) = (qd, qdd) at random times and states, for each "
-       "controller (the right-hand side of the simulations below)", stage=STAGE_STRUCTURE, group="runs")
+       "controller (the right-hand side of the simulations below), and called along a run on one tree as on fresh "
+       "ones", stage=STAGE_STRUCTURE, group="runs")
 def check_robot_ode(ctx):
     def compare(answer, reference, args):
         controller, rows, [(t, y)] = args
@@ -323,6 +327,33 @@ def check_robot_ode(ctx):
                            tol=EXACT, examples=4, compare=compare, describe=lambda args: f"controller {args[0]!r}, "
                            f"t = {args[2][0][0]:.6g}, y = {np.round(args[2][0][1], 4).tolist()} (the desired "
                            "trajectory of problem 32)")
+    for controller in CONTROLLERS:
+        _assert_fresh_along_a_run(ctx, controller, table)
+
+
+#: states ``(t, y)`` at which robot_ode is called in turn on one tree, as solve_ivp calls it: times inside the
+#: table's intervals, configurations far enough apart that M differs
+RUN_STATES = ((0.555, np.array([0.3, -0.5, -1.4, 0.4, -0.3, 0.6])),
+              (0.955, np.array([0.6, -0.8, -1.1, -0.5, 0.8, 0.2])),
+              (1.355, np.array([0.9, -0.3, -1.7, 0.3, 0.5, -0.7])))
+STALE_HINTS = {
+    "M": "M depends on q: compute M, f, g from the state y at every call of robot_ode; yours reuses the M of its "
+         "first call. Computed torques hide it (tau = M qdd_des - f - g + PD, and qdd = M^-1 (f + g + tau) cancels "
+         "whichever M is used), so that run still tracks the path; the other controllers, and problem 46, do not.",
+    "model": "M, f and g depend on the state: compute them from y at every call of robot_ode; yours reuses those of "
+             "its first call. Computed torques hide it (tau = M qdd_des - f - g + PD cancels whichever model is "
+             "used), so that run still tracks the path; the other controllers do not.",
+}
+
+
+def _assert_fresh_along_a_run(ctx, controller, table):
+    """robot_ode called at ``RUN_STATES`` in turn on one tree (as solve_ivp calls it) gives what it gives on a
+    fresh tree: a model computed once and reused is ``stale_mass_matrix``."""
+    stale = ctx.reference("problem_37.stale_mass_matrix", controller, table, RUN_STATES)
+    assert_fresh_along_a_run(
+        ctx, "problem_37.robot_ode", (controller, table), RUN_STATES, f"robot_ode with the {NAMES[controller]} "
+        f"controller", [("stale_mass_matrix", stale[key], STALE_HINTS[key]) for key in ("M", "model")],
+        describe=lambda case: f"t = {case[0]:g}, y = {np.round(case[1], 4).tolist()}")
 
 
 def _ode_of(answer):

@@ -139,3 +139,24 @@ def robot_ode_terms(pkg, controller, table, cases):
         for name, value in (("f", f), ("gravity", g), ("torque", tau)):
             terms[name].append({"ode": np.concatenate([zero, np.linalg.solve(M, value)])})
     return {"terms": terms, "extra": {}}
+
+
+@probe
+def stale_mass_matrix(pkg, controller, table, cases):
+    """Called on the reference only: ``robot_ode`` at every ``(t, y)`` of ``cases`` in turn as a right-hand side
+    gives it that computes its model once, at the first case, and reuses it: ``{"M": ...}`` with the mass matrix of
+    the first case (``f``, ``g`` at each state), ``{"model": ...}`` with its whole ``M, f, g``."""
+    p37 = module(pkg, "problem_37")
+    dynamics = module(pkg, "dynamics")
+    tree = p37.build_dynamic_robot()
+    first, out = None, {"M": [], "model": []}
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        q, qd = y[:3], y[3:]
+        M, f, g = dynamics.equations_of_motion(tree, q, qd, p37.I_GRAV)
+        first = (M, f, g) if first is None else first
+        desired = p37.desired_state(table, float(t))
+        for key, (M_, f_, g_) in (("M", (first[0], f, g)), ("model", first)):
+            tau = p37.controller_torque(controller, M_, f_, g_, q, qd, *desired)
+            out[key].append(np.concatenate([qd, dynamics.forward_dynamics(M_, f_, g_, tau)]))
+    return out
