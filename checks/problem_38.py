@@ -2,9 +2,12 @@
 (``simulate``).
 
 The right-hand side is compared with the reference at random states, with the usual ways of getting the slope
-wrong.  The motion is judged by physics first (the energy of the student's own walker is conserved: the rolling
+wrong, and called at several states in turn on one tree as an integrator calls it (a mass matrix computed once and
+reused).  The motion is judged by physics first (the energy of the student's own walker is conserved: the rolling
 contact does no work) and then against a tight reference run within bands that any ``solve_ivp`` method at its
-default tolerances meets.
+default tolerances meets.  Tolerances far looser than the defaults (``rtol = atol = 1e-2``) still follow the
+sheet's motion with some methods (DOP853, Radau), so the walker is also started where the sheet does not start it,
+near its equilibrium, where the motion is a few mrad: the defaults follow it, such tolerances lose it.
 """
 
 import numpy as np
@@ -12,7 +15,7 @@ import numpy as np
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, Mistake, Tol, assert_close, check, close
 
-from ._dynamics import WALKER, assert_energy_conserved, assert_run, run_array, run_figure
+from ._dynamics import WALKER, assert_energy_conserved, assert_fresh_along_a_run, assert_run, run_array, run_figure
 from ._upstream import judging
 
 TITLE = "Passive Dynamic Walker"
@@ -55,7 +58,7 @@ def _accelerations(ctx, y, I_grav):
 
 
 @check(2, title="walker_ode(t, y, tree) = (qd, qdd) of the unactuated walker on the 1 degree slope, at random "
-       "states", stage=STAGE_STRUCTURE, group="walker")
+       "states, and called along a run on one tree as on fresh ones", stage=STAGE_STRUCTURE, group="walker")
 def check_walker_ode(ctx):
     def compare(got, expected, args):
         (t, y), = args[0]
@@ -71,6 +74,22 @@ def check_walker_ode(ctx):
                                                             EXACT))
     ctx.compare_random("problem_38.walker_ode", _cases(), name="walker_ode", tol=EXACT, compare=compare, examples=10,
                        describe=lambda args: f"t = {args[0][0][0]:.4g}, y = {np.round(args[0][0][1], 6).tolist()}")
+    stale = ctx.reference("problem_38.stale_mass_matrix", RUN_STATES)
+    assert_fresh_along_a_run(ctx, "problem_38.walker_ode", (), RUN_STATES, "walker_ode",
+                             [("stale_mass_matrix", stale[key], STALE_HINTS[key]) for key in ("M", "model")],
+                             describe=lambda case: f"t = {case[0]:g}, y = {np.round(case[1], 4).tolist()}")
+
+
+#: states ``(t, y)`` at which walker_ode is called in turn on one tree, as solve_ivp calls it: configurations far
+#: enough apart that M differs
+RUN_STATES = ((0.2, np.array([-0.1, 0.3, -0.4, 0.9])), (0.6, np.array([-0.3, 0.7, -0.2, 0.6])),
+              (1.1, np.array([-0.5, 1.2, 0.1, 0.4])))
+STALE_HINTS = {
+    "M": "M depends on q: compute M, f, g from the state y at every call of walker_ode; yours reuses the M of its "
+         "first call.",
+    "model": "M, f and g depend on the state: compute them from y at every call of walker_ode; yours reuses those "
+             "of its first call.",
+}
 
 
 @check(3, title="the walker from q0 = (0, 0), qd0 = (-0.1, 1) over 2 s: its energy is conserved and the run follows "
@@ -102,3 +121,48 @@ def check_walker_run(ctx):
             raise CheckFailure(exc.message, "The run starts at q0 = (0, 0), qd0 = (-0.1, +1).", "initial_state") \
                 from None
         raise
+    _assert_small_motion(ctx)
+
+
+#: a start the sheet does not print: near the walker's equilibrium q* = (0.2400, -0.2939) (unstable: it rolls away
+#: slowly), the swing leg nudged; over 3 s its angles move by at most 5.7e-3 rad and its rates reach 3.4e-3 rad/s
+SMALL_START = (np.array([0.24, -0.294]), np.array([0.0, 2e-3]))
+T_SMALL = 3.0
+#: any solve_ivp method at its default tolerances (rtol 1e-3, atol 1e-6) follows that motion within 1.5e-5 rad and
+#: 5.4e-5 rad/s; at rtol = atol = 1e-2, which lets an error as large as the motion itself pass, none comes closer
+#: than 5.3e-4 rad and 1.1e-3 rad/s (RK45, RK23, DOP853, Radau, BDF and LSODA measured)
+SMALL_BAND = {"q": Tol("a reasonable integrator on a small motion", 1e-4),
+              "qd": Tol("a reasonable integrator on a small motion", 2.5e-4)}
+SHEET_START = np.array([0.0, 0.0, -0.1, 1.0])
+SMALL_HINT = ("walker_ode and the sheet's run agree with the reference (above), but a small motion is lost: the "
+              "integration's tolerances must be tight for the size of the motion. At rtol = atol = 1e-2, say, "
+              "solve_ivp accepts errors as large as a motion of a few mrad; use its defaults (rtol 1e-3, atol 1e-6) "
+              "or tighter.")
+START_HINT = ("The run starts at the q0, qd0 passed to simulate(t_end, n, q0, qd0) (the sheet's q0 = (0, 0), qd0 = "
+              "(-0.1, +1) are only the defaults; the checks also start the walker elsewhere).")
+
+
+def _assert_small_motion(ctx):
+    """The walker from ``SMALL_START`` (a small motion near its equilibrium) follows the reference's run within
+    ``SMALL_BAND``: a tolerance far looser than the defaults loses it, where the sheet's larger motion hides it."""
+    expected = ctx.reference("problem_38.simulate", T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, persist=True)
+    got = ctx.student("problem_38.simulate", T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, timeout=SIMULATION_TIMEOUT)
+    q0, qd0 = (np.round(x, 4).tolist() for x in SMALL_START)
+    what = f"simulate({T_SMALL:g}, {N_OUTPUT}, q0 = {q0}, qd0 = {qd0})"
+    for key in ("t", "q", "qd"):
+        run_array(got, key, np.shape(expected[key]), what)
+    ctx.add_figure(run_figure("Problem 38: a small motion near the equilibrium, q(t) - q(0)", "[rad]", got["t"],
+                              np.asarray(got["q"]) - SMALL_START[0], expected["t"],
+                              np.asarray(expected["q"]) - SMALL_START[0],
+                              ["alpha (stance leg)", "gamma (between the legs)"]))
+    start = np.concatenate([got["q"][0], got["qd"][0]])
+    try:
+        assert_close(start, np.concatenate(SMALL_START), f"the state (q, qd) at t = 0 of {what}", EXACT,
+                     context="(the start passed to simulate)")
+    except CheckFailure as exc:
+        typed = close(start, SHEET_START, EXACT)
+        raise CheckFailure(exc.message, START_HINT, "typed_numbers" if typed else "initial_state") from None
+    assert_run(got, expected, ("q", "qd"), SMALL_BAND, f"the small motion of {what}", hint=SMALL_HINT,
+               diagnosis="integration",
+               note="Any solve_ivp method at its default tolerances stays within the band; the motion itself is a "
+                    "few mrad.")

@@ -141,7 +141,7 @@ def robot_ode_terms(pkg, controller, table, cases):
     return {"terms": terms, "extra": {}}
 
 
-@probe
+@probe(reference_only=True)
 def stale_mass_matrix(pkg, controller, table, cases):
     """Called on the reference only: ``robot_ode`` at every ``(t, y)`` of ``cases`` in turn as a right-hand side
     gives it that computes its model once, at the first case, and reuses it: ``{"M": ...}`` with the mass matrix of

@@ -30,23 +30,27 @@ def walker_ode(pkg, cases):
     motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_38.simulate_fixed",
                "schemes": ("euler", "symplectic")},
 )
-def simulate(pkg, t_end, n, I_grav):
-    """``simulate(t_end, n)`` and the energies ``T``, ``V`` (under ``I_grav``) of the package's own walker at every
-    output time."""
+def simulate(pkg, t_end, n, I_grav, start=None):
+    """``simulate(t_end, n)`` (from ``start = (q0, qd0)`` where given) and the energies ``T``, ``V`` (under
+    ``I_grav``) of the package's own walker at every output time."""
     p38 = module(pkg, "problem_38")
-    t, q, qd = trace(p38.simulate(t_end, n), 2, "problem_38.simulate")
+    starts = () if start is None else tuple(np.array(x, dtype=float) for x in start)
+    t, q, qd = trace(p38.simulate(t_end, n, *starts), 2, "problem_38.simulate")
     tree = p38.build_dynamic_walker()
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}
 
 
 @probe(reference_only=True)
-def simulate_fixed(pkg, t_end, n, I_grav, h, scheme):
+def simulate_fixed(pkg, t_end, n, I_grav, *rest):
     """The walker of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own
-    ``walker_ode`` (the diagnosis engine calls it on the reference)."""
+    ``walker_ode`` (the diagnosis engine calls it on the reference, with the arguments of ``simulate`` followed by
+    ``h, scheme``: ``rest`` is ``(h, scheme)`` or ``(start, h, scheme)``)."""
+    *start, h, scheme = rest
     p38 = module(pkg, "problem_38")
     tree = p38.build_dynamic_walker()
-    y0 = np.concatenate([np.asarray(p38.Q0, dtype=float), np.asarray(p38.QD0, dtype=float)])
+    q0, qd0 = start[0] if start and start[0] is not None else (p38.Q0, p38.QD0)
+    y0 = np.concatenate([np.asarray(q0, dtype=float), np.asarray(qd0, dtype=float)])
     return fixed_run(fixed_step(lambda t, y: p38.walker_ode(t, y, tree), y0, t_end, h, scheme), 2)
 
 
@@ -67,3 +71,21 @@ def walker_ode_terms(pkg, cases):
         terms["f"].append(np.concatenate([zero, np.linalg.solve(M, f)]))
         terms["gravity"].append(np.concatenate([zero, np.linalg.solve(M, g)]))
     return {"terms": terms, "extra": {}}
+
+
+@probe(reference_only=True)
+def stale_mass_matrix(pkg, cases):
+    """Called on the reference only: ``walker_ode`` at every ``(t, y)`` of ``cases`` in turn as a right-hand side
+    gives it that computes its model once, at the first case, and reuses it: ``{"M": ...}`` with the mass matrix of
+    the first case (``f``, ``g`` at each state), ``{"model": ...}`` with its whole ``M, f, g``."""
+    p38 = module(pkg, "problem_38")
+    dynamics = module(pkg, "dynamics")
+    tree = p38.build_dynamic_walker()
+    first, out = None, {"M": [], "model": []}
+    for _, y in cases:
+        y = np.asarray(y, dtype=float)
+        M, f, g = dynamics.equations_of_motion(tree, y[:2], y[2:], p38.I_GRAV)
+        first = (M, f, g) if first is None else first
+        for key, (M_, f_, g_) in (("M", (first[0], f, g)), ("model", first)):
+            out[key].append(np.concatenate([y[2:], dynamics.forward_dynamics(M_, f_, g_, np.zeros(2))]))
+    return out
