@@ -6,8 +6,10 @@ event function; after a plastic impact ``J qd+ = 0`` and the impulse pulls, ``La
 meet the constraint and the equations of motion) and against the reference at random states with a catalogue of
 known mistakes.  Then the run: the event, the impact and the constrained motion, against a tight reference run
 within the bands of the problem data's erratum (the sheet's digits come from MATLAB's loose ode45), and the
-constraint violation with and without Baumgarte stabilisation.  The run needs every piece: when one of them fails,
-the run's checks are not run (they share one group, the pieces at an earlier stage).
+constraint violation with and without Baumgarte stabilisation.  After the plastic impact the wire is taut, so the
+runs with and without stabilisation differ only by the drift: ``constrained_ode`` is called both ways at states off
+the wire and in turn on one robot, and the two runs must not be the same run.  The run needs every piece: when one
+of them fails, the run's checks are not run (they share one group, the pieces at an earlier stage).
 """
 
 import numpy as np
@@ -27,8 +29,8 @@ from grader.checking import (
     figure,
 )
 
-from ._dynamics import assert_run, run_array, same_crossings, subsample
-from ._effects import assert_no_side_effects
+from ._dynamics import assert_fresh_along_a_run, assert_run, run_array, same_crossings, subsample
+from ._effects import assert_no_side_effects, same, shown
 from ._real import rank_flaw, require_real
 from ._upstream import judging
 
@@ -384,8 +386,9 @@ def _assert_other_wire(ctx):
                  note=BANDS_NOTE)
 
 
-@check(3, title="the constrained motion after the impact: with Baumgarte the wire stays taut (within 1e-3 m) and "
-       "the run follows the reference's; without it the violation is shown", stage=STAGE_VALUES, group="wire")
+@check(3, title="the constrained motion after the impact: constrained_ode honours baumgarte and keeps nothing "
+       "between calls, the two runs differ, with Baumgarte the wire stays taut (within 1e-3 m) and the run follows "
+       "the reference's; without it the violation is shown", stage=STAGE_VALUES, group="wire")
 def check_constrained_motion(ctx):
     got, expected = _run(ctx, True)
     plain, plain_expected = _run(ctx, False)
@@ -405,6 +408,8 @@ def check_constrained_motion(ctx):
                           student=[(f"q{k + 1}", *subsample(got["t"], np.asarray(got["q"])[:, k])) for k in range(3)],
                           reference=[(f"q{k + 1}", *subsample(expected["t"], np.asarray(expected["q"])[:, k]))
                                      for k in range(3)]))
+    _assert_constrained_ode(ctx)
+    _assert_flag_passed_on(got, plain, expected, plain_expected)
     t, violation = curves["with Baumgarte"]
     if np.abs(violation).max() > TAUT.atol:
         i = int(np.argmax(np.abs(violation) > TAUT.atol))
@@ -416,3 +421,69 @@ def check_constrained_motion(ctx):
     assert_run(mine, reference, ("q", "qd"), BAND, "the run with Baumgarte", roots=(got, expected),
                note="Any solve_ivp method at its default tolerances stays within the band (output times near "
                     "the event are left out).")
+
+
+#: states ``(t, y)`` off the wire (c and c_dot not zero, so that the Baumgarte terms are not), at which
+#: constrained_ode is called with and without stabilisation, in turn on one robot as solve_ivp calls it
+WIRE_STATES = ((1.05, np.array([0.5, -0.7, -1.5, 0.4, -0.6, 0.3])),
+               (1.3, np.array([0.8, -0.4, -1.8, -0.3, 0.5, 0.7])),
+               (1.6, np.array([0.2, -0.9, -1.3, 0.6, 0.2, -0.5])))
+WIRE_CASES = tuple((t, y, baumgarte) for t, y in WIRE_STATES for baumgarte in (True, False))
+STALE_HINT = ("M depends on q: compute M, f, g from the state y at every call of constrained_ode; yours reuses the M "
+              "of its first call. Computed torques hide most of it (tau = M qdd_des - f - g + PD cancels whichever M "
+              "is used), so the run stays near the reference's.")
+FLAG_HINT = ("constrained_ode(t, y, tree, trajectory, baumgarte) must pass its baumgarte on to constraint_terms: the "
+             "stabilisation P_B c + D_B c_dot is added only when it is True. Right after the plastic impact the wire "
+             "is taut (c = 0, c_dot = 0), so the two runs differ only as the integration drifts, and the runs alone "
+             "barely show a flag that is ignored.")
+SIMULATE_FLAG_HINT = ("Pass simulate's baumgarte on to the constrained phase (to constrained_ode through solve_ivp's "
+                      "args): constrained_ode honours it (checked above), simulate does not.")
+
+
+def _describe_wire_case(case):
+    t, y, baumgarte = case
+    return f"t = {t:g}, y = {np.round(y, 4).tolist()}, baumgarte = {baumgarte}"
+
+
+def _assert_constrained_ode(ctx):
+    """constrained_ode called in turn on one robot gives what it gives on a fresh one (a mass matrix computed once is
+    ``stale_mass_matrix``), and its value with baumgarte=True differs from that with False wherever the reference's
+    do (an ignored flag is ``baumgarte_ignored``)."""
+    table = ctx.reference("problem_37.trajectory", persist=True)
+    ours = ctx.reference("problem_46.constrained_ode", table, WIRE_CASES)
+    stale = ctx.reference("problem_46.stale_mass_matrix", table, WIRE_CASES)
+    mine = assert_fresh_along_a_run(ctx, "problem_46.constrained_ode", (table,), WIRE_CASES, "constrained_ode",
+                                    [("stale_mass_matrix", stale, STALE_HINT)], describe=_describe_wire_case)
+    for k in range(0, len(WIRE_CASES), 2):
+        (on, off), (ours_on, ours_off) = mine[k:k + 2], ours[k:k + 2]
+        if not same(on, off) or same(ours_on, ours_off):
+            continue
+        way = ("always with the stabilisation" if same(on, ours_on) else
+               "always without the stabilisation" if same(on, ours_off) else "the same either way")
+        t, y, _ = WIRE_CASES[k]
+        fail(f"constrained_ode ignores its baumgarte argument: at t = {t:g}, y = {np.round(y, 4).tolist()} (off the "
+             f"wire, where the Baumgarte terms are not zero) it gives with baumgarte=True and with baumgarte=False "
+             f"the same\n{shown(on)}\n({way}); the reference's with Baumgarte:\n{shown(ours_on)}\nwithout:\n"
+             f"{shown(ours_off)}", FLAG_HINT, "baumgarte_ignored")
+
+
+def _after_impact(run):
+    t = np.asarray(run["t"], dtype=float)
+    after = t > float(run["t_event"])
+    return t[after], np.asarray(run["q"], dtype=float)[after], np.asarray(run["qd"], dtype=float)[after]
+
+
+def _assert_flag_passed_on(got, plain, expected, plain_expected):
+    """The student's runs with and without Baumgarte differ after the impact (the stabilisation acts on the drift,
+    so a correct pair of runs never agrees to the last bit): the same run twice is ``baumgarte_ignored``."""
+    (t_on, q_on, qd_on), (t_off, q_off, qd_off) = _after_impact(got), _after_impact(plain)
+    if not (t_on.size and np.array_equal(t_on, t_off) and np.array_equal(q_on, q_off)
+            and np.array_equal(qd_on, qd_off)):
+        return
+    (_, ours_on, _), (_, ours_off, _) = _after_impact(expected), _after_impact(plain_expected)
+    n = min(len(ours_on), len(ours_off))
+    fail(f"simulate(trajectory, baumgarte=False) gives the very run of baumgarte=True after the impact: all "
+         f"{t_on.size} outputs from t = {t_on[0]:.4g} s to {t_on[-1]:.4g} s are equal to the last bit, where the "
+         f"stabilisation always changes the run, if only by the drift it corrects (the reference's tight runs "
+         f"differ by up to {np.abs(ours_on[:n] - ours_off[:n]).max():.2g} rad).", SIMULATE_FLAG_HINT,
+         "baumgarte_ignored")

@@ -205,3 +205,34 @@ def simulate_fixed(pkg, table, baumgarte, t_end, *rest):
     y0 = np.concatenate([np.asarray(table["q"][0], dtype=float), np.asarray(table["qd"][0], dtype=float)])
     return fixed_run(fixed_step(lambda t, y: p37.robot_ode(t, y, tree, table, "computed_torques"), y0, float(t_end),
                                 h, scheme, event=event, direction=1.0), 3)
+
+
+@probe(returns=Seq(Arr(6), length=lambda table, cases: len(cases)), says="constrained_ode")
+def constrained_ode(pkg, table, cases):
+    """``constrained_ode(t, y, tree, table, baumgarte)`` for every ``(t, y, baumgarte)`` of ``cases`` in turn, on
+    one robot (the sheet's wire)."""
+    p46 = module(pkg, "problem_46")
+    tree = _robot(pkg)
+    return [np.array(p46.constrained_ode(float(t), np.asarray(y, dtype=float), tree, table, bool(baumgarte)),
+                     dtype=float) for t, y, baumgarte in cases]
+
+
+@probe(reference_only=True)
+def stale_mass_matrix(pkg, table, cases):
+    """Called on the reference only: ``constrained_ode`` at every ``(t, y, baumgarte)`` of ``cases`` in turn as a
+    right-hand side gives it that computes the mass matrix once, at the first case, and reuses it (``f``, ``g`` and
+    the constraint terms at each state)."""
+    p37, p46 = module(pkg, "problem_37"), module(pkg, "problem_46")
+    dynamics = module(pkg, "dynamics")
+    tree = _robot(pkg)
+    first, out = None, []
+    for t, y, baumgarte in cases:
+        y = np.asarray(y, dtype=float)
+        q, qd = y[:3], y[3:]
+        M, f, g = dynamics.equations_of_motion(tree, q, qd, p37.I_GRAV)
+        first = M if first is None else first
+        tau = p37.computed_torque(first, f, g, q, qd, *p37.desired_state(table, float(t)))
+        J, sigma = p46.constraint_terms(tree["end_effector"], bool(baumgarte))
+        qdd, _ = p46.constrained_dynamics(first, f, g, tau, J, sigma)
+        out.append(np.concatenate([qd, qdd]))
+    return out
