@@ -19,6 +19,7 @@ from grader.checking import (
     Tol,
     assert_close,
     check,
+    close,
     fail,
     figure,
 )
@@ -108,9 +109,9 @@ def check_events(ctx):
 # ------------------------------------------------------------------------------------------ the flight
 
 
-def _flight(got, expected, v0, drag, bands):
+def _flight(got, expected, v0, drag, bands, g=None):
     """The landing is found, is not the launch, ends the run; the apex and the landing lie within the bands."""
-    what = f"throw(v0 = {v0:.4g}, drag = {drag:.4g})"
+    what = f"throw(v0 = {v0:.4g}, drag = {drag:.4g}{'' if g is None else f', g = {g:g}'})"
     if got["t_land"] is None:
         fail(f"{what}: the ball never landed (t_land is None); the reference's lands at t = "
              f"{expected['t_land']:.4f} s.", "The landing event (height through zero, direction -1, terminal) must be "
@@ -132,8 +133,8 @@ def _flight(got, expected, v0, drag, bands):
 
 
 @check(3, title="throw(): the sheet's ball (v0 = 10 m/s, k = 0.1 1/m) peaks and lands at the reference's times "
-       "(within 2e-3 s) and heights; the landing ends the run and is not the launch", stage=STAGE_VALUES,
-       group="events")
+       "(within 2e-3 s) and heights; the landing ends the run and is not the launch; thrown on the Moon it follows "
+       "its g", stage=STAGE_VALUES, group="events")
 def check_flight(ctx):
     expected = ctx.reference("problem_42.throw", V0, DRAG)
     got = ctx.student("problem_42.throw", V0, DRAG, timeout=20)
@@ -141,6 +142,27 @@ def check_flight(ctx):
                           student=[("height", *subsample(got["t"], np.asarray(got["y"])[:, 0]))],
                           reference=[("height", *subsample(expected["t"], np.asarray(expected["y"])[:, 0]))]))
     _flight(got, expected, V0, DRAG, SHEET_BANDS)
+    _assert_moon(ctx, expected)
+
+
+#: the sheet's ball thrown on the Moon (g = 1.62 m/s^2, problem 2's Moon): it lands at 7.03 s (the sheet's at 1.69
+#: s), so a throw that keeps the sheet's g whatever it is given earns nothing; any solve_ivp method at its default
+#: tolerances errs there by up to 6.5e-3 s in the landing time and 8.9e-3 m in the apex height (BDF), within the
+#: bands of the random balls
+MOON = 1.62
+MOON_HINT = ("Your flight is the one under the sheet's g = 9.81 whatever g throw is given: pass g on to ball_ode "
+             "(solve_ivp(..., args=(drag, g))); ball_ode's own default is the sheet's.")
+
+
+def _assert_moon(ctx, sheet):
+    """The ball thrown with ``g = MOON`` lands where the reference's does, not where the sheet's ball lands."""
+    expected = ctx.reference("problem_42.throw", V0, DRAG, MOON)
+    got = ctx.student("problem_42.throw", V0, DRAG, MOON, timeout=20)
+    if got["t_land"] is not None and close(got["t_land"], sheet["t_land"], TIME):
+        assert_close(got["t_land"], expected["t_land"], f"t_land of throw(v0 = {V0:g}, drag = {DRAG:g}, g = {MOON:g})",
+                     TIME, [Mistake("typed_numbers", sheet["t_land"], MOON_HINT)],
+                     context="(the sheet's ball on the Moon, against a tight reference run)")
+    _flight(got, expected, V0, DRAG, RANDOM_BANDS, g=MOON)
 
 
 @st.composite

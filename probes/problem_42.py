@@ -49,14 +49,16 @@ def _optional(value):
         }
     ),
     says="throw({0}, {1})",
-    args=("scalar", "scalar"),
+    args=("scalar", "scalar", "scalar"),
     draw=False,
     motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
                "schemes": ("euler",)},
 )
-def throw(pkg, v0, drag):
-    """``throw(v0, drag)``: the apex and the landing, and the run ``t``, ``y`` (rows ``(height, velocity)``)."""
-    run = module(pkg, "problem_42").throw(float(v0), float(drag))
+def throw(pkg, v0, drag, g=None):
+    """``throw(v0, drag)`` (and ``g`` where given): the apex and the landing, and the run ``t``, ``y`` (rows
+    ``(height, velocity)``)."""
+    gravity = {} if g is None else {"g": float(g)}
+    run = module(pkg, "problem_42").throw(float(v0), float(drag), **gravity)
     if not isinstance(run, dict):
         raise ValueError(f"throw must return a dict, got {str(run)[:200]}")
     t = np.asarray(run.get("t"), dtype=float).reshape(-1)
@@ -75,10 +77,13 @@ def key(pkg):
 
 
 @probe(reference_only=True)
-def throw_fixed(pkg, v0, drag, h, scheme):
+def throw_fixed(pkg, v0, drag, *rest):
     """The ball of ``throw`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``ball_ode``, until
-    the height falls through zero (the diagnosis engine calls it on the reference)."""
+    the height falls through zero (the diagnosis engine calls it on the reference, with the arguments of ``throw``
+    followed by ``h, scheme``: ``rest`` is ``(h, scheme)`` or ``(g, h, scheme)``)."""
+    *g, h, scheme = rest
     p42 = module(pkg, "problem_42")
-    run = fixed_step(lambda t, y: p42.ball_ode(t, y, float(drag), p42.GRAVITY), [0.0, float(v0)], p42.T_MAX, h,
+    gravity = float(g[0]) if g and g[0] is not None else p42.GRAVITY
+    run = fixed_step(lambda t, y: p42.ball_ode(t, y, float(drag), gravity), [0.0, float(v0)], p42.T_MAX, h,
                      scheme, event=lambda t, y: y[0] if t > 0 else 1.0)
     return {"t": run["t"], "y": run["y"], "t_land": run["t_event"]}
