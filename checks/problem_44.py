@@ -5,7 +5,8 @@ The event function at random states (its residual, ``terminal``, ``direction = -
 event time and state against a tight reference run within bands that any ``solve_ivp`` method at its default
 tolerances meets (a fixed-step loop at a large step does not), the run ends at the event, follows the reference's
 and keeps the bar on its first support; the bar's motion up to the event is drawn, the student's over the
-reference's.  Random starting states make a memorised event time worthless.
+reference's.  Random starting states make a memorised event time worthless, and a bar of another mass, inertia and
+gravity one that keeps the sheet's.
 """
 
 import numpy as np
@@ -135,7 +136,8 @@ def _event(got, expected, what, bands):
 
 
 @check(3, title="simulate(): the bar hits the second support at the reference's time (within 2e-3 s) and state, "
-       "and the run ends there", stage=STAGE_VALUES, group="run")
+       "and the run ends there; a bar of another mass, inertia and gravity hits it at its own time",
+       stage=STAGE_VALUES, group="run")
 def check_event(ctx):
     got, expected = _runs(ctx)
     labels = ("x [m]", "y [m]", "phi [rad]")
@@ -145,6 +147,35 @@ def check_event(ctx):
                           reference=[(label, *subsample(expected["t"], np.asarray(expected["q"])[:, k]))
                                      for k, label in enumerate(labels)]))
     _event(got, expected, "simulate()", SHEET_BANDS)
+    _assert_other_bar(ctx, expected)
+
+
+#: a bar the sheet does not print, (m, theta, g) = (0.8 kg, 0.6 kg m^2, 11 m/s^2): it hits the second support at
+#: 0.506 s (the sheet's at 0.685 s); any solve_ivp method at its default tolerances errs there by up to 2.9e-4 s,
+#: 1.8e-3 in q and 1.0e-2 in qd at the event (BDF), within the sheet's bands
+OTHER_BAR = (0.8, 0.6, 11.0)
+#: the bars a simulate that keeps some of the sheet's m = 0.5, theta = 1, g = 9.81 whatever it is given runs instead
+SHEET_PARTS = {"m, theta and g": (0.5, 1.0, 9.81), "g": (0.8, 0.6, 9.81), "m and theta": (0.5, 1.0, 11.0)}
+
+
+def _assert_other_bar(ctx, sheet):
+    """The run of ``OTHER_BAR`` hits the second support when the reference's does: a bar_ode or simulate that keeps
+    the sheet's m, theta or g whatever it is given fails (``typed_numbers``)."""
+    expected = ctx.reference("problem_44.simulate", Q0, T_END, S, OTHER_BAR, persist=True)
+    kept = {part: sheet if part == "m, theta and g" else
+            ctx.reference("problem_44.simulate", Q0, T_END, S, bar, persist=True)
+            for part, bar in SHEET_PARTS.items()}
+    m, theta, g = OTHER_BAR
+    what = f"simulate(q0, {T_END:g}, {S:g}, m = {m:g}, theta = {theta:g}, g = {g:g})"
+    got = ctx.student("problem_44.simulate", Q0, T_END, S, OTHER_BAR, timeout=SIMULATION_TIMEOUT)
+    typed = [Mistake("typed_numbers", run["t_event"], f"Your run keeps the sheet's {part} whatever bar it is given: "
+                     f"pass simulate's m, theta, g on to bar_ode (solve_ivp(..., args=(m, theta, g))) and bar_ode's "
+                     f"on to the accelerations of problem 43.")
+             for part, run in kept.items() if run.get("t_event") is not None]
+    if got.get("t_event") is not None and any(close(got["t_event"], mistake.value, EVENT_TIME) for mistake in typed):
+        assert_close(got["t_event"], expected["t_event"], f"t_event of {what}", EVENT_TIME, typed,
+                     context="(a bar the sheet does not print, against a tight reference run)")
+    _event(got, expected, what, SHEET_BANDS)
 
 
 def _common(got, expected):
