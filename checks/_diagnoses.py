@@ -267,6 +267,8 @@ _TABLE = (
     # ---------------------------------------------------------------- ignored argument
     _D("ignored_argument", "ignored_argument", "an argument that your function ignores", "ignored an argument"),
     _D("ignores_parent", "ignored_argument", "the parent frame ignored", "ignored the parent frame"),
+    _D("baumgarte_ignored", "ignored_argument", "the baumgarte flag ignored (stabilisation always on or always off)",
+       "ignored the baumgarte flag"),
     _D("stale", "ignored_argument", "a value stored once instead of computed when asked",
        "stored a value instead of computing it"),
     # ---------------------------------------------------------------- motions
@@ -392,6 +394,8 @@ _TABLE = (
        "changed the caller's arrays in place"),
     _D("shared_result", "side_effect", "one array returned on every call", "returned the same array on every call"),
     _D("state_between_calls", "side_effect", "state kept between calls", "kept state between calls"),
+    _D("stale_mass_matrix", "side_effect", "a mass matrix computed once and reused at later states",
+       "reused a mass matrix computed at another state"),
     # ---------------------------------------------------------------- choices and texts
     _D("wrong_choice", "choice", "a wrong option", "chose a wrong option"),
     _D("correct_statement", "choice", "a correct statement taken for the wrong one",
