@@ -205,14 +205,14 @@ def _same_bodies(bodies, others):
 @probe(reference_only=True)
 def mistaken_states(pkg, specs, description, q, qd=None, qdd=None):
     """The bodies' states (``state(...)["bodies"]``) of the described tree as a recursion with a known mistake
-    computes them, one per mistake ``spec`` (see ``mistaken_classes`` of the package's ``tree`` module, which only
-    the reference has); ``None`` where the mistake cannot be computed or changes nothing on this tree."""
-    tree_module = module(pkg, "tree")
+    computes them, one per mistake ``spec`` (see ``mistaken_classes`` of the package's ``tree_mistakes`` module,
+    which only the reference has); ``None`` where the mistake cannot be computed or changes nothing on this tree."""
+    mistakes = module(pkg, "tree_mistakes")
     correct = tree_state(pkg, description, q, qd, qdd)["bodies"]
     found = []
     for spec in specs:
         try:
-            tree = build(tree_module.mistaken_classes(spec), description)
+            tree = build(mistakes.mistaken_classes(spec), description)
             tree.forward_kinematics(np.asarray(q, dtype=float), *(() if qd is None else (qd, qdd)))
         except (ValueError, IndexError, np.linalg.LinAlgError):
             found.append(None)

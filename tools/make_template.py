@@ -7,7 +7,8 @@ Every region between ``# BEGIN SOLUTION problem N`` and ``# END SOLUTION`` is re
 ``NotImplementedError("Problem N: <name> is not implemented yet")``, where <name> is the enclosing function or
 method.  A top-level block between ``# BEGIN REFERENCE ONLY`` and ``# END REFERENCE ONLY`` (the grader's own
 computations, e.g. of multiple-choice keys) is left out of the template entirely; its names stay out of
-``__all__``.  ``reference/answers.toml`` becomes ``answers.toml`` with every answer blank ("") and a comment saying
+``__all__``.  A module that is one such block from its first line to its last (``tree_mistakes.py``: the
+deliberately wrong recursions the diagnoses compute) is left out whole.  ``reference/answers.toml`` becomes ``answers.toml`` with every answer blank ("") and a comment saying
 what kind of value is expected.  The package's docstring is the template's own (``PACKAGE_DOCSTRING``).
 Everything else is copied verbatim.
 """
@@ -101,6 +102,12 @@ def strip_reference_only(source: str, filename: str = "<source>") -> str:
     return "".join(out)
 
 
+def reference_only(source: str, filename: str = "<source>") -> bool:
+    """True if the module ``source`` is reference-only as a whole: nothing is left once its ``REFERENCE ONLY``
+    blocks are dropped (the template leaves it out)."""
+    return not strip_reference_only(source, filename).strip()
+
+
 def stub_source(source: str, filename: str = "<source>") -> str:
     """Drop the reference-only blocks of ``source`` and replace every solution region by a
     ``NotImplementedError`` stub."""
@@ -188,7 +195,9 @@ def render() -> dict[str, str]:
     """Every file of the template, by relative path."""
     files: dict[str, str] = {}
     for path in sorted(REFERENCE.glob("*.py")):
-        files[path.name] = stub_source(path.read_text(), str(path))
+        source = path.read_text()
+        if not reference_only(source, str(path)):
+            files[path.name] = stub_source(source, str(path))
     files["__init__.py"] = with_docstring(files["__init__.py"], PACKAGE_DOCSTRING, str(REFERENCE / "__init__.py"))
     answers = REFERENCE / "answers.toml"
     if answers.exists():
