@@ -34,7 +34,7 @@ from .errors import SubmissionError
 from .sandbox.notebook import clean_cell, definitions
 
 __all__ = ["Submission", "NotebookPlan", "materialize", "student_files", "submission_digest", "template_dir",
-           "template_index", "content_hash", "read_answers", "notebook_plan", "problem_notes", "MAX_FILES",
+           "template_index", "content_hash", "read_answers", "notebook_plan", "MAX_FILES",
            "MAX_BYTES", "MAX_ENTRIES", "MAX_DEPTH", "MAX_NAME_BYTES", "MAX_PATH_BYTES", "MAX_NOTEBOOK_DEPTH", "FIX",
            "NOTEBOOK_MANIFEST"]
 
@@ -79,6 +79,9 @@ class NotebookPlan:
 
 @dataclass(frozen=True)
 class Submission:
+    """A submission as the grader receives it: its private package, the student's files, the answers of its
+    answers.toml (read as data, never run) and what its reports say about it."""
+
     source: str  # what the user pointed at
     path: Path  # the private package directory (template + student's files)
     digest: str  # sha256 of the student's files (names and contents)
@@ -86,6 +89,26 @@ class Submission:
     notes: tuple[str, ...] = ()
     notebooks: tuple[NotebookPlan, ...] = ()
     template_copies: tuple[str, ...] = ()  # the student's files that are the template's, unchanged
+    answers: dict = field(default_factory=dict, compare=False)  # the parsed answers.toml (``read_answers``)
+    answers_error: str | None = None  # why answers.toml cannot be read, or None
+
+    def problem_notes(self, number: int) -> tuple[str, ...]:
+        """What the report of problem ``number`` says about the submission: its notes, and, for a submission with
+        notebooks, the names the problem needs that neither a notebook nor a file of the student defines."""
+        notes = list(self.notes)
+        if not self.notebooks:
+            return tuple(notes)
+        needed = template_index()[1].get(number, ())
+        given = {(target, name) for plan in self.notebooks for name, targets in plan.placed.items()
+                 for target in targets}
+        files = set(self.files) - set(self.template_copies)
+        missing = [(m, n) for m, n in needed if (m, n) not in given and f"{m}.py" not in files]
+        if missing:
+            found = [n for plan in self.notebooks for n in plan.defined if not n.startswith("__")]
+            shown = ", ".join(f"{n} ({m})" for m, n in missing)
+            notes.append(f"problem {number} needs {shown}, which none of your notebooks or files defines; your "
+                         f"notebooks define: {', '.join(dict.fromkeys(found)) or 'nothing'}")
+        return tuple(notes)
 
 
 def template_dir() -> Path:
@@ -699,25 +722,6 @@ def notebook_plan(file: str, data: bytes, module: str) -> NotebookPlan:
     return NotebookPlan(file, module, tuple(cells), tuple(defined), placed, tuple(notes))
 
 
-def problem_notes(submission: Submission, number: int) -> tuple[str, ...]:
-    """What the report of problem ``number`` says about the submission: its notes, and, for a submission with
-    notebooks, the names the problem needs that neither a notebook nor a file of the student defines."""
-    notes = list(submission.notes)
-    if not submission.notebooks:
-        return tuple(notes)
-    needed = template_index()[1].get(number, ())
-    given = {(target, name) for plan in submission.notebooks for name, targets in plan.placed.items()
-             for target in targets}
-    files = set(submission.files) - set(submission.template_copies)
-    missing = [(m, n) for m, n in needed if (m, n) not in given and f"{m}.py" not in files]
-    if missing:
-        found = [n for plan in submission.notebooks for n in plan.defined if not n.startswith("__")]
-        shown = ", ".join(f"{n} ({m})" for m, n in missing)
-        notes.append(f"problem {number} needs {shown}, which none of your notebooks or files defines; your "
-                     f"notebooks define: {', '.join(dict.fromkeys(found)) or 'nothing'}")
-    return tuple(notes)
-
-
 # ------------------------------------------------------------------------------------------ the submission
 
 
@@ -794,7 +798,8 @@ def submission_digest(source: str | Path) -> str:
 
 def materialize(source: str | Path, workdir: str | Path | None = None) -> Submission:
     """Copy the template and lay the submission over it in a fresh private directory; a notebook's definitions
-    are planned into the template's modules (``NOTEBOOK_MANIFEST``), to be run by the sandboxed worker."""
+    are planned into the template's modules (``NOTEBOOK_MANIFEST``), to be run by the sandboxed worker.  The
+    submission's answers.toml is read here, before any of its code runs."""
     source = Path(source)
     files, notes = _student_files(source)
     digest = content_hash(files)
@@ -829,11 +834,12 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
             os.chmod(dirpath, 0o755)
             for fname in filenames:
                 os.chmod(os.path.join(dirpath, fname), 0o644)
+        answers, answers_error = read_answers(target)
     except BaseException:
         shutil.rmtree(root, ignore_errors=True)
         raise
     return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans),
-                      tuple(sorted(copies)))
+                      tuple(sorted(copies)), answers, answers_error)
 
 
 def _same_text(template: bytes, data: bytes) -> bool:

@@ -18,7 +18,7 @@ from .checking import SHEET_NOTE, CheckFailure, JudgedOnSubmission, NotAnswered,
 from .context import Context, explained
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .faults import fault_of
-from .loader import cleanup, materialize, problem_notes, read_answers
+from .loader import cleanup, materialize
 from .problems import problem_module
 from .results import CheckResult, ManualItem, ProblemReport, Status
 from .sandbox import Child, Limits, SandboxMode, sandbox_mode
@@ -339,14 +339,14 @@ def grade_submission(
 
 def _grade_in(child, submission, source, take, modules, seed, oracle, record_answers=False) -> list[ProblemReport]:
     """The reports of the problems that ``take()`` hands out (None: no more), graded with ``child``."""
-    answers, answers_error = read_answers(submission.path)
     reports = []
     with child:
         child.start()
         number = take()
         while number is not None:
             start = time.perf_counter()
-            ctx = Context(number, child, answers, answers_error, seed, oracle, record_answers)
+            ctx = Context(number, child, submission.answers, submission.answers_error, seed, oracle,
+                          record_answers)
             results = _run_checks(modules[number], ctx, number)
             ctx.ask_common({r.check_id for r in results if r.status is Status.FAILED})
             stdout, stderr = child.output()
@@ -367,7 +367,7 @@ def _grade_in(child, submission, source, take, modules, seed, oracle, record_ans
                     stderr=stderr,
                     submission=str(source),
                     grader_version=__version__,
-                    notes=problem_notes(submission, number) + child.import_notes,
+                    notes=submission.problem_notes(number) + child.import_notes,
                     wrong_answers=tuple(ctx.wrong_answers),
                 )
             )

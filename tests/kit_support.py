@@ -80,7 +80,7 @@ def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED, zygot
     ``zygote`` (a batch slot's warm process), the child is forked from it, as ``grade batch`` grades."""
     from grader.sandbox import Child
     from grader.context import Context
-    from grader.loader import cleanup, materialize, read_answers
+    from grader.loader import cleanup, materialize
     from grader.oracle import LiveOracle
     from grader.results import ProblemReport
     from grader.runner import _manual_items, _run_checks
@@ -88,14 +88,13 @@ def grade_live_and_kit(problem: int, source, kit_oracle, seed: int = SEED, zygot
 
     module = problem_module(problem)
     submission = materialize(source, zygote.staging if zygote is not None else None)
-    answers, answers_error = read_answers(submission.path)
     reports = []
     try:
         with Child(submission.path, zygote=zygote) as child:
             child.start()
             shared = SharedChild(child)
             for oracle in (LiveOracle(), kit_oracle):
-                ctx = Context(problem, shared, answers, answers_error, seed, oracle)
+                ctx = Context(problem, shared, submission.answers, submission.answers_error, seed, oracle)
                 results = _run_checks(module, ctx, problem)
                 reports.append(ProblemReport(problem, module.TITLE, tuple(results),
                                              tuple(_manual_items(module, ctx, problem)), seed=seed))

@@ -587,7 +587,7 @@ def test_the_templates_files_with_windows_line_ends_are_still_the_templates(tmp_
     try:
         assert {"rotations.py", "problem_06.py"} <= set(loaded.template_copies)
         assert any("frames (problem_06), which none of your notebooks or files defines" in note
-                   for note in loader.problem_notes(loaded, 6))
+                   for note in loaded.problem_notes(6))
     finally:
         loader.cleanup(loaded)
 
@@ -602,6 +602,7 @@ def test_answers_saved_with_a_byte_order_mark_and_windows_line_ends_are_read(tmp
     try:
         answers, error = loader.read_answers(loaded.path)
         assert error is None and answers == tomllib.loads(text) and answers
+        assert (loaded.answers, loaded.answers_error) == (answers, None)  # what the runner receives
     finally:
         loader.cleanup(loaded)
 

@@ -24,7 +24,7 @@ from checks._effects import same
 from grader.problems import problems
 from grader.context import Context
 from grader.errors import StudentFault
-from grader.loader import cleanup, materialize, read_answers
+from grader.loader import cleanup, materialize
 from grader.oracle import LiveOracle, call_key
 from grader.results import Status
 from grader.runner import _run_checks, problem_module
@@ -64,12 +64,11 @@ def grade_recorded(problem: int, source, zygote):
     """The results of one problem of a submission (live reference) and the student values each check saw."""
     module = problem_module(problem)
     submission = materialize(source, zygote.staging)
-    answers, answers_error = read_answers(submission.path)
     try:
         with Child(submission.path, zygote=zygote) as child:
             child.start()
             recorder = RecordingChild(child)
-            ctx = Context(problem, recorder, answers, answers_error, SEED, LiveOracle())
+            ctx = Context(problem, recorder, submission.answers, submission.answers_error, SEED, LiveOracle())
             recorder.ctx = ctx
             results = _run_checks(module, ctx, problem)
     finally:
