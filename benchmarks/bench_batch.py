@@ -158,16 +158,17 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
     import pstats
 
     from grader.runner import grade_submission
+    from grader.workers import Forked
     from grader.sandbox.zygote import Zygote, warm_modules
 
     submission = copy_reference(scratch / "profiled")
     with Zygote(limits, sandbox_mode(), warm_modules(problems)) as zygote:
         zygote.start()
-        grade_submission(submission, problems, seed=1, limits=limits, zygote=zygote)  # warm the caches
+        grade_submission(submission, problems, seed=1, workers=Forked(zygote, limits))  # warm the caches
         profiler = cProfile.Profile()
         start = time.perf_counter()
         profiler.enable()
-        reports = grade_submission(submission, problems, seed=2, limits=limits, zygote=zygote)
+        reports = grade_submission(submission, problems, seed=2, workers=Forked(zygote, limits))
         profiler.disable()
         total = time.perf_counter() - start
         # then, alternately, a grading without the profiler (other random inputs, the CPU time of every process)
@@ -176,7 +177,7 @@ def profile_one(problems: list[int], limits: Limits, scratch: Path) -> None:
         for seed in range(3, 3 + REPLAYS):
             cpu = busy_cpu_seconds()
             with recorded_calls() as calls:
-                grade_submission(submission, problems, seed=seed, limits=limits, zygote=zygote)
+                grade_submission(submission, problems, seed=seed, workers=Forked(zygote, limits))
             cpu = None if cpu is None else busy_cpu_seconds() - cpu
             pairs.append((cpu, len(calls), *replay_alone(calls, warm_modules(problems))))
     stats = pstats.Stats(profiler).stats

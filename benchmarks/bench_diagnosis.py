@@ -94,6 +94,7 @@ def main() -> int:
                         help="only the cases whose label contains one of these texts (default: all)")
     args = parser.parse_args()
     from grader import grade_problem
+    from grader.workers import Forked
     from grader.sandbox import Limits, sandbox_mode
     from grader.sandbox.zygote import Zygote, warm_modules
 
@@ -111,7 +112,7 @@ def main() -> int:
         slot.start()
 
         def grade(problem, submission, oracle):
-            return grade_problem(problem, submission, seed=SEED, zygote=slot, oracle=oracle)
+            return grade_problem(problem, submission, seed=SEED, workers=Forked(slot), oracle=oracle)
 
         for group, items in (("passing", passing), ("failing", failing)):
             total_on = total_off = total_engine = 0.0

@@ -31,6 +31,7 @@ sys.path.insert(0, str(ROOT))
 
 from grader.loader import cleanup, materialize  # noqa: E402
 from grader.runner import grade_problem  # noqa: E402
+from grader.workers import Fresh  # noqa: E402
 from grader.sandbox import Child, launch, plain_mode, sandbox_mode  # noqa: E402
 from grader.sandbox.zygote import Zygote, warm_modules  # noqa: E402
 from tests.submissions import copy_reference  # noqa: E402
@@ -115,7 +116,7 @@ def main() -> None:
                 for name, runtime in runtimes.items():
                     launch.runtime_dir = lambda runtime=runtime: runtime
                     start = time.perf_counter()
-                    report = grade_problem(6, reference, seed=1, mode=mode)
+                    report = grade_problem(6, reference, seed=1, workers=Fresh(mode=mode))
                     took = time.perf_counter() - start
                     assert report.score == report.auto_max_score, report.results
                     assert ("system-call filter" in report.sandbox) == (name == "filter"), report.sandbox

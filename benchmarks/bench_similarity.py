@@ -172,6 +172,7 @@ def bench_similarity(students: int) -> None:
 
 def bench_recording(repeats: int, numbers: list[int]) -> None:
     from grader.runner import grade_submission
+    from grader.workers import Forked
     from grader.sandbox import Limits, sandbox_mode
     from grader.sandbox.zygote import Zygote, warm_modules
 
@@ -189,11 +190,11 @@ def bench_recording(repeats: int, numbers: list[int]) -> None:
         answers = 0
         with Zygote(Limits(), sandbox_mode(), warm_modules(numbers)) as zygote:
             zygote.start()
-            grade_submission(folder, numbers, seed=1, zygote=zygote)  # the reference's fixed cases cached
+            grade_submission(folder, numbers, seed=1, workers=Forked(zygote))  # the reference's fixed cases cached
             for index in range(repeats):
                 for record in ((False, True) if index % 2 == 0 else (True, False)):
                     began, cpu = time.monotonic(), time.process_time()
-                    reports = grade_submission(folder, numbers, seed=1, zygote=zygote, record_answers=record)
+                    reports = grade_submission(folder, numbers, seed=1, workers=Forked(zygote), record_answers=record)
                     times[record].append(time.monotonic() - began)
                     own[record].append(time.process_time() - cpu)
                     if record:
@@ -213,6 +214,7 @@ def bench_reach(numbers: list[int]) -> None:
     share of those caught by their check that leave a wrong answer to compare (``grade similarity``'s answers
     evidence; the rest are compared by their diagnoses alone)."""
     from grader.runner import grade_submission
+    from grader.workers import Forked
     from grader.sandbox import Limits, sandbox_mode
     from grader.sandbox.zygote import Zygote, warm_modules
 
@@ -225,7 +227,7 @@ def bench_reach(numbers: list[int]) -> None:
         for index, mistake in enumerate(mistakes):
             folder = copy_reference(Path(scratch) / f"m{index}")
             plant(mistake, folder)
-            report, = grade_submission(folder, [mistake.problem], seed=1, zygote=zygote, record_answers=True)
+            report, = grade_submission(folder, [mistake.problem], seed=1, workers=Forked(zygote), record_answers=True)
             if not any(r.check_id == mistake.check and not r.passed for r in report.results):
                 continue
             caught += 1

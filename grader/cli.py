@@ -92,34 +92,20 @@ def _exit_code(reports) -> int:
     return exit_code(reports)
 
 
-def _start_workers(source: Path, limits, count: int):
-    """Materialize the submission and start its sandboxed workers (``count``, each with a copy of its own) before
-    the grader imports what grading needs (numpy, the checks): their start-up overlaps those imports.  A list of
-    ``(submission, child)``, or None when the submission cannot be loaded (grading then says why)."""
-    from .errors import SubmissionError
-    from .loader import cleanup, materialize
+def _workers(source: Path, limits, count: int):
+    """The submission's workers (``count``, each with a copy of its own), started before the grader imports what
+    grading needs (numpy, the checks) so that their start-up overlaps those imports (``grader.workers.Started``);
+    fresh ones when the submission cannot be loaded (grading then says why).  The started copies are removed when
+    the command ends."""
     from .oracle import reference_available
-    from .sandbox import Child, student_mode
+    from .sandbox import student_mode
+    from .workers import Fresh, Started
 
-    mode = student_mode(kit=not reference_available())
-    started = []
-    try:
-        for _ in range(count):
-            try:
-                submission = materialize(source)
-            except SubmissionError:
-                break
-            _LEFT_TO_REMOVE.append(submission)
-            child = Child(submission.path, limits, mode)
-            started.append((submission, child))
-            child.start()
-    except BaseException:
-        for _, child in started:
-            child.__exit__(None, None, None)
-        while _LEFT_TO_REMOVE:
-            cleanup(_LEFT_TO_REMOVE.pop())
-        raise
-    return started or None
+    started = Started.start(source, limits, student_mode(kit=not reference_available()), count)
+    if started is None:
+        return Fresh(limits, count=count)
+    _LEFT_TO_REMOVE.extend(started.submissions)
+    return started
 
 
 def default_workers(problems: int) -> int:
@@ -149,16 +135,14 @@ def cmd_problem(args) -> int:
         print(f"error: {submission} does not exist", file=sys.stderr)
         return EXIT_USAGE
     limits = Limits(call_timeout=args.timeout) if args.timeout else None
-    workers = min(args.workers or default_workers(len(numbers)), len(numbers))
-    started = _start_workers(submission, limits, workers)
+    workers = _workers(submission, limits, min(args.workers or default_workers(len(numbers)), len(numbers)))
     from .report.data import render_json
     from .report.gradescope_results import render_results
     from .report.html import render_html
     from .report.text import render_terminal
     from .runner import grade_submission
 
-    reports = grade_submission(submission, numbers, seed=args.seed, limits=limits, started=started,
-                               workers=workers)
+    reports = grade_submission(submission, numbers, seed=args.seed, workers=workers)
     print(render_terminal(reports, colour=_colours(sys.stdout)), end="")
     if args.html:
         _write(args.html, render_html(reports, title=f"Problem {', '.join(map(str, numbers))}"))

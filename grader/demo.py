@@ -16,6 +16,7 @@ from .report.html import render_html
 from .report.text import render_terminal
 from .results import Status
 from .runner import grade_submission
+from .workers import Fresh
 from .sandbox import Limits, sandbox_mode
 
 PROJECT_ROOT = Path(__file__).resolve().parents[1]
@@ -71,7 +72,7 @@ def run_demo(args) -> int:
         for index, (name, build) in enumerate(builds):
             start = time.perf_counter()
             path = build(tmp / f"s{index}")
-            reports = grade_submission(path, numbers, seed=2024, limits=limits)
+            reports = grade_submission(path, numbers, seed=2024, workers=Fresh(limits))
             rows.append({
                 "name": name,
                 "scores": [f"{r.score:g}/{r.auto_max_score:g}" for r in reports],

@@ -161,6 +161,7 @@ def check(problem, *more, notebook: str | os.PathLike | None = None, seed: int |
     from .arguments import problem_number
     from .oracle import reference_available
     from .runner import grade_submission
+    from .workers import Fresh
     from .sandbox import Limits, student_mode
 
     numbers = [problem_number(str(p)) for p in (problem, *more)]
@@ -185,8 +186,8 @@ def check(problem, *more, notebook: str | os.PathLike | None = None, seed: int |
                      f"to grade the file, name it: check({numbers[0]}, notebook=\"problem_{numbers[0]:02d}.ipynb\")")
     try:
         limits = Limits(call_timeout=timeout) if timeout else None
-        reports = grade_submission(source, numbers, seed=seed, limits=limits,
-                                   mode=student_mode(kit=not reference_available()))
+        reports = grade_submission(source, numbers, seed=seed,
+                                   workers=Fresh(limits, student_mode(kit=not reference_available())))
     finally:
         if made is not None:
             shutil.rmtree(made, ignore_errors=True)

@@ -82,7 +82,7 @@ class Submission:
     """A submission as the grader receives it: its private package, the student's files, the answers of its
     answers.toml (read as data, never run) and what its reports say about it."""
 
-    source: str  # what the user pointed at
+    source: str  # what the user pointed at, as given
     path: Path  # the private package directory (template + student's files)
     digest: str  # sha256 of the student's files (names and contents)
     files: tuple[str, ...]  # the student's files, as laid over the template
@@ -800,7 +800,7 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
     """Copy the template and lay the submission over it in a fresh private directory; a notebook's definitions
     are planned into the template's modules (``NOTEBOOK_MANIFEST``), to be run by the sandboxed worker.  The
     submission's answers.toml is read here, before any of its code runs."""
-    source = Path(source)
+    given, source = str(source), Path(source)
     files, notes = _student_files(source)
     digest = content_hash(files)
     books = sorted((n, d) for n, d in files.items() if n.endswith(".ipynb") and not _template_notebook(n, d))
@@ -838,7 +838,7 @@ def materialize(source: str | Path, workdir: str | Path | None = None) -> Submis
     except BaseException:
         shutil.rmtree(root, ignore_errors=True)
         raise
-    return Submission(str(source), target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans),
+    return Submission(given, target, digest, tuple(sorted(laid)), tuple(notes), tuple(plans),
                       tuple(sorted(copies)), answers, answers_error)
 
 

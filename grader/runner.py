@@ -18,10 +18,10 @@ from .checking import SHEET_NOTE, CheckFailure, JudgedOnSubmission, NotAnswered,
 from .context import Context, explained
 from .errors import GraderFault, SandboxError, StudentCodeError, StudentTimeout, SubmissionError, WorkerCrash
 from .faults import fault_of
-from .loader import cleanup, materialize
 from .problems import problem_module
 from .results import CheckResult, ManualItem, ProblemReport, Status
-from .sandbox import Child, Limits, SandboxMode, sandbox_mode
+from .sandbox import SandboxMode, sandbox_mode
+from .workers import Fresh, Worker, Workers
 
 __all__ = ["grade_problem", "grade_submission", "carry_forward", "unloadable_reports", "not_run"]
 
@@ -287,58 +287,45 @@ def grade_submission(
     numbers: list[int],
     *,
     seed: int | None = None,
-    limits: Limits | None = None,
-    mode: SandboxMode | None = None,
-    workdir: str | Path | None = None,
-    zygote=None,
+    workers: Workers | None = None,
     oracle=None,
-    started=None,
-    workers: int = 1,
     record_answers: bool = False,
 ) -> list[ProblemReport]:
-    """Grade the given problems of one submission with one sandboxed worker (forked from ``zygote``, a batch
-    slot's warm process, when given: see ``grader.sandbox.zygote``); ``oracle`` answers for the reference
-    (default: the process's, see ``grader.oracle.current``).  ``started``: the submission already materialized
-    and its worker already started (``grader.cli`` does; a list of such pairs with ``workers``), so that the
-    worker's start-up overlapped the caller's imports; the caller then removes the submission's copy.  The worker
-    is ended as soon as the last check has its last reply.  ``record_answers``: each report also holds the wrong
-    answers on the inputs every student is asked (``grader.answers``), for ``grade similarity`` (a batch does).
+    """Grade the given problems of one submission with the sandboxed workers of ``workers`` (``grader.workers``:
+    ``Fresh``, the default, a new child; ``Forked`` from a batch slot's warm process; ``Started`` by the caller
+    before its imports, as ``grade problem-N`` does); ``oracle`` answers for the reference (default: the
+    process's, see ``grader.oracle.current``).  Each worker is ended as soon as the last check has its last reply.
+    ``record_answers``: each report also holds the wrong answers on the inputs every student is asked
+    (``grader.answers``), for ``grade similarity`` (a batch does).
 
-    ``workers`` > 1 (without a zygote): the problems are shared out among that many sandboxed workers, each with
-    its own copy of the submission, that grade side by side (``_grade_side_by_side``); the reports come back in
-    the order of ``numbers``.  A batch grades each student with one worker: its slots already keep the cores busy.
+    Where ``workers`` gives more than one worker (``Fresh(count=2)``), the problems are shared out among them,
+    each with its own copy of the submission, and graded side by side (``_grade_side_by_side``); the reports come
+    back in the order of ``numbers``.  A batch grades each student with one worker: its slots already keep the
+    cores busy.
 
     Raises ``SandboxError`` (a ``GraderFault``) when the worker cannot be started or cannot import its
     dependencies: a fault of the installation, for which nothing is graded."""
     seed = random.randrange(2**31) if seed is None else seed
+    workers = Fresh() if workers is None else workers
+    if not isinstance(workers, Workers):
+        raise TypeError(f"workers must be Fresh, Forked or Started (grader.workers), not {workers!r}")
     modules = {n: problem_module(n) for n in numbers}
-    if started is not None and not isinstance(started, list):
-        started = [started]
-    workers = min(workers, len(numbers))
-    if workers > 1 and zygote is None:
-        return _grade_side_by_side(source, numbers, modules, workers, seed=seed, limits=limits, mode=mode,
-                                   workdir=workdir, oracle=oracle, started=started, record_answers=record_answers)
-    if started is not None:
-        submission, child = started[0]
-        mode = child.mode
-    else:
-        mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
-        try:
-            submission = materialize(source, workdir or (zygote.staging if zygote is not None else None))
-        except SubmissionError as exc:
-            return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
-        child = Child(submission.path, limits, mode, zygote=zygote)
-    queue = list(numbers)
     try:
-        return _grade_in(child, submission, source, lambda: queue.pop(0) if queue else None, modules, seed, oracle,
-                         record_answers)
+        taken = workers.obtain(source, workers.side_by_side(len(numbers)))
+    except SubmissionError as exc:
+        return [_unloadable(n, modules[n], source, str(exc), workers.sandbox(), seed) for n in numbers]
+    try:
+        if len(taken) > 1:
+            return _grade_side_by_side(taken, numbers, modules, seed, oracle, record_answers)
+        queue = list(numbers)
+        return _grade_in(taken[0], lambda: queue.pop(0) if queue else None, modules, seed, oracle, record_answers)
     finally:
-        if started is None:
-            cleanup(submission)
+        workers.release(taken)
 
 
-def _grade_in(child, submission, source, take, modules, seed, oracle, record_answers=False) -> list[ProblemReport]:
-    """The reports of the problems that ``take()`` hands out (None: no more), graded with ``child``."""
+def _grade_in(worker: Worker, take, modules, seed, oracle, record_answers=False) -> list[ProblemReport]:
+    """The reports of the problems that ``take()`` hands out (None: no more), graded with ``worker``."""
+    submission, child = worker.submission, worker.child
     reports = []
     with child:
         child.start()
@@ -365,7 +352,7 @@ def _grade_in(child, submission, source, take, modules, seed, oracle, record_ans
                     duration=time.perf_counter() - start,
                     stdout=stdout,
                     stderr=stderr,
-                    submission=str(source),
+                    submission=submission.source,
                     grader_version=__version__,
                     notes=submission.problem_notes(number) + child.import_notes,
                     wrong_answers=tuple(ctx.wrong_answers),
@@ -375,29 +362,18 @@ def _grade_in(child, submission, source, take, modules, seed, oracle, record_ans
     return reports
 
 
-def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode, workdir, oracle, started,
-                        record_answers=False):
-    """``grade_submission`` with ``workers`` sandboxed workers, one thread of this process each (the student's
-    code runs in the workers; the threads mostly wait for their replies).  Each worker takes the next problem of
-    ``numbers`` when it is free, so a long problem does not hold up the rest.  Every worker has a copy of its own
-    and the same limits as a single one; a problem is graded the same in either: its checks' inputs come from the
-    seed and the problem, not from the order.  A grader fault in one worker ends the grading with that fault, as
-    with one worker; an interruption (Ctrl-C) kills every worker before it goes on."""
+def _grade_side_by_side(taken: list[Worker], numbers, modules, seed, oracle, record_answers=False):
+    """``grade_submission`` with the workers ``taken``, one thread of this process each (the student's code runs
+    in the workers; the threads mostly wait for their replies).  Each worker takes the next problem of ``numbers``
+    when it is free, so a long problem does not hold up the rest.  Every worker has a copy of its own and the same
+    limits as a single one; a problem is graded the same in either: its checks' inputs come from the seed and the
+    problem, not from the order.  A grader fault in one worker ends the grading with that fault, as with one
+    worker; an interruption (Ctrl-C) kills every worker before it goes on."""
     import threading
 
-    mode = started[0][1].mode if started else (mode or sandbox_mode())
-    pairs = list(started or [])
-    try:
-        while len(pairs) < workers:
-            submission = materialize(source, workdir)
-            pairs.append((submission, Child(submission.path, limits, mode)))
-    except SubmissionError as exc:
-        for submission, child in pairs[len(started or []):]:
-            child.__exit__(None, None, None)
-            cleanup(submission)
-        return [_unloadable(n, modules[n], source, str(exc), mode, seed) for n in numbers]
+    count = len(taken)
     queue, lock = list(numbers), threading.Lock()
-    outcomes: list = [None] * workers
+    outcomes: list = [None] * count
     finished = threading.Semaphore(0)  # waited on rather than Thread.join: an interrupted join (3.11) can take a
     # thread that still runs for ended
 
@@ -406,10 +382,8 @@ def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode
             return queue.pop(0) if queue else None
 
     def work(index: int) -> None:
-        submission, child = pairs[index]
         try:
-            outcomes[index] = ("ok", _grade_in(child, submission, source, take, modules, seed, oracle,
-                                               record_answers))
+            outcomes[index] = ("ok", _grade_in(taken[index], take, modules, seed, oracle, record_answers))
         except BaseException as exc:  # noqa: BLE001 - handed to the calling thread, raised there
             with lock:
                 queue.clear()  # the other workers stop after their current problem
@@ -418,29 +392,26 @@ def _grade_side_by_side(source, numbers, modules, workers, *, seed, limits, mode
             finished.release()
 
     threads = [threading.Thread(target=work, args=(i,), name=f"grade-worker-{i}", daemon=True)
-               for i in range(workers)]
+               for i in range(count)]
     ended = 0
     try:
         for thread in threads:
             thread.start()
-        while ended < workers:
+        while ended < count:
             finished.acquire()
             ended += 1
     except BaseException:  # Ctrl-C: every worker killed now, and the threads' waits for replies end with them
         with lock:
             queue.clear()
-        for _, child in pairs:
-            child.interrupt()
+        for worker in taken:
+            worker.child.interrupt()
         running = sum(1 for thread in threads if thread.ident is not None)
-        for _, child in pairs[running:]:  # never handed to a thread
-            child.__exit__(None, None, None)
+        for worker in taken[running:]:  # never handed to a thread
+            worker.child.__exit__(None, None, None)
         deadline = time.monotonic() + 30
         while ended < running and finished.acquire(timeout=max(0.0, deadline - time.monotonic())):
             ended += 1
         raise
-    finally:
-        for submission, _ in pairs[len(started or []):]:
-            cleanup(submission)
     for outcome in outcomes:
         if outcome is not None and outcome[0] == "raised":
             raise outcome[1]

@@ -29,6 +29,7 @@ from grader.report.gradescope_results import WITHHELD
 from grader.results import student_view
 from grader.checking import checks_of
 from grader.runner import grade_submission
+from grader.workers import Fresh
 from grader.problems import problem_module, problems as all_problems
 from grader.sandbox import Limits, sandbox_mode
 
@@ -235,7 +236,7 @@ def test_small_class_grades_and_exports(small_class):
         stored = {g.student: g.report for g in book.current()}
     assert stored["alice"].seed == stored["bob"].seed != stored["dave"].seed  # the seed follows the content
     # the seed reproduces the randomized checks: the same minimal failing input, the same messages
-    (again,) = grade_submission(subs / "erin", [6], seed=stored["erin"].seed, limits=LIMITS)
+    (again,) = grade_submission(subs / "erin", [6], seed=stored["erin"].seed, workers=Fresh(LIMITS))
     assert [(r.status, r.message) for r in again.results] == [(r.status, r.message) for r in stored["erin"].results]
     assert "(minimal failing input found by hypothesis" in again.results[2].message
 
@@ -516,7 +517,7 @@ def hidden_problem(monkeypatch):
 
 def grade_into(book, run, name, source):
     versions = {HIDDEN_PROBLEM: grader_version(HIDDEN_PROBLEM)}
-    reports = grade_submission(source, [HIDDEN_PROBLEM], seed=7, limits=LIMITS)
+    reports = grade_submission(source, [HIDDEN_PROBLEM], seed=7, workers=Fresh(LIMITS))
     book.record(name, name, versions, run, reports)
     return reports
 

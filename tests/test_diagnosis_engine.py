@@ -26,6 +26,7 @@ from grader.diagnosis import Declaration, Evidence, explain
 from grader.results import Status
 from grader.sandbox import Limits, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules
+from grader.workers import Forked
 
 from .kit_support import (  # noqa: F401 (fixtures)
     SEED,
@@ -520,7 +521,7 @@ def test_the_engine_names_a_mistake_no_catalogue_lists(mistake, tmp_path, kit_or
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
     assert_same_verdicts(mistake.name, live, kit, deferred_ids)
     monkeypatch.setattr(engine, "ENABLED", False)  # no catalogue names the cause (a shape, say, is not a cause)
-    off = grade_problem(mistake.problem, submission, seed=SEED, zygote=slot)
+    off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
     unexplained = {r.check_id: r for r in off.results}[mistake.check]
     assert unexplained.status is Status.FAILED, unexplained.message
     assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis

@@ -253,6 +253,7 @@ def test_the_reports_of_each_row_are_stored_or_not_as_the_table_says(tmp_path, m
     """What ``grade batch`` and Gradescope decide from a student's graded reports (``stored``, ``exit_code``): the
     decision of the table for each failure that is found while the checks run."""
     from grader.runner import grade_submission
+    from grader.workers import Fresh
 
     for failure in ("student code", "student process", "codec", "timeout", "probe", "grader exception"):
         scenario, fault = SCENARIOS[failure], FAULTS[failure]
@@ -260,7 +261,7 @@ def test_the_reports_of_each_row_are_stored_or_not_as_the_table_says(tmp_path, m
             if scenario.patch:
                 scenario.patch(patched)
             reports = grade_submission(scenario.build(tmp_path / failure.replace(" ", "_")), [6], seed=1,
-                                       limits=Limits(call_timeout=1.0, import_timeout=10.0))
+                                       workers=Fresh(Limits(call_timeout=1.0, import_timeout=10.0)))
         assert stored(reports) is fault.student, failure
         assert exit_code(reports) == fault.exit_code, failure
         assert {found.student for found in faults_in(reports)} == {fault.student}, (failure, faults_in(reports))

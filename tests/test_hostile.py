@@ -28,6 +28,7 @@ from pathlib import Path
 import pytest
 
 from grader import grade_problem, grade_submission
+from grader.workers import Forked, Fresh
 from grader.errors import SandboxError
 from grader.results import Status
 from grader.sandbox import BWRAP_FIX, Limits, SandboxMode, plain_mode, portable_mode, refusal, sandbox_mode, users
@@ -239,15 +240,15 @@ def test_a_key_that_one_student_leaves_never_reaches_the_next_under_the_same_uid
     warm = kind.endswith("-warm")
     if kind.startswith("process") and refusal() is not None:
         assert_refused(lambda: grade_problem(6, build_hostile("keyring_user", tmp_path / "first"), seed=7,
-                                             limits=LIMITS, mode=mode, zygote=zygotes(kind) if warm else None))
+                                             workers=Forked(zygotes(kind), LIMITS) if warm else Fresh(LIMITS, mode)))
         return
     offset = random.randrange(users.UID_COUNT // 2, users.UID_COUNT - 100)  # away from other test processes' uids
     outputs = []
     for name in ("first", "second"):
         monkeypatch.setattr(users, "_next_offset", offset)
         submission = build_hostile("keyring_user", tmp_path / name)
-        report = grade_problem(6, submission, seed=7, limits=LIMITS, mode=mode,
-                               zygote=zygotes(kind) if warm else None)
+        report = grade_problem(6, submission, seed=7,
+                               workers=Forked(zygotes(kind), LIMITS) if warm else Fresh(LIMITS, mode))
         assert report.score == report.auto_max_score, report.results
         outputs.append(report.stdout)
     uids = [next(line for line in out.splitlines() if line.startswith("uid: ")) for out in outputs]
@@ -291,8 +292,8 @@ def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False, key
     warm = kind.endswith("-warm")
     if kind.startswith("process") and "load_error" not in expect:  # refused before any child starts
         if refusal() is not None:
-            assert_refused(lambda: grade_problem(problem, submission, seed=7, limits=limits, mode=mode,
-                                                 zygote=zygotes(kind) if warm else None))
+            assert_refused(lambda: grade_problem(
+                problem, submission, seed=7, workers=Forked(zygotes(kind), limits) if warm else Fresh(limits, mode)))
             return
         if expect.get("other_uid") and os.geteuid() != 0:
             pytest.skip("without bubblewrap and without root, the child runs as the user who runs the tests")
@@ -305,14 +306,15 @@ def _grade_hostile(name, kind, tmp_path, monkeypatch, zygotes, beside=False, key
         start = time.monotonic()
         if beside:
             partner = 8 if problem != 8 else 6
-            report, other = grade_submission(submission, [problem, partner], seed=7, limits=limits, mode=mode,
-                                             workers=2)
-            alone = grade_problem(partner, submission, seed=7, limits=limits, mode=mode)
+            report, other = grade_submission(submission, [problem, partner], seed=7,
+                                             workers=Fresh(limits, mode, count=2))
+            alone = grade_problem(partner, submission, seed=7, workers=Fresh(limits, mode))
             # the other worker's problem is graded as it is alone
             assert [(r.check_id, r.status, r.score) for r in other.results] == [
                 (r.check_id, r.status, r.score) for r in alone.results]
         else:
-            report = grade_problem(problem, submission, seed=7, limits=limits, mode=mode, zygote=zygote)
+            report = grade_problem(problem, submission, seed=7,
+                                   workers=Forked(zygote, limits) if zygote is not None else Fresh(limits, mode))
         if warm:
             assert zygote.starts == 1, "the slot's warm process was killed"
         elapsed = time.monotonic() - start
@@ -370,9 +372,9 @@ def test_fallback_is_reported(tmp_path):
     submission = copy_reference(tmp_path / "pkg")
     mode = plain_mode("bubblewrap is not available")
     if refusal() is not None:
-        assert_refused(lambda: grade_problem(6, submission, seed=1, mode=mode))
+        assert_refused(lambda: grade_problem(6, submission, seed=1, workers=Fresh(mode=mode)))
         return
-    report = grade_problem(6, submission, seed=1, mode=mode)
+    report = grade_problem(6, submission, seed=1, workers=Fresh(mode=mode))
     assert report.score == report.auto_max_score
     assert not report.isolated and "bubblewrap" in report.sandbox
     if os.geteuid() == 0:
@@ -424,7 +426,7 @@ def test_no_raw_control_character_of_a_submission_reaches_grades_output(tmp_path
 def test_the_terminal_report_in_colour_holds_only_the_graders_own_escape_sequences(tmp_path):
     from grader.report.text import render_terminal
 
-    report = grade_problem(6, terminal_submission(tmp_path / "pkg"), seed=3, limits=LIMITS)
+    report = grade_problem(6, terminal_submission(tmp_path / "pkg"), seed=3, workers=Fresh(LIMITS))
     text = render_terminal([report], colour=True)
     sequences = re.findall("\x1b[^m]*m", text)
     assert sequences and set(sequences) <= {"\x1b[1m", "\x1b[0m", "\x1b[32m", "\x1b[31m", "\x1b[36m"}, sequences

@@ -172,12 +172,13 @@ SLOT_SCRIPT = """
 import json, sys
 from grader.runner import grade_submission
 from grader.sandbox import Limits, plain_mode, sandbox_mode
+from grader.workers import Forked
 from grader.sandbox.zygote import Zygote, warm_modules
 kind, leaver, spy = sys.argv[1:4]
 mode = sandbox_mode("bwrap") if kind == "bwrap" else plain_mode("test")
 with Zygote(Limits(call_timeout=5.0, import_timeout=10.0), mode, warm_modules([6])) as zygote:
     zygote.start()
-    reports = [grade_submission(path, [6], seed=3, zygote=zygote)[0] for path in (leaver, spy, spy)]
+    reports = [grade_submission(path, [6], seed=3, workers=Forked(zygote))[0] for path in (leaver, spy, spy)]
 print(json.dumps([{"score": r.score, "max": r.auto_max_score, "stdout": r.stdout, "sandbox": r.sandbox,
                    "isolated": r.isolated} for r in reports]))
 """

@@ -28,6 +28,7 @@ from grader.gradebook import Gradebook
 from grader.loader import FIX, materialize, submission_digest
 from grader.results import Status
 from grader.runner import grade_submission
+from grader.workers import Fresh
 from grader.problems import problem_module
 from grader.sandbox import Limits, sandbox_mode
 
@@ -90,7 +91,7 @@ def test_links_inside_are_refused_and_never_copied(reads, tmp_path):
     (submission / "rotations.py").unlink()
     (submission / "rotations.py").symlink_to(Path(__file__).resolve().parents[1] / "reference" / "rotations.py")
     (submission / "etc").symlink_to("/etc")
-    (report,) = grade_submission(submission, [6], seed=1, limits=LIMITS)
+    (report,) = grade_submission(submission, [6], seed=1, workers=Fresh(LIMITS))
     assert "symbolic links" in report.load_error and "rotations.py →" in report.load_error and "etc →" in report.load_error
     assert report.score == 0 and all(r.status is Status.ERROR and not r.message for r in report.results)
 
@@ -285,7 +286,7 @@ def test_outside_a_work_folder_nothing_is_walked(tmp_path, monkeypatch, capsys):
 def test_a_folder_with_a_single_work_folder_inside_is_graded(tmp_path):
     """A submission wrapped in a folder (as a zip of a folder unpacks) is still found."""
     copy_reference(tmp_path / "alice" / "mywork")
-    (report,) = grade_submission(tmp_path / "alice", [6], seed=1, limits=LIMITS)
+    (report,) = grade_submission(tmp_path / "alice", [6], seed=1, workers=Fresh(LIMITS))
     assert not report.load_error and report.score == report.auto_max_score
 
 

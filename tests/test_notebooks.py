@@ -13,6 +13,7 @@ from grader.cli import main
 from grader.gradebook import Gradebook
 from grader.loader import cleanup, materialize
 from grader.runner import grade_submission
+from grader.workers import Fresh
 from grader.sandbox import Limits, sandbox_mode
 
 from .notebooks import (
@@ -53,8 +54,8 @@ def test_a_notebook_grades_like_the_equivalent_folder(form, variant, tmp_path):
     folder = folder_of(variant, tmp_path / "folder")
     build, problems = FORMS[form]
     notebook = build(folder, tmp_path)
-    expected = grade_submission(folder, problems, seed=11, limits=LIMITS)
-    got = grade_submission(notebook, problems, seed=11, limits=LIMITS)
+    expected = grade_submission(folder, problems, seed=11, workers=Fresh(LIMITS))
+    got = grade_submission(notebook, problems, seed=11, workers=Fresh(LIMITS))
     assert outcome(got) == outcome(expected)
     assert not any(rep.load_error for rep in got)
     if variant is None:
@@ -70,7 +71,7 @@ def test_a_notebook_grades_like_the_equivalent_folder(form, variant, tmp_path):
 
 def test_the_whole_exercise_notebook_says_what_it_left_out(tmp_path):
     notebook = exercise_notebook(ROOT / "reference", tmp_path / "exercise2.ipynb")
-    report = grade_submission(notebook, [6], seed=2, limits=LIMITS)[0]
+    report = grade_submission(notebook, [6], seed=2, workers=Fresh(LIMITS))[0]
     notes = "\n".join(report.notes)
     assert "notebook exercise2.ipynb → cosys.py: CoSys" in notes
     # the cell that raises, named by its number and first line
@@ -85,7 +86,7 @@ def test_a_missing_name_is_said_with_the_names_found(tmp_path):
     cells = problem_06_cells(ROOT / "reference")
     cells = [c.replace("def frames():", "def Frames():").replace("A = frames()", "A = Frames()") for c in cells]
     notebook = write_notebook(tmp_path / "problem_06.ipynb", ["import numpy as np", *cells])
-    report = grade_submission(notebook, [6], seed=2, limits=LIMITS)[0]
+    report = grade_submission(notebook, [6], seed=2, workers=Fresh(LIMITS))[0]
     (missing,) = [n for n in report.notes if n.startswith("problem 6 needs")]
     assert "frames (problem_06), which none of your notebooks or files defines" in missing
     assert "your notebooks define: R1, R2, R3, cardan, GAMMA, BETA, ALPHA, C3_V, Frames, vectors" in missing
@@ -123,7 +124,7 @@ def test_grade_init_notebook_gives_the_template_as_notebooks(tmp_path, capsys):
     assert main(["init", str(work), "--notebook"]) == 0
     notebook = work / "problem_06.ipynb"
     assert notebook.exists() and (work / "answers.toml").exists()
-    report = grade_submission(work, [6], seed=1, limits=LIMITS)[0]
+    report = grade_submission(work, [6], seed=1, workers=Fresh(LIMITS))[0]
     assert not report.load_error and report.score == 0
     assert all(r.status.value == "not_implemented" for r in report.results if r.status.value != "skipped")
     # filled in with the reference's definitions, the notebook earns full marks
@@ -136,7 +137,7 @@ def test_grade_init_notebook_gives_the_template_as_notebooks(tmp_path, capsys):
             module = "rotations" if name in ("R1", "R2", "R3", "cardan") else "problem_06"
             cell.source = definition(ROOT / "reference", module, name)
     nbformat.write(book, notebook)
-    report = grade_submission(work, [6], seed=1, limits=LIMITS)[0]
+    report = grade_submission(work, [6], seed=1, workers=Fresh(LIMITS))[0]
     assert report.score == report.auto_max_score, [r.message for r in report.results if not r.passed]
 
 

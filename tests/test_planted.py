@@ -13,6 +13,7 @@ forked one, and the two must agree.
 import pytest
 
 from grader import grade_problem, grade_submission
+from grader.workers import Forked
 from grader.problems import problems
 from grader.results import Status
 from grader.sandbox import Limits, sandbox_mode
@@ -54,7 +55,7 @@ def slot():
 @pytest.mark.parametrize("problem", PROBLEMS)
 def test_reference_scores_full_marks(problem, reference_copy, kit_oracle, deferred_ids, slot):
     report = grade_problem(problem, reference_copy, seed=SEED)
-    kit = grade_problem(problem, reference_copy, seed=SEED, oracle=kit_oracle, zygote=slot)
+    kit = grade_problem(problem, reference_copy, seed=SEED, oracle=kit_oracle, workers=Forked(slot))
     failed = [(r.check_id, r.status.value, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
     assert report.score == report.auto_max_score > 0
@@ -63,7 +64,7 @@ def test_reference_scores_full_marks(problem, reference_copy, kit_oracle, deferr
 
 def test_untouched_template_parity(kit_oracle, deferred_ids, slot):
     live = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED)
-    kit = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED, oracle=kit_oracle, zygote=slot)
+    kit = grade_submission(ROOT / "student_template", PROBLEMS, seed=SEED, oracle=kit_oracle, workers=Forked(slot))
     for one, other in zip(live, kit):
         assert_same_verdicts(f"template p{one.problem:02d}", one, other, deferred_ids)
 

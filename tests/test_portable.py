@@ -11,6 +11,7 @@ import pytest
 
 import grader.sandbox.portable as portable
 from grader.runner import grade_problem
+from grader.workers import Fresh
 from grader.sandbox import Limits, sandbox_mode, student_mode
 from grader.sandbox.portable import PORTABLE, PORTABLE_NOTE
 
@@ -55,7 +56,7 @@ def test_grader_sandbox_portable_forces_it_for_a_student_only(monkeypatch):
 
 
 def test_a_portable_grading_says_what_it_protects(tmp_path):
-    report = grade_problem(6, copy_reference(tmp_path / "pkg"), seed=3, limits=LIMITS, mode=portable.portable_mode())
+    report = grade_problem(6, copy_reference(tmp_path / "pkg"), seed=3, workers=Fresh(LIMITS, portable.portable_mode()))
     assert report.score == report.auto_max_score
     assert report.sandbox == PORTABLE_NOTE and not report.isolated
     assert "not your computer" in report.sandbox and "\n" not in report.sandbox

@@ -24,6 +24,7 @@ from grader.gradebook import GRADEBOOK_NAME
 from grader.loader import materialize
 from grader.results import Status
 from grader.runner import grade_submission
+from grader.workers import Fresh
 from grader.sandbox import BWRAP_FIX, Child, Limits, SandboxMode, canary, plain_mode, protocol, refusal, sandbox_mode
 from grader.sandbox import launch, users
 
@@ -266,7 +267,7 @@ def numpy_hidden(monkeypatch):
 @needs_bwrap
 def test_a_worker_without_numpy_is_a_grader_fault_with_the_fix(numpy_hidden, reference_copy, tmp_path, capsys):
     with pytest.raises(SandboxError) as fault:
-        grade_submission(reference_copy, [6], seed=1, limits=LIMITS, mode=BWRAP)
+        grade_submission(reference_copy, [6], seed=1, workers=Fresh(LIMITS, BWRAP))
     text = str(fault.value)
     assert "installation" in text and "numpy" in text and "pip " in text and "not the submission" in text
     code = main(["problem-6", "--submission", str(reference_copy), "--json", str(tmp_path / "r.json")])
@@ -321,7 +322,7 @@ def test_a_check_with_a_mistyped_probe_reports_a_grader_error(reference_copy, mo
     import grader.runner
 
     monkeypatch.setattr(grader.runner, "problem_module", lambda n: _typo_module())
-    (report,) = grade_submission(reference_copy, [98], seed=1, limits=LIMITS, mode=sandbox_mode())
+    (report,) = grade_submission(reference_copy, [98], seed=1, workers=Fresh(LIMITS, sandbox_mode()))
     (result,) = report.results
     assert result.status is Status.GRADER_ERROR and "framez" in result.message, result
     assert "your code" not in result.message
@@ -465,7 +466,7 @@ def test_student_code_that_plots_can_import_matplotlib(reference_copy, mode):
     rotations = reference_copy / "rotations.py"
     rotations.write_text("import matplotlib\nmatplotlib.use('Agg')\nimport matplotlib.pyplot as plt\n"
                          "plt.figure()\n" + rotations.read_text())
-    (report,) = grade_submission(reference_copy, [6], seed=1, mode=chosen)
+    (report,) = grade_submission(reference_copy, [6], seed=1, workers=Fresh(mode=chosen))
     failed = [(r.check_id, r.message[:300]) for r in report.results if not r.passed]
     assert not failed
 

@@ -19,6 +19,7 @@ import pytest
 from grader.cli import main
 from grader.errors import SandboxError
 from grader.runner import grade_submission
+from grader.workers import Forked, Fresh
 from grader.sandbox import Limits, refusal, sandbox_mode
 from grader.sandbox import launch, seccomp
 from grader.sandbox.zygote import Zygote, warm_modules
@@ -299,7 +300,7 @@ def test_no_student_code_runs_where_the_filter_cannot_be_installed(runtime_witho
     marker = tmp_path / "ran"
     (submission / "__init__.py").write_text(f"open({str(marker)!r}, 'w').close()\n")
     with pytest.raises(SandboxError) as fault:
-        grade_submission(submission, [6], seed=1, limits=Limits(), mode=mode)
+        grade_submission(submission, [6], seed=1, workers=Fresh(Limits(), mode))
     text = str(fault.value)
     assert "system-call filter" in text and "x86_64 and aarch64" in text and "not the submission" in text, text
     code = main(["problem-6", "--submission", str(submission), "--json", str(tmp_path / "r.json")])
@@ -308,5 +309,5 @@ def test_no_student_code_runs_where_the_filter_cannot_be_installed(runtime_witho
     with Zygote(Limits(), mode, warm_modules([6])) as zygote:  # the warm path: each fork installs it, or none runs
         zygote.start()
         with pytest.raises(SandboxError, match="system-call filter"):
-            grade_submission(submission, [6], seed=1, zygote=zygote)
+            grade_submission(submission, [6], seed=1, workers=Forked(zygote))
     assert not marker.exists()

@@ -11,6 +11,7 @@ import pytest
 
 from grader.cli import default_workers, main
 from grader.runner import grade_submission
+from grader.workers import Fresh
 
 from .processes import default_ctrl_c, descendants
 from .submissions import ROOT, build_hostile, build_with_mistakes, copy_reference, planted_mistakes
@@ -37,7 +38,7 @@ def _with_mistakes(dest):
 def test_two_workers_give_the_verdicts_of_one(kind, tmp_path):
     submission = copy_reference(tmp_path / "s") if kind == "reference" else _with_mistakes(tmp_path / "s")
     alone = grade_submission(submission, PROBLEMS, seed=5)
-    together = grade_submission(submission, PROBLEMS, seed=5, workers=2)
+    together = grade_submission(submission, PROBLEMS, seed=5, workers=Fresh(count=2))
     assert [r.problem for r in together] == PROBLEMS
     assert _verdicts(together) == _verdicts(alone)
     failed = {c.check_id for r in together for c in r.results if not c.passed}
@@ -64,7 +65,7 @@ def test_workers_must_be_a_positive_number(tmp_path, capsys):
 def test_an_unloadable_submission_is_said_once_for_each_problem(tmp_path):
     broken = tmp_path / "broken.zip"
     broken.write_bytes(b"not a zip archive")
-    reports = grade_submission(broken, [6, 8, 9], seed=1, workers=2)
+    reports = grade_submission(broken, [6, 8, 9], seed=1, workers=Fresh(count=2))
     assert [r.problem for r in reports] == [6, 8, 9]
     assert all(r.load_error for r in reports) and all(r.score == 0 for r in reports)
 
@@ -115,10 +116,20 @@ def test_an_interruption_of_the_caller_ends_both_workers_at_once(tmp_path):
     try:
         timer.start()
         with pytest.raises(KeyboardInterrupt):
-            grade_submission(submission, [6, 7, 8], seed=1, workers=2, limits=Limits(call_timeout=60.0))
+            grade_submission(submission, [6, 7, 8], seed=1, workers=Fresh(Limits(call_timeout=60.0), count=2))
         took = time.monotonic() - began
     finally:
         timer.cancel()
         signal.signal(signal.SIGINT, previous)
     assert took < 25, f"the interruption took {took - 6:.1f} s to end the grading"
     assert_gone(sorted(set(descendants(os.getpid())) - before))
+
+
+def test_workers_are_asked_of_one_place(tmp_path):
+    """A grading gets its workers from ``grader.workers`` only: a count or a warm process handed over as before is
+    refused, before anything is copied or started."""
+    submission = copy_reference(tmp_path / "s")
+    for workers in (2, object()):
+        with pytest.raises(TypeError, match="Fresh, Forked or Started"):
+            grade_submission(submission, [6], seed=1, workers=workers)
+    assert Fresh(count=3).side_by_side(2) == 2 and Fresh(count=3).side_by_side(0) == 1

@@ -14,6 +14,7 @@ import pytest
 
 from grader.results import Status
 from grader.runner import grade_submission
+from grader.workers import Forked
 from grader.problems import problems as all_problems
 from grader.sandbox import Limits, plain_mode, refusal, sandbox_mode
 from grader.sandbox.zygote import Zygote, warm_modules
@@ -69,7 +70,7 @@ def test_a_student_cannot_see_or_influence_the_next_one_in_the_same_slot(zygote,
     marker = nonce()
     leaver = student("leaver", tmp_path / "leaver", marker)
     spy = student("spy", tmp_path / "spy", marker)
-    reports = [grade_submission(path, [6], seed=3, limits=LIMITS, zygote=zygote)[0] for path in (leaver, spy, spy)]
+    reports = [grade_submission(path, [6], seed=3, workers=Forked(zygote, LIMITS))[0] for path in (leaver, spy, spy)]
     assert zygote.starts == 1  # the same warm process forked all three
     for report in reports[1:]:  # the next students are graded as fresh workers grade them
         assert report.score == report.auto_max_score, [(r.check_id, r.message) for r in report.results
@@ -121,7 +122,7 @@ def test_a_killed_worker_is_forked_again_and_the_student_graded_to_the_end(zygot
     old = "def cardan(alpha, beta, gamma):\n"
     assert text.count(old) == 1
     rotations.write_text(text.replace(old, old + "    import os\n\n    os._exit(3)\n"))
-    (report,) = grade_submission(submission, [6], seed=3, limits=LIMITS, zygote=zygote)
+    (report,) = grade_submission(submission, [6], seed=3, workers=Forked(zygote, LIMITS))
     assert zygote.starts == 1
     by_id = {r.check_id: r for r in report.results}
     assert by_id["p06.cardan_rotation"].status is Status.ERROR
@@ -134,7 +135,7 @@ def test_one_submission_is_graded_by_one_forked_worker(zygote, tmp_path):
     problem."""
     submission = copy_reference(tmp_path / "pkg")
     before = zygote.forks
-    reports = grade_submission(submission, [6, 8, 9], seed=3, limits=LIMITS, zygote=zygote)
+    reports = grade_submission(submission, [6, 8, 9], seed=3, workers=Forked(zygote, LIMITS))
     assert zygote.forks == before + 1
     assert [r.score for r in reports] == [r.auto_max_score for r in reports]
 

@@ -84,6 +84,7 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
     try:
         try:
             from ..runner import grade_submission
+            from ..workers import Forked
             from ..problems import problem_module
 
             for number in problems:
@@ -103,7 +104,7 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
                 return
             try:
                 reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed,
-                                           limits=limits, zygote=zygote, record_answers=True)
+                                           workers=Forked(zygote, limits), record_answers=True)
                 conn.send(("ok", reports))
             except GraderFault as exc:  # this student is not recorded and is retried next run
                 conn.send(("fault", str(exc).strip().splitlines()[0]))

@@ -350,6 +350,7 @@ def _graded(mistake: Fresh, report, family_of) -> Graded:
 def grade_all(mistakes: list[Fresh], family_of, progress=None) -> list[Graded]:
     """Grade every mistake (its problem only) on workers forked from one batch slot's warm process."""
     from grader import grade_problem
+    from grader.workers import Forked
     from grader.sandbox import Limits, sandbox_mode
     from grader.sandbox.zygote import Zygote, warm_modules
 
@@ -360,7 +361,7 @@ def grade_all(mistakes: list[Fresh], family_of, progress=None) -> list[Graded]:
         slot.start()
         for index, mistake in enumerate(mistakes):
             submission = plant(mistake, Path(scratch) / f"{index:03d}")
-            report = grade_problem(mistake.problem, submission, seed=SEED, zygote=slot)
+            report = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
             graded.append(_graded(mistake, report, family_of))
             shutil.rmtree(submission)
             if progress is not None:
