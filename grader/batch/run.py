@@ -187,6 +187,47 @@ def run_batch(
 
     start = time.monotonic()
     out = Path(out)
+    entries, ignored = _students(submissions, out)
+    numbers = sorted(problems or [p.number for p in all_problems()])
+    limits = limits or Limits()
+    jobs = max(1, jobs or len(os.sched_getaffinity(0)))
+    student_timeout = student_timeout or default_student_timeout(limits, numbers)
+    mode, reached = _sandbox(cluster, credentials, no_sandbox)
+    with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster, credentials) as client:
+        entries = _seeded(entries, book)
+        versions = {n: grader_version(n) for n in numbers}
+        if client is not None:
+            sandbox, jobs = _cluster_sandbox(client, cluster, reached, numbers, versions, no_sandbox)
+        else:
+            sandbox = _local_sandbox(limits, mode)
+        run_id = _start_run(book, submissions, numbers, jobs, force, sandbox, entries, course)
+        report = BatchReport(run_id, len(entries), ignored=ignored)
+        tasks = _tasks(entries, numbers, book, versions, force, report)
+        bar = Progress(len(tasks), report.skipped, enabled=progress)
+        exporter = StudentExporter(out, course.with_problems(numbers) if course else None) \
+            if export and tasks else None
+        record = _Recorder(book, versions, run_id, force, student_timeout, report, bar, exporter)
+        with _sigterm_stops():
+            state = "interrupted"
+            try:
+                _grade(tasks, record, client, cluster, jobs, limits, mode, numbers, student_timeout, no_sandbox)
+                state = "finished"
+            except KeyboardInterrupt:
+                report.interrupted = True
+            finally:
+                _close_run(book, run_id, state, report, bar, exporter)
+        if export and not report.interrupted:
+            _export_class(out, book, course, report)
+        report.seconds = time.monotonic() - start
+    return report
+
+
+# ---------------------------------------------------------------------------------------------- run_batch's steps
+
+
+def _students(submissions, out: Path) -> tuple[list, list[str]]:
+    """The students' entries of ``submissions`` and the names it ignored; refused (``NotInstructorInstallation``,
+    ``SubmissionError``) where there is no reference to grade with or no student to grade."""
     refused = instructor_installation()
     if refused is not None:
         raise NotInstructorInstallation(refused)
@@ -195,100 +236,150 @@ def run_batch(
     entries, ignored = discover(submissions, exclude=out)
     if not entries:
         raise SubmissionError(empty_folder(submissions, ignored))
-    numbers = sorted(problems or [p.number for p in all_problems()])
-    limits = limits or Limits()
-    jobs = max(1, jobs or len(os.sched_getaffinity(0)))
-    student_timeout = student_timeout or default_student_timeout(limits, numbers)
+    return entries, ignored
+
+
+def _sandbox(cluster: str | None, credentials, no_sandbox: bool):
+    """The sandbox mode of a batch on this machine (None on a cluster) and, on a cluster, how it is reached
+    (refused before anything is opened); a machine without bubblewrap grades only with ``no_sandbox``."""
     mode = sandbox_mode() if cluster is None else None
+    reached = None
     if cluster is not None:
         from .cluster import Credentials, transport
 
-        reached = transport(cluster, credentials or Credentials())  # refused before anything is opened
+        reached = transport(cluster, credentials or Credentials())
     if mode is not None and not mode.isolated and not no_sandbox:
         raise SandboxError(f"bubblewrap is not available, so students' code would run without a sandbox: install "
                            f"it ({BWRAP_FIX}), or pass --no-sandbox to grade without one (recorded in the gradebook "
                            "and in every report)")
-    with _locked(out), Gradebook.in_folder(out) as book, _cluster_client(cluster, credentials) as client:
-        secret = book.seed_secret()  # each student's seed: from their submission and the folder's secret
-        entries = [replace(entry, seed=student_seed(entry.content_hash, secret)) for entry in entries]
-        versions = {n: grader_version(n) for n in numbers}
-        if client is not None:
-            from .cluster import check_workers
+    return mode, reached
 
-            note, isolated = check_workers(client, numbers, versions, no_sandbox)
-            sandbox = f"Dask cluster {cluster} ({reached}): {note}"
-            sandbox = sandbox if isolated else f"--no-sandbox: {sandbox}"
-            jobs = len(client.scheduler_info()["workers"])
+
+def _seeded(entries: list, book: Gradebook) -> list:
+    """Each student's seed: from their submission and the results folder's secret."""
+    secret = book.seed_secret()
+    return [replace(entry, seed=student_seed(entry.content_hash, secret)) for entry in entries]
+
+
+def _cluster_sandbox(client, cluster: str, reached, numbers, versions, no_sandbox: bool) -> tuple[str, int]:
+    """What the run records of the cluster's sandbox, once its workers are checked, and its number of workers."""
+    from .cluster import check_workers
+
+    note, isolated = check_workers(client, numbers, versions, no_sandbox)
+    sandbox = f"Dask cluster {cluster} ({reached}): {note}"
+    return (sandbox if isolated else f"--no-sandbox: {sandbox}"), len(client.scheduler_info()["workers"])
+
+
+def _local_sandbox(limits: Limits, mode) -> str:
+    """What the run records of this machine's sandbox, once a canary worker has started in it."""
+    canary(limits, mode)
+    return mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
+
+
+def _start_run(book: Gradebook, submissions, numbers, jobs: int, force: bool, sandbox: str, entries,
+               course: Course | None) -> int:
+    """Record the run in the gradebook, with the students' submission times and the course's file."""
+    run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
+    book.note_submission_times([(e.name, e.content_hash, *_time(e)) for e in entries])
+    if course is not None and course.path is not None:
+        book.set_meta(COURSE_META, str(Path(course.path).resolve()))
+    return run_id
+
+
+def _tasks(entries, numbers, book: Gradebook, versions, force: bool, report: BatchReport) -> list[Task]:
+    """A task for each student with a problem to grade (all of them with ``force``; else those whose submission
+    or grading code changed); the others are counted as skipped in ``report``."""
+    tasks = []
+    for entry in entries:
+        todo = set(numbers)
+        if not force:
+            todo -= book.graded_problems(entry.name, entry.content_hash, versions)
+        if todo:
+            tasks.append(Task(entry, tuple(sorted(todo))))
+        elif book.stopped(entry.name):
+            report.skipped_timed_out.append(entry.name)
+    report.skipped = len(entries) - len(tasks)
+    return tasks
+
+
+@dataclass
+class _Recorder:
+    """What happens to each student's result as it arrives (``done`` of the pool and the cluster): recorded in
+    the gradebook in one transaction, their files exported, the progress advanced; a grader fault is never a
+    grade (``grader.faults``): the student is graded again on the next run."""
+
+    book: Gradebook
+    versions: dict
+    run_id: int
+    force: bool
+    student_timeout: float
+    report: BatchReport
+    bar: Progress
+    exporter: StudentExporter | None
+
+    def __call__(self, task: Task, kind: str, payload, seconds: float) -> None:
+        name = task.entry.name
+        if kind == "ok" and not stored(payload):  # the grader's fault is never a grade (grader.faults): the
+            faults = [r for rep in payload for r in rep.results if r.status is Status.GRADER_ERROR]
+            kind, payload = "fault", faults[0].message.splitlines()[0]  # student is graded on the next run
+        if kind == "ok":
+            reports, outcome = payload, "graded"
+        elif kind == "timeout":
+            message = (f"grading this submission took longer than the batch's limit of {self.student_timeout:g} s "
+                       "per student and was stopped: look for very slow or endless loops.")
+            reports, outcome = stopped_reports(task, Status.TIMEOUT, message, seconds), "timeout"
+            self.report.timed_out.append(name)
         else:
-            canary(limits, mode)
-            sandbox = mode.note if mode.isolated else f"--no-sandbox: {mode.note}"
-        run_id = book.start_run(str(submissions), numbers, jobs, force, sandbox=sandbox)
-        book.note_submission_times([(e.name, e.content_hash, *_time(e)) for e in entries])
-        if course is not None and course.path is not None:
-            book.set_meta(COURSE_META, str(Path(course.path).resolve()))
-        report = BatchReport(run_id, len(entries), ignored=ignored)
-        tasks = []
-        for entry in entries:
-            todo = set(numbers)
-            if not force:
-                todo -= book.graded_problems(entry.name, entry.content_hash, versions)
-            if todo:
-                tasks.append(Task(entry, tuple(sorted(todo))))
-            elif book.stopped(entry.name):
-                report.skipped_timed_out.append(entry.name)
-        report.skipped = len(entries) - len(tasks)
-        bar = Progress(len(tasks), report.skipped, enabled=progress)
+            self.report.not_graded[name] = str(payload).strip().splitlines()[-1] if payload else kind
+            self.bar.advance(name, f"not graded ({self.report.not_graded[name]}); retried on the next run")
+            return
+        self.book.record(name, task.entry.content_hash, self.versions, self.run_id, reports, outcome,
+                         replace_existing=self.force)
+        self.report.graded += 1
+        if self.exporter is not None:  # the student's own files now, while the workers grade the next students
+            self.exporter.submit(name, self.book)
+        score = sum(r.score for r in reports)
+        self.bar.advance(name, f"{score:g}/{sum(r.max_score for r in reports):g} ({seconds:.1f} s)")
 
-        def done(task: Task, kind: str, payload, seconds: float) -> None:
-            name = task.entry.name
-            if kind == "ok" and not stored(payload):  # the grader's fault is never a grade (grader.faults): the
-                faults = [r for rep in payload for r in rep.results if r.status is Status.GRADER_ERROR]
-                kind, payload = "fault", faults[0].message.splitlines()[0]  # student is graded on the next run
-            if kind == "ok":
-                reports, outcome = payload, "graded"
-            elif kind == "timeout":
-                message = (f"grading this submission took longer than the batch's limit of {student_timeout:g} s "
-                           "per student and was stopped: look for very slow or endless loops.")
-                reports, outcome = stopped_reports(task, Status.TIMEOUT, message, seconds), "timeout"
-                report.timed_out.append(name)
-            else:
-                report.not_graded[name] = str(payload).strip().splitlines()[-1] if payload else kind
-                bar.advance(name, f"not graded ({report.not_graded[name]}); retried on the next run")
-                return
-            book.record(name, task.entry.content_hash, versions, run_id, reports, outcome, replace_existing=force)
-            report.graded += 1
-            if exporter is not None:  # the student's own files now, while the workers grade the next students
-                exporter.submit(name, book)
-            score = sum(r.score for r in reports)
-            bar.advance(name, f"{score:g}/{sum(r.max_score for r in reports):g} ({seconds:.1f} s)")
 
-        exporter = StudentExporter(out, course.with_problems(numbers) if course else None) \
-            if export and tasks else None
-        in_main = threading.current_thread() is threading.main_thread()
-        previous = signal.signal(signal.SIGTERM, _interrupt) if in_main else None
-        state = "interrupted"
-        try:
-            if tasks and client is not None:
-                from .cluster import run_cluster
+def _grade(tasks: list[Task], record: _Recorder, client, cluster: str | None, jobs: int, limits: Limits, mode,
+           numbers, student_timeout: float, no_sandbox: bool) -> None:
+    """Grade ``tasks`` on the cluster's workers (``client``) or on ``jobs`` slots of this machine, each student's
+    result handed to ``record`` as it arrives."""
+    if tasks and client is not None:
+        from .cluster import run_cluster
 
-                run_cluster(client, tasks, limits=limits, problems=tuple(numbers), student_timeout=student_timeout,
-                            no_sandbox=no_sandbox, ship=not cluster.startswith("local:"), done=done)
-            elif tasks:
-                run_pool(tasks, jobs, limits, mode, tuple(numbers), student_timeout, done)
-            state = "finished"
-        except KeyboardInterrupt:
-            report.interrupted = True
-        finally:
-            bar.close()
-            if exporter is not None:
-                report.student_exports = exporter.close(finish=state == "finished")
-            book.finish_run(run_id, state, report.skipped)
-            if in_main and signal.getsignal(signal.SIGTERM) is _interrupt:  # else a SIGTERM stopped the batch
-                signal.signal(signal.SIGTERM, previous)
-        if export and not report.interrupted:
-            began = time.monotonic()
-            export_results(out, book, students=None, course=course or RECORDED, notes=report.notes)
-            report.final_exports = time.monotonic() - began
-        report.seconds = time.monotonic() - start
-    return report
+        run_cluster(client, tasks, limits=limits, problems=tuple(numbers), student_timeout=student_timeout,
+                    no_sandbox=no_sandbox, ship=not cluster.startswith("local:"), done=record)
+    elif tasks:
+        run_pool(tasks, jobs, limits, mode, tuple(numbers), student_timeout, record)
 
+
+def _close_run(book: Gradebook, run_id: int, state: str, report: BatchReport, bar: Progress,
+               exporter: StudentExporter | None) -> None:
+    """End the run (``finished`` or ``interrupted``): the progress closed, the students' exports finished (their
+    seconds in ``report``), the run's state recorded."""
+    bar.close()
+    if exporter is not None:
+        report.student_exports = exporter.close(finish=state == "finished")
+    book.finish_run(run_id, state, report.skipped)
+
+
+def _export_class(out: Path, book: Gradebook, course: Course | None, report: BatchReport) -> None:
+    """The class's files at the end of a finished run (their seconds in ``report``)."""
+    began = time.monotonic()
+    export_results(out, book, students=None, course=course or RECORDED, notes=report.notes)
+    report.final_exports = time.monotonic() - began
+
+
+@contextmanager
+def _sigterm_stops():
+    """In the main thread, SIGTERM inside the block stops the batch as Ctrl-C does (``_interrupt``); after it, the
+    previous handler is back, unless a SIGTERM came (the process then ignores the ones that follow)."""
+    in_main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _interrupt) if in_main else None
+    try:
+        yield
+    finally:
+        if in_main and signal.getsignal(signal.SIGTERM) is _interrupt:  # else a SIGTERM stopped the batch
+            signal.signal(signal.SIGTERM, previous)
