@@ -50,7 +50,7 @@ def simulate_fixed(pkg, t_end, n, I_grav, *rest):
     p38 = module(pkg, "problem_38")
     tree = p38.build_dynamic_walker()
     q0, qd0 = start[0] if start and start[0] is not None else (p38.Q0, p38.QD0)
-    y0 = np.concatenate([np.asarray(q0, dtype=float), np.asarray(qd0, dtype=float)])
+    y0 = np.hstack([np.asarray(q0, dtype=float).reshape(-1), np.asarray(qd0, dtype=float).reshape(-1)])
     return fixed_run(fixed_step(lambda t, y: p38.walker_ode(t, y, tree), y0, t_end, h, scheme), 2)
 
 

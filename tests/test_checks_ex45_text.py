@@ -72,13 +72,14 @@ def test_mistakes_by_text_and_by_predicate():
     by_text = failure("red\nyellow", mistakes=[Mistake("missing_prompt", "red\nyellow", "prompt")])
     assert (by_text.diagnosis, by_text.hint) == ("missing_prompt", "prompt")
     by_predicate = failure("Rainbow:\nred\ngreen", mistakes=[
-        Mistake("leaf", lambda got, expected: "green" in got, "leaf"),
+        Mistake("leaf_prints_color", lambda got, expected: "green" in got, "leaf"),
     ])
-    assert by_predicate.diagnosis == "leaf"
+    assert by_predicate.diagnosis == "leaf_prints_color"
 
 
 def test_no_diagnosis_without_a_match():
-    exc = failure("Rainbow:\nred\nblue", mistakes=[Mistake("leaf", lambda got, expected: "green" in got, "")])
+    exc = failure("Rainbow:\nred\nblue",
+                  mistakes=[Mistake("leaf_prints_color", lambda got, expected: "green" in got, "")])
     assert (exc.diagnosis, exc.hint) == ("", "")
 
 

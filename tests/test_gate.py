@@ -15,6 +15,7 @@ import numpy as np
 import probes
 from checks._answers import option_number
 from grader import grade_submission
+from grader.workers import Fresh
 from grader.checking import CheckFailure
 from grader.errors import GraderFault
 from grader.gate import admit
@@ -187,7 +188,7 @@ def test_no_crafted_reply_crashes_a_check_of_any_problem(seed, tmp_path):
 
     submission = copy_reference(tmp_path / "pkg")
     (submission / "__init__.py").write_text((submission / "__init__.py").read_text() + SHUFFLING_ENCODER % seed)
-    reports = grade_submission(submission, [p.number for p in problems()], seed=seed, workers=2)
+    reports = grade_submission(submission, [p.number for p in problems()], seed=seed, workers=Fresh(count=2))
     crashed = [(r.check_id, r.message[:200]) for report in reports for r in report.results
                if r.status is Status.GRADER_ERROR]
     assert not crashed

@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 
 from grader import grade_problem
+from grader.workers import Fresh
 from grader.results import Status
 
 from .kit_support import SEED, answer_key, kit_oracle  # noqa: F401 (fixtures)
@@ -132,10 +133,10 @@ def test_a_lookup_of_the_kits_key_earns_nothing_live(looked_up, kit_oracle):
     from grader.problems import problems
 
     numbers = [p.number for p in problems()]
-    live = grade_submission(looked_up, numbers, seed=SEED, oracle=LiveOracle(), workers=2)
+    live = grade_submission(looked_up, numbers, seed=SEED, oracle=LiveOracle(), workers=Fresh(count=2))
     earned = [(r.check_id, r.score) for report in live for r in report.results if r.score]
     assert not earned, earned
-    kit = grade_submission(looked_up, numbers, seed=SEED, oracle=kit_oracle, workers=2)
+    kit = grade_submission(looked_up, numbers, seed=SEED, oracle=kit_oracle, workers=Fresh(count=2))
     assert sum(report.score for report in kit) > 100
 
 

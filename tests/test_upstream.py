@@ -16,6 +16,7 @@ import pytest
 
 from checks._upstream import SHARED, flaw
 from grader import grade_submission
+from grader.workers import Fresh
 from grader.checking import checks_of
 from grader.problems import problem_module
 from grader.results import Status
@@ -95,7 +96,7 @@ def test_a_transposed_R3_reaches_no_later_problem(transposed):
     simulations whose model is built on R3 (problem 24's and 38's runs, problem 46's run), where the reference's run
     on the student's R3 would take tens of seconds of calls into the sandbox."""
     numbers = sorted(n for n in REACHED if n > 8)
-    for report in grade_submission(transposed, numbers, seed=SEED, workers=2):
+    for report in grade_submission(transposed, numbers, seed=SEED, workers=Fresh(count=2)):
         by_id = {r.check_id: r for r in report.results}
         for check_id in REACHED[report.problem]:
             result = by_id[check_id]
