@@ -71,11 +71,19 @@ EMIL = "return np.diag([b * b + c * c, a * a + c * c, a * a + b * b]) * (0.1 * m
 HOSTILE_COMMENT = '# </pre><script>alert("copied")</script>'
 
 
+#: two slips of problem 12 that give the very same wrong numbers on the wheel's drawn case (omega x r left out of the
+#: position's step, omega x v of the velocity's): two students who made one each share a wrong answer that the
+#: grader's evidence cannot tell from a copied one (the report is evidence for a person, never a verdict), so the
+#: class of students who share nothing keeps only the first
+ALIKE = ("p12-missing-omega-x-v",)
+
+
 def _honest() -> list[tuple[str, object]]:
-    """The honest students: planted mistakes and correct variants of the graded problems, each different."""
+    """The honest students: planted mistakes and correct variants of the graded problems, each different, and no two
+    with the same wrong numbers (``ALIKE``)."""
     chosen = []
     for number, count in ((12, 9), (16, 5), (17, 5)):
-        mistakes = [m for m in planted_mistakes(number) if m.name != ALICE][:count]
+        mistakes = [m for m in planted_mistakes(number) if m.name != ALICE and m.name not in ALIKE][:count]
         chosen += [(m.name, m) for m in mistakes]
     for number in (12, 17):
         chosen += [(v["name"], v) for v in correct_variants(number)[:1]]
