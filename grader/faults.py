@@ -43,7 +43,7 @@ from .errors import (EXIT_FAILED, EXIT_GRADER, EXIT_OK, EXIT_USAGE, ProbeFault, 
                      StudentFault, StudentTimeout, SubmissionError, WorkerCrash)
 from .results import Status
 
-__all__ = ["Fault", "FAULTS", "fault_of", "faults_in", "exit_code", "stored"]
+__all__ = ["Fault", "FAULTS", "fault_of", "faults_in", "exit_code", "stored", "grader_fault_reason"]
 
 
 @dataclass(frozen=True)
@@ -136,3 +136,19 @@ def exit_code(reports) -> int:
         return max(codes)
     statuses = {r.status for report in reports for r in report.results}
     return EXIT_OK if statuses <= {Status.PASSED, Status.DEFERRED} else EXIT_FAILED
+
+
+def grader_fault_reason(exc: BaseException, out) -> str:
+    """What a platform's results say of a failure that is the grader's: a ``GraderFault``'s own words (said on
+    ``out`` too), or, for the unforeseen, that the grader failed internally (its traceback on ``out``, the course
+    staff's log)."""
+    import traceback
+
+    from .errors import GraderFault
+    from .terminal import say
+
+    if isinstance(exc, GraderFault):
+        say(f"grader fault: {exc}", out)
+        return str(exc)
+    traceback.print_exception(exc, file=out)
+    return f"internal error of the grader ({type(exc).__name__}); the course staff have its log"

@@ -23,7 +23,6 @@ import os
 import random
 import sys
 import time
-import traceback
 import zipfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -121,7 +120,7 @@ def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
     (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed on any check or could not grade).  Whose fault a
     failure is, is ``grader.faults``' table: the student's is graded (a submission that cannot be loaded scores 0
     with the reason), the grader's is said to be the grader's (``fault_results``, or the check's own test)."""
-    from .faults import fault_of, faults_in
+    from .faults import fault_of, faults_in, grader_fault_reason
     from .runner import grade_submission, unloadable_reports
 
     start = time.monotonic()
@@ -135,12 +134,7 @@ def run(root: Path, problems: list[int], *, seed: int | None = None) -> int:
     except Exception as exc:  # noqa: BLE001 - whose fault it is, is the table's: the unforeseen is the grader's
         fault = fault_of(exc)
         if not fault.student:
-            if isinstance(exc, GraderFault):
-                say(f"grader fault: {exc}", sys.stdout)
-                reason = str(exc)
-            else:
-                traceback.print_exc(file=sys.stdout)
-                reason = f"internal error of the grader ({type(exc).__name__}); the course staff have its log"
+            reason = grader_fault_reason(exc, sys.stdout)
             _write_json(results_path, fault_results(reason, execution_time=time.monotonic() - start))
             return fault.autograder_exit
         reports = unloadable_reports(root / "submission", problems, str(exc), seed=seed)

@@ -30,7 +30,6 @@ import math
 import random
 import sys
 import time
-import traceback
 import uuid
 from dataclasses import dataclass
 from pathlib import Path
@@ -273,7 +272,7 @@ def run(job: str | Path = JOB_ROOT, *, seed: int | None = None) -> int:
     returns the exit code (``EXIT_GRADED``, or ``EXIT_FAULT`` when the grader failed).  Whose fault a failure is,
     is ``grader.faults``' table: the student's is graded (a submission that cannot be loaded is not gradable, with
     the reason), the grader's is never a grade (``fault_results``)."""
-    from .faults import fault_of, faults_in
+    from .faults import fault_of, faults_in, grader_fault_reason
     from .gradescope import check_installation, find_student
     from .terminal import say
 
@@ -293,12 +292,7 @@ def run(job: str | Path = JOB_ROOT, *, seed: int | None = None) -> int:
         if fault.student:  # the submission cannot be loaded
             _write_json(results_path, unloadable_results(str(exc)))
             return fault.autograder_exit
-        if isinstance(exc, GraderFault):
-            say(f"grader fault: {exc}", sys.stdout)
-            reason = str(exc)
-        else:
-            traceback.print_exc(file=sys.stdout)
-            reason = f"internal error of the grader ({type(exc).__name__}); the course staff have its log"
+        reason = grader_fault_reason(exc, sys.stdout)
         _write_json(results_path, fault_results(reason))
         return fault.autograder_exit
     _write_json(results_path, data)
