@@ -15,14 +15,16 @@ from functools import lru_cache
 from .checking import CheckFailure
 from .errors import GraderFault
 
-__all__ = ["admit", "form_of", "describe_call", "GATE_PREFIX"]
+__all__ = ["admit", "form_of", "describe_call", "probe_function", "GATE_PREFIX"]
 
 #: how every failure of the gate begins
 GATE_PREFIX = "cannot be graded: "
 
 
 @lru_cache(maxsize=None)
-def _probe_function(name: str):
+def probe_function(name: str):
+    """The probe function named ``name`` (``"problem_22.loop"``), on the grader's side; a name that is no probe is
+    the grader's fault."""
     module_name, _, func_name = name.rpartition(".")
     try:
         func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
@@ -43,7 +45,7 @@ def form_of(probe):
     """``(form, says)`` of a probe (its name or its function); a probe without a declared form, or one that reads
     the reference's own data, is the grader's defect when it is asked of a student."""
     name = _name(probe)
-    func = probe if callable(probe) and getattr(probe, "is_probe", False) else _probe_function(name)
+    func = probe if callable(probe) and getattr(probe, "is_probe", False) else probe_function(name)
     if getattr(func, "reference_only", False):
         raise GraderFault(f"the probe {name} reads the reference's own data and is never run on a submission")
     form = getattr(func, "returns", None)

@@ -395,14 +395,9 @@ class LiveOracle(Oracle):
     # ---------------------------------------------------------------- computing
 
     def _run(self, probe: str, args: tuple):
-        module_name, _, func_name = probe.rpartition(".")
-        try:
-            func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
-        except (ImportError, AttributeError) as exc:
-            raise GraderFault(f"the check names a probe that does not exist: {probe} ({exc})") from exc
-        if not getattr(func, "is_probe", False):
-            raise GraderFault(f"{probe} is not a probe")
-        return func(_reference_package(), *args)
+        from .gate import probe_function
+
+        return probe_function(probe)(_reference_package(), *args)
 
     def compute(self, probe: str, args: tuple, persist: bool = False):
         """``(key, encoded, value)`` of the probe's result on the reference, through the caches."""

@@ -358,9 +358,9 @@ def _plain(args) -> bool:
 
 
 def _probe_function(probe: str):
-    from .gate import _probe_function as lookup
+    from .gate import probe_function
 
-    return lookup(str(probe))
+    return probe_function(str(probe))
 
 
 def _reason(exc) -> str:
