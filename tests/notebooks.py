@@ -10,7 +10,7 @@ from pathlib import Path
 import nbformat
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 
-__all__ = ["definition", "problem_06_cells", "write_notebook", "self_contained_problem_06", "jupyter_problem_06",
+__all__ = ["definition", "problem_06_cells", "r3_transposed", "write_notebook", "self_contained_problem_06", "jupyter_problem_06",
            "exercise_notebook", "PROBLEM_06_NAMES"]
 
 #: what problem 6 asks for, module by module
@@ -31,6 +31,13 @@ def definition(folder: Path, module: str, name: str) -> str:
 def problem_06_cells(folder: Path) -> list[str]:
     """Problem 6's definitions of ``folder``, one cell each, rotations first."""
     return [definition(folder, module, name) for module, names in PROBLEM_06_NAMES.items() for name in names]
+
+
+def r3_transposed(cells: list[str]) -> list[str]:
+    """Problem 6's cells with R3 transposed (some of its checks then pass and others fail)."""
+    out = [cell.replace("[[c, -s, 0.0], [s, c, 0.0]", "[[c, s, 0.0], [-s, c, 0.0]") for cell in cells]
+    assert sum("[[c, s, 0.0]" in cell for cell in out) == 1, "R3's rows changed in the reference"
+    return out
 
 
 def write_notebook(path: Path, cells: list) -> Path:

@@ -12,7 +12,7 @@ import pytest
 
 from grader.cli import main
 
-from .notebooks import PROBLEM_06_NAMES, definition, write_notebook
+from .notebooks import problem_06_cells, r3_transposed, write_notebook
 from .submissions import ROOT, copy_template
 
 nbclient = pytest.importorskip("nbclient")
@@ -30,14 +30,7 @@ def _work_folder(tmp_path: Path, last: str) -> Path:
     """A work folder of the template with a notebook for problem 6: the reference's definitions, R3 transposed
     (so that some checks fail and others pass), then ``last``."""
     work = copy_template(tmp_path / "mywork")
-    cells = []
-    for module, names in PROBLEM_06_NAMES.items():
-        for name in names:
-            code = definition(ROOT / "reference", module, name)
-            if name == "R3":
-                code = code.replace("[[c, -s, 0.0], [s, c, 0.0]", "[[c, s, 0.0], [-s, c, 0.0]")
-                assert "[[c, s, 0.0]" in code
-            cells.append(code)
+    cells = r3_transposed(problem_06_cells(ROOT / "reference"))
     write_notebook(work / "problem_06.ipynb", ["import json\nimport numpy as np", *cells, last])
     return work
 

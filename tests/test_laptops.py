@@ -15,7 +15,6 @@ import json
 import os
 import shutil
 import subprocess
-import sysconfig
 from pathlib import Path
 
 import pytest
@@ -24,7 +23,7 @@ from grader.kit import KIT_DEPENDENCIES, build_kit, record_key
 
 from .environments import base_python, public_tmp_dir
 from .kit_support import KIT_SEED
-from .notebooks import PROBLEM_06_NAMES, definition, write_notebook
+from .notebooks import problem_06_cells, r3_transposed, write_notebook
 from .submissions import ROOT, copy_reference
 
 pytestmark = pytest.mark.slow
@@ -235,14 +234,7 @@ def test_check_6_gives_the_verdicts_of_grade_without_posix(laptop):
     done = _student(venv, home, [str(venv / "bin" / "grade"), "init", "books", "--notebook"], home)
     assert done.returncode == 0, done.stdout + done.stderr
     work = home / "books"
-    cells = []
-    for module, names in PROBLEM_06_NAMES.items():
-        for name in names:
-            code = definition(ROOT / "reference", module, name)
-            if name == "R3":
-                code = code.replace("[[c, -s, 0.0], [s, c, 0.0]", "[[c, s, 0.0], [-s, c, 0.0]")
-                assert "[[c, s, 0.0]" in code
-            cells.append(code)
+    cells = r3_transposed(problem_06_cells(ROOT / "reference"))
     write_notebook(work / "problem_06.ipynb", ["import numpy as np", *cells])
 
     done = _student(venv, home, [str(venv / "bin" / "grade"), "problem-6", "--seed", "5", "--json", "grade.json"],
