@@ -116,14 +116,15 @@ def reference_f(a, b):
 SCALARS = st.tuples(st.floats(-2.0, 2.0, allow_nan=False), st.floats(-2.0, 2.0, allow_nan=False))
 
 
-def compare(student, oracle_functions=None, pool=None, seed=7):
-    """The failure of a randomized comparison of ``stub.f`` (reference ``reference_f``) with ``student``."""
+def compare(student, oracle_functions=None, pool=None, seed=7, inputs=SCALARS):
+    """The failure of a randomized comparison of ``stub.f`` (reference ``reference_f``) with ``student`` on
+    ``inputs``."""
     functions = oracle_functions or {"stub.f": reference_f}
     oracle = StubOracle(functions, pool)
     ctx = Context(99, StubChild(lambda probe, *args: student(*args)), {}, None, seed, oracle)
     ctx.begin("p99.f_values")
     with pytest.raises(CheckFailure) as caught:
-        ctx.compare_random("stub.f", SCALARS, name="f(a, b)", tol=EXACT, examples=10)
+        ctx.compare_random("stub.f", inputs, name="f(a, b)", tol=EXACT, examples=10)
     return caught.value
 
 
@@ -286,12 +287,7 @@ POSITIVE = st.tuples(st.floats(0.5, 2.0, allow_nan=False), st.floats(0.5, 2.0, a
 
 def compare_positive(student, seed=7):
     """``compare`` on positive arguments (a reciprocal stays finite)."""
-    oracle = StubOracle({"stub.f": reference_f})
-    ctx = Context(99, StubChild(lambda probe, *args: student(*args)), {}, None, seed, oracle)
-    ctx.begin("p99.f_values")
-    with pytest.raises(CheckFailure) as caught:
-        ctx.compare_random("stub.f", POSITIVE, name="f(a, b)", tol=EXACT, examples=10)
-    return caught.value
+    return compare(student, seed=seed, inputs=POSITIVE)
 
 
 def test_a_number_among_the_arguments_at_twice_half_or_its_reciprocal(monkeypatch):
