@@ -9,8 +9,9 @@ student's function can return anything; both meet the same gate.
 
 from __future__ import annotations
 
-import importlib
 from functools import lru_cache
+
+import probes
 
 from .checking import CheckFailure
 from .errors import GraderFault
@@ -22,30 +23,22 @@ GATE_PREFIX = "cannot be graded: "
 
 
 @lru_cache(maxsize=None)
-def probe_function(name: str):
-    """The probe function named ``name`` (``"problem_22.loop"``), on the grader's side; a name that is no probe is
-    the grader's fault."""
-    module_name, _, func_name = name.rpartition(".")
+def probe_function(probe):
+    """The probe function of ``probe`` (its name, ``"problem_22.loop"``, or the function), on the grader's side; a
+    name that is no probe is the grader's fault."""
+    if callable(probe) and getattr(probe, "is_probe", False):
+        return probe
     try:
-        func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
-    except (ImportError, AttributeError) as exc:
-        raise GraderFault(f"the check names a probe that does not exist: {name} ({exc})") from exc
-    if not getattr(func, "is_probe", False):
-        raise GraderFault(f"{name} is not a probe")
-    return func
-
-
-def _name(probe) -> str:
-    if callable(probe):
-        return f"{getattr(probe, '__module__', '').removeprefix('probes.')}.{probe.__name__}"
-    return str(probe)
+        return probes.lookup(probe)
+    except probes.ProbeLookupError as exc:
+        raise GraderFault(f"the check names a probe that does not exist: {probe} ({exc})") from exc
 
 
 def form_of(probe):
     """``(form, says)`` of a probe (its name or its function); a probe without a declared form, or one that reads
     the reference's own data, is the grader's defect when it is asked of a student."""
-    name = _name(probe)
-    func = probe if callable(probe) and getattr(probe, "is_probe", False) else probe_function(name)
+    func = probe_function(probe)
+    name = probe if isinstance(probe, str) else f"{(func.__module__ or '').removeprefix('probes.')}.{func.__name__}"
     if getattr(func, "reference_only", False):
         raise GraderFault(f"the probe {name} reads the reference's own data and is never run on a submission")
     form = getattr(func, "returns", None)
@@ -83,7 +76,8 @@ def describe_call(probe, args, says: str = "") -> str:
             return says.format(*shown)
         except (IndexError, KeyError, ValueError):
             pass
-    return f"{_name(probe).rpartition('.')[2]}({', '.join(shown)})"
+    name = probe if isinstance(probe, str) else getattr(probe, "__name__", str(probe))
+    return f"{name.rpartition('.')[2]}({', '.join(shown)})"
 
 
 def admit(probe, args: tuple, value):

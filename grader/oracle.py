@@ -33,6 +33,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
+import probes
+
 from .errors import GraderFault
 
 __all__ = [
@@ -493,10 +495,9 @@ def _in_diagnosis() -> bool:
 def _reference_only(probe: str) -> bool:
     """True for a probe that reads the reference's own data (a constant, a key, a catalogue of mistakes): never a
     student's answer, so the kit holds it as it is."""
-    module_name, _, name = str(probe).rpartition(".")
     try:
-        return bool(getattr(getattr(importlib.import_module(f"probes.{module_name}"), name), "reference_only", False))
-    except (ImportError, AttributeError):
+        return bool(getattr(probes.lookup(probes.name_of(probe)), "reference_only", False))
+    except probes.ProbeLookupError:
         return False
 
 

@@ -360,7 +360,7 @@ def _plain(args) -> bool:
 def _probe_function(probe: str):
     from .gate import probe_function
 
-    return probe_function(str(probe))
+    return probe_function(probe)
 
 
 def _reason(exc) -> str:

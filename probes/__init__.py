@@ -24,7 +24,7 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
 
 import importlib
 
-__all__ = ["probe", "module"]
+__all__ = ["probe", "module", "lookup", "name_of", "ProbeLookupError"]
 
 #: the keywords a probe may declare
 DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw")
@@ -57,3 +57,35 @@ def probe(func=None, *, returns=None, says="", reference_only=False, **declared)
 def module(package, name):
     """The submodule ``name`` of ``package`` (e.g. ``module(pkg, "rotations")``)."""
     return importlib.import_module(f"{package.__name__}.{name}")
+
+
+class ProbeLookupError(LookupError):
+    """A name that names no probe: a fault of the grader's checks, never of a submission."""
+
+
+def name_of(probe) -> str:
+    """The name of ``probe`` (``"problem_22.loop"``): the module below ``probes`` and the function's name.  The
+    name crosses the sandbox's pipe, keys the oracle's cache and the kit's answer key; a name passes unchanged."""
+    if isinstance(probe, str):
+        return probe
+    module_name = getattr(probe, "__module__", None) or ""
+    func_name = getattr(probe, "__name__", None) or ""
+    if not getattr(probe, "is_probe", False) or not module_name.startswith(f"{__name__}.") or not func_name:
+        raise ProbeLookupError(f"{probe!r} is not a probe (a function of probes.* marked @probe)")
+    return f"{module_name.removeprefix(f'{__name__}.')}.{func_name}"
+
+
+def lookup(name: str):
+    """The probe function named ``name`` (``"problem_22.loop"``), the inverse of ``name_of``; ``ProbeLookupError``
+    when the name names no probe."""
+    module_name, _, func_name = str(name).rpartition(".")
+    if not module_name or not func_name:
+        raise ProbeLookupError(f"{name!r} does not name a probe (module.function)")
+    try:
+        found = importlib.import_module(f"{__name__}.{module_name}")
+    except ImportError as exc:
+        raise ProbeLookupError(f"the probe module {__name__}.{module_name} cannot be imported: {exc}") from exc
+    func = getattr(found, func_name, None)
+    if func is None or not getattr(func, "is_probe", False):
+        raise ProbeLookupError(f"{__name__}.{module_name} has no probe {func_name!r}")
+    return func

@@ -20,6 +20,8 @@ import tempfile
 import time
 from pathlib import Path
 
+import probes
+
 from ..errors import ProbeFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from . import protocol
 from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
@@ -35,22 +37,13 @@ OUTPUT_TAIL = 4000
 def probe_name(probe) -> str:
     """The name of ``probe`` (``"problem_06.vectors"``, or the probe function itself), checked against the
     probes package: a probe that does not exist is the grader's fault, found before anything is sent."""
-    if callable(probe):
-        module = getattr(probe, "__module__", "") or ""
-        name = f"{module.removeprefix('probes.')}.{getattr(probe, '__name__', '')}"
-    else:
-        name = str(probe)
-    if name in _KNOWN_PROBES:
-        return name
-    module_name, _, func_name = name.rpartition(".")
     try:
-        module = importlib.import_module(f"probes.{module_name}") if module_name else None
-    except ImportError as exc:
-        raise ProbeFault(f"a check asks for the probe {name!r}, but probes.{module_name} cannot be imported: "
+        name = probes.name_of(probe)
+        if name not in _KNOWN_PROBES:
+            probes.lookup(name)
+    except probes.ProbeLookupError as exc:
+        raise ProbeFault(f"a check asks for the probe {probe!r}, which does not exist (a typo in the check?): "
                          f"{exc}") from exc
-    target = getattr(module, func_name, None) if module is not None else None
-    if target is None or not getattr(target, "is_probe", False):
-        raise ProbeFault(f"a check asks for the probe {name!r}, which does not exist (a typo in the check?)")
     _KNOWN_PROBES.add(name)
     return name
 

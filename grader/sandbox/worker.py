@@ -42,6 +42,7 @@ RUNTIME = os.path.dirname(os.path.abspath(__file__))
 BLOCKED = ("reference", "checks", "grader", "tests", "student_template", "tools")
 
 _codec = None  # probes._codec, imported at start-up
+_probes = None  # probes (its ``lookup``), imported at start-up
 
 
 # ---------------------------------------------------------------- replies
@@ -68,10 +69,6 @@ def error_reply(req_id, kind: str, exc: BaseException, text: str | None = None) 
         "message": (str(exc) if text is None else text)[:2000],
         "traceback": _student_traceback(exc),
     }
-
-
-class ProbeLookupError(LookupError):
-    """The requested probe does not exist (or is not marked as one): a fault of the grader's checks."""
 
 
 def _raised_in_probes(exc: BaseException) -> bool:
@@ -175,20 +172,6 @@ def _place_notebooks(path: str, own: _OwnModules) -> list[str]:
     return notes
 
 
-def _probe(name: str):
-    module_name, _, func_name = str(name).rpartition(".")
-    if not module_name or not func_name:
-        raise ProbeLookupError(f"{name!r} does not name a probe (module.function)")
-    try:
-        probe_module = importlib.import_module(f"probes.{module_name}")
-    except ImportError as exc:
-        raise ProbeLookupError(f"the probe module probes.{module_name} cannot be imported: {exc}") from exc
-    probe = getattr(probe_module, func_name, None)
-    if probe is None or not getattr(probe, "is_probe", False):
-        raise ProbeLookupError(f"probes.{module_name} has no probe {func_name!r}")
-    return probe
-
-
 def _handle(request: dict, package, submission: str):
     """The reply to ``request`` and the (possibly just imported) package."""
     req_id = request.get("id")
@@ -200,9 +183,9 @@ def _handle(request: dict, package, submission: str):
             reply = {"id": req_id, "ok": True, "value": {"notes": notes[:50]}}
         elif op == "call":
             try:
-                probe = _probe(request.get("probe", ""))
+                probe = _probes.lookup(request.get("probe", ""))
                 args = _codec.decode(request.get("args", []))
-            except ProbeLookupError as exc:
+            except _probes.ProbeLookupError as exc:
                 return error_reply(req_id, "probe", exc), package
             if package is None:
                 package, _ = _import_submission(submission)
@@ -249,8 +232,8 @@ def serve(request_fd: int, reply_fd: int, submission: str) -> int:
 
 def import_dependencies(required: list[str]) -> None:
     """Import what the probes need, so that a missing dependency shows now and not as the student's error."""
-    global _codec
-    importlib.import_module("probes")
+    global _codec, _probes
+    _probes = importlib.import_module("probes")
     _codec = importlib.import_module("probes._codec")
     numpy = importlib.import_module("numpy")
     if getattr(numpy, "__file__", None) is None:  # an empty folder of that name: not numpy
