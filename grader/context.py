@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import threading
 
+import probes
+
 from .checking import (
     CheckFailure,
     JudgedOnSubmission,
@@ -26,7 +28,7 @@ from .checking import (
     random_input,
 )
 from .diagnosis import explain, prepare_call, prepared, recording, remember_run
-from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
+from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 
@@ -34,6 +36,20 @@ from .oracle import Oracle, current, draw_pool, private_hypothesis_home
 _HYPOTHESIS = threading.Lock()
 
 __all__ = ["Context", "Catalogue", "Judged", "simplicity", "explained"]
+
+
+def _probe_name(probe):
+    """The name of ``probe`` (``"problem_22.loop"``) at the context's doors: checks name a probe by its function
+    (``ctx.student(p22.loop, ...)``), and everything behind the doors (the sandbox's protocol, the oracle's cache,
+    the kit's answer key, the diagnosis engine, the logs) keeps its name.  A probe function outside the probes
+    package (a test's own, answered by a stand-in child and oracle) passes as it is; an object that is no probe is
+    the grader's fault."""
+    try:
+        return probes.name_of(probe)
+    except probes.ProbeLookupError as exc:
+        if callable(probe) and getattr(probe, "is_probe", False):
+            return probe
+        raise ProbeFault(f"a check asks for {probe!r}, which is no probe: {exc}") from exc
 
 
 class Context:
@@ -122,9 +138,10 @@ class Context:
 
     # -------------------------------------------------------------- the student's code and the reference
 
-    def student(self, probe: str, *args, timeout: float | None = None):
-        """Run ``probe`` on the student's package in the sandbox; the reply has the probe's form (``grader.gate``),
-        or the check fails saying that it cannot be graded."""
+    def student(self, probe, *args, timeout: float | None = None):
+        """Run ``probe`` (a probe function, ``p22.loop``) on the student's package in the sandbox; the reply has the
+        probe's form (``grader.gate``), or the check fails saying that it cannot be graded."""
+        probe = _probe_name(probe)
         form_of(probe)  # a probe that cannot be asked of a student is the grader's defect, found before it runs
         value = admit(probe, args, self.child.call(probe, *args, timeout=timeout))
         self._note(probe, args, value)
@@ -132,10 +149,11 @@ class Context:
         remember_run(self, probe, args, value)
         return value
 
-    def student_later(self, probe: str, *args, timeout: float | None = None):
+    def student_later(self, probe, *args, timeout: float | None = None):
         """Send the call of ``probe`` to the student's code now; returns a function that waits for its value (held
         to the probe's form, as ``student``'s), so that the grader's own work in between (the reference, a
         catalogue of mistakes) overlaps the student's code.  A child without ``call_later`` is called at once."""
+        probe = _probe_name(probe)
         form_of(probe)
         later = getattr(self.child, "call_later", None)
         if later is not None:
@@ -162,10 +180,11 @@ class Context:
             return raise_later
         return lambda: value
 
-    def reference(self, probe: str, *args, persist: bool = False):
+    def reference(self, probe, *args, persist: bool = False):
         """Run ``probe`` on the reference (cached in memory, and on disk when ``persist``); in the kit, the value
         recorded in the answer key (a fixed case at the sheet's digits only: the check's comparisons then allow for
         them, and a pass says so)."""
+        probe = _probe_name(probe)
         value = self.oracle.reference(probe, args, persist, check=self.check_id)
         if self._recording and self._fixed:
             self._referenced.append((probe, args, value))
@@ -204,7 +223,7 @@ class Context:
         if (upstream, what) not in self.carried:
             self.carried.append((upstream, what))
 
-    def upstream(self, probe: str, args: tuple, shared: dict, flaw) -> "Judged":
+    def upstream(self, probe, args: tuple, shared: dict, flaw) -> "Judged":
         """What the reference's code of ``probe(*args)`` gives on the student's own functions of earlier problems
         (error carried forward across problems, ``grader.upstream``): a ``Judged`` whose ``result()`` is computed
         when first asked, i.e. when the student's answer differs from the reference's.  ``shared`` maps
@@ -213,6 +232,7 @@ class Context:
         recorded, the calls are recorded at once; in the kit the student's functions are compared at those calls."""
         from .oracle import call_key
 
+        probe = _probe_name(probe)
         key = call_key(probe, args)
         if self.oracle.mode == "record":
             self.oracle.record_upstream(key, self._hybrid_for(shared, flaw).calls_of(probe, args))
@@ -251,7 +271,7 @@ class Context:
 
     def compare_random(
         self,
-        probe: str,
+        probe,
         strategy,
         *,
         name: str,
@@ -267,6 +287,7 @@ class Context:
         second failing input.  ``mistakes(args, expected)`` lists known mistakes for the diagnosis; ``compare(got,
         expected, args)`` replaces the default entrywise comparison.  Both may reach the reference through
         ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer."""
+        probe = _probe_name(probe)
 
         def evaluate(args):
             with random_input():  # a failure here may show the digits it needs: the next grading draws anew

@@ -60,11 +60,12 @@ KEY_FORMAT = "mbd-autograder answer key"
 KEY_VERSION = 1
 
 
-def call_key(probe: str, args: tuple) -> str:
-    """A stable text key for a probe call: the probe's name and its arguments as plain data."""
+def call_key(probe, args: tuple) -> str:
+    """A stable text key for a probe call: the probe's name (of the probe, or the name itself) and its arguments as
+    plain data."""
     from probes._codec import encode
 
-    return probe + json.dumps(encode(list(args)), sort_keys=True)
+    return probes.name_of(probe) + json.dumps(encode(list(args)), sort_keys=True)
 
 
 def _roundtrip(value):
