@@ -12,6 +12,7 @@ graded by the problem's other checks.
 import numpy as np
 
 from grader.checking import EXACT, close, fail, format_array
+from probes import _effects as probe_effects
 
 from ._shapes import as_dict, as_list
 
@@ -62,7 +63,7 @@ def assert_no_side_effects(ctx, module: str, function: str, first, second, param
     the same result when called again with the same arguments (``first``, then ``second``, then ``first``;
     ``params`` names the arguments)."""
     first, second = list(first), list(second)
-    got = as_dict(ctx.student("_effects.calls", module, function, first, second),
+    got = as_dict(ctx.student(probe_effects.calls, module, function, first, second),
                   f"the reply of the side-effect probe ({function})", ("first", "first_later", "again", "args_after"))
     after = as_list(got["args_after"], f"the arguments of {function} after the call", len(first))
     call = f"{function}({', '.join(params)})"

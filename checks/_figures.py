@@ -13,6 +13,7 @@ import numpy as np
 
 from grader.errors import StudentCodeError, StudentTimeout, WorkerCrash
 from grader.results import Figure, Series
+from probes import problem_17 as p17
 
 __all__ = [
     "AXIS_COLOURS",
@@ -213,7 +214,7 @@ def ellipsoid_drawer(ctx, title, assertion, key="ellipsoid"):
 
     def draw(got, B_I_G, m, where):
         if where:
-            expected = ctx.reference("problem_17.representations", B_I_G, m)
+            expected = ctx.reference(p17.representations, B_I_G, m)
             panel = len(panels)
             series.extend(_ellipse_rings(*_ellipsoid(expected, key), "reference", panel))
             mine = _ellipsoid(got, key)

@@ -8,6 +8,7 @@ import numpy as np
 
 from grader import strategies as st
 from grader.checking import EXACT, Mistake, Tol, assert_close
+from probes import problem_21 as p21
 
 __all__ = [
     "FINITE", "LENGTHS", "ANGLES", "LINKS", "CASES", "SIZES", "H", "CENTRAL_DIFFERENCES", "CONFIGURATIONS", "FD_LINK",
@@ -90,7 +91,7 @@ def sign_flips(got, expected, tol, hint):
 def _chain_mistakes(ctx, q, d):
     """Modelled mistakes of the constraint function, asked of the reference (a sign flip is found from the
     student's value)."""
-    found = ctx.reference("problem_21.mistakes", q, d)["chain"]
+    found = ctx.reference(p21.mistakes, q, d)["chain"]
     return [
         Mistake("degrees", found["degrees"], DEGREES_HINT),
         Mistake("horizontal", found["horizontal_offset"], HORIZONTAL_HINT
@@ -100,10 +101,10 @@ def _chain_mistakes(ctx, q, d):
 
 
 def _jacobian_reference_mistakes(ctx, case, q, d, expected):
-    found = ctx.reference("problem_21.mistakes", q, d)["jacobian"]
+    found = ctx.reference(p21.mistakes, q, d)["jacobian"]
     return [
         *swapped_columns(expected),
-        Mistake("degrees", ctx.reference("problem_21.jacobian", case, as_degrees(q), d), DEGREES_HINT),
+        Mistake("degrees", ctx.reference(p21.jacobian, case, as_degrees(q), d), DEGREES_HINT),
         Mistake("degrees", found["degrees"], DEGREES_HINT),
         Mistake("horizontal", found["horizontal"], HORIZONTAL_HINT),
     ]
@@ -125,5 +126,5 @@ def _compare_chain(ctx, case):
         mistakes = _chain_mistakes(ctx, args[1], args[2]) + sign_flips(got, expected, EXACT, SIGN_HINT)
         assert_close(got, expected, f"chain_{case}(q, d)", EXACT, mistakes)
 
-    ctx.compare_random("problem_21.chain", _strategy(case), name=f"chain_{case}(q, d)", tol=EXACT, compare=compare,
+    ctx.compare_random(p21.chain, _strategy(case), name=f"chain_{case}(q, d)", tol=EXACT, compare=compare,
                        describe=_describe(f"chain_{case}"))

@@ -15,6 +15,7 @@ from grader.checking import (
     close,
     fail,
 )
+from probes import problem_12 as p12
 
 
 STATE = ("A_IB", "B_r_IB", "B_v_B", "B_omega_B")
@@ -165,7 +166,7 @@ def sheet_state(values):
 
 def initial(ctx, case):
     """The initial state of the sheet's case ``case`` of problem 12(a) (the package's ``CASES``)."""
-    return sheet_state(ctx.reference("problem_12.constants")["CASES"][str(case)])
+    return sheet_state(ctx.reference(p12.constants)["CASES"][str(case)])
 
 
 # ------------------------------------------------------------------------------------ traces

@@ -367,9 +367,9 @@ def _candidates(ctx, description, q, qd, qdd, models):
     values = (q,) if qd is None else (q, qd, qdd)
     relevant = [model for model in models if _relevant(model, description, motion)]
     switched = [model for model in relevant if model.edit is None]
-    states = ctx.reference("_trees.mistaken_states", [_spec(model) for model in switched], description, *values)
+    states = ctx.reference(probe_trees.mistaken_states, [_spec(model) for model in switched], description, *values)
     found = list(zip(switched, states))
-    found += [(model, ctx.reference("_trees.tree_state", model.edit(description), *values)["bodies"])
+    found += [(model, ctx.reference(probe_trees.tree_state, model.edit(description), *values)["bodies"])
               for model in relevant if model.edit is not None]
     return [(model.name, model.hint, bodies) for model, bodies in found if bodies is not None]
 
@@ -674,7 +674,7 @@ def assert_tree_no_side_effects(ctx, description, first, second):
     """Fail unless ``forward_kinematics`` of a tree leaves its arguments unchanged and a tree used again gives what
     a fresh tree gives (``first``, then ``second``, then ``first``; each ``(q[, qd, qdd])``)."""
     first, second = [np.asarray(v, dtype=float) for v in first], [np.asarray(v, dtype=float) for v in second]
-    got = as_dict(ctx.student("_trees.tree_calls", description, first, second),
+    got = as_dict(ctx.student(probe_trees.tree_calls, description, first, second),
                   "the reply of the side-effect probe (forward_kinematics)",
                   ("first", "second", "fresh_second", "again", "args_after"))
     after = as_list(got["args_after"], "the arguments of forward_kinematics after the call", len(first))

@@ -8,6 +8,7 @@ runs there as it does in the grader.
 import numpy as np
 
 from grader.checking import STAGE_DEFINED, STAGE_STRUCTURE, Mistake, Tol, assert_close, check, fail
+from probes import problem_01 as p01, problem_02 as p02
 
 from ._mujoco import model_of
 
@@ -55,7 +56,7 @@ def _listing(found):
 @check(2, title="Python >= 3.11 with numpy, scipy, sympy and mujoco importable, and versions() reports their "
        "versions", stage=STAGE_DEFINED, group="setup")
 def check_versions(ctx):
-    found = ctx.student("problem_01.environment", list(PACKAGES), timeout=60)
+    found = ctx.student(p01.environment, list(PACKAGES), timeout=60)
     missing, old = [], []
     for name, (minimum, pip_name) in PACKAGES.items():
         entry = found["packages"][name]
@@ -95,11 +96,11 @@ def check_versions(ctx):
 @check(1, title="a tiny MuJoCo model (a falling link) loads and runs in the sandbox, and moves as physics says",
        stage=STAGE_STRUCTURE, group="setup")
 def check_mujoco_runs(ctx):
-    got = model_of(ctx.student("problem_01.tiny_model", TINY_DURATION, TINY_SAMPLE, timeout=30), "the tiny model")
+    got = model_of(ctx.student(p01.tiny_model, TINY_DURATION, TINY_SAMPLE, timeout=30), "the tiny model")
     if got.get("diverged"):
         fail(f"MuJoCo's run of the tiny model stopped: {got['diverged']}",
              "Reinstall MuJoCo: pip install --force-reinstall mujoco", "mujoco_broken")
-    expected = ctx.reference("problem_02.ode", 950.0, 9.81, 0.0, 0.0, TINY_DURATION, TINY_SAMPLE, persist=True)
+    expected = ctx.reference(p02.ode, 950.0, 9.81, 0.0, 0.0, TINY_DURATION, TINY_SAMPLE, persist=True)
     assert_close(np.concatenate([got["qpos"][:, 0], got["qvel"][:, 0]]),
                  np.concatenate([expected["q"][:, 0], expected["qd"][:, 0]]),
                  f"the tiny model's angle and rate over {TINY_DURATION:g} s", ENGINE,

@@ -18,6 +18,7 @@ from grader.checking import (
     check,
     fail,
 )
+from probes import problem_02 as p02, problem_03 as p03
 
 from ._mujoco import (
     ALUMINIUM,
@@ -67,12 +68,12 @@ DAMPING = Tol("declared damping and torque, 4 significant digits", 1e-15, 5e-4)
 
 def _model(ctx, density, gravity, damping=0.0, torque=0.0):
     what = f"pendulum({density:g}, {gravity:g}, {damping:g}, {torque:g})"
-    return model_of(student_once(ctx, "problem_02.model", density, gravity, damping, torque), what), what
+    return model_of(student_once(ctx, p02.model, density, gravity, damping, torque), what), what
 
 
 def _run(ctx, case):
     label, args = CASES[case]
-    got = run_of(student_once(ctx, "problem_02.run", *args, DURATION, SAMPLE, timeout=30), f"the model of {label}")
+    got = run_of(student_once(ctx, p02.run, *args, DURATION, SAMPLE, timeout=30), f"the model of {label}")
     return label, got
 
 
@@ -120,7 +121,7 @@ def check_mass_inertia(ctx):
     for density in DENSITIES:
         desc, what = _model(ctx, density, EARTH)
         body = body_of(desc, hinges(desc, 1, what)[0])
-        custom = ctx.reference("problem_03.link_inertia", LENGTH, WIDTH, HEIGHT, density)
+        custom = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, density)
         m, com, I_zz = custom["mass"], np.asarray(custom["com"]), custom["inertia"][2, 2]
         assert_close(body["mass"], m, f"the link's mass in {what}", MASS, mistakes=[
             Mistake("density_as_mass", density, "You set the MASS to the density: give the geom density=\"rho\" "
@@ -157,7 +158,7 @@ def _assert_inputs(ctx, args, tutorial=None):
     ``tutorial``: the reference's model of the tutorial, whose values typed in are a known mistake here."""
     desc, what = _model(ctx, *args)
     joint = hinges(desc, 1, what)[0]
-    ref = reference_of(ctx.reference("problem_02.model", *args, persist=True), f"the model {what}")
+    ref = reference_of(ctx.reference(p02.model, *args, persist=True), f"the model {what}")
     damping, expected = ref["joints"][0]["damping"], _unit_torque(ref)
     typed_damping, typed_torque = [], []
     if tutorial is not None:
@@ -186,7 +187,7 @@ def _assert_inputs(ctx, args, tutorial=None):
 @check(2, title="2(a): damping 8e-5 N m/(deg/s) declared in N m s/rad, input torque 0.06 sin(t) N m on the joint "
        "(and other damping and torque when asked); 2(b): neither", stage=STAGE_VALUES, group="model")
 def check_damping_torque(ctx):
-    tutorial = reference_of(ctx.reference("problem_02.model", *TUTORIAL, persist=True), "tutorial model")
+    tutorial = reference_of(ctx.reference(p02.model, *TUTORIAL, persist=True), "tutorial model")
     _assert_inputs(ctx, TUTORIAL)
     _assert_inputs(ctx, UNPRINTED, tutorial)
     quiet, quiet_what = _model(ctx, HDPE, EARTH)
@@ -215,7 +216,7 @@ def check_period(ctx):
     for case, g in (("2c", MOON), ("2b", EARTH)):
         label, got = _run(ctx, case)
         crossings = _rate_crossings(got["t"], got["qvel"][:, 0])
-        period = ctx.reference("problem_02.period", HDPE, g, persist=True)
+        period = ctx.reference(p02.period, HDPE, g, persist=True)
         if len(crossings) < 2:
             fail(f"the pendulum of {label} does not swing back within {DURATION:g} s: its rate changes sign "
                  f"{len(crossings)} time(s); the period should be {period:.4f} s.",
@@ -229,7 +230,7 @@ def check_period(ctx):
 
 def _traces_check(ctx, case):
     label, got = _run(ctx, case)
-    expected = ctx.reference("problem_02.ode", *CASES[case][1], DURATION, SAMPLE, persist=True)
+    expected = ctx.reference(p02.ode, *CASES[case][1], DURATION, SAMPLE, persist=True)
     mine = {"q [rad]": got["qpos"][:, 0], "q_dot [rad/s]": got["qvel"][:, 0]}
     ref = {"q [rad]": expected["q"][:, 0], "q_dot [rad/s]": expected["qd"][:, 0]}
     ctx.add_figure(trace_figure(f"Problem {label}: angle and angle rate", expected["t"], mine, ref))
@@ -264,7 +265,7 @@ def check_traces_2c(ctx):
        stage=STAGE_VALUES, group="density")
 def check_density_experiment(ctx):
     _, light = _run(ctx, "2b")
-    heavy = run_of(student_once(ctx, "problem_02.run", ALUMINIUM, EARTH, 0.0, 0.0, DURATION, SAMPLE, timeout=30),
+    heavy = run_of(student_once(ctx, p02.run, ALUMINIUM, EARTH, 0.0, 0.0, DURATION, SAMPLE, timeout=30),
                    "the model of 2(b) in aluminium")
     for key, name in (("qpos", "angle"), ("qvel", "angle rate")):
         a, b = np.asarray(light[key])[:, 0], np.asarray(heavy[key])[:, 0]

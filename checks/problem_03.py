@@ -22,6 +22,7 @@ from grader.checking import (
     check,
     fail,
 )
+from probes import problem_03 as p03
 
 from ._mujoco import (
     DIRECTION,
@@ -66,16 +67,16 @@ VARIANTS = {"geometry": "3(a), inertia from the geometry", "custom": "3(b), cust
 def _model(ctx, variant):
     rate = RATE if variant == "driven" else None
     what = f"the model of {VARIANTS[variant]}"
-    desc = model_of(student_once(ctx, "problem_03.model", variant, HDPE, EARTH, rate), what)
+    desc = model_of(student_once(ctx, p03.model, variant, HDPE, EARTH, rate), what)
     return desc, what
 
 
 def _run(ctx, variant):
     rate = RATE if variant == "driven" else None
     duration = DRIVEN_DURATION if variant == "driven" else DURATION
-    got = run_of(student_once(ctx, "problem_03.run", variant, HDPE, EARTH, duration, SAMPLE, rate, timeout=30),
+    got = run_of(student_once(ctx, p03.run, variant, HDPE, EARTH, duration, SAMPLE, rate, timeout=30),
                  f"the model of {VARIANTS[variant]}")
-    expected = ctx.reference("problem_03.ode", HDPE, EARTH, duration, SAMPLE, rate, persist=True)
+    expected = ctx.reference(p03.ode, HDPE, EARTH, duration, SAMPLE, rate, persist=True)
     return got, expected, duration
 
 
@@ -115,7 +116,7 @@ def _assert_inertial(got, expected, what, mistakes):
 @check(2, title="3(b): link_inertia(L, W, H, rho) = m = L W H rho at (L/2, 0, 0), m/12 diag(W^2+H^2, L^2+H^2, "
        "L^2+W^2) on random bricks", stage=STAGE_RANDOM, group="link_inertia")
 def check_link_inertia(ctx):
-    ctx.student("problem_03.link_inertia", LENGTH, WIDTH, HEIGHT, HDPE)
+    ctx.student(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)
 
     def compare(got, expected, args):
         if not isinstance(got, dict) or not {"mass", "com", "inertia"} <= set(got):
@@ -123,7 +124,7 @@ def check_link_inertia(ctx):
         shaped = {"mass": got["mass"], "com": got["com"], "inertia": got["inertia"]}
         _assert_inertial(shaped, expected, "of link_inertia(...)", _inertia_mistakes(expected, args[3]))
 
-    ctx.compare_random("problem_03.link_inertia", BRICKS, name="link_inertia(...)", tol=EXACT, compare=compare,
+    ctx.compare_random(p03.link_inertia, BRICKS, name="link_inertia(...)", tol=EXACT, compare=compare,
                        examples=10, describe=lambda a: f"(L, W, H, rho) = ({a[0]!r}, {a[1]!r}, {a[2]!r}, {a[3]!r})")
 
 
@@ -159,7 +160,7 @@ def check_model_a(ctx):
        stage=STAGE_STRUCTURE, group="model_a")
 def check_geometry_inertia(ctx):
     desc, what, bodies = _structure(ctx, "geometry")
-    custom = ctx.reference("problem_03.link_inertia", LENGTH, WIDTH, HEIGHT, HDPE)
+    custom = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)
     mistakes = _inertia_mistakes(custom, HDPE)
     for k, body in enumerate(bodies):
         offset = np.array([k * LENGTH, 0.0, 0.0])
@@ -174,7 +175,7 @@ def check_geometry_inertia(ctx):
        stage=STAGE_STRUCTURE, group="model_b")
 def check_custom_inertia(ctx):
     desc, what, bodies = _structure(ctx, "custom")
-    custom = ctx.reference("problem_03.link_inertia", LENGTH, WIDTH, HEIGHT, HDPE)
+    custom = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)
     mistakes = _inertia_mistakes(custom, HDPE)
     for k, body in enumerate(bodies):
         offset = np.array([k * LENGTH, 0.0, 0.0])
@@ -187,7 +188,7 @@ def check_custom_inertia(ctx):
 
 
 def _horizon(ctx, rate, duration):
-    found = ctx.reference("problem_03.horizon", HDPE, EARTH, duration, SAMPLE, rate, ANGLE.atol, RATE_TOL.atol,
+    found = ctx.reference(p03.horizon, HDPE, EARTH, duration, SAMPLE, rate, ANGLE.atol, RATE_TOL.atol,
                           persist=True)
     return float(found["horizon"]), float(found["perturbation"])
 

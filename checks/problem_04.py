@@ -30,6 +30,7 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import problem_04 as p04
 
 from ._mujoco import DIRECTION, EARTH, HDPE, LENGTH, POSITION, hinges, model_of, student_once
 
@@ -140,7 +141,7 @@ def _expect_raise(got, kind, call, reason):
        "at 0, and random conflicting pairs)", stage=STAGE_VALUES, group="overconstrained")
 def check_overconstrained(ctx):
     reason = "a four-bar has one degree of freedom, so four targets conflict"
-    _expect_raise(ctx.student("problem_04.assemble", ALL_ZERO, FIXED_POINT), "overconstrained",
+    _expect_raise(ctx.student(p04.assemble, ALL_ZERO, FIXED_POINT), "overconstrained",
                   _describe_targets(ALL_ZERO, FIXED_POINT), reason)
 
     def pairs(draw_args):
@@ -151,7 +152,7 @@ def check_overconstrained(ctx):
 
     strategy = st.tuples(st.sampled_from([(0, 1), (0, 2), (1, 3), (2, 3), (0, 3)]),
                          st.tuples(ANGLES, ANGLES)).map(pairs)
-    ctx.compare_random("problem_04.assemble", strategy, name="assemble(...)", tol=EXACT, examples=5,
+    ctx.compare_random(p04.assemble, strategy, name="assemble(...)", tol=EXACT, examples=5,
                        compare=lambda got, expected, args: _expect_raise(
                            got, "overconstrained", _describe_targets(*args),
                            "two targets on a linkage with one degree of freedom conflict"),
@@ -163,7 +164,7 @@ def check_overconstrained(ctx):
        stage=STAGE_VALUES, group="unreachable")
 def check_unreachable(ctx):
     reason = "three links of 0.2 m reach at most 0.6 m, and the fixed point is 1 m away"
-    _expect_raise(ctx.student("problem_04.assemble", ONE_TARGET, UNREACHABLE_POINT), "unreachable",
+    _expect_raise(ctx.student(p04.assemble, ONE_TARGET, UNREACHABLE_POINT), "unreachable",
                   _describe_targets(ONE_TARGET, UNREACHABLE_POINT), reason)
 
     def far(args):
@@ -173,7 +174,7 @@ def check_unreachable(ctx):
         return targets, [distance * np.cos(angle), distance * np.sin(angle), 0.0]
 
     strategy = st.tuples(st.floats(0.62, 2.0, **FINITE), ANGLES, st.integers(0, 3), ANGLES).map(far)
-    ctx.compare_random("problem_04.assemble", strategy, name="assemble(...)", tol=EXACT, examples=5,
+    ctx.compare_random(p04.assemble, strategy, name="assemble(...)", tol=EXACT, examples=5,
                        compare=lambda got, expected, args: _expect_raise(
                            got, "unreachable", _describe_targets(*args),
                            f"the fixed point is {np.linalg.norm(args[1]):.3f} m away, beyond the links' 0.6 m"),
@@ -207,11 +208,11 @@ def _assert_blocked_targets_raise(ctx):
         return (f"with that target the two other links would have to reach {_gap(targets, point):.3f} m, beyond "
                 f"their {2 * LENGTH:g} m")
 
-    _expect_raise(ctx.student("problem_04.assemble", AWAY, FIXED_POINT), "unreachable",
+    _expect_raise(ctx.student(p04.assemble, AWAY, FIXED_POINT), "unreachable",
                   _describe_targets(AWAY, FIXED_POINT), reason(AWAY, FIXED_POINT))
     strategy = st.tuples(st.floats(0.3, 0.55, **FINITE), ANGLES, st.sampled_from([0, 3]),
                          st.floats(-0.5, 0.5, **FINITE)).map(_blocking)
-    ctx.compare_random("problem_04.assemble", strategy, name="assemble(...)", tol=EXACT, examples=5,
+    ctx.compare_random(p04.assemble, strategy, name="assemble(...)", tol=EXACT, examples=5,
                        compare=lambda got, expected, args: _expect_raise(got, "unreachable", _describe_targets(*args),
                                                                          reason(*args)),
                        describe=lambda args: _describe_targets(*args))
@@ -243,7 +244,7 @@ def check_assembly(ctx):
                  "and take a least-squares step where the Jacobian is not square.", "not_assembled")
         _assert_assembled(got["q"], targets, point, call)
 
-    ctx.compare_random("problem_04.assemble", reachable_cases(), name="assemble(...)", tol=EXACT, examples=10,
+    ctx.compare_random(p04.assemble, reachable_cases(), name="assemble(...)", tol=EXACT, examples=10,
                        compare=compare, describe=lambda args: _describe_targets(*args))
 
 
@@ -298,20 +299,20 @@ def _assert_balanced(q, point, sheet_q=None):
        stage=STAGE_STRUCTURE, group="balance")
 def check_balanced(ctx):
     points = [FIXED_POINT, GROUND_POINT, _ground_point(ctx)]
-    ref = ctx.reference("problem_04.balanced", FIXED_POINT)
-    q = as_array(ctx.student("problem_04.balanced", FIXED_POINT), "balanced_configuration()", (4,))
+    ref = ctx.reference(p04.balanced, FIXED_POINT)
+    q = as_array(ctx.student(p04.balanced, FIXED_POINT), "balanced_configuration()", (4,))
     ctx.add_figure(figure("Problem 4(b): the four-bar in your balanced configuration", "x [m]", "y [m]",
                           student=[("links", *_drawing(q))], reference=[("links", *_drawing(ref))], equal_axes=True))
     _assert_balanced(q, FIXED_POINT)
     for point in points[1:]:
-        _assert_balanced(ctx.student("problem_04.balanced", point), point, q)
+        _assert_balanced(ctx.student(p04.balanced, point), point, q)
 
 
 # ------------------------------------------------------------------------------------ the MuJoCo model
 
 
 def _model(ctx, q, what, point=FIXED_POINT):
-    return model_of(student_once(ctx, "problem_04.model", HDPE, EARTH, q, point), what)
+    return model_of(student_once(ctx, p04.model, HDPE, EARTH, q, point), what)
 
 
 def _along(desc, what):
@@ -326,7 +327,7 @@ def _along(desc, what):
 @check(1, title="four_bar(...): three hinges about +z at the joints of q, and an equality constraint joining the end "
        "of link 3 to the world at the fixed point", stage=STAGE_DEFINED, group="model")
 def check_model_structure(ctx):
-    q = ctx.reference("problem_04.assemble", DYNAMICS_TARGETS, FIXED_POINT)["q"]
+    q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, FIXED_POINT)["q"]
     what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
     desc = _model(ctx, q, what)
     joints = hinges(desc, 3, what)
@@ -355,8 +356,8 @@ def check_model_structure(ctx):
 @check(2, title="four_bar(...): released at rest in an unbalanced configuration, MuJoCo's acceleration along the "
        "linkage's motion is the reference's", stage=STAGE_VALUES, group="model")
 def check_model_dynamics(ctx):
-    q = ctx.reference("problem_04.assemble", DYNAMICS_TARGETS, FIXED_POINT)["q"]
-    expected = ctx.reference("problem_04.tangent_acceleration", q, HDPE, EARTH)
+    q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, FIXED_POINT)["q"]
+    expected = ctx.reference(p04.tangent_acceleration, q, HDPE, EARTH)
     what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
     alpha = _along(_model(ctx, q, what), what)
     assert_close(alpha, expected["alpha"], f"the acceleration along the linkage's motion in {what}", ALONG,
@@ -371,7 +372,7 @@ def check_model_dynamics(ctx):
        group="balance")
 def check_model_at_rest(ctx):
     for point in (FIXED_POINT, _ground_point(ctx)):
-        q = as_array(ctx.student("problem_04.balanced", point), _call(point), (4,))
+        q = as_array(ctx.student(p04.balanced, point), _call(point), (4,))
         what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()}, fixed_point = ({point[0]:g}, 0, 0))"
         alpha = _along(_model(ctx, q, what, point), what)
         assert_close(alpha, 0.0, f"the acceleration along the linkage's motion in {what}", AT_REST,

@@ -8,6 +8,7 @@ fix and the question of energy are read and scored by hand.
 import numpy as np
 
 from grader.checking import STAGE_DEFINED, STAGE_STRUCTURE, Tol, assert_close, check, fail
+from probes import problem_05 as p05
 
 from ._mujoco import POSITION, model_of, reference_of
 
@@ -32,15 +33,15 @@ def _configuration(rng):
 
 @check(1, title="fixed_model() loads in MuJoCo", stage=STAGE_DEFINED, group="fixed")
 def check_fixed_loads(ctx):
-    model_of(ctx.student("problem_05.fixed", ctx.draw(_configuration)), "fixed_model()")
+    model_of(ctx.student(p05.fixed, ctx.draw(_configuration)), "fixed_model()")
 
 
 @check(2, title="fixed_model() keeps the broken model's joints and link, and adds only a small mass (at most a "
        "tenth of the link's) where one was missing", stage=STAGE_STRUCTURE, group="fixed")
 def check_fixed_minimal(ctx):
     qpos = ctx.draw(_configuration)
-    got = model_of(ctx.student("problem_05.fixed", qpos), "fixed_model()")
-    ref = reference_of(ctx.reference("problem_05.fixed", qpos), "fixed model")
+    got = model_of(ctx.student(p05.fixed, qpos), "fixed_model()")
+    ref = reference_of(ctx.reference(p05.fixed, qpos), "fixed model")
     kinds, expected_kinds = [j["type"] for j in got["joints"]], [j["type"] for j in ref["joints"]]
     if kinds != expected_kinds:
         fail(f"fixed_model() has the joints {kinds}; the broken model has {expected_kinds}.",

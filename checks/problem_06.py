@@ -24,6 +24,7 @@ from grader.checking import (
     fail,
     format_array,
 )
+from probes import problem_06 as p06
 
 TITLE = "Euler angles, Tait-Bryan/Cardan convention"
 
@@ -49,7 +50,7 @@ DEGREES_HINT = "The angles are in radians: did you treat them as degrees (np.deg
 
 def _elementary_mistakes(ctx, axis, angle, expected):
     def R(k, x):
-        return ctx.reference("problem_06.elementary", k, x)
+        return ctx.reference(p06.elementary, k, x)
 
     return [
         Mistake("transpose", np.asarray(expected).T, TRANSPOSE_HINT + " (A sign flip of the angle gives the same.)"),
@@ -64,7 +65,7 @@ def _elementary_mistakes(ctx, axis, angle, expected):
 
 def _cardan_mistakes(ctx, args, expected):
     def R(k, x):
-        return ctx.reference("problem_06.elementary", k, x)
+        return ctx.reference(p06.elementary, k, x)
 
     a, b, g = args
     angles = {3: g, 2: b, 1: a}  # the factors in the order of the product
@@ -93,9 +94,9 @@ def _cardan_mistakes(ctx, args, expected):
             "pitch about the NEW 2-axis, then roll about the NEWEST 1-axis: A_IC3 = R3(gamma) @ R2(beta) @ "
             "R1(alpha).",
         ),
-        Mistake("argument_order", ctx.reference("problem_06.cardan", g, b, a),
+        Mistake("argument_order", ctx.reference(p06.cardan, g, b, a),
                 "alpha and gamma are swapped: the signature is cardan(alpha, beta, gamma), alpha being the roll."),
-        Mistake("degrees", ctx.reference("problem_06.cardan", *(float(x) for x in np.deg2rad([a, b, g]))),
+        Mistake("degrees", ctx.reference(p06.cardan, *(float(x) for x in np.deg2rad([a, b, g]))),
                 DEGREES_HINT),
     ]
 
@@ -115,7 +116,7 @@ def assert_turns(A, name):
 @check(1, title="R1, R2, R3 return 3 x 3 numeric matrices", stage=STAGE_SHAPE, group="elementary")
 def check_elementary_shape(ctx):
     for axis in AXES:
-        assert_real(ctx.student("problem_06.elementary", axis, 0.3), f"R{axis}(0.3)", (3, 3))
+        assert_real(ctx.student(p06.elementary, axis, 0.3), f"R{axis}(0.3)", (3, 3))
 
 
 @check(1, title="R1, R2, R3 are proper rotations (orthonormal, det = +1)", stage=STAGE_STRUCTURE,
@@ -123,7 +124,7 @@ def check_elementary_shape(ctx):
 def check_elementary_rotation(ctx):
     for axis in AXES:
         for angle in (0.3, -2.0):
-            A = assert_rotation(ctx.student("problem_06.elementary", axis, angle), f"R{axis}({angle})")
+            A = assert_rotation(ctx.student(p06.elementary, axis, angle), f"R{axis}({angle})")
             assert_turns(A, f"R{axis}({angle})")
 
 
@@ -132,7 +133,7 @@ def check_elementary_rotation(ctx):
 def check_elementary_values(ctx):
     for axis in AXES:
         ctx.compare_random(
-            "problem_06.elementary",
+            p06.elementary,
             ANGLES.map(lambda angle, axis=axis: (axis, angle)),
             name=f"R{axis}",
             tol=EXACT,
@@ -195,8 +196,8 @@ def _carried_structure(got, own):
 @check(1, title="cardan(alpha, beta, gamma) is a proper rotation", stage=STAGE_STRUCTURE, group="cardan")
 def check_cardan_rotation(ctx):
     args = (0.4, -0.3, 1.1)
-    expected = ctx.reference("problem_06.cardan_with_factors", *args)
-    got = ctx.student("problem_06.cardan_with_factors", *args)
+    expected = ctx.reference(p06.cardan_with_factors, *args)
+    got = ctx.student(p06.cardan_with_factors, *args)
     name = "cardan(0.4, -0.3, 1.1)"
     A = as_array(got["cardan"], name, (3, 3))
     try:
@@ -236,7 +237,7 @@ def check_cardan_values(ctx):
                           "on them.")
 
     ctx.compare_random(
-        "problem_06.cardan_with_factors",
+        p06.cardan_with_factors,
         st.tuples(ANGLES, ANGLES, ANGLES),
         name=name,
         tol=EXACT,
@@ -273,16 +274,16 @@ def _own_frames(got, expected, args):
        stage=STAGE_VALUES, group="sheet")
 def check_frames(ctx):
     def R(k, x):
-        return ctx.reference("problem_06.elementary", k, x)
+        return ctx.reference(p06.elementary, k, x)
 
     g, b, a = (float(x) for x in np.deg2rad(SHEET_ANGLES_DEG))
-    reference = ctx.reference("problem_06.frames_with_factors", a, b, g)
+    reference = ctx.reference(p06.frames_with_factors, a, b, g)
     expected = reference["frames"]
     wrong_order = {"A_IC1": R(3, g), "A_IC2": R(2, b) @ R(3, g), "A_IC3": R(1, a) @ R(2, b) @ R(3, g)}
     degrees = {"A_IC1": R(3, SHEET_ANGLES_DEG[0])}
     degrees["A_IC2"] = degrees["A_IC1"] @ R(2, SHEET_ANGLES_DEG[1])
     degrees["A_IC3"] = degrees["A_IC2"] @ R(1, SHEET_ANGLES_DEG[2])
-    got = ctx.student("problem_06.frames")
+    got = ctx.student(p06.frames)
     add_frames(ctx, "Problem 6: the frames C1, C2, C3 in I", got, expected, KEYS)
     if not isinstance(got, dict):
         fail(f"frames() must return a dict with keys A_IC1, A_IC2, A_IC3, got {type(got).__name__}.")
@@ -293,7 +294,7 @@ def check_frames(ctx):
     if all(close(frames[key], expected[key], EXACT) for key in KEYS):
         return
     try:  # asked only now: frames() passes or fails on its own, whatever a crash of cardan would do
-        answer = ctx.student("problem_06.frames_with_factors", a, b, g)
+        answer = ctx.student(p06.frames_with_factors, a, b, g)
     except StudentFault:  # R1..R3 or cardan crashed the worker or ran out of time: nothing to carry forward
         answer = {}
     explained = [(upstream, what, findings)
@@ -345,11 +346,11 @@ def _vectors_of(A, v):
 @check(1, title="the coordinates of V in I, C1, C2, C3 (the sheet's values, at full precision)",
        stage=STAGE_VALUES, group="sheet")
 def check_vectors(ctx):
-    reference = ctx.reference("problem_06.vectors_with_frames")
+    reference = ctx.reference(p06.vectors_with_frames)
     expected = {key: np.asarray(reference["vectors"][key], dtype=float) for key in SHEET_VECTORS}
     frames = {key: np.asarray(reference["frames"][key], dtype=float) for key in KEYS}
     v = np.ones(3)
-    answer = ctx.student("problem_06.vectors_with_frames")
+    answer = ctx.student(p06.vectors_with_frames)
     got = answer["vectors"]
     add_vectors(ctx, "Problem 6: V from its coordinates in I, C1, C2, C3 (mapped to I)", got, frames,
                 SHEET_VECTORS["I_v"])

@@ -20,6 +20,7 @@ from grader.checking import (
     check,
     fail,
 )
+from probes import problem_06 as p06, problem_07 as p07
 
 TITLE = "Derivatives of transformations"
 
@@ -46,15 +47,15 @@ SIGN_HINT = ("Your result has the opposite sign: skew(w) has -w3 at [0, 1], +w2 
 
 @check(1, title="skew(w) is a 3 x 3 matrix and unskew returns a 3-vector", stage=STAGE_SHAPE, group="skew")
 def check_skew_shape(ctx):
-    assert_real(ctx.student("problem_07.skew", np.array([1.0, 2.0, 3.0])), "skew((1, 2, 3))", (3, 3))
+    assert_real(ctx.student(p07.skew, np.array([1.0, 2.0, 3.0])), "skew((1, 2, 3))", (3, 3))
     W = np.array([[0.0, -3.0, 2.0], [3.0, 0.0, -1.0], [-2.0, 1.0, 0.0]])
-    assert_real(ctx.student("problem_07.unskew", W), "unskew(skew((1, 2, 3)))", (3,))
+    assert_real(ctx.student(p07.unskew, W), "unskew(skew((1, 2, 3)))", (3,))
 
 
 @check(1, title="skew(w) @ x equals the cross product w × x on random vectors", stage=STAGE_RANDOM, group="skew")
 def check_skew_values(ctx):
     ctx.compare_random(
-        "problem_07.skew", VECTORS.map(lambda w: (w,)), name="skew(w)", tol=EXACT,
+        p07.skew, VECTORS.map(lambda w: (w,)), name="skew(w)", tol=EXACT,
         mistakes=lambda args, expected: [Mistake("sign_flip", -np.asarray(expected), SIGN_HINT)],
     )
 
@@ -62,7 +63,7 @@ def check_skew_values(ctx):
 @check(1, title="unskew inverts skew on random vectors", stage=STAGE_RANDOM, group="skew")
 def check_unskew_values(ctx):
     ctx.compare_random(
-        "problem_07.unskew", VECTORS.map(lambda w: (skew(w),)), name="unskew(W)", tol=EXACT,
+        p07.unskew, VECTORS.map(lambda w: (skew(w),)), name="unskew(W)", tol=EXACT,
         mistakes=lambda args, expected: [
             Mistake("sign_flip", -np.asarray(expected), "The vector of W is (W[2, 1], W[0, 2], W[1, 0]): "
                     "you read the entries on the other side of the diagonal."),
@@ -89,14 +90,14 @@ def _omega_mistakes(frame):
 @check(2, title="omega_body(A_IC, dA_IC) = unskew(A_CI @ dA_IC) on random motions", stage=STAGE_RANDOM,
        group="omega_body")
 def check_omega_body(ctx):
-    ctx.compare_random("problem_07.omega_body", MOTIONS, name="C_omega_IC", tol=EXACT,
+    ctx.compare_random(p07.omega_body, MOTIONS, name="C_omega_IC", tol=EXACT,
                        mistakes=_omega_mistakes("body"))
 
 
 @check(1, title="omega_inertial(A_IC, dA_IC) = unskew(dA_IC @ A_CI) on random motions", stage=STAGE_RANDOM,
        group="omega_inertial")
 def check_omega_inertial(ctx):
-    ctx.compare_random("problem_07.omega_inertial", MOTIONS, name="I_omega_IC", tol=EXACT,
+    ctx.compare_random(p07.omega_inertial, MOTIONS, name="I_omega_IC", tol=EXACT,
                        mistakes=_omega_mistakes("inertial"))
 
 
@@ -109,8 +110,8 @@ def _points(rng, n=4):
        stage=STAGE_VALUES, group="symbolic")
 def check_symbolic(ctx):
     points = ctx.draw(_points)
-    expected = ctx.reference("problem_07.expressions", points)
-    got = ctx.student("problem_07.symbolic", points, timeout=60)
+    expected = ctx.reference(p07.expressions, points)
+    got = ctx.student(p07.symbolic, points, timeout=60)
     missing = [k for k in KEYS if k not in got]
     if missing:
         fail(f"derive() lacks the entries {missing} (it returned {sorted(got)}).")
@@ -139,10 +140,10 @@ def check_symbolic(ctx):
        stage=STAGE_VALUES, group="animation")
 def check_animation(ctx):
     def cardan(angles):
-        return ctx.reference("problem_06.cardan", *(float(x) for x in angles))
+        return ctx.reference(p06.cardan, *(float(x) for x in angles))
 
-    expected = ctx.reference("problem_07.animate")
-    own = judged(ctx, "problem_07.animate")  # the reference's animation with the student's cardan (problem 6)
+    expected = ctx.reference(p07.animate)
+    own = judged(ctx, p07.animate)  # the reference's animation with the student's cardan (problem 6)
     start = np.deg2rad(START_DEG)
     mistakes = [
         Mistake("step_count", cardan(start + np.pi * (1 + 1 / 100)),
@@ -152,7 +153,7 @@ def check_animation(ctx):
         Mistake("degrees", cardan(np.deg2rad(np.asarray(START_DEG) + np.pi)),
                 "The angles and the step are in radians: add dt = pi / n to angles in radians."),
     ]
-    got = ctx.student("problem_07.animate")
+    got = ctx.student(p07.animate)
     if not isinstance(got, dict) or "A_IC3" not in got:
         fail("animate() must return a dict with the entries 'angles' and 'A_IC3'.")
     add_frames(ctx, "Problem 7: the frame C3 at the end of the animation", got, expected, ("A_IC3",), ["C3 at t = pi"])

@@ -22,6 +22,7 @@ from grader.checking import (
     fail,
     format_array,
 )
+from probes import problem_06 as p06, problem_08 as p08
 
 TITLE = "Integrating angular velocities"
 MANUAL = {"c": ("8(c): compare the error accumulation of (a) and (b); which suits rotations better, and how "
@@ -42,7 +43,7 @@ def _step_mistakes(ctx, which):
     def mistakes(args, expected):
         x, w, dt = (np.asarray(a, dtype=float) for a in args)
         if which == "cardan":
-            B = ctx.reference("problem_08.rate_matrix", *(float(angle) for angle in x))
+            B = ctx.reference(p08.rate_matrix, *(float(angle) for angle in x))
             body = x + dt * np.linalg.solve(B, w)
             return [Mistake("wrong_frame", body, "You used I_omega as if it were C_omega: the rates are "
                             "(A_IC @ B)^-1 @ I_omega, with A_IC from the current angles.")]
@@ -64,7 +65,7 @@ def _step_mistakes(ctx, which):
        stage=STAGE_RANDOM, group="rates")
 def check_rate_matrix(ctx):
     ctx.compare_random(
-        "problem_08.rate_matrix", st.tuples(ANGLES, PITCH, ANGLES), name="B", tol=EXACT,
+        p08.rate_matrix, st.tuples(ANGLES, PITCH, ANGLES), name="B", tol=EXACT,
         mistakes=lambda args, expected: [
             Mistake("transpose", np.asarray(expected).T, "B is transposed: its columns are the axes of the three "
                     "rotations (e1 of C, the rotated 2-axis, the 3-axis of I), in C-coordinates.")],
@@ -74,17 +75,17 @@ def check_rate_matrix(ctx):
 @check(2, title="euler_matrix_step is one explicit Euler step of dA_IC/dt = skew(I_omega) @ A_IC",
        stage=STAGE_RANDOM, group="euler")
 def check_euler_step(ctx):
-    ctx.compare_random("problem_08.step", st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("euler", *t)),
+    ctx.compare_random(p08.step, st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("euler", *t)),
                        name="A_IC after one Euler step", tol=EXACT,
-                       compare=judged_comparison(ctx, "problem_08.step", "A_IC after one Euler step", EXACT,
+                       compare=judged_comparison(ctx, p08.step, "A_IC after one Euler step", EXACT,
                                                  lambda args, e: _step_mistakes(ctx, "euler")(args[1:], e)))
 
 
 @check(1, title="exponential_step keeps A_IC orthonormal (even for a large step)", stage=STAGE_STRUCTURE,
        group="exp")
 def check_exponential_orthonormal(ctx):
-    A0, w, dt = ctx.reference("problem_06.elementary", 3, np.pi / 2), np.sqrt(1 / 3) * np.ones(3), 0.5
-    got = as_array(ctx.student("problem_08.step", "exp", A0, w, dt), "exponential_step(R3(90°), w, 0.5)", (3, 3))
+    A0, w, dt = ctx.reference(p06.elementary, 3, np.pi / 2), np.sqrt(1 / 3) * np.ones(3), 0.5
+    got = as_array(ctx.student(p08.step, "exp", A0, w, dt), "exponential_step(R3(90°), w, 0.5)", (3, 3))
     if np.allclose(got, A0 + dt * skew(w) @ A0, atol=1e-9):
         fail(f"exponential_step(R3(90°), w, 0.5) is not orthonormal: it is the Euler step.\n"
              f"got:\n{format_array(got)}", EULER_HINT, "euler_not_exponential")
@@ -104,9 +105,9 @@ def assert_moves(got, start, name):
 @check(2, title="exponential_step equals expm(dt * skew(I_omega)) @ A_IC on random inputs", stage=STAGE_RANDOM,
        group="exp")
 def check_exponential_step(ctx):
-    ctx.compare_random("problem_08.step", st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("exp", *t)),
+    ctx.compare_random(p08.step, st.tuples(ROTATIONS, VECTORS, STEPS).map(lambda t: ("exp", *t)),
                        name="A_IC after one exponential step", tol=EXACT,
-                       compare=judged_comparison(ctx, "problem_08.step", "A_IC after one exponential step", EXACT,
+                       compare=judged_comparison(ctx, p08.step, "A_IC after one exponential step", EXACT,
                                                  lambda args, e: _step_mistakes(ctx, "exp")(args[1:], e)))
 
 
@@ -126,9 +127,9 @@ def same_turn(angles, target):
        stage=STAGE_RANDOM, group="cardan")
 def check_cardan_step(ctx):
     angles = st.tuples(ANGLES, PITCH, ANGLES).map(np.array)
-    ctx.compare_random("problem_08.step", st.tuples(angles, VECTORS, STEPS).map(lambda t: ("cardan", *t)),
+    ctx.compare_random(p08.step, st.tuples(angles, VECTORS, STEPS).map(lambda t: ("cardan", *t)),
                        name="angles after one step", tol=EXACT,
-                       compare=judged_comparison(ctx, "problem_08.step", "angles after one step", EXACT,
+                       compare=judged_comparison(ctx, p08.step, "angles after one step", EXACT,
                                                  lambda args, e: _step_mistakes(ctx, "cardan")(args[1:], e),
                                                  normalize=same_turn))
 
@@ -136,35 +137,35 @@ def check_cardan_step(ctx):
 @check(1, title="(a) after 100 Euler steps the matrix has grown (not orthonormal) exactly as Euler predicts",
        stage=STAGE_VALUES, group="runs")
 def check_part_a(ctx):
-    expected = ctx.reference("problem_08.part", "a")
-    own = judged(ctx, "problem_08.part", "a")  # the reference's run with the student's R3 and skew (problems 6, 7)
-    got = ctx.student("problem_08.part", "a")
+    expected = ctx.reference(p08.part, "a")
+    own = judged(ctx, p08.part, "a")  # the reference's run with the student's R3 and skew (problems 6, 7)
+    got = ctx.student(p08.part, "a")
     assert_close_judged(ctx, got, expected, own, "A_IC after (a)", RUN)
 
 
 @check(1, title="(b) after 100 Euler steps of the Cardan angles", stage=STAGE_VALUES, group="runs")
 def check_part_b(ctx):
-    expected = ctx.reference("problem_08.part", "b")
-    own = judged(ctx, "problem_08.part", "b")  # the reference's run with the student's cardan (problem 6)
-    got = ctx.student("problem_08.part", "b")
+    expected = ctx.reference(p08.part, "b")
+    own = judged(ctx, p08.part, "b")  # the reference's run with the student's cardan (problem 6)
+    got = ctx.student(p08.part, "b")
     assert_close_judged(ctx, got["A_IC"], expected["A_IC"], own, "A_IC after (b)", RUN, pick=lambda v: v["A_IC"])
 
 
 @check(2, title="(c) the exponential returns exactly to A_IC(t0) = R3(90°) after 2 pi", stage=STAGE_VALUES,
        group="runs")
 def check_part_c(ctx):
-    start = ctx.reference("problem_06.elementary", 3, np.pi / 2)
-    euler = ctx.reference("problem_08.part", "a")
-    own = judged(ctx, "problem_08.part", "c")  # the reference's run with the student's R3, skew and unskew
-    paths = ctx.reference("problem_08.paths")
+    start = ctx.reference(p06.elementary, 3, np.pi / 2)
+    euler = ctx.reference(p08.part, "a")
+    own = judged(ctx, p08.part, "c")  # the reference's run with the student's R3, skew and unskew
+    paths = ctx.reference(p08.paths)
     add_integrator_paths(ctx, "Problem 8: the body's axes along the three runs",
-                         student_or_none(ctx, "problem_08.paths"), paths)
+                         student_or_none(ctx, p08.paths), paths)
     w, dt = np.sqrt(1 / 3) * np.ones(3), 2 * np.pi / 100
     # a step that does not move would also "return" to the start: (c) counts only for a step that turns
-    one = as_array(ctx.student("problem_08.step", "exp", start, w, dt), "exponential_step(R3(90°), w, 2 pi / 100)",
+    one = as_array(ctx.student(p08.step, "exp", start, w, dt), "exponential_step(R3(90°), w, 2 pi / 100)",
                    (3, 3))
     assert_moves(one, start, "exponential_step(R3(90°), w, 2 pi / 100)")
-    got = as_array(ctx.student("problem_08.part", "c"), "A_IC after (c)", (3, 3))
+    got = as_array(ctx.student(p08.part, "c"), "A_IC after (c)", (3, 3))
     assert_close_judged(ctx, got, start, own, "A_IC after (c)", Tol("exact rotation", 1e-9), [
         Mistake("lost_orthonormality", euler, EULER_HINT),
     ])

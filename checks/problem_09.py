@@ -7,6 +7,7 @@ from checks._real import require_real, rotation_flaw
 from checks._rigid import ROTATIONS
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, as_array, assert_close, check, close, fail
+from probes import problem_06 as p06, problem_09 as p09
 
 TITLE = "A better coordinate-system class (relative transformations)"
 
@@ -67,7 +68,7 @@ def _compare_chain(got, expected, args):
 @check(3, title="frames built relative to each other report the right A_IC and A_BC for every pair",
        stage=STAGE_RANDOM, group="chain")
 def check_chain(ctx):
-    ctx.compare_random("problem_09.chain", CHAINS, name="transformations", tol=EXACT, compare=_compare_chain,
+    ctx.compare_random(p09.chain, CHAINS, name="transformations", tol=EXACT, compare=_compare_chain,
                        examples=15, describe=lambda args: f"a chain of {len(args[0])} random relative rotations")
 
 
@@ -84,7 +85,7 @@ def check_set_transform(ctx):
         ])
         assert_close(got["A_BC"], expected["A_BC"], "get_transform(B) after set_transform(A_BC, B)", EXACT)
 
-    ctx.compare_random("problem_09.set_later", st.tuples(ROTATIONS, ROTATIONS),
+    ctx.compare_random(p09.set_later, st.tuples(ROTATIONS, ROTATIONS),
                        name="set_transform", tol=EXACT, compare=compare, examples=10)
 
 
@@ -100,11 +101,11 @@ TYPED_HINT = (
 @check(1, title="the relative chain I → C1 → C2 → C3 reproduces problem 6's vectors (at full precision)",
        stage=STAGE_VALUES, group="sheet")
 def check_vectors(ctx):
-    reference = ctx.reference("problem_09.vectors_with_chain")
-    answer = ctx.student("problem_09.vectors_with_chain")
+    reference = ctx.reference(p09.vectors_with_chain)
+    answer = ctx.student(p09.vectors_with_chain)
     got = answer["vectors"]
     add_vectors(ctx, "Problem 9: V from its coordinates in I, C1, C2, C3 (mapped to I by problem 6's frames)", got,
-                ctx.reference("problem_06.frames"), SHEET_VECTORS["I_v"])
+                ctx.reference(p06.frames), SHEET_VECTORS["I_v"])
     if not isinstance(got, dict):
         fail(f"vectors() must return a dict with keys {sorted(SHEET_VECTORS)}.")
     for key in SHEET_VECTORS:

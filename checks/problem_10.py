@@ -8,6 +8,7 @@ import numpy as np
 
 from checks._answers import choice as _choice
 from grader.checking import STAGE_VALUES, as_array, check, fail, format_array
+from probes import problem_10 as p10
 
 TITLE = "Understanding rotation matrices"
 MANUAL = {"why": ("10(a)/(b): why is your choice (not) orthonormal / a rotation?", 1)}
@@ -20,7 +21,7 @@ C_ANGLE_DEG = 25.0
 
 @check(1, title="(a) the matrix that is NOT orthonormal", stage=STAGE_VALUES, secret=True)
 def check_a(ctx):
-    key = ctx.reference("problem_10.key_a")
+    key = ctx.reference(p10.key_a)
     choice = _choice(ctx, "a", range(1, 5), "(a)")
     if choice != key["key"]:
         fail(f"option {choice} is orthonormal: max |A.T A - E| = {key['defects'][choice - 1]:.3f} "
@@ -30,7 +31,7 @@ def check_a(ctx):
 
 @check(1, title="(b) the matrix that IS a rotation", stage=STAGE_VALUES, secret=True)
 def check_b(ctx):
-    key = ctx.reference("problem_10.key_b")
+    key = ctx.reference(p10.key_b)
     choice = _choice(ctx, "b", range(1, 5), "(b)")
     if choice != key["key"]:
         orthonormal = key["orthonormal"][choice - 1]
@@ -52,7 +53,7 @@ def nearest_rotation(A):
 @check(2, title="(c) A_IC read off the figure is a proper rotation close to the course's orientation",
        stage=STAGE_VALUES)
 def check_c(ctx):
-    target = nearest_rotation(ctx.reference("problem_10.course_c"))
+    target = nearest_rotation(ctx.reference(p10.course_c))
     A = as_array(ctx.answer("c"), "[problem_10] c", (3, 3))
     defect = float(np.max(np.abs(A.T @ A - np.eye(3))))
     if defect > READ_OFF:

@@ -5,6 +5,7 @@ import numpy as np
 from checks._rigid import ROTATIONS, compact, vectors
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, assert_close, check, fail
+from probes import problem_11 as p11
 
 TITLE = "Bound Vectors and Coordinate Systems"
 
@@ -30,7 +31,7 @@ def _assert_entries(got, expected, keys, mistakes, what):
 @check(2, title="the test file's vector (C = R3(30°) at (1, 2, 0), C_v = (0, -2, 0) from C_r_CO = (1, 0, 0)) in I "
        "and in C", stage=STAGE_VALUES, group="test_values")
 def check_test_values(ctx):
-    test = ctx.reference("problem_11.test_objects")
+    test = ctx.reference(p11.test_objects)
     A_IC, I_r_IC, C_v, C_r_CO = (test[k] for k in ("A_IC", "I_r_IC", "C_v", "C_r_CO"))
     mistakes = {
         "I_v": [Mistake("transpose", A_IC.T @ C_v, TRANSPOSE_HINT)],
@@ -40,8 +41,8 @@ def check_test_values(ctx):
                              "X_v = A_IX.T @ I_v.")],
     }
     args = (A_IC, I_r_IC, C_v, C_r_CO)
-    expected = ctx.reference("problem_11.vector", *args)
-    _assert_entries(ctx.student("problem_11.vector", *args), expected, KEYS_SOLVE, mistakes,
+    expected = ctx.reference(p11.vector, *args)
+    _assert_entries(ctx.student(p11.vector, *args), expected, KEYS_SOLVE, mistakes,
                     "(the test file's values)")
 
 
@@ -71,9 +72,9 @@ def check_moves_with_cosys(ctx):
         _assert_entries(got, expected, ("A_IC", "I_r_IC", "I_v", "I_r_IO"), _moved_mistakes(args),
                         "after C.set_transform(A_new) and C.set_offset(I_r_new)")
 
-    ctx.student("problem_11.moved", *EXAMPLE_MOVE)
+    ctx.student(p11.moved, *EXAMPLE_MOVE)
     ctx.compare_random(
-        "problem_11.moved", MOVES, name="the moved vector", tol=EXACT, compare=compare, examples=10,
+        p11.moved, MOVES, name="the moved vector", tol=EXACT, compare=compare, examples=10,
         describe=lambda a: "A_IC = {}, I_r_IC = {}, C_v = {}, C_r_CO = {}, A_new = {}, I_r_new = {}".format(
             *map(compact, a)),
     )
@@ -102,9 +103,9 @@ def check_set_in_other_frame(ctx):
         _assert_entries(got, expected, ("C_v", "C_r_CO", "I_v", "I_r_IO"), _set_mistakes(args),
                         "after v.set_vector(X_v, X) and v.set_offset(X_r, X)")
 
-    ctx.student("problem_11.set_in", EXAMPLE_MOVE[0], EXAMPLE_MOVE[1], *EXAMPLE_MOVE[4:], EXAMPLE_MOVE[2])
+    ctx.student(p11.set_in, EXAMPLE_MOVE[0], EXAMPLE_MOVE[1], *EXAMPLE_MOVE[4:], EXAMPLE_MOVE[2])
     ctx.compare_random(
-        "problem_11.set_in", SETS, name="the vector set in X", tol=EXACT, compare=compare, examples=10,
+        p11.set_in, SETS, name="the vector set in X", tol=EXACT, compare=compare, examples=10,
         describe=lambda a: "A_IC = {}, I_r_IC = {}, A_IX = {}, X_v = {}, X_r = {}".format(*map(compact, a)),
     )
 
@@ -122,8 +123,8 @@ def check_get_coords(ctx):
                                     "components in C itself, i.e. C_v.")]}
         _assert_entries(got, expected, ("X_v", "C_v"), mistakes, "(v.get_coords(X) and v.get_coords())")
 
-    ctx.student("problem_11.coords", EXAMPLE_MOVE[0], EXAMPLE_MOVE[2], EXAMPLE_MOVE[4])
+    ctx.student(p11.coords, EXAMPLE_MOVE[0], EXAMPLE_MOVE[2], EXAMPLE_MOVE[4])
     ctx.compare_random(
-        "problem_11.coords", COORDS, name="get_coords", tol=EXACT, compare=compare, examples=10,
+        p11.coords, COORDS, name="get_coords", tol=EXACT, compare=compare, examples=10,
         describe=lambda a: "A_IC = {}, C_v = {}, A_IX = {}".format(*map(compact, a)),
     )

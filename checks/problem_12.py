@@ -26,6 +26,7 @@ from grader.checking import (
     figure,
     format_array,
 )
+from probes import problem_12 as p12
 
 from ._real import assert_real
 from ._rigid import (
@@ -73,8 +74,8 @@ def _own_start(ctx):
 def check_integration_shape(ctx):
     shapes = {"A_IB": (2, 3, 3), "B_r_IB": (2, 3), "B_v_B": (2, 3), "B_omega_B": (2, 3)}
     for start, what in ((initial(ctx, 2), ""), (_own_start(ctx), " from a start of its own")):
-        expected = ctx.reference("problem_12.integrate", start, DT, 1)
-        got = ctx.student("problem_12.integrate", start, DT, 1)
+        expected = ctx.reference(p12.integrate, start, DT, 1)
+        got = ctx.student(p12.integrate, start, DT, 1)
         for key, shape in shapes.items():
             assert_real(trace_array(got, key, shape)[1], f"{key} after one step{what}", shape[1:],
                         np.asarray(expected[key], dtype=float)[1])
@@ -90,7 +91,7 @@ GENERIC = {
 @check(1, title="A_IB stays a proper rotation over 100 steps of 0.01 s (a tumbling body)", stage=STAGE_STRUCTURE,
        group="integration")
 def check_integration_rotation(ctx):
-    got = ctx.student("problem_12.integrate", GENERIC, DT, STEPS, STEPS)
+    got = ctx.student(p12.integrate, GENERIC, DT, STEPS, STEPS)
     A = as_array(trace_array(got, "A_IB", (2, 3, 3))[-1], "A_IB after 100 steps", (3, 3))
     try:
         assert_rotation(A, "A_IB after 100 steps")
@@ -110,7 +111,7 @@ def check_integration_rotation(ctx):
 def check_sheet_cases(ctx):
     for case, (A_target, r_target) in SHEET_TARGETS.items():
         start = initial(ctx, case)
-        got = ctx.student("problem_12.integrate", start, DT, STEPS, STEPS)
+        got = ctx.student(p12.integrate, start, DT, STEPS, STEPS)
         for key, target in (("A_IB", A_target), ("B_r_IB", r_target)):
             final = trace_array(got, key, (2, *np.shape(target)))[-1]
             if close(final, target, SHEET):
@@ -135,7 +136,7 @@ def check_random_steps(ctx):
         assert_traces(got, expected, STATE, EXACT, kinematic_mistakes_at(expected, state, dt), dt=dt)
 
     ctx.compare_random(
-        "problem_12.integrate", st.tuples(STATES, STEP_SIZES, STEP_COUNTS), name="the state", tol=EXACT,
+        p12.integrate, st.tuples(STATES, STEP_SIZES, STEP_COUNTS), name="the state", tol=EXACT,
         compare=compare, examples=15,
         describe=lambda args: f"{describe_state(args[0])}, dt = {args[1]!r}, {args[2]} step(s)",
     )
@@ -179,13 +180,13 @@ POINT_OFFSET = np.array([0.3, -0.7, 0.5])
 
 def _point_check(ctx, method):
     args = (POINT_STATE, method, POINT_OFFSET)
-    expected = ctx.reference("problem_12.point", *args)
-    assert_close(ctx.student("problem_12.point", *args), expected, f"{method}(B_r_BQ)", EXACT,
+    expected = ctx.reference(p12.point, *args)
+    assert_close(ctx.student(p12.point, *args), expected, f"{method}(B_r_BQ)", EXACT,
                  _point_mistakes(method, POINT_STATE, POINT_OFFSET),
                  context=f"on a fixed turned and moving body (A_IB = {compact(POINT_STATE['A_IB'])}, "
                          f"B_r_BQ = {compact(POINT_OFFSET)})")
     ctx.compare_random(
-        "problem_12.point", st.tuples(STATES, st.just(method), POINTS), name=f"{method}(B_r_BQ)", tol=EXACT,
+        p12.point, st.tuples(STATES, st.just(method), POINTS), name=f"{method}(B_r_BQ)", tol=EXACT,
         mistakes=lambda args, expected: _point_mistakes(method, args[0], args[2]), examples=15,
         describe=lambda args: f"{describe_state(args[0])}, B_r_BQ = {compact(args[2])}",
     )
@@ -213,10 +214,10 @@ def check_acceleration_of_point(ctx):
        "of a point of its own)",
        stage=STAGE_VALUES, group="wheel")
 def check_wheel(ctx):
-    sheet = ctx.reference("problem_12.constants")
+    sheet = ctx.reference(p12.constants)
     args = (sheet_state(sheet["PART_B"]), WHEEL_DT, WHEEL_STEPS, sheet["B_R_BQ"], WHEEL_EVERY)
-    expected = ctx.reference("problem_12.wheel", *args, persist=True)
-    got = ctx.student("problem_12.wheel", *args, timeout=20)
+    expected = ctx.reference(p12.wheel, *args, persist=True)
+    got = ctx.student(p12.wheel, *args, timeout=20)
     keys = ("I_r_IB", "I_r_IQ")
     traces = {key: trace_array(got, key, expected[key].shape) for key in keys}
     ctx.add_figure(figure(
@@ -230,8 +231,8 @@ def check_wheel(ctx):
         # the same wheel with a point Q of its own over its first 0.3 s, drawn anew (no key holds it)
         point = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-0.5, 0.5, 3)])
         args = (sheet_state(sheet["PART_B"]), WHEEL_DT, WHEEL_STEPS // 10, point, WHEEL_EVERY)
-        expected = ctx.reference("problem_12.wheel", *args)
-        got = ctx.student("problem_12.wheel", *args, timeout=20)
+        expected = ctx.reference(p12.wheel, *args)
+        got = ctx.student(p12.wheel, *args, timeout=20)
         assert_traces({key: trace_array(got, key, expected[key].shape) for key in keys}, expected, keys,
                       SIMULATION, what=f"for the point B_r_BQ = {np.round(point, 4).tolist()}", dt=WHEEL_DT)
     except CheckFailure as exc:

@@ -9,6 +9,7 @@ import numpy as np
 from checks._rigid import STATES, describe_state
 from grader import strategies as st
 from grader.checking import STAGE_RANDOM, Mistake, Tol, as_array, assert_close, check
+from probes import problem_13 as p13
 
 TITLE = "Twists and Screw Axis"
 MANUAL = {
@@ -52,9 +53,9 @@ def assert_screw(screw, w, v, where=""):
 def check_screw_axis(ctx):
     from checks.problem_12 import GENERIC
 
-    ctx.student("problem_13.screw", GENERIC)
+    ctx.student(p13.screw, GENERIC)
     ctx.compare_random(
-        "problem_13.screw", st.tuples(ROTATING), name="screw_axis()", tol=SCREW, examples=15,
+        p13.screw, st.tuples(ROTATING), name="screw_axis()", tol=SCREW, examples=15,
         compare=lambda got, expected, args: assert_screw(got, args[0]["B_omega_B"], args[0]["B_v_B"]),
         describe=lambda args: describe_state(args[0]),
     )

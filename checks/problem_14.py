@@ -12,6 +12,7 @@ from checks._rigid import SIMULATION, STATE, assert_traces, compact, sheet_state
 from checks.problem_13 import assert_screw
 from checks.problem_12 import GENERIC
 from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, assert_close, check, close, fail
+from probes import problem_12 as p12, problem_13 as p13, problem_14 as p14
 
 TITLE = "Visualizing Twists"
 
@@ -19,7 +20,7 @@ DT, STEPS = 0.01, 100  # t_end = 1 s with the course's loop
 
 
 def _start(ctx):
-    return sheet_state(ctx.reference("problem_14.constants")["INITIAL"])
+    return sheet_state(ctx.reference(p14.constants)["INITIAL"])
 
 
 def _own_start(ctx):
@@ -32,7 +33,7 @@ def _own_start(ctx):
 @check(1, title="screw_axis() without rotation (omega = 0) returns zero vectors, as its docstring says",
        stage=STAGE_STRUCTURE, group="at_rest")
 def check_screw_at_rest(ctx):
-    moving = ctx.student("problem_13.screw", GENERIC)
+    moving = ctx.student(p13.screw, GENERIC)
     if close(moving, np.zeros((2, 3)), EXACT):
         fail(f"screw_axis() returns zero vectors for a rotating body too (B_omega_B = {compact(GENERIC['B_omega_B'])}): "
              "the zero answer is meant for omega = 0 only.",
@@ -40,7 +41,7 @@ def check_screw_at_rest(ctx):
              "omega @ omega == 0.", "always_zero")
     state = {**_start(ctx), "B_v_B": np.array([1.0, -2.0, 0.5]), "B_omega_B": np.zeros(3)}
     try:
-        assert_close(ctx.student("problem_13.screw", state), np.zeros((2, 3)), "screw_axis() with omega = 0",
+        assert_close(ctx.student(p13.screw, state), np.zeros((2, 3)), "screw_axis() with omega = 0",
                      EXACT)
     except CheckFailure as exc:
         fail(exc.message, "Without rotation there is no screw axis: test omega @ omega == 0 before dividing by it "
@@ -51,8 +52,8 @@ def check_screw_at_rest(ctx):
        stage=STAGE_VALUES, group="run")
 def check_run_state(ctx):
     for start, what in ((_start(ctx), ""), (_own_start(ctx), "from a start of its own")):
-        expected = ctx.reference("problem_12.integrate", start, DT, STEPS)
-        got = ctx.student("problem_12.integrate", start, DT, STEPS)
+        expected = ctx.reference(p12.integrate, start, DT, STEPS)
+        got = ctx.student(p12.integrate, start, DT, STEPS)
         try:
             assert_traces(got, expected, STATE, SIMULATION, what=what, dt=DT)
         except CheckFailure as exc:
@@ -63,13 +64,13 @@ def check_run_state(ctx):
 @check(3, title="the sheet's run: at every step T lies on the screw axis and moves parallel to omega",
        stage=STAGE_VALUES, group="run")
 def check_run_screw(ctx):
-    expected = ctx.reference("problem_14.screw_run", _start(ctx), DT, STEPS)
-    got = ctx.student("problem_14.screw_run", _start(ctx), DT, STEPS)
+    expected = ctx.reference(p14.screw_run, _start(ctx), DT, STEPS)
+    got = ctx.student(p14.screw_run, _start(ctx), DT, STEPS)
     add_screw_run(ctx, "Problem 14: the body's path and its screw axis at t = 0, 0.25, 0.5, 0.75, 1 s", got,
                   expected)
     start = _own_start(ctx)
-    own = ctx.student("problem_14.screw_run", start, DT, STEPS)  # a run of its own: no key holds it
-    own_expected = ctx.reference("problem_14.screw_run", start, DT, STEPS)
+    own = ctx.student(p14.screw_run, start, DT, STEPS)  # a run of its own: no key holds it
+    own_expected = ctx.reference(p14.screw_run, start, DT, STEPS)
     n = STEPS + 1
     for run, ours, what in ((got, expected, ""), (own, own_expected, " of the run from a start of its own")):
         screws = trace_array(run, "screw", (n, 2, 3))

@@ -39,6 +39,7 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import problem_15 as p15
 
 TITLE = "Rigid Body Dynamics"
 MANUAL = {"a": ("15(a): Qualitatively, describe the difference of what you observe for the cases (4), (5) and (6).", 2)}
@@ -113,7 +114,7 @@ STEP_MISTAKES = {**DYNAMIC_MISTAKES, **KINEMATIC_MISTAKES}
 
 def case_state(ctx, k):
     """The sheet's case ``k``: the body (mass, inertia) with its initial velocities (the package's constants)."""
-    sheet = ctx.reference("problem_15.constants")
+    sheet = ctx.reference(p15.constants)
     v, w = (np.array(x, dtype=float) for x in sheet["CASES"][str(k)])
     return {"m": sheet["MASS"], "B_I_B": sheet["INERTIA"], "B_v_B": v, "B_omega_B": w}
 
@@ -155,7 +156,7 @@ STATES = st.fixed_dictionaries({
 @check(3, title="compute_natural_dynamics: B_a_B = 0 and B_I_B omegaDot = -omega x (B_I_B omega) on random states",
        stage=STAGE_RANDOM, group="natural_dynamics")
 def check_natural_dynamics(ctx):
-    ctx.student("problem_15.accelerations", case_state(ctx, 3))
+    ctx.student(p15.accelerations, case_state(ctx, 3))
 
     def compare(got, expected, args):
         _compare_accelerations(got, expected, args[0])
@@ -164,13 +165,13 @@ def check_natural_dynamics(ctx):
     # catalogue has its own value: on a shrunk random input several coincide
     state = GENERIC_STATE
     try:
-        compare(ctx.student("problem_15.accelerations", state), ctx.reference("problem_15.accelerations", state),
+        compare(ctx.student(p15.accelerations, state), ctx.reference(p15.accelerations, state),
                 (state,))
     except CheckFailure as exc:
         first, _, rest = exc.message.partition("\n")
         raise CheckFailure(f"{first}\non the fixed state {describe_state(state)}\n{rest}", exc.hint,
                            exc.diagnosis, exc.candidates, exc.evidence) from None
-    ctx.compare_random("problem_15.accelerations", st.tuples(STATES), name="the accelerations", tol=EXACT,
+    ctx.compare_random(p15.accelerations, st.tuples(STATES), name="the accelerations", tol=EXACT,
                        compare=compare, examples=15, describe=lambda args: describe_state(args[0]))
 
 
@@ -191,8 +192,8 @@ def check_angular_momentum(ctx):
         return [Mistake("wrong_frame", state["A_IB"] @ expected, "B_L_B is the angular momentum in BODY "
                         "coordinates: B_I_B @ B_omega_B, without A_IB (the check maps it to I itself).")]
 
-    ctx.student("problem_15.angular_momentum", case_state(ctx, 3))
-    ctx.compare_random("problem_15.angular_momentum", st.tuples(STATES), name="angular_momentum()", tol=EXACT,
+    ctx.student(p15.angular_momentum, case_state(ctx, 3))
+    ctx.compare_random(p15.angular_momentum, st.tuples(STATES), name="angular_momentum()", tol=EXACT,
                        mistakes=mistakes, examples=10, describe=lambda args: describe_state(args[0]))
 
 
@@ -226,8 +227,8 @@ def _diagnose_run(exc, got, expected, state, limit=1000):
        "over its first second from a spin drawn anew", stage=STAGE_VALUES, group="simulation")
 def check_case_6(ctx):
     state, every = full_state(case_state(ctx, 6)), 100
-    expected = ctx.reference("problem_15.simulate", state, DT, LONG, every, persist=True)
-    got = ctx.student("problem_15.simulate", state, DT, LONG, every, timeout=30)
+    expected = ctx.reference(p15.simulate, state, DT, LONG, every, persist=True)
+    got = ctx.student(p15.simulate, state, DT, LONG, every, timeout=30)
     n = len(expected["step"])
     final = {key: trace_array(got, key, (n, *np.shape(state[key])))[-1] for key in ("A_IB", "B_r_IB")}
     try:
@@ -238,8 +239,8 @@ def check_case_6(ctx):
     # the printed numbers alone are not enough: the same body from a spin of its own (no key holds it)
     spin = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
     spun = full_state({**case_state(ctx, 6), "B_omega_B": np.array(spin)})
-    expected = ctx.reference("problem_15.simulate", spun, DT, SHORT, 10)
-    got = ctx.student("problem_15.simulate", spun, DT, SHORT, 10, timeout=20)
+    expected = ctx.reference(p15.simulate, spun, DT, SHORT, 10)
+    got = ctx.student(p15.simulate, spun, DT, SHORT, 10, timeout=20)
     try:
         assert_traces(got, expected, STATE, SIMULATION, what=f"from B_omega_B = {np.round(spin, 4).tolist()}", dt=DT)
     except CheckFailure as exc:
@@ -253,13 +254,13 @@ def check_other_cases(ctx):
     spin = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])  # no key holds its run
     for k in (1, 2, 4, 5, "own"):
         state = full_state(case_state(ctx, k) if k != "own" else {**case_state(ctx, 1), "B_omega_B": np.array(spin)})
-        expected = ctx.reference("problem_15.simulate", state, DT, SHORT, SHORT, persist=True)
+        expected = ctx.reference(p15.simulate, state, DT, SHORT, SHORT, persist=True)
         # the trace every 10 steps, to localize a departure (fetched whether or not it is needed)
-        traced = ctx.reference("problem_15.simulate", state, DT, SHORT, 10, persist=True)
-        got = ctx.student("problem_15.simulate", state, DT, SHORT, SHORT, timeout=20)
+        traced = ctx.reference(p15.simulate, state, DT, SHORT, 10, persist=True)
+        got = ctx.student(p15.simulate, state, DT, SHORT, SHORT, timeout=20)
         if first_departure(got, expected, STATE, SIMULATION) is None:
             continue
-        got, expected = ctx.student("problem_15.simulate", state, DT, SHORT, 10), traced
+        got, expected = ctx.student(p15.simulate, state, DT, SHORT, 10), traced
         try:
             what = f"in case {k}" if k != "own" else f"from B_omega_B = {np.round(spin, 4).tolist()}"
             assert_traces(got, expected, STATE, SIMULATION, what=what, dt=DT)
@@ -272,8 +273,8 @@ def check_other_cases(ctx):
 def check_momentum_case_3(ctx):
     state = full_state(case_state(ctx, 3))
     args = (state, DT, MOMENTUM_STEPS, MOMENTUM_EVERY, True)
-    expected = ctx.reference("problem_15.simulate", *args, persist=True)
-    got = ctx.student("problem_15.simulate", *args, timeout=30)
+    expected = ctx.reference(p15.simulate, *args, persist=True)
+    got = ctx.student(p15.simulate, *args, timeout=30)
     n = len(expected["step"])
     A, L = trace_array(got, "A_IB", (n, 3, 3)), trace_array(got, "B_L_B", (n, 3))
     I_L = np.einsum("nij,nj->ni", A, L)
@@ -298,8 +299,8 @@ def check_momentum_case_3(ctx):
     # and a spin of its own over 0.5 s (drawn anew at each grading: no key holds it)
     spin = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
     spun = full_state({**case_state(ctx, 3), "B_omega_B": np.array(spin)})
-    own = ctx.reference("problem_15.simulate", spun, DT, MOMENTUM_STEPS // 10, MOMENTUM_EVERY, True)
-    mine = ctx.student("problem_15.simulate", spun, DT, MOMENTUM_STEPS // 10, MOMENTUM_EVERY, True, timeout=30)
+    own = ctx.reference(p15.simulate, spun, DT, MOMENTUM_STEPS // 10, MOMENTUM_EVERY, True)
+    mine = ctx.student(p15.simulate, spun, DT, MOMENTUM_STEPS // 10, MOMENTUM_EVERY, True, timeout=30)
     try:
         assert_traces(mine, own, ("B_omega_B", "B_L_B"), SIMULATION,
                       what=f"from B_omega_B = {np.round(spin, 4).tolist()}", dt=DT)
@@ -318,13 +319,13 @@ def check_random_runs(ctx):
     # first a run from a state without special structure, where each mistake has its own value
     args = (GENERIC_STATE, 0.01, 5)
     try:
-        compare(ctx.student("problem_15.simulate", *args), ctx.reference("problem_15.simulate", *args), args)
+        compare(ctx.student(p15.simulate, *args), ctx.reference(p15.simulate, *args), args)
     except CheckFailure as exc:
         first, _, rest = exc.message.partition("\n")
         raise CheckFailure(f"{first}\nfrom the fixed state {describe_state(GENERIC_STATE)}, dt = 0.01, 5 steps\n"
                            f"{rest}", exc.hint, exc.diagnosis, exc.candidates, exc.evidence) from None
     ctx.compare_random(
-        "problem_15.simulate", st.tuples(STATES, st.floats(1e-3, 0.05, **FINITE), st.integers(1, 20)),
+        p15.simulate, st.tuples(STATES, st.floats(1e-3, 0.05, **FINITE), st.integers(1, 20)),
         name="the state", tol=EXACT, compare=compare, examples=10,
         describe=lambda args: f"{describe_state(args[0])}, dt = {args[1]!r}, {args[2]} step(s)",
     )

@@ -9,6 +9,7 @@ import numpy as np
 from checks._rigid import FINITE, body_inertia, compact
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, Mistake, as_array, assert_close, check, fail
+from probes import problem_16 as p16
 
 TITLE = "Computing Inertia Matrices"
 
@@ -79,16 +80,16 @@ def check_centre_of_gravity(ctx):
                         "sum m_i."),
                 Mistake("not_divided", masses @ points, "Divide by the total mass sum m_i.")]
 
-    ctx.student("problem_16.centre_of_gravity", [1.0, 3.0], [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]])
-    ctx.compare_random("problem_16.centre_of_gravity", point_masses(), name="centre_of_gravity", tol=EXACT,
+    ctx.student(p16.centre_of_gravity, [1.0, 3.0], [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]])
+    ctx.compare_random(p16.centre_of_gravity, point_masses(), name="centre_of_gravity", tol=EXACT,
                        mistakes=mistakes, examples=10)
 
 
 @check(1, title="point_masses_inertia(masses, points): the inertia about their centre of gravity (random point "
        "masses)", stage=STAGE_RANDOM, group="point_masses")
 def check_point_masses(ctx):
-    ctx.student("problem_16.point_masses", [1.0, 3.0], [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]])
-    ctx.compare_random("problem_16.point_masses", point_masses(), name="point_masses_inertia", tol=EXACT,
+    ctx.student(p16.point_masses, [1.0, 3.0], [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]])
+    ctx.compare_random(p16.point_masses, point_masses(), name="point_masses_inertia", tol=EXACT,
                        mistakes=_point_mass_mistakes, examples=10)
 
 
@@ -96,9 +97,9 @@ def check_point_masses(ctx):
 
 
 def _body_check(ctx, name):
-    ctx.student("problem_16.body", name, 1.0, 1.0, 2.0, 3.0)
+    ctx.student(p16.body, name, 1.0, 1.0, 2.0, 3.0)
     ctx.compare_random(
-        "problem_16.body", BODY_ARGS.map(lambda args: (name, *args)), name=f"{name}_inertia(m, a, b, c)",
+        p16.body, BODY_ARGS.map(lambda args: (name, *args)), name=f"{name}_inertia(m, a, b, c)",
         tol=EXACT, mistakes=lambda args, expected: body_mistakes(*args), examples=10,
         describe=lambda args: _describe_body(args[1:]),
     )
@@ -127,8 +128,8 @@ def check_particles(ctx):
 
 def _symbolic_check(ctx, name):
     points = ctx.draw(lambda rng: rng.uniform(0.2, 3.0, size=(5, 4)))
-    expected = [ctx.reference("problem_16.body", name, *map(float, point)) for point in points]
-    got = ctx.student("problem_16.symbolic", name, points)
+    expected = [ctx.reference(p16.body, name, *map(float, point)) for point in points]
+    got = ctx.student(p16.symbolic, name, points)
     if isinstance(got, str):
         fail(f"{name}_inertia_symbolic() cannot be evaluated: {got}.",
              "Return a 3 x 3 sympy.Matrix in the symbols m, a, b, c (sympy.symbols('m a b c', positive=True)).")
@@ -186,6 +187,6 @@ def check_dimensions(ctx):
             assert_close(reproduced, np.diag(I), f"the {name}'s inertia with your dimensions {compact(dims)}",
                          EXACT, mistakes)
 
-    ctx.student("problem_16.dimensions", 1.0, 2.0, 2.5, 3.0)
-    ctx.compare_random("problem_16.dimensions", moments(), name="part_b", tol=EXACT, compare=compare, examples=10,
+    ctx.student(p16.dimensions, 1.0, 2.0, 2.5, 3.0)
+    ctx.compare_random(p16.dimensions, moments(), name="part_b", tol=EXACT, compare=compare, examples=10,
                        describe=lambda args: "(m, I1, I2, I3) = ({:.6g}, {:.6g}, {:.6g}, {:.6g})".format(*args))

@@ -22,6 +22,7 @@ from grader.checking import (
     close,
     fail,
 )
+from probes import problem_17 as p17
 
 TITLE = "Visualize Inertia Matrices"
 
@@ -31,7 +32,7 @@ REPRODUCE = Tol("reproduced inertia", 1e-8, 1e-8)
 
 def sheet_matrices(ctx):
     """The sheet's four inertia matrices and the mass (the package's constants)."""
-    sheet = ctx.reference("problem_17.constants")
+    sheet = ctx.reference(p17.constants)
     return [sheet["MATRICES"][k] for k in sorted(sheet["MATRICES"], key=int)], float(sheet["MASS"])
 
 
@@ -102,10 +103,10 @@ def _representation_check(ctx, assertion):
     """``assertion(got, B_I_G, m, where)`` on the sheet's four matrices, then on random ones."""
     matrices, mass = sheet_matrices(ctx)
     for k, B_I_G in enumerate(matrices, 1):
-        assertion(ctx.student("problem_17.representations", B_I_G, mass), B_I_G, mass,
+        assertion(ctx.student(p17.representations, B_I_G, mass), B_I_G, mass,
                   f"for the sheet's matrix {k} (m = {mass:g})")
     ctx.compare_random(
-        "problem_17.representations", st.tuples(inertias(), st.floats(0.5, 20.0, **FINITE)),
+        p17.representations, st.tuples(inertias(), st.floats(0.5, 20.0, **FINITE)),
         name="inertia_representations", tol=REPRODUCE, examples=10,
         compare=lambda got, expected, args: assertion(got, *args, ""),
         describe=lambda args: f"B_I_G = {compact(args[0])}, m = {args[1]!r}",
@@ -135,8 +136,8 @@ def check_principal_axes(ctx):
                      "them as rows.", "transpose")
             raise
 
-    ctx.student("problem_17.principal_axes", sheet_matrices(ctx)[0][2])
-    ctx.compare_random("problem_17.principal_axes", st.tuples(inertias()), name="principal_axes", tol=REPRODUCE,
+    ctx.student(p17.principal_axes, sheet_matrices(ctx)[0][2])
+    ctx.compare_random(p17.principal_axes, st.tuples(inertias()), name="principal_axes", tol=REPRODUCE,
                        compare=compare, examples=10, describe=lambda args: f"B_I_G = {compact(args[0])}")
 
 

@@ -10,6 +10,7 @@ from checks._real import assert_real
 from checks._rigid import FINITE
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, assert_close, as_array, check, fail
+from probes import problem_18 as p18
 
 TITLE = "Acceleration of a Point on a Rigid Body"
 
@@ -58,8 +59,8 @@ def check_zero_acceleration(ctx):
             Mistake("swapped", [wd, sign * w], "omega and omega_dot are swapped: return (omega, omega_dot)."),
         ], note=f"Q's acceleration with your values is {residual.round(6).tolist()} (body x-y components), not 0.")
 
-    ctx.student("problem_18.non_accelerating", 1.0, 2.0, 0.5, 0.5)
-    ctx.compare_random("problem_18.non_accelerating", solvable(), name="(omega, omega_dot)", tol=EXACT,
+    ctx.student(p18.non_accelerating, 1.0, 2.0, 0.5, 0.5)
+    ctx.compare_random(p18.non_accelerating, solvable(), name="(omega, omega_dot)", tol=EXACT,
                        compare=compare, examples=15, describe=_describe)
 
 
@@ -67,8 +68,8 @@ def check_zero_acceleration(ctx):
        stage=STAGE_STRUCTURE, group="no_solution")
 def check_no_solution(ctx):
     solvable = (1.0, 2.0, 0.5, 0.5)
-    expected = ctx.reference("problem_18.non_accelerating", *solvable)
-    got = ctx.student("problem_18.non_accelerating", *solvable)
+    expected = ctx.reference(p18.non_accelerating, *solvable)
+    got = ctx.student(p18.non_accelerating, *solvable)
     if isinstance(got, str):
         fail(f"non_accelerating_point{solvable} raised {got}, but a solution exists (a . r = 1.5 >= 0): raising "
              "ValueError counts only where there is no solution.",
@@ -76,7 +77,7 @@ def check_no_solution(ctx):
     assert_real(got, f"non_accelerating_point{solvable}", (2,), expected)  # raising counts beside a computed answer
     for args, why in (((1.0, 0.0, -1.0, 0.5), "a . r < 0: omega² would be negative"),
                       ((1.0, 2.0, 0.0, 0.0), "Q coincides with B (r = 0)")):
-        got = ctx.student("problem_18.non_accelerating", *args)
+        got = ctx.student(p18.non_accelerating, *args)
         if not isinstance(got, str):
             fail(f"non_accelerating_point{args} returned {got}; expected a ValueError ({why}).",
                  "The docstring asks for ValueError when there is no real solution: test the sign of a . r and "

@@ -7,6 +7,7 @@ from checks._effects import assert_no_side_effects
 from checks._rigid import FINITE, ROTATIONS, compact, vectors
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, check, fail
+from probes import problem_19 as p19
 
 TITLE = "Calculating Inertia Matrices"
 
@@ -42,8 +43,8 @@ def check_parallel_axis(ctx):
                 Mistake("outer_sign", I_G + m * ((r @ r) * np.eye(3) + np.outer(r, r)), "The outer product is "
                         "subtracted: m (|r|² E - r r^T).")]
 
-    ctx.student("problem_19.parallel_axis", np.eye(3), 1.0, [1.0, 2.0, 3.0])
-    ctx.compare_random("problem_19.parallel_axis", st.tuples(inertias(), MASSES, vectors(3.0)),
+    ctx.student(p19.parallel_axis, np.eye(3), 1.0, [1.0, 2.0, 3.0])
+    ctx.compare_random(p19.parallel_axis, st.tuples(inertias(), MASSES, vectors(3.0)),
                        name="parallel_axis(I_G, m, r)", tol=EXACT, mistakes=mistakes, examples=10,
                        describe=lambda a: f"I_G = {compact(a[0])}, m = {a[1]!r}, r = {compact(a[2])}")
 
@@ -72,8 +73,8 @@ def check_composite_inertia(ctx):
                     "the common centre of gravity with the parallel-axis theorem before summing."),
         ]
 
-    ctx.student("problem_19.composite", [1.0], [[0.0, 0.0, 0.0]], [np.eye(3)])
-    ctx.compare_random("problem_19.composite", composites(), name="composite_inertia", tol=EXACT,
+    ctx.student(p19.composite, [1.0], [[0.0, 0.0, 0.0]], [np.eye(3)])
+    ctx.compare_random(p19.composite, composites(), name="composite_inertia", tol=EXACT,
                        mistakes=mistakes, examples=10)
 
 
@@ -89,8 +90,8 @@ def _figure_21(blocks, steiner_sign=1.0, own_factor=1.0):
 @check(2, title="answers.toml: I3 of the object of Figure 21 as a multiple of m/120", stage=STAGE_VALUES,
        group="answer")
 def check_answer(ctx):
-    expected = ctx.reference("problem_19.answer")
-    blocks = ctx.reference("problem_19.blocks")
+    expected = ctx.reference(p19.answer)
+    blocks = ctx.reference(p19.blocks)
     given = ctx.answer("I3_in_m_over_120")
     try:
         value = float(given)

@@ -10,6 +10,7 @@ import numpy as np
 from checks._answers import choice
 from checks._rigid import compact, quaternion_rotation
 from grader.checking import STAGE_STRUCTURE, STAGE_VALUES, check, fail
+from probes import problem_20 as p20
 
 TITLE = "Understanding Inertia Matrices"
 MANUAL = {"a": ("20(a): Why is the matrix you chose not an inertia matrix?", 1)}
@@ -27,7 +28,7 @@ def _rotated(moments, seed):
 
 def _sheet(ctx, k):
     """The sheet's matrix of option ``k`` of (a), as printed (the package's constants)."""
-    return ctx.reference("problem_20.sheet_matrices")[str(k)]
+    return ctx.reference(p20.sheet_matrices)[str(k)]
 
 
 def _option(ctx, key):
@@ -47,7 +48,7 @@ def _judge(ctx, matrices, expected_ok, property_text, mistake=None):
     gives the ``(hint, diagnosis)`` for it.  A control matrix with the opposite verdict is judged too, so that an
     answer that does not depend on the matrix earns nothing."""
     control_label, control = CONTROLS[expected_ok]
-    results = ctx.student("problem_20.is_inertia", [I for _, I in matrices] + [control])
+    results = ctx.student(p20.is_inertia, [I for _, I in matrices] + [control])
     if not isinstance(results, list) or len(results) != len(matrices) + 1 or not all(
             isinstance(r, list) and len(r) == 2 for r in results):
         fail(f"is_inertia_matrix must return (ok, reason) for each matrix, got {str(results)[:200]}")
@@ -138,7 +139,7 @@ def check_rejects_triangle(ctx):
 @check(1, title="20(a): an option that is not an inertia matrix (as printed, options 2, 3 and 4 all qualify)",
        stage=STAGE_VALUES, group="part_a", secret=True)
 def check_part_a(ctx):
-    key = ctx.reference("problem_20.key_a")
+    key = ctx.reference(p20.key_a)
     given = _option(ctx, "a")
     keys = key["keys"]
     if given in keys:
@@ -154,7 +155,7 @@ def check_part_a(ctx):
 @check(1, title="20(b): the statement that is not necessarily correct for the object of Figure 22",
        stage=STAGE_VALUES, group="part_b", secret=True)
 def check_part_b(ctx):
-    key = ctx.reference("problem_20.key_b")
+    key = ctx.reference(p20.key_b)
     given = _option(ctx, "b")
     if given != key:
         fail(f"[problem_20] b = {given} is not the expected option.",

@@ -20,6 +20,7 @@ from grader.checking import (
     check,
     fail,
 )
+from probes import problem_21 as p21
 
 from ._figures import add_planar_arm
 from ._real import rank_flaw, require_real
@@ -79,14 +80,14 @@ def _assert_derivative(ctx, case):
     joints, rows = SIZES[case]
     for q in CONFIGURATIONS[case]:
         call = f"(q={list(q)}, d={FD_LINK})"
-        ours = ctx.reference("problem_21.jacobian", case, q, FD_LINK)
+        ours = ctx.reference(p21.jacobian, case, q, FD_LINK)
         mistakes = [
             Mistake("chain_wrong", ours, (
                 f"Your jacobian_{case} is right, but it is not the derivative of your chain_{case}: chain_{case} is "
                 f"wrong (see its check).")),
-            Mistake("degrees", ctx.reference("problem_21.jacobian", case, as_degrees(q), FD_LINK), DEGREES_HINT),
+            Mistake("degrees", ctx.reference(p21.jacobian, case, as_degrees(q), FD_LINK), DEGREES_HINT),
         ]
-        got = as_dict(ctx.student("problem_21.jacobian_and_steps", case, q, FD_LINK, H), f"the reply for {call}",
+        got = as_dict(ctx.student(p21.jacobian_and_steps, case, q, FD_LINK, H), f"the reply for {call}",
                       ("J", "plus", "minus"))
         J = as_array(got["J"], f"jacobian_{case}{call}", (rows, joints))
         plus, minus = ([as_array(x, f"chain_{case}", (rows,))
@@ -106,7 +107,7 @@ def _compare_jacobian(ctx, case):
         assert_close(got, expected, f"jacobian_{case}(q, d)", EXACT,
                      mistakes + sign_flips(got, expected, EXACT, JACOBIAN_SIGN_HINT))
 
-    ctx.compare_random("problem_21.jacobian", _strategy(case), name=f"jacobian_{case}(q, d)", tol=EXACT,
+    ctx.compare_random(p21.jacobian, _strategy(case), name=f"jacobian_{case}(q, d)", tol=EXACT,
                        compare=compare, describe=_describe(f"jacobian_{case}"))
 
 
@@ -144,23 +145,23 @@ TYPED_HINT = ("These are the sheet's printed numbers for q_b, whatever q is give
 @check(1, title="case (2), q_b: the end effector is at (-0.1799, 0.3616, 1.0472) as on the sheet (and where the "
        "reference's is at a configuration the sheet does not print)", stage=STAGE_VALUES, group="sheet")
 def check_sheet_target(ctx):
-    case = ctx.reference("problem_21.sheet_case")
+    case = ctx.reference(p21.sheet_case)
     q_b, d, target = case["q_b"], case["d"], np.asarray(case["target"], dtype=float)
     mistakes = [Mistake(m.name, m.value[6:], m.hint) for m in _chain_mistakes(ctx, q_b, d)]
-    got = ctx.student("problem_21.chain", "b", q_b, d)
-    add_planar_arm(ctx, "Problem 21: the arm of case (2) with q_b", got, ctx.reference("problem_21.chain", "b", q_b, d))
+    got = ctx.student(p21.chain, "b", q_b, d)
+    add_planar_arm(ctx, "Problem 21: the arm of case (2) with q_b", got, ctx.reference(p21.chain, "b", q_b, d))
     x_b = as_array(got, f"chain_b(q_b, {d:g})", (9,))
     mistakes += sign_flips(x_b[6:], target, SHEET, SIGN_HINT)
     assert_close(x_b[6:], target, "(xe, ye, gammae) of case (2) with q_b", SHEET, mistakes,
                  context="(the sheet's value)")
     other = [float(x) for x in np.asarray(q_b, dtype=float) + UNPRINTED_SHIFT]
-    expected = np.asarray(ctx.reference("problem_21.chain", "b", other, d), dtype=float)[6:]
-    x_other = as_array(ctx.student("problem_21.chain", "b", other, d), f"chain_b({np.round(other, 4).tolist()}, {d:g})",
+    expected = np.asarray(ctx.reference(p21.chain, "b", other, d), dtype=float)[6:]
+    x_other = as_array(ctx.student(p21.chain, "b", other, d), f"chain_b({np.round(other, 4).tolist()}, {d:g})",
                        (9,))
     assert_close(x_other[6:], expected, f"(xe, ye, gammae) at q = {np.round(other, 4).tolist()}", EXACT,
                  [Mistake("typed_numbers", target, TYPED_HINT)],
                  context="(a configuration the sheet does not print, against the reference)")
     q = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.5, 1.5, len(q_b))])  # no key holds it: drawn anew
-    expected = ctx.reference("problem_21.chain", "b", q, d)
-    assert_close(ctx.student("problem_21.chain", "b", q, d), expected, f"chain_b(q, {d:g})", EXACT,
+    expected = ctx.reference(p21.chain, "b", q, d)
+    assert_close(ctx.student(p21.chain, "b", q, d), expected, f"chain_b(q, {d:g})", EXACT,
                  context=f"(the arm of case (2) at other angles, q = {np.round(q, 4).tolist()})")

@@ -17,6 +17,7 @@ from grader.checking import (
     close,
     fail,
 )
+from probes import problem_22 as p22
 
 from ._figures import add_planar_arm
 from ._planar import ANGLES, DEGREES_HINT, HORIZONTAL_HINT, LENGTHS, LINKS, SIGN_HINT, sign_flips
@@ -57,7 +58,7 @@ def _name(model):
 
 
 def _end_mistakes(ctx, q, d):
-    found = ctx.reference("problem_22.mistakes", q, d)
+    found = ctx.reference(p22.mistakes, q, d)
     return [Mistake(_name(model), found[model]["end"], hint) for model, hint in MODELS.items()]
 
 
@@ -95,12 +96,12 @@ def _compare_end(ctx, probe, function):
 @check(1, title="q3 (12 joints, corrected in the problem data), d = 0.15: the end effector is at "
        "(0.8243, 0.3914, 0) as on the sheet", stage=STAGE_VALUES, group="sheet")
 def check_sheet_target(ctx):
-    case = ctx.reference("problem_22.sheet_case")
+    case = ctx.reference(p22.sheet_case)
     q3, d, target = case["q"], case["d"], np.asarray(case["target"], dtype=float)
     mistakes = _end_mistakes(ctx, q3, d)
-    expected = ctx.reference("problem_22.loop", q3, d)
-    got = ctx.student("problem_22.loop", q3, d)
-    arm = [*ctx.reference("problem_22.points", q3)[1:], expected]
+    expected = ctx.reference(p22.loop, q3, d)
+    got = ctx.student(p22.loop, q3, d)
+    arm = [*ctx.reference(p22.points, q3)[1:], expected]
     add_planar_arm(ctx, "Problem 22: the arm at q3 (reference) and your end effector", got, arm, end_only=True)
     typed = Mistake("typed_numbers", target, "These are the sheet's printed numbers (four decimals), not computed "
                     "ones: compute the pose from q3 and d; it is compared at full precision.")
@@ -115,7 +116,7 @@ def check_sheet_target(ctx):
 
 @check(2, title="end_effector_loop(q, d) on random 2n-joint arms (n = 1..8)", stage=STAGE_RANDOM, group="loop")
 def check_loop_values(ctx):
-    _compare_end(ctx, "problem_22.loop", "end_effector_loop")
+    _compare_end(ctx, p22.loop, "end_effector_loop")
 
 
 # ------------------------------------------------------------------------------------ the recursion
@@ -126,7 +127,7 @@ def check_loop_values(ctx):
 def check_points_values(ctx):
     def compare(got, expected, args):
         (q,) = args
-        found = ctx.reference("problem_22.mistakes", q, 0.0)
+        found = ctx.reference(p22.mistakes, q, 0.0)
         got = as_list(got, f"[point_k(q, k) for k = 0..{len(expected) - 1}]", len(expected))
         for k, (pose, target) in enumerate(zip(got, expected)):
             right = {0: "", 1: "P_0 is right: "}.get(k, f"P_0 .. P_{k - 1} are right: ")
@@ -134,7 +135,7 @@ def check_points_values(ctx):
             assert_close(pose, target, f"point_k(q, {k})", EXACT,
                          _point_mistakes(found, expected, k) + sign_flips(pose, target, EXACT, SIGN_HINT), note=where)
 
-    ctx.compare_random("problem_22.points", st.tuples(JOINT_VECTORS), name="point_k(q, k)", tol=EXACT,
+    ctx.compare_random(p22.points, st.tuples(JOINT_VECTORS), name="point_k(q, k)", tol=EXACT,
                        compare=compare, describe=_describe("point_k"))
 
 
@@ -176,12 +177,12 @@ def check_recursive_values(ctx):
                      note="Your point_k differs from the reference's (its own check says how); the end effector is "
                           "judged on it.")
 
-    ctx.compare_random("problem_22.recursive_with_point", st.tuples(JOINT_VECTORS, LINKS), name=name, tol=EXACT,
+    ctx.compare_random(p22.recursive_with_point, st.tuples(JOINT_VECTORS, LINKS), name=name, tol=EXACT,
                        compare=compare, describe=_describe("end_effector_recursive"))
 
 
 def _nesting(ctx, call, q, d):
-    got = as_dict(ctx.student("problem_22.nesting", call, q, d), f"the reply of the recursion probe ({call})",
+    got = as_dict(ctx.student(p22.nesting, call, q, d), f"the reply of the recursion probe ({call})",
                   ("depth", "function", "value"))
     if isinstance(got["depth"], bool) or not isinstance(got["depth"], (int, float)):
         fail(f"the recursion probe ({call}) must report a depth, got {str(got['depth'])[:100]}.", diagnosis="shape")
@@ -201,11 +202,11 @@ def _assert_recursion_value(value, expected, name):
 @check(2, title="point_k calls itself, from P_n down to the origin, and end_effector_recursive uses it; both return "
        "the right poses", stage=STAGE_AFTER_VALUES, group="points")
 def check_recursion(ctx):
-    case = ctx.reference("problem_22.sheet_case")
+    case = ctx.reference(p22.sheet_case)
     q, d = case["q"], case["d"]
     n = q.size // 2
-    expected_point = ctx.reference("problem_22.points", q)[n]
-    expected_end = ctx.reference("problem_22.recursive", q, d)
+    expected_point = ctx.reference(p22.points, q)[n]
+    expected_end = ctx.reference(p22.recursive, q, d)
     got = _nesting(ctx, "point_k", q, d)
     if got["depth"] < 2:
         fail(

@@ -24,7 +24,7 @@ KINDS = ("rotational", "test")
 
 
 def _pendulum(ctx):
-    case = ctx.reference("problem_24.pendulum_case")
+    case = ctx.reference(p24.pendulum_case)
     return case["description"], case["q"]
 
 
@@ -36,8 +36,8 @@ def check_orientations(ctx):
             assert_rotation(body["A_IB"], f"A_IB of {name}", STRUCTURE)
 
     args = rich_case(KINDS, motion=False)
-    compare(ctx.student("problem_24.tree_poses", *args), ctx.reference("problem_24.tree_poses", *args), args)
-    ctx.compare_random("problem_24.tree_poses", cases(KINDS, motion=False), name="A_IB", tol=STRUCTURE,
+    compare(ctx.student(p24.tree_poses, *args), ctx.reference(p24.tree_poses, *args), args)
+    ctx.compare_random(p24.tree_poses, cases(KINDS, motion=False), name="A_IB", tol=STRUCTURE,
                        compare=compare, examples=10, describe=describe_case)
 
 
@@ -46,9 +46,9 @@ def check_orientations(ctx):
 def check_pendulum(ctx):
     description, q = _pendulum(ctx)
     mistakes = candidates(ctx, description, q)
-    own = judged(ctx, "problem_24.pendulum", q)  # the reference's pendulum with the student's R3 (problem 6)
-    got = ctx.student("problem_24.pendulum", q)
-    expected = ctx.reference("problem_24.pendulum", q)
+    own = judged(ctx, p24.pendulum, q)  # the reference's pendulum with the student's R3 (problem 6)
+    got = ctx.student(p24.pendulum, q)
+    expected = ctx.reference(p24.pendulum, q)
     drawing = configuration_figure("Problem 24: the triple pendulum at q = (pi/6, -pi/4, pi/3)", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
@@ -59,7 +59,7 @@ def check_pendulum(ctx):
 @check(3, title="random trees of rotational joints: A_IB and B_r_IB of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "problem_24.tree_poses", KINDS, tree_comparison(ctx, motion=False), motion=False,
+    compare_trees(ctx, p24.tree_poses, KINDS, tree_comparison(ctx, motion=False), motion=False,
                   name="the bodies' poses")
 
 
@@ -78,6 +78,7 @@ def check_side_effects(ctx):
 import numpy as np  # noqa: E402
 
 from grader.checking import EXACT, Tol, assert_close, close  # noqa: E402
+from probes import _dynamics as probe_dynamics, problem_24 as p24
 
 from ._dynamics import assert_energy_conserved, assert_run, run_array, run_figure  # noqa: E402
 
@@ -100,8 +101,8 @@ OWN_T_END = 0.5
        "2 s and follows a tight reference run over the first second (uses the equations of motion of problem 37)",
        stage=STAGE_VALUES, group="motion")
 def check_simulated_motion(ctx):
-    expected = ctx.reference("_dynamics.pendulum_motion", SIMULATION_T_END, SIMULATION_GRAV, persist=True)
-    got = ctx.student("_dynamics.pendulum_motion", SIMULATION_T_END, SIMULATION_GRAV, timeout=SIMULATION_TIMEOUT)
+    expected = ctx.reference(probe_dynamics.pendulum_motion, SIMULATION_T_END, SIMULATION_GRAV, persist=True)
+    got = ctx.student(probe_dynamics.pendulum_motion, SIMULATION_T_END, SIMULATION_GRAV, timeout=SIMULATION_TIMEOUT)
     what = f"problem_24.simulate({SIMULATION_T_END:g})"
     for key in ("t", "q", "qd"):
         run_array(got, key, np.shape(expected[key]), what)
@@ -126,8 +127,8 @@ def check_simulated_motion(ctx):
                     "chaotic and accurate runs part.")
     # released from a configuration of its own, drawn anew at each grading (no key holds its run)
     q0 = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
-    ours = ctx.reference("_dynamics.pendulum_motion", OWN_T_END, SIMULATION_GRAV, q0)
-    mine = ctx.student("_dynamics.pendulum_motion", OWN_T_END, SIMULATION_GRAV, q0, timeout=SIMULATION_TIMEOUT)
+    ours = ctx.reference(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0)
+    mine = ctx.student(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, timeout=SIMULATION_TIMEOUT)
     assert_run(mine, ours, ("q", "qd"), SIMULATION_BAND,
                f"the run released at q0 = {np.round(q0, 4).tolist()} (the first {OWN_T_END:g} s)",
                note="Any solve_ivp method at its default tolerances stays within the band.")

@@ -16,6 +16,7 @@ from grader.checking import (
     close,
     fail,
 )
+from probes import problem_25 as p25
 
 from ._trees import (
     DIFFERENCES,
@@ -76,7 +77,7 @@ BODY_HINT = ("x holds the legs' positions in inertial coordinates, I_r_IB = A_IB
 
 def _walker(ctx):
     """``{"description", "alpha_c", "gamma_c"}`` of the reference's walker."""
-    return ctx.reference("problem_25.walker_case")
+    return ctx.reference(p25.walker_case)
 
 
 def _wrap(angle):
@@ -109,7 +110,7 @@ def _x_mistakes(ctx, alpha, gamma, target):
     names = [body["name"] for body in description["bodies"]]
     found = [Mistake(name, _on_branch(_x_of(bodies, names), target), hint)
              for name, hint, bodies in candidates(ctx, description, [alpha, gamma], models=WALKER_MODELS)]
-    walker = ctx.reference("problem_25.walker", alpha, gamma)
+    walker = ctx.reference(p25.walker, alpha, gamma)
     body = _x_of(walker["bodies"], walker["names"], frame="body")
     return [Mistake("wrong_frame", _on_branch(body, target), BODY_HINT), *found]
 
@@ -123,9 +124,9 @@ def check_sheet_values(ctx):
     case = _walker(ctx)
     alpha, gamma = case["alpha_c"], case["gamma_c"]
     mistakes = _x_mistakes(ctx, alpha, gamma, SHEET_X)
-    own = judged(ctx, "problem_25.walker", alpha, gamma)  # the reference's walker with the student's R3 (problem 6)
-    got = ctx.student("problem_25.walker", alpha, gamma)
-    expected = ctx.reference("problem_25.walker", alpha, gamma)
+    own = judged(ctx, p25.walker, alpha, gamma)  # the reference's walker with the student's R3 (problem 6)
+    got = ctx.student(p25.walker, alpha, gamma)
+    expected = ctx.reference(p25.walker, alpha, gamma)
     drawing = configuration_figure("Problem 25: the walker at alpha = -30 deg, gamma = +60 deg", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
@@ -147,9 +148,9 @@ def check_sheet_values(ctx):
          lambda value: against(np.asarray(value["x"], dtype=float), "x = cog_positions(-30 deg, +60 deg)", ""))
     # the walker at angles of its own, drawn anew at each grading (no key holds them)
     other = ctx.draw(lambda rng: [float(rng.uniform(-1.0, 1.0)), float(rng.uniform(-2.0, 2.0))])
-    own = judged(ctx, "problem_25.walker", *other)
-    expected = ctx.reference("problem_25.walker", *other)
-    got = ctx.student("problem_25.walker", *other)
+    own = judged(ctx, p25.walker, *other)
+    expected = ctx.reference(p25.walker, *other)
+    got = ctx.student(p25.walker, *other)
     raw = as_array(as_dict(got, "the walker read back by the probe", ("x",))["x"], "cog_positions(alpha, gamma)",
                    (6,))
     name = "x = cog_positions(alpha, gamma)"
@@ -169,16 +170,16 @@ def check_walker_random(ctx):
     def describe(args):
         return f"q = (alpha, gamma) = ({args[0]!r}, {args[1]!r})"
 
-    compare = judging(ctx, "problem_25.walker", compare, judged_states)
-    compare_fixed(ctx, "problem_25.walker", (0.4, -0.9), compare, describe)
-    ctx.compare_random("problem_25.walker", st.tuples(ALPHA, GAMMA), name="the walker", tol=EXACT, compare=compare,
+    compare = judging(ctx, p25.walker, compare, judged_states)
+    compare_fixed(ctx, p25.walker, (0.4, -0.9), compare, describe)
+    ctx.compare_random(p25.walker, st.tuples(ALPHA, GAMMA), name="the walker", tol=EXACT, compare=compare,
                        examples=10, describe=describe)
 
 
 @check(2, title="random trees with rolling contacts: A_IB and B_r_IB of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_rolling_trees(ctx):
-    compare_trees(ctx, "problem_25.tree_poses", KINDS, tree_comparison(ctx, motion=False), motion=False,
+    compare_trees(ctx, p25.tree_poses, KINDS, tree_comparison(ctx, motion=False), motion=False,
                   name="the bodies' poses")
 
 
@@ -192,7 +193,7 @@ def _points(ctx):
 
 
 def _symbolic(ctx, points):
-    got = as_dict(ctx.student("problem_25.symbolic", points, H), "the reply of the symbolic probe")
+    got = as_dict(ctx.student(p25.symbolic, points, H), "the reply of the symbolic probe")
     if "free_symbols" in got:
         fail(f"x and J of cog_positions_symbolic() contain symbols other than q = ({', '.join(got['symbols'])}): "
              f"{', '.join(got['free_symbols'])}, so they cannot be evaluated at a configuration.",
@@ -218,7 +219,7 @@ def _shifted(value, name):
        "random configurations", stage=STAGE_VALUES, group="symbolic")
 def check_symbolic_positions(ctx):
     points = _points(ctx)
-    expected_x = [np.asarray(ctx.reference("problem_25.walker", *point)["x"]) for point in points]
+    expected_x = [np.asarray(ctx.reference(p25.walker, *point)["x"]) for point in points]
     mistakes = [_x_mistakes(ctx, *point, expected) for point, expected in zip(points, expected_x)]
     got = _symbolic(ctx, points)
     for point, value, expected, known in zip(points, got["x"], expected_x, mistakes):
@@ -234,7 +235,7 @@ def check_symbolic_positions(ctx):
        "Jacobians", stage=STAGE_VALUES, group="symbolic")
 def check_symbolic_jacobian(ctx):
     points = _points(ctx)
-    expected_J = [ctx.reference("problem_25.leg_jacobians", *point) for point in points]
+    expected_J = [ctx.reference(p25.leg_jacobians, *point) for point in points]
     got = _symbolic(ctx, points)
     for point, J, plus, minus, expected in zip(points, got["J"], got["plus"], got["minus"], expected_J):
         J = as_array(J, "J", (6, 2))

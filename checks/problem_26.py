@@ -4,6 +4,7 @@ import numpy as np
 
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
+from probes import problem_26 as p26
 
 from ._figures import add_chairoplane, seat_between
 from ._real import rank_flaw, require_real
@@ -43,16 +44,16 @@ POSITION_SIGN_HINT = "Check the directions: x1 = r sin(beta), x2 = l1 - l3 cos(p
 
 
 def _position_mistakes(ctx, args):
-    found = ctx.reference("problem_26.mistakes", *args)["position"]
+    found = ctx.reference(p26.mistakes, *args)["position"]
     return [Mistake(name, found[name], hint) for name, hint in MODELS.items()]
 
 
 def _jacobian_mistakes(ctx, args, expected):
     beta, phi, *lengths = args
-    found = ctx.reference("problem_26.mistakes", *args)["jacobian"]
+    found = ctx.reference(p26.mistakes, *args)["jacobian"]
     return [
         *[Mistake(name, found[name], hint) for name, hint in MODELS.items()],
-        Mistake("degrees", ctx.reference("problem_26.jacobian", np.deg2rad(beta), np.deg2rad(phi), *lengths),
+        Mistake("degrees", ctx.reference(p26.jacobian, np.deg2rad(beta), np.deg2rad(phi), *lengths),
                 DEGREES_HINT),
         *swapped_columns(expected, COLUMNS),
     ]
@@ -76,7 +77,7 @@ def check_position_values(ctx):
         mistakes = _position_mistakes(ctx, args) + sign_flips(got, expected, EXACT, POSITION_SIGN_HINT)
         assert_close(got, expected, "position(beta, phi, l1, l2, l3)", EXACT, mistakes)
 
-    ctx.compare_random("problem_26.position", ARGUMENTS, name="position", tol=EXACT, compare=compare,
+    ctx.compare_random(p26.position, ARGUMENTS, name="position", tol=EXACT, compare=compare,
                        describe=_describe("position"))
 
 
@@ -85,17 +86,17 @@ def check_position_values(ctx):
 def check_jacobian_derivative(ctx):
     for args in CONFIGURATIONS:
         call = _describe("jacobian")(args)
-        ours = ctx.reference("problem_26.jacobian", *args)
+        ours = ctx.reference(p26.jacobian, *args)
         known = [
             Mistake("position_wrong", ours, "Your jacobian is right, but it is "
                     "not the derivative of your position: position is wrong (see its check)."),
-            Mistake("degrees", ctx.reference("problem_26.jacobian", *np.deg2rad(args[:2]), *args[2:]), DEGREES_HINT),
+            Mistake("degrees", ctx.reference(p26.jacobian, *np.deg2rad(args[:2]), *args[2:]), DEGREES_HINT),
         ]
-        got = as_dict(ctx.student("problem_26.jacobian_and_steps", *args, H), f"the reply for {call}",
+        got = as_dict(ctx.student(p26.jacobian_and_steps, *args, H), f"the reply for {call}",
                       ("J", "plus", "minus"))
         if args == CONFIGURATIONS[0]:
             add_chairoplane(ctx, f"Problem 26: the chairoplane at beta = {args[0]:g}, phi = {args[1]:g}",
-                            seat_between(got), ctx.reference("problem_26.position", *args), args[0], args[2], args[3])
+                            seat_between(got), ctx.reference(p26.position, *args), args[0], args[2], args[3])
         plus, minus = ([as_array(x, "position", (3,)) for x in as_list(got[side], f"position at q {sign} h e_j", 2)]
                        for side, sign in (("plus", "+"), ("minus", "-")))
         central = np.column_stack([(p - m) / (2 * H) for p, m in zip(plus, minus)])
@@ -116,5 +117,5 @@ def check_jacobian_values(ctx):
         mistakes = known + sign_flips(got, expected, EXACT, JACOBIAN_SIGN_HINT)
         assert_close(got, expected, "jacobian(beta, phi, l1, l2, l3)", EXACT, mistakes)
 
-    ctx.compare_random("problem_26.jacobian", ARGUMENTS, name="jacobian", tol=EXACT, compare=compare,
+    ctx.compare_random(p26.jacobian, ARGUMENTS, name="jacobian", tol=EXACT, compare=compare,
                        describe=_describe("jacobian"))

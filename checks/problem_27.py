@@ -24,6 +24,7 @@ from grader.checking import (
     fail,
     format_array,
 )
+from probes import problem_27 as p27
 
 from ._answers import choice
 from ._planar import FINITE, sign_flips, swapped_columns
@@ -54,7 +55,7 @@ def _choice(ctx, key):
 
 
 def _key(ctx, key):
-    return int(ctx.reference("problem_27.answers", persist=True)[key])
+    return int(ctx.reference(p27.answers, persist=True)[key])
 
 
 def _wrong(key, choice, reasons, hint, diagnosis):
@@ -73,7 +74,7 @@ def _columns(option, expected, names, scale=""):
 
 def _options(ctx, key):
     """The options of question ``key`` as typed from the sheet, by number."""
-    return {int(option): value for option, value in ctx.reference("problem_27.options", persist=True)[key].items()}
+    return {int(option): value for option, value in ctx.reference(p27.options, persist=True)[key].items()}
 
 
 def _residuals(ctx, probe, *args):
@@ -87,8 +88,8 @@ def _point(value):
 @check(1, title="(a) the chosen matrix is J_f of the arm", stage=STAGE_VALUES, group="a", secret=True)
 def check_choice_a(ctx):
     key, options = _key(ctx, "a"), _options(ctx, "a")
-    geometry = ctx.reference("problem_27.options", persist=True)["geometry"]
-    J = np.asarray(ctx.reference("problem_27.jacobian_a"))
+    geometry = ctx.reference(p27.options, persist=True)["geometry"]
+    J = np.asarray(ctx.reference(p27.jacobian_a))
     choice = _choice(ctx, "a")
     if choice == key:
         return
@@ -105,7 +106,7 @@ def check_choice_a(ctx):
        secret=True)
 def check_choice_b(ctx):
     key, options = _key(ctx, "b"), _options(ctx, "b")
-    residuals = _residuals(ctx, "problem_27.velocity_residuals")
+    residuals = _residuals(ctx, p27.velocity_residuals)
     choice = _choice(ctx, "b")
     if choice == key:
         return
@@ -133,7 +134,7 @@ def _holds(key, choice, residual, where):
 @check(1, title="(c) the chosen statement is the wrong one for the bias acceleration", stage=STAGE_VALUES, group="c",
        secret=True)
 def check_choice_c(ctx):
-    key, residuals = _key(ctx, "c"), _residuals(ctx, "problem_27.bias_acceleration_residuals")
+    key, residuals = _key(ctx, "c"), _residuals(ctx, p27.bias_acceleration_residuals)
     choice = _choice(ctx, "c")
     if choice == key:
         return
@@ -147,7 +148,7 @@ def check_choice_c(ctx):
        secret=True)
 def check_choice_d(ctx):
     key, options = _key(ctx, "d"), _options(ctx, "d")
-    J = np.asarray(ctx.reference("problem_27.governor_jacobian", persist=True))
+    J = np.asarray(ctx.reference(p27.governor_jacobian, persist=True))
     choice = _choice(ctx, "d")
     if choice == key:
         return
@@ -161,7 +162,7 @@ def check_choice_d(ctx):
 @check(1, title="(e) the chosen statement is the wrong one about derivatives in moving frames", stage=STAGE_VALUES,
        group="e", secret=True)
 def check_choice_e(ctx):
-    key, residuals = _key(ctx, "e"), _residuals(ctx, "problem_27.frame_derivative_residuals", 0, 0.3)
+    key, residuals = _key(ctx, "e"), _residuals(ctx, p27.frame_derivative_residuals, 0, 0.3)
     choice = _choice(ctx, "e")
     if choice == key:
         return
@@ -204,12 +205,12 @@ def _compare_column(name, mistakes, sign_hint):
 @check(1, title="revolute_column(p, p_e) and prismatic_column(u) on random geometry", stage=STAGE_RANDOM,
        group="columns")
 def check_columns(ctx):
-    ctx.compare_random("problem_27.revolute_column", st.tuples(POINTS, POINTS), name="revolute_column(p, p_e)",
+    ctx.compare_random(p27.revolute_column, st.tuples(POINTS, POINTS), name="revolute_column(p, p_e)",
                        tol=EXACT, compare=_compare_column("revolute_column(p, p_e)", _revolute_mistakes, (
                            "The end effector moves perpendicular to the lever arm p_e - p, turned by +90 deg "
                            "(counter-clockwise): (-(ye - py), xe - px).")),
                        describe=lambda args: f"revolute_column(p={args[0]}, p_e={args[1]})")
-    ctx.compare_random("problem_27.prismatic_column", st.tuples(POINTS), name="prismatic_column(u)",
+    ctx.compare_random(p27.prismatic_column, st.tuples(POINTS), name="prismatic_column(u)",
                        tol=EXACT, compare=_compare_column("prismatic_column(u)", _prismatic_mistakes,
                                                           "The end effector slides along +u: (ux, uy, 0)."),
                        describe=lambda args: f"prismatic_column(u={args[0]})")
@@ -218,8 +219,8 @@ def check_columns(ctx):
 @check(1, title="jacobian_a() is J_f of the restated arm of (a)", stage=STAGE_VALUES, group="jacobian_a",
        secret=True)
 def check_jacobian_a(ctx):
-    expected = ctx.reference("problem_27.jacobian_a")
-    got = ctx.student("problem_27.jacobian_a")
+    expected = ctx.reference(p27.jacobian_a)
+    got = ctx.student(p27.jacobian_a)
     assert_close(got, expected, "jacobian_a()", EXACT, [
         Mistake("transpose", np.transpose(expected), "Column j of J_f belongs to joint j: you stacked the joints' "
                 "columns as rows (use np.column_stack)."),
@@ -232,8 +233,8 @@ def check_jacobian_a(ctx):
 @check(1, title="governor_jacobian() is J / l of the ball of (d) at phi = 0, gamma = 30 deg", stage=STAGE_VALUES,
        group="governor", secret=True)
 def check_governor_jacobian(ctx):
-    expected = np.asarray(ctx.reference("problem_27.governor_jacobian", persist=True))
-    got = ctx.student("problem_27.governor_jacobian")
+    expected = np.asarray(ctx.reference(p27.governor_jacobian, persist=True))
+    got = ctx.student(p27.governor_jacobian)
     assert_close(got, expected, "governor_jacobian()", EXACT, [
         *swapped_columns(expected, ["phi", "gamma"]),
         *sign_flips(got, expected, EXACT, "Differentiate I_r = R2(phi) (l sin gamma, -l cos gamma, 0) again."),
@@ -244,9 +245,9 @@ def check_governor_jacobian(ctx):
        stage=STAGE_VALUES, group="frames", secret=True)
 def check_frame_residuals(ctx):
     for seed, t in ((0, 0.3), (3, -0.2)):
-        expected = _residuals(ctx, "problem_27.frame_derivative_residuals", seed, t)
-        own = judged(ctx, "problem_27.frame_derivative_residuals", seed, t)  # with the student's cardan, skew, ...
-        got = ctx.student("problem_27.frame_derivative_residuals", seed, t)
+        expected = _residuals(ctx, p27.frame_derivative_residuals, seed, t)
+        own = judged(ctx, p27.frame_derivative_residuals, seed, t)  # with the student's cardan, skew, ...
+        got = ctx.student(p27.frame_derivative_residuals, seed, t)
         if not isinstance(got, dict) or sorted(map(str, got)) != ["1", "2", "3", "4"]:
             fail(f"frame_derivative_residuals({seed}, {t}) must return a dict with the keys 1, 2, 3, 4; got "
                  f"{str(got)[:200]}")

@@ -7,6 +7,7 @@ check compares with the same text.
 """
 
 from grader.checking import STAGE_VALUES, Mistake, check
+from probes import problem_28 as p28
 
 from ._answers import answer_text, assert_same_text, text_lines
 
@@ -32,7 +33,7 @@ def _mistakes(expected):
 
 
 def _expected(ctx):
-    return ctx.reference("problem_28.output")
+    return ctx.reference(p28.output)
 
 
 @check(3, title="[problem_28] output is what main.m prints", stage=STAGE_VALUES, group="prediction", secret=True)
@@ -44,7 +45,7 @@ def check_prediction(ctx):
 
 @check(1, title="the port main() prints the output of main.m", stage=STAGE_VALUES, group="port", secret=True)
 def check_port(ctx):
-    got = ctx.student("problem_28.output")
+    got = ctx.student(p28.output)
     expected = _expected(ctx)
     assert_same_text(got, expected, "What your main() prints", (PROMPT,), _mistakes(expected),
                      "Rainbow prints its own color first and then calls the Rainbow of its child.")

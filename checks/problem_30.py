@@ -9,6 +9,7 @@ so recording it in the student kit would hand it out (and a failure names missin
 """
 
 from grader.checking import STAGE_VALUES, check
+from probes import problem_30 as p30
 
 from ._answers import assert_same_diagram, diagram_pairs
 
@@ -25,7 +26,7 @@ MANUAL = {
 
 
 def _expected(ctx):
-    return {tuple(pair) for pair in ctx.reference("problem_30.class_diagram")}
+    return {tuple(pair) for pair in ctx.reference(p30.class_diagram)}
 
 
 @check(2, title="[problem_30] diagram: the inheritance arrows between the v2 classes", stage=STAGE_VALUES,
@@ -38,5 +39,5 @@ def check_diagram(ctx):
 @check(1, title="class_diagram() returns the inheritance arrows between the v2 classes", stage=STAGE_VALUES,
        group="code", secret=True)
 def check_class_diagram(ctx):
-    got = diagram_pairs(ctx.student("problem_30.class_diagram"), "class_diagram()")
+    got = diagram_pairs(ctx.student(p30.class_diagram), "class_diagram()")
     assert_same_diagram(got, _expected(ctx), "class_diagram()")

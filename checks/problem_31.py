@@ -2,6 +2,7 @@
 ``Joint.successor_jacobians``, ``RotationalJoint.joint_motion``)."""
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, check
+from probes import _trees as probe_trees, problem_31 as p31
 
 from ._trees import (
     assert_tree_no_side_effects,
@@ -27,12 +28,12 @@ POSES = ("p24.random_trees", "positions and orientations A_IB, B_r_IB (problem 2
 @check(2, title="the triple pendulum at the sheet's test case q = (pi/6, -pi/4, pi/3), qd = (1, 0, 0), qdd = "
        "(0, 0, 1): velocities, accelerations and Jacobians of every body", stage=STAGE_VALUES, group="pendulum")
 def check_pendulum(ctx):
-    case = ctx.reference("problem_31.pendulum_case")
+    case = ctx.reference(p31.pendulum_case)
     values = case["q"], case["qd"], case["qdd"]
     mistakes = candidates(ctx, case["description"], *values)
-    own = judged(ctx, "problem_31.pendulum", *values)  # the reference's recursion with the student's R3 and skew
-    got = ctx.student("problem_31.pendulum", *values)
-    expected = ctx.reference("problem_31.pendulum", *values)
+    own = judged(ctx, p31.pendulum, *values)  # the reference's recursion with the student's R3 and skew
+    got = ctx.student(p31.pendulum, *values)
+    expected = ctx.reference(p31.pendulum, *values)
     held(ctx, own, lambda: compare_states(got, expected, mistakes=mistakes, context="(the sheet's test case)",
                                           poses_from=(ctx, *POSES)),
          lambda value: compare_states(got, value, context="(the sheet's test case)"))
@@ -41,19 +42,19 @@ def check_pendulum(ctx):
 @check(2, title="the Jacobians B_J_S, B_J_R of random trees are the derivatives of your own positions and "
        "orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
 def check_jacobians(ctx):
-    compare_jacobian_differences(ctx, "_trees.jacobian_differences", KINDS)
+    compare_jacobian_differences(ctx, probe_trees.jacobian_differences, KINDS)
 
 
 @check(2, title="along a path q(t), your velocities are the time derivatives of your positions and orientations, "
        "and your accelerations those of your velocities", stage=STAGE_STRUCTURE, group="path")
 def check_path(ctx):
-    compare_path_differences(ctx, "_trees.path_differences", KINDS)
+    compare_path_differences(ctx, probe_trees.path_differences, KINDS)
 
 
 @check(3, title="random trees: velocities, accelerations and Jacobians of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")
+    compare_trees(ctx, probe_trees.tree_state, KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")
 
 
 @check(1, title="forward_kinematics with velocities leaves q, qd, qdd unchanged, and a tree used again gives what a "

@@ -17,6 +17,7 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import _trees as probe_trees, problem_32 as p32
 
 from ._real import rank_flaw, require_real, rotation_flaw
 from ._shapes import as_dict, as_list
@@ -54,7 +55,7 @@ def _gravity_mistakes(ctx, description, q, I_grav, expected):
     """``generalized_gravity`` without the frame change, and without the masses, from the reference's Jacobians and
     orientations at ``q`` (asked of the reference now, whatever the student's answer)."""
     nq = len(q)
-    state = ctx.reference("_trees.tree_state", description, q, np.zeros(nq), np.zeros(nq))
+    state = ctx.reference(probe_trees.tree_state, description, q, np.zeros(nq), np.zeros(nq))
     masses = {body["name"]: float(body.get("m", 0.0)) for body in description["bodies"]}
     bodies = [(body, masses[name]) for name, body in zip(state["names"], state["bodies"])]
     I_grav = np.asarray(I_grav, dtype=float)
@@ -67,13 +68,13 @@ def _gravity_mistakes(ctx, description, q, I_grav, expected):
 
 
 def _robot(ctx):
-    return ctx.reference("problem_32.robot_case")
+    return ctx.reference(p32.robot_case)
 
 
 @check(2, title="random trees with rigid joints: the state of every body, in recursion order",
        stage=STAGE_RANDOM, group="trees")
 def check_rigid_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx), name="the bodies' motion")
+    compare_trees(ctx, probe_trees.tree_state, KINDS, tree_comparison(ctx), name="the bodies' motion")
 
 
 @check(2, title="the robot hangs with its end effector at (0, -3, 0) at q = 0, and at the sheet's q_des(0) = "
@@ -83,9 +84,9 @@ def check_end_effector(ctx):
     for q, target, title in ((np.zeros(3), np.array([0.0, -3.0, 0.0]), ""),
                              (Q_DES_0, robot["x_start"], "Problem 32: the robot at q_des(0), front view")):
         mistakes = candidates(ctx, robot["description"], q)
-        own = judged(ctx, "problem_32.robot", q)  # the reference's robot with the student's R3 (problem 6)
-        got = ctx.student("problem_32.robot", q)
-        expected = ctx.reference("problem_32.robot", q)
+        own = judged(ctx, p32.robot, q)  # the reference's robot with the student's R3 (problem 6)
+        got = ctx.student(p32.robot, q)
+        expected = ctx.reference(p32.robot, q)
         drawing = configuration_figure(title, got, expected) if title else None
         if drawing is not None:
             ctx.add_figure(drawing)
@@ -132,11 +133,11 @@ def check_gravity_potential(ctx):
 
     extra = (I_GRAV, H)
     name = "generalized_gravity(tree, q, I_grav)"
-    compare = judging(ctx, "problem_32.potential", compare,
+    compare = judging(ctx, p32.potential, compare,
                       lambda got, value, args: assert_close(got["g"], value["g"], name, EXACT,
                                                             context=f"(I_grav = {I_GRAV.tolist()})"))
-    compare_fixed(ctx, "problem_32.potential", rich_case(KINDS, motion=False, masses=True, extra=extra), compare)
-    ctx.compare_random("problem_32.potential", cases(KINDS, motion=False, masses=True, extra=extra),
+    compare_fixed(ctx, p32.potential, rich_case(KINDS, motion=False, masses=True, extra=extra), compare)
+    ctx.compare_random(p32.potential, cases(KINDS, motion=False, masses=True, extra=extra),
                        name="generalized_gravity", tol=DIFFERENCES, compare=compare, examples=10,
                        describe=describe_case)
 
@@ -150,22 +151,22 @@ def check_gravity_random(ctx):
             assert_close(got, expected, "generalized_gravity(tree, q, I_grav)", EXACT, mistakes,
                          context=f"(I_grav = {I_GRAV.tolist()})")
 
-    compare = judging(ctx, "problem_32.gravity", compare,
+    compare = judging(ctx, p32.gravity, compare,
                       lambda got, value, args: assert_close(got, value, "generalized_gravity(tree, q, I_grav)", EXACT,
                                                             context=f"(I_grav = {I_GRAV.tolist()})"))
-    compare_fixed(ctx, "problem_32.gravity", rich_case(KINDS, motion=False, masses=True, extra=(I_GRAV,)), compare)
-    ctx.compare_random("problem_32.gravity", cases(KINDS, motion=False, masses=True, extra=(I_GRAV,)),
+    compare_fixed(ctx, p32.gravity, rich_case(KINDS, motion=False, masses=True, extra=(I_GRAV,)), compare)
+    ctx.compare_random(p32.gravity, cases(KINDS, motion=False, masses=True, extra=(I_GRAV,)),
                        name="generalized_gravity", tol=EXACT, compare=compare, examples=15, describe=describe_case)
 
 
 @check(2, title="the gravity-compensating torques tau = -g(q) along the desired trajectory (209 points)",
        stage=STAGE_VALUES, group="torques")
 def check_gravity_trajectory(ctx):
-    trajectory = ctx.reference("problem_32.trajectory", persist=True)
+    trajectory = ctx.reference(p32.trajectory, persist=True)
     t, q = trajectory["t"], trajectory["q"]
-    own = judged(ctx, "problem_32.torques", q)  # the reference's torques with the student's R3 (problem 6)
-    got = as_array(ctx.student("problem_32.torques", q), "the torques along the trajectory", (t.size, 3))
-    expected = np.asarray(ctx.reference("problem_32.torques", q, persist=True))
+    own = judged(ctx, p32.torques, q)  # the reference's torques with the student's R3 (problem 6)
+    got = as_array(ctx.student(p32.torques, q), "the torques along the trajectory", (t.size, 3))
+    expected = np.asarray(ctx.reference(p32.torques, q, persist=True))
     ctx.add_figure(figure("Problem 32: gravity-compensating torques", "t [s]", "tau [Nm]",
                           student=[(f"tau_{k + 1}", t, got[:, k]) for k in range(3)],
                           reference=[(f"tau_{k + 1}", t, expected[:, k]) for k in range(3)]))

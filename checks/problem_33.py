@@ -16,6 +16,7 @@ from grader.checking import (
     check,
     close,
 )
+from probes import _trees as probe_trees, problem_33 as p33
 
 from ._real import real, require_real, rotation_flaw
 from ._trees import (
@@ -45,7 +46,7 @@ VALUES = st.lists(st.floats(-2.0, 2.0, allow_nan=False), min_size=6, max_size=6)
 
 def _walker(ctx):
     """``{"description", "q", "qd", "qdd", "foot_radius"}`` of the reference's walker at the sheet's test state."""
-    return ctx.reference("problem_33.walker_case")
+    return ctx.reference(p33.walker_case)
 
 
 def _contact(bodies, names, q, radius):
@@ -70,9 +71,9 @@ def check_sheet(ctx):
     case = _walker(ctx)
     values = case["q"], case["qd"], case["qdd"]
     mistakes = candidates(ctx, case["description"], *values, models=WALKER_MODELS)
-    own = judged(ctx, "problem_33.walker", *values)  # the reference's recursion with the student's R3 and skew
-    got = ctx.student("problem_33.walker", *values)
-    expected = ctx.reference("problem_33.walker", *values)
+    own = judged(ctx, p33.walker, *values)  # the reference's recursion with the student's R3 and skew
+    got = ctx.student(p33.walker, *values)
+    expected = ctx.reference(p33.walker, *values)
     drawing = configuration_figure("Problem 33: the walker at the test state", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
@@ -113,25 +114,25 @@ def check_no_slip(ctx):
     def describe(args):
         return "q = {}, qd = {}, qdd = {}".format(*(np.asarray(v).tolist() for v in args))
 
-    compare_fixed(ctx, "problem_33.walker", (np.array([0.4, -0.9]), np.array([1.2, -0.7]), np.array([-0.8, 1.5])),
+    compare_fixed(ctx, p33.walker, (np.array([0.4, -0.9]), np.array([1.2, -0.7]), np.array([-0.8, 1.5])),
                   compare, describe)
-    ctx.compare_random("problem_33.walker", VALUES, name="the contact point", tol=NO_SLIP, compare=compare,
+    ctx.compare_random(p33.walker, VALUES, name="the contact point", tol=NO_SLIP, compare=compare,
                        examples=10, describe=describe)
 
 
 @check(1, title="the Jacobians of random trees with rolling contacts are the derivatives of your own positions and "
        "orientations (finite differences)", stage=STAGE_STRUCTURE, group="jacobians")
 def check_jacobians(ctx):
-    compare_jacobian_differences(ctx, "_trees.jacobian_differences", KINDS)
+    compare_jacobian_differences(ctx, probe_trees.jacobian_differences, KINDS)
 
 
 @check(1, title="along a path q(t), the velocities and accelerations of random trees with rolling contacts are the "
        "time derivatives of your own kinematics", stage=STAGE_STRUCTURE, group="path")
 def check_path(ctx):
-    compare_path_differences(ctx, "_trees.path_differences", KINDS)
+    compare_path_differences(ctx, probe_trees.path_differences, KINDS)
 
 
 @check(2, title="random trees with rolling contacts: velocities, accelerations and Jacobians of every body",
        stage=STAGE_RANDOM, group="trees")
 def check_random_trees(ctx):
-    compare_trees(ctx, "_trees.tree_state", KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")
+    compare_trees(ctx, probe_trees.tree_state, KINDS, tree_comparison(ctx, poses_from=POSES), name="the bodies' motion")

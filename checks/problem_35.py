@@ -4,6 +4,7 @@ points the check sends and compared with the reference's numeric joint functions
 import numpy as np
 
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
+from probes import problem_35 as p35
 
 from ._shapes import as_dict, as_list
 
@@ -35,7 +36,7 @@ def _points(ctx, kind):
 
 
 def _evaluate(ctx, kind, points):
-    got = as_dict(ctx.student("problem_35.joint_function", kind, points), f"the reply for {kind}_joint_function()",
+    got = as_dict(ctx.student(p35.joint_function, kind, points), f"the reply for {kind}_joint_function()",
                   ("problems", "values"))
     for name, problem in as_dict(got["problems"], f"the problems of {kind}_joint_function()").items():
         what = f"{kind}_joint_function() has no entry {name!r}" if problem == "missing" else (
@@ -94,7 +95,7 @@ def _mistakes(kind, name, target):
 
 def _values(ctx, kind):
     points = _points(ctx, kind)
-    numeric = ctx.reference("problem_35.numeric_joint_function", kind, points)
+    numeric = ctx.reference(p35.numeric_joint_function, kind, points)
     for point, values, expected in zip(points, _evaluate(ctx, kind, points), numeric):
         for name, value in _entries(values, kind).items():
             target = np.asarray(expected[name], dtype=float)

@@ -7,6 +7,7 @@ hand out a key.
 """
 
 from grader.checking import STAGE_VALUES, Mistake, check
+from probes import problem_36 as p36
 
 from ._answers import answer_text, assert_same_diagram, assert_same_text, diagram_pairs, text_lines
 
@@ -55,7 +56,7 @@ def _has_a(got, expected):
        group="hierarchy", secret=True)
 def check_hierarchy(ctx):
     got = diagram_pairs(ctx.answer("hierarchy"), "answers.toml [problem_36] hierarchy")
-    expected = {tuple(pair) for pair in ctx.reference("problem_36.class_hierarchy")}
+    expected = {tuple(pair) for pair in ctx.reference(p36.class_hierarchy)}
     assert_same_diagram(got, expected, "Your hierarchy", [(
         "has_a", _has_a,
         "TweedleDum creates a TweedleDee and each holds the other as its foe: that is a reference (has-a), not "
@@ -63,14 +64,14 @@ def check_hierarchy(ctx):
 
 
 def _prediction(ctx, part, label):
-    expected = ctx.reference("problem_36.output", part)
+    expected = ctx.reference(p36.output, part)
     assert_same_text(answer_text(ctx, part), expected, f"Your predicted output of {label}", (),
                      _mistakes(part, expected), ORDER_HINTS[part])
 
 
 def _port(ctx, part):
-    expected = ctx.reference("problem_36.output", part)
-    assert_same_text(ctx.student("problem_36.output", part), expected, f"What your {part}() prints", (),
+    expected = ctx.reference(p36.output, part)
+    assert_same_text(ctx.student(p36.output, part), expected, f"What your {part}() prints", (),
                      _mistakes(part, expected), ORDER_HINTS[part])
 
 

@@ -28,6 +28,7 @@ from grader.checking import (
     close,
     fail,
 )
+from probes import _dynamics as probe_dynamics, problem_37 as p37
 
 from ._dynamics import (
     H,
@@ -90,10 +91,10 @@ def _physics(ctx, compare, examples=8):
     joint), ``M``, ``f``, ``g`` are judged on what the reference's code makes of them (error carried forward)."""
     extra = (H,)
     args = rich_case(extra=extra)
-    expected = ctx.reference("_dynamics.lagrange", *args)
-    judged_compare = judging(ctx, "_dynamics.lagrange", compare, lambda got, value, a: compare_mfg(got, value, {}))
-    judged_compare(ctx.student("_dynamics.lagrange", *args), expected, args)
-    ctx.compare_random("_dynamics.lagrange", tree_cases(extra=extra), name="M, f, g", tol=EXACT,
+    expected = ctx.reference(probe_dynamics.lagrange, *args)
+    judged_compare = judging(ctx, probe_dynamics.lagrange, compare, lambda got, value, a: compare_mfg(got, value, {}))
+    judged_compare(ctx.student(probe_dynamics.lagrange, *args), expected, args)
+    ctx.compare_random(probe_dynamics.lagrange, tree_cases(extra=extra), name="M, f, g", tol=EXACT,
                        compare=judged_compare, examples=examples, describe=describe_case)
 
 
@@ -126,14 +127,14 @@ def check_lagrange_equations(ctx):
 
 def _compare_mfg(ctx):
     def compare(got, expected, args):
-        compare_mfg(got, expected, ctx.reference("_dynamics.mfg_mistakes", *args))
+        compare_mfg(got, expected, ctx.reference(probe_dynamics.mfg_mistakes, *args))
 
-    return judging(ctx, "_dynamics.mfg", compare, lambda got, value, args: compare_mfg(got, value, {}))
+    return judging(ctx, probe_dynamics.mfg, compare, lambda got, value, args: compare_mfg(got, value, {}))
 
 
 @check(2, title="M, f, g of the robot arm (problem 32) at random states", stage=STAGE_RANDOM, group="robot")
 def check_robot_mfg(ctx):
-    ctx.compare_random("_dynamics.mfg", robot_cases(ROBOT, 3, ROBOT_GRAV), name="M, f, g", tol=EXACT,
+    ctx.compare_random(probe_dynamics.mfg, robot_cases(ROBOT, 3, ROBOT_GRAV), name="M, f, g", tol=EXACT,
                        compare=_compare_mfg(ctx), examples=10, describe=describe_case)
 
 
@@ -141,8 +142,8 @@ def check_robot_mfg(ctx):
 def check_tree_mfg(ctx):
     compare = _compare_mfg(ctx)
     args = rich_case()
-    compare(ctx.student("_dynamics.mfg", *args), ctx.reference("_dynamics.mfg", *args), args)
-    ctx.compare_random("_dynamics.mfg", tree_cases(), name="M, f, g", tol=EXACT, compare=compare, examples=12,
+    compare(ctx.student(probe_dynamics.mfg, *args), ctx.reference(probe_dynamics.mfg, *args), args)
+    ctx.compare_random(probe_dynamics.mfg, tree_cases(), name="M, f, g", tol=EXACT, compare=compare, examples=12,
                        describe=describe_case)
 
 
@@ -170,7 +171,7 @@ def check_forward_dynamics(ctx):
                     "right-hand side with a plus sign."),
         ]
 
-    ctx.compare_random("_dynamics.forward_dynamics", _dynamics_cases(), name="forward_dynamics(M, f, g, tau)",
+    ctx.compare_random(probe_dynamics.forward_dynamics, _dynamics_cases(), name="forward_dynamics(M, f, g, tau)",
                        tol=EXACT, mistakes=mistakes, examples=10)
 
 
@@ -200,7 +201,7 @@ def _controller_check(ctx, controller, mistakes):
                      f"the torques of {NAMES[controller]}", EXACT,
                      [Mistake(name, value, hint) for name, value, hint in mistakes(case)])
 
-    ctx.compare_random("problem_37.torques", _controller_cases().map(lambda args: (controller, *args)),
+    ctx.compare_random(p37.torques, _controller_cases().map(lambda args: (controller, *args)),
                        name=NAMES[controller], tol=EXACT, compare=compare, examples=10,
                        describe=lambda args: _describe_controller_case(args[1:]))
 
@@ -241,7 +242,7 @@ def check_computed_torque(ctx):
 
 
 def _table(ctx):
-    return ctx.reference("problem_37.trajectory", persist=True)
+    return ctx.reference(p37.trajectory, persist=True)
 
 
 def _rows_around(table, t):
@@ -295,10 +296,10 @@ def check_robot_ode(ctx):
         times = rows["t"]
         nearest = float(times[np.argmin(np.abs(times - t))])
         previous = float(times[max(np.searchsorted(times, t, side="right") - 1, 0)])
-        found = [Mistake("nearest_sample", ctx.reference("problem_37.robot_ode", controller, rows, [(nearest, y)])[0],
+        found = [Mistake("nearest_sample", ctx.reference(p37.robot_ode, controller, rows, [(nearest, y)])[0],
                          "Interpolate the desired values linearly between the table's rows (np.interp per column); "
                          "you took the nearest row."),
-                 Mistake("previous_sample", ctx.reference("problem_37.robot_ode", controller, rows,
+                 Mistake("previous_sample", ctx.reference(p37.robot_ode, controller, rows,
                                                           [(previous, y)])[0],
                          "Interpolate the desired values linearly between the table's rows (np.interp per column); "
                          "you took the row before t."),
@@ -323,7 +324,7 @@ def check_robot_ode(ctx):
 
     table = _table(ctx)
     for controller in CONTROLLERS:  # each controller on inputs of its own
-        ctx.compare_random("problem_37.robot_ode_with_mfg", _ode_cases(table, controller), name="robot_ode",
+        ctx.compare_random(p37.robot_ode_with_mfg, _ode_cases(table, controller), name="robot_ode",
                            tol=EXACT, examples=4, compare=compare, describe=lambda args: f"controller {args[0]!r}, "
                            f"t = {args[2][0][0]:.6g}, y = {np.round(args[2][0][1], 4).tolist()} (the desired "
                            "trajectory of problem 32)")
@@ -349,9 +350,9 @@ STALE_HINTS = {
 def _assert_fresh_along_a_run(ctx, controller, table):
     """robot_ode called at ``RUN_STATES`` in turn on one tree (as solve_ivp calls it) gives what it gives on a
     fresh tree: a model computed once and reused is ``stale_mass_matrix``."""
-    stale = ctx.reference("problem_37.stale_mass_matrix", controller, table, RUN_STATES)
+    stale = ctx.reference(p37.stale_mass_matrix, controller, table, RUN_STATES)
     assert_fresh_along_a_run(
-        ctx, "problem_37.robot_ode", (controller, table), RUN_STATES, f"robot_ode with the {NAMES[controller]} "
+        ctx, p37.robot_ode, (controller, table), RUN_STATES, f"robot_ode with the {NAMES[controller]} "
         f"controller", [("stale_mass_matrix", stale[key], STALE_HINTS[key]) for key in ("M", "model")],
         describe=lambda case: f"t = {case[0]:g}, y = {np.round(case[1], 4).tolist()}")
 
@@ -388,11 +389,11 @@ def _simulation(ctx, controller):
     velocity against the desired ones."""
     table = _table(ctx)
     t_end = T_RUN[controller]
-    expected = ctx.reference("problem_37.simulate", controller, table, t_end, persist=True)
+    expected = ctx.reference(p37.simulate, controller, table, t_end, persist=True)
     states = [int(i) for i in np.linspace(1, np.asarray(expected["t"]).size - 1, 3)]
     probes = [(float(expected["t"][i]), np.concatenate([expected["q"][i], expected["qd"][i]])) for i in states]
-    ode = ctx.reference("problem_37.robot_ode", controller, table, probes)
-    got = ctx.student("problem_37.simulate", controller, table, t_end, timeout=SIMULATION_TIMEOUT)
+    ode = ctx.reference(p37.robot_ode, controller, table, probes)
+    got = ctx.student(p37.simulate, controller, table, t_end, timeout=SIMULATION_TIMEOUT)
     t = np.asarray(expected["t"])
     n = t.size
     for key in ("t", "q", "qd", "x", "xd"):
@@ -434,7 +435,7 @@ def _assert_starts_on_the_table(ctx, controller):
     table = _table(ctx)
     later = _later_table(table)
     call = f"simulate({controller!r}, a table starting at q_des = {np.round(later['q'][0], 4).tolist()}, {START_RUN:g})"
-    got = ctx.student("problem_37.simulate", controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
+    got = ctx.student(p37.simulate, controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
     n = int(np.sum(np.asarray(later["t"]) <= START_RUN))
     q, qd = (run_array(got, key, (n, 3), call) for key in ("q", "qd"))
     mine, start = np.concatenate([q[0], qd[0]]), np.concatenate([later["q"][0], later["qd"][0]])
@@ -451,8 +452,8 @@ def _assert_starts_on_the_table(ctx, controller):
 def _own_model(ctx, controller, table, probes):
     """True when the student's M, f, g of the robot differ from the reference's at the states ``probes`` of the
     reference's run while their robot_ode is right given them: their run is then judged on their own model."""
-    reference = ctx.reference("problem_37.robot_ode_with_mfg", controller, table, probes)
-    answer = ctx.student("problem_37.robot_ode_with_mfg", controller, table, probes)
+    reference = ctx.reference(p37.robot_ode_with_mfg, controller, table, probes)
+    answer = ctx.student(p37.robot_ode_with_mfg, controller, table, probes)
     if not isinstance(answer, list) or len(answer) != len(probes) or not all(isinstance(a, dict) for a in answer):
         return False
     if not all(_own_mfg([mine], [ours]) is not None and is_real(_mfg_findings(mine["mfg"], ours["mfg"]))
@@ -468,7 +469,7 @@ def _judged_on_own_model(ctx, controller, table, got, expected, probes):
     (the run is then judged as usual)."""
     if not _own_model(ctx, controller, table, probes):
         return False
-    own = ctx.student("problem_37.own_run", controller, table, T_RUN[controller], timeout=SIMULATION_TIMEOUT)
+    own = ctx.student(p37.own_run, controller, table, T_RUN[controller], timeout=SIMULATION_TIMEOUT)
     for key in ("t", "q", "qd"):
         run_array(own, key, np.shape(expected[key]), "the run of your own robot_ode")
     assert_run(got, own, ("q", "qd"), BAND, f"the {NAMES[controller]} run",
@@ -485,7 +486,7 @@ def _diagnosis(ctx, controller, got, expected, probes, ode):
     start = np.concatenate([expected["q"][0], expected["qd"][0]])
     if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
         return INITIAL_HINT, "initial_state"
-    if not close(ctx.student("problem_37.robot_ode", controller, _table(ctx), probes), ode, EXACT):
+    if not close(ctx.student(p37.robot_ode, controller, _table(ctx), probes), ode, EXACT):
         return ODE_HINT, "wrong_ode"
     return None
 

@@ -14,6 +14,7 @@ import numpy as np
 
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, Mistake, Tol, assert_close, check, close
+from probes import _dynamics as probe_dynamics, problem_38 as p38
 
 from ._dynamics import WALKER, assert_energy_conserved, assert_fresh_along_a_run, assert_run, run_array, run_figure
 from ._upstream import judging
@@ -53,7 +54,7 @@ def _cases(draw):
 def _accelerations(ctx, y, I_grav):
     """``(qd, qdd)`` of the walker under ``I_grav`` from the reference's M, f, g."""
     q, qd = y[:2], y[2:]
-    mfg = ctx.reference("_dynamics.mfg", WALKER, q, qd, I_grav)
+    mfg = ctx.reference(probe_dynamics.mfg, WALKER, q, qd, I_grav)
     return np.concatenate([qd, np.linalg.solve(mfg["M"], mfg["f"] + mfg["g"])])
 
 
@@ -68,14 +69,14 @@ def check_walker_ode(ctx):
         assert_close(got[0] if isinstance(got, list) and got else got, expected[0],
                      f"walker_ode at y = {np.round(y, 4).tolist()}", EXACT, found)
 
-    compare = judging(ctx, "problem_38.walker_ode", compare,
+    compare = judging(ctx, p38.walker_ode, compare,
                       lambda got, value, args: assert_close(got[0] if isinstance(got, list) and got else got, value[0],
                                                             f"walker_ode at y = {np.round(args[0][0][1], 4).tolist()}",
                                                             EXACT))
-    ctx.compare_random("problem_38.walker_ode", _cases(), name="walker_ode", tol=EXACT, compare=compare, examples=10,
+    ctx.compare_random(p38.walker_ode, _cases(), name="walker_ode", tol=EXACT, compare=compare, examples=10,
                        describe=lambda args: f"t = {args[0][0][0]:.4g}, y = {np.round(args[0][0][1], 6).tolist()}")
-    stale = ctx.reference("problem_38.stale_mass_matrix", RUN_STATES)
-    assert_fresh_along_a_run(ctx, "problem_38.walker_ode", (), RUN_STATES, "walker_ode",
+    stale = ctx.reference(p38.stale_mass_matrix, RUN_STATES)
+    assert_fresh_along_a_run(ctx, p38.walker_ode, (), RUN_STATES, "walker_ode",
                              [("stale_mass_matrix", stale[key], STALE_HINTS[key]) for key in ("M", "model")],
                              describe=lambda case: f"t = {case[0]:g}, y = {np.round(case[1], 4).tolist()}")
 
@@ -95,8 +96,8 @@ STALE_HINTS = {
 @check(3, title="the walker from q0 = (0, 0), qd0 = (-0.1, 1) over 2 s: its energy is conserved and the run follows "
        "the reference's", stage=STAGE_VALUES, group="walker")
 def check_walker_run(ctx):
-    expected = ctx.reference("problem_38.simulate", T_END, N_OUTPUT, I_GRAV, persist=True)
-    got = ctx.student("problem_38.simulate", T_END, N_OUTPUT, I_GRAV, timeout=SIMULATION_TIMEOUT)
+    expected = ctx.reference(p38.simulate, T_END, N_OUTPUT, I_GRAV, persist=True)
+    got = ctx.student(p38.simulate, T_END, N_OUTPUT, I_GRAV, timeout=SIMULATION_TIMEOUT)
     what = f"simulate({T_END:g}, {N_OUTPUT})"
     for key in ("t", "q", "qd"):
         run_array(got, key, np.shape(expected[key]), what)
@@ -145,8 +146,8 @@ START_HINT = ("The run starts at the q0, qd0 passed to simulate(t_end, n, q0, qd
 def _assert_small_motion(ctx):
     """The walker from ``SMALL_START`` (a small motion near its equilibrium) follows the reference's run within
     ``SMALL_BAND``: a tolerance far looser than the defaults loses it, where the sheet's larger motion hides it."""
-    expected = ctx.reference("problem_38.simulate", T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, persist=True)
-    got = ctx.student("problem_38.simulate", T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, timeout=SIMULATION_TIMEOUT)
+    expected = ctx.reference(p38.simulate, T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, persist=True)
+    got = ctx.student(p38.simulate, T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, timeout=SIMULATION_TIMEOUT)
     q0, qd0 = (np.round(x, 4).tolist() for x in SMALL_START)
     what = f"simulate({T_SMALL:g}, {N_OUTPUT}, q0 = {q0}, qd0 = {qd0})"
     for key in ("t", "q", "qd"):

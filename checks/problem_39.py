@@ -9,6 +9,7 @@ import numpy as np
 
 from grader import strategies as st
 from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, assert_close, check, close, fail
+from probes import problem_39 as p39
 
 TITLE = "Turbine"
 
@@ -51,8 +52,8 @@ def _moments(rng):
 def check_inertia_aligned(ctx):
     other = ctx.draw(_moments)
     for I_axial, I_transverse, sheet in ((I_AXIAL, I_TRANSVERSE, True), (*other, False)):
-        got = ctx.student("problem_39.inertia_aligned", I_axial, I_transverse)
-        expected = ctx.reference("problem_39.inertia_aligned", I_axial, I_transverse)
+        got = ctx.student(p39.inertia_aligned, I_axial, I_transverse)
+        expected = ctx.reference(p39.inertia_aligned, I_axial, I_transverse)
         assert_close(got, I1_SHEET if sheet else expected, f"inertia_aligned({I_axial:g}, {I_transverse:g})", EXACT, [
             Mistake("axis_order", np.diag([I_transverse, I_axial, I_transverse]), "The rotor turns about the 1-axis, "
                     "its axis of symmetry: the axial moment is I1[0, 0]."),
@@ -90,11 +91,11 @@ def _assert_misaligned(got, expected, I1, alpha, extra=(), context=""):
 @check(2, title="(b) I2 = A I1 A.T for the misalignment alpha = 1e-3 about 3: the sheet's value (and the reference's "
        "for a rotor the sheet does not print)", stage=STAGE_VALUES, group="I2")
 def check_inertia_misaligned(ctx):
-    got = ctx.student("problem_39.inertia_misaligned", I1_SHEET, ALPHA)
+    got = ctx.student(p39.inertia_misaligned, I1_SHEET, ALPHA)
     assert_close(got, I2_SHEET, f"inertia_misaligned(I1, {ALPHA:g})", SMALL_ANGLE,
                  _misaligned_mistakes(I1_SHEET, ALPHA), context="(the sheet's model answer; an exact rotation by alpha is accepted as well)")
-    expected = ctx.reference("problem_39.inertia_misaligned", OTHER_I1, OTHER_ALPHA)
-    _assert_misaligned(ctx.student("problem_39.inertia_misaligned", OTHER_I1, OTHER_ALPHA), expected, OTHER_I1,
+    expected = ctx.reference(p39.inertia_misaligned, OTHER_I1, OTHER_ALPHA)
+    _assert_misaligned(ctx.student(p39.inertia_misaligned, OTHER_I1, OTHER_ALPHA), expected, OTHER_I1,
                        OTHER_ALPHA, [Mistake("typed_numbers", I2_SHEET, TYPED_HINT)],
                        "(a rotor the sheet does not print; the exact rotation is accepted as well)")
 
@@ -112,7 +113,7 @@ def check_inertia_misaligned_random(ctx):
     def compare(got, expected, args):
         _assert_misaligned(got, expected, *args)
 
-    ctx.compare_random("problem_39.inertia_misaligned", _inertias(), name="I2", tol=EXACT, compare=compare,
+    ctx.compare_random(p39.inertia_misaligned, _inertias(), name="I2", tol=EXACT, compare=compare,
                        examples=10)
 
 
@@ -155,16 +156,16 @@ def _own_rotor(rng):
        stage=STAGE_VALUES, group="forces")
 def check_bearing_forces(ctx):
     args = (I2_SHEET, OMEGA, MASS, GRAVITY, DISTANCE)
-    got = ctx.student("problem_39.bearing_forces", *args)
+    got = ctx.student(p39.bearing_forces, *args)
     _assert_forces(got, [F1_SHEET, F2_SHEET], args, FORCES, "(the sheet's model answer)")
-    expected = ctx.reference("problem_39.bearing_forces", *OTHER_ROTOR)
-    _assert_forces(ctx.student("problem_39.bearing_forces", *OTHER_ROTOR), expected, OTHER_ROTOR, EXACT,
+    expected = ctx.reference(p39.bearing_forces, *OTHER_ROTOR)
+    _assert_forces(ctx.student(p39.bearing_forces, *OTHER_ROTOR), expected, OTHER_ROTOR, EXACT,
                    "(a rotor the sheet does not print, against the reference)",
                    [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
     I2, *rest = ctx.draw(_own_rotor)
     rotor = (np.array(I2), *rest)
-    expected = ctx.reference("problem_39.bearing_forces", *rotor)
-    _assert_forces(ctx.student("problem_39.bearing_forces", *rotor), expected, rotor, EXACT,
+    expected = ctx.reference(p39.bearing_forces, *rotor)
+    _assert_forces(ctx.student(p39.bearing_forces, *rotor), expected, rotor, EXACT,
                    f"(a rotor of its own, omega = {rest[0]:.4g} rad/s, m = {rest[1]:.4g} kg, against the reference)",
                    [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
 
@@ -193,5 +194,5 @@ def check_bearing_forces_random(ctx):
         _assert_forces(got, expected, args, EXACT, "(expected: F1 + F2 = (0, m g, 0), moment about the centre of "
                                                    "gravity omega x (I2 omega), no axial force)")
 
-    ctx.compare_random("problem_39.bearing_forces", _rotors(), name="F1, F2", tol=EXACT, compare=compare,
+    ctx.compare_random(p39.bearing_forces, _rotors(), name="F1, F2", tol=EXACT, compare=compare,
                        examples=10)

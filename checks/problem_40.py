@@ -21,6 +21,7 @@ from grader.checking import (
     fail,
     format_array,
 )
+from probes import problem_40 as p40
 
 TITLE = "Equations of Motion for a System of Particles"
 
@@ -57,7 +58,7 @@ def _values(got, key, k=0):
        "m1 m2 g", stage=STAGE_SHAPE, group="symbolic")
 def check_shapes(ctx):
     point = _point(np.random.default_rng(40))
-    got = ctx.student("problem_40.evaluate", [point], timeout=30)
+    got = ctx.student(p40.evaluate, [point], timeout=30)
     for key in ("M", "f", "g"):
         _values(got, key)
 
@@ -74,7 +75,7 @@ def check_mass_matrix(ctx):
                  "The kinetic energy qd.T M qd / 2 of moving masses is positive: M = sum(m J.T J).",
                  "not_positive_definite")
 
-    ctx.compare_random("problem_40.evaluate", _points(), name="M", tol=EXACT, compare=compare, examples=8,
+    ctx.compare_random(p40.evaluate, _points(), name="M", tol=EXACT, compare=compare, examples=8,
                        describe=_describe)
 
 
@@ -108,7 +109,7 @@ def check_lagrange(ctx):
                     "with the bias acceleration sigma = d(J qd)/dq qd."),
         ], context=f"at {_describe((args[0][:1],))} (expected: Lagrange's equations with your own M)")
 
-    ctx.compare_random("problem_40.evaluate", _lagrange_points(), name="f", tol=DIFFERENCES, compare=compare,
+    ctx.compare_random(p40.evaluate, _lagrange_points(), name="f", tol=DIFFERENCES, compare=compare,
                        examples=8, describe=lambda args: _describe((args[0][:1],)))
 
 
@@ -128,5 +129,5 @@ def check_values(ctx):
                          [Mistake(name, factor * value, hint) for name, factor, hint in hints[key]],
                          context=f"at {_describe(args)}")
 
-    ctx.compare_random("problem_40.evaluate", _points(), name="M, f, g", tol=EXACT, compare=compare, examples=10,
+    ctx.compare_random(p40.evaluate, _points(), name="M, f, g", tol=EXACT, compare=compare, examples=10,
                        describe=_describe)

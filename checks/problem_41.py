@@ -7,6 +7,7 @@ by what the computation shows about the chosen option, without naming the key.
 
 from checks._answers import choice
 from grader.checking import STAGE_VALUES, check, fail
+from probes import problem_41 as p41
 
 TITLE = "Understanding Dynamics"
 
@@ -26,11 +27,11 @@ def _choice(ctx, key):
 
 
 def _key(ctx, key):
-    return int(ctx.reference("problem_41.keys", persist=True)[key])
+    return int(ctx.reference(p41.keys, persist=True)[key])
 
 
 def _residual(ctx, key, choice):
-    return ctx.reference("problem_41.residuals", L, M, persist=True)[key][str(choice)]
+    return ctx.reference(p41.residuals, L, M, persist=True)[key][str(choice)]
 
 
 @check(1, title="(a) the chosen law of angular momentum holds", stage=STAGE_VALUES, group="a", secret=True)

@@ -23,6 +23,7 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import problem_42 as p42
 
 from ._answers import choice
 from ._dynamics import subsample
@@ -102,7 +103,7 @@ def check_events(ctx):
             "direction_hint": "direction = -1 counts a crossing from + to -; +1 would wait for the velocity to rise "
                               "through zero, which never happens in this flight."})
 
-    ctx.compare_random("problem_42.events", _states(), name="the events", tol=EXACT, compare=compare, examples=6,
+    ctx.compare_random(p42.events, _states(), name="the events", tol=EXACT, compare=compare, examples=6,
                        describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}")
 
 
@@ -136,8 +137,8 @@ def _flight(got, expected, v0, drag, bands, g=None):
        "(within 2e-3 s) and heights; the landing ends the run and is not the launch; thrown on the Moon it follows "
        "its g", stage=STAGE_VALUES, group="events")
 def check_flight(ctx):
-    expected = ctx.reference("problem_42.throw", V0, DRAG)
-    got = ctx.student("problem_42.throw", V0, DRAG, timeout=20)
+    expected = ctx.reference(p42.throw, V0, DRAG)
+    got = ctx.student(p42.throw, V0, DRAG, timeout=20)
     ctx.add_figure(figure("Problem 42: the height of the ball", "t [s]", "height [m]",
                           student=[("height", *subsample(got["t"], np.asarray(got["y"])[:, 0]))],
                           reference=[("height", *subsample(expected["t"], np.asarray(expected["y"])[:, 0]))]))
@@ -156,8 +157,8 @@ MOON_HINT = ("Your flight is the one under the sheet's g = 9.81 whatever g throw
 
 def _assert_moon(ctx, sheet):
     """The ball thrown with ``g = MOON`` lands where the reference's does, not where the sheet's ball lands."""
-    expected = ctx.reference("problem_42.throw", V0, DRAG, MOON)
-    got = ctx.student("problem_42.throw", V0, DRAG, MOON, timeout=20)
+    expected = ctx.reference(p42.throw, V0, DRAG, MOON)
+    got = ctx.student(p42.throw, V0, DRAG, MOON, timeout=20)
     if got["t_land"] is not None and close(got["t_land"], sheet["t_land"], TIME):
         assert_close(got["t_land"], expected["t_land"], f"t_land of throw(v0 = {V0:g}, drag = {DRAG:g}, g = {MOON:g})",
                      TIME, [Mistake("typed_numbers", sheet["t_land"], MOON_HINT)],
@@ -174,7 +175,7 @@ def _balls(draw):
 @check(2, title="throw() on random balls (v0 in [2, 30] m/s, k in [0, 0.5] 1/m): apex and landing times and the "
        "apex height within the bands", stage=STAGE_RANDOM, group="events")
 def check_flight_random(ctx):
-    ctx.compare_random("problem_42.throw", _balls(), name="the flight", tol=TIME, examples=5,
+    ctx.compare_random(p42.throw, _balls(), name="the flight", tol=TIME, examples=5,
                        compare=lambda got, expected, args: _flight(got, expected, *args, RANDOM_BANDS),
                        describe=lambda args: f"v0 = {args[0]:.4g} m/s, drag = {args[1]:.4g} 1/m")
 
@@ -186,7 +187,7 @@ def check_flight_random(ctx):
        stage=STAGE_VALUES, group="b", secret=True)
 def check_direction_choice(ctx):
     value = choice(ctx, "b", (1, 2, 3, 4), "(b)")
-    key = ctx.reference("problem_42.key", persist=True)
+    key = ctx.reference(p42.key, persist=True)
     if value != key["b"]:
         fail(f"(b): option {value} is not what the integration shows: run throw() with the landing event's "
              f"direction set to 0 and look where the flight ends.",

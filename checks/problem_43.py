@@ -26,6 +26,7 @@ from grader.checking import (
     fail,
     format_array,
 )
+from probes import problem_43 as p43
 
 TITLE = "Equations of Motion for a System with Implicit Constraints"
 
@@ -103,7 +104,7 @@ def check_mass_matrix(ctx):
                     "translations, the inertia theta to the rotation, M = diag(m, m, theta)."),
         ], context=f"(m = {m:.4g}, theta = {theta:.4g})")
 
-    ctx.compare_random("problem_43.mass_matrix", _masses(), name="M", tol=EXACT, compare=compare, examples=5)
+    ctx.compare_random(p43.mass_matrix, _masses(), name="M", tol=EXACT, compare=compare, examples=5)
 
 
 @check(1, title="(a) forces(m, g): f = 0 and gravity g = (0, -m g, 0) at random masses", stage=STAGE_STRUCTURE,
@@ -118,7 +119,7 @@ def check_forces(ctx):
                     "of gravity."),
         ], context=f"(m = {m:.4g}, g = {g:.4g})")
 
-    ctx.compare_random("problem_43.forces", _masses(), name="f, g", tol=EXACT, compare=compare, examples=5)
+    ctx.compare_random(p43.forces, _masses(), name="f, g", tol=EXACT, compare=compare, examples=5)
 
 
 # ------------------------------------------------------------------------------------------ the constraint
@@ -135,7 +136,7 @@ def _terms(ctx, name, tol, examples=8):
     """Compare ``constraint_terms`` at random states with ``compare(got, expected, args)``."""
 
     def run(compare):
-        ctx.compare_random("problem_43.constraint_terms", _constraint_cases(), name=name, tol=tol, compare=compare,
+        ctx.compare_random(p43.constraint_terms, _constraint_cases(), name=name, tol=tol, compare=compare,
                            examples=examples, describe=_describe)
 
     return run
@@ -203,7 +204,7 @@ def check_constraint_bias(ctx):
                              f"constraint)")
         assert_close(sigma, expected["sigma"], "sigma", EXACT, context=f"at {_describe(args[:2])}")
 
-    ctx.compare_random("problem_43.constraint_terms", _constraint_cases().map(lambda a: (*a[:3], H_PATH)),
+    ctx.compare_random(p43.constraint_terms, _constraint_cases().map(lambda a: (*a[:3], H_PATH)),
                        name="sigma", tol=CURVATURE, compare=compare, examples=8, describe=_describe)
 
 
@@ -211,7 +212,7 @@ def check_constraint_bias(ctx):
 
 
 def _mistakes(ctx, args, key):
-    found = ctx.reference("problem_43.system_mistakes", *args)
+    found = ctx.reference(p43.system_mistakes, *args)
     return [Mistake(name, np.asarray(value[key]), HINTS[name]) for name, value in found.items()]
 
 
@@ -229,7 +230,7 @@ def check_constrained_system(ctx):
         assert_close(A, A_ref, "A", EXACT, mistakes["A"], context=where)
         assert_close(b, b_ref, "b", EXACT, mistakes["b"], context=where)
 
-    ctx.compare_random("problem_43.constrained_system", _dynamic_cases(), name="A, b", tol=EXACT, compare=compare,
+    ctx.compare_random(p43.constrained_system, _dynamic_cases(), name="A, b", tol=EXACT, compare=compare,
                        examples=8, describe=_describe)
 
 
@@ -250,7 +251,7 @@ def check_accelerations_physics(ctx):
             Mistake("constraint_force_sign", -J.T @ lam, HINTS["constraint_force_sign"]),
         ], context=f"{where} (expected: J.T lam, the support's force, with your own M, f, g, J)")
 
-    ctx.compare_random("problem_43.accelerations", _dynamic_cases(), name="qdd, lam", tol=PHYSICS, compare=compare,
+    ctx.compare_random(p43.accelerations, _dynamic_cases(), name="qdd, lam", tol=PHYSICS, compare=compare,
                        examples=8, describe=_describe)
 
 
@@ -262,7 +263,7 @@ def check_accelerations_values(ctx):
         assert_close(got["lam"], expected["lam"], "lam", EXACT, mistakes["lam"], context=where)
         assert_close(got["qdd"], expected["qdd"], "qdd", EXACT, mistakes["qdd"], context=where)
 
-    ctx.compare_random("problem_43.accelerations", _dynamic_cases(), name="qdd, lam", tol=EXACT, compare=compare,
+    ctx.compare_random(p43.accelerations, _dynamic_cases(), name="qdd, lam", tol=EXACT, compare=compare,
                        examples=8, describe=_describe)
 
 
@@ -277,16 +278,16 @@ TYPED_HINT = ("These are the sheet's numbers whatever the state: compute qdd and
        "print", stage=STAGE_VALUES, group="bar")
 def check_sheet(ctx):
     args = (Q0, np.zeros(3), MASS, THETA, GRAVITY)
-    expected = ctx.reference("problem_43.accelerations", *args)
+    expected = ctx.reference(p43.accelerations, *args)
     mistakes = {key: _mistakes(ctx, args, key) for key in ("qdd", "lam")}
-    got = ctx.student("problem_43.accelerations", *args)
+    got = ctx.student(p43.accelerations, *args)
     lam = float(np.asarray(expected["lam"]).reshape(-1)[0])
     lam_mistakes = [*mistakes["lam"], Mistake("sheet_misprint", np.array([SHEET_LAMBDA]), ERRATUM)]
     assert_close(got["qdd"], SHEET_QDD, "qdd", SHEET, mistakes["qdd"], context="(the sheet's state)")
     assert_close(got["lam"], np.array([lam]), "lam", SHEET, lam_mistakes, context="(the sheet's state)", note=ERRATUM)
-    expected = ctx.reference("problem_43.accelerations", *OTHER_CASE)
+    expected = ctx.reference(p43.accelerations, *OTHER_CASE)
     mistakes = {key: _mistakes(ctx, OTHER_CASE, key) for key in ("qdd", "lam")}
-    got = ctx.student("problem_43.accelerations", *OTHER_CASE)
+    got = ctx.student(p43.accelerations, *OTHER_CASE)
     where = f"at {_describe(OTHER_CASE)} (a state the sheet does not print)"
     assert_close(got["qdd"], expected["qdd"], "qdd", EXACT, [Mistake("typed_numbers", SHEET_QDD, TYPED_HINT),
                                                              *mistakes["qdd"]], context=where)

@@ -26,6 +26,7 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import problem_44 as p44
 
 from ._dynamics import assert_run, run_array, same_crossings, subsample
 
@@ -101,7 +102,7 @@ def check_event_function(ctx):
             fail(f"second_contact.direction is {got['direction']!r}, expected -1 (or 0): the height falls through "
                  f"zero when the bar hits.", DIRECTION_HINT, "event_direction")
 
-    ctx.compare_random("problem_44.event", _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
+    ctx.compare_random(p44.event, _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
                        describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}, s = {args[1]:.4g}, "
                        f"d = {args[2]:.4g}")
 
@@ -112,10 +113,10 @@ def check_event_function(ctx):
 def _runs(ctx):
     """The student's run of the sheet's bar and the reference's; the student's is simulated once per grading (kept
     on the context, which lives for the checks of this problem)."""
-    expected = ctx.reference("problem_44.simulate", Q0, T_END, S, persist=True)
+    expected = ctx.reference(p44.simulate, Q0, T_END, S, persist=True)
     runs = ctx.__dict__.setdefault("problem_44_runs", {})
     if "sheet" not in runs:
-        runs["sheet"] = ctx.student("problem_44.simulate", Q0, T_END, S, timeout=SIMULATION_TIMEOUT)
+        runs["sheet"] = ctx.student(p44.simulate, Q0, T_END, S, timeout=SIMULATION_TIMEOUT)
     return runs["sheet"], expected
 
 
@@ -161,13 +162,13 @@ SHEET_PARTS = {"m, theta and g": (0.5, 1.0, 9.81), "g": (0.8, 0.6, 9.81), "m and
 def _assert_other_bar(ctx, sheet):
     """The run of ``OTHER_BAR`` hits the second support when the reference's does: a bar_ode or simulate that keeps
     the sheet's m, theta or g whatever it is given fails (``typed_numbers``)."""
-    expected = ctx.reference("problem_44.simulate", Q0, T_END, S, OTHER_BAR, persist=True)
+    expected = ctx.reference(p44.simulate, Q0, T_END, S, OTHER_BAR, persist=True)
     kept = {part: sheet if part == "m, theta and g" else
-            ctx.reference("problem_44.simulate", Q0, T_END, S, bar, persist=True)
+            ctx.reference(p44.simulate, Q0, T_END, S, bar, persist=True)
             for part, bar in SHEET_PARTS.items()}
     m, theta, g = OTHER_BAR
     what = f"simulate(q0, {T_END:g}, {S:g}, m = {m:g}, theta = {theta:g}, g = {g:g})"
-    got = ctx.student("problem_44.simulate", Q0, T_END, S, OTHER_BAR, timeout=SIMULATION_TIMEOUT)
+    got = ctx.student(p44.simulate, Q0, T_END, S, OTHER_BAR, timeout=SIMULATION_TIMEOUT)
     typed = [Mistake("typed_numbers", run["t_event"], f"Your run keeps the sheet's {part} whatever bar it is given: "
                      f"pass simulate's m, theta, g on to bar_ode (solve_ivp(..., args=(m, theta, g))) and bar_ode's "
                      f"on to the accelerations of problem 43.")
@@ -218,7 +219,7 @@ def _starts(draw):
 @check(2, title="simulate(q0, 1.5, s) from random states on the support: the event within the bands",
        stage=STAGE_RANDOM, group="run")
 def check_event_random(ctx):
-    ctx.compare_random("problem_44.simulate", _starts(), name="the event", tol=EVENT_TIME, examples=3,
+    ctx.compare_random(p44.simulate, _starts(), name="the event", tol=EVENT_TIME, examples=3,
                        compare=lambda got, expected, args: _event(got, expected, f"simulate(q0 = "
                                                                   f"{np.round(args[0], 4).tolist()}, ...)",
                                                                   RANDOM_BANDS),

@@ -21,6 +21,7 @@ from grader.checking import (
     check,
     fail,
 )
+from probes import problem_45 as p45
 
 TITLE = "Collision of Falling Bar"
 
@@ -86,7 +87,7 @@ def check_jacobian(ctx):
                     "contact c2 at s."),
         ], context=f"at {_describe(args)} (expected: the gradients of c1 and c2 at q- = (l, d, 0))")
 
-    ctx.compare_random("problem_45.evaluate", _points("J"), name="J", tol=DIFFERENCES, compare=compare, examples=8,
+    ctx.compare_random(p45.evaluate, _points("J"), name="J", tol=DIFFERENCES, compare=compare, examples=8,
                        describe=_describe)
 
 
@@ -115,7 +116,7 @@ def check_impulses(ctx):
         ], context=f"at {_describe(args)} (with J = [[0, 1, -l], [0, 1, s - l]], M = diag(m, m, theta), c_dot- = "
                    f"(0, s phid); qd+ = qd- + M^-1 J.T Lam)")
 
-    ctx.compare_random("problem_45.evaluate", _points("Lam"), name="Lam", tol=IMPACT, compare=compare, examples=8,
+    ctx.compare_random(p45.evaluate, _points("Lam"), name="Lam", tol=IMPACT, compare=compare, examples=8,
                        describe=_describe)
 
 
@@ -135,5 +136,5 @@ def check_opening_limit(ctx):
                     "is not one."),
         ], context=f"at {_describe(args)}")
 
-    ctx.compare_random("problem_45.evaluate", _points("s_limit"), name="s_limit", tol=EXACT, compare=compare,
+    ctx.compare_random(p45.evaluate, _points("s_limit"), name="s_limit", tol=EXACT, compare=compare,
                        examples=10, describe=_describe)

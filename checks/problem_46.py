@@ -28,6 +28,7 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import problem_37 as p37, problem_46 as p46
 
 from ._dynamics import assert_fresh_along_a_run, assert_run, run_array, same_crossings, subsample
 from ._effects import assert_no_side_effects, same, shown
@@ -101,17 +102,17 @@ def _event_cases(draw):
 def _taut(ctx):
     """The state where the reference's run finds the wire taut (the event: the residual is zero there) and the
     student's event function's value at it."""
-    table = ctx.reference("problem_37.trajectory", persist=True)
-    run = ctx.reference("problem_46.simulate", table, True, T_END, persist=True)
+    table = ctx.reference(p37.trajectory, persist=True)
+    run = ctx.reference(p46.simulate, table, True, T_END, persist=True)
     state = np.concatenate([np.asarray(run["q_minus"], dtype=float), np.asarray(run["qd_minus"], dtype=float)])
-    return state, ctx.reference("problem_46.event", [state])["values"][0]
+    return state, ctx.reference(p46.event, [state])["values"][0]
 
 
 @check(2, title="make_wire_event: the residual |anchor - I_r_E| - wire_length at random states (or a residual with "
        "the same zero crossings), terminal, direction +1 (or 0: the same run)", stage=STAGE_STRUCTURE, group="wire")
 def check_event_function(ctx):
     taut, at_taut = _taut(ctx)
-    mine_at_taut = as_array(ctx.student("problem_46.event", [taut])["values"], "wire_stretched(t, y)", (1,))[0]
+    mine_at_taut = as_array(ctx.student(p46.event, [taut])["values"], "wire_stretched(t, y)", (1,))[0]
 
     def compare(got, expected, args):
         if not isinstance(got, dict):
@@ -135,8 +136,8 @@ def check_event_function(ctx):
                  "direction = +1 detects only crossings from - to +; -1 would wait for the wire to go slack again "
                  "(it never does) and 0 also fires on that.", "event_direction")
 
-    compare = judging(ctx, "problem_46.event", compare)
-    ctx.compare_random("problem_46.event", _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
+    compare = judging(ctx, p46.event, compare)
+    ctx.compare_random(p46.event, _event_cases(), name="the event", tol=EXACT, compare=compare, examples=6,
                        describe=lambda args: f"y = {[np.round(y, 4).tolist() for y in args[0]]}")
 
 
@@ -163,10 +164,10 @@ def check_constraint_jacobian(ctx):
             Mistake("jacobian_sign", fd, CONSTRAINT_HINTS["jacobian_sign"]),
         ], context=f"at q = {np.round(args[0], 4).tolist()} (expected: -d/dq of your own event residual)")
 
-    compare = judging(ctx, "problem_46.event_differences", compare,
+    compare = judging(ctx, p46.event_differences, compare,
                       lambda got, value, args: assert_close(got["J"], value["J"], "J_lam", EXACT,
                                                             context=f"at q = {np.round(args[0], 4).tolist()}"))
-    ctx.compare_random("problem_46.event_differences", _states().map(lambda a: (a[0], H)), name="J_lam",
+    ctx.compare_random(p46.event_differences, _states().map(lambda a: (a[0], H)), name="J_lam",
                        tol=DIFFERENCES, compare=compare, examples=6,
                        describe=lambda args: f"q = {np.round(args[0], 4).tolist()}")
 
@@ -183,7 +184,7 @@ def _term_cases(draw):
 def check_constraint_terms(ctx):
     def compare(got, expected, args):
         q, qd, baumgarte = args[0][0]
-        mistakes = ctx.reference("problem_46.constraint_mistakes", q, qd, baumgarte)
+        mistakes = ctx.reference(p46.constraint_mistakes, q, qd, baumgarte)
         if not isinstance(got, list) or not got or not isinstance(got[0], dict):
             fail(f"constraint_terms must return (J_lam, sigma_lam), got {str(got)[:200]}", diagnosis="format")
         for key, name in (("J", "J_lam"), ("sigma", "sigma_lam")):
@@ -192,8 +193,8 @@ def check_constraint_terms(ctx):
                      if not close(terms[key], value, EXACT)]
             assert_close(got[0][key], value, name, EXACT, found, context=f"(baumgarte = {baumgarte})")
 
-    compare = judging(ctx, "problem_46.constraint_terms", compare)
-    ctx.compare_random("problem_46.constraint_terms", _term_cases(), name="J_lam, sigma_lam", tol=EXACT,
+    compare = judging(ctx, p46.constraint_terms, compare)
+    ctx.compare_random(p46.constraint_terms, _term_cases(), name="J_lam, sigma_lam", tol=EXACT,
                        compare=compare, examples=10,
                        describe=lambda args: f"q = {np.round(args[0][0][0], 4).tolist()}, qd = "
                        f"{np.round(args[0][0][1], 4).tolist()}, baumgarte = {args[0][0][2]}")
@@ -254,7 +255,7 @@ def check_plastic_impact(ctx):
         assert_close(qd_plus, expected_plus, "qd_plus", EXACT)
         assert_close(Lam, expected_Lam, "Lam", EXACT)
 
-    ctx.compare_random("problem_46.impact", _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
+    ctx.compare_random(p46.impact, _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
                        describe=lambda args: "M = {}, J = {}, qd_minus = {}".format(
                            *(np.round(x, 4).tolist() for x in args[0][0])))
     assert_no_side_effects(ctx, "problem_46", "plastic_impact", *SIDE_IMPACTS, ("M", "J", "qd_minus"))
@@ -287,7 +288,7 @@ def check_constrained_dynamics(ctx):
         ])
         assert_close(qdd, expected_qdd, "qdd", EXACT)
 
-    ctx.compare_random("problem_46.constrained", _constrained_cases(), name="qdd, lam", tol=EXACT, compare=compare,
+    ctx.compare_random(p46.constrained, _constrained_cases(), name="qdd, lam", tol=EXACT, compare=compare,
                        examples=10, describe=lambda args: "M = {}, f = {}, g = {}, tau = {}, J = {}, sigma = {}".format(
                            *(np.round(x, 4).tolist() for x in args[0][0])))
 
@@ -307,11 +308,11 @@ TYPED_EVENT_HINT = ("Your run has the sheet's event time whatever wire it is giv
 def _run(ctx, baumgarte):
     """The student's run and the reference's; the student's is simulated once per grading (kept on the context,
     which lives for the checks of this problem)."""
-    table = ctx.reference("problem_37.trajectory", persist=True)
-    expected = ctx.reference("problem_46.simulate", table, baumgarte, T_END, persist=True)
+    table = ctx.reference(p37.trajectory, persist=True)
+    expected = ctx.reference(p46.simulate, table, baumgarte, T_END, persist=True)
     runs = ctx.__dict__.setdefault("problem_46_runs", {})
     if baumgarte not in runs:
-        runs[baumgarte] = ctx.student("problem_46.simulate", table, baumgarte, T_END, timeout=SIMULATION_TIMEOUT)
+        runs[baumgarte] = ctx.student(p46.simulate, table, baumgarte, T_END, timeout=SIMULATION_TIMEOUT)
     return runs[baumgarte], expected
 
 
@@ -370,12 +371,12 @@ def check_event_and_impact(ctx):
 def _assert_other_wire(ctx):
     """The run with a wire hung elsewhere (``OTHER_WIRE``) becomes taut when the reference's does, and the impact
     happens there: the sheet's event time typed in fails."""
-    table = ctx.reference("problem_37.trajectory", persist=True)
+    table = ctx.reference(p37.trajectory, persist=True)
     anchor, length = OTHER_WIRE
-    expected = ctx.reference("problem_46.simulate", table, True, T_OTHER, OTHER_WIRE, persist=True)
+    expected = ctx.reference(p46.simulate, table, True, T_OTHER, OTHER_WIRE, persist=True)
     what = (f"simulate(trajectory, baumgarte=True, t_end={T_OTHER:g}, anchor={anchor.tolist()}, "
             f"wire_length={length:g})")
-    got = ctx.student("problem_46.simulate", table, True, T_OTHER, OTHER_WIRE, timeout=SIMULATION_TIMEOUT)
+    got = ctx.student(p46.simulate, table, True, T_OTHER, OTHER_WIRE, timeout=SIMULATION_TIMEOUT)
     t_event = _event(got, what, expected["t_event"])
     assert_close(t_event, expected["t_event"], f"t_event of {what}", EVENT_TIME,
                  [Mistake("typed_numbers", SHEET_EVENT_TIME, TYPED_EVENT_HINT)],
@@ -449,10 +450,10 @@ def _assert_constrained_ode(ctx):
     """constrained_ode called in turn on one robot gives what it gives on a fresh one (a mass matrix computed once is
     ``stale_mass_matrix``), and its value with baumgarte=True differs from that with False wherever the reference's
     do (an ignored flag is ``baumgarte_ignored``)."""
-    table = ctx.reference("problem_37.trajectory", persist=True)
-    ours = ctx.reference("problem_46.constrained_ode", table, WIRE_CASES)
-    stale = ctx.reference("problem_46.stale_mass_matrix", table, WIRE_CASES)
-    mine = assert_fresh_along_a_run(ctx, "problem_46.constrained_ode", (table,), WIRE_CASES, "constrained_ode",
+    table = ctx.reference(p37.trajectory, persist=True)
+    ours = ctx.reference(p46.constrained_ode, table, WIRE_CASES)
+    stale = ctx.reference(p46.stale_mass_matrix, table, WIRE_CASES)
+    mine = assert_fresh_along_a_run(ctx, p46.constrained_ode, (table,), WIRE_CASES, "constrained_ode",
                                     [("stale_mass_matrix", stale, STALE_HINT)], describe=_describe_wire_case)
     for k in range(0, len(WIRE_CASES), 2):
         (on, off), (ours_on, ours_off) = mine[k:k + 2], ours[k:k + 2]

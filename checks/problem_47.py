@@ -24,6 +24,7 @@ from grader.checking import (
     fail,
     format_array,
 )
+from probes import problem_47 as p47
 
 TITLE = "Bowling Pin"
 MANUAL = {
@@ -76,7 +77,7 @@ def check_constraint(ctx):
                     "the corner, at -x_cog from the centre of gravity, rises by x_cog sin phi."),
         ], context=f"at {_describe_contact(args)}")
 
-    ctx.compare_random("problem_47.contact", _contacts(), name="c", tol=EXACT, compare=compare, examples=8,
+    ctx.compare_random(p47.contact, _contacts(), name="c", tol=EXACT, compare=compare, examples=8,
                        describe=_describe_contact)
 
 
@@ -94,7 +95,7 @@ def check_jacobian(ctx):
         ], context=f"at {_describe_contact(args)} (expected: dc/dq of your own constraint)")
         assert_close(J, expected["J"], "J", EXACT, context=f"at {_describe_contact(args)}")
 
-    ctx.compare_random("problem_47.contact", _contacts(), name="J", tol=GRADIENT, compare=compare, examples=8,
+    ctx.compare_random(p47.contact, _contacts(), name="J", tol=GRADIENT, compare=compare, examples=8,
                        describe=_describe_contact)
 
 
@@ -143,7 +144,7 @@ def check_plastic_impact(ctx):
         assert_close(qd_plus, expected_plus, "qd_plus", EXACT, context=where)
         assert_close(Lam, expected_Lam, "Lam", EXACT, context=where)
 
-    ctx.compare_random("problem_47.impact", _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
+    ctx.compare_random(p47.impact, _impacts(), name="the impact", tol=EXACT, compare=compare, examples=10,
                        describe=_describe_impact)
     assert_no_side_effects(ctx, "problem_47", "plastic_impact", *SIDE_IMPACTS,
                            ("q_minus", "qd_minus", "m", "theta", "x_cog", "y_cog"))
@@ -174,7 +175,7 @@ def check_impulse(ctx):
                     "a rotation, and the corner gives way (J M^-1 J.T includes the lever arm over theta)."),
         ]
 
-    ctx.compare_random("problem_47.impulse", _impulse_cases(), name="Lam", tol=EXACT, mistakes=mistakes,
+    ctx.compare_random(p47.impulse, _impulse_cases(), name="Lam", tol=EXACT, mistakes=mistakes,
                        examples=10, describe=_describe_impulse)
 
 
@@ -212,5 +213,5 @@ def check_maximum(ctx):
             Mistake("missing_mass", expected_max / m, "An impulse stops a momentum: m yd-, not the velocity alone."),
         ], context=where)
 
-    ctx.compare_random("problem_47.maximum", _maximum_cases(), name="phi_hat, Lam_max", tol=EXACT, compare=compare,
+    ctx.compare_random(p47.maximum, _maximum_cases(), name="phi_hat, Lam_max", tol=EXACT, compare=compare,
                        examples=8, describe=_describe_maximum)

@@ -24,6 +24,7 @@ from grader.errors import (GraderFault, ProbeFault, SandboxError, StudentCodeErr
 from grader.faults import FAULTS, exit_code, fault_of, faults_in, stored
 from grader.gradescope import run as run_autograder
 from grader.sandbox import Limits, sandbox_mode
+import probes
 
 from .submissions import ROOT, build_hostile, copy_reference
 
@@ -87,7 +88,7 @@ def _asks_for(probe: str, instead: str, monkeypatch) -> None:
 
     real = Context.student
     monkeypatch.setattr(Context, "student", lambda self, name, *args, **options: real(
-        self, instead if name == probe else name, *args, **options))
+        self, instead if probes.name_of(name) == probe else name, *args, **options))
 
 
 def _reference_raises(monkeypatch) -> None:
@@ -96,7 +97,7 @@ def _reference_raises(monkeypatch) -> None:
     real = Context.reference
 
     def reference(self, name, *args, **options):
-        if name == "problem_06.frames_with_factors":
+        if probes.name_of(name) == "problem_06.frames_with_factors":
             raise RuntimeError("a defect of the reference")
         return real(self, name, *args, **options)
 
