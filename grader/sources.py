@@ -49,7 +49,7 @@ PROJECT_PACKAGES = ("grader", "checks", "probes", "reference")
 MACHINERY = ("grader.runner", "grader.context", "grader.sandbox.worker", "grader.sandbox.forkserver")
 #: third-party packages whose versions can change a verdict (random inputs, numerics)
 VERDICT_DEPENDENCIES = ("numpy", "scipy", "sympy", "hypothesis", "mujoco")
-#: strings shorter than this are read as possible names of modules or probes
+#: strings shorter than this are read as possible names of modules
 _NAME_LENGTH = 80
 
 
@@ -112,7 +112,7 @@ def parsed(path: Path) -> ast.Module:
 
 
 def strings(tree: ast.Module) -> set[str]:
-    """The string constants of ``tree`` short enough to name a module or a probe."""
+    """The string constants of ``tree`` short enough to name a module."""
     return {node.value for node in ast.walk(tree)
             if isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) < _NAME_LENGTH}
 
@@ -167,10 +167,10 @@ def named_modules(tree: ast.Module) -> set[str]:
 
 
 def verdict_sources(problem: int) -> list[Path]:
-    """Every file that decides a verdict of ``problem``: its check module and what it imports, the grader's
-    machinery, the probes the checks name (``"_trees.tree_state"``) or import, the reference modules those
-    probes reach (by import or by name, ``module(pkg, "tree")``), the matching student-template modules (laid
-    under every submission) and the reference's answers."""
+    """Every file that decides a verdict of ``problem``: its check module and what it imports (the probe modules
+    among them: a check names a probe by its function, ``from probes import problem_22 as p22``), the grader's
+    machinery, the reference modules the probes reach (by import or by name, ``module(pkg, "tree")``), the
+    matching student-template modules (laid under every submission) and the reference's answers."""
     from .problems import problem_module
 
     seeds = [problem_module(problem).__name__, *MACHINERY, "probes", "probes._codec", "reference"]
@@ -189,12 +189,8 @@ def verdict_sources(problem: int) -> list[Path]:
         tree = parsed(path)
         queue += sorted(project_imports(tree, package))
         top = name.split(".")[0]
-        for text in strings(tree):
-            head = text.split(".")[0]
-            if top == "checks" and "." in text and module_file(f"probes.{head}") is not None:
-                queue.append(f"probes.{head}")
-            if top in ("probes", "checks") and text.isidentifier():
-                reference_names.add(text)
+        if top in ("probes", "checks"):
+            reference_names |= {text for text in strings(tree) if text.isidentifier()}
         if top == "reference":
             reference_names.add(name.rpartition(".")[2])
     for text in sorted(reference_names):

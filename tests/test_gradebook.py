@@ -164,6 +164,30 @@ def test_grader_version_follows_the_check_module(tmp_path, monkeypatch):
         problem_module.cache_clear()
 
 
+def test_the_probes_a_check_module_imports_decide_its_verdicts(tmp_path, monkeypatch):
+    """A check names a probe by its function (``from probes import problem_22 as p22``): the dependency analysis
+    follows that import to the probe module and on to the reference module the probe reaches; a probe named only
+    in a string is no dependency."""
+    from grader.problems import problem_module
+    from grader.sources import verdict_sources
+
+    source = tmp_path / "problem_98.py"
+    module = ModuleType("checks.problem_98")
+    module.__file__ = str(source)
+    monkeypatch.setitem(sys.modules, "checks.problem_98", module)
+    problem_module.cache_clear()
+    try:
+        source.write_text("TITLE = 'x'\nPROBE = 'problem_22.loop'\n")
+        named = {f"{path.parent.name}/{path.name}" for path in verdict_sources(98)}
+        source.write_text("from probes import problem_22 as p22\n\nTITLE = 'x'\nPROBE = p22.loop\n")
+        imported = {f"{path.parent.name}/{path.name}" for path in verdict_sources(98)}
+    finally:
+        problem_module.cache_clear()
+    assert "probes/problem_22.py" not in named and "reference/problem_22.py" not in named
+    assert {"probes/problem_22.py", "reference/problem_22.py", "student_template/problem_22.py"} <= imported
+    assert named < imported
+
+
 VERSIONS_SCRIPT = """
 import json
 from grader.sources import grader_version
