@@ -2,6 +2,7 @@
 (``Body.forward_kinematics``, ``Joint.successor_pose``, ``RotationalJoint.joint_pose``)."""
 
 from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, STRUCTURE, assert_rotation, check
+from probes import problem_24 as p24
 
 from ._trees import (
     assert_tree_no_side_effects,
@@ -78,7 +79,7 @@ def check_side_effects(ctx):
 import numpy as np  # noqa: E402
 
 from grader.checking import EXACT, Tol, assert_close, close  # noqa: E402
-from probes import _dynamics as probe_dynamics, problem_24 as p24
+from probes import _dynamics as probe_dynamics  # noqa: E402
 
 from ._dynamics import assert_energy_conserved, assert_run, run_array, run_figure  # noqa: E402
 

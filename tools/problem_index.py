@@ -6,7 +6,8 @@
 The index is read from the source files alone (nothing is imported):
 
 * checks: ``checks/problem_NN.py`` and the shared check modules it imports, and theirs in turn;
-* probes: the probe modules those check modules import, or name in a probe's name (``"_trees.tree_state"``);
+* probes: the probe modules those check modules import (a check names a probe by its function,
+  ``from probes import _trees as probe_trees`` ... ``probe_trees.tree_state``);
 * reference: ``reference/problem_NN.py`` (where the problem has one), the library modules it imports, and the
   library modules that those check and probe modules name (``module(pkg, "tree")``, or a module passed to a
   shared probe, ``"rotations"``).
@@ -60,9 +61,7 @@ def problem_row(number: int) -> dict[str, list[str]] | None:
     for current in check_modules:
         tree = _parsed("checks", current)
         probe_modules |= _imports(tree, "probes") & probes
-        texts = strings(tree)
-        probe_modules |= {text.split(".")[0] for text in texts if "." in text} & probes
-        named |= texts
+        named |= strings(tree)
     for current in probe_modules:
         named |= strings(_parsed("probes", current))
     library = {module for module in reference if not module.startswith("problem_")}
