@@ -37,7 +37,7 @@ from ._shapes import as_list
 
 __all__ = [
     "H",
-    "DIFFERENCES",
+    "LAGRANGE_DIFFERENCES",
     "KINDS",
     "I_GRAV",
     "ROBOT",
@@ -64,9 +64,12 @@ __all__ = [
     "assert_fresh_along_a_run",
 ]
 
-#: step of the finite differences of the physics checks and their tolerance (central differences: error ~ h^2)
+#: step of the finite differences of the physics checks (central differences: error ~ h^2)
 H = 1e-5
-DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-5, 1e-5)
+#: the physics checks of the ``_dynamics.lagrange`` probe: the student's own f and g against Lagrange's equations
+#: and the gradient of the potential, from differences of their own M and positions on random trees with masses
+#: and inertias (f is a difference of quadratic forms in M over 4 h: a looser bound than the kinematics')
+LAGRANGE_DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-5, 1e-5)
 #: symmetry and positive definiteness of M
 SPD = Tol("symmetric positive-definite", 1e-9, 1e-9)
 KINDS = ("rotational", "translational", "rolling_contact", "virtual_3dof", "rigid")
@@ -352,7 +355,7 @@ def check_gravity_gradient(got, expected, args, h=H):
         *(real(f"the position of {name} at q + h e_1", mine, (3,), ours)
           for name, mine, ours in zip(names, got["positions"][0][0], expected["positions"][0][0])),
         ("-dV/dq of your own potential energy", rank_flaw(fd, expected["g"]))])
-    assert_close(got["g"], fd, "g", DIFFERENCES, [
+    assert_close(got["g"], fd, "g", LAGRANGE_DIFFERENCES, [
         Mistake("gravity_sign", -fd, MFG_HINTS["gravity_sign"]),
     ], context=f"(expected: -dV/dq of V = -sum(m I_grav . I_r_IB) from your own positions, I_grav = "
                f"{np.asarray(I_grav).tolist()})")
@@ -371,7 +374,7 @@ def check_lagrange(got, expected, args, h=H):
                    for p, m in got["M_coordinates"]])
     lagrange = -M_dot @ qd + dT
     gyroscopic = -sum(J_R.T @ np.cross(J_R @ qd, I @ (J_R @ qd)) for _, _, I, _, J_R in _bodies(got, nq))
-    assert_close(f, lagrange, "f", DIFFERENCES, [
+    assert_close(f, lagrange, "f", LAGRANGE_DIFFERENCES, [
         Mistake("f_sign", -lagrange, MFG_HINTS["f_sign"]),
         Mistake("missing_gyroscopic", lagrange - gyroscopic, MFG_HINTS["missing_gyroscopic"]),
         Mistake("gyroscopic_sign", lagrange - 2 * gyroscopic, MFG_HINTS["gyroscopic_sign"]),

@@ -37,7 +37,7 @@ from ._upstream import judging
 
 __all__ = [
     "H",
-    "DIFFERENCES",
+    "KINEMATIC_DIFFERENCES",
     "ORDER",
     "rotation",
     "trees",
@@ -63,9 +63,11 @@ __all__ = [
     "assert_tree_no_side_effects",
 ]
 
-#: step of the finite differences and their tolerance (central differences: error ~ h^2)
+#: step of the finite differences (central differences: error ~ h^2)
 H = 1e-5
-DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-6, 1e-6)
+#: a derivative of the student's own kinematics (a Jacobian, velocities and accelerations, the gradient of a
+#: potential) against central differences of their own positions and orientations, of order one
+KINEMATIC_DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-6, 1e-6)
 #: the body quantities in the order the recursion computes them
 ORDER = probe_trees.POSE + probe_trees.MOTION
 NQ = {"rotational": 1, "translational": 1, "rolling_contact": 1, "virtual_3dof": 3, "rigid": 0}
@@ -546,7 +548,7 @@ JACOBIAN_FRAME_HINT = ("Your Jacobian is in inertial coordinates: B_J_S and B_J_
                        "B_v_B = B_J_S qd (the inertial Jacobian is A_IB @ B_J_S).")
 
 
-def compare_jacobians(got, expected, h=H, tol=DIFFERENCES):
+def compare_jacobians(got, expected, h=H, tol=KINEMATIC_DIFFERENCES):
     """Every body's ``B_J_S``, ``B_J_R`` are the derivatives of its own position ``A_IB @ B_r_IB`` and orientation
     ``A_IB`` (``skew(B_J_R[:, i]) = A_IB.T dA_IB/dq_i``), from ``jacobian_differences``; ``expected`` (the
     reference's reply) gives the bodies and the number of coordinates the reply must cover."""
@@ -589,7 +591,7 @@ _PATH_HINTS = {
 }
 
 
-def compare_path(got, expected, h=H, tol=DIFFERENCES):
+def compare_path(got, expected, h=H, tol=KINEMATIC_DIFFERENCES):
     """Along ``q(t)`` (states at ``-h, 0, +h`` from ``path_differences``) every body's velocities are the time
     derivatives of its own pose, and its accelerations those of its own velocities; ``expected`` (the reference's
     reply) gives the bodies the reply must cover."""
@@ -634,7 +636,7 @@ def compare_jacobian_differences(ctx, probe, kinds, examples=10):
     compare = judging(ctx, probe, jacobians, lambda got, value, args: compare_states(got["state"], value["state"]))
 
     compare_fixed(ctx, probe, rich_case(kinds, motion=False, extra=(H,)), compare)
-    ctx.compare_random(probe, cases(kinds, motion=False, extra=(H,)), name="B_J_S, B_J_R", tol=DIFFERENCES,
+    ctx.compare_random(probe, cases(kinds, motion=False, extra=(H,)), name="B_J_S, B_J_R", tol=KINEMATIC_DIFFERENCES,
                        compare=compare, examples=examples, describe=describe_case)
 
 
@@ -647,7 +649,7 @@ def compare_path_differences(ctx, probe, kinds, examples=10):
     compare = judging(ctx, probe, path, lambda got, value, args: [compare_states(a, b) for a, b in zip(got, value)])
 
     compare_fixed(ctx, probe, rich_case(kinds, extra=(H,)), compare)
-    ctx.compare_random(probe, cases(kinds, extra=(H,)), name="velocities and accelerations", tol=DIFFERENCES,
+    ctx.compare_random(probe, cases(kinds, extra=(H,)), name="velocities and accelerations", tol=KINEMATIC_DIFFERENCES,
                        compare=compare, examples=examples, describe=describe_case)
 
 

@@ -19,7 +19,7 @@ from grader.checking import (
 from probes import problem_25 as p25
 
 from ._trees import (
-    DIFFERENCES,
+    KINEMATIC_DIFFERENCES,
     MODELS,
     H,
     Model,
@@ -242,7 +242,7 @@ def check_symbolic_jacobian(ctx):
         step = _shifted(plus, "x at q + h e_j") - _shifted(minus, "x at q - h e_j")
         step[:, list(ANGLES)] = _wrap(step[:, list(ANGLES)])
         fd = step.T / (2 * H)
-        assert_close(J, fd, f"J {_at(point, ctx)}", DIFFERENCES, [
+        assert_close(J, fd, f"J {_at(point, ctx)}", KINEMATIC_DIFFERENCES, [
             Mistake("column_order", fd[:, ::-1], "J = dx/dq has one column per coordinate, in the order of "
                     "q = (alpha, gamma); yours are swapped."),
         ], context="(expected: the derivative of your own x)")

@@ -22,7 +22,7 @@ from probes import _trees as probe_trees, problem_32 as p32
 from ._real import rank_flaw, require_real, rotation_flaw
 from ._shapes import as_dict, as_list
 from ._trees import (
-    DIFFERENCES,
+    KINEMATIC_DIFFERENCES,
     H,
     bodies_list,
     candidates,
@@ -127,7 +127,7 @@ def check_gravity_potential(ctx):
             *((f"A_IB of {name} at q + h e_1", rotation_flaw(body.get("A_IB"), ours.get("A_IB")))
               for name, body, ours in zip(names, shifted[0][0], expected["shifted"][0][0])),
             ("-dV/dq of your own potential energy", rank_flaw(fd, expected["g"]))])
-        assert_close(got["g"], fd, "generalized_gravity(tree, q, I_grav)", DIFFERENCES, [
+        assert_close(got["g"], fd, "generalized_gravity(tree, q, I_grav)", KINEMATIC_DIFFERENCES, [
             Mistake("sign_flip", -fd, "g(q) = -dV/dq points downhill, it is the generalized force of gravity."),
         ], context=f"(expected: -dV/dq of your own positions, I_grav = {I_GRAV.tolist()})")
 
@@ -138,7 +138,7 @@ def check_gravity_potential(ctx):
                                                             context=f"(I_grav = {I_GRAV.tolist()})"))
     compare_fixed(ctx, p32.potential, rich_case(KINDS, motion=False, masses=True, extra=extra), compare)
     ctx.compare_random(p32.potential, cases(KINDS, motion=False, masses=True, extra=extra),
-                       name="generalized_gravity", tol=DIFFERENCES, compare=compare, examples=10,
+                       name="generalized_gravity", tol=KINEMATIC_DIFFERENCES, compare=compare, examples=10,
                        describe=describe_case)
 
 
