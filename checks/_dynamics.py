@@ -1,7 +1,8 @@
 """Shared checks of the dynamics problems (24, 37, 38, 46).
 
-* Random trees with masses and inertias as plain data (``tree_cases``, ``rich_case``), in the format of
-  ``probes._dynamics`` (numpy only: rotations from quaternions, inertias from second moments).
+* Random trees with masses and inertias as plain data (``tree_cases``, ``rich_case``, from the case factory
+  ``checks._cases``), in the format of ``probes._dynamics`` (numpy only: rotations from quaternions, inertias from
+  second moments).
 * The sheet's robot (P32) and walker (P25) as plain data (``ROBOT``, ``WALKER``).
 * Physics checks on the ``_dynamics.lagrange`` probe, judged on the student's own model: ``M`` symmetric
   positive-definite, the kinetic energy of the student's own Jacobians, ``g`` as minus the gradient of the
@@ -31,6 +32,19 @@ from grader.checking import (
     format_array,
 )
 
+from ._cases import (
+    NQ,
+    SEEDS,
+    case_strategy,
+    coordinate_count,
+    draw_tree,
+    joint_lines,
+    random_frames,
+    random_rotation,
+    rich_joints,
+    rich_values,
+    values,
+)
 from ._effects import same, shown
 from ._real import mass_matrix_flaw, rank_flaw, real, require_real
 from ._shapes import as_list
@@ -73,27 +87,16 @@ LAGRANGE_DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-5, 1e-5)
 #: symmetry and positive definiteness of M
 SPD = Tol("symmetric positive-definite", 1e-9, 1e-9)
 KINDS = ("rotational", "translational", "rolling_contact", "virtual_3dof", "rigid")
-NQ = {"rotational": 1, "translational": 1, "rolling_contact": 1, "virtual_3dof": 3, "rigid": 0}
 #: gravity of the random trees, off the axes so that a frame mix-up shows
 I_GRAV = np.array([0.3, -9.81, 0.5])
-_SEEDS = st.integers(0, 2**32 - 1)
-
-
-def _rotation(quaternion):
-    w, x, y, z = np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
-
-
-def _random_rotation(rng):
-    return _rotation(rng.normal(size=4) + 1e-9)
+#: keeps each entry of a random quaternion away from zero
+_NUDGE = 1e-9
 
 
 def _inertia(rng):
     """An inertia matrix: principal moments from second moments (triangle inequality), randomly oriented."""
     x2, y2, z2 = rng.uniform(0.05, 1.0, 3)
-    A = _random_rotation(rng)
+    A = random_rotation(rng, _NUDGE)
     return A @ np.diag([y2 + z2, x2 + z2, x2 + y2]) @ A.T
 
 
@@ -101,8 +104,7 @@ def _joint(rng, kind, nq, plain=False):
     if plain:
         joint = {"P_r_PDp": np.zeros(3), "A_PDp": np.eye(3), "S_r_SDs": np.array([0.0, 0.5, 0.0]), "A_SDs": np.eye(3)}
     else:
-        joint = {"P_r_PDp": rng.uniform(-1, 1, 3), "A_PDp": _random_rotation(rng), "S_r_SDs": rng.uniform(-1, 1, 3),
-                 "A_SDs": _random_rotation(rng)}
+        joint = random_frames(rng, _NUDGE)
     if kind == "rolling_contact":
         joint["r"] = 0.5 if plain else float(rng.uniform(0.1, 1.0))
     if kind == "test":
@@ -123,39 +125,24 @@ def trees(draw, kinds=KINDS, max_joints=4):
     offsets but the successor's centre of gravity, aligned frames, a unit mass); coordinates numbered in a random
     order.  The first joint moves, so ``nq >= 1``; every moving body has mass and inertia, so ``M`` is positive
     definite."""
-    n = draw(st.integers(1, max_joints))
-    root_seed = draw(_SEEDS)
-    bodies, joints, sizes = [_body(np.random.default_rng(root_seed), 0, root_seed == 0)], [], []
-    for k in range(n):
-        kind = draw(st.sampled_from([kind for kind in kinds if kind != "rigid"] if k == 0 else list(kinds)))
-        parent = k - draw(st.integers(0, k))
-        seed = draw(_SEEDS)
+
+    def root(draw):
+        seed = draw(SEEDS)
+        return _body(np.random.default_rng(seed), 0, seed == 0)
+
+    def member(draw, k, kind):
+        seed = draw(SEEDS)
         rng = np.random.default_rng(seed)
-        nq = NQ[kind]
-        joints.append({"kind": kind, "parent": parent, **_joint(rng, kind, nq, seed == 0)})
-        bodies.append(_body(rng, k + 1, seed == 0))
-        sizes.append(nq)
-    order = draw(st.permutations(range(sum(sizes))))
-    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
-        joint["q_index"] = [int(i) for i in order[start:start + size]]
-    return {"bodies": bodies, "joints": joints}
+        joint = _joint(rng, kind, NQ[kind], seed == 0)
+        return joint, _body(rng, k + 1, seed == 0), NQ[kind]
 
-
-def _values(seed, n, bound=2.0):
-    return np.zeros(n) if seed == 0 else np.random.default_rng(seed).uniform(-bound, bound, n)
+    return draw_tree(draw, kinds, st.integers(1, max_joints), root, member)
 
 
 def tree_cases(kinds=KINDS, extra=(), max_joints=4):
     """``(description, q, qd, I_grav, *extra)`` with coordinates and velocities in [-2, 2] (from seeds, shrinking
     towards zero)."""
-
-    @st.composite
-    def draw_case(draw):
-        description = draw(trees(kinds, max_joints))
-        nq = sum(len(joint["q_index"]) for joint in description["joints"])
-        return (description, _values(draw(_SEEDS), nq), _values(draw(_SEEDS), nq), I_GRAV, *extra)
-
-    return draw_case()
+    return case_strategy(trees(kinds, max_joints), 2, (I_GRAV, *extra))
 
 
 def rich_case(kinds=KINDS, extra=(), seed=37):
@@ -163,17 +150,9 @@ def rich_case(kinds=KINDS, extra=(), seed=37):
     branch at body 1, random geometry, masses and inertias, coordinates numbered in random order and values bounded
     away from zero."""
     rng = np.random.default_rng(seed)
-    sequence = [kinds[0], *kinds, kinds[-1]]
-    joints, sizes = [], []
-    for k, kind in enumerate(sequence):
-        joints.append({"kind": kind, "parent": 1 if k == len(sequence) - 1 else k, **_joint(rng, kind, NQ[kind])})
-        sizes.append(NQ[kind])
-    order = rng.permutation(sum(sizes))
-    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
-        joint["q_index"] = [int(i) for i in order[start:start + size]]
+    joints = rich_joints(rng, kinds, lambda rng, kind: _joint(rng, kind, NQ[kind]), NQ.__getitem__)
     bodies = [_body(rng, k) for k in range(len(joints) + 1)]
-    n = len(order)
-    q, qd = (rng.uniform(0.3, 1.5, n) * rng.choice([-1, 1], n) for _ in range(2))
+    q, qd = rich_values(rng, coordinate_count({"joints": joints}), 2)
     return ({"bodies": bodies, "joints": joints}, q, qd, I_GRAV, *extra)
 
 
@@ -215,12 +194,9 @@ def robot_cases(description, nq, I_grav, bound=2.0):
 
     @st.composite
     def draw_case(draw):
-        return (description, _values(draw(_SEEDS), nq, bound), _values(draw(_SEEDS), nq, bound), I_grav)
+        return (description, values(draw(SEEDS), nq, bound), values(draw(SEEDS), nq, bound), I_grav)
 
     return draw_case()
-
-
-_KIND_NAMES = {"virtual_3dof": "virtual 3-DOF", "rolling_contact": "rolling contact", "rigid": "rigid"}
 
 
 def _compact(a):
@@ -233,17 +209,10 @@ def _compact(a):
 def describe_case(args):
     """A readable description of ``(description, q, qd, I_grav, ...)``."""
     description, q, qd, I_grav = args[:4]
-    names = [body["name"] for body in description["bodies"]]
-    lines = [f"a tree of {len(names)} bodies:"]
+    lines = [f"a tree of {len(description['bodies'])} bodies:"]
     for body in description["bodies"]:
         lines.append(f"  {body['name']}: m = {body['m']:.4g}, B_I_B = {_compact(body['I'])}")
-    for k, joint in enumerate(description["joints"]):
-        extra = f", r = {joint['r']:.4g}" if joint["kind"] == "rolling_contact" else ""
-        lines.append(
-            f"  joint {k + 1}: {_KIND_NAMES.get(joint['kind'], joint['kind'])} {names[joint['parent']]} -> "
-            f"{names[k + 1]}, q_index {joint['q_index']}, P_r_PDp = {_compact(joint['P_r_PDp'])}, "
-            f"A_PDp = {_compact(joint['A_PDp'])}, S_r_SDs = {_compact(joint['S_r_SDs'])}, "
-            f"A_SDs = {_compact(joint['A_SDs'])}{extra}")
+    lines += joint_lines(description, _compact)
     lines += [f"  q = {_compact(q)}", f"  qd = {_compact(qd)}", f"  I_grav = {_compact(I_grav)}"]
     return "\n".join(lines)
 

@@ -1,8 +1,9 @@
 """Shared checks of the kinematic-tree problems (24, 25, 31-35).
 
-* Random trees as plain data (``trees``, ``cases``): random joint types, parents, offsets, joint-frame orientations
-  (rotations from random unit quaternions), coordinate numbering, ``q``, ``qd``, ``qdd``.  The probe builds the same
-  description with the student's classes and, in the grader, with the reference's.
+* Random trees as plain data (``trees``, ``cases``, from the case factory ``checks._cases``): random joint types,
+  parents, offsets, joint-frame orientations (rotations from random unit quaternions), coordinate numbering, ``q``,
+  ``qd``, ``qdd``.  The probe builds the same description with the student's classes and, in the grader, with the
+  reference's.
 * Known mistakes (``Model``, ``MODELS``): switches of the reference's recursion, joint types with a mistake, or an
   edit of the tree's description.  ``candidates`` asks the reference (probe ``_trees.mistaken_states``) for the
   state a student with each mistake computes on a case, eagerly, from the case alone.
@@ -31,6 +32,17 @@ from grader.checking import (
 )
 from probes import _trees as probe_trees
 
+from ._cases import (
+    NQ,
+    SEEDS,
+    case_strategy,
+    coordinate_count,
+    draw_tree,
+    joint_lines,
+    random_frames,
+    rich_joints,
+    rich_values,
+)
 from ._effects import MUTATION_HINT, same, shown
 from ._shapes import as_dict, as_list
 from ._upstream import judging
@@ -39,7 +51,6 @@ __all__ = [
     "H",
     "KINEMATIC_DIFFERENCES",
     "ORDER",
-    "rotation",
     "trees",
     "cases",
     "rich_case",
@@ -70,22 +81,8 @@ H = 1e-5
 KINEMATIC_DIFFERENCES = Tol("finite differences, h = 1e-5", 1e-6, 1e-6)
 #: the body quantities in the order the recursion computes them
 ORDER = probe_trees.POSE + probe_trees.MOTION
-NQ = {"rotational": 1, "translational": 1, "rolling_contact": 1, "virtual_3dof": 3, "rigid": 0}
 
 # ------------------------------------------------------------------------------------------ random trees
-
-_SEEDS = st.integers(0, 2**32 - 1)
-
-
-def rotation(rng):
-    """A random rotation matrix (uniformly distributed): the rotation of a random unit quaternion."""
-    quaternion = rng.normal(size=4)
-    w, x, y, z = quaternion / np.linalg.norm(quaternion)
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-    ])
 
 
 def _geometry(seed, kind, nq):
@@ -96,8 +93,7 @@ def _geometry(seed, kind, nq):
         r, c, U, m = 0.5, np.eye(1, nq).ravel(), np.eye(3, nq, 1), 1.0
     else:
         rng = np.random.default_rng(seed)
-        joint = {"P_r_PDp": rng.uniform(-1, 1, 3), "A_PDp": rotation(rng), "S_r_SDs": rng.uniform(-1, 1, 3),
-                 "A_SDs": rotation(rng)}
+        joint = random_frames(rng)
         r, c, U, m = rng.uniform(0.1, 1.0), rng.uniform(-1.5, 1.5, nq), rng.uniform(-1, 1, (3, nq)), rng.uniform(0.1, 5)
     if kind == "rolling_contact":
         joint["r"] = float(r)
@@ -106,44 +102,35 @@ def _geometry(seed, kind, nq):
     return joint, float(m)
 
 
-def _values(seed, n):
-    return np.zeros(n) if seed == 0 else np.random.default_rng(seed).uniform(-2.0, 2.0, n)
-
-
 @st.composite
 def trees(draw, kinds, max_joints=4, masses=False):
     """Tree descriptions: two to ``max_joints`` joints of the given ``kinds`` (``"test"`` is the probe's own joint),
     each hanging at a random earlier body (shrinking towards a chain) with random offsets and joint frames (drawn
     from a seed per joint, shrinking towards aligned frames without offsets); the coordinates are numbered in a
     random order.  The first joint moves, so ``nq >= 1``."""
-    n = draw(st.integers(min(2, max_joints), max_joints))
-    joints, sizes, bodies = [], [], [{"name": "body_0", "m": 1.0}]
-    for k in range(n):
-        kind = draw(st.sampled_from([kind for kind in kinds if kind != "rigid"] if k == 0 else list(kinds)))
-        parent = k - draw(st.integers(0, k))
+
+    def member(draw, k, kind):
         nq = draw(st.integers(1, 2)) if kind == "test" else NQ[kind]
-        geometry, mass = _geometry(draw(_SEEDS), kind, nq)
-        joints.append({"kind": kind, "parent": parent, **geometry})
-        sizes.append(nq)
-        bodies.append({"name": f"body_{k + 1}", "m": mass if masses else 1.0})
-    order = draw(st.permutations(range(sum(sizes))))
-    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
-        joint["q_index"] = [int(i) for i in order[start:start + size]]
-    return {"bodies": bodies, "joints": joints}
+        geometry, mass = _geometry(draw(SEEDS), kind, nq)
+        return geometry, {"name": f"body_{k + 1}", "m": mass if masses else 1.0}, nq
+
+    return draw_tree(draw, kinds, st.integers(min(2, max_joints), max_joints),
+                     lambda draw: {"name": "body_0", "m": 1.0}, member)
 
 
 def cases(kinds, motion=True, masses=False, extra=()):
     """``(description, q[, qd, qdd], *extra)`` with coordinates, velocities and accelerations in [-2, 2] (each
     drawn from a seed, shrinking towards zero)."""
+    return case_strategy(trees(kinds, masses=masses), 3 if motion else 1, extra)
 
-    @st.composite
-    def draw_case(draw):
-        description = draw(trees(kinds, masses=masses))
-        nq = sum(len(joint["q_index"]) for joint in description["joints"])
-        values = [_values(draw(_SEEDS), nq) for _ in range(3 if motion else 1)]
-        return (description, *values, *extra)
 
-    return draw_case()
+def _rich_geometry(rng, kind):
+    joint = random_frames(rng)
+    if kind == "rolling_contact":
+        joint["r"] = 0.4
+    if kind == "test":
+        joint["c"], joint["U"] = rng.uniform(0.5, 1.5, 2) * [1, -1], rng.uniform(-1, 1, (3, 2))
+    return joint
 
 
 def rich_case(kinds, motion=True, masses=False, extra=(), seed=24):
@@ -151,25 +138,11 @@ def rich_case(kinds, motion=True, masses=False, extra=(), seed=24):
     first joint of ``kinds[0]``) plus a branch at body 1, random geometry, coordinates numbered in random order and
     values bounded away from zero."""
     rng = np.random.default_rng(seed)
-    sequence = [kinds[0], *kinds, kinds[-1]]
-    joints, sizes = [], []
-    for k, kind in enumerate(sequence):
-        joint = {"kind": kind, "parent": 1 if k == len(sequence) - 1 else k, "P_r_PDp": rng.uniform(-1, 1, 3),
-                 "A_PDp": rotation(rng), "S_r_SDs": rng.uniform(-1, 1, 3), "A_SDs": rotation(rng)}
-        nq = NQ.get(kind, 2)
-        if kind == "rolling_contact":
-            joint["r"] = 0.4
-        if kind == "test":
-            joint["c"], joint["U"] = rng.uniform(0.5, 1.5, 2) * [1, -1], rng.uniform(-1, 1, (3, 2))
-        joints.append(joint)
-        sizes.append(nq)
-    order = rng.permutation(sum(sizes))
-    for joint, start, size in zip(joints, np.cumsum([0, *sizes]), sizes):
-        joint["q_index"] = [int(i) for i in order[start:start + size]]
+    joints = rich_joints(rng, kinds, _rich_geometry, lambda kind: NQ.get(kind, 2))
     bodies = [{"name": f"body_{k}", "m": float(rng.uniform(0.5, 3.0)) if masses else 1.0}
               for k in range(len(joints) + 1)]
-    values = [rng.uniform(0.3, 1.5, len(order)) * rng.choice([-1, 1], len(order)) for _ in range(3 if motion else 1)]
-    return ({"bodies": bodies, "joints": joints}, *values, *extra)
+    n = coordinate_count({"joints": joints})
+    return ({"bodies": bodies, "joints": joints}, *rich_values(rng, n, 3 if motion else 1), *extra)
 
 
 def compare_fixed(ctx, probe, args, compare, describe=None):
@@ -207,26 +180,11 @@ def _compact(a):
     return " ".join(format_array(a).split())
 
 
-_KIND_NAMES = {"test": "test joint (rotation c @ q about the Dp 3-axis, translation U @ q)",
-               "virtual_3dof": "virtual 3-DOF", "rolling_contact": "rolling contact"}
-
-
 def describe_case(args):
     """A readable description of ``(description, q, ...)``."""
     description, *values = args
-    names = [body["name"] for body in description["bodies"]]
-    lines = [f"a tree of {len(names)} bodies (joint k leads to body_k):"]
-    for k, joint in enumerate(description["joints"]):
-        extra = ""
-        if joint["kind"] == "rolling_contact":
-            extra = f", r = {joint['r']:.4g}"
-        elif joint["kind"] == "test":
-            extra = f", c = {_compact(joint['c'])}, U = {_compact(joint['U'])}"
-        lines.append(
-            f"  joint {k + 1}: {_KIND_NAMES.get(joint['kind'], joint['kind'])} {names[joint['parent']]} -> "
-            f"{names[k + 1]}, q_index {joint['q_index']}, P_r_PDp = {_compact(joint['P_r_PDp'])}, "
-            f"A_PDp = {_compact(joint['A_PDp'])}, S_r_SDs = {_compact(joint['S_r_SDs'])}, "
-            f"A_SDs = {_compact(joint['A_SDs'])}{extra}")
+    lines = [f"a tree of {len(description['bodies'])} bodies (joint k leads to body_k):",
+             *joint_lines(description, _compact)]
     for label, value in zip(("q", "qd", "qdd"), values):
         if isinstance(value, np.ndarray):
             lines.append(f"  {label} = {_compact(value)}")
