@@ -25,7 +25,7 @@ from .checking import (
     diagnose,
     random_input,
 )
-from .diagnosis import explain, prepare_call, prepared, recording, remember_run
+from .diagnosis import doubt, explain, prepare_call, prepared, recording, remember_run
 from .errors import GraderFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
@@ -597,8 +597,14 @@ def _property(failure: CheckFailure) -> str:
 def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
     """``failure`` with the cause the diagnosis engine names from ``evidences`` (default: the failure's own
     comparison), when no known mistake named one; its hint becomes the cause's.  Asked once per failure."""
-    if failure.diagnosis or failure.explained or failure.evidence is None:
+    if failure.explained or failure.evidence is None:
         return failure
+    if failure.diagnosis:
+        finding = doubt(ctx, failure.evidence, failure.diagnosis)  # an integration blamed for a wrong model
+        if finding is None:
+            return failure
+        return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
+                            explained=True)
     finding = explain(ctx, evidences or [failure.evidence])
     if finding is None:
         return CheckFailure(failure.message, failure.hint, "", failure.candidates, failure.evidence, explained=True)

@@ -35,7 +35,7 @@ arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import RECORDING, find, note_comparison, prepare, prepare_call, prepared, recording
+from .engine import RECORDING, doubted, find, note_comparison, prepare, prepare_call, prepared, recording
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
@@ -48,6 +48,7 @@ __all__ = [
     "Declaration",
     "declaration",
     "explain",
+    "doubt",
     "prepare",
     "prepare_call",
     "prepared",
@@ -84,3 +85,30 @@ def explain(ctx, evidences: list) -> Finding | None:
         if STRICT:
             raise
         return None
+
+
+def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
+    """A check's ``diagnosis`` that blames the integration of a run (a step too large, an energy drift, an event
+    found late) stands only where the run's right-hand side is the reference's: where it is not, the engine's
+    finding on the right-hand sides (a cause, or no name and what differs) replaces it; None: the diagnosis
+    stands."""
+    if evidence is None or not ENABLED or not _blames_integration(diagnosis):
+        return None
+    try:
+        return doubted(Scene(ctx), evidence)
+    except (Budget, GraderFault):
+        return None
+    except Exception:  # noqa: BLE001 - a defect of the engine never costs the student the failure's message
+        if STRICT:
+            raise
+        return None
+
+
+def _blames_integration(diagnosis: str) -> bool:
+    from checks._diagnoses import DIAGNOSES
+
+    from .runs import INTEGRATION
+
+    names = [name for name in diagnosis.split(" or ") if name]
+    return bool(names) and all(name in INTEGRATION or (name in DIAGNOSES and DIAGNOSES[name].family == "step_size")
+                               for name in names)

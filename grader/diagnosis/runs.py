@@ -1,11 +1,16 @@
 """Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
 constant offset, a state from the wrong row, a wrong start, an event found late or early, and an error that grows
-with the step (against fixed-step runs of the reference's own right-hand side)."""
+with the step (against fixed-step runs of the reference's own right-hand side).
+
+Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
+reference's at states along the reference's run (``model_evidences``): a run that leaves the reference's is not
+proof that its integration is at fault, and when the right-hand sides differ the mistake is in the model."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from ..errors import StudentFault
 from ..values import Tol, format_array
 from .evidence import (
     array_of,
@@ -37,11 +42,25 @@ __all__ = [
     "is_run",
     "run_in_log",
     "remember_run",
+    "RHS_STATES",
+    "RHS_TOL",
+    "INTEGRATION",
+    "rhs_cases",
+    "rhs_call",
+    "model_evidences",
 ]
 
 
 #: the steps of the reference's fixed-step runs that a run's error is compared with [s]
 FIXED_STEPS = (0.005, 0.01, 0.02, 0.05)
+#: the states along the reference's run at which the student's right-hand side is compared with the reference's,
+#: in each half of the run (the second half is the engine's second case)
+RHS_STATES = 3
+#: two codings of one right-hand side agree within this (a solve for an inverse, terms summed in another order); a
+#: slip of the model (a sign, a term, a row) moves it by far more
+RHS_TOL = Tol("right-hand side", 1e-7, 1e-6)
+#: the causes that blame the integration of a run, told only where its right-hand side is the reference's
+INTEGRATION = ("step_size", "event_late", "event_early", "energy_drift")
 #: a fit of a run's error this close, by about one times a fixed-step run's, needs no other run to be tried (the
 #: student's run is that scheme at that step)
 STEP_EXACT = 0.05
@@ -319,3 +338,52 @@ def remember_run(ctx, probe: str, args: tuple, value) -> None:
     decl = declaration(probe)
     if decl is not None and decl.motion:
         ctx.__dict__.setdefault("runs", {})[call_key(probe, tuple(args))] = value
+
+
+def rhs_cases(root, motion: dict):
+    """Two lists of ``(t, y)`` from the reference's run ``root`` before its first event (``y``: the declared states
+    in their order), ``RHS_STATES`` from each half of it; None when the run is too short."""
+    ours = run_of(root, motion)
+    if ours is None:
+        return None
+    t, R = ours
+    end = min([t[-1], *event_times(root, motion)])
+    inside = np.flatnonzero(t < end - 1e-12)
+    if inside.size < 2 * RHS_STATES:
+        return None
+    picks = inside[np.linspace(0, inside.size - 1, 2 * RHS_STATES).round().astype(int)]
+    y = np.concatenate([R[key] for key in motion.get("states", ())], axis=1)
+    cases = [(float(t[i]), y[i].copy()) for i in picks]
+    return cases[:RHS_STATES], cases[RHS_STATES:]
+
+
+def rhs_call(motion: dict, args: tuple, cases) -> tuple:
+    """The arguments of the right-hand side's probe: the run's arguments it takes (``motion["rhs_args"]``, None for
+    one not given), then the cases."""
+    return (*(args[i] if i < len(args) else None for i in motion.get("rhs_args", ())), cases)
+
+
+def model_evidences(scene: Scene, evidence: Evidence, decl: Declaration):
+    """The student's right-hand side against the reference's at states along the reference's run, one evidence
+    per half of it; None where the probe declares no right-hand side or the student's cannot be evaluated there."""
+    motion = decl.motion
+    probe, source = motion.get("rhs"), evidence.source
+    if not probe or source is None or evidence.student is None:
+        return None
+    halves = rhs_cases(source.root, motion)
+    if halves is None:
+        return None
+    found = []
+    for cases in halves:
+        args = rhs_call(motion, tuple(source.args), cases)
+        expected_root = scene.reference(probe, args)
+        try:
+            got_root = scene.student(probe, args)
+        except StudentFault:
+            return None
+        expected, got = array_of(expected_root), array_of(got_root)
+        if expected is None or got is None or got.shape != expected.shape:
+            return None
+        found.append(Evidence(got, expected, RHS_TOL, "the right-hand side", None, None,
+                              Source(probe, args, (), expected_root), Source(probe, args, (), got_root)))
+    return found
