@@ -597,7 +597,7 @@ def _property(failure: CheckFailure) -> str:
 def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
     """``failure`` with the cause the diagnosis engine names from ``evidences`` (default: the failure's own
     comparison), when no known mistake named one; its hint becomes the cause's.  Asked once per failure."""
-    if failure.explained or failure.evidence is None:
+    if failure.explained:
         return failure
     if failure.diagnosis:
         finding = doubt(ctx, failure.evidence, failure.diagnosis)  # an integration blamed for a wrong model
@@ -605,6 +605,8 @@ def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
             return failure
         return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
                             explained=True)
+    if failure.evidence is None:
+        return failure
     finding = explain(ctx, evidences or [failure.evidence])
     if finding is None:
         return CheckFailure(failure.message, failure.hint, "", failure.candidates, failure.evidence, explained=True)

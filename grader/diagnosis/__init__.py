@@ -89,10 +89,10 @@ def explain(ctx, evidences: list) -> Finding | None:
 
 def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
     """A check's ``diagnosis`` that blames the integration of a run (a step too large, an energy drift, an event
-    found late) stands only where the run's right-hand side is the reference's: where it is not, the engine's
-    finding on the right-hand sides (a cause, or no name and what differs) replaces it; None: the diagnosis
-    stands."""
-    if evidence is None or not ENABLED or not _blames_integration(diagnosis):
+    found late or never) stands only where the run's right-hand side is the reference's: where it is not, the
+    engine's finding on the right-hand sides (a cause, or no name and what differs) replaces it; None: the
+    diagnosis stands.  ``evidence``: the failing comparison (None: the check's last run is the one)."""
+    if not ENABLED or not _blames_integration(diagnosis):
         return None
     try:
         return doubted(Scene(ctx), evidence)
@@ -110,5 +110,5 @@ def _blames_integration(diagnosis: str) -> bool:
     from .runs import INTEGRATION
 
     names = [name for name in diagnosis.split(" or ") if name]
-    return bool(names) and all(name in INTEGRATION or (name in DIAGNOSES and DIAGNOSES[name].family == "step_size")
+    return bool(names) and all(name in INTEGRATION or name == "no_event" or (name in DIAGNOSES and DIAGNOSES[name].family == "step_size")
                                for name in names)

@@ -49,6 +49,7 @@ from .runs import (
     motion_slips,
     rhs_cases,
     rhs_call,
+    RHS_TOL,
     run_in_log,
     step_slips,
 )
@@ -312,7 +313,10 @@ def _model(scene: Scene, run: Evidence, decl: Declaration) -> _Model:
 def doubted(scene: Scene, evidence: Evidence) -> Finding | None:
     """Where a check blames the integration of the run behind ``evidence``: the engine's finding when that run's
     right-hand side is not the reference's (its cause, or with no name what differs), else None."""
-    _sources(scene, evidence)
+    if evidence is None:  # a failure stated in words: the check's last run
+        evidence = Evidence(np.zeros(0), np.zeros(0), RHS_TOL, "the run")
+    else:
+        _sources(scene, evidence)
     run = evidence if is_run(evidence) else run_in_log(scene.ctx, evidence)
     if run is None:
         return None
