@@ -36,7 +36,8 @@ def event(pkg, states, s, d):
     ),
     says="simulate(q0, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
-               "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,)},
+               "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,),
+               "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"}},
 )
 def simulate(pkg, q0, t_end, s, bar=None):
     """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` where given): the run, the event, and
@@ -97,3 +98,11 @@ def bar_ode_terms(pkg, bar, cases):
         terms["f"].append(np.concatenate([zero, bias[3:]]))
         terms["gravity"].append(np.concatenate([zero, full[3:] - bias[3:]]))
     return {"terms": terms, "extra": {}}
+
+
+@probe(reference_only=True)
+def sheet_bar(pkg):
+    """The sheet's bar ``(m, theta, g)``: the values ``simulate`` runs with where it is given no ``bar`` (the
+    diagnosis engine calls it on the reference)."""
+    p44 = module(pkg, "problem_44")
+    return [float(p44.MASS), float(p44.THETA), float(p44.GRAVITY)]

@@ -47,6 +47,8 @@ from .runs import (
     is_run,
     model_evidences,
     motion_slips,
+    parameter_slips,
+    parameter_variants,
     rhs_cases,
     rhs_call,
     RHS_TOL,
@@ -253,6 +255,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
             return model.finding
         integration = model.state == "agrees"
         steps = step_slips(scene, run, decl) if integration else []
+        found += parameter_slips(scene, run, decl)
         found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))
                           and (integration or h.name not in INTEGRATION)]
     if first.source is None:  # a value derived from the student's own: explain the results it came from
@@ -506,6 +509,11 @@ def prepare(ctx, source: Source) -> None:
                     ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
         if decl.motion.get("rhs"):
             _prepare_model(ask, decl, source)
+        if decl.motion.get("parameters"):
+            spec = decl.motion["parameters"]
+            sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
+            for _, args in parameter_variants(decl.motion, tuple(source.args), sheet):
+                ask(source.probe, args, persist=True)
         if not decl.motion and not getattr(ctx, "randomized", False):
             args = redraw(decl, source.args, scene.draw_seed(source))
             if args is not None and ask(source.probe, args) is not None:

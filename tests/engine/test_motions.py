@@ -65,7 +65,14 @@ RATES_AS_ANGLES = Planted(
     new='return {"t": result.t, "q": result.y[3:].T, "qd": result.y[:3].T}',
     check="p24.simulated_motion", diagnosis="state_row", message="from the wrong row")
 
-MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES]
+MASS_AND_INERTIA_EXCHANGED = Planted(
+    name="motions-p44-mass-and-inertia-exchanged", problem=44, file="problem_44.py",
+    old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
+    new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(theta, m, g),",
+    check="p44.motion", diagnosis="argument_order", message="m and theta are exchanged")
+
+MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
+            MASS_AND_INERTIA_EXCHANGED]
 
 
 @pytest.fixture(autouse=True)
@@ -197,3 +204,16 @@ def test_a_model_that_differs_names_no_start_and_no_step(monkeypatch):
     finding = _explain_ball(monkeypatch, student_g=9.81 * 2, reference_g=9.81)
     assert finding is not None and "not in the integration" in finding.hint, finding
     assert not set(finding.names) & {"initial_state", "offset", "step_size", "time_shift", "state_row"}, finding
+
+
+def test_parameters_of_equal_value_are_never_exchanged():
+    """A run's parameters are tried exchanged only where their values differ: two equal masses cannot tell an
+    exchange (the reference's run with them exchanged is its own run)."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"parameters": {"arg": 0, "names": ("m1", "m2", "g")}}
+    keys = {h.key for h, _ in parameter_variants(motion, ((1.5, 1.5, 9.81),), None)}
+    assert not {k for k in keys if k.startswith("run:swap:0:1")}
+    assert {"run:swap:0:2", "run:swap:1:2"} <= keys
+    keys = {h.key for h, _ in parameter_variants(motion, (None,), (1.5, 2.5, 9.81))}
+    assert "run:swap:0:1" in keys
