@@ -71,6 +71,16 @@ MASS_AND_INERTIA_EXCHANGED = Planted(
     new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(theta, m, g),",
     check="p44.motion", diagnosis="argument_order", message="m and theta are exchanged")
 
+REVERSED_WIRE = Planted(
+    name="motions-p46-velocities-reversed", problem=46, file="problem_46.py",
+    old="    return qd_minus + Minv_JT @ Lam, Lam", new="    return -qd_minus, Lam",
+    check="p46.plastic_impact", diagnosis="", message="")
+REVERSED_PIN = Planted(
+    name="motions-p47-velocities-reversed", problem=47, file="problem_47.py",
+    old="    return np.array(q_minus, dtype=float), qd_minus + M_inv @ J.T @ Lam, float(Lam[0])",
+    new="    return np.array(q_minus, dtype=float), -qd_minus, float(Lam[0])",
+    check="p47.plastic_impact", diagnosis="", message="")
+
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
             MASS_AND_INERTIA_EXCHANGED]
 
@@ -83,7 +93,8 @@ def strict(monkeypatch):
 
 @pytest.fixture(scope="module")
 def slot():
-    with Zygote(Limits(), sandbox_mode(), warm_modules(sorted({m.problem for m in MISTAKES}))) as zygote:
+    problems = sorted({m.problem for m in MISTAKES + [REVERSED_WIRE, REVERSED_PIN]})
+    with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
         zygote.start()
         yield zygote
 
@@ -116,6 +127,15 @@ def test_a_wrong_model_is_never_told_as_its_integration(mistake, tmp_path, kit_o
     assert mistake.check in told
     blamed = {check: d for check, d in told.items() if set(families_of(d)) & INTEGRATION}
     assert not blamed, blamed
+
+
+@pytest.mark.parametrize("mistake", [REVERSED_WIRE, REVERSED_PIN], ids=lambda m: m.name)
+def test_an_impact_is_told_elastic_only_where_its_velocities_follow_that_law(mistake, tmp_path, kit_oracle,
+                                                                            deferred_ids, slot):
+    """Every velocity reversed also reverses the closing one (restitution 1 along the constraint), but the other
+    velocities are not the elastic law's: no elastic impact is told."""
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    assert "elastic" not in target.diagnosis.split(" or "), (target.diagnosis, target.hint)
 
 
 def test_the_energy_drift_of_a_wrong_model_was_blamed_on_the_integration(tmp_path, kit_oracle, slot,
