@@ -596,7 +596,9 @@ def _property(failure: CheckFailure) -> str:
 
 def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
     """``failure`` with the cause the diagnosis engine names from ``evidences`` (default: the failure's own
-    comparison), when no known mistake named one; its hint becomes the cause's.  Asked once per failure."""
+    comparison), when no known mistake named one; its hint becomes the cause's.  A cause that blames a run's
+    integration is the engine's to doubt (``diagnosis.doubt``): a wrong model is not told as a wrong integration.
+    Asked once per failure."""
     if failure.explained:
         return failure
     if failure.diagnosis:

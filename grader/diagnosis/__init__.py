@@ -19,7 +19,12 @@ The grammar:
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
-  wrong row, a wrong initial state, an event found late or early, an error that grows with the step.
+  wrong row, a wrong initial state, an event found late or early, an error that grows with the step, the run's
+  parameters exchanged or scaled (the reference re-run so).
+
+Before any cause of a run, the student's right-hand side is compared with the reference's along the run (where the
+probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,
+and no cause that blames the integration is told, by the engine or by a check (``doubt``).
 
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
@@ -110,5 +115,5 @@ def _blames_integration(diagnosis: str) -> bool:
     from .runs import INTEGRATION
 
     names = [name for name in diagnosis.split(" or ") if name]
-    return bool(names) and all(name in INTEGRATION or name == "no_event" or (name in DIAGNOSES and DIAGNOSES[name].family == "step_size")
+    return bool(names) and all(name in INTEGRATION or name in DIAGNOSES and DIAGNOSES[name].family == "step_size"
                                for name in names)

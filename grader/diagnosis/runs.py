@@ -65,8 +65,9 @@ RHS_STATES = 3
 #: two codings of one right-hand side agree within this (a solve for an inverse, terms summed in another order); a
 #: slip of the model (a sign, a term, a row) moves it by far more
 RHS_TOL = Tol("right-hand side", 1e-7, 1e-6)
-#: the causes that blame the integration of a run, told only where its right-hand side is the reference's
-INTEGRATION = ("step_size", "event_late", "event_early", "energy_drift")
+#: the causes that blame the integration of a run (with every name of the step_size family), told only where its
+#: right-hand side is the reference's
+INTEGRATION = ("step_size", "event_late", "event_early", "energy_drift", "no_event")
 #: the factors a run's parameter (a mass, an inertia, g) is tried at, and their words
 PARAMETER_FACTORS = ((2.0, "twice"), (0.5, "half"))
 #: a fit of a run's error this close, by about one times a fixed-step run's, needs no other run to be tried (the
