@@ -436,7 +436,7 @@ def assert_energy_conserved(got, tol, what, hint):
                               f"Jacobians, V = -sum(m I_grav . I_r_IB)); the largest drift is {drift.max():.4g} at "
                               f"t = {t[int(np.argmax(drift))]:.4g} s.")
         except CheckFailure as exc:
-            raise CheckFailure(exc.message, hint, "energy_drift") from None
+            raise CheckFailure(exc.message, hint, "energy_drift", None, exc.evidence) from None
 
 
 def same_crossings(mine, values, zero=1e-9) -> bool:

@@ -237,10 +237,12 @@ def check_plastic_impact(ctx):
         Lam = as_array(got[0]["Lam"], "Lam", (1,))
         expected_plus, expected_Lam = np.asarray(expected[0]["qd_plus"]), np.asarray(expected[0]["Lam"])
         elastic = 2 * expected_plus - qd_minus
+        # an elastic impact is told only where every velocity after it is the elastic law's, not merely the
+        # reversed closing velocity (all velocities reversed reverse it too)
         assert_close(J @ qd_plus, np.zeros(1), "J qd_plus", IMPACT, [
-            Mistake("elastic", J @ elastic, "A fully plastic impact stops the closing velocity: qd_plus = qd_minus + "
-                    "M^-1 J.T Lam with Lam = -(J M^-1 J.T)^-1 J qd_minus gives J qd_plus = 0; yours reverses it "
-                    "(restitution 1, elastic)."),
+            *([Mistake("elastic", J @ elastic, "A fully plastic impact stops the closing velocity: qd_plus = "
+                       "qd_minus + M^-1 J.T Lam with Lam = -(J M^-1 J.T)^-1 J qd_minus gives J qd_plus = 0; yours "
+                       "reverses it (restitution 1, elastic).")] if close(qd_plus, elastic, IMPACT) else []),
             Mistake("unchanged", J @ qd_minus, "The impact changes the velocities: qd_plus = qd_minus + M^-1 J.T Lam."),
         ], context="(after a plastic impact the constraint's velocity is zero)")
         if Lam[0] <= 0:

@@ -21,6 +21,7 @@ from grader.checking import (
     as_array,
     assert_close,
     check,
+    close,
     fail,
     format_array,
 )
@@ -131,9 +132,12 @@ def check_plastic_impact(ctx):
         expected_plus, expected_Lam = np.asarray(expected["qd_plus"]), np.asarray(expected["Lam"])
         where = f"at {_describe_impact(args)}"
         assert_close(q_plus, q_minus, "q_plus", EXACT, context=f"{where} (an impact changes velocities only)")
+        # an elastic impact is told only where every velocity after it is the elastic law's (2 qd+ - qd- of the
+        # reference's), not merely the corner's reversed velocity
         assert_close(J @ qd_plus, np.zeros(1), "J qd_plus", IMPACT, [
-            Mistake("elastic", -J @ qd_minus, "A fully plastic impact stops the corner: Lam = -(J M^-1 J.T)^-1 J "
-                    "qd- gives J qd+ = 0; yours reverses its velocity (restitution 1, elastic)."),
+            *([Mistake("elastic", -J @ qd_minus, "A fully plastic impact stops the corner: Lam = -(J M^-1 J.T)^-1 "
+                       "J qd- gives J qd+ = 0; yours reverses its velocity (restitution 1, elastic).")]
+              if close(qd_plus, 2 * expected_plus - np.asarray(qd_minus, dtype=float), IMPACT) else []),
             Mistake("unchanged", J @ qd_minus, "The impact changes the velocities: qd+ = qd- + M^-1 J.T Lam."),
         ], context=f"{where} (with your own J: after a plastic impact the corner does not move into the lane)")
         if Lam[0] <= 0:

@@ -27,7 +27,7 @@ from .checking import (
     diagnose,
     random_input,
 )
-from .diagnosis import explain, prepare_call, prepared, recording, remember_run
+from .diagnosis import doubt, explain, prepare_call, prepared, recording, remember_run
 from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
@@ -617,8 +617,18 @@ def _property(failure: CheckFailure) -> str:
 
 def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
     """``failure`` with the cause the diagnosis engine names from ``evidences`` (default: the failure's own
-    comparison), when no known mistake named one; its hint becomes the cause's.  Asked once per failure."""
-    if failure.diagnosis or failure.explained or failure.evidence is None:
+    comparison), when no known mistake named one; its hint becomes the cause's.  A cause that blames a run's
+    integration is the engine's to doubt (``diagnosis.doubt``): a wrong model is not told as a wrong integration.
+    Asked once per failure."""
+    if failure.explained:
+        return failure
+    if failure.diagnosis:
+        finding = doubt(ctx, failure.evidence, failure.diagnosis)  # an integration blamed for a wrong model
+        if finding is None:
+            return failure
+        return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
+                            explained=True)
+    if failure.evidence is None:
         return failure
     finding = explain(ctx, evidences or [failure.evidence])
     if finding is None:

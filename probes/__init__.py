@@ -16,7 +16,12 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   ``{"terms": {name: value shaped like the result}, "extra": {name: ...}}``, where the ``terms`` sum to the result
   and the ``extra`` ones are terms that do not belong (gravity counted twice, say); the names are those of
   ``checks._diagnoses.TERMS``;
-* ``motion``: for a run, ``{"time": key, "states": (keys,), "events": (keys,)}``;
+* ``motion``: for a run, ``{"time": key, "states": (keys,), "events": (keys,)}``; with ``"rhs"``, the probe of
+  the run's right-hand side (``rhs(*args, cases)`` for ``(t, y)`` cases, ``y`` the states in their order;
+  ``"rhs_args"``: the indices of the run's arguments it takes first, None for one not given), at which the
+  engine tells a wrong model from a wrong integration; with ``"parameters"`` (``{"arg": index, "names": (...),
+  "sheet": probe}``), the argument that holds the run's parameters (a mass, an inertia, g; the probe of their
+  sheet values for a run not given them), which the engine tries exchanged and scaled by re-running the reference;
 * ``constants``: the probe (no arguments) of the problem's named constants (a mass, g, a length);
 * ``draw``: False when the engine must not draw a second input itself (the probe is slow, or its arguments must
   keep their relations).

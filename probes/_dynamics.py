@@ -241,7 +241,8 @@ def trace(run, n, what):
     ),
     says="problem_24.simulate({0})",
     motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
-               "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02)},
+               "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02),
+               "rhs": "problem_24.pendulum_ode", "rhs_args": ()},
 )
 def pendulum_motion(pkg, t_end, I_grav, q0=None):
     """Problem 24: the package's ``problem_24.simulate(t_end)`` (released at ``q0`` when given) and, at every output

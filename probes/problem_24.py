@@ -5,7 +5,7 @@ import numpy as np
 
 from . import _trees, module, probe
 from ._trees import OUTLINE, POSES
-from ._forms import Dict
+from ._forms import Arr, Dict, Seq
 
 
 @probe(returns=Dict({**POSES.fields, "outline": OUTLINE}), says="build_triple_pendulum()")
@@ -26,3 +26,32 @@ def pendulum_case(pkg):
     """The sheet's case: the triple pendulum as a plain-data description and the test configuration ``Q``."""
     p24 = module(pkg, "problem_24")
     return {"description": _trees.describe(module(pkg, "tree"), p24.build_triple_pendulum()), "q": p24.Q}
+
+
+@probe(returns=Seq(Arr(6), length=lambda cases: len(cases)), says="pendulum_ode",
+       terms="problem_24.pendulum_ode_terms")
+def pendulum_ode(pkg, cases):
+    """``pendulum_ode(t, y, build_triple_pendulum(DynamicBody))`` for every ``(t, y)`` of ``cases`` (the
+    diagnosis engine compares it with the reference's at states along a run)."""
+    p24 = module(pkg, "problem_24")
+    tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
+    return [np.array(p24.pendulum_ode(float(t), np.asarray(y, dtype=float), tree), dtype=float) for t, y in cases]
+
+
+@probe(reference_only=True)
+def pendulum_ode_terms(pkg, cases):
+    """``pendulum_ode`` of every case split into named terms (the diagnosis engine calls it on the reference):
+    ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g)`` with the package's own ``M, f, g``."""
+    p24 = module(pkg, "problem_24")
+    tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
+    terms = {"velocity": [], "f": [], "gravity": []}
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        q, qd = y[:3], y[3:]
+        M, f, g = (np.array(x, dtype=float) for x in module(pkg, "dynamics").equations_of_motion(
+            tree, q.copy(), qd.copy(), p24.I_GRAV))
+        zero = np.zeros(3)
+        terms["velocity"].append(np.concatenate([qd, zero]))
+        terms["f"].append(np.concatenate([zero, np.linalg.solve(M, f)]))
+        terms["gravity"].append(np.concatenate([zero, np.linalg.solve(M, g)]))
+    return {"terms": terms, "extra": {}}

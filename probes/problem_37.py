@@ -46,7 +46,7 @@ def robot_ode(pkg, controller, table, cases):
     returns=Dict({"t": Arr(None), "q": Arr(None, 3), "qd": Arr(None, 3), "x": Arr(None, 3), "xd": Arr(None, 3)}),
     says="simulate({0!s}, table, {2})",
     motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_37.simulate_fixed",
-               "schemes": ("euler", "symplectic")},
+               "schemes": ("euler", "symplectic"), "rhs": "problem_37.robot_ode", "rhs_args": (0, 1)},
 )
 def simulate(pkg, controller, table, t_end):
     """``simulate(controller, table, t_end)`` and the end effector's inertial position ``x`` and velocity ``xd`` at

@@ -28,7 +28,7 @@ def walker_ode(pkg, cases):
     ),
     says="simulate({0}, {1})",
     motion={"time": "t", "states": ("q", "qd"), "fixed_step": "problem_38.simulate_fixed",
-               "schemes": ("euler", "symplectic")},
+               "schemes": ("euler", "symplectic"), "rhs": "problem_38.walker_ode", "rhs_args": ()},
 )
 def simulate(pkg, t_end, n, I_grav, start=None):
     """``simulate(t_end, n)`` (from ``start = (q0, qd0)`` where given) and the energies ``T``, ``V`` (under

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import module, probe
 from ._dynamics import fixed_step
-from ._forms import Arr, Dict, Either, Flag, Maybe, Num, Text
+from ._forms import Arr, Dict, Either, Flag, Maybe, Num, Seq, Text
 
 #: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
 EVENT = Dict({"values": Arr(None), "terminal": Maybe(Flag()), "direction": Maybe(Num())})
@@ -52,7 +52,7 @@ def _optional(value):
     args=("scalar", "scalar", "scalar"),
     draw=False,
     motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
-               "schemes": ("euler",)},
+               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2)},
 )
 def throw(pkg, v0, drag, g=None):
     """``throw(v0, drag)`` (and ``g`` where given): the apex and the landing, and the run ``t``, ``y`` (rows
@@ -87,3 +87,13 @@ def throw_fixed(pkg, v0, drag, *rest):
     run = fixed_step(lambda t, y: p42.ball_ode(t, y, float(drag), gravity), [0.0, float(v0)], p42.T_MAX, h,
                      scheme, event=lambda t, y: y[0] if t > 0 else 1.0)
     return {"t": run["t"], "y": run["y"], "t_land": run["t_event"]}
+
+
+@probe(returns=Seq(Arr(2), length=lambda drag, g, cases: len(cases)), says="ball_ode")
+def ball_ode(pkg, drag, g, cases):
+    """``ball_ode(t, y, drag, g)`` (the package's ``GRAVITY`` where ``g`` is None) for every ``(t, y)`` of
+    ``cases`` (the diagnosis engine compares it with the reference's at states along a run of ``throw``)."""
+    p42 = module(pkg, "problem_42")
+    gravity = p42.GRAVITY if g is None else float(g)
+    return [np.array(p42.ball_ode(float(t), np.asarray(y, dtype=float), float(drag), gravity), dtype=float)
+            for t, y in cases]

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import module, probe
 from ._dynamics import fixed_run, fixed_step, trace
-from ._forms import Arr, Dict, Flag, Maybe, Num
+from ._forms import Arr, Dict, Flag, Maybe, Num, Seq
 
 #: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
 EVENT = Dict({"values": Arr(None), "terminal": Maybe(Flag()), "direction": Maybe(Num())})
@@ -36,7 +36,8 @@ def event(pkg, states, s, d):
     ),
     says="simulate(q0, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
-               "schemes": ("euler", "symplectic")},
+               "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,),
+               "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"}},
 )
 def simulate(pkg, q0, t_end, s, bar=None):
     """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` where given): the run, the event, and
@@ -66,3 +67,42 @@ def simulate_fixed(pkg, q0, t_end, s, *rest):
     at_rest = np.append(np.asarray(q0, dtype=float), [0.0, 0.0, 0.0])
     return fixed_run(fixed_step(lambda t, y: p44.bar_ode(t, y, **other), at_rest, float(t_end), h, scheme, event=event,
                                 direction=-1.0), 3)
+
+
+@probe(returns=Seq(Arr(6), length=lambda bar, cases: len(cases)), says="bar_ode", terms="problem_44.bar_ode_terms")
+def bar_ode(pkg, bar, cases):
+    """``bar_ode(t, y)`` (or ``bar_ode(t, y, m, theta, g)`` with ``bar = (m, theta, g)`` where given) for every
+    ``(t, y)`` of ``cases`` (the diagnosis engine compares it with the reference's at states along a run of
+    ``simulate``)."""
+    other = {} if bar is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar)))
+    p44 = module(pkg, "problem_44")
+    return [np.array(p44.bar_ode(float(t), np.asarray(y, dtype=float), **other), dtype=float) for t, y in cases]
+
+
+@probe(reference_only=True)
+def bar_ode_terms(pkg, bar, cases):
+    """``bar_ode`` of every case split into named terms (the diagnosis engine calls it on the reference):
+    ``dy/dt = (qd, 0) + (0, qdd without gravity) + (0, what gravity adds)`` (the accelerations of the bar on its
+    support are affine in ``g``)."""
+    m, theta, g = (None, None, None) if bar is None else (float(x) for x in bar)
+    p44 = module(pkg, "problem_44")
+    other = {} if bar is None else {"m": m, "theta": theta}
+    gravity = p44.GRAVITY if g is None else g
+    terms = {"velocity": [], "f": [], "gravity": []}
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        full = np.asarray(p44.bar_ode(float(t), y.copy(), **other, g=gravity), dtype=float)
+        bias = np.asarray(p44.bar_ode(float(t), y.copy(), **other, g=0.0), dtype=float)
+        zero = np.zeros(3)
+        terms["velocity"].append(np.concatenate([y[3:], zero]))
+        terms["f"].append(np.concatenate([zero, bias[3:]]))
+        terms["gravity"].append(np.concatenate([zero, full[3:] - bias[3:]]))
+    return {"terms": terms, "extra": {}}
+
+
+@probe(reference_only=True)
+def sheet_bar(pkg):
+    """The sheet's bar ``(m, theta, g)``: the values ``simulate`` runs with where it is given no ``bar`` (the
+    diagnosis engine calls it on the reference)."""
+    p44 = module(pkg, "problem_44")
+    return [float(p44.MASS), float(p44.THETA), float(p44.GRAVITY)]

@@ -168,7 +168,7 @@ def constrained(pkg, cases):
     ),
     says="simulate(table, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_46.simulate_fixed",
-               "schemes": ("euler", "symplectic")},
+               "schemes": ("euler", "symplectic"), "rhs": "problem_46.free_ode", "rhs_args": (0,)},
 )
 def simulate(pkg, table, baumgarte, t_end, wire=None):
     """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every
@@ -236,3 +236,14 @@ def stale_mass_matrix(pkg, table, cases):
         qdd, _ = p46.constrained_dynamics(first, f, g, tau, J, sigma)
         out.append(np.concatenate([qd, qdd]))
     return out
+
+
+@probe(returns=Seq(Arr(6), length=lambda table, cases: len(cases)), says="robot_ode (computed torques)")
+def free_ode(pkg, table, cases):
+    """The robot's right-hand side before the wire is taut, ``problem_37.robot_ode(t, y, robot, table,
+    "computed_torques")``, for every ``(t, y)`` of ``cases`` (the diagnosis engine compares it with the
+    reference's at states along a run of ``simulate``)."""
+    p37 = module(pkg, "problem_37")
+    tree = _robot(pkg)
+    return [np.array(p37.robot_ode(float(t), np.asarray(y, dtype=float), tree, table, "computed_torques"),
+                     dtype=float) for t, y in cases]

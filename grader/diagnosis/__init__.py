@@ -19,7 +19,12 @@ The grammar:
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
-  wrong row, a wrong initial state, an event found late or early, an error that grows with the step.
+  wrong row, a wrong initial state, an event found late or early, an error that grows with the step, the run's
+  parameters exchanged or scaled (the reference re-run so).
+
+Before any cause of a run, the student's right-hand side is compared with the reference's along the run (where the
+probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,
+and no cause that blames the integration is told, by the engine or by a check (``doubt``).
 
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
@@ -35,7 +40,7 @@ arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import RECORDING, find, note_comparison, prepare, prepare_call, prepared, recording
+from .engine import RECORDING, doubted, find, note_comparison, prepare, prepare_call, prepared, recording
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
@@ -48,6 +53,7 @@ __all__ = [
     "Declaration",
     "declaration",
     "explain",
+    "doubt",
     "prepare",
     "prepare_call",
     "prepared",
@@ -84,3 +90,30 @@ def explain(ctx, evidences: list) -> Finding | None:
         if STRICT:
             raise
         return None
+
+
+def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
+    """A check's ``diagnosis`` that blames the integration of a run (a step too large, an energy drift, an event
+    found late or never) stands only where the run's right-hand side is the reference's: where it is not, the
+    engine's finding on the right-hand sides (a cause, or no name and what differs) replaces it; None: the
+    diagnosis stands.  ``evidence``: the failing comparison (None: the check's last run is the one)."""
+    if not ENABLED or not _blames_integration(diagnosis):
+        return None
+    try:
+        return doubted(Scene(ctx), evidence)
+    except (Budget, GraderFault):
+        return None
+    except Exception:  # noqa: BLE001 - a defect of the engine never costs the student the failure's message
+        if STRICT:
+            raise
+        return None
+
+
+def _blames_integration(diagnosis: str) -> bool:
+    from checks._diagnoses import DIAGNOSES
+
+    from .runs import INTEGRATION
+
+    names = [name for name in diagnosis.split(" or ") if name]
+    return bool(names) and all(name in INTEGRATION or name in DIAGNOSES and DIAGNOSES[name].family == "step_size"
+                               for name in names)

@@ -11,7 +11,7 @@ import numpy as np
 
 from checks._diagnoses import DIAGNOSES
 
-from ..values import Tol
+from ..values import Tol, format_array
 from ..errors import GraderFault, StudentFault
 from .evidence import (
     array_of,
@@ -41,11 +41,25 @@ from .grammar import (
 )
 from .scene import Budget, constants_of, Scene
 from .terms import term_slips, term_values
-from .runs import FIXED_STEPS, is_run, motion_slips, run_in_log, step_slips
+from .runs import (
+    FIXED_STEPS,
+    INTEGRATION,
+    is_run,
+    model_evidences,
+    motion_slips,
+    parameter_slips,
+    parameter_variants,
+    rhs_cases,
+    rhs_call,
+    RHS_TOL,
+    run_in_log,
+    step_slips,
+)
 
 __all__ = [
     "RECORDING",
     "find",
+    "doubted",
     "recording",
     "note_comparison",
     "prepared",
@@ -224,18 +238,26 @@ def _at_sheet_digits(scene: Scene, first: Evidence) -> bool:
     return held is not None and bool(held(first.source.probe, tuple(first.source.args)))
 
 
-def find(scene: Scene, evidences: list) -> Finding | None:
+def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
+    """The cause of a failing comparison (``evidences``: the input shown first); ``runs``: the run behind it is
+    explained too (False for the engine's own comparisons of a run's right-hand side)."""
     for evidence in evidences:
         _sources(scene, evidence)
     first = evidences[0]
     if _at_sheet_digits(scene, first):
         return None
-    run = first if is_run(first) else run_in_log(scene.ctx, first)
+    run = (first if is_run(first) else run_in_log(scene.ctx, first)) if runs else None
     found: list[Hypothesis] = []
     if run is not None:
         decl = Declaration(motion=run.motion) if run.motion else declaration(run.source.probe)
-        steps = step_slips(scene, run, decl)
-        found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))]
+        model = _model(scene, run, decl)
+        if model.state == "differs":  # the mistake is in the model: its cause, or none (never the integration)
+            return model.finding
+        integration = model.state == "agrees"
+        steps = step_slips(scene, run, decl) if integration else []
+        found += parameter_slips(scene, run, decl)
+        found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))
+                          and (integration or h.name not in INTEGRATION)]
     if first.source is None:  # a value derived from the student's own: explain the results it came from
         return _finding(found, "here") if found or first.call is None else _from_results(scene, evidences)
     decl = declaration(first.source.probe)
@@ -254,6 +276,56 @@ def find(scene: Scene, evidences: list) -> Finding | None:
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
+
+
+@dataclass(frozen=True)
+class _Model:
+    """What the engine knows of the model behind a run: ``state`` "agrees" (the student's right-hand side is the
+    reference's along the run, or the run declares none to doubt), "differs" (with the cause found on the
+    right-hand sides, or None) or "unknown" (the student's could not be evaluated)."""
+
+    state: str
+    finding: Finding | None = None
+
+
+def _model(scene: Scene, run: Evidence, decl: Declaration) -> _Model:
+    """The differential between the model and the integration of a failing run: the student's right-hand side
+    against the reference's at states along the reference's run (``runs.model_evidences``)."""
+    if not decl.motion.get("rhs"):
+        return _Model("agrees")
+    try:
+        evidences = model_evidences(scene, run, decl)
+    except GraderFault:
+        evidences = None
+    if evidences is None:
+        return _Model("unknown")
+    if all(within(e.got, e.expected, e.tol) for e in evidences):
+        return _Model("agrees")
+    finding = find(scene, evidences, runs=False)
+    e = next(e for e in evidences if not within(e.got, e.expected, e.tol))
+    i = int(np.argmax(np.max(np.abs(e.got - e.expected) - e.tol.rtol * np.abs(e.expected), axis=-1)))
+    t, y = e.source.args[-1][i]
+    where = (f"Your right-hand side differs from the reference's at states along its run (at t = {t:.4g} s, "
+             f"y = {format_array(y)}: yours {format_array(e.got[i])}, expected {format_array(e.expected[i])}), so "
+             "the mistake is in the model, not in the integration.")
+    if finding is None:
+        return _Model("differs", Finding((), where))
+    return _Model("differs", Finding(finding.names, f"{where} {finding.hint}"))
+
+
+def doubted(scene: Scene, evidence: Evidence) -> Finding | None:
+    """Where a check blames the integration of the run behind ``evidence``: the engine's finding when that run's
+    right-hand side is not the reference's (its cause, or with no name what differs), else None."""
+    if evidence is None:  # a failure stated in words: the check's last run
+        evidence = Evidence(np.zeros(0), np.zeros(0), RHS_TOL, "the run")
+    else:
+        _sources(scene, evidence)
+    run = evidence if is_run(evidence) else run_in_log(scene.ctx, evidence)
+    if run is None:
+        return None
+    decl = Declaration(motion=run.motion) if run.motion else declaration(run.source.probe)
+    model = _model(scene, run, decl)
+    return model.finding if model.state == "differs" else None
 
 
 #: the results of a call judged by a property that the engine compares with the reference's, at most
@@ -307,6 +379,7 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
         finding = find(scene, [first[path], second[path]])
         if finding is not None:
             findings.append((first[path].name, finding))
+    findings = [(label, finding) for label, finding in findings if finding.names]
     if not findings or len({f.diagnosis for _, f in findings}) != 1:
         return None
     hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
@@ -434,6 +507,13 @@ def prepare(ctx, source: Source) -> None:
             for scheme in decl.motion.get("schemes", ("euler",)):
                 for h in decl.motion.get("steps", FIXED_STEPS):
                     ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
+        if decl.motion.get("rhs"):
+            _prepare_model(ask, decl, source)
+        if decl.motion.get("parameters"):
+            spec = decl.motion["parameters"]
+            sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
+            for _, args in parameter_variants(decl.motion, tuple(source.args), sheet):
+                ask(source.probe, args, persist=True)
         if not decl.motion and not getattr(ctx, "randomized", False):
             args = redraw(decl, source.args, scene.draw_seed(source))
             if args is not None and ask(source.probe, args) is not None:
@@ -443,3 +523,15 @@ def prepare(ctx, source: Source) -> None:
                     ask(decl.terms, args)
     except (Budget, GraderFault):
         pass
+
+
+def _prepare_model(ask, decl: Declaration, source: Source) -> None:
+    """The reference's right-hand side at the states along its run that ``_model`` compares (and its terms)."""
+    root = source.root if source.root is not None else ask(source.probe, source.args)
+    halves = rhs_cases(root, decl.motion) if root is not None else None
+    rhs = declaration(decl.motion["rhs"])
+    for cases in halves or ():
+        args = rhs_call(decl.motion, tuple(source.args), cases)
+        ask(decl.motion["rhs"], args)
+        if rhs is not None and rhs.terms:
+            ask(rhs.terms, args)

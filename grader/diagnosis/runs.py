@@ -1,11 +1,18 @@
 """Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
 constant offset, a state from the wrong row, a wrong start, an event found late or early, and an error that grows
-with the step (against fixed-step runs of the reference's own right-hand side)."""
+with the step (against fixed-step runs of the reference's own right-hand side).
+
+Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
+reference's at states along the reference's run (``model_evidences``): a run that leaves the reference's is not
+proof that its integration is at fault, and when the right-hand sides differ the mistake is in the model."""
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 
+from ..errors import StudentFault
 from ..values import Tol, format_array
 from .evidence import (
     array_of,
@@ -13,6 +20,7 @@ from .evidence import (
     call_key,
     Declaration,
     declaration,
+    DISTINCT,
     distinct,
     Evidence,
     Hypothesis,
@@ -37,11 +45,31 @@ __all__ = [
     "is_run",
     "run_in_log",
     "remember_run",
+    "RHS_STATES",
+    "RHS_TOL",
+    "INTEGRATION",
+    "rhs_cases",
+    "rhs_call",
+    "model_evidences",
+    "PARAMETER_FACTORS",
+    "parameter_variants",
+    "parameter_slips",
 ]
 
 
 #: the steps of the reference's fixed-step runs that a run's error is compared with [s]
 FIXED_STEPS = (0.005, 0.01, 0.02, 0.05)
+#: the states along the reference's run at which the student's right-hand side is compared with the reference's,
+#: in each half of the run (the second half is the engine's second case)
+RHS_STATES = 3
+#: two codings of one right-hand side agree within this (a solve for an inverse, terms summed in another order); a
+#: slip of the model (a sign, a term, a row) moves it by far more
+RHS_TOL = Tol("right-hand side", 1e-7, 1e-6)
+#: the causes that blame the integration of a run (with every name of the step_size family), told only where its
+#: right-hand side is the reference's
+INTEGRATION = ("step_size", "event_late", "event_early", "energy_drift", "no_event")
+#: the factors a run's parameter (a mass, an inertia, g) is tried at, and their words
+PARAMETER_FACTORS = ((2.0, "twice"), (0.5, "half"))
 #: a fit of a run's error this close, by about one times a fixed-step run's, needs no other run to be tried (the
 #: student's run is that scheme at that step)
 STEP_EXACT = 0.05
@@ -319,3 +347,129 @@ def remember_run(ctx, probe: str, args: tuple, value) -> None:
     decl = declaration(probe)
     if decl is not None and decl.motion:
         ctx.__dict__.setdefault("runs", {})[call_key(probe, tuple(args))] = value
+
+
+def rhs_cases(root, motion: dict):
+    """Two lists of ``(t, y)`` from the reference's run ``root`` before its first event (``y``: the declared states
+    in their order), ``RHS_STATES`` from each half of it; None when the run is too short."""
+    ours = run_of(root, motion)
+    if ours is None:
+        return None
+    t, R = ours
+    end = min([t[-1], *event_times(root, motion)])
+    inside = np.flatnonzero(t < end - 1e-12)
+    if inside.size < 2 * RHS_STATES:
+        return None
+    picks = inside[np.linspace(0, inside.size - 1, 2 * RHS_STATES).round().astype(int)]
+    y = np.concatenate([R[key] for key in motion.get("states", ())], axis=1)
+    cases = [(float(t[i]), y[i].copy()) for i in picks]
+    return cases[:RHS_STATES], cases[RHS_STATES:]
+
+
+def rhs_call(motion: dict, args: tuple, cases) -> tuple:
+    """The arguments of the right-hand side's probe: the run's arguments it takes (``motion["rhs_args"]``, None for
+    one not given), then the cases."""
+    return (*(args[i] if i < len(args) else None for i in motion.get("rhs_args", ())), cases)
+
+
+def model_evidences(scene: Scene, evidence: Evidence, decl: Declaration):
+    """The student's right-hand side against the reference's at states along the reference's run, one evidence
+    per half of it; None where the probe declares no right-hand side or the student's cannot be evaluated there."""
+    motion = decl.motion
+    probe, source = motion.get("rhs"), evidence.source
+    if not probe or source is None or evidence.student is None:
+        return None
+    halves = rhs_cases(source.root, motion)
+    if halves is None:
+        return None
+    found = []
+    for cases in halves:
+        args = rhs_call(motion, tuple(source.args), cases)
+        expected_root = scene.reference(probe, args)
+        try:
+            got_root = scene.student(probe, args)
+        except StudentFault:
+            return None
+        expected, got = array_of(expected_root), array_of(got_root)
+        if expected is None or got is None or got.shape != expected.shape:
+            return None
+        found.append(Evidence(got, expected, RHS_TOL, "the right-hand side", None, None,
+                              Source(probe, args, (), expected_root), Source(probe, args, (), got_root)))
+    return found
+
+
+def parameter_variants(motion: dict, args: tuple, sheet) -> list:
+    """``(hypothesis, arguments)`` of the run's parameters (``motion["parameters"]``: ``{"arg": index, "names":
+    (...)}``; ``sheet``: their values where the argument is not given) exchanged in pairs or scaled by the
+    ``PARAMETER_FACTORS``.  Two parameters of equal value are not exchanged: that cannot be told."""
+    spec = motion.get("parameters")
+    if not spec:
+        return []
+    index, names = spec["arg"], tuple(spec["names"])
+    given = args[index] if index < len(args) and args[index] is not None else sheet
+    values = array_of(given)
+    if values is None or values.shape != (len(names),):
+        return []
+
+    def run_with(changed):
+        new = list(args) + [None] * max(0, index + 1 - len(args))
+        new[index] = [float(x) for x in changed]
+        return tuple(new)
+
+    found = []
+    for i, j in itertools.combinations(range(len(names)), 2):
+        if np.isclose(values[i], values[j], rtol=1e-9, atol=0.0):
+            continue
+        changed = values.copy()
+        changed[[i, j]] = values[[j, i]]
+        found.append((Hypothesis(f"run:swap:{i}:{j}", "argument_order", 2,
+                                 f"{names[i]} and {names[j]} are exchanged: the reference's run with {names[i]} = "
+                                 f"{values[j]:g} and {names[j]} = {values[i]:g} is yours"), run_with(changed)))
+    for i, name in enumerate(names):
+        for factor, words in PARAMETER_FACTORS:
+            changed = values.copy()
+            changed[i] = values[i] * factor
+            found.append((Hypothesis(f"run:scale:{factor:g}:{i}", "scaled_argument", 2,
+                                     f"{name} enters at {words} its value: the reference's run with {name} = "
+                                     f"{changed[i]:g} is yours"), run_with(changed)))
+    return found
+
+
+def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration) -> list:
+    """The run's parameters exchanged or scaled (``parameter_variants``): the reference re-run so reproduces the
+    student's run over the whole span both cover (and ends where it does), while it differs clearly from the
+    reference's own run."""
+    motion = decl.motion
+    spec, source, student = motion.get("parameters"), evidence.source, evidence.student
+    if not spec or source is None or student is None:
+        return []
+    mine, ours = run_of(student.root, motion), run_of(source.root, motion)
+    if mine is None or ours is None:
+        return []
+    sheet = scene.reference(spec["sheet"], ()) if spec.get("sheet") else None
+    found = []
+    for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet):
+        root = scene.reference(source.probe, args, persist=True)
+        theirs = run_of(root, motion)
+        if theirs is not None and _same_run(mine, theirs, evidence.tol) and not _same_run(ours, theirs,
+                                                                                           evidence.tol, DISTINCT):
+            found.append(hypothesis)
+    return found
+
+
+def _same_run(mine, theirs, tol: Tol, times: float = 1.0) -> bool:
+    """Two runs ``(t, states)`` end together (within an output step) and agree within ``times`` the tolerance at
+    every output time of the first."""
+    (t_m, M), (t_t, T) = mine, theirs
+    step = float(np.median(np.diff(t_m)))
+    if abs(t_m[-1] - t_t[-1]) > step + 1e-9 or abs(t_m[0] - t_t[0]) > 1e-9:
+        return False
+    inside = t_m <= t_t[-1] + 1e-12
+    loose = Tol(tol.name, times * tol.atol, times * tol.rtol)
+    for key in M:
+        if key not in T or M[key].shape[1] != T[key].shape[1]:
+            return False
+        at = np.column_stack([np.interp(t_m[inside], t_t, T[key][:, j]) for j in range(T[key].shape[1])])
+        if not within(M[key][inside], at, loose):
+            return False
+    return True

@@ -1,0 +1,239 @@
+"""The diagnosis engine on runs: a wrong model is told from a wrong integration.
+
+A run that leaves the reference's is not proof that its integration is at fault.  Where a run's probe declares its
+right-hand side (``motion["rhs"]``), the engine compares the student's with the reference's at states along the
+reference's run: where they differ, the cause is sought on the right-hand sides (their declared terms, say) and no
+integration cause is told, by the engine or by a check (``energy_drift``); where they agree, a step too large is
+told as before.  Each mistake below is planted into a copy of the reference where no catalogue names it, graded as
+``grade batch`` grades (a warm fork), live and from the kit's answer key (the same verdicts).
+"""
+
+import numpy as np
+import pytest
+
+import grader.diagnosis as engine
+from checks._diagnoses import families_of
+from grader.checking import Tol
+from grader.diagnosis import Evidence, explain
+from grader.results import Status
+from grader.sandbox import Limits, sandbox_mode
+from grader.sandbox.zygote import Zygote, warm_modules
+
+from tests.kit_support import (  # noqa: F401 (fixtures)
+    answer_key,
+    assert_same_verdicts,
+    deferred_ids,
+    grade_live_and_kit,
+    kit_oracle,
+)
+from tests.submissions import Planted, build_planted
+
+#: the families of the causes that blame a run's integration
+INTEGRATION = {"step_size", "event"}
+
+GRAVITY_SIGN_PENDULUM = Planted(
+    name="motions-p24-gravity-sign", problem=24, file="problem_24.py",
+    old="return np.concatenate([qd, forward_dynamics(M, f, g, np.zeros(3))])",
+    new="return np.concatenate([qd, forward_dynamics(M, f, -g, np.zeros(3))])",
+    check="p24.simulated_motion", diagnosis="gravity_sign", message="the mistake is in the model")
+GRAVITY_SIGN_BAR = Planted(
+    name="motions-p44-gravity-sign", problem=44, file="problem_44.py",
+    old="qdd, _ = accelerations(y[:3], y[3:], m, theta, g)",
+    new="qdd, _ = accelerations(y[:3], y[3:], m, theta, -g)",
+    check="p44.motion", diagnosis="gravity_sign", message="the mistake is in the model")
+ROWS_OF_THE_BAR = Planted(
+    name="motions-p44-ode-rows", problem=44, file="problem_44.py",
+    old="return np.concatenate([y[3:], qdd])",
+    new="return np.concatenate([qdd, y[3:]])",
+    check="p44.motion", diagnosis="", message="differs from the reference's at states along its run")
+EULER_WALKER = Planted(
+    name="motions-p38-euler-loop", problem=38, file="problem_38.py",
+    old='''    result = solve_ivp(walker_ode, (0.0, t_end), y0, method="DOP853", t_eval=np.linspace(0.0, t_end, n),
+                       rtol=1e-10, atol=1e-10, args=(tree,))
+    return {"t": result.t, "q": result.y[:2].T, "qd": result.y[2:].T}''',
+    new='''    times = np.linspace(0.0, t_end, n)
+    rows, y = [y0], y0
+    for a, b in zip(times[:-1], times[1:]):
+        y = y + (b - a) * walker_ode(a, y, tree)
+        rows.append(y)
+    rows = np.array(rows)
+    return {"t": times, "q": rows[:, :2], "qd": rows[:, 2:]}''',
+    check="p38.walker_run", diagnosis="step_size", message="fixed-step explicit Euler integration")
+RATES_AS_ANGLES = Planted(
+    name="motions-p24-rates-as-angles", problem=24, file="problem_24.py",
+    old='return {"t": result.t, "q": result.y[:3].T, "qd": result.y[3:].T}',
+    new='return {"t": result.t, "q": result.y[3:].T, "qd": result.y[:3].T}',
+    check="p24.simulated_motion", diagnosis="state_row", message="from the wrong row")
+
+MASS_AND_INERTIA_EXCHANGED = Planted(
+    name="motions-p44-mass-and-inertia-exchanged", problem=44, file="problem_44.py",
+    old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
+    new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(theta, m, g),",
+    check="p44.motion", diagnosis="argument_order", message="m and theta are exchanged")
+
+REVERSED_WIRE = Planted(
+    name="motions-p46-velocities-reversed", problem=46, file="problem_46.py",
+    old="    return qd_minus + Minv_JT @ Lam, Lam", new="    return -qd_minus, Lam",
+    check="p46.plastic_impact", diagnosis="", message="")
+REVERSED_PIN = Planted(
+    name="motions-p47-velocities-reversed", problem=47, file="problem_47.py",
+    old="    return np.array(q_minus, dtype=float), qd_minus + M_inv @ J.T @ Lam, float(Lam[0])",
+    new="    return np.array(q_minus, dtype=float), -qd_minus, float(Lam[0])",
+    check="p47.plastic_impact", diagnosis="", message="")
+
+MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
+            MASS_AND_INERTIA_EXCHANGED]
+
+
+@pytest.fixture(autouse=True)
+def strict(monkeypatch):
+    """A defect of the engine fails the test instead of naming no cause."""
+    monkeypatch.setattr(engine, "STRICT", True)
+
+
+@pytest.fixture(scope="module")
+def slot():
+    problems = sorted({m.problem for m in MISTAKES + [REVERSED_WIRE, REVERSED_PIN]})
+    with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
+        zygote.start()
+        yield zygote
+
+
+def graded(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    """The live result of the mistake's check, once the kit is seen to give every check the same verdict."""
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    target = {r.check_id: r for r in live.results}[mistake.check]
+    assert target.status is Status.FAILED, target.message
+    return target, submission
+
+
+@pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
+def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
+    assert mistake.message in target.hint, target.hint
+
+
+@pytest.mark.parametrize("mistake", [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR],
+                         ids=lambda m: m.name)
+def test_a_wrong_model_is_never_told_as_its_integration(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    """A slip in the right-hand side makes the run drift and its energy too; neither the engine nor the check's
+    own ``energy_drift`` blames the integration for it, on any check of the problem."""
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, _ = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    told = {r.check_id: r.diagnosis for r in live.results if r.status is Status.FAILED}
+    assert mistake.check in told
+    blamed = {check: d for check, d in told.items() if set(families_of(d)) & INTEGRATION}
+    assert not blamed, blamed
+
+
+@pytest.mark.parametrize("mistake", [REVERSED_WIRE, REVERSED_PIN], ids=lambda m: m.name)
+def test_an_impact_is_told_elastic_only_where_its_velocities_follow_that_law(mistake, tmp_path, kit_oracle,
+                                                                            deferred_ids, slot):
+    """Every velocity reversed also reverses the closing one (restitution 1 along the constraint), but the other
+    velocities are not the elastic law's: no elastic impact is told."""
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    assert "elastic" not in target.diagnosis.split(" or "), (target.diagnosis, target.hint)
+
+
+def test_the_energy_drift_of_a_wrong_model_was_blamed_on_the_integration(tmp_path, kit_oracle, slot,
+                                                                        monkeypatch):
+    """Without the engine the check blames the integration for the pendulum's drifting energy: the cause the
+    differential replaces."""
+    from grader import grade_problem
+    from grader.workers import Forked
+
+    from tests.kit_support import SEED
+
+    monkeypatch.setattr(engine, "ENABLED", False)
+    submission = build_planted(GRAVITY_SIGN_PENDULUM, tmp_path / "pkg")
+    off = grade_problem(24, submission, seed=SEED, workers=Forked(slot))
+    assert {r.check_id: r for r in off.results}["p24.simulated_motion"].diagnosis == "energy_drift"
+
+
+# ------------------------------------------------------------------------------------------ stand-ins
+
+
+class _Oracle:
+    mode = "live"
+
+    def __init__(self, functions):
+        self.functions = functions
+
+    def reference(self, probe, args, persist=False, check=None):
+        return self.functions[probe](*args)
+
+
+class _Child:
+    def __init__(self, functions):
+        self.functions = functions
+
+    def call(self, probe, *args, timeout=None):
+        return self.functions[probe](*args)
+
+
+def _ball(v0, g, t):
+    return {"t": t, "y": np.column_stack([v0 * t - g * t * t / 2, v0 - g * t])}
+
+
+def _explain_ball(monkeypatch, student_g, reference_g, student_v0=4.0):
+    """A ball's run ``throw(v0, g)`` (its probe declares both as scalars, and its right-hand side): the student's
+    run with their own ``v0`` and ``g``, the reference's with the given ones."""
+    from grader.diagnosis import Declaration
+
+    decl = Declaration(args=("scalar", "scalar"), names=("v0", "g"),
+                       motion={"time": "t", "states": ("y",), "rhs": "stub.rhs", "rhs_args": (1,)})
+    monkeypatch.setitem(engine.DECLARATIONS, "stub.throw", decl)
+    monkeypatch.setitem(engine.DECLARATIONS, "stub.rhs", None)
+    t = np.linspace(0.0, 0.8, 81)
+
+    def rhs(g, cases):
+        return [np.array([y[1], -g]) for _, y in cases]
+
+    reference = {"stub.throw": lambda v0, g: _ball(v0, g, t), "stub.rhs": rhs}
+    student = {"stub.throw": lambda v0, g: _ball(student_v0, student_g, t),
+               "stub.rhs": lambda g, cases: rhs(student_g, cases)}
+    expected, got = _ball(4.0, reference_g, t), _ball(student_v0, student_g, t)
+
+    class Ctx:
+        calls = [("reference", "stub.throw", (4.0, reference_g), expected),
+                 ("student", "stub.throw", (4.0, reference_g), got)]
+        check_id = "p99.run"
+        oracle = _Oracle(reference)
+        child = _Child(student)
+        seed = 1
+
+    evidence = Evidence(np.asarray(got["y"]), np.asarray(expected["y"]), Tol("band", 1e-3), "y", got, expected)
+    return explain(Ctx(), [evidence])
+
+
+def test_an_exchange_of_equal_values_is_not_told(monkeypatch):
+    """With v0 = g = 4 an exchange of the two cannot be told from the right values; the student's run differs
+    (another start speed), and the engine does not name the exchange (which gives the expected run), but the
+    start."""
+    finding = _explain_ball(monkeypatch, student_g=4.0, reference_g=4.0, student_v0=5.0)
+    assert finding is None or "argument_order" not in finding.names, finding
+
+
+def test_a_model_that_differs_names_no_start_and_no_step(monkeypatch):
+    """The student's ball falls under another gravity (their right-hand side differs): the run is not told as a
+    wrong start, an offset or an integration's error, only what the right-hand sides say (a scaled gravity, or
+    nothing)."""
+    finding = _explain_ball(monkeypatch, student_g=9.81 * 2, reference_g=9.81)
+    assert finding is not None and "not in the integration" in finding.hint, finding
+    assert not set(finding.names) & {"initial_state", "offset", "step_size", "time_shift", "state_row"}, finding
+
+
+def test_parameters_of_equal_value_are_never_exchanged():
+    """A run's parameters are tried exchanged only where their values differ: two equal masses cannot tell an
+    exchange (the reference's run with them exchanged is its own run)."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"parameters": {"arg": 0, "names": ("m1", "m2", "g")}}
+    keys = {h.key for h, _ in parameter_variants(motion, ((1.5, 1.5, 9.81),), None)}
+    assert not {k for k in keys if k.startswith("run:swap:0:1")}
+    assert {"run:swap:0:2", "run:swap:1:2"} <= keys
+    keys = {h.key for h, _ in parameter_variants(motion, (None,), (1.5, 2.5, 9.81))}
+    assert "run:swap:0:1" in keys
