@@ -366,6 +366,8 @@ _TABLE = (
     _D("joints_changed", "model", "joints changed that were right", "changed joints that were right"),
     _D("contacts", "model", "contacts that touch where nothing should", "left contacts on"),
     _D("mass_not_small", "scale", "a massless body left without a small mass", "left a body massless"),
+    _D("inertia_not_small", "scale", "a small added mass given a large inertia",
+       "gave the added small mass a large inertia"),
     _D("no_actuator", "missing_term", "a model without its actuator", "left out the actuator"),
     _D("actuator_joint", "model", "an actuator on the wrong joint", "put the actuator on the wrong joint"),
     _D("leftover_input", "extra_term", "an input left in the model that should be zero", "left an input in"),

@@ -7,9 +7,9 @@ rather than returning the angles where its iteration stopped.  A balanced config
 closes and gravity does no work along the linkage's only motion, whichever balanced configuration it is; it is
 asked for the sheet's fixed point and for points on the ground the sheet does not print ((0.3, 0, 0) and one drawn
 per grading), so that the sheet's configuration typed in earns nothing.  The MuJoCo model (inside the sandbox) must
-close the loop with an equality constraint at the fixed point, and its acceleration at rest along that motion must
-be the reference's (projected Newton-Euler, independent of MuJoCo) and vanish in the student's balanced
-configuration.
+close the loop with an equality constraint at the fixed point it is given (the sheet's, and another on the
+ground), and its acceleration at rest along that motion must be the reference's (projected Newton-Euler,
+independent of MuJoCo) and vanish in the student's balanced configuration.
 """
 
 import numpy as np
@@ -325,11 +325,19 @@ def _along(desc, what):
 
 
 @check(1, title="four_bar(...): three hinges about +z at the joints of q, and an equality constraint joining the end "
-       "of link 3 to the world at the fixed point", stage=STAGE_DEFINED, group="model")
+       "of link 3 to the world at the fixed point (the sheet's, and another on the ground)", stage=STAGE_DEFINED,
+       group="model")
 def check_model_structure(ctx):
-    q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, FIXED_POINT)["q"]
-    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
-    desc = _model(ctx, q, what)
+    for point in (FIXED_POINT, GROUND_POINT):
+        _assert_structure(ctx, point)
+
+
+def _assert_structure(ctx, point):
+    """The model of a configuration the reference assembles at ``point``: its hinges where the joints of q are,
+    and one connect that holds the end of link 3 at ``point``."""
+    q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, point)["q"]
+    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()}, fixed_point = ({point[0]:g}, {point[1]:g}, 0))"
+    desc = _model(ctx, q, what, point)
     joints = hinges(desc, 3, what)
     points = loop_points(q)
     for k, joint in enumerate(joints):
@@ -346,11 +354,14 @@ def check_model_structure(ctx):
              '<equality><connect site1="tip" site2="fixed"/></equality>, with the site "fixed" on the world body.',
              "no_connect")
     p1, p2 = (np.asarray(connects[0][k], dtype=float) for k in ("point1", "point2"))
-    assert_close(p1, p2, f"the two points the connect joins in {what}", POSITION,
-                 context="(the loop closes in the model as written)")
-    assert_close(p2, FIXED_POINT, f"where the connect holds the end of link 3 in {what}", POSITION,
+    ignored = [] if tuple(point) == FIXED_POINT else [Mistake(
+        "ignored_argument", FIXED_POINT, "The world's end of the connect sits at the sheet's fixed point (0.5, 0, 0) "
+        "whatever fixed_point is given: place the site \"fixed\" at fixed_point.")]
+    assert_close(p2, point, f"where the connect holds the end of link 3 in {what}", POSITION, mistakes=ignored,
                  note="A body-anchored connect holds the point where it is in the model as written: build the model "
                       "in the assembled configuration, or join two sites.")
+    assert_close(p1, p2, f"the two points the connect joins in {what}", POSITION,
+                 context="(the loop closes in the model as written)")
 
 
 @check(2, title="four_bar(...): released at rest in an unbalanced configuration, MuJoCo's acceleration along the "

@@ -1,8 +1,8 @@
 """Checks of problem 5: debugging a model.
 
 MuJoCo refuses the broken model as Simscape did (a moving body without mass); the repaired model must load, keep
-the bodies, joints and the link of the broken one, and add only a small mass.  The description of the error, its
-fix and the question of energy are read and scored by hand.
+the bodies, joints and the link of the broken one, and add only a small mass with a small inertia.  The
+description of the error, its fix and the question of energy are read and scored by hand.
 """
 
 import numpy as np
@@ -36,8 +36,8 @@ def check_fixed_loads(ctx):
     model_of(ctx.student(p05.fixed, ctx.draw(_configuration)), "fixed_model()")
 
 
-@check(2, title="fixed_model() keeps the broken model's joints and link, and adds only a small mass (at most a "
-       "tenth of the link's) where one was missing", stage=STAGE_STRUCTURE, group="fixed")
+@check(2, title="fixed_model() keeps the broken model's joints and link, and adds only a small mass and inertia (at "
+       "most a tenth of the link's) where they were missing", stage=STAGE_STRUCTURE, group="fixed")
 def check_fixed_minimal(ctx):
     qpos = ctx.draw(_configuration)
     got = model_of(ctx.student(p05.fixed, qpos), "fixed_model()")
@@ -57,3 +57,12 @@ def check_fixed_minimal(ctx):
              f"at most {SMALL:g} of the link's {link['mass']:.3g} kg, repairs the model without changing its motion "
              "much.", "Give the massless body a small <inertial> (mass and diaginertia), or a small geom.",
              "mass_not_small")
+    carrier_moment, link_moment = (float(np.max(np.linalg.eigvalsh(np.asarray(body["inertia"], dtype=float))))
+                                   for body in (carrier, link))
+    if carrier_moment > SMALL * link_moment:
+        fail(f"the body of the revolute joint has a principal moment of inertia of {carrier_moment:.3g} kg m^2 about "
+             f"its centre of mass; a small inertia, at most {SMALL:g} of the link's largest "
+             f"{link_moment:.3g} kg m^2, repairs the model without changing its motion much.",
+             "The added body turns with joint 1, so its inertia changes the motion as its mass does: keep it of the "
+             "order of the added mass times its size squared (check the exponent of each diaginertia entry).",
+             "inertia_not_small")

@@ -78,7 +78,7 @@ def check_side_effects(ctx):
 
 import numpy as np  # noqa: E402
 
-from grader.checking import EXACT, Tol, assert_close, close  # noqa: E402
+from grader.checking import EXACT, Mistake, Tol, assert_close, close  # noqa: E402
 from probes import _dynamics as probe_dynamics  # noqa: E402
 
 from ._dynamics import assert_energy_conserved, assert_run, run_array, run_figure  # noqa: E402
@@ -87,6 +87,8 @@ from ._dynamics import assert_energy_conserved, assert_run, run_array, run_figur
 SIMULATION_Q0 = (np.pi / 6, -np.pi / 4, np.pi / 3)
 SIMULATION_GRAV = np.array([0.0, -9.81, 0.0])
 SIMULATION_T_END = 2.0
+#: simulate()'s output step (its default dt)
+SIMULATION_DT = 0.01
 #: the motion is chaotic: runs are compared over the first second only
 HORIZON = 1.0
 #: any solve_ivp method at its default tolerances: energy drift <= 0.94 J over 2 s, within 0.015 rad and 0.15 rad/s
@@ -96,6 +98,19 @@ SIMULATION_BAND = {"q": Tol("a reasonable integrator", 5e-2), "qd": Tol("a reaso
 SIMULATION_TIMEOUT = 30.0
 #: the run released from a configuration of its own is compared over this time [s]
 OWN_T_END = 0.5
+
+
+def _assert_output_times(t, expected, what):
+    """The run's output times are the reference's (every ``SIMULATION_DT`` from 0): the states are compared row by
+    row, so a run whose times are shifted would otherwise pass with the right states at the wrong times."""
+    if close(t, expected, EXACT):
+        return
+    expected = np.asarray(expected, dtype=float)
+    shifts = [Mistake("time_shift", expected + sign * SIMULATION_DT, "The states are right, the times beside them "
+                      "are not: return the times solve_ivp returns (result.t), which start at t = 0.")
+              for sign in (1, -1)]
+    assert_close(t, expected, f"the output times of {what}", EXACT, shifts,
+                 note=f"An output every {SIMULATION_DT:g} s from 0 (the t_eval of solve_ivp).")
 
 
 @check(2, title="simulate(): released at rest from q = (pi/6, -pi/4, pi/3), the pendulum conserves its energy over "
@@ -112,6 +127,7 @@ def check_simulated_motion(ctx):
     ctx.add_figure(run_figure("Problem 24: the energy T + V (conserved)", "E [J]", got["t"],
                               np.column_stack([got["T"] + got["V"]]), expected["t"],
                               np.column_stack([expected["T"] + expected["V"]]), ["T + V"]))
+    _assert_output_times(got["t"], expected["t"], what)
     start = np.concatenate([SIMULATION_Q0, np.zeros(3)])
     if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
         assert_close(np.concatenate([got["q"][0], got["qd"][0]]), start, "(q, qd) at t = 0", EXACT,
@@ -130,6 +146,8 @@ def check_simulated_motion(ctx):
     q0 = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
     ours = ctx.reference(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0)
     mine = ctx.student(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, timeout=SIMULATION_TIMEOUT)
+    own = f"problem_24.simulate({OWN_T_END:g}, q0)"
+    _assert_output_times(run_array(mine, "t", np.shape(ours["t"]), own), ours["t"], own)
     assert_run(mine, ours, ("q", "qd"), SIMULATION_BAND,
                f"the run released at q0 = {np.round(q0, 4).tolist()} (the first {OWN_T_END:g} s)",
                note="Any solve_ivp method at its default tolerances stays within the band.")

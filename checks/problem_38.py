@@ -7,13 +7,25 @@ reused).  The motion is judged by physics first (the energy of the student's own
 contact does no work) and then against a tight reference run within bands that any ``solve_ivp`` method at its
 default tolerances meets.  Tolerances far looser than the defaults (``rtol = atol = 1e-2``) still follow the
 sheet's motion with some methods (DOP853, Radau), so the walker is also started where the sheet does not start it,
-near its equilibrium, where the motion is a few mrad: the defaults follow it, such tolerances lose it.
+near its equilibrium, where the motion is a few mrad: the defaults follow it, such tolerances lose it.  That run
+asks another number of outputs than the sheet's 100, so that a simulate that ignores its n is seen.
 """
 
 import numpy as np
 
 from grader import strategies as st
-from grader.checking import EXACT, STAGE_STRUCTURE, STAGE_VALUES, CheckFailure, Mistake, Tol, assert_close, check, close
+from grader.checking import (
+    EXACT,
+    STAGE_STRUCTURE,
+    STAGE_VALUES,
+    CheckFailure,
+    Mistake,
+    Tol,
+    assert_close,
+    check,
+    close,
+    fail,
+)
 from probes import _dynamics as probe_dynamics, problem_38 as p38
 
 from ._dynamics import WALKER, assert_energy_conserved, assert_fresh_along_a_run, assert_run, run_array, run_figure
@@ -129,6 +141,8 @@ def check_walker_run(ctx):
 #: slowly), the swing leg nudged; over 3 s its angles move by at most 5.7e-3 rad and its rates reach 3.4e-3 rad/s
 SMALL_START = (np.array([0.24, -0.294]), np.array([0.0, 2e-3]))
 T_SMALL = 3.0
+#: its outputs: n = 151 (every 0.02 s), not the sheet's 100, so that a simulate that ignores its n is seen
+N_SMALL = 151
 #: any solve_ivp method at its default tolerances (rtol 1e-3, atol 1e-6) follows that motion within 1.5e-5 rad and
 #: 5.4e-5 rad/s; at rtol = atol = 1e-2, which lets an error as large as the motion itself pass, none comes closer
 #: than 5.3e-4 rad and 1.1e-3 rad/s (RK45, RK23, DOP853, Radau, BDF and LSODA measured)
@@ -146,10 +160,19 @@ START_HINT = ("The run starts at the q0, qd0 passed to simulate(t_end, n, q0, qd
 def _assert_small_motion(ctx):
     """The walker from ``SMALL_START`` (a small motion near its equilibrium) follows the reference's run within
     ``SMALL_BAND``: a tolerance far looser than the defaults loses it, where the sheet's larger motion hides it."""
-    expected = ctx.reference(p38.simulate, T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, persist=True)
-    got = ctx.student(p38.simulate, T_SMALL, N_OUTPUT, I_GRAV, SMALL_START, timeout=SIMULATION_TIMEOUT)
+    expected = ctx.reference(p38.simulate, T_SMALL, N_SMALL, I_GRAV, SMALL_START, persist=True)
+    got = ctx.student(p38.simulate, T_SMALL, N_SMALL, I_GRAV, SMALL_START, timeout=SIMULATION_TIMEOUT)
     q0, qd0 = (np.round(x, 4).tolist() for x in SMALL_START)
-    what = f"simulate({T_SMALL:g}, {N_OUTPUT}, q0 = {q0}, qd0 = {qd0})"
+    what = f"simulate({T_SMALL:g}, {N_SMALL}, q0 = {q0}, qd0 = {qd0})"
+    t = run_array(got, "t", None, what)
+    if t.shape != np.shape(expected["t"]):
+        typed = t.size == N_OUTPUT
+        sheet = f" (the sheet's n = {N_OUTPUT}, whatever n is given)" if typed else ""
+        fail(f"{what} returned {t.size} output times{sheet}; it was asked for n = {N_SMALL}, equally spaced from 0 "
+             f"to {T_SMALL:g} s.",
+             "Output at the n times simulate(t_end, n, ...) is given: t_eval = np.linspace(0, t_end, n) (the sheet's "
+             f"n = {N_OUTPUT} is only the default; the checks also ask another n).",
+             "ignored_argument" if typed else "shape")
     for key in ("t", "q", "qd"):
         run_array(got, key, np.shape(expected[key]), what)
     ctx.add_figure(run_figure("Problem 38: a small motion near the equilibrium, q(t) - q(0)", "[rad]", got["t"],

@@ -5,8 +5,9 @@ The event function at random states (its residual, ``terminal``, ``direction = -
 event time and state against a tight reference run within bands that any ``solve_ivp`` method at its default
 tolerances meets (a fixed-step loop at a large step does not), the run ends at the event, follows the reference's
 and keeps the bar on its first support; the bar's motion up to the event is drawn, the student's over the
-reference's.  Random starting states make a memorised event time worthless, and a bar of another mass, inertia and
-gravity one that keeps the sheet's.
+reference's.  Random starting states make a memorised event time worthless, a bar of another mass, inertia and
+gravity one that keeps the sheet's, and a bar with a half-width (d = 0.05 m, the grader's own case: the sheet's
+bar has d = 0) an event that drops its d.
 """
 
 import numpy as np
@@ -137,7 +138,8 @@ def _event(got, expected, what, bands):
 
 
 @check(3, title="simulate(): the bar hits the second support at the reference's time (within 2e-3 s) and state, "
-       "and the run ends there; a bar of another mass, inertia and gravity hits it at its own time",
+       "and the run ends there; a bar of another mass, inertia and gravity, and one with a half-width d = 0.05 m "
+       "(the grader's own case: the sheet's bar has d = 0), hit it at their own time",
        stage=STAGE_VALUES, group="run")
 def check_event(ctx):
     got, expected = _runs(ctx)
@@ -149,6 +151,7 @@ def check_event(ctx):
                                      for k, label in enumerate(labels)]))
     _event(got, expected, "simulate()", SHEET_BANDS)
     _assert_other_bar(ctx, expected)
+    _assert_wide_bar(ctx)
 
 
 #: a bar the sheet does not print, (m, theta, g) = (0.8 kg, 0.6 kg m^2, 11 m/s^2): it hits the second support at
@@ -176,6 +179,33 @@ def _assert_other_bar(ctx, sheet):
     if got.get("t_event") is not None and any(close(got["t_event"], mistake.value, EVENT_TIME) for mistake in typed):
         assert_close(got["t_event"], expected["t_event"], f"t_event of {what}", EVENT_TIME, typed,
                      context="(a bar the sheet does not print, against a tight reference run)")
+    _event(got, expected, what, SHEET_BANDS)
+
+
+#: the half-width of a bar the sheet does not print (its d = 0): the grader's own case, so that a simulate that
+#: drops its d (an event at d = 0 whatever it is given) is seen
+WIDE = 0.05
+#: the sheet's bar moved out by WIDE along its normal (-sin phi, cos phi), so that its lower edge rests on the first
+#: support (c = y cos phi - x sin phi - d = 0): it hits the second support at 0.686 s, and a run that ignores d
+#: (its edge WIDE below the support when the event fires) at 0.727 s; any solve_ivp method at its default tolerances
+#: errs there by up to 6.8e-4 s, 2.3e-3 in q and 1.5e-2 in qd at the event (BDF, LSODA), within the sheet's bands
+WIDE_Q0 = Q0 + WIDE * np.array([-np.sin(Q0[2]), np.cos(Q0[2]), 0.0])
+
+
+def _assert_wide_bar(ctx):
+    """The run of a bar with the half-width ``WIDE``, at rest on its first support, hits the second support when
+    the reference's does: a simulate that builds its event without d (``make_contact_event(s)``) fails
+    (``ignored_argument``)."""
+    expected = ctx.reference(p44.simulate, WIDE_Q0, T_END, S, None, WIDE, persist=True)
+    ignored = ctx.reference(p44.simulate, WIDE_Q0, T_END, S, None, 0.0, persist=True)
+    what = f"simulate(q0 = {np.round(WIDE_Q0, 4).tolist()}, {T_END:g}, {S:g}, d = {WIDE:g})"
+    got = ctx.student(p44.simulate, WIDE_Q0, T_END, S, None, WIDE, timeout=SIMULATION_TIMEOUT)
+    dropped = [Mistake("ignored_argument", ignored["t_event"], f"Your run detects the second support as if the bar "
+                       f"had no width (d = 0) whatever d it is given: pass simulate's d on to the event "
+                       f"(make_contact_event(s, d)).")] if ignored.get("t_event") is not None else []
+    if got.get("t_event") is not None and dropped and close(got["t_event"], dropped[0].value, EVENT_TIME):
+        assert_close(got["t_event"], expected["t_event"], f"t_event of {what}", EVENT_TIME, dropped,
+                     context="(a bar of half-width d = 0.05 m, the grader's own case: the sheet's has d = 0)")
     _event(got, expected, what, SHEET_BANDS)
 
 

@@ -39,14 +39,18 @@ def event(pkg, states, s, d):
                "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,),
                "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"}},
 )
-def simulate(pkg, q0, t_end, s, bar=None):
-    """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` where given): the run, the event, and
-    ``c`` of the package's own ``problem_43.constraint`` at every output time (the first support, ``d = 0``)."""
+def simulate(pkg, q0, t_end, s, bar=None, d=None):
+    """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` and the half-width ``d`` where given):
+    the run, the event, and ``c`` of the package's own ``problem_43.constraint`` at every output time (the first
+    support, at ``d``, 0 unless given)."""
     other = {} if bar is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar)))
+    if d is not None:
+        other["d"] = float(d)
     run = module(pkg, "problem_44").simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
     t, q, qd = trace(run, 3, "problem_44.simulate")
     constraint = module(pkg, "problem_43").constraint
-    out = {"t": t, "q": q, "qd": qd, "c": np.array([float(constraint(row, 0.0)) for row in q]),
+    width = 0.0 if d is None else float(d)
+    out = {"t": t, "q": q, "qd": qd, "c": np.array([float(constraint(row, width)) for row in q]),
            "t_event": run.get("t_event")}
     if out["t_event"] is not None:
         out["t_event"] = float(out["t_event"])
@@ -59,11 +63,13 @@ def simulate(pkg, q0, t_end, s, bar=None):
 def simulate_fixed(pkg, q0, t_end, s, *rest):
     """The bar of ``simulate`` run by a fixed-step ``scheme`` at step ``h`` with the package's own ``bar_ode``,
     until it hits the second support (the diagnosis engine calls it on the reference, with the arguments of
-    ``simulate`` followed by ``h, scheme``: ``rest`` is ``(h, scheme)`` or ``(bar, h, scheme)``)."""
-    *bar, h, scheme = rest
-    other = {} if not bar or bar[0] is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar[0])))
+    ``simulate`` followed by ``h, scheme``: ``rest`` is ``(h, scheme)``, ``(bar, h, scheme)`` or
+    ``(bar, d, h, scheme)``)."""
+    *extra, h, scheme = rest
+    bar, d = (list(extra) + [None, None])[:2]
+    other = {} if bar is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar)))
     p44 = module(pkg, "problem_44")
-    event = p44.make_contact_event(float(s))
+    event = p44.make_contact_event(float(s)) if d is None else p44.make_contact_event(float(s), float(d))
     at_rest = np.append(np.asarray(q0, dtype=float), [0.0, 0.0, 0.0])
     return fixed_run(fixed_step(lambda t, y: p44.bar_ode(t, y, **other), at_rest, float(t_end), h, scheme, event=event,
                                 direction=-1.0), 3)

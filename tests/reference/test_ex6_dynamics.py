@@ -274,17 +274,17 @@ def test_the_walkers_small_motion_tells_default_tolerances_from_tolerances_of_1e
     at its default tolerances follows it within a quarter of the band, and every one at rtol = atol = 1e-2 strays by
     more than three times the band (measured: 0.21 and 4.3 at the closest); on the sheet's run the loose DOP853
     stays within a tenth of its band, which is why the small motion is asked."""
-    from checks.problem_38 import BAND, N_OUTPUT, SMALL_BAND, SMALL_START, T_END, T_SMALL
+    from checks.problem_38 import BAND, N_OUTPUT, N_SMALL, SMALL_BAND, SMALL_START, T_END, T_SMALL
 
     tree = problem_38.build_dynamic_walker()
     _, _, g = equations_of_motion(tree, np.array([0.24001667, -0.29387084]), np.zeros(2), problem_38.I_GRAV)
     assert np.abs(g).max() < 1e-6
-    small = problem_38.simulate(T_SMALL, N_OUTPUT, *SMALL_START)
+    small = problem_38.simulate(T_SMALL, N_SMALL, *SMALL_START)
     assert 1e-3 < np.abs(small["q"] - SMALL_START[0]).max() < 1e-2  # a motion of a few mrad
     band = (SMALL_BAND["q"].atol, SMALL_BAND["qd"].atol)
-    for method, errors in _walker_errors(SMALL_START, T_SMALL, N_OUTPUT, small).items():
+    for method, errors in _walker_errors(SMALL_START, T_SMALL, N_SMALL, small).items():
         assert all(e < b / 4 for e, b in zip(errors, band)), (method, errors)
-    for method, errors in _walker_errors(SMALL_START, T_SMALL, N_OUTPUT, small, rtol=1e-2, atol=1e-2).items():
+    for method, errors in _walker_errors(SMALL_START, T_SMALL, N_SMALL, small, rtol=1e-2, atol=1e-2).items():
         assert all(e > 3 * b for e, b in zip(errors, band)), (method, errors)
     sheet = problem_38.simulate(T_END, N_OUTPUT)
     loose = _walker_errors((problem_38.Q0, problem_38.QD0), T_END, N_OUTPUT, sheet, rtol=1e-2, atol=1e-2)
