@@ -664,8 +664,14 @@ def _tried(evidences: list[Evidence]) -> bool:
 
 
 def left_to_live(scene, evidences: list[Evidence]) -> bool:
-    """True in the student kit where the live grading would try the mutants (the kit holds no reference code)."""
-    return getattr(scene.ctx.oracle, "mode", "") == "kit" and _tried(evidences)
+    """True in the student kit where the live grading would try the mutants of a problem of the course (the kit
+    holds no reference code)."""
+    if getattr(scene.ctx.oracle, "mode", "") != "kit" or not _tried(evidences):
+        return False
+    import importlib.util
+
+    problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
+    return problem is not None and importlib.util.find_spec(f"checks.problem_{problem:02d}") is not None
 
 
 def mutant_slips(scene, evidences: list[Evidence]) -> list[Hypothesis]:
