@@ -162,14 +162,16 @@ def _definitions(tree: ast.Module):
 # ---------------------------------------------------------------------------------------------- the slips
 
 
-def _walk(node, guarded=False):
-    """``(node, guarded)`` in pre-order; ``guarded``: inside a loop's bounds or a condition, never mutated."""
-    yield node, guarded
+def _walk(node, guarded=False, indexing=False):
+    """``(node, guarded, indexing)`` in pre-order; ``guarded``: inside a loop's bounds or a condition, never
+    mutated; ``indexing``: inside an index (``q[2 * k - 1]``), where every slip is one of the index."""
+    yield node, guarded, indexing
     for field, value in ast.iter_fields(node):
         guard = guarded or _guards(node, field)
+        index = indexing or (isinstance(node, ast.Subscript) and field == "slice")
         for item in value if isinstance(value, list) else [value]:
             if isinstance(item, ast.AST):
-                yield from _walk(item, guard)
+                yield from _walk(item, guard, index)
 
 
 def _guards(node, field: str) -> bool:
@@ -328,6 +330,7 @@ def _call_slips(node: ast.Call):
 
 
 def _index_slips(node: ast.Subscript):
+    """A neighbouring index: a number one more or less (not below 0), an expression plus or minus one."""
     index = node.slice
     entries = index.elts if isinstance(index, ast.Tuple) else [index]
     for k, entry in enumerate(entries):
@@ -335,15 +338,20 @@ def _index_slips(node: ast.Subscript):
             for step in (-1, 1):
                 if entry.value + step >= 0:
                     yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)
+        elif isinstance(entry, (ast.Name, ast.BinOp)):
+            for step in (-1, 1):
+                yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)
 
 
 def _reindexed(node: ast.Subscript, k: int, step: int):
     index = node.slice
-    if isinstance(index, ast.Tuple):
-        elts = list(index.elts)
-        elts[k] = ast.Constant(elts[k].value + step)
-        return _with(node, slice=ast.Tuple(elts, ast.Load()))
-    return _with(node, slice=ast.Constant(index.value + step))
+    entries = list(index.elts) if isinstance(index, ast.Tuple) else [index]
+    entry = entries[k]
+    if _number(entry):
+        entries[k] = ast.Constant(entry.value + step)
+    else:
+        entries[k] = ast.BinOp(entry, ast.Add() if step > 0 else ast.Sub(), ast.Constant(1))
+    return _with(node, slice=ast.Tuple(entries, ast.Load()) if isinstance(index, ast.Tuple) else entries[0])
 
 
 def _renamed(func):
@@ -386,18 +394,20 @@ def _in(node, lines: tuple) -> bool:
 
 def _mutated(function: _Function, lines: tuple):
     """``(slip, new definition)`` of every slip of the function's regions ``lines``, each once."""
-    sites = [(index, node, parent) for index, (node, parent, guarded) in enumerate(_parented(function.node))
+    sites = [(index, node, parent, indexing)
+             for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
              if not guarded and _in(node, lines)]
     seen = {ast.dump(function.node)}
-    for index, node, parent in [(None, function.node, None)] + sites:
+    for index, node, parent, indexing in [(None, function.node, None, False)] + sites:
         slips = _parameter_slips(function.node, lines) if index is None else _slips(node, parent)
         for slip, edit in slips:
+            slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             tree = copy.deepcopy(function.node)
             if isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])
             else:
                 nodes = list(_parented(tree))
-                target, holder, _ = nodes[index]
+                target, holder, _, _ = nodes[index]
                 replacement = edit(target)
                 if replacement is None or not _replace(holder, target, replacement):
                     continue
@@ -409,13 +419,13 @@ def _mutated(function: _Function, lines: tuple):
 
 
 def _parented(root):
-    """``(node, parent, guarded)`` in the pre-order of ``_walk``."""
+    """``(node, parent, guarded, indexing)`` in the pre-order of ``_walk``."""
     parents = {}
     for node in ast.walk(root):
         for child in ast.iter_child_nodes(node):
             parents[id(child)] = node
-    for node, guarded in _walk(root):
-        yield node, parents.get(id(node)), guarded
+    for node, guarded, indexing in _walk(root):
+        yield node, parents.get(id(node)), guarded, indexing
 
 
 def _replace(parent, old, new) -> bool:

@@ -187,6 +187,16 @@ def test_each_operator_names_its_slip_and_the_students_function(operator, tmp_pa
         assert old not in h.detail and "np." not in h.detail and "=" not in h.detail and "self" not in h.detail
 
 
+def test_a_slip_inside_an_index_is_an_index_slip(tmp_path):
+    """``q[2 * k - 1]`` read as ``q[2 * k - 2]``: at k = 1 dropping the factor 2 of ``2 * k`` gives the same
+    entry, a coincidence of the index that was told "a number left out of a product"; every slip inside an index
+    is one of the index."""
+    found = slips_of(tmp_path, "p22.points_values", "planar.py", "length, angle = q[2 * k - 2], q[2 * k - 1]",
+                     "length, angle = q[2 * k - 2], q[2 * k - 2]", "problem_22.points",
+                     [([1.0, 0.5],), ([0.4, -0.7, 1.2, 0.3],)], (1,))
+    assert found and {h.name for h in found} == {"wrong_index"}, [(h.name, h.detail) for h in found]
+
+
 def test_a_slip_on_one_input_only_is_no_cause(tmp_path):
     """The second input's value is the reference's: no mutant reproduces both."""
     student = planted_package(tmp_path, "planar.py", "y += length * np.cos(gamma)", "y -= length * np.cos(gamma)")
