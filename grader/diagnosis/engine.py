@@ -255,7 +255,7 @@ def find(scene: Scene, evidences: list) -> Finding | None:
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
     if not found and not (decl is not None and decl.motion):  # slips inside a formula: the last tier
-        found += mutant_slips(scene, evidences)
+        found += mutant_slips(scene, evidences, lambda: _second_input(scene, evidences[-1]))
         if not found and left_to_live(scene, evidences):
             return Finding((), KIT_NOTE)
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")

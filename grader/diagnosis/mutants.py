@@ -610,10 +610,10 @@ class _Deadline:
 
 
 def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: _Deadline,
-              originals: dict) -> list[Mutant] | None:
-    """The mutants that reproduce the student's value on every input (and differ from the expected value on one,
-    and from zero), or None when the time ran out first.  ``originals`` keeps the code of every function changed
-    (``_restore`` puts it back)."""
+              originals: dict, judged: bool = True) -> list[Mutant] | None:
+    """The mutants that reproduce the student's value on every input (and, ``judged``, differ from the expected
+    value on one, and from zero), or None when the time ran out first.  ``originals`` keeps the code of every
+    function changed (``_restore`` puts it back)."""
     kept = []
     for mutant in mutants:
         if deadline.fired:
@@ -631,6 +631,9 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         finally:
             holder.__code__ = originals[id(holder)][1]
         if len(values) < len(inputs):
+            continue
+        if not judged:
+            kept.append(mutant)
             continue
         if not any(distinct(v, e.expected, e.tol) for v, e in zip(values, inputs)):
             continue  # an equivalent mutant
@@ -684,28 +687,53 @@ def left_to_live(scene, evidences: list[Evidence]) -> bool:
     return problem is not None and importlib.util.find_spec(f"checks.problem_{problem:02d}") is not None
 
 
-def mutant_slips(scene, evidences: list[Evidence]) -> list[Hypothesis]:
+def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothesis]:
     """The slips of the reference's own code that reproduce the student's value on the input shown and on the
-    second one (``evidences``: two, each with its reference call ``source``); none in the student kit."""
+    second one (``evidences``: two, each with its reference call ``source``), and on a third one where
+    ``another()`` gives it (an input the engine draws, the student's value there within the scene's budget): two
+    inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit."""
     if not _tried(evidences) or getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
-    first = evidences[0]
-    problem = _problem(getattr(scene.ctx, "check_id", ""), first.source.probe)
+    problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
     if problem is None:
         return []
+    try:
+        kept = _kept(problem, evidences)
+        if kept and another is not None:
+            third = _another(another)
+            if third is not None:
+                kept = _kept(problem, [third], kept)
+    except GraderFault:
+        return []
+    return _hypotheses(kept or [])
+
+
+def _another(another) -> Evidence | None:
+    from .scene import Budget
+
+    try:
+        third = another()
+    except (Budget, GraderFault):
+        return None
+    return third if third is not None and third.source is not None and third.got is not None else None
+
+
+def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None) -> list[Mutant] | None:
+    """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
+    the student's value on ``evidences``, or None when the time ran out."""
+    first = evidences[0]
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
         kept, originals = None, {}
         try:
             root, package = _package()
             with _Deadline(TIME_BUDGET) as deadline:
-                mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
+                if mutants is None:
+                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
                 if mutants:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals)
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
         except _Timeout:
             kept = None
-        except GraderFault:
-            return []
         finally:
             _restore(originals)  # once the deadline can interrupt nothing more
-    return _hypotheses(kept or [])
+    return kept

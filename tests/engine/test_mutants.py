@@ -328,6 +328,21 @@ def test_a_value_two_families_give_is_could_be(made_up):
     assert finding.hint.startswith("Could be ") and len(finding.names) == 2
 
 
+def test_a_third_input_rules_out_a_coincidence_of_the_two_shown(made_up):
+    """Where the engine can draw another input (``another``), a slip is kept only if it gives the student's value
+    there too: a value that agrees with ``b - a`` on the two inputs shown but not elsewhere names nothing."""
+    def coincidence(a, b):
+        return [b - a if a < 5.0 else a - b + 1.0, a * b]
+
+    inputs = [(1.0, 3.0), (2.5, -0.5)]
+    evidences = made_up_evidences(made_up, "difference", coincidence, inputs)
+    (third,) = made_up_evidences(made_up, "difference", coincidence, [(7.0, 2.0)])
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, lambda: third) == []
+    (third,) = made_up_evidences(made_up, "difference", coincidence, [(-3.0, 2.0)])
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, lambda: third)
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, lambda: None)
+
+
 def test_slips_of_more_than_two_families_name_nothing():
     made = [mutants.Mutant("problem_98", ("f",), slip, None) for slip in ("sign", "entries", "square")]
     assert len({DIAGNOSES[m.name].family for m in made}) == 3
