@@ -7,19 +7,21 @@ student writes: the functions that hold a solution region (``# BEGIN SOLUTION pr
 check (or of a neighbouring problem: one region may serve two of the sheet's problems), that the probe's call
 runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6).
 
-Each mutant changes one place of one function's solution region (``_slips``: a term's sign, a term or a factor
+Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
 missing, two arguments, factors or entries exchanged, a number doubled or halved, ``/`` for ``*``, a square or a
 square root missing, sin for cos, degrees, a transpose, a neighbouring index, two names exchanged).  A mutant is
 kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the
-second one, and differs from the expected value (an equivalent mutant says nothing).  A cause is named only when
+second one (and on a third where the engine can draw one), and differs from the expected value (an equivalent
+mutant says nothing).  A slip inside an index is one of the index.  A cause is named only when
 the mutants kept are of one family of the vocabulary, or of two; the hint says what kind of slip and in which of
 the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds (a
 mutant that is still running then is interrupted, and nothing is named), warnings are silenced and a mutant that
-raises is dropped.  The student's code is not run at all (the second input's value is the one the engine already
-has).  The student kit holds no reference code: the tier runs with the live reference only.
+raises is dropped.  The student's code runs only for the third input, within the scene's budget of the student's
+calls.  The student kit holds no reference code: the tier runs with the live reference only (``left_to_live``: the
+kit then says that the graded submission may say more).
 """
 
 from __future__ import annotations
@@ -532,6 +534,7 @@ def _traced(package, root: Path, probe, args) -> set:
 
 
 def _problem(check_id: str, probe) -> int | None:
+    """The problem of the check (``"p22.loop_values"``), else of the probe (``"problem_22.loop"``)."""
     for text in (str(check_id or ""), str(getattr(probe, "__module__", probe))):
         found = re.search(r"(?:^p|problem_)(\d+)", text)
         if found:
