@@ -559,18 +559,26 @@ def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] |
         live = _live(package, function.module, function.path)
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
-        filename = live.__code__.co_filename
-        for slip, tree in _mutated(function, lines):
-            try:
-                code = _compiled(function, tree, filename)
-            except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
-                continue
-            if code.co_freevars != live.__code__.co_freevars:
-                continue
+        for slip, code in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
             found.append(Mutant(function.module, function.path, slip, code))
             if len(found) > MAX_MUTANTS:
                 return None
     return found
+
+
+@lru_cache(maxsize=512)
+def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) -> tuple:
+    """``(slip, code object)`` of the function's mutants, compiled once for the process (a mutant whose code does
+    not fit the live function's closure is left out)."""
+    found = []
+    for slip, tree in _mutated(function, lines):
+        try:
+            code = _compiled(function, tree, filename)
+        except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
+            continue
+        if code.co_freevars == freevars:
+            found.append((slip, code))
+    return tuple(found)
 
 
 #: the loop in which a deadline's interruption that fired too late to interrupt anything is met [iterations]
