@@ -4,7 +4,8 @@
 
 Grades, in one process and as ``grade batch`` grades (a worker forked from a warm slot, the live reference), the
 reference on a few problems (every check passes: the engine is never asked) and mistakes that fail checks no
-catalogue explains (the engine's development set, ``tests/engine/mistakes.toml``, and the planted fixed-step loops),
+catalogue explains (the engine's development set, ``tests/engine/mistakes.toml``, its slips inside formulas,
+``tests/engine/formulas.toml``, which only the tier of formulas names, and the planted fixed-step loops),
 each with the engine on and off, in turns (on, off, on, off, ...) so that the machine's speed of the moment weighs
 on both alike.  Every grading has a fresh in-memory reference (no result of an earlier grading is reused; the
 reference's persisted long simulations and fixed-step runs are read from the disk cache, as they are after a
@@ -43,7 +44,8 @@ def cases():
     folder = Path(tempfile.mkdtemp(prefix="bench-diagnosis-"))
     reference = copy_reference(folder / "reference")
     passing = [(f"reference, problem {n}", n, reference) for n in PASSING]
-    entries = tomllib.loads((ROOT / "tests" / "engine" / "mistakes.toml").read_text())["mistake"]
+    entries = [entry for name in ("mistakes.toml", "formulas.toml")
+               for entry in tomllib.loads((ROOT / "tests" / "engine" / name).read_text())["mistake"]]
     failing = []
     for e in entries:
         mistake = Planted(e["name"], e["problem"], e["file"], e["old"], e["new"], e["check"])

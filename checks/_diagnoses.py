@@ -192,6 +192,7 @@ _TABLE = (
     _D("velocity_first", "order", "the velocity updated before the position update used it",
        "updated the velocity before the position"),
     _D("rotation_side", "order", "a rotation multiplied from the wrong side", "multiplied from the wrong side"),
+    _D("factor_order", "order", "the factors of a product in the wrong order", "multiplied factors in the wrong order"),
     _D("sin_cos_swapped", "order", "sin and cos swapped", "swapped sin and cos"),
     _D("beta_sin_cos", "order", "sin and cos of beta swapped", "swapped sin and cos of beta"),
     _D("phi_sin_cos", "order", "sin and cos of phi swapped", "swapped sin and cos of phi"),
@@ -248,6 +249,8 @@ _TABLE = (
        "gave the velocity of the wrong point"),
     # ---------------------------------------------------------------- missing terms
     *_terms(),
+    _D("missing_term", "missing_term", "a term left out of a sum", "left a term out of a sum"),
+    _D("missing_factor", "missing_term", "a factor left out of a product", "left a factor out of a product"),
     _D("missing_rotation", "missing_term", "the rotational part J_R.T I J_R missing", "left out the rotation"),
     _D("missing_translation", "missing_term", "the translational part J_S.T m J_S missing",
        "left out the translation"),
@@ -298,6 +301,8 @@ _TABLE = (
        "ended the run at an event that only marks a point"),
     _D("state_row", "state_row", "a state read from the wrong row (or column) of the solution",
        "read a state from the wrong row"),
+    _D("wrong_index", "state_row", "an entry read from the wrong index (a neighbouring row or column)",
+       "read an entry from the wrong index"),
     # ---------------------------------------------------------------- precision
     _D("float32", "precision", "values computed in single precision (float32)", "computed in single precision"),
     _D("rounded", "precision", "values rounded to a few decimals", "rounded the values"),

@@ -633,6 +633,9 @@ def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
     finding = explain(ctx, evidences or [failure.evidence])
     if finding is None:
         return CheckFailure(failure.message, failure.hint, "", failure.candidates, failure.evidence, explained=True)
+    if not finding.names:  # no cause, but a note (the student kit leaves formulas to the graded submission)
+        hint = "\n".join(part for part in (failure.hint, finding.hint) if part)
+        return CheckFailure(failure.message, hint, "", failure.candidates, failure.evidence, explained=True)
     return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
                         explained=True)
 

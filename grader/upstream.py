@@ -23,19 +23,13 @@ those calls, and where one differs the check is left to the graded submission (`
 
 from __future__ import annotations
 
-import importlib
-import importlib.abc
-import importlib.machinery
-import importlib.util
 import inspect
 import itertools
-import sys
-import threading
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 from .checking import CheckFailure
 from .errors import GraderFault, StudentFault
+from .private import close_private, drop_private, private_import, reference_root
 
 __all__ = ["UpstreamCall", "Upstream", "Hybrid", "same"]
 
@@ -109,56 +103,7 @@ class _Stop(Exception):
         self.flaw = flaw
 
 
-# ---------------------------------------------------------------------------------------------- the import
-
-
-class _Loader(importlib.abc.Loader):
-    """The source loader of a module of a hybrid package, which replaces the module's shared functions once its code
-    has run (before any module that imports them from it continues)."""
-
-    def __init__(self, loader, hybrid: "Hybrid", name: str):
-        self._loader = loader
-        self._hybrid = hybrid
-        self._name = name
-
-    def create_module(self, spec):
-        return self._loader.create_module(spec)
-
-    def exec_module(self, module):
-        self._loader.exec_module(module)
-        self._hybrid._patch(self._name, module)
-
-    def __getattr__(self, name):  # get_source, get_filename, ... for tracebacks
-        return getattr(self._loader, name)
-
-
-class _Finder(importlib.abc.MetaPathFinder):
-    """Finds the modules of the hybrid packages (``_carried_*``) in the reference's folder."""
-
-    def __init__(self):
-        self.hybrids: dict[str, Hybrid] = {}
-        self.lock = threading.Lock()
-
-    def find_spec(self, fullname, path=None, target=None):
-        prefix, dot, rest = fullname.partition(".")
-        hybrid = self.hybrids.get(prefix)
-        if hybrid is None or not dot or "." in rest:
-            return None
-        spec = importlib.machinery.PathFinder.find_spec(fullname, [str(hybrid.root)])
-        if spec is None:
-            return None
-        spec.loader = _Loader(spec.loader, hybrid, rest)
-        return spec
-
-
-_FINDER = _Finder()
 _NUMBERS = itertools.count()
-
-
-def _install() -> None:
-    with _FINDER.lock:
-        if _FINDER not in sys.meta_path:
-            sys.meta_path.insert(0, _FINDER)
 
 
 # ---------------------------------------------------------------------------------------------- the hybrid
@@ -174,11 +119,7 @@ class Hybrid:
     the student's functions, in every run)."""
 
     def __init__(self, problem: int, shared: dict, student, reference, flaw):
-        spec = importlib.util.find_spec("reference")
-        if spec is None or not spec.submodule_search_locations:
-            raise GraderFault("the reference solution is not installed: error carried forward across problems "
-                              "needs it")
-        self.root = Path(list(spec.submodule_search_locations)[0])
+        self.root = reference_root("error carried forward across problems")
         self.problem = problem
         self.forwarded = {name for name, (owner, _) in shared.items() if owner < problem}
         self._callees = {name.rpartition(".")[2] for name in self.forwarded}
@@ -195,24 +136,11 @@ class Hybrid:
 
     def _fresh(self):
         """A fresh import of the reference under a private name, whose shared functions call the student's."""
-        _install()
-        name = f"_carried_{self.problem:02d}_{next(_NUMBERS)}"
-        with _FINDER.lock:
-            _FINDER.hybrids[name] = self
-        spec = importlib.util.spec_from_file_location(name, self.root / "__init__.py",
-                                                      submodule_search_locations=[str(self.root)])
-        package = importlib.util.module_from_spec(spec)
-        sys.modules[name] = package
-        spec.loader.exec_module(package)
-        return package
+        return private_import(f"_carried_{self.problem:02d}_{next(_NUMBERS)}", self.root, self._patch)
 
     @staticmethod
     def _drop(package) -> None:
-        name = package.__name__
-        with _FINDER.lock:
-            _FINDER.hybrids.pop(name, None)
-        for module in [n for n in sys.modules if n == name or n.startswith(name + ".")]:
-            sys.modules.pop(module, None)
+        drop_private(package)
 
     def _patch(self, module_name: str, module) -> None:
         for name in list(vars(module)):
@@ -341,9 +269,7 @@ class Hybrid:
         return [(call.function, call.args, call.parent) for call in calls]
 
     def close(self) -> None:
-        with _FINDER.lock:
-            for name in [n for n, hybrid in _FINDER.hybrids.items() if hybrid is self]:
-                _FINDER.hybrids.pop(name, None)
+        close_private(self)
 
 
 def _plain(args) -> bool:

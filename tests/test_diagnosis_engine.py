@@ -491,8 +491,10 @@ def test_the_development_sets_hold_no_mistake_of_the_held_out_measure():
     held_out = {key(m.file, m.old, m.new) for m in fresh_mistakes(FRESH) + fresh_mistakes(NAMED)}
     planted = {key(e["file"], e["old"], e["new"]) for path in (ROOT / "tests" / "planted").glob("problem_*.toml")
                for e in tomllib.loads(path.read_text()).get("mistake", [])}
+    formulas = tomllib.loads((ROOT / "tests" / "engine" / "formulas.toml").read_text())["mistake"]
     development = [key(m.file, m.old, m.new) for m in DEVELOPMENT] + [
-        key(m.file, m.old, m.new) for m in fresh_mistakes(REALISTIC)]
+        key(m.file, m.old, m.new) for m in fresh_mistakes(REALISTIC)] + [
+        key(e["file"], e["old"], e["new"]) for e in formulas]
     assert len(development) > 30
     assert not set(development) & (held_out | planted)
 

@@ -39,6 +39,7 @@ from .grammar import (
     replaced,
     rotation_of,
 )
+from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, Scene
 from .terms import term_slips, term_values
 from .runs import (
@@ -275,6 +276,10 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         found += precision_slips(first.got, first.expected, first.tol)
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
+    if not found and not (decl is not None and decl.motion):  # slips inside a formula: the last tier
+        found += mutant_slips(scene, evidences, lambda: _second_input(scene, evidences[-1]))
+        if not found and left_to_live(scene, evidences):
+            return Finding((), KIT_NOTE)
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
 
 
@@ -377,7 +382,7 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
     findings = []
     for path in [path for path in first if path in second][:RESULT_LEAVES]:
         finding = find(scene, [first[path], second[path]])
-        if finding is not None:
+        if finding is not None and finding.names:
             findings.append((first[path].name, finding))
     findings = [(label, finding) for label, finding in findings if finding.names]
     if not findings or len({f.diagnosis for _, f in findings}) != 1:

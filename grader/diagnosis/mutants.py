@@ -1,0 +1,750 @@
+"""Formulas: mutated copies of the reference's own code.
+
+Most mistakes no transform of the output or of the inputs reproduces are slips *inside* a formula: one term's
+sign, a factor or an operand left out, two arguments exchanged, a neighbouring index.  This tier evaluates the
+reference's code with one such slip on the very inputs of the failing comparison.  The code mutated is what the
+student writes: the functions that hold a solution region (``# BEGIN SOLUTION problem N``) of the problem of the
+check (or of a neighbouring problem: one region may serve two of the sheet's problems), that the probe's call
+runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6).
+
+Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
+missing, two arguments, factors or entries exchanged, a number doubled or halved, ``/`` for ``*``, a square or a
+square root missing, sin for cos, degrees, a transpose, a neighbouring index, two names exchanged).  A mutant is
+kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the
+second one (and on a third where the engine can draw one), and differs from the expected value (an equivalent
+mutant says nothing).  A slip inside an index is one of the index.  A cause is named only when
+the mutants kept are of one family of the vocabulary, or of two; the hint says what kind of slip and in which of
+the student's functions, never the reference's code.
+
+The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
+mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds (a
+mutant that is still running then is interrupted, and nothing is named), warnings are silenced and a mutant that
+raises is dropped.  The student's code runs only for the third input, within the scene's budget of the student's
+calls.  The student kit holds no reference code: the tier runs with the live reference only (``left_to_live``: the
+kit then says that the graded submission may say more).
+"""
+
+from __future__ import annotations
+
+import __future__
+import ast
+import copy
+import ctypes
+import re
+import sys
+import threading
+import warnings
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+from checks._diagnoses import DIAGNOSES
+
+from ..errors import GraderFault
+from .evidence import array_of, at, distinct, Evidence, Hypothesis, within
+
+__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "Mutant",
+           "mutants_of", "mutant_slips", "left_to_live"]
+
+
+#: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
+MAX_MUTANTS = 600
+#: the wall time one explanation's mutants may take [s]; a mutant still running then is interrupted
+TIME_BUDGET = 2.0
+#: a solution region of problem N +- this many counts as the check's problem's own (the screw axis of problem 13
+#: is the region of problem 14)
+NEIGHBOURS = 1
+#: the simplicity of a mutant's hypothesis (the grammar's slips of outputs and inputs are simpler: 1 to 3)
+COST = 4
+#: the families of the mutants kept, at most, for a cause to be named ("could be X or Y")
+MAX_FAMILIES = 2
+
+#: what the student kit adds to a failure it names no cause of, where the graded submission tries the formulas
+KIT_NOTE = ("The graded submission may say more about the cause: it also tries slips inside the formulas of your "
+            "functions.")
+#: a hint of this tier names the student's function in backquotes (no other tier does)
+NAMES_A_FUNCTION = re.compile(r"`[A-Za-z_][A-Za-z_0-9]*`")
+
+_REGION = re.compile(r"#\s*BEGIN SOLUTION problem (\d+)")
+_END = re.compile(r"#\s*END SOLUTION")
+#: a rotation matrix by the course's notation (``A_IB``, ``R3(...)``): dropping it leaves a vector in another frame
+_ROTATION = re.compile(r"^(A_\w+|A|R[123]?|R_\w+|rotation\w*|expm_skew)$")
+_TRIG = {"sin": "cos", "cos": "sin"}
+_DEGREES = ("radians", "deg2rad")
+
+
+class _Timeout(BaseException):
+    """The time of an explanation's mutants is up (a BaseException: the reference's ``except Exception`` lets it
+    through)."""
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """One slip (a key of ``SLIPS``) in one function (``module``, the path of names to it in the module), and the
+    mutated code object."""
+
+    module: str
+    path: tuple
+    slip: str
+    code: object
+
+    @property
+    def function(self) -> str:
+        return self.path[-1]
+
+    @property
+    def name(self) -> str:
+        """The diagnosis."""
+        return SLIPS[self.slip][0]
+
+    @property
+    def detail(self) -> str:
+        """What the hint says of it, naming the student's function."""
+        return SLIPS[self.slip][1].format(f=self.function)
+
+
+# ---------------------------------------------------------------------------------------------- the source
+
+
+@dataclass(frozen=True)
+class _Function:
+    """A function of the reference that holds solution regions: its module, path of names, its definition (with
+    the class it sits in, to compile a method as one) and the lines of its regions, with their problems."""
+
+    module: str
+    path: tuple
+    node: ast.FunctionDef
+    regions: tuple  # ((problem, first line, last line), ...)
+
+
+@lru_cache(maxsize=4)
+def _functions(root: str) -> tuple[_Function, ...]:
+    """Every function of the reference's modules (top level, or a method of a top-level class) that holds a
+    solution region; the parsed modules are kept for the process."""
+    found = []
+    for path in sorted(Path(root).glob("*.py")):
+        if path.name == "__init__.py":
+            continue
+        source = path.read_text(encoding="utf-8")
+        regions = _regions(source.splitlines())
+        if not regions:
+            continue
+        tree = ast.parse(source, filename=str(path))
+        for node, names in _definitions(tree):
+            inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
+            if inside:
+                found.append(_Function(path.stem, names, node, inside))
+    return tuple(found)
+
+
+def _regions(lines: list[str]) -> list[tuple[int, int, int]]:
+    found, start = [], None
+    for number, line in enumerate(lines, 1):
+        begin = _REGION.search(line)
+        if begin:
+            start = (int(begin.group(1)), number)
+        elif start is not None and _END.search(line):
+            found.append((start[0], start[1], number))
+            start = None
+    return found
+
+
+def _definitions(tree: ast.Module):
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            yield node, (node.name,)
+        elif isinstance(node, ast.ClassDef):
+            for item in node.body:
+                if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    yield item, (node.name, item.name)
+
+
+# ---------------------------------------------------------------------------------------------- the slips
+
+
+def _walk(node, guarded=False, indexing=False):
+    """``(node, guarded, indexing)`` in pre-order; ``guarded``: inside a loop's bounds or a condition, never
+    mutated; ``indexing``: inside an index (``q[2 * k - 1]``), where every slip is one of the index."""
+    yield node, guarded, indexing
+    for field, value in ast.iter_fields(node):
+        guard = guarded or _guards(node, field)
+        index = indexing or (isinstance(node, ast.Subscript) and field == "slice")
+        for item in value if isinstance(value, list) else [value]:
+            if isinstance(item, ast.AST):
+                yield from _walk(item, guard, index)
+
+
+def _guards(node, field: str) -> bool:
+    return ((isinstance(node, ast.For) and field == "iter") or (isinstance(node, (ast.While, ast.If, ast.IfExp))
+            and field == "test") or isinstance(node, (ast.comprehension, ast.Raise, ast.Assert))
+            or (isinstance(node, ast.Call) and _callee(node) in ("range", "len", "reshape", "zeros", "ones", "eye",
+                                                                 "empty", "full", "linspace", "arange")))
+
+
+def _callee(call: ast.Call) -> str:
+    func = call.func
+    return func.attr if isinstance(func, ast.Attribute) else func.id if isinstance(func, ast.Name) else ""
+
+
+def _label(node) -> str:
+    """A name that says what an operand is (``A_IB`` of ``self.A_IB``, ``R3`` of ``R3(phi)``)."""
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    if isinstance(node, ast.Call):
+        return _callee(node)
+    if isinstance(node, ast.Subscript):
+        return _label(node.value)
+    return ""
+
+
+#: each slip: its diagnosis and what the hint says of it (``{f}``: the student's function, in backquotes)
+SLIPS = {
+    "sign": ("sign_flip", "one term or factor of `{f}` has the wrong sign"),
+    "cross": ("sign_flip", "a cross product in `{f}` is taken the other way round (its sign flips)"),
+    "term": ("missing_term", "one term of a sum in `{f}` is left out"),
+    "factor": ("missing_factor", "one factor of a product in `{f}` is left out"),
+    "rotation": ("wrong_frame", "a rotation is left out in `{f}`: a vector stays in the coordinates of another frame"),
+    "number": ("wrong_factor", "a number in `{f}` is left out of a product"),
+    "doubled": ("wrong_factor", "a number in `{f}` is doubled"),
+    "halved": ("wrong_factor", "a number in `{f}` is halved"),
+    "multiplies": ("wrong_factor", "`{f}` multiplies where it should divide"),
+    "divides": ("wrong_factor", "`{f}` divides where it should multiply"),
+    "square": ("wrong_factor", "a square is missing in `{f}`"),
+    "root": ("wrong_factor", "a square root is missing in `{f}`"),
+    "trig": ("sin_cos_swapped", "`{f}` takes sin where cos belongs, or the reverse"),
+    "degrees": ("degrees", "`{f}` takes an angle in degrees where it is in radians"),
+    "radians": ("degrees", "`{f}` converts an angle to radians that already is in radians"),
+    "transpose": ("transpose", "a matrix in `{f}` is transposed where it should not be, or the reverse"),
+    "index": ("wrong_index", "`{f}` reads an entry from a neighbouring index"),
+    "arguments": ("argument_order", "two arguments of a call in `{f}` are exchanged"),
+    "names": ("argument_order", "two quantities are exchanged throughout `{f}`"),
+    "parameters": ("argument_order", "two of the arguments of `{f}` are exchanged"),
+    "factors": ("factor_order", "two factors of a product in `{f}` are multiplied the other way round"),
+    "entries": ("swapped", "two entries that `{f}` builds are exchanged"),
+}
+
+
+def _dropped(operand) -> str:
+    """The slip of a factor left out of a product: a number, a rotation (a frame slip) or another factor."""
+    if _number(operand) or (isinstance(operand, ast.UnaryOp) and _number(operand.operand)):
+        return "number"
+    return "rotation" if _ROTATION.match(_label(operand) or "-") else "factor"
+
+
+def _negated(node):
+    return ast.UnaryOp(ast.USub(), node)
+
+
+def _transposed(node):
+    return ast.Attribute(node, "T", ast.Load())
+
+
+def _number(node) -> bool:
+    return isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool)
+
+
+def _slips(node, parent):
+    """``(slip, edit)`` of the slips at ``node`` (``slip``: a key of ``SLIPS``): ``edit(copy)`` gives the node
+    that replaces the copy of ``node``, or ``("names", a, b)`` exchanges two names throughout the function."""
+    if isinstance(node, ast.BinOp):
+        yield from _binop_slips(node)
+    elif isinstance(node, ast.AugAssign) and isinstance(node.op, (ast.Add, ast.Sub)):
+        other = ast.Sub() if isinstance(node.op, ast.Add) else ast.Add()
+        yield "sign", lambda n: _with(n, op=other)
+        yield "term", lambda n: ast.Pass()
+    elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        yield "sign", lambda n: n.operand
+    elif isinstance(node, ast.Call):
+        yield from _call_slips(node)
+    elif isinstance(node, ast.Attribute) and node.attr == "T" and isinstance(node.ctx, ast.Load):
+        yield "transpose", lambda n: n.value
+    elif isinstance(node, (ast.Tuple, ast.List)) and 2 <= len(node.elts) <= 6 \
+            and not any(isinstance(e, ast.Starred) for e in node.elts):
+        for i, j in _pairs(len(node.elts)):
+            yield "entries", lambda n, i=i, j=j: _exchanged(n, "elts", i, j)
+    elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
+        yield from _index_slips(node)
+    if isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Add, ast.Sub, ast.Mult, ast.MatMult)) \
+            and isinstance(node, (ast.Name, ast.Attribute, ast.Subscript, ast.Call)):
+        yield "sign", _negated
+        if isinstance(parent.op, ast.MatMult) and not (isinstance(node, ast.Attribute) and node.attr == "T"):
+            yield "transpose", _transposed
+
+
+def _pairs(count: int):
+    return [(i, j) for i in range(count) for j in range(i + 1, count)]
+
+
+def _binop_slips(node: ast.BinOp):
+    op = node.op
+    if isinstance(op, (ast.Add, ast.Sub)):
+        other = ast.Sub() if isinstance(op, ast.Add) else ast.Add()
+        yield "sign", lambda n: _with(n, op=other)
+        yield "term", lambda n: n.left
+        if isinstance(op, ast.Add):
+            yield "term", lambda n: n.right
+    elif isinstance(op, ast.Mult):
+        for side, other in (("left", "right"), ("right", "left")):
+            yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
+        yield "multiplies", lambda n: _with(n, op=ast.Div())
+    elif isinstance(op, ast.Div):
+        yield "divides", lambda n: _with(n, op=ast.Mult())
+        yield _dropped(node.right), lambda n: n.left
+    elif isinstance(op, ast.MatMult):
+        yield "factors", lambda n: _with(n, left=n.right, right=n.left)
+        for side, other in (("left", "right"), ("right", "left")):
+            yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
+    elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
+        yield "square", lambda n: n.left
+    if not isinstance(op, ast.Pow):
+        for side in ("left", "right"):
+            if _number(getattr(node, side)) and getattr(node, side).value not in (0, 1):
+                for slip, factor in (("doubled", 2.0), ("halved", 0.5)):
+                    yield slip, lambda n, side=side, factor=factor: _with(
+                        n, **{side: ast.Constant(getattr(n, side).value * factor)})
+
+
+def _call_slips(node: ast.Call):
+    callee = _callee(node)
+    args = node.args
+    if callee in _TRIG and len(args) == 1:
+        yield "trig", lambda n: _with(n, func=_renamed(n.func))
+        yield "degrees", lambda n: _with(n, args=[ast.Call(
+            ast.Attribute(ast.Name("np", ast.Load()), "deg2rad", ast.Load()), [n.args[0]], [])])
+    if callee in _DEGREES and len(args) == 1:
+        yield "radians", lambda n: n.args[0]
+    if callee == "sqrt" and len(args) == 1:
+        yield "root", lambda n: n.args[0]
+    if callee in ("inv", "solve") or any(isinstance(a, ast.Starred) for a in args):
+        return
+    positional = args[:4]
+    for i, j in _pairs(len(positional)):
+        yield "cross" if callee == "cross" else "arguments", lambda n, i=i, j=j: _exchanged(n, "args", i, j)
+    names = [a.id for a in positional if isinstance(a, ast.Name)]
+    for i, j in _pairs(len(names)):
+        if names[i] != names[j]:
+            yield "names", ("names", names[i], names[j])
+    yield "sign", _negated
+
+
+def _index_slips(node: ast.Subscript):
+    """A neighbouring index: a number one more or less (not below 0), an expression plus or minus one."""
+    index = node.slice
+    entries = index.elts if isinstance(index, ast.Tuple) else [index]
+    for k, entry in enumerate(entries):
+        if _number(entry) and isinstance(entry.value, int) and entry.value >= 0:
+            for step in (-1, 1):
+                if entry.value + step >= 0:
+                    yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)
+        elif isinstance(entry, (ast.Name, ast.BinOp)):
+            for step in (-1, 1):
+                yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)
+
+
+def _reindexed(node: ast.Subscript, k: int, step: int):
+    index = node.slice
+    entries = list(index.elts) if isinstance(index, ast.Tuple) else [index]
+    entry = entries[k]
+    if _number(entry):
+        entries[k] = ast.Constant(entry.value + step)
+    else:
+        entries[k] = ast.BinOp(entry, ast.Add() if step > 0 else ast.Sub(), ast.Constant(1))
+    return _with(node, slice=ast.Tuple(entries, ast.Load()) if isinstance(index, ast.Tuple) else entries[0])
+
+
+def _renamed(func):
+    if isinstance(func, ast.Attribute):
+        return ast.Attribute(func.value, _TRIG[func.attr], ast.Load())
+    return ast.Name(_TRIG[func.id], ast.Load())
+
+
+def _with(node, **changes):
+    fresh = copy.copy(node)
+    for key, value in changes.items():
+        setattr(fresh, key, value)
+    return fresh
+
+
+def _exchanged(node, field: str, i: int, j: int):
+    items = list(getattr(node, field))
+    items[i], items[j] = items[j], items[i]
+    return _with(node, **{field: items})
+
+
+def _parameter_slips(function: ast.FunctionDef, lines: tuple):
+    """Two of the function's own arguments exchanged wherever the region uses them."""
+    used = {node.id for node in ast.walk(function) if isinstance(node, ast.Name) and _in(node, lines)}
+    names = [a.arg for a in function.args.args + function.args.kwonlyargs if a.arg in used and a.arg != "self"]
+    for i, j in _pairs(len(names)):
+        yield "parameters", ("names", names[i], names[j])
+
+
+def _swap_names(function: ast.FunctionDef, lines: tuple, a: str, b: str) -> None:
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and _in(node, lines):
+            node.id = b if node.id == a else a if node.id == b else node.id
+
+
+def _in(node, lines: tuple) -> bool:
+    line = getattr(node, "lineno", None)
+    return line is not None and any(first < line < last for first, last in lines)
+
+
+def _mutated(function: _Function, lines: tuple):
+    """``(slip, new definition)`` of every slip of the function's regions ``lines``, each once."""
+    sites = [(index, node, parent, indexing)
+             for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
+             if not guarded and _in(node, lines)]
+    seen = {ast.dump(function.node)}
+    for index, node, parent, indexing in [(None, function.node, None, False)] + sites:
+        slips = _parameter_slips(function.node, lines) if index is None else _slips(node, parent)
+        for slip, edit in slips:
+            slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
+            tree = copy.deepcopy(function.node)
+            if isinstance(edit, tuple):
+                _swap_names(tree, lines, edit[1], edit[2])
+            else:
+                nodes = list(_parented(tree))
+                target, holder, _, _ = nodes[index]
+                replacement = edit(target)
+                if replacement is None or not _replace(holder, target, replacement):
+                    continue
+            ast.fix_missing_locations(tree)
+            key = ast.dump(tree)
+            if key not in seen:
+                seen.add(key)
+                yield slip, tree
+
+
+def _parented(root):
+    """``(node, parent, guarded, indexing)`` in the pre-order of ``_walk``."""
+    parents = {}
+    for node in ast.walk(root):
+        for child in ast.iter_child_nodes(node):
+            parents[id(child)] = node
+    for node, guarded, indexing in _walk(root):
+        yield node, parents.get(id(node)), guarded, indexing
+
+
+def _replace(parent, old, new) -> bool:
+    for field, value in ast.iter_fields(parent):
+        if value is old:
+            setattr(parent, field, new)
+            return True
+        if isinstance(value, list):
+            for k, item in enumerate(value):
+                if item is old:
+                    value[k] = new
+                    return True
+    return False
+
+
+def _compiled(function: _Function, tree: ast.FunctionDef, filename: str):
+    """The code object of a mutated definition (a method compiled inside a class, for its ``__class__`` cell)."""
+    arguments = _with(tree.args, defaults=[], kw_defaults=[None] * len(tree.args.kwonlyargs))
+    tree = _with(tree, decorator_list=[], args=arguments)  # the live function keeps its own defaults
+    body = [ast.ClassDef(function.path[0], [], [], [tree], [])] if len(function.path) > 1 else [tree]
+    module = ast.fix_missing_locations(ast.Module(body, []))
+    space: dict = {}
+    flags = __future__.annotations.compiler_flag  # annotations are not evaluated
+    exec(compile(module, filename, "exec", flags=flags, dont_inherit=True), {"__name__": "_mutant"}, space)
+    made = space[function.path[0]]
+    if len(function.path) > 1:
+        made = made.__dict__[function.path[1]]
+    return _code_holder(made).__code__
+
+
+# ---------------------------------------------------------------------------------------------- the package
+
+
+_LOCK = threading.Lock()
+_PACKAGES: dict = {}
+
+
+def _package():
+    """The reference imported once under a private name (``grader.private``), whose functions' code the mutants
+    replace in turn."""
+    from ..private import private_import, reference_root
+
+    root = reference_root("the diagnosis of formulas")
+    if root not in _PACKAGES:
+        _PACKAGES[root] = private_import("_mutated_reference", root)
+    return root, _PACKAGES[root]
+
+
+def _code_holder(obj):
+    """The function whose ``__code__`` runs for a module's or class's attribute (a property's getter, ...)."""
+    if isinstance(obj, property):
+        obj = obj.fget
+    if isinstance(obj, (staticmethod, classmethod)):
+        obj = obj.__func__
+    return obj if hasattr(obj, "__code__") else None
+
+
+def _live(package, module_name: str, path: tuple):
+    """The function of the private package that holds the code of ``module_name``'s ``path``, or None."""
+    obj = sys.modules.get(f"{package.__name__}.{module_name}")
+    for name in path:
+        obj = vars(obj).get(name) if obj is not None and hasattr(obj, "__dict__") else None
+    return _code_holder(obj) if obj is not None else None
+
+
+def _probe(probe):
+    """The probe function (given by itself, or by its name ``"problem_22.loop"``)."""
+    if callable(probe):
+        return probe
+    import importlib
+
+    module_name, _, name = str(probe).rpartition(".")
+    return getattr(importlib.import_module(f"probes.{module_name}"), name)
+
+
+def _call(package, probe, args, path):
+    from probes._codec import decode, encode
+
+    value = decode(encode(_probe(probe)(package, *copy.deepcopy(tuple(args)))))
+    return array_of(at(value, path))
+
+
+def _traced(package, root: Path, probe, args) -> set:
+    """The code objects of the reference's folder that ``probe(*args)`` runs on the private package."""
+    seen: set = set()
+    prefix = str(root)
+
+    def profile(frame, event, arg):
+        if event == "call" and frame.f_code.co_filename.startswith(prefix):
+            seen.add(frame.f_code)
+
+    previous = sys.getprofile()
+    sys.setprofile(profile)
+    try:
+        _call(package, probe, args, ())
+    except Exception:  # noqa: BLE001 - the oracle computed this call: a failure here leaves nothing to mutate
+        return set()
+    finally:
+        sys.setprofile(previous)
+    return seen
+
+
+# ---------------------------------------------------------------------------------------------- the mutants
+
+
+def _problem(check_id: str, probe) -> int | None:
+    """The problem of the check (``"p22.loop_values"``), else of the probe (``"problem_22.loop"``)."""
+    for text in (str(check_id or ""), str(getattr(probe, "__module__", probe))):
+        found = re.search(r"(?:^p|problem_)(\d+)", text)
+        if found:
+            return int(found.group(1))
+    return None
+
+
+def _owned_earlier(function: _Function, problem: int) -> bool:
+    from checks._upstream import SHARED
+
+    owner = SHARED.get(f"{function.module}.{function.path[-1]}")
+    return owner is not None and owner[0] < problem
+
+
+def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] | None:
+    """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
+    there are more than ``MAX_MUTANTS`` (the slips cannot all be tried)."""
+    ran = _traced(package, root, probe, args)
+    found: list[Mutant] = []
+    for function in _functions(str(root)):
+        lines = tuple((first, last) for label, first, last in function.regions if abs(label - problem) <= NEIGHBOURS)
+        live = _live(package, function.module, function.path)
+        if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
+            continue
+        for slip, code in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
+            found.append(Mutant(function.module, function.path, slip, code))
+            if len(found) > MAX_MUTANTS:
+                return None
+    return found
+
+
+@lru_cache(maxsize=512)
+def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) -> tuple:
+    """``(slip, code object)`` of the function's mutants, compiled once for the process (a mutant whose code does
+    not fit the live function's closure is left out)."""
+    found = []
+    for slip, tree in _mutated(function, lines):
+        try:
+            code = _compiled(function, tree, filename)
+        except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
+            continue
+        if code.co_freevars == freevars:
+            found.append((slip, code))
+    return tuple(found)
+
+
+#: the loop in which a deadline's interruption that fired too late to interrupt anything is met [iterations]
+_ABSORB = 100_000
+
+
+class _Deadline:
+    """Interrupts the running thread with ``_Timeout`` once ``seconds`` have passed, unless left before."""
+
+    def __init__(self, seconds: float):
+        self.thread = threading.get_ident()
+        self.lock = threading.Lock()
+        self.armed = True
+        self.fired = False
+        self.timer = threading.Timer(seconds, self._fire)
+        self.timer.daemon = True
+
+    def _fire(self) -> None:
+        with self.lock:
+            if self.armed:
+                self.fired = True
+                ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(self.thread), ctypes.py_object(_Timeout))
+
+    def __enter__(self):
+        self.timer.start()
+        return self
+
+    def __exit__(self, kind, value, traceback):
+        self.timer.cancel()
+        with self.lock:
+            self.armed = False
+            pending = self.fired and not (kind is not None and issubclass(kind, _Timeout))
+        if pending:  # fired, but not met yet: met here (withdrawing it, SetAsyncExc(NULL), upsets a later profiler)
+            try:
+                for _ in range(_ABSORB):
+                    pass
+            except _Timeout:
+                pass
+        return False
+
+
+def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: _Deadline,
+              originals: dict, judged: bool = True) -> list[Mutant] | None:
+    """The mutants that reproduce the student's value on every input (and, ``judged``, differ from the expected
+    value on one, and from zero), or None when the time ran out first.  ``originals`` keeps the code of every
+    function changed (``_restore`` puts it back)."""
+    kept = []
+    for mutant in mutants:
+        if deadline.fired:
+            return None
+        holder = _live(package, mutant.module, mutant.path)
+        originals.setdefault(id(holder), (holder, holder.__code__))
+        holder.__code__ = mutant.code
+        try:
+            values = []
+            for evidence in inputs:
+                value = _value(package, evidence)
+                if value is None or not within(evidence.got, value, evidence.tol):
+                    break
+                values.append(value)
+        finally:
+            holder.__code__ = originals[id(holder)][1]
+        if len(values) < len(inputs):
+            continue
+        if not judged:
+            kept.append(mutant)
+            continue
+        if not any(distinct(v, e.expected, e.tol) for v, e in zip(values, inputs)):
+            continue  # an equivalent mutant
+        if not any(distinct(v, np.zeros_like(v), e.tol) for v, e in zip(values, inputs)):
+            continue
+        kept.append(mutant)
+    return kept
+
+
+def _restore(originals: dict) -> None:
+    for holder, code in originals.values():
+        holder.__code__ = code
+
+
+def _value(package, evidence: Evidence):
+    """The mutated package's value of the comparison's call (None when the mutant raises or gives another
+    shape)."""
+    source = evidence.source
+    try:
+        value = _call(package, source.probe, source.args, source.path)
+    except (Exception, RecursionError):  # noqa: BLE001 - a mutant that raises reproduces nothing
+        return None
+    if value is None or value.shape != evidence.got.shape:
+        return None
+    return value
+
+
+def _hypotheses(kept: list[Mutant]) -> list[Hypothesis]:
+    families = {DIAGNOSES[m.name].family for m in kept}
+    if not kept or len(families) > MAX_FAMILIES:
+        return []
+    found = {}
+    for mutant in kept:
+        key = f"mutant:{mutant.name}:{mutant.detail}"
+        found.setdefault(key, Hypothesis(key, mutant.name, COST, mutant.detail))
+    return list(found.values())
+
+
+def _tried(evidences: list[Evidence]) -> bool:
+    return len(evidences) >= 2 and all(e.source is not None and e.got is not None for e in evidences)
+
+
+def left_to_live(scene, evidences: list[Evidence]) -> bool:
+    """True in the student kit where the live grading would try the mutants of a problem of the course (the kit
+    holds no reference code)."""
+    if getattr(scene.ctx.oracle, "mode", "") != "kit" or not _tried(evidences):
+        return False
+    import importlib.util
+
+    problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
+    return problem is not None and importlib.util.find_spec(f"checks.problem_{problem:02d}") is not None
+
+
+def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothesis]:
+    """The slips of the reference's own code that reproduce the student's value on the input shown and on the
+    second one (``evidences``: two, each with its reference call ``source``), and on a third one where
+    ``another()`` gives it (an input the engine draws, the student's value there within the scene's budget): two
+    inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit."""
+    if not _tried(evidences) or getattr(scene.ctx.oracle, "mode", "") != "live":
+        return []
+    problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
+    if problem is None:
+        return []
+    try:
+        kept = _kept(problem, evidences)
+        if kept and another is not None:
+            third = _another(another)
+            if third is not None:
+                kept = _kept(problem, [third], kept)
+    except GraderFault:
+        return []
+    return _hypotheses(kept or [])
+
+
+def _another(another) -> Evidence | None:
+    from .scene import Budget
+
+    try:
+        third = another()
+    except (Budget, GraderFault):
+        return None
+    return third if third is not None and third.source is not None and third.got is not None else None
+
+
+def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None) -> list[Mutant] | None:
+    """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
+    the student's value on ``evidences``, or None when the time ran out."""
+    first = evidences[0]
+    with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        kept, originals = None, {}
+        try:
+            root, package = _package()
+            with _Deadline(TIME_BUDGET) as deadline:
+                if mutants is None:
+                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
+                if mutants:
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
+        except _Timeout:
+            kept = None
+        finally:
+            _restore(originals)  # once the deadline can interrupt nothing more
+    return kept

@@ -1,0 +1,474 @@
+"""The diagnosis engine's tier of formulas (``grader.diagnosis.mutants``): one slip at a time in the reference's own
+code of the check's problem, kept when it reproduces the student's value on the input shown and on a second one.
+
+* Each operator on the reference: a mistake planted into a copy of the reference gives the "student's" values (the
+  copy's probe, in this process), and the tier names the slip's diagnosis and the student's function, never the
+  reference's code.
+* The rules: an equivalent mutant is no cause; a value that slips of two families give is "could be", of more
+  nothing; a mutant that hangs is interrupted within the tier's time and names nothing, one that raises is dropped.
+* Graded as ``grade batch`` grades (``tests/engine/formulas.toml``): live the check names the slip, the kit (which
+  holds no reference code) names the same or nothing and says that the graded submission may say more, and with
+  the engine off no catalogue names a cause of that family.
+"""
+
+import importlib
+import itertools
+import shutil
+import time
+import tomllib
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+import grader.diagnosis as engine
+from checks._diagnoses import DIAGNOSES, families_of
+from grader import grade_problem
+from grader.checking import Tol
+from grader.diagnosis import engine as explaining
+from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source, array_of, at
+from grader.private import drop_private, private_import
+from grader.results import Status
+from grader.sandbox import Limits, sandbox_mode
+from grader.sandbox.zygote import Zygote, warm_modules
+from grader.workers import Forked
+from probes._codec import decode, encode
+
+from ..kit_support import (  # noqa: F401 (fixtures)
+    SEED,
+    answer_key,
+    assert_same_verdicts,
+    deferred_ids,
+    grade_live_and_kit,
+    kit_oracle,
+)
+from ..submissions import Planted, build_planted
+
+ROOT = Path(__file__).resolve().parents[2]
+TIGHT = Tol("tight", 1e-9, 1e-9)
+_NUMBERS = itertools.count()
+
+
+@pytest.fixture(autouse=True)
+def strict(monkeypatch):
+    """A defect of the engine fails the test instead of naming no cause."""
+    monkeypatch.setattr(engine, "STRICT", True)
+
+
+# ------------------------------------------------------------------------------------------ on the reference
+
+
+def planted_package(tmp_path: Path, file: str, old: str, new: str):
+    """A copy of the reference with one mistake planted, imported in this process under a private name."""
+    root = tmp_path / "planted"
+    shutil.copytree(ROOT / "reference", root, ignore=shutil.ignore_patterns("__pycache__"))
+    text = (root / file).read_text()
+    assert text.count(old) == 1, old
+    (root / file).write_text(text.replace(old, new))
+    return private_import(f"_planted_formula_{next(_NUMBERS)}", root)
+
+
+def probe_of(name: str):
+    module_name, _, func = name.rpartition(".")
+    return getattr(importlib.import_module(f"probes.{module_name}"), func)
+
+
+def evidence(probe: str, args: tuple, path: tuple, student, tol: Tol = TIGHT) -> Evidence:
+    """A failing comparison of ``probe(*args)``'s value at ``path``: the student's (the planted copy's) and the
+    reference's."""
+    import reference
+
+    expected_root = decode(encode(probe_of(probe)(reference, *args)))
+    got_root = decode(encode(probe_of(probe)(student, *args)))
+    got, expected = array_of(at(got_root, path)), array_of(at(expected_root, path))
+    return Evidence(got, expected, tol, "value", source=Source(probe, tuple(args), path, expected_root),
+                    student=Source(probe, tuple(args), path, got_root))
+
+
+def scene(check_id: str, mode: str = "live"):
+    return SimpleNamespace(ctx=SimpleNamespace(check_id=check_id, oracle=SimpleNamespace(mode=mode)))
+
+
+def slips_of(tmp_path, check_id, file, old, new, probe, inputs, path=()):
+    student = planted_package(tmp_path, file, old, new)
+    try:
+        evidences = [evidence(probe, args, path, student) for args in inputs]
+        assert all(e.got.shape == e.expected.shape and not np.allclose(e.got, e.expected) for e in evidences)
+        return mutants.mutant_slips(scene(check_id), evidences)
+    finally:
+        drop_private(student)
+
+
+def V(*x):
+    return np.array(x, dtype=float)
+
+
+ROTATIONS = [Rotation.from_rotvec(v).as_matrix() for v in ([0.3, -0.5, 0.8], [1.1, 0.2, -0.4], [-0.7, 0.9, 0.1],
+                                                            [0.2, 0.3, -1.2])]
+ARMS = [([0.4, 0.3, 0.7, -0.5], 0.2), ([0.9, -0.8, 0.5, 1.1, 0.3, 0.2], 0.35)]
+INERTIA = np.array([[2.0, 0.1, 0.2], [0.1, 3.0, 0.0], [0.2, 0.0, 3.0]])
+BEARINGS = [(INERTIA, 10.0, 5.0, 9.81, 0.8), (1.5 * INERTIA, 7.0, 3.0, 9.81, 1.2)]
+IMPULSES = [(0.3, -2.0, 1.5, 0.2, 0.4, 0.1), (-0.5, -1.0, 2.5, 0.3, 0.2, 0.3)]
+POINTS = [(1.0, 2.0, 0.5, 0.7), (0.3, 1.5, 1.2, 0.4)]
+STEINER = [(np.diag([1.0, 2.0, 2.5]), 2.0, V(0.3, -0.2, 0.5)), (np.diag([1.3, 2.6, 3.0]), 0.7, V(-0.6, 0.1, 0.4))]
+
+#: (slip, check, file, old, new, probe, inputs, path, diagnosis, the hint's detail)
+OPERATORS = [
+    ("a term's sign", "p22.loop_values", "planar.py", "y += length * np.cos(gamma)", "y -= length * np.cos(gamma)",
+     "problem_22.loop", ARMS, (), "sign_flip", "one term or factor of `end_effector_loop` has the wrong sign"),
+    ("a sign inside a quotient", "p18.zero_acceleration", "inertia.py", "float((a_x * r_y - a_y * r_x) / r2)",
+     "float((a_y * r_x - a_x * r_y) / r2)", "problem_18.non_accelerating", POINTS, (), "sign_flip",
+     "one term or factor of `non_accelerating_point` has the wrong sign"),
+    ("a term missing", "p19.parallel_axis", "inertia.py",
+     "return as_matrix(I_G) + m * ((r @ r) * np.eye(3) - np.outer(r, r))",
+     "return m * ((r @ r) * np.eye(3) - np.outer(r, r))", "problem_19.parallel_axis", STEINER, (), "missing_term",
+     "one term of a sum in `parallel_axis` is left out"),
+    ("a factor missing", "p39.bearing_forces", "problem_39.py", "weight = np.array([0.0, m * g, 0.0])",
+     "weight = np.array([0.0, g, 0.0])", "problem_39.bearing_forces", BEARINGS, (0,), "missing_factor",
+     "one factor of a product in `bearing_forces` is left out"),
+    ("a rotation missing", "p11.test_values", "bound.py", "return self.C.I_r_IC + self.C.A_IC @ self.C_r_CO",
+     "return self.C.I_r_IC + self.C_r_CO", "problem_11.vector",
+     [(ROTATIONS[0], V(1, 2, 3), V(0.5, -1, 2), V(0.3, 0.2, -0.7)),
+      (ROTATIONS[1], V(-1, 0.4, 2), V(1.5, 1, -2), V(-0.3, 0.9, 0.4))], ("I_r_IO",), "wrong_frame",
+     "a rotation is left out in `I_r_IO`"),
+    ("two arguments of a call", "p43.constrained_system", "problem_43.py", "M = mass_matrix(m, theta)",
+     "M = mass_matrix(theta, m)", "problem_43.constrained_system",
+     [(V(0.1, 0.5, 0.3), V(0.2, -0.1, 0.4), 2.0, 0.3, 9.81), (V(-0.2, 0.6, -0.4), V(0.5, 0.3, -0.2), 1.2, 0.7, 9.81)],
+     ("A",), "argument_order", "two arguments of a call in `constrained_system` are exchanged"),
+    ("two names of the function", "p47.impulse", "problem_47.py", "arm = x_cog * np.cos(phi) - y_cog * np.sin(phi)",
+     "arm = y_cog * np.cos(phi) - x_cog * np.sin(phi)", "problem_47.impulse", IMPULSES, (), "argument_order",
+     "two of the arguments of `impulse` are exchanged"),
+    ("the factors of a product", "p09.chain", "cosys.py", "else B.A_IC.T @ self.A_IC", "else self.A_IC @ B.A_IC.T",
+     "problem_09.chain", [([ROTATIONS[0], ROTATIONS[1], ROTATIONS[2]],), ([ROTATIONS[3], ROTATIONS[2], ROTATIONS[0]],)],
+     ("pairs", 2, 0), "factor_order", "two factors of a product in `get_transform` are multiplied the other way round"),
+    ("two entries of a list", "p27.columns", "problem_27.py", "return np.array([ux, uy, 0.0])",
+     "return np.array([uy, ux, 0.0])", "problem_27.prismatic_column", [(V(0.6, 0.8),), (V(-0.28, 0.96),)], (),
+     "swapped", "two entries that `prismatic_column` builds are exchanged"),
+    ("a number halved", "p39.bearing_forces", "problem_39.py", "return 0.5 * (weight - difference), 0.5 * (weight",
+     "return 0.25 * (weight - difference), 0.5 * (weight", "problem_39.bearing_forces", BEARINGS, (0,),
+     "wrong_factor", "a number in `bearing_forces` is halved"),
+    ("a division for a product", "p47.impulse", "problem_47.py", "-m * theta * yd_minus / (m * arm ** 2 + theta)",
+     "-m * theta * yd_minus * (m * arm ** 2 + theta)", "problem_47.impulse", IMPULSES, (), "wrong_factor",
+     "`impulse` divides where it should multiply"),
+    ("a square missing", "p47.impulse", "problem_47.py", "(m * arm ** 2 + theta)", "(m * arm + theta)",
+     "problem_47.impulse", IMPULSES, (), "wrong_factor", "a square is missing in `impulse`"),
+    ("a square root missing", "p18.zero_acceleration", "inertia.py", "float(np.sqrt(a_dot_r / r2))",
+     "float(a_dot_r / r2)", "problem_18.non_accelerating", POINTS, (), "wrong_factor",
+     "a square root is missing in `non_accelerating_point`"),
+    ("sin for cos", "p22.loop_values", "planar.py", "x -= length * np.sin(gamma)", "x -= length * np.cos(gamma)",
+     "problem_22.loop", ARMS, (), "sin_cos_swapped", "`end_effector_loop` takes sin where cos belongs"),
+    ("degrees", "p22.loop_values", "planar.py", "x -= length * np.sin(gamma)",
+     "x -= length * np.sin(np.deg2rad(gamma))", "problem_22.loop", ARMS, (), "degrees",
+     "`end_effector_loop` takes an angle in degrees"),
+    ("a transpose", "p39.inertia_misaligned", "problem_39.py", "return A @ np.asarray(I1, dtype=float) @ A.T",
+     "return A @ np.asarray(I1, dtype=float) @ A", "problem_39.inertia_misaligned",
+     [(np.diag([1.0, 3.0, 3.0]), 0.05), (np.diag([2.0, 6.0, 6.0]), -0.08)], (), "transpose",
+     "a matrix in `inertia_misaligned` is transposed"),
+    ("a neighbouring index", "p39.bearing_forces", "problem_39.py", "[0.0, 2.0 * moment[2] / d,",
+     "[0.0, 2.0 * moment[1] / d,", "problem_39.bearing_forces", BEARINGS, (0,), "wrong_index",
+     "`bearing_forces` reads an entry from a neighbouring index"),
+]
+
+
+@pytest.mark.parametrize("operator", OPERATORS, ids=[o[0] for o in OPERATORS])
+def test_each_operator_names_its_slip_and_the_students_function(operator, tmp_path):
+    _, check_id, file, old, new, probe, inputs, path, diagnosis, detail = operator
+    found = slips_of(tmp_path, check_id, file, old, new, probe, inputs, path)
+    assert found, "no mutant reproduced the planted slip"
+    assert {h.name for h in found} <= set(DIAGNOSES)
+    assert len({DIAGNOSES[h.name].family for h in found}) == 1, [(h.name, h.detail) for h in found]
+    assert diagnosis in {h.name for h in found}, [(h.name, h.detail) for h in found]
+    assert any(detail in h.detail for h in found), [h.detail for h in found]
+    for h in found:  # the student's function by its name, and nothing of the reference's code
+        assert mutants.NAMES_A_FUNCTION.search(h.detail)
+        assert old not in h.detail and "np." not in h.detail and "=" not in h.detail and "self" not in h.detail
+
+
+def test_a_slip_inside_an_index_is_an_index_slip(tmp_path):
+    """``q[2 * k - 1]`` read as ``q[2 * k - 2]``: at k = 1 dropping the factor 2 of ``2 * k`` gives the same
+    entry, a coincidence of the index that was told "a number left out of a product"; every slip inside an index
+    is one of the index."""
+    found = slips_of(tmp_path, "p22.points_values", "planar.py", "length, angle = q[2 * k - 2], q[2 * k - 1]",
+                     "length, angle = q[2 * k - 2], q[2 * k - 2]", "problem_22.points",
+                     [([1.0, 0.5],), ([0.4, -0.7, 1.2, 0.3],)], (1,))
+    assert found and {h.name for h in found} == {"wrong_index"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_slip_on_one_input_only_is_no_cause(tmp_path):
+    """The second input's value is the reference's: no mutant reproduces both."""
+    student = planted_package(tmp_path, "planar.py", "y += length * np.cos(gamma)", "y -= length * np.cos(gamma)")
+    try:
+        first, second = (evidence("problem_22.loop", args, (), student) for args in ARMS)
+    finally:
+        drop_private(student)
+    second = Evidence(second.expected + 0.5, second.expected, TIGHT, "value", source=second.source)
+    assert mutants.mutant_slips(scene("p22.loop_values"), [first, second]) == []
+
+
+def test_two_mistakes_at_once_are_no_single_slip(tmp_path):
+    found = slips_of(tmp_path, "p39.bearing_forces", "problem_39.py",
+                     "difference = np.array([0.0, 2.0 * moment[2] / d, -2.0 * moment[1] / d])",
+                     "difference = np.array([0.0, moment[2] / d, -moment[1] / d])", "problem_39.bearing_forces",
+                     BEARINGS, (0,))
+    assert found == []
+
+
+def test_an_equivalent_mutant_is_no_cause(tmp_path):
+    """Mutants whose value is the reference's (the symmetric ``I_G`` transposed, say) reproduce a right answer
+    too: they are dropped, and a right answer names nothing."""
+    import reference
+
+    root, package = mutants._package()
+    args = STEINER[0]
+    made = mutants.mutants_of(package, root, 19, "problem_19.parallel_axis", args)
+    expected = array_of(decode(encode(probe_of("problem_19.parallel_axis")(reference, *args))))
+    equivalent = []
+    for mutant in made:
+        holder = mutants._live(package, mutant.module, mutant.path)
+        original, holder.__code__ = holder.__code__, mutant.code
+        try:
+            with np.errstate(all="ignore"):
+                value = array_of(probe_of("problem_19.parallel_axis")(package, *args))
+        except Exception:  # noqa: BLE001 - a mutant that raises is no equivalent
+            value = None
+        finally:
+            holder.__code__ = original
+        if value is not None and np.allclose(value, expected, rtol=0, atol=1e-12):
+            equivalent.append(mutant.slip)
+    assert "transpose" in equivalent
+    evidences = []
+    for args in STEINER:
+        value = array_of(decode(encode(probe_of("problem_19.parallel_axis")(reference, *args))))
+        evidences.append(Evidence(value.copy(), value, TIGHT, "I_O",
+                                  source=Source("problem_19.parallel_axis", args, (), value)))
+    assert mutants.mutant_slips(scene("p19.parallel_axis"), evidences) == []
+
+
+def test_the_kit_leaves_formulas_to_the_graded_submission(tmp_path):
+    student = planted_package(tmp_path, "planar.py", "y += length * np.cos(gamma)", "y -= length * np.cos(gamma)")
+    try:
+        evidences = [evidence("problem_22.loop", args, (), student) for args in ARMS]
+    finally:
+        drop_private(student)
+    assert mutants.mutant_slips(scene("p22.loop_values", mode="kit"), evidences) == []
+    assert mutants.left_to_live(scene("p22.loop_values", mode="kit"), evidences)
+    assert not mutants.left_to_live(scene("p22.loop_values"), evidences)
+
+
+# ------------------------------------------------------------------------------------------ on a made-up package
+
+
+SOURCE = '''"""A made-up problem for the tier's tests."""
+
+import math
+
+import numpy as np
+
+
+def difference(a, b):
+    """``(a - b, a b)``."""
+    # BEGIN SOLUTION problem 98
+    return np.array([np.subtract(a, b), a * b])
+    # END SOLUTION
+
+
+def settle(a, b):
+    """The first multiple of ``b`` at or past ``a``, and ``a b``."""
+    # BEGIN SOLUTION problem 98
+    x = 0.0
+    while x < a:
+        x += b
+    return np.array([x, a * b])
+    # END SOLUTION
+
+
+def logarithm(a, b):
+    """``(log a, b)``."""
+    # BEGIN SOLUTION problem 98
+    return np.array([math.log(a), b])
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def made_up(tmp_path, monkeypatch):
+    """A package of one made-up problem (98) that the tier mutates in place of the reference."""
+    root = tmp_path / "made_up"
+    root.mkdir()
+    (root / "__init__.py").write_text('"""A made-up package."""\n')
+    (root / "problem_98.py").write_text(SOURCE)
+    package = private_import(f"_made_up_{next(_NUMBERS)}", root)
+    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
+    yield package
+    drop_private(package)
+
+
+def made_up_probe(name):
+    def probe(pkg, a, b):
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_98"), name)(a, b)
+
+    return probe
+
+
+def made_up_evidences(package, name, student, inputs):
+    probe = made_up_probe(name)
+    return [Evidence(np.asarray(student(*args), dtype=float), np.asarray(probe(package, *args), dtype=float), TIGHT,
+                     "value", source=Source(probe, args, ())) for args in inputs]
+
+
+def test_a_value_two_families_give_is_could_be(made_up):
+    """``b - a`` is ``np.subtract`` with its arguments exchanged (order) and its result negated (sign)."""
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    found = mutants.mutant_slips(scene("p98.difference"), evidences)
+    assert {DIAGNOSES[h.name].family for h in found} == {"order", "sign"}
+    finding = explaining._finding(found, "on the input shown and on a second one")
+    assert finding.hint.startswith("Could be ") and len(finding.names) == 2
+
+
+def test_a_third_input_rules_out_a_coincidence_of_the_two_shown(made_up):
+    """Where the engine can draw another input (``another``), a slip is kept only if it gives the student's value
+    there too: a value that agrees with ``b - a`` on the two inputs shown but not elsewhere names nothing."""
+    def coincidence(a, b):
+        return [b - a if a < 5.0 else a - b + 1.0, a * b]
+
+    inputs = [(1.0, 3.0), (2.5, -0.5)]
+    evidences = made_up_evidences(made_up, "difference", coincidence, inputs)
+    (third,) = made_up_evidences(made_up, "difference", coincidence, [(7.0, 2.0)])
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, lambda: third) == []
+    (third,) = made_up_evidences(made_up, "difference", coincidence, [(-3.0, 2.0)])
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, lambda: third)
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, lambda: None)
+
+
+def test_slips_of_more_than_two_families_name_nothing():
+    made = [mutants.Mutant("problem_98", ("f",), slip, None) for slip in ("sign", "entries", "square")]
+    assert len({DIAGNOSES[m.name].family for m in made}) == 3
+    assert mutants._hypotheses(made) == []
+    assert [h.name for h in mutants._hypotheses(made[:2])] == ["sign_flip", "swapped"]
+
+
+def test_a_mutant_that_hangs_is_interrupted_and_names_nothing(made_up, monkeypatch):
+    """``x += b`` turned into ``x -= b`` (or left out) never ends the loop: the tier's time runs out, nothing is
+    named, and the function's own code is back in place."""
+    monkeypatch.setattr(mutants, "TIME_BUDGET", 0.5)
+    fired = []
+
+    class Watched(mutants._Deadline):
+        def __exit__(self, *exc):
+            fired.append(self.fired)
+            return super().__exit__(*exc)
+
+    monkeypatch.setattr(mutants, "_Deadline", Watched)
+    evidences = made_up_evidences(made_up, "settle", lambda a, b: [a + 1.0, 0.5 * a * b], [(1.0, 0.3), (2.0, 0.7)])
+    started = time.monotonic()
+    assert mutants.mutant_slips(scene("p98.settle"), evidences) == []
+    assert time.monotonic() - started < 60.0  # bounded (the budget is half a second; a loaded machine is slow)
+    assert fired == [True]
+    settle = importlib.import_module(f"{made_up.__name__}.problem_98").settle
+    assert list(settle(1.0, 0.3)) == pytest.approx([1.2, 0.3])
+
+
+def test_a_deadline_that_fires_leaves_nothing_behind():
+    """However the interruption meets the work (inside it, or pending as it ends), nothing is left to interrupt
+    later code, and a profiled call still runs (withdrawing a pending interruption with ``SetAsyncExc(NULL)`` made
+    CPython 3.11 loop forever in the next profiler): run in a child process, within a generous bound."""
+    import subprocess
+    import sys
+
+    script = """
+import sys
+from grader.diagnosis import mutants
+
+try:
+    with mutants._Deadline(0.2):
+        while True:
+            pass
+except mutants._Timeout:
+    pass
+try:
+    with mutants._Deadline(60.0) as deadline:
+        deadline._fire()
+except mutants._Timeout:
+    pass
+
+
+def total(n):
+    return sum(range(n))
+
+
+sys.setprofile(lambda frame, event, arg: None)
+print(total(10))
+sys.setprofile(None)
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120, cwd=ROOT)
+    assert done.returncode == 0 and done.stdout.strip() == "45", done.stderr[-2000:]
+
+
+def test_a_mutant_that_raises_is_dropped(made_up):
+    """``math.log(b)`` (the arguments exchanged) raises for a negative ``b``: dropped, while the slip that
+    reproduces the student's value is named."""
+    evidences = made_up_evidences(made_up, "logarithm", lambda a, b: [-np.log(a), b], [(2.0, -0.3), (0.5, -1.7)])
+    found = mutants.mutant_slips(scene("p98.logarithm"), evidences)
+    assert [h.name for h in found] == ["sign_flip"]
+
+
+def test_the_mutants_are_bounded(made_up, monkeypatch):
+    """More mutants than the tier may try: nothing is named (the slips were not all tried)."""
+    monkeypatch.setattr(mutants, "MAX_MUTANTS", 2)
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    assert mutants.mutant_slips(scene("p98.difference"), evidences) == []
+
+
+# ------------------------------------------------------------------------------------------ graded
+
+
+def formula_mistakes() -> list[Planted]:
+    entries = tomllib.loads((ROOT / "tests" / "engine" / "formulas.toml").read_text())["mistake"]
+    return [Planted(name=e["name"], problem=e["problem"], file=e["file"], old=e["old"], new=e["new"],
+                    check=e["check"], diagnosis=e["diagnosis"], message=e["message"], also=tuple(e.get("also", ())))
+            for e in entries]
+
+
+FORMULAS = formula_mistakes()
+FAMILIES = {e["name"]: e["family"] for e in tomllib.loads(
+    (ROOT / "tests" / "engine" / "formulas.toml").read_text())["mistake"]}
+
+
+@pytest.fixture(scope="module")
+def slot():
+    problems = sorted({mistake.problem for mistake in FORMULAS})
+    with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
+        zygote.start()
+        yield zygote
+
+
+def test_the_graded_mistakes_are_of_their_families():
+    for mistake in FORMULAS:
+        assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],), mistake.name
+
+
+@pytest.mark.parametrize("mistake", FORMULAS, ids=lambda m: m.name)
+def test_a_slip_inside_a_formula_is_named_live_and_left_to_the_submission_in_the_kit(
+        mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    target = {r.check_id: r for r in live.results}[mistake.check]
+    assert target.status is Status.FAILED, target.message
+    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
+    assert mistake.message in target.hint, target.hint
+    unexpected = [r.check_id for r in live.results if r.status not in (Status.PASSED, Status.SKIPPED)
+                  and r.check_id not in (mistake.check, *mistake.also)]
+    assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
+    theirs = {r.check_id: r for r in kit.results}[mistake.check]
+    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
+    if not theirs.diagnosis:
+        assert mutants.KIT_NOTE in theirs.hint, theirs.hint
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    monkeypatch.setattr(engine, "ENABLED", False)  # no catalogue names a cause of the family
+    off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
+    unexplained = {r.check_id: r for r in off.results}[mistake.check]
+    assert unexplained.status is Status.FAILED, unexplained.message
+    assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis
