@@ -200,9 +200,9 @@ def _assert_wide_bar(ctx):
     ignored = ctx.reference(p44.simulate, WIDE_Q0, T_END, S, None, 0.0, persist=True)
     what = f"simulate(q0 = {np.round(WIDE_Q0, 4).tolist()}, {T_END:g}, {S:g}, d = {WIDE:g})"
     got = ctx.student(p44.simulate, WIDE_Q0, T_END, S, None, WIDE, timeout=SIMULATION_TIMEOUT)
-    dropped = [Mistake("ignored_argument", ignored["t_event"], f"Your run detects the second support as if the bar "
-                       f"had no width (d = 0) whatever d it is given: pass simulate's d on to the event "
-                       f"(make_contact_event(s, d)).")] if ignored.get("t_event") is not None else []
+    dropped = [Mistake("ignored_argument", ignored["t_event"], "Your run detects the second support as if the bar "
+                       "had no width (d = 0) whatever d it is given: pass simulate's d on to the event "
+                       "(make_contact_event(s, d)).")] if ignored.get("t_event") is not None else []
     if got.get("t_event") is not None and dropped and close(got["t_event"], dropped[0].value, EVENT_TIME):
         assert_close(got["t_event"], expected["t_event"], f"t_event of {what}", EVENT_TIME, dropped,
                      context="(a bar of half-width d = 0.05 m, the grader's own case: the sheet's has d = 0)")

@@ -8,6 +8,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from probes import lookup, ProbeLookupError
+
 from ..values import Tol
 
 __all__ = [
@@ -58,14 +60,9 @@ def declaration(probe: str) -> Declaration | None:
         return None
     if probe in DECLARATIONS:
         return DECLARATIONS[probe]
-    if "." not in probe:
-        return None
-    import importlib
-
-    module_name, _, func_name = probe.rpartition(".")
     try:
-        func = getattr(importlib.import_module(f"probes.{module_name}"), func_name)
-    except (ImportError, AttributeError):
+        func = lookup(probe)
+    except ProbeLookupError:
         DECLARATIONS[probe] = None
         return None
     declared = getattr(func, "declared", None) or {}
