@@ -80,24 +80,22 @@ def _package_dir(name: str) -> Path:
 def problem_files(number: int) -> list[str]:
     """The files a student uploads for ``number``: its own module first, then the template's modules holding code
     the student writes that its checks reach (``rotations.py`` for problem 7, which builds on R1, R2, R3), and
-    ``answers.toml`` when the problem has answers there.  Reached: the problem's own stubs, the modules its check
-    module names (``"rotations"``) and its probes load (``module(pkg, "rotations")``, also through the probes of
-    another problem that its checks call), and what those import in the reference."""
+    ``answers.toml`` when the problem has answers there.  Reached: the problem's own stubs, the modules its
+    probes load (``module(pkg, "rotations")``, also through the probes of another problem
+    that its checks import), and what those import in the reference."""
     import tomllib
 
     from .loader import template_dir, template_index
-    from .sources import named_modules, parsed, relative_imports, strings
+    from .sources import named_modules, parsed, project_imports, relative_imports
 
     template, reference, probes, checks = template_dir(), *map(_package_dir, ("reference", "probes", "checks"))
-    modules = {path.stem for path in template.glob("*.py")}
     written = {module for stubs in template_index()[1].values() for module, _ in stubs}
     own = f"problem_{number:02d}"
     reached = {own} | {module for module, _ in template_index()[1].get(number, ())}
-    texts = strings(parsed(checks / f"{own}.py"))
-    reached |= texts & modules
-    probe_modules = {own} | {text.partition(".")[0] for text in texts
-                             if "." in text and text.partition(".")[0].isidentifier()
-                             and (probes / f"{text.partition('.')[0]}.py").is_file()}
+    check_tree = parsed(checks / f"{own}.py")
+    imported = {name.split(".")[1] for name in project_imports(check_tree, "checks")
+                if name.startswith("probes.") and len(name.split(".")) == 2}
+    probe_modules = {own} | {name for name in imported if (probes / f"{name}.py").is_file()}
     for name in sorted(probe_modules):
         if (probes / f"{name}.py").is_file():
             reached |= named_modules(parsed(probes / f"{name}.py"))

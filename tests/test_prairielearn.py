@@ -306,6 +306,9 @@ def test_a_problem_asks_for_the_files_its_checks_use():
     assert problem_files(6) == ["problem_06.py", "rotations.py"]
     assert problem_files(7) == ["problem_07.py", "problem_06.py", "rotations.py"]  # builds on R1, R2, R3, cardan
     assert problem_files(10) == ["problem_10.py", "answers.toml"]  # multiple-choice answers
+    # a check that reads a value's "inertia" key does not ask for inertia.py, which these problems never use
+    assert problem_files(2) == ["problem_02.py", "problem_03.py", "answers.toml"]
+    assert problem_files(5) == ["problem_05.py", "answers.toml"]
     assert problem_files(22) == ["problem_22.py", "planar.py"]
     tree = problem_files(31)
     assert "tree.py" in tree and "dynamics.py" in tree and "conventions.py" not in tree  # given, nothing to write
