@@ -198,3 +198,14 @@ def assert_same_verdicts(name: str, live, kit, secret: set[str]) -> None:
             different.append(f"{check_id}: live {expected}, kit {verdict}\n  live: {mine[check_id].message[:400]}"
                              f"\n  kit: {kit_message[:400]}")
     assert not different, f"{name}: the kit's verdicts differ from the live reference's:\n" + "\n".join(different)
+
+
+def warm_slot(problems):
+    """A batch slot's warm process with the modules of ``problems`` imported, as ``grade batch`` starts one: a
+    module fixture's body (``yield from warm_slot(...)``)."""
+    from grader.sandbox import Limits, sandbox_mode
+    from grader.sandbox.zygote import Zygote, warm_modules
+
+    with Zygote(Limits(), sandbox_mode(), warm_modules(sorted(problems))) as zygote:
+        zygote.start()
+        yield zygote

@@ -24,8 +24,6 @@ from grader.checking import EXACT, CheckFailure, Tol, assert_close
 from grader.context import Context, explained
 from grader.diagnosis import Declaration, Evidence, explain
 from grader.results import Status
-from grader.sandbox import Limits, sandbox_mode
-from grader.sandbox.zygote import Zygote, warm_modules
 from grader.workers import Forked
 
 from .kit_support import (  # noqa: F401 (fixtures)
@@ -35,6 +33,7 @@ from .kit_support import (  # noqa: F401 (fixtures)
     deferred_ids,
     grade_live_and_kit,
     kit_oracle,
+    warm_slot,
 )
 from .submissions import Planted, build_planted
 
@@ -472,10 +471,7 @@ DEVELOPMENT = development_set()
 
 @pytest.fixture(scope="module")
 def slot():
-    problems = sorted({mistake.problem for mistake in DEVELOPMENT})
-    with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
-        zygote.start()
-        yield zygote
+    yield from warm_slot(sorted({mistake.problem for mistake in DEVELOPMENT}))
 
 
 def test_the_development_sets_hold_no_mistake_of_the_held_out_measure():

@@ -28,10 +28,9 @@ from grader.loader import cleanup, materialize
 from grader.oracle import LiveOracle, call_key
 from grader.results import Status
 from grader.runner import _run_checks, problem_module
-from grader.sandbox import Child, Limits, sandbox_mode
-from grader.sandbox.zygote import Zygote, warm_modules
+from grader.sandbox import Child
 
-from .kit_support import SEED
+from .kit_support import SEED, warm_slot
 from .nulls import FILLS, build_null
 from .submissions import ROOT, copy_reference
 
@@ -89,9 +88,7 @@ def unchanged(calls: list, reference: dict) -> bool:
 
 @pytest.fixture(scope="module")
 def slot():
-    with Zygote(Limits(), sandbox_mode(), warm_modules(PROBLEMS)) as zygote:
-        zygote.start()
-        yield zygote
+    yield from warm_slot(PROBLEMS)
 
 
 @pytest.fixture(scope="module")

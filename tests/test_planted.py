@@ -16,8 +16,6 @@ from grader import grade_problem, grade_submission
 from grader.workers import Forked
 from grader.problems import problems
 from grader.results import Status
-from grader.sandbox import Limits, sandbox_mode
-from grader.sandbox.zygote import Zygote, warm_modules
 
 from .kit_support import (  # noqa: F401 (fixtures)
     SEED,
@@ -26,6 +24,7 @@ from .kit_support import (  # noqa: F401 (fixtures)
     deferred_ids,
     grade_live_and_kit,
     kit_oracle,
+    warm_slot,
 )
 from .submissions import (
     ROOT,
@@ -47,9 +46,7 @@ def reference_copy(tmp_path_factory):
 @pytest.fixture(scope="module")
 def slot():
     """A batch slot's warm process with every problem's modules imported, as ``grade batch`` starts one."""
-    with Zygote(Limits(), sandbox_mode(), warm_modules(PROBLEMS)) as zygote:
-        zygote.start()
-        yield zygote
+    yield from warm_slot(PROBLEMS)
 
 
 @pytest.mark.parametrize("problem", PROBLEMS)

@@ -16,8 +16,6 @@ from checks._diagnoses import families_of
 from grader.checking import Tol
 from grader.diagnosis import Evidence, explain
 from grader.results import Status
-from grader.sandbox import Limits, sandbox_mode
-from grader.sandbox.zygote import Zygote, warm_modules
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
     answer_key,
@@ -25,6 +23,7 @@ from tests.kit_support import (  # noqa: F401 (fixtures)
     deferred_ids,
     grade_live_and_kit,
     kit_oracle,
+    warm_slot,
 )
 from tests.submissions import Planted, build_planted
 
@@ -93,10 +92,7 @@ def strict(monkeypatch):
 
 @pytest.fixture(scope="module")
 def slot():
-    problems = sorted({m.problem for m in MISTAKES + [REVERSED_WIRE, REVERSED_PIN]})
-    with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
-        zygote.start()
-        yield zygote
+    yield from warm_slot(sorted({m.problem for m in MISTAKES + [REVERSED_WIRE, REVERSED_PIN]}))
 
 
 def graded(mistake, tmp_path, kit_oracle, deferred_ids, slot):

@@ -32,8 +32,6 @@ from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
 from grader.private import drop_private, private_import
 from grader.results import Status
-from grader.sandbox import Limits, sandbox_mode
-from grader.sandbox.zygote import Zygote, warm_modules
 from grader.workers import Forked
 from probes._codec import decode, encode
 
@@ -44,6 +42,7 @@ from ..kit_support import (  # noqa: F401 (fixtures)
     deferred_ids,
     grade_live_and_kit,
     kit_oracle,
+    warm_slot,
 )
 from ..submissions import Planted, build_planted
 
@@ -439,10 +438,7 @@ FAMILIES = {e["name"]: e["family"] for e in tomllib.loads(
 
 @pytest.fixture(scope="module")
 def slot():
-    problems = sorted({mistake.problem for mistake in FORMULAS})
-    with Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as zygote:
-        zygote.start()
-        yield zygote
+    yield from warm_slot(sorted({mistake.problem for mistake in FORMULAS}))
 
 
 def test_the_graded_mistakes_are_of_their_families():
