@@ -303,3 +303,21 @@ def pendulum_motion_fixed(pkg, t_end, I_grav, h, scheme):
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     y0 = np.concatenate([np.asarray(p24.Q, dtype=float), np.zeros(3)])
     return fixed_run(fixed_step(lambda t, y: p24.pendulum_ode(t, y, tree), y0, t_end, h, scheme), 3)
+
+
+def ode_terms(pkg, tree, cases, I_grav):
+    """The right-hand side ``dy/dt`` of ``tree`` (``y = (q, qd)``) at every ``(t, y)`` of ``cases`` split into named
+    terms with the package's own ``M, f, g``: ``(qd, 0) + (0, M^-1 f) + (0, M^-1 g)`` (the diagnosis engine's split
+    of a run's right-hand side)."""
+    equations_of_motion = module(pkg, "dynamics").equations_of_motion
+    terms = {"velocity": [], "f": [], "gravity": []}
+    for t, y in cases:
+        y = np.asarray(y, dtype=float)
+        n = len(y) // 2
+        q, qd = y[:n], y[n:]
+        M, f, g = (np.array(x, dtype=float) for x in equations_of_motion(tree, q.copy(), qd.copy(), I_grav))
+        zero = np.zeros(n)
+        terms["velocity"].append(np.concatenate([qd, zero]))
+        terms["f"].append(np.concatenate([zero, np.linalg.solve(M, f)]))
+        terms["gravity"].append(np.concatenate([zero, np.linalg.solve(M, g)]))
+    return {"terms": terms, "extra": {}}

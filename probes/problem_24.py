@@ -4,6 +4,7 @@ random trees of rotational joints."""
 import numpy as np
 
 from . import _trees, module, probe
+from ._dynamics import ode_terms
 from ._trees import OUTLINE, POSES
 from ._forms import Arr, Dict, Seq
 
@@ -44,14 +45,4 @@ def pendulum_ode_terms(pkg, cases):
     ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g)`` with the package's own ``M, f, g``."""
     p24 = module(pkg, "problem_24")
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
-    terms = {"velocity": [], "f": [], "gravity": []}
-    for t, y in cases:
-        y = np.asarray(y, dtype=float)
-        q, qd = y[:3], y[3:]
-        M, f, g = (np.array(x, dtype=float) for x in module(pkg, "dynamics").equations_of_motion(
-            tree, q.copy(), qd.copy(), p24.I_GRAV))
-        zero = np.zeros(3)
-        terms["velocity"].append(np.concatenate([qd, zero]))
-        terms["f"].append(np.concatenate([zero, np.linalg.solve(M, f)]))
-        terms["gravity"].append(np.concatenate([zero, np.linalg.solve(M, g)]))
-    return {"terms": terms, "extra": {}}
+    return ode_terms(pkg, tree, cases, p24.I_GRAV)

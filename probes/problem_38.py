@@ -4,7 +4,7 @@ walker at every output time."""
 import numpy as np
 
 from . import module, probe
-from ._dynamics import energies, fixed_run, fixed_step, trace
+from ._dynamics import energies, fixed_run, fixed_step, ode_terms, trace
 from ._forms import Arr, Dict, Seq
 
 
@@ -60,17 +60,7 @@ def walker_ode_terms(pkg, cases):
     ``dy/dt = (qd, 0) + (0, M^-1 f) + (0, M^-1 g)`` with the package's own ``M, f, g``."""
     p38 = module(pkg, "problem_38")
     tree = p38.build_dynamic_walker()
-    terms = {"velocity": [], "f": [], "gravity": []}
-    for t, y in cases:
-        y = np.asarray(y, dtype=float)
-        q, qd = y[:2], y[2:]
-        M, f, g = (np.array(x, dtype=float) for x in module(pkg, "dynamics").equations_of_motion(
-            tree, q.copy(), qd.copy(), p38.I_GRAV))
-        zero = np.zeros(2)
-        terms["velocity"].append(np.concatenate([qd, zero]))
-        terms["f"].append(np.concatenate([zero, np.linalg.solve(M, f)]))
-        terms["gravity"].append(np.concatenate([zero, np.linalg.solve(M, g)]))
-    return {"terms": terms, "extra": {}}
+    return ode_terms(pkg, tree, cases, p38.I_GRAV)
 
 
 @probe(reference_only=True)
