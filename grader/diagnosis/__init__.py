@@ -81,15 +81,7 @@ def explain(ctx, evidences: list) -> Finding | None:
     evidences = [e for e in evidences if e is not None]
     if not evidences or not ENABLED:
         return None
-    scene = Scene(ctx)
-    try:
-        return find(scene, evidences)
-    except (Budget, GraderFault):
-        return None
-    except Exception:  # noqa: BLE001 - a defect of the engine never costs the student the failure's message
-        if STRICT:
-            raise
-        return None
+    return _guarded(find, Scene(ctx), evidences)
 
 
 def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
@@ -99,11 +91,17 @@ def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
     diagnosis stands.  ``evidence``: the failing comparison (None: the check's last run is the one)."""
     if not ENABLED or not _blames_integration(diagnosis):
         return None
+    return _guarded(doubted, Scene(ctx), evidence)
+
+
+def _guarded(ask, scene: Scene, evidence) -> Finding | None:
+    """``ask(scene, evidence)``, or None when the engine ran out of calls or the grader failed; a defect of the
+    engine never costs the student the failure's message (``STRICT`` raises it instead)."""
     try:
-        return doubted(Scene(ctx), evidence)
+        return ask(scene, evidence)
     except (Budget, GraderFault):
         return None
-    except Exception:  # noqa: BLE001 - a defect of the engine never costs the student the failure's message
+    except Exception:  # noqa: BLE001 - see above
         if STRICT:
             raise
         return None
