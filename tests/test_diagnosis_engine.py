@@ -29,6 +29,7 @@ from grader.workers import Forked
 from .kit_support import (  # noqa: F401 (fixtures)
     SEED,
     answer_key,
+    assert_named_failure,
     assert_same_verdicts,
     deferred_ids,
     grade_live_and_kit,
@@ -506,13 +507,7 @@ def test_the_engine_names_a_mistake_no_catalogue_lists(mistake, tmp_path, kit_or
                                                        monkeypatch):
     submission = build_planted(mistake, tmp_path / "pkg")
     live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    target = {r.check_id: r for r in live.results}[mistake.check]
-    assert target.status is Status.FAILED, target.message
-    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
-    assert mistake.message in target.hint, target.hint
-    unexpected = [r.check_id for r in live.results if r.status not in (Status.PASSED, Status.SKIPPED)
-                  and r.check_id not in (mistake.check, *mistake.also)]
-    assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
+    assert_named_failure(mistake, live)
     assert_same_verdicts(mistake.name, live, kit, deferred_ids)
     monkeypatch.setattr(engine, "ENABLED", False)  # no catalogue names the cause (a shape, say, is not a cause)
     off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))

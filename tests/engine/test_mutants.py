@@ -38,6 +38,7 @@ from probes._codec import decode, encode
 from ..kit_support import (  # noqa: F401 (fixtures)
     SEED,
     answer_key,
+    assert_named_failure,
     assert_same_verdicts,
     deferred_ids,
     grade_live_and_kit,
@@ -451,13 +452,7 @@ def test_a_slip_inside_a_formula_is_named_live_and_left_to_the_submission_in_the
         mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
     submission = build_planted(mistake, tmp_path / "pkg")
     live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    target = {r.check_id: r for r in live.results}[mistake.check]
-    assert target.status is Status.FAILED, target.message
-    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
-    assert mistake.message in target.hint, target.hint
-    unexpected = [r.check_id for r in live.results if r.status not in (Status.PASSED, Status.SKIPPED)
-                  and r.check_id not in (mistake.check, *mistake.also)]
-    assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
+    assert_named_failure(mistake, live)
     theirs = {r.check_id: r for r in kit.results}[mistake.check]
     assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
     if not theirs.diagnosis:
