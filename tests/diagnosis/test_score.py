@@ -59,13 +59,15 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
     assert sum(per_exercise[e] for e in ("I", "VI", "VII")) > len(FRESH_SET) / 2
 
 
-def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem():
-    for mistakes in (FRESH_SET, NAMED_SET):
+@pytest.mark.parametrize("sets", [(FRESH_SET, NAMED_SET), (FRESH2_SET, NAMED2_SET)], ids=["first", "second"])
+def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
+    for mistakes in sets:
         assert defects(mistakes) == []
-    for mistake in FRESH_SET + NAMED_SET:
+    for mistake in sets[0] + sets[1]:
         ids = {f"p{mistake.problem:02d}.{spec.name}" for spec in checks_of(problem_module(mistake.problem))}
         assert mistake.check in ids, mistake.name
         assert mistake.family in FAMILIES and mistake.cause, mistake.name
+        assert exercise_of(mistake.problem) == mistake.exercise
 
 
 def test_no_mistake_is_in_both_sets_or_in_the_planted_suite():
@@ -140,16 +142,6 @@ def test_the_second_set_covers_every_exercise_roughly_in_proportion_and_every_si
         assert 0.5 * share <= count / len(FRESH2_SET) <= 1.5 * share, (exercise, count, per_exercise)
     assert {m.problem for m in FRESH2_SET} >= set(SIMULATED)
     assert sum(1 for m in FRESH2_SET if m.problem in SIMULATED) >= 20
-
-
-def test_every_entry_of_the_second_set_plants_into_the_reference_and_names_a_check_of_its_problem():
-    for mistakes in (FRESH2_SET, NAMED2_SET):
-        assert defects(mistakes) == []
-    for mistake in FRESH2_SET + NAMED2_SET:
-        ids = {f"p{mistake.problem:02d}.{spec.name}" for spec in checks_of(problem_module(mistake.problem))}
-        assert mistake.check in ids, mistake.name
-        assert mistake.family in FAMILIES and mistake.cause, mistake.name
-        assert exercise_of(mistake.problem) == mistake.exercise
 
 
 def test_the_second_set_repeats_no_mistake_of_the_first_sets_or_of_the_planted_suite():
