@@ -27,7 +27,7 @@ from .checking import (
     diagnose,
     random_input,
 )
-from .diagnosis import doubt, explain, prepare_call, prepared, recording, remember_run
+from .diagnosis import doubt, explain, prepare_call, prepared, recording, remember_run, trace
 from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
@@ -629,6 +629,8 @@ def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
         return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
                             explained=True)
     if failure.evidence is None:
+        trace.begin(getattr(ctx, "check_id", ""), "no_evidence")
+        trace.end()
         return failure
     finding = explain(ctx, evidences or [failure.evidence])
     if finding is None:

@@ -44,6 +44,7 @@ from .engine import RECORDING, doubted, find, note_comparison, prepare, prepare_
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
+from . import trace
 
 __all__ = [
     "RECORDING",
@@ -81,7 +82,10 @@ def explain(ctx, evidences: list) -> Finding | None:
     evidences = [e for e in evidences if e is not None]
     if not evidences or not ENABLED:
         return None
-    return _guarded(find, Scene(ctx), evidences)
+    trace.begin(getattr(ctx, "check_id", ""), "explain")
+    finding = _guarded(find, Scene(ctx), evidences)
+    trace.end(finding)
+    return finding
 
 
 def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
@@ -91,7 +95,10 @@ def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
     diagnosis stands.  ``evidence``: the failing comparison (None: the check's last run is the one)."""
     if not ENABLED or not _blames_integration(diagnosis):
         return None
-    return _guarded(doubted, Scene(ctx), evidence)
+    trace.begin(getattr(ctx, "check_id", ""), "doubt")
+    finding = _guarded(doubted, Scene(ctx), evidence)
+    trace.end(finding)
+    return finding
 
 
 def _guarded(ask, scene: Scene, evidence) -> Finding | None:
@@ -99,9 +106,11 @@ def _guarded(ask, scene: Scene, evidence) -> Finding | None:
     engine never costs the student the failure's message (``STRICT`` raises it instead)."""
     try:
         return ask(scene, evidence)
-    except (Budget, GraderFault):
+    except (Budget, GraderFault) as exc:
+        trace.note("stopped", reason=type(exc).__name__, detail=str(exc)[:200])
         return None
-    except Exception:  # noqa: BLE001 - see above
+    except Exception as exc:  # noqa: BLE001 - see above
+        trace.note("defect", reason=type(exc).__name__, detail=str(exc)[:200])
         if STRICT:
             raise
         return None

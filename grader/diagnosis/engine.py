@@ -39,6 +39,7 @@ from .grammar import (
     replaced,
     rotation_of,
 )
+from . import trace
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, Scene
 from .terms import term_slips, term_values
@@ -245,13 +246,18 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     for evidence in evidences:
         _sources(scene, evidence)
     first = evidences[0]
+    trace.note("evidence", inputs=len(evidences), source=_traced_source(first.source),
+               student=_traced_source(first.student), call=first.call is not None, run=is_run(first),
+               shape=list(first.expected.shape) if first.expected is not None else None)
     if _at_sheet_digits(scene, first):
+        trace.note("sheet_digits")
         return None
     run = (first if is_run(first) else run_in_log(scene.ctx, first)) if runs else None
     found: list[Hypothesis] = []
     if run is not None:
         decl = Declaration(motion=run.motion) if run.motion else declaration(run.source.probe)
         model = _model(scene, run, decl)
+        trace.note("model", state=model.state, finding=None if model.finding is None else list(model.finding.names))
         if model.state == "differs":  # the mistake is in the model: its cause, or none (never the integration)
             return model.finding
         integration = model.state == "agrees"
@@ -259,6 +265,8 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         found += parameter_slips(scene, run, decl)
         found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))
                           and (integration or h.name not in INTEGRATION)]
+    if run is not None:
+        trace.note("run", found=[h.name for h in found])
     if first.source is None:  # a value derived from the student's own: explain the results it came from
         return _finding(found, "here") if found or first.call is None else _from_results(scene, evidences)
     decl = declaration(first.source.probe)
@@ -267,6 +275,8 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         second = _second_input(scene, first)
         if second is not None:
             evidences = [first, second]
+    trace.note("inputs", count=len(evidences), declared=decl is not None,
+               motion=bool(decl is not None and decl.motion), found_so_far=[h.name for h in found])
     inputs = [_predict(scene, e, constants) for e in evidences]
     if len(inputs) == 1:
         inputs[0] = _single(inputs[0])
@@ -274,6 +284,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     found += term_slips(inputs)
     if all(_same_shape(e) for e in evidences) and not (decl is not None and decl.motion):
         found += precision_slips(first.got, first.expected, first.tol)
+    trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for h in found])
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
     if not found and not (decl is not None and decl.motion):  # slips inside a formula: the last tier
@@ -281,6 +292,10 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         if not found and left_to_live(scene, evidences):
             return Finding((), KIT_NOTE)
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
+
+
+def _traced_source(source: Source | None):
+    return None if source is None else {"probe": source.probe, "path": list(source.path)}
 
 
 @dataclass(frozen=True)

@@ -43,6 +43,7 @@ import numpy as np
 from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
+from . import trace
 from .evidence import array_of, at, distinct, Evidence, Hypothesis, within
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "Mutant",
@@ -710,10 +711,12 @@ def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothe
         return []
     try:
         kept = _kept(problem, evidences)
+        trace.note("mutants", problem=problem, kept=None if kept is None else sorted({m.name for m in kept}))
         if kept and another is not None:
             third = _another(another)
             if third is not None:
                 kept = _kept(problem, [third], kept)
+                trace.note("third", kept=None if kept is None else sorted({m.name for m in kept}))
     except GraderFault:
         return []
     return _hypotheses(kept or [])
@@ -741,9 +744,12 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
             with _Deadline(TIME_BUDGET) as deadline:
                 if mutants is None:
                     mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
+                    trace.note("mutated", count=None if mutants is None else len(mutants),
+                               functions=sorted({m.function for m in mutants or ()}))
                 if mutants:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
         except _Timeout:
+            trace.note("timeout")
             kept = None
         finally:
             _restore(originals)  # once the deadline can interrupt nothing more

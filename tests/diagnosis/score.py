@@ -375,6 +375,7 @@ def grade_all(mistakes: list[Fresh], family_of, progress=None) -> list[Graded]:
             Zygote(Limits(), sandbox_mode(), warm_modules(problems)) as slot:
         slot.start()
         for index, mistake in enumerate(mistakes):
+            _mark_trace(mistake)
             submission = plant(mistake, Path(scratch) / f"{index:03d}")
             report = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
             graded.append(_graded(mistake, report, family_of))
@@ -382,6 +383,18 @@ def grade_all(mistakes: list[Fresh], family_of, progress=None) -> list[Graded]:
             if progress is not None:
                 progress(graded[-1])
     return graded
+
+
+def _mark_trace(mistake: Fresh) -> None:
+    """Where the engine's trace is written (``GRADER_DIAGNOSIS_TRACE``), a line that says which mistake the
+    explanations after it belong to."""
+    import os
+
+    from grader.diagnosis.trace import VARIABLE
+
+    if os.environ.get(VARIABLE):
+        with open(os.environ[VARIABLE], "a", encoding="utf-8") as out:
+            out.write(json.dumps({"mistake": mistake.name, "check": mistake.check, "family": mistake.family}) + "\n")
 
 
 # ---------------------------------------------------------------------------------------------- the report

@@ -463,3 +463,28 @@ def test_a_slip_inside_a_formula_is_named_live_and_left_to_the_submission_in_the
     unexplained = {r.check_id: r for r in off.results}[mistake.check]
     assert unexplained.status is Status.FAILED, unexplained.message
     assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis
+
+
+def test_the_trace_says_what_each_tier_found(made_up, tmp_path, monkeypatch):
+    """With ``GRADER_DIAGNOSIS_TRACE`` set, an explanation writes one line: the mutants tried and kept and the
+    finding; unset, nothing is written."""
+    import json
+
+    from grader.diagnosis import trace
+
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    path = tmp_path / "trace.jsonl"
+    monkeypatch.delenv(trace.VARIABLE, raising=False)
+    trace.begin("p98.difference", "explain")
+    mutants.mutant_slips(scene("p98.difference"), evidences)
+    trace.end(None)
+    assert not path.exists()
+    monkeypatch.setenv(trace.VARIABLE, str(path))
+    trace.begin("p98.difference", "explain")
+    found = mutants.mutant_slips(scene("p98.difference"), evidences)
+    trace.end(explaining._finding(found, "here"))
+    record = json.loads(path.read_text().strip())
+    notes = {n["what"]: n for n in record["notes"]}
+    assert record["check"] == "p98.difference" and notes["mutated"]["count"] > 0
+    assert {DIAGNOSES[name].family for name in notes["mutants"]["kept"]} == {"order", "sign"}
+    assert set(record["finding"]["names"]) == {h.name for h in found}
