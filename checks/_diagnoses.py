@@ -9,6 +9,23 @@ family, its phrase for students and its phrase for the class summary.
 * The student phrase completes "looks like ...": a noun phrase ("a transposed matrix (A_BI for A_IB)"); the summary
   phrase completes "35% of students ...": a verb phrase ("transposed a matrix (A_BI for A_IB)").
 
+A name's family is decided by what the slip did to the right formula, in the words of the grammar of common slips,
+never by the quantity it concerns or by its symptom:
+
+* a factor left out, doubled, halved or of the wrong unit (a mass, a length, g, a gain, degrees) is ``scale``;
+* a term left out of a sum is ``missing_term``, a term added is ``extra_term`` (a value taken about another point
+  than asked adds the parallel-axis term: ``about_origin``, ``about_the_joint``; an absolute position where a lever
+  arm belongs leaves out the position subtracted);
+* a sign of a term, an axis, a residual, an inequality is ``sign`` (a reflection is one axis's sign);
+* things in each other's place within one expression (arguments, factors, entries) is ``order``; an update of a
+  step that reads a value the step has already changed (or the other way round) takes a value of another time and
+  is ``time_shift``;
+* a rotation left out, on one side only or the other frame's is ``frame``; a reference point moved is ``offset``;
+* an argument whose value has no effect (a given gravity replaced by the Earth's) is ``ignored_argument``;
+* a state read from another row or column of the state or the solution is ``state_row``;
+* what the integration does (the step, the tolerance) is ``step_size``; when an event fires and whether it ends the
+  run is ``event``.
+
 ``grader.checking`` refuses a name that is not in the table (``Mistake``, ``fail``, ``CheckFailure``): a grader
 fault, never the student's.  The table checks itself when it is imported: every name once, every family known,
 no phrase empty.  This module imports nothing of the grader.
@@ -64,14 +81,15 @@ _FAMILIES = (
     Family("sign", "a sign slip", "flipped a sign"),
     Family("order", "things in the wrong order (arguments, factors, rows, columns)",
            "put arguments, factors or entries in the wrong order"),
-    Family("scale", "a wrong factor or unit (2, 1/2, degrees for radians, a constant)",
-           "were off by a factor or a unit (2, 1/2, degrees, a constant)"),
+    Family("scale", "a wrong factor or unit (2, 1/2, degrees for radians, a constant or a factor left out)",
+           "were off by a factor or a unit (2, 1/2, degrees, a constant, a factor left out)"),
     Family("frame", "coordinates of the wrong frame (body for inertial)", "mixed up the frames of coordinates"),
     Family("missing_term", "a missing term", "left out a term"),
     Family("extra_term", "an extra term", "added a term that does not belong"),
     Family("ignored_argument", "an argument that is ignored", "ignored an argument"),
     Family("initial_state", "a wrong initial state", "started the motion from a wrong state"),
-    Family("time_shift", "a motion shifted in time", "shifted the motion in time"),
+    Family("time_shift", "a value of another time (a motion shifted in time, an update out of order)",
+           "took values of another time (a motion shifted, updates out of order)"),
     Family("offset", "a constant offset", "were off by a constant offset"),
     Family("step_size", "an integration error that grows with the step (a step too large)",
            "integrated too coarsely (a step too large)"),
@@ -92,8 +110,6 @@ _FAMILIES = (
     Family("format", "an answer in the wrong format", "answered in the wrong format"),
     Family("not_finite", "NaN or infinite values", "returned NaN or infinite values"),
     Family("not_orthonormal", "a matrix that is not orthonormal", "returned a matrix that is not orthonormal"),
-    Family("reflection", "a reflection instead of a rotation (det = -1)",
-           "built a reflection instead of a rotation (det = -1)"),
     Family("not_spd", "a matrix that is not symmetric positive-definite",
            "returned a matrix that is not symmetric positive-definite"),
     Family("typed_numbers", "the sheet's printed numbers typed in", "typed in the sheet's printed numbers"),
@@ -172,6 +188,8 @@ _TABLE = (
     _D("rolling_sign", "sign", "a rolling motion the wrong way", "rolled the wrong way"),
     _D("rotation_sense", "sign", "a rotation the wrong way round", "turned the wrong way round"),
     _D("slope_sign", "sign", "a slope the wrong way", "tilted the slope the wrong way"),
+    _D("reflection", "sign", "a reflection instead of a rotation (det = -1)",
+       "built a reflection instead of a rotation (det = -1)"),
     # ---------------------------------------------------------------- order
     _D("argument_order", "order", "arguments in the wrong order", "swapped the arguments"),
     _D("swapped", "order", "entries, rows or columns swapped", "swapped entries, rows or columns"),
@@ -183,14 +201,6 @@ _TABLE = (
     _D("joint_order", "order", "joints in the wrong order", "applied the joints in the wrong order"),
     _D("state_order", "order", "the state derivative in the wrong order ((qdd, qd) for (qd, qdd))",
        "returned the state derivative in the wrong order"),
-    _D("orientation_before", "order", "an orientation updated before it is used",
-       "updated an orientation before using it"),
-    _D("omega_before_rotation", "order", "an update in the wrong order (omega before the rotation)",
-       "updated omega before the rotation"),
-    _D("update_order", "order", "B_omega_B updated before the step used its old value",
-       "updated B_omega_B before the step used it"),
-    _D("velocity_first", "order", "the velocity updated before the position update used it",
-       "updated the velocity before the position"),
     _D("rotation_side", "order", "a rotation multiplied from the wrong side", "multiplied from the wrong side"),
     _D("factor_order", "order", "the factors of a product in the wrong order", "multiplied factors in the wrong order"),
     _D("sin_cos_swapped", "order", "sin and cos swapped", "swapped sin and cos"),
@@ -220,7 +230,6 @@ _TABLE = (
     _D("missing_mass", "scale", "a missing factor m (an acceleration where a force belongs)",
        "left out the mass m"),
     _D("gravity_9_81", "scale", "g = 9.81 in a model normalised to g = 1", "used g = 9.81 in a normalised model"),
-    _D("earth_gravity", "scale", "the Earth's gravity where another is given", "used the Earth's gravity"),
     _D("coriolis_factor", "scale", "the Coriolis term without its factor 2", "left out the factor 2 of Coriolis"),
     _D("not_divided", "scale", "a sum not divided by the total mass", "forgot to divide by the total mass"),
     _D("unweighted", "scale", "points not weighted by their masses", "did not weight by the masses"),
@@ -228,6 +237,8 @@ _TABLE = (
     _D("omega_squared", "scale", "omega squared where omega belongs", "returned omega squared"),
     _D("normalization", "scale", "a vector normalised (or not) where it should not be",
        "normalised a vector wrongly"),
+    _D("soft_servo", "scale", "a servo too soft to follow its setpoint", "used a servo too soft"),
+    _D("missing_factor", "scale", "a factor left out of a product", "left a factor out of a product"),
     # ---------------------------------------------------------------- frame
     _D("wrong_frame", "frame", "coordinates of the wrong frame (body for inertial, or the reverse)",
        "mixed up body and inertial coordinates"),
@@ -239,18 +250,11 @@ _TABLE = (
     _D("not_rotated", "frame", "a body not turned into its frame", "did not turn the body into its frame"),
     _D("one_sided", "frame", "a rotation applied on one side only (A I, not A I A.T)",
        "rotated an inertia on one side only"),
-    _D("about_origin", "frame", "a value about the origin instead of the centre of gravity",
-       "measured about the origin instead of the centre of gravity"),
-    _D("about_the_joint", "frame", "an inertia about the joint instead of the centre of mass",
-       "gave the inertia about the joint"),
-    _D("absolute_position", "frame", "an absolute position where a lever arm belongs",
-       "used an absolute position instead of a lever arm"),
     _D("velocity_of_B", "state_row", "the velocity of B where another point's is asked",
        "gave the velocity of the wrong point"),
     # ---------------------------------------------------------------- missing terms
     *_terms(),
     _D("missing_term", "missing_term", "a term left out of a sum", "left a term out of a sum"),
-    _D("missing_factor", "missing_term", "a factor left out of a product", "left a factor out of a product"),
     _D("missing_rotation", "missing_term", "the rotational part J_R.T I J_R missing", "left out the rotation"),
     _D("missing_translation", "missing_term", "the translational part J_S.T m J_S missing",
        "left out the translation"),
@@ -264,9 +268,15 @@ _TABLE = (
        "left out the transport term omega x omega_rel"),
     _D("lever", "missing_term", "the lever of the predecessor's rotation missing", "left out a lever arm"),
     _D("no_rotation", "missing_term", "the rotation of a revolute joint missing", "left out a joint's rotation"),
+    _D("absolute_position", "missing_term", "an absolute position where a lever arm belongs",
+       "used an absolute position instead of a lever arm"),
     _D("rotation", "extra_term", "a rotation where a prismatic joint has none", "added a prismatic joint's rotation"),
     _D("acceleration_not_reset", "extra_term", "an acceleration left where none acts",
        "left an acceleration where none acts"),
+    _D("about_origin", "extra_term", "a value about the origin instead of the centre of gravity",
+       "measured about the origin instead of the centre of gravity"),
+    _D("about_the_joint", "extra_term", "an inertia about the joint instead of the centre of mass",
+       "gave the inertia about the joint"),
     # ---------------------------------------------------------------- ignored argument
     _D("ignored_argument", "ignored_argument", "an argument that your function ignores", "ignored an argument"),
     _D("ignores_parent", "ignored_argument", "the parent frame ignored", "ignored the parent frame"),
@@ -274,6 +284,7 @@ _TABLE = (
        "ignored the baumgarte flag"),
     _D("stale", "ignored_argument", "a value stored once instead of computed when asked",
        "stored a value instead of computing it"),
+    _D("earth_gravity", "ignored_argument", "the Earth's gravity where another is given", "used the Earth's gravity"),
     # ---------------------------------------------------------------- motions
     _D("initial_state", "initial_state", "a run that starts from a wrong state", "started from a wrong state"),
     _D("starts_at_rest", "initial_state", "a run that starts at rest where it should move",
@@ -291,7 +302,6 @@ _TABLE = (
     _D("integration", "step_size", "an integration too coarse (a loose integrator or a step too large)",
        "integrated too coarsely"),
     _D("energy_drift", "step_size", "energy that drifts in a conservative run", "let the energy drift"),
-    _D("soft_servo", "step_size", "a servo too soft to follow its setpoint", "used a servo too soft"),
     _D("event_late", "event", "an event found late (or a run that goes past it)", "found an event late"),
     _D("event_early", "event", "an event found too early", "found an event too early"),
     _D("event_direction", "event", "an event with the wrong direction", "gave an event the wrong direction"),
@@ -303,6 +313,14 @@ _TABLE = (
        "read a state from the wrong row"),
     _D("wrong_index", "state_row", "an entry read from the wrong index (a neighbouring row or column)",
        "read an entry from the wrong index"),
+    _D("omega_before_rotation", "time_shift", "an update in the wrong order (omega before the rotation)",
+       "updated omega before the rotation"),
+    _D("update_order", "time_shift", "B_omega_B updated before the step used its old value",
+       "updated B_omega_B before the step used it"),
+    _D("velocity_first", "time_shift", "the velocity updated before the position update used it",
+       "updated the velocity before the position"),
+    _D("orientation_before", "time_shift", "an orientation updated before it is used",
+       "updated an orientation before using it"),
     # ---------------------------------------------------------------- precision
     _D("float32", "precision", "values computed in single precision (float32)", "computed in single precision"),
     _D("rounded", "precision", "values rounded to a few decimals", "rounded the values"),
@@ -442,8 +460,6 @@ _TABLE = (
     _D("not_finite", "not_finite", "NaN or infinite values", "returned NaN or infinite values"),
     _D("not_orthonormal", "not_orthonormal", "a matrix that is not orthonormal",
        "returned a matrix that is not orthonormal"),
-    _D("reflection", "reflection", "a reflection instead of a rotation (det = -1)",
-       "built a reflection instead of a rotation (det = -1)"),
     _D("not_symmetric", "not_spd", "a matrix that is not symmetric", "returned a matrix that is not symmetric"),
     _D("not_positive_definite", "not_spd", "a matrix that is not positive definite",
        "returned a matrix that is not positive definite"),

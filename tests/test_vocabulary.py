@@ -30,7 +30,7 @@ GRADER = sorted((ROOT / "grader").rglob("*.py"))
 REQUIRED_FAMILIES = {
     "transpose", "sign", "order", "scale", "frame", "missing_term", "extra_term", "ignored_argument",
     "initial_state", "time_shift", "offset", "step_size", "event", "state_row", "inverse", "precision",
-    "shape", "not_finite", "not_orthonormal", "reflection", "typed_numbers", "identity", "stub",
+    "shape", "not_finite", "not_orthonormal", "typed_numbers", "identity", "stub",
 }
 
 
