@@ -28,6 +28,7 @@ from ._mujoco import (
     DIRECTION,
     EARTH,
     HDPE,
+    MOON,
     HEIGHT,
     LENGTH,
     MASS,
@@ -64,11 +65,22 @@ VARIANTS = {"geometry": "3(a), inertia from the geometry", "custom": "3(b), cust
             "driven": "3(c), joint 1 driven"}
 
 
-def _model(ctx, variant):
+def _model(ctx, variant, gravity=EARTH):
     rate = RATE if variant == "driven" else None
     what = f"the model of {VARIANTS[variant]}"
-    desc = model_of(student_once(ctx, p03.model, variant, HDPE, EARTH, rate), what)
+    desc = model_of(student_once(ctx, p03.model, variant, HDPE, gravity, rate), what)
     return desc, what
+
+
+def _gravity(ctx, variant):
+    """The model declares the gravity it is given: the runs are on the Earth, so the model is also built for the
+    Moon (a fixed 9.81 would pass every run)."""
+    for where, g in (("on the Moon", MOON), ("on the Earth", EARTH)):
+        desc, what = _model(ctx, variant, g)
+        assert_close(desc["gravity"], [0.0, -g, 0.0], f"the gravity of {what} built {where}", DIRECTION, mistakes=[
+            Mistake("earth_gravity", [0.0, -EARTH, 0.0], "Use the gravity you are given (the Moon's is 1.62 "
+                    "m/s^2), not a fixed 9.81: <option gravity=\"0 -g 0\"/> with g the argument."),
+        ])
 
 
 def _run(ctx, variant):
@@ -150,10 +162,11 @@ def _structure(ctx, variant):
     return desc, what, bodies
 
 
-@check(1, title="3(a): two links, joint 1 at the origin and joint 2 at the end of link 1, both about +z",
-       stage=STAGE_DEFINED, group="model_a")
+@check(1, title="3(a): two links, joint 1 at the origin and joint 2 at the end of link 1, both about +z, and the "
+       "gravity given", stage=STAGE_DEFINED, group="model_a")
 def check_model_a(ctx):
     _structure(ctx, "geometry")
+    _gravity(ctx, "geometry")
 
 
 @check(1, title="3(a): mass, centre of mass and inertia about z from the geometry equal the analytic values",
@@ -171,10 +184,12 @@ def check_geometry_inertia(ctx):
         _assert_inertial(got, expected, f"of link {k + 1} (about z, at the start) in {what}", shifted)
 
 
-@check(2, title="3(b): each body declares the custom mass, centre of mass, moments and products of inertia",
+@check(2, title="3(b): each body declares the custom mass, centre of mass, moments and products of inertia, and "
+       "the model the gravity given",
        stage=STAGE_STRUCTURE, group="model_b")
 def check_custom_inertia(ctx):
     desc, what, bodies = _structure(ctx, "custom")
+    _gravity(ctx, "custom")
     custom = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)
     mistakes = _inertia_mistakes(custom, HDPE)
     for k, body in enumerate(bodies):
@@ -231,9 +246,11 @@ def check_traces_b(ctx):
 # ------------------------------------------------------------------------------------ 3(c): joint 1 driven
 
 
-@check(1, title="3(c): two links as in 3(a), and an actuator drives joint 1", stage=STAGE_DEFINED, group="driven")
+@check(1, title="3(c): two links as in 3(a) with the gravity given, and an actuator drives joint 1",
+       stage=STAGE_DEFINED, group="driven")
 def check_driven_model(ctx):
     desc, what, _ = _structure(ctx, "driven")
+    _gravity(ctx, "driven")
     if not desc["actuators"]:
         fail(f"{what} has no actuator: nothing drives joint 1.",
              'A stiff servo drives a joint kinematically: <intvelocity joint="joint1" kp="1000"/>, with its control '
