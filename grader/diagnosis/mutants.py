@@ -17,9 +17,9 @@ the mutants kept are of one family of the vocabulary, or of two; the hint says w
 the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
-mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds (a
-mutant that is still running then is interrupted, and nothing is named), warnings are silenced and a mutant that
-raises is dropped.  The student's code runs only for the third input, within the scene's budget of the student's
+mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds of
+the thread's CPU time (a mutant that is still running then is interrupted, and nothing is named), warnings are
+silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the scene's budget of the student's
 calls.  The student kit holds no reference code: the tier runs with the live reference only (``left_to_live``: the
 kit then says that the graded submission may say more).
 """
@@ -33,6 +33,7 @@ import ctypes
 import re
 import sys
 import threading
+import time
 import warnings
 from dataclasses import dataclass
 from functools import lru_cache
@@ -52,7 +53,8 @@ __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAME
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
 MAX_MUTANTS = 600
-#: the wall time one explanation's mutants may take [s]; a mutant still running then is interrupted
+#: the CPU time one explanation's mutants may take [s] (the thread's own, so that a loaded machine names what an
+#: idle one names); a mutant still running then is interrupted
 TIME_BUDGET = 2.0
 #: a solution region of problem N +- this many counts as the check's problem's own (the screw axis of problem 13
 #: is the region of problem 14)
@@ -584,18 +586,51 @@ def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) ->
 
 #: the loop in which a deadline's interruption that fired too late to interrupt anything is met [iterations]
 _ABSORB = 100_000
+#: how often the deadline looks at the clock [s]
+_POLL = 0.02
+#: a thread that waits rather than works is interrupted after this many times the budget of wall time
+WAIT_FACTOR = 5.0
+
+
+def _cpu_clock(thread: int):
+    """The CPU-time clock of ``thread`` (an ident of ``threading``), or None where it cannot be read."""
+    try:
+        return time.pthread_getcpuclockid(thread)
+    except (AttributeError, OSError):
+        return None
+
 
 
 class _Deadline:
-    """Interrupts the running thread with ``_Timeout`` once ``seconds`` have passed, unless left before."""
+    """Interrupts the running thread with ``_Timeout`` once it has spent ``seconds`` of CPU time, unless left
+    before: what the tier may try does not depend on how loaded the machine is (a busy machine slows the wall clock,
+    not the work).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``: not on macOS or
+    Windows) it counts wall time; and a thread that waits without working is interrupted after ``WAIT_FACTOR``
+    times ``seconds`` of wall time in any case."""
 
     def __init__(self, seconds: float):
         self.thread = threading.get_ident()
+        self.seconds = seconds
         self.lock = threading.Lock()
         self.armed = True
         self.fired = False
-        self.timer = threading.Timer(seconds, self._fire)
-        self.timer.daemon = True
+        self.done = threading.Event()
+        self.clock = _cpu_clock(self.thread)
+        self.timer = threading.Thread(target=self._watch, daemon=True)
+
+    def _spent(self, start_cpu: float, start_wall: float) -> bool:
+        wall = time.monotonic() - start_wall
+        if self.clock is None:
+            return wall >= self.seconds
+        return time.clock_gettime(self.clock) - start_cpu >= self.seconds or wall >= WAIT_FACTOR * self.seconds
+
+    def _watch(self) -> None:
+        start_cpu = time.clock_gettime(self.clock) if self.clock is not None else 0.0
+        start_wall = time.monotonic()
+        while not self.done.wait(min(_POLL, self.seconds)):
+            if self._spent(start_cpu, start_wall):
+                self._fire()
+                return
 
     def _fire(self) -> None:
         with self.lock:
@@ -608,7 +643,7 @@ class _Deadline:
         return self
 
     def __exit__(self, kind, value, traceback):
-        self.timer.cancel()
+        self.done.set()
         with self.lock:
             self.armed = False
             pending = self.fired and not (kind is not None and issubclass(kind, _Timeout))

@@ -488,3 +488,17 @@ def test_the_trace_says_what_each_tier_found(made_up, tmp_path, monkeypatch):
     assert record["check"] == "p98.difference" and notes["mutated"]["count"] > 0
     assert {DIAGNOSES[name].family for name in notes["mutants"]["kept"]} == {"order", "sign"}
     assert set(record["finding"]["names"]) == {h.name for h in found}
+
+
+@pytest.mark.skipif(not hasattr(time, "pthread_getcpuclockid"),
+                    reason="no CPU clock of a thread here: the deadline counts wall time")
+def test_the_deadline_counts_work_not_waiting():
+    """The tier's budget is the explaining thread's CPU time, so that a loaded machine (where the thread waits for a
+    core) tries what an idle one tries: waiting past the budget is not interrupted, working past it is."""
+    with mutants._Deadline(0.2) as deadline:
+        time.sleep(0.5)
+    assert not deadline.fired
+    with pytest.raises(mutants._Timeout):
+        with mutants._Deadline(0.2):
+            while True:
+                pass
