@@ -19,9 +19,9 @@ the student's functions, never the reference's code.
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds of
 the thread's CPU time (a mutant that is still running then is interrupted, and nothing is named), warnings are
-silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the scene's budget of the student's
-calls.  The student kit holds no reference code: the tier runs with the live reference only (``left_to_live``: the
-kit then says that the graded submission may say more).
+silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the
+scene's budget of the student's calls.  The student kit holds no reference code: the tier runs with the live
+reference only (``left_to_live``: the kit then says that the graded submission may say more).
 """
 
 from __future__ import annotations
