@@ -17,6 +17,7 @@ from .evidence import (
     array_of,
     at,
     call_key,
+    counterpart,
     Declaration,
     declaration,
     distinct,
@@ -123,6 +124,8 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
         evidence.source = locate(log, evidence.raw_expected, "reference", evidence.tol)
     if evidence.student is None:
         evidence.student = locate(log, evidence.raw_got, "student")
+    if evidence.student is None:  # a copy of the student's result, compared up to the tolerance
+        evidence.student = counterpart(log, evidence.got, evidence.source, evidence.tol)
     if evidence.source is None and evidence.student is not None:
         evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
         if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one

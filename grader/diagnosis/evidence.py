@@ -25,6 +25,7 @@ __all__ = [
     "walk",
     "equal",
     "locate",
+    "counterpart",
     "at",
     "array_of",
     "within",
@@ -197,6 +198,38 @@ def locate(log, raw, side: str, tol: Tol | None = None) -> Source | None:
     if len({(s.probe, repr(s.args)[:2000], s.path) for s in near}) == 1:
         return near[0]
     return None
+
+
+def counterpart(log, raw, source: Source | None, tol: Tol) -> Source | None:
+    """The student's call of ``source``'s probe on its very arguments, when its result at ``source``'s path is
+    ``raw`` up to the comparison's tolerance (the check compared a copy of it: reshaped, or with entries within the
+    tolerance set to the expected ones), or None.  Only that one call is asked: a value within the tolerance of some
+    other call's result is no trace."""
+    target = array_of(raw)
+    if source is None or target is None or target.size == 0:
+        return None
+    key = _args_key(source.args)
+    if key is None:
+        return None
+    for side, probe, args, value in reversed(log):
+        if side != "student" or probe != source.probe or _args_key(args) != key:
+            continue
+        candidate = array_of(at(value, source.path))
+        if candidate is None or candidate.size != target.size:
+            return None
+        if candidate.shape != target.shape and np.squeeze(candidate).shape != np.squeeze(target).shape:
+            return None
+        if within(candidate.reshape(target.shape), target, tol):
+            return Source(probe, tuple(args), source.path, value)
+        return None
+    return None
+
+
+def _args_key(args) -> str | None:
+    try:
+        return call_key("", tuple(args))
+    except Exception:  # noqa: BLE001 - arguments that cannot be written as plain data are no key
+        return None
 
 
 def at(value, path):
