@@ -18,6 +18,8 @@ from .evidence import (
     at,
     call_key,
     counterpart,
+    evaluated,
+    sibling,
     Declaration,
     declaration,
     distinct,
@@ -126,6 +128,8 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
         evidence.student = locate(log, evidence.raw_got, "student")
     if evidence.student is None:  # a copy of the student's result, compared up to the tolerance
         evidence.student = counterpart(log, evidence.got, evidence.source, evidence.tol)
+    if evidence.student is None:  # a value of the student's call at one of several points
+        evidence.student = evaluated(log, evidence.got, evidence.tol)
     if evidence.source is None and evidence.student is not None:
         evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
         if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one
@@ -249,6 +253,9 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     for evidence in evidences:
         _sources(scene, evidence)
     first = evidences[0]
+    if len(evidences) == 1:  # the same comparison at another point the check asked, where there is one
+        other = sibling(getattr(scene.ctx, "calls", ()), first)
+        evidences = evidences if other is None else [first, other]
     trace.note("evidence", inputs=len(evidences), source=_traced_source(first.source),
                student=_traced_source(first.student), call=first.call is not None, run=is_run(first),
                shape=list(first.expected.shape) if first.expected is not None else None)
