@@ -19,6 +19,7 @@ from .evidence import (
     call_key,
     counterpart,
     evaluated,
+    at_point,
     sibling,
     Declaration,
     declaration,
@@ -133,7 +134,7 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
     if evidence.source is None and evidence.student is not None:
         evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
         if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one
-            evidence.expected = array_of(at(evidence.source.root, evidence.source.path))
+            evidence.expected = array_of(at_point(evidence.source.root, evidence.source.path))
 
 
 def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
@@ -142,10 +143,10 @@ def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
     the source of the expected value, or None."""
     decl = declaration(student.probe)
     target = array_of(expected)
-    if decl is None or decl.motion or target is None:
+    if decl is None or target is None:
         return None
     root = scene.reference(student.probe, student.args)
-    value = array_of(at(root, student.path))
+    value = array_of(at_point(root, student.path))
     if value is None or value.shape != target.shape or not within(value, target, tol):
         return None
     return Source(student.probe, tuple(student.args), student.path, root)

@@ -27,6 +27,7 @@ __all__ = [
     "locate",
     "counterpart",
     "evaluated",
+    "at_point",
     "sibling",
     "at",
     "array_of",
@@ -231,7 +232,7 @@ def counterpart(log, raw, source: Source | None, tol: Tol) -> Source | None:
 MAX_POINTS = 64
 
 
-def _entry(value, path):
+def at_point(value, path):
     """``at(value, path)``, where an integer key also indexes the first axis of an array (a call's result that holds
     one value per point as one array)."""
     for key in path:
@@ -343,7 +344,7 @@ def sibling(log, evidence: Evidence) -> Evidence | None:
                 continue
             expected = array_of(at(value, source.path))
             path = (*student.path[:position], index, *student.path[position + 1:])
-            got = array_of(_entry(student.root, path))
+            got = array_of(at_point(student.root, path))
             if expected is None or got is None or got.size != expected.size:
                 break
             got = got.reshape(expected.shape)
