@@ -468,7 +468,7 @@ def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
         return
     source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None)
     if source is None and got is not None and isinstance(tol, Tol):
-        student = locate(declared, got, "student")
+        student = locate(declared, got, "student") or evaluated(declared, got, tol)
         if student is not None:
             try:
                 source = traced(Scene(ctx), student, expected, tol)
