@@ -188,9 +188,12 @@ def _equal_args(a, b) -> bool:
 
 def _ignored(scene: Scene, evidence: Evidence) -> list:
     """An argument the student's function ignores: their value stays the same when the argument changes (every
-    declared argument changes the reference's value)."""
+    declared argument changes the reference's value).  A value of zero tells nothing: a product that vanishes on
+    the input shown stays zero when one of its factors changes."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or not _equal_args(source.args, student.args):
+        return []
+    if not distinct(evidence.got, np.zeros_like(evidence.got), evidence.tol):
         return []
     decl = declaration(source.probe)
     if decl is None or decl.motion:

@@ -97,6 +97,9 @@ class _Oracle:
     def reference(self, probe, args, persist=False, check=None):
         return self.functions[probe](*args)
 
+    def draw(self, site, make, seed, check=None):
+        return make(np.random.default_rng(seed))
+
 
 class _Child:
     def __init__(self, functions):
@@ -184,3 +187,28 @@ def test_a_copy_of_the_students_result_is_theirs_only_within_the_tolerance():
     other = Source("stub.walker", (0.1, 1.0472), ("x",), None)
     assert counterpart(log, copy, other, sheet) is None
     assert counterpart(log, copy.reshape(3, 1), source, sheet) is not None
+
+
+def test_a_value_of_zero_that_stays_zero_is_no_ignored_argument(monkeypatch):
+    """The student's ``a * b`` for the reference's ``a + b`` is zero at a = 0 and stays zero when b changes: that
+    tells nothing of b (a product vanishes there); where their value is not zero, an argument it does not follow
+    is told ignored."""
+    monkeypatch.setitem(engine.DECLARATIONS, "stub.sum",
+                        Declaration(args=("scalar", "scalar"), names=("a", "b"), draw=False))
+
+    def explain_at(args, student):
+        expected, got = np.array([sum(args)]), np.array([student(*args)])
+
+        class Ctx:
+            check_id = "p99.sum"
+            oracle = _Oracle({"stub.sum": lambda a, b: np.array([a + b])})
+            child = _Child({"stub.sum": lambda a, b: np.array([student(a, b)])})
+            seed = 1
+            calls = [("reference", "stub.sum", args, expected), ("student", "stub.sum", args, got)]
+
+        return explain(Ctx(), [Evidence(got, expected, TIGHT, "a + b", got, expected)])
+
+    finding = explain_at((0.0, 1.0), lambda a, b: a * b)
+    assert finding is None or "ignored_argument" not in finding.names, finding
+    finding = explain_at((0.7, 2.9), lambda a, b: 2 * a)
+    assert finding is not None and finding.names == ("ignored_argument",), finding
