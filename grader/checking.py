@@ -316,7 +316,7 @@ def _compared(expected, tol, got=None) -> None:
 
 def close(got, expected, tol: Tol) -> bool:
     """True when ``got`` has the shape of ``expected`` and matches it entrywise within ``tol``."""
-    _compared(expected, tol)
+    _compared(expected, tol, got)
     try:
         got = np.asarray(got, dtype=float)
         expected = np.asarray(expected, dtype=float)

@@ -17,6 +17,10 @@ from .evidence import (
     array_of,
     at,
     call_key,
+    counterpart,
+    evaluated,
+    at_point,
+    sibling,
     Declaration,
     declaration,
     distinct,
@@ -123,10 +127,14 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
         evidence.source = locate(log, evidence.raw_expected, "reference", evidence.tol)
     if evidence.student is None:
         evidence.student = locate(log, evidence.raw_got, "student")
+    if evidence.student is None:  # a copy of the student's result, compared up to the tolerance
+        evidence.student = counterpart(log, evidence.got, evidence.source, evidence.tol)
+    if evidence.student is None:  # a value of the student's call at one of several points
+        evidence.student = evaluated(log, evidence.got, evidence.tol)
     if evidence.source is None and evidence.student is not None:
         evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
         if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one
-            evidence.expected = array_of(at(evidence.source.root, evidence.source.path))
+            evidence.expected = array_of(at_point(evidence.source.root, evidence.source.path))
 
 
 def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
@@ -135,10 +143,10 @@ def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
     the source of the expected value, or None."""
     decl = declaration(student.probe)
     target = array_of(expected)
-    if decl is None or decl.motion or target is None:
+    if decl is None or target is None:
         return None
     root = scene.reference(student.probe, student.args)
-    value = array_of(at(root, student.path))
+    value = array_of(at_point(root, student.path))
     if value is None or value.shape != target.shape or not within(value, target, tol):
         return None
     return Source(student.probe, tuple(student.args), student.path, root)
@@ -180,9 +188,12 @@ def _equal_args(a, b) -> bool:
 
 def _ignored(scene: Scene, evidence: Evidence) -> list:
     """An argument the student's function ignores: their value stays the same when the argument changes (every
-    declared argument changes the reference's value)."""
+    declared argument changes the reference's value).  A value of zero tells nothing: a product that vanishes on
+    the input shown stays zero when one of its factors changes."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or not _equal_args(source.args, student.args):
+        return []
+    if not distinct(evidence.got, np.zeros_like(evidence.got), evidence.tol):
         return []
     decl = declaration(source.probe)
     if decl is None or decl.motion:
@@ -246,6 +257,9 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     for evidence in evidences:
         _sources(scene, evidence)
     first = evidences[0]
+    if len(evidences) == 1:  # the same comparison at another point the check asked, where there is one
+        other = sibling(getattr(scene.ctx, "calls", ()), first)
+        evidences = evidences if other is None else [first, other]
     trace.note("evidence", inputs=len(evidences), source=_traced_source(first.source),
                student=_traced_source(first.student), call=first.call is not None, run=is_run(first),
                shape=list(first.expected.shape) if first.expected is not None else None)
@@ -457,7 +471,7 @@ def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
         return
     source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None)
     if source is None and got is not None and isinstance(tol, Tol):
-        student = locate(declared, got, "student")
+        student = locate(declared, got, "student") or evaluated(declared, got, tol)
         if student is not None:
             try:
                 source = traced(Scene(ctx), student, expected, tol)

@@ -25,6 +25,10 @@ __all__ = [
     "walk",
     "equal",
     "locate",
+    "counterpart",
+    "evaluated",
+    "at_point",
+    "sibling",
     "at",
     "array_of",
     "within",
@@ -197,6 +201,166 @@ def locate(log, raw, side: str, tol: Tol | None = None) -> Source | None:
     if len({(s.probe, repr(s.args)[:2000], s.path) for s in near}) == 1:
         return near[0]
     return None
+
+
+def counterpart(log, raw, source: Source | None, tol: Tol) -> Source | None:
+    """The student's call of ``source``'s probe on its very arguments, when its result at ``source``'s path is
+    ``raw`` up to the comparison's tolerance (the check compared a copy of it: reshaped, or with entries within the
+    tolerance set to the expected ones), or None.  Only that one call is asked: a value within the tolerance of some
+    other call's result is no trace."""
+    target = array_of(raw)
+    if source is None or target is None or target.size == 0:
+        return None
+    key = _args_key(source.args)
+    if key is None:
+        return None
+    for side, probe, args, value in reversed(log):
+        if side != "student" or probe != source.probe or _args_key(args) != key:
+            continue
+        candidate = array_of(at(value, source.path))
+        if candidate is None or candidate.size != target.size:
+            return None
+        if candidate.shape != target.shape and np.squeeze(candidate).shape != np.squeeze(target).shape:
+            return None
+        if within(candidate.reshape(target.shape), target, tol):
+            return Source(probe, tuple(args), source.path, value)
+        return None
+    return None
+
+
+#: the most points of one call evaluated at several points (a symbolic answer evaluated at each) the engine reads
+MAX_POINTS = 64
+
+
+def at_point(value, path):
+    """``at(value, path)``, where an integer key also indexes the first axis of an array (a call's result that holds
+    one value per point as one array)."""
+    for key in path:
+        if isinstance(value, np.ndarray) and isinstance(key, int) and value.ndim and -len(value) <= key < len(value):
+            value = value[key]
+        else:
+            value = at(value, (key,))
+        if value is None:
+            return None
+    return value
+
+
+def _points_of(value, path=()):
+    """``(path, item)`` of a call's result and of each row of its arrays of two dimensions or more (one value per
+    point)."""
+    for inner, item in walk(value, path):
+        yield inner, item
+        if isinstance(item, np.ndarray) and item.ndim >= 2 and len(item) <= MAX_POINTS:
+            for index in range(len(item)):
+                yield (*inner, index), item[index]
+
+
+def _alike(item, target, tol: Tol) -> bool:
+    """``item`` holds the numbers of ``target`` within ``tol``, up to axes of length one."""
+    candidate = array_of(item)
+    return (candidate is not None and candidate.size == target.size and candidate.size > 0
+            and np.squeeze(candidate).shape == np.squeeze(target).shape
+            and within(candidate.reshape(target.shape), target, tol))
+
+
+def evaluated(log, got, tol: Tol) -> Source | None:
+    """The student's call whose result holds ``got`` within the comparison's tolerance ``tol``, up to axes of length
+    one, at one path (a row of an array counts: a symbolic answer evaluated at several points), or None when no one
+    path of one call has it."""
+    target = array_of(got)
+    if target is None or target.size == 0:
+        return None
+    found = []
+    for side, probe, args, value in reversed(log):
+        if side != "student":
+            continue
+        for path, item in _points_of(value):
+            if not isinstance(item, (dict, str)) and _alike(item, target, tol):
+                found.append(Source(probe, tuple(args), path, value))
+    if len({(s.probe, repr(s.args)[:2000], s.path) for s in found}) == 1:
+        return found[0]
+    return None
+
+
+def _numbers(args) -> np.ndarray | None:
+    """The numbers of a call's arguments, flat, or None when one of them is neither a number nor a string."""
+    numbers = []
+    for arg in args:
+        if isinstance(arg, str):
+            continue
+        array = array_of(arg)
+        if array is None:
+            return None
+        numbers += list(array.ravel())
+    return np.array(numbers, dtype=float)
+
+
+def _texts(args) -> list:
+    return [arg for arg in args if isinstance(arg, str)]
+
+
+def _batch(student: Source, source: Source):
+    """``(position, points)``: where ``student``'s path indexes the points of its call (an integer key ``i``) and
+    the argument whose row ``i`` holds the numbers of ``source``'s arguments (the point the reference was asked
+    at), or None."""
+    numbers = _numbers(source.args)
+    if numbers is None or numbers.size == 0 or _texts(source.args) != _texts(student.args):
+        return None
+    for position, key in enumerate(student.path):
+        if not isinstance(key, int) or isinstance(key, bool):
+            continue
+        for arg in student.args:
+            points = None if isinstance(arg, str) else array_of(arg)
+            if points is None or points.ndim != 2 or points.shape[1] != numbers.size or not 0 <= key < len(points):
+                continue
+            if np.array_equal(points[key], numbers):
+                return position, points
+    return None
+
+
+def sibling(log, evidence: Evidence) -> Evidence | None:
+    """Where the student's value is their call's value at one of several points (a symbolic answer evaluated at
+    each) and the expected value the reference's call at that point: the same comparison at another point the check
+    asked the reference at, where the student's value fails too (a second input, found in the log, never guessed),
+    or None."""
+    source, student = evidence.source, evidence.student
+    if source is None or student is None or (source.probe == student.probe and _args_key(source.args) is not None
+                                             and _args_key(source.args) == _args_key(student.args)):
+        return None
+    batch = _batch(student, source)
+    if batch is None:
+        return None
+    position, points = batch
+    here = _args_key(source.args)
+    for index, point in enumerate(points):
+        if index == student.path[position]:
+            continue
+        for side, probe, args, value in reversed(log):
+            if side != "reference" or probe != source.probe or _args_key(args) == here:
+                continue
+            numbers = _numbers(args)
+            if numbers is None or numbers.shape != point.shape or not np.array_equal(numbers, point) \
+                    or _texts(args) != _texts(source.args):
+                continue
+            expected = array_of(at(value, source.path))
+            path = (*student.path[:position], index, *student.path[position + 1:])
+            got = array_of(at_point(student.root, path))
+            if expected is None or got is None or got.size != expected.size:
+                break
+            got = got.reshape(expected.shape)
+            if within(got, expected, evidence.tol):
+                break  # the student's value holds at this point: another is looked for
+            return Evidence(got, expected, evidence.tol, evidence.name, None, None,
+                            Source(probe, tuple(args), source.path, value),
+                            Source(student.probe, tuple(student.args), path, student.root))
+    return None
+
+
+def _args_key(args) -> str | None:
+    try:
+        return call_key("", tuple(args))
+    except Exception:  # noqa: BLE001 - arguments that cannot be written as plain data are no key
+        return None
 
 
 def at(value, path):
