@@ -52,13 +52,22 @@ def _optional(value):
     args=("scalar", "scalar", "scalar"),
     draw=False,
     motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
-               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2)},
+               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2),
+               "parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g"), "sheet": "problem_42.sheet_ball"},
+               "variants": {"arg": 3, "starts": ((0, 1),), "tolerances": True},
+               "at_events": {"height_apex": ("t_apex", "y", 0), "v_land": ("t_land", "y", 1)}},
 )
-def throw(pkg, v0, drag, g=None):
+def throw(pkg, v0, drag, g=None, variant=None):
     """``throw(v0, drag)`` (and ``g`` where given): the apex and the landing, and the run ``t``, ``y`` (rows
-    ``(height, velocity)``)."""
+    ``(height, velocity)``).  ``variant`` (the diagnosis engine's, on the reference): the flight integrated by
+    ``solve_ivp`` with the package's own ``ball_ode`` and ``make_events``, from the start ``(0, v0)`` with its
+    entries ``i`` and ``j`` exchanged (``["start", i, j]``) or by the default method at the tolerances
+    ``["tolerance", rtol, atol]``."""
     gravity = {} if g is None else {"g": float(g)}
-    run = module(pkg, "problem_42").throw(float(v0), float(drag), **gravity)
+    if variant is None:
+        run = module(pkg, "problem_42").throw(float(v0), float(drag), **gravity)
+    else:
+        run = _varied(module(pkg, "problem_42"), float(v0), float(drag), gravity.get("g"), variant)
     if not isinstance(run, dict):
         raise ValueError(f"throw must return a dict, got {str(run)[:200]}")
     t = np.asarray(run.get("t"), dtype=float).reshape(-1)
@@ -67,6 +76,37 @@ def throw(pkg, v0, drag, g=None):
         raise ValueError(f"throw: 'y' must have one row (height, velocity) per time ({t.size} x 2), got shape "
                          f"{y.shape}")
     return {key: _optional(run.get(key)) for key in ("t_apex", "height_apex", "t_land", "v_land")} | {"t": t, "y": y}
+
+
+def _varied(p42, v0, drag, g, variant):
+    """The flight of ``throw`` with one thing varied (``throw``'s ``variant``), as ``throw`` returns it."""
+    from scipy.integrate import solve_ivp
+
+    kind, *rest = variant
+    start, rtol, atol = [0.0, v0], 1e-10, 1e-12
+    if kind == "start":
+        i, j = (int(k) for k in rest)
+        start[i], start[j] = start[j], start[i]
+    elif kind == "tolerance":
+        rtol, atol = (float(x) for x in rest)
+    else:
+        raise ValueError(f"throw: no run variant {kind!r}")
+    gravity = p42.GRAVITY if g is None else g
+    result = solve_ivp(p42.ball_ode, (0.0, p42.T_MAX), start, args=(drag, gravity), events=p42.make_events(),
+                       rtol=rtol, atol=atol)
+    (t_apex, t_land), (y_apex, y_land) = result.t_events, result.y_events
+    return {"t_apex": float(t_apex[0]) if len(t_apex) else None,
+            "height_apex": float(y_apex[0][0]) if len(t_apex) else None,
+            "t_land": float(t_land[0]) if len(t_land) else None,
+            "v_land": float(y_land[0][1]) if len(t_land) else None, "t": result.t, "y": result.y.T}
+
+
+@probe(reference_only=True)
+def sheet_ball(pkg):
+    """The sheet's ball ``(v0, drag, g)``: the values ``throw`` runs with where it is not given them (the diagnosis
+    engine calls it on the reference)."""
+    p42 = module(pkg, "problem_42")
+    return [float(p42.V0), float(p42.DRAG), float(p42.GRAVITY)]
 
 
 @probe(reference_only=True)

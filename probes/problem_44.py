@@ -37,16 +37,23 @@ def event(pkg, states, s, d):
     says="simulate(q0, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
                "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,),
-               "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"}},
+               "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"},
+               "variants": {"arg": 5, "tolerances": True},
+               "at_events": {"q_event": ("t_event", "q"), "qd_event": ("t_event", "qd")}},
 )
-def simulate(pkg, q0, t_end, s, bar=None, d=None):
+def simulate(pkg, q0, t_end, s, bar=None, d=None, variant=None):
     """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` and the half-width ``d`` where given):
     the run, the event, and ``c`` of the package's own ``problem_43.constraint`` at every output time (the first
-    support, at ``d``, 0 unless given)."""
+    support, at ``d``, 0 unless given).  ``variant`` (the diagnosis engine's, on the reference): ``["tolerance",
+    rtol, atol]``, the run integrated by ``solve_ivp``'s default method at those tolerances with the package's own
+    ``bar_ode`` and event, where ``simulate`` integrates it."""
     other = {} if bar is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar)))
     if d is not None:
         other["d"] = float(d)
-    run = module(pkg, "problem_44").simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
+    if variant is None:
+        run = module(pkg, "problem_44").simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
+    else:
+        run = _loose(module(pkg, "problem_44"), q0, t_end, s, other, variant)
     t, q, qd = trace(run, 3, "problem_44.simulate")
     constraint = module(pkg, "problem_43").constraint
     width = 0.0 if d is None else float(d)
@@ -57,6 +64,27 @@ def simulate(pkg, q0, t_end, s, bar=None, d=None):
         for key in ("q_event", "qd_event"):
             out[key] = np.asarray(run[key], dtype=float).reshape(3)
     return out
+
+
+def _loose(p44, q0, t_end, s, other, variant):
+    """The bar's run of ``simulate`` by ``solve_ivp`` (its default method) at the tolerances of ``variant``
+    (``["tolerance", rtol, atol]``), output every ``T_STEP`` as ``simulate`` outputs."""
+    from scipy.integrate import solve_ivp
+
+    kind, rtol, atol = variant
+    if kind != "tolerance":
+        raise ValueError(f"simulate: no run variant {kind!r}")
+    bar = {key: value for key, value in other.items() if key != "d"}
+    event = p44.make_contact_event(float(s)) if "d" not in other else p44.make_contact_event(float(s), other["d"])
+    t_eval = np.arange(0.0, float(t_end) + p44.T_STEP / 2, p44.T_STEP)
+    y0 = np.append(np.asarray(q0, dtype=float), [0.0, 0.0, 0.0])
+    result = solve_ivp(lambda t, y: p44.bar_ode(t, y, **bar), (0.0, float(t_end)), y0, t_eval=t_eval,
+                       events=[event], rtol=float(rtol), atol=float(atol))
+    run = {"t": result.t, "q": result.y[:3].T, "qd": result.y[3:].T, "t_event": None}
+    if len(result.t_events[0]):
+        y_event = result.y_events[0][0]
+        run.update(t_event=float(result.t_events[0][0]), q_event=y_event[:3], qd_event=y_event[3:])
+    return run
 
 
 @probe(reference_only=True)

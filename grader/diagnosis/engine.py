@@ -276,7 +276,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
             return model.finding
         integration = model.state == "agrees"
         steps = step_slips(scene, run, decl) if integration else []
-        found += parameter_slips(scene, run, decl)
+        found += parameter_slips(scene, run, decl, integration)
         found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))
                           and (integration or h.name not in INTEGRATION)]
     if run is not None:
