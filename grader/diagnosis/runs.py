@@ -57,6 +57,7 @@ __all__ = [
     "parameter_slips",
     "event_state_slips",
     "reread",
+    "reread_runs",
     "exchanged_events",
     "EVENT_AGREES",
 ]
@@ -192,6 +193,23 @@ def reread(G: dict, R: dict, keys, tol: Tol) -> Hypothesis | None:
         return None
     words = ", ".join(f"{k}[{i}] is the reference's {k2}[{j}]" for (k, i), (k2, j) in mapping.items())
     return Hypothesis("motion:row", "state_row", 2, f"your run has a state from the wrong row: {words}")
+
+
+def reread_runs(got, expected, keys, tol: Tol) -> Hypothesis | None:
+    """``reread`` of two runs' results (dicts with ``"t"`` and the ``keys``) at the same output times; None where
+    their times differ or a key is missing."""
+    t = array_of(expected.get("t")) if isinstance(expected, dict) else None
+    mine_t = array_of(got.get("t")) if isinstance(got, dict) else None
+    if t is None or mine_t is None or t.ndim != 1 or mine_t.shape != t.shape or not np.allclose(mine_t, t,
+                                                                                                 atol=1e-9):
+        return None
+    G, R = {}, {}
+    for key in keys:
+        mine, ours = array_of(got.get(key)), array_of(expected.get(key))
+        if mine is None or ours is None or mine.size != ours.size or ours.size % t.size:
+            return None
+        G[key], R[key] = mine.reshape(t.size, -1), ours.reshape(t.size, -1)
+    return reread(G, R, keys, tol)
 
 
 def exchanged_events(got: dict, expected: dict, keys, tol: Tol):
