@@ -439,6 +439,7 @@ def _assert_starts_on_the_table(ctx, controller):
     table = _table(ctx)
     later = _later_table(table)
     call = f"simulate({controller!r}, a table starting at q_des = {np.round(later['q'][0], 4).tolist()}, {START_RUN:g})"
+    ours = ctx.reference(p37.simulate, controller, later, START_RUN, persist=True)  # (the kit's key holds it)
     got = ctx.student(p37.simulate, controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
     n = int(np.sum(np.asarray(later["t"]) <= START_RUN))
     q, qd = (run_array(got, key, (n, 3), call) for key in ("q", "qd"))
@@ -449,8 +450,7 @@ def _assert_starts_on_the_table(ctx, controller):
         assert_close(mine, start, f"the state (q, qd) at t = 0 of {call}", EXACT, context="(the table's first row)")
     except CheckFailure as exc:
         typed = close(mine, np.concatenate([table["q"][0], table["qd"][0]]), PRINTED)
-        reread = None if typed else _reread(got, ctx.reference(p37.simulate, controller, later, START_RUN,
-                                                               persist=True), REREAD)
+        reread = None if typed else _reread(got, ours, REREAD)
         if reread is not None:
             raise CheckFailure(exc.message, *reread) from None
         raise CheckFailure(exc.message, TYPED_START_HINT if typed else INITIAL_HINT,

@@ -234,7 +234,7 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     values of a run's result taken from its state at an event): where the student's event is found when the
     reference's is, their value of the compared key is, within the comparison's tolerance, another entry of the
     reference's state at that event (another such key, or the reference's run there) that differs clearly from
-    the right one and from zero."""
+    the right one and is not zero within the tolerance (a zero, a velocity at an apex say, tells no row)."""
     motion, tol = decl.motion, evidence.tol
     at_events = motion.get("at_events") or {}
     source, student = evidence.source, evidence.student
@@ -268,7 +268,7 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     wrong = [label for label, value in candidates.items()
              if np.shape(value) == ours.shape and within(mine, np.asarray(value, dtype=float), tol)
              and distinct(np.asarray(value, dtype=float), ours, tol)
-             and distinct(np.asarray(value, dtype=float), 0.0 * ours, tol)]
+             and not within(np.asarray(value, dtype=float), 0.0 * ours, tol)]
     if not wrong:
         return []
     return [Hypothesis(f"event:row:{key}", "state_row", 2,

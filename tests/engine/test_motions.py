@@ -80,6 +80,67 @@ REVERSED_PIN = Planted(
     new="    return np.array(q_minus, dtype=float), -qd_minus, float(Lam[0])",
     check="p47.plastic_impact", diagnosis="", message="")
 
+#: solve_ivp at tolerances far looser than its defaults: the reference re-run so is the student's run (its error
+#: grows with the tolerance), and the right-hand side agrees: a step-size cause
+LOOSE_BAR = Planted(
+    name="motions-p44-loose-tolerances", problem=44, file="problem_44.py",
+    old="events=[make_contact_event(s, d)], rtol=1e-10, atol=1e-12)",
+    new="events=[make_contact_event(s, d)], rtol=1e-1, atol=1e-1)",
+    check="p44.event", diagnosis="step_size", message="rtol = 0.1, atol = 0.1")
+#: the start speed and the gravity exchanged (g is not given: the sheet's)
+V0_AND_G_EXCHANGED = Planted(
+    name="motions-p42-v0-and-g-exchanged", problem=42, file="problem_42.py",
+    old="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, v0], args=(drag, g),",
+    new="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, g], args=(drag, v0),",
+    check="p42.flight", diagnosis="argument_order", message="v0 and g are exchanged")
+#: the module's V0 thrown whatever v0 is given: the sheet's ball is right, a random one is the sheet's speed
+V0_IGNORED = Planted(
+    name="motions-p42-v0-ignored", problem=42, file="problem_42.py",
+    old="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, v0], args=(drag, g),",
+    new="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, V0], args=(drag, g),",
+    check="p42.flight_random", diagnosis="ignored_argument", message="the argument is ignored")
+#: the rates at the event read from the position rows of the event's state
+EVENT_RATES_FROM_POSITIONS = Planted(
+    name="motions-p44-event-rates-from-positions", problem=44, file="problem_44.py",
+    old="q_event=y_event[:3], qd_event=y_event[3:])",
+    new="q_event=y_event[:3], qd_event=y_event[:3])",
+    check="p44.event", diagnosis="state_row", message="its q_event")
+#: the walker's angles read from the rate rows: its energy drifts too, which is not the integration's
+ANGLES_FROM_RATE_ROWS = Planted(
+    name="motions-p38-angles-from-rate-rows", problem=38, file="problem_38.py",
+    old='return {"t": result.t, "q": result.y[:2].T, "qd": result.y[2:].T}',
+    new='return {"t": result.t, "q": result.y[2:].T, "qd": result.y[2:].T}',
+    check="p38.walker_run", diagnosis="state_row", message="q[0] is the reference's qd[0]")
+#: the arm's rates read from the angle columns: its start looks wrong only because of the columns returned
+RATES_FROM_ANGLE_COLUMNS = Planted(
+    name="motions-p37-rates-from-angle-columns", problem=37, file="problem_37.py",
+    old='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}',
+    new='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, :3]}',
+    check="p37.computed_torques_run", diagnosis="state_row", message="qd[0] is the reference's q[0]")
+#: the apex event reads the height: only one event reads the other row, the two are not exchanged
+APEX_ON_THE_HEIGHT = Planted(
+    name="motions-p42-apex-on-the-height", problem=42, file="problem_42.py",
+    old="    def apex(t, y, *args):\n        return y[1]",
+    new="    def apex(t, y, *args):\n        return y[0]",
+    check="p42.events", diagnosis="state_row", message="apex reads the other row")
+#: a near miss of a state read from the wrong rows: the walker started with its rates negated is a wrong start
+RATES_NEGATED_AT_THE_START = Planted(
+    name="motions-p38-start-rates-negated", problem=38, file="problem_38.py",
+    old="y0 = np.concatenate([np.asarray(q0, dtype=float), np.asarray(qd0, dtype=float)])",
+    new="y0 = np.concatenate([np.asarray(q0, dtype=float), -np.asarray(qd0, dtype=float)])",
+    check="p38.walker_run", diagnosis="initial_state", message="")
+#: a near miss of a run at loose tolerances: gravity 5% too strong in the run's arguments (the right-hand side
+#: agrees, the run is off); no run of the reference's at a looser tolerance is it
+STRONGER_GRAVITY = Planted(
+    name="motions-p44-stronger-gravity", problem=44, file="problem_44.py",
+    old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
+    new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, 1.05 * g),",
+    check="p44.event", diagnosis="", message="")
+
+RUN_SLIPS = [LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED, EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS,
+             RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT, RATES_NEGATED_AT_THE_START]
+NEAR_MISSES = [STRONGER_GRAVITY]
+
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
             MASS_AND_INERTIA_EXCHANGED]
 
@@ -92,7 +153,8 @@ def strict(monkeypatch):
 
 @pytest.fixture(scope="module")
 def slot():
-    yield from warm_slot(sorted({m.problem for m in MISTAKES + [REVERSED_WIRE, REVERSED_PIN]}))
+    yield from warm_slot(sorted({m.problem for m in MISTAKES + RUN_SLIPS + NEAR_MISSES
+                                 + [REVERSED_WIRE, REVERSED_PIN]}))
 
 
 def graded(mistake, tmp_path, kit_oracle, deferred_ids, slot):
@@ -110,6 +172,26 @@ def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, sl
     target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
     assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
     assert mistake.message in target.hint, target.hint
+
+
+@pytest.mark.parametrize("mistake", RUN_SLIPS, ids=lambda m: m.name)
+def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    """Slips of the run, not of its model: the run's arguments exchanged or ignored, solve_ivp's tolerances
+    loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
+    the other row; and a wrong start, which a state read from the wrong rows must not be mistaken for."""
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
+    assert mistake.message in target.hint, target.hint
+
+
+@pytest.mark.parametrize("mistake", NEAR_MISSES, ids=lambda m: m.name)
+def test_a_run_off_for_another_reason_is_not_told_as_its_tolerances(mistake, tmp_path, kit_oracle, deferred_ids,
+                                                                      slot):
+    """A run whose arguments are off by a factor no hypothesis tries: its right-hand side agrees and the run
+    leaves the reference's, but no run at looser tolerances, no exchange and no wrong row is it."""
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    told = set(families_of(target.diagnosis))
+    assert not told & (INTEGRATION | {"state_row", "order", "initial_state"}), (target.diagnosis, target.hint)
 
 
 @pytest.mark.parametrize("mistake", [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR],
