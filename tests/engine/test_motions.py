@@ -315,3 +315,86 @@ def test_parameters_of_equal_value_are_never_exchanged():
     assert {"run:swap:0:2", "run:swap:1:2"} <= keys
     keys = {h.key for h, _ in parameter_variants(motion, (None,), (1.5, 2.5, 9.81))}
     assert "run:swap:0:1" in keys
+
+
+def test_parameters_given_one_argument_each_are_exchanged_only_where_one_is_the_sheets():
+    """A run's parameters given one argument each: two given ones are the grammar's to exchange (its input slips),
+    so the run's tier exchanges a pair only where one takes the sheet's value; a given one is also tried at the
+    sheet's value (ignored), where it differs from it."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g")}}
+    variants = dict((h.key, args) for h, args in parameter_variants(motion, (10.0, 0.1), (10.0, 0.1, 9.81)))
+    assert set(variants) == {"run:swap:0:2", "run:swap:1:2"}, variants
+    assert variants["run:swap:0:2"] == (9.81, 0.1, 10.0)
+    variants = dict((h.key, args) for h, args in parameter_variants(motion, (20.0, 0.3), (10.0, 0.1, 9.81)))
+    assert variants["run:sheet:0"] == (10.0, 0.3, None) and variants["run:sheet:1"] == (20.0, 0.1, None)
+    assert "run:sheet:2" not in variants
+    # v0 = g: their exchange cannot be told
+    assert "run:swap:0:2" not in {h.key for h, _ in parameter_variants(motion, (9.81, 0.1), (10.0, 0.1, 9.81))}
+
+
+def test_run_variants_are_functions_of_the_arguments():
+    """The start's entries exchanged and the looser tolerances are asked of the probe by its own variant argument,
+    after the run's arguments (the kit's key holds them: they depend on nothing of the student's)."""
+    from grader.diagnosis.runs import LOOSE_TOLERANCES, parameter_variants
+
+    motion = {"variants": {"arg": 3, "starts": ((0, 1),), "tolerances": True}}
+    found = parameter_variants(motion, (10.0, 0.1), None)
+    assert [args for _, args in found][0] == (10.0, 0.1, None, ["start", 0, 1])
+    assert [h.name for h, _ in found] == ["initial_state"] + ["step_size"] * len(LOOSE_TOLERANCES)
+    assert all(args[:3] == (10.0, 0.1, None) for _, args in found)
+
+
+def test_events_exchanged_are_told_apart_from_events_found_late():
+    from grader.diagnosis.runs import exchanged_events
+
+    expected = {"t_apex": 0.9, "t_land": 1.7}
+    band = Tol("event time", 2e-3)
+    assert exchanged_events({"t_apex": 1.7, "t_land": 0.9}, expected, ("t_apex", "t_land"), band) == ("t_apex",
+                                                                                                       "t_land")
+    assert exchanged_events({"t_apex": 0.95, "t_land": 1.75}, expected, ("t_apex", "t_land"), band) is None
+    assert exchanged_events({"t_apex": 1.7, "t_land": None}, expected, ("t_apex", "t_land"), band) is None
+    # two events at one time: no exchange can be told
+    assert exchanged_events({"t_apex": 1.0, "t_land": 1.0}, {"t_apex": 1.0, "t_land": 1.0}, ("t_apex", "t_land"),
+                            band) is None
+
+
+def test_a_row_read_from_a_column_that_is_zero_is_not_told():
+    """A state that stays zero tells no row: a run that returns zeros for it is not told as read from there."""
+    from grader.diagnosis.runs import reread
+
+    t = np.linspace(0.0, 1.0, 11)
+    R = {"q": np.column_stack([np.sin(t), np.zeros_like(t)]), "qd": np.column_stack([np.cos(t), 2 * t])}
+    tol = Tol("band", 1e-3)
+    found = reread({"q": R["q"], "qd": np.column_stack([np.cos(t), np.sin(t)])}, R, ("q", "qd"), tol)
+    assert found is not None and "qd[1] is the reference's q[0]" in found.detail, found
+    assert reread({"q": R["q"], "qd": np.column_stack([np.cos(t), np.zeros_like(t)])}, R, ("q", "qd"), tol) is None
+    assert reread(R, R, ("q", "qd"), tol) is None
+
+
+def _event_evidence(student_event, student_value):
+    """The rates at an event of a stand-in run: the student's event time and rates, against the reference's."""
+    from grader.diagnosis import Declaration, Source
+
+    t = np.linspace(0.0, 1.0, 11)
+    ours = {"t": t, "q": np.column_stack([t, t * t]), "qd": np.column_stack([np.ones_like(t), 2 * t]),
+            "t_event": 1.0, "q_event": np.array([1.0, 1.0]), "qd_event": np.array([1.0, 2.0])}
+    mine = dict(ours, t_event=student_event, qd_event=np.asarray(student_value, dtype=float))
+    decl = Declaration(motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",),
+                               "at_events": {"q_event": ("t_event", "q"), "qd_event": ("t_event", "qd")}})
+    evidence = Evidence(mine["qd_event"], ours["qd_event"], Tol("qd at the event", 1e-3), "qd_event",
+                        source=Source("stub.run", (), ("qd_event",), ours),
+                        student=Source("stub.run", (), ("qd_event",), mine))
+    return evidence, decl
+
+
+def test_a_state_at_an_event_is_read_from_its_rows_only_where_the_event_agrees():
+    from grader.diagnosis.runs import event_state_slips
+
+    evidence, decl = _event_evidence(1.0, [1.0, 1.0])  # the rates are the positions at the event
+    assert [h.name for h in event_state_slips(evidence, decl)] == ["state_row"]
+    evidence, decl = _event_evidence(1.2, [1.0, 1.0])  # the event itself is found late: its rows tell nothing
+    assert event_state_slips(evidence, decl) == []
+    evidence, decl = _event_evidence(1.0, [1.0, 3.0])  # no row of the state at the event
+    assert event_state_slips(evidence, decl) == []
