@@ -53,6 +53,7 @@ __all__ = [
     "model_evidences",
     "PARAMETER_FACTORS",
     "LOOSE_TOLERANCES",
+    "run_slips",
     "parameter_variants",
     "parameter_slips",
     "event_state_slips",
@@ -499,6 +500,17 @@ def model_evidences(scene: Scene, evidence: Evidence, decl: Declaration):
         found.append(Evidence(got, expected, RHS_TOL, "the right-hand side", None, None,
                               Source(probe, args, (), expected_root), Source(probe, args, (), got_root)))
     return found
+
+
+def run_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: bool) -> list:
+    """Every slip of a run that reproduces the student's: its arguments varied (``parameter_slips``), an error that
+    grows with the step (``step_slips``, which an event found late then is a part of) and the motion's slips
+    (``motion_slips``); a cause that blames the integration only where the student's right-hand side is the
+    reference's (``integration``)."""
+    steps = step_slips(scene, evidence, decl) if integration else []
+    found = parameter_slips(scene, evidence, decl, integration)
+    return found + steps + [h for h in motion_slips(evidence, decl) if not (steps and h.name.startswith("event"))
+                            and (integration or h.name not in INTEGRATION)]
 
 
 def parameter_variants(motion: dict, args: tuple, sheet) -> list:
