@@ -54,6 +54,7 @@ __all__ = [
     "PARAMETER_FACTORS",
     "LOOSE_TOLERANCES",
     "run_slips",
+    "MAX_FAMILIES",
     "parameter_variants",
     "parameter_slips",
     "event_state_slips",
@@ -506,11 +507,26 @@ def run_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: 
     """Every slip of a run that reproduces the student's: its arguments varied (``parameter_slips``), an error that
     grows with the step (``step_slips``, which an event found late then is a part of) and the motion's slips
     (``motion_slips``); a cause that blames the integration only where the student's right-hand side is the
-    reference's (``integration``)."""
+    reference's (``integration``).  Where those at the simplest span more than ``MAX_FAMILIES`` families, none."""
     steps = step_slips(scene, evidence, decl) if integration else []
     found = parameter_slips(scene, evidence, decl, integration)
-    return found + steps + [h for h in motion_slips(evidence, decl) if not (steps and h.name.startswith("event"))
-                            and (integration or h.name not in INTEGRATION)]
+    found += steps + [h for h in motion_slips(evidence, decl) if not (steps and h.name.startswith("event"))
+                      and (integration or h.name not in INTEGRATION)]
+    return found if len(_families(found)) <= MAX_FAMILIES else []
+
+
+#: a run whose hypotheses (at their simplest) span more families than this is told no cause: that many causes fit
+#: it alike, and none is known
+MAX_FAMILIES = 2
+
+
+def _families(found: list) -> set:
+    from checks._diagnoses import DIAGNOSES
+
+    if not found:
+        return set()
+    cost = min(h.cost for h in found)
+    return {DIAGNOSES[h.name].family if h.name in DIAGNOSES else h.name for h in found if h.cost == cost}
 
 
 def parameter_variants(motion: dict, args: tuple, sheet) -> list:
