@@ -1,10 +1,12 @@
 """Probes of problem 42: the two event functions of the thrown ball, the flight, and the computation behind the key
 of question (b)."""
 
+from contextlib import nullcontext
+
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_step
+from ._dynamics import fixed_step, solver_variant
 from ._forms import Arr, Dict, Either, Flag, Maybe, Num, Seq, Text
 
 #: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
@@ -59,15 +61,13 @@ def _optional(value):
 )
 def throw(pkg, v0, drag, g=None, variant=None):
     """``throw(v0, drag)`` (and ``g`` where given): the apex and the landing, and the run ``t``, ``y`` (rows
-    ``(height, velocity)``).  ``variant`` (the diagnosis engine's, on the reference): the flight integrated by
-    ``solve_ivp`` with the package's own ``ball_ode`` and ``make_events``, from the start ``(0, v0)`` with its
-    entries ``i`` and ``j`` exchanged (``["start", i, j]``) or by the default method at the tolerances
-    ``["tolerance", rtol, atol]``."""
+    ``(height, velocity)``).  ``variant`` (the diagnosis engine's, on the reference): the package's flight with
+    ``solve_ivp`` called as a slip would call it (``_dynamics.solver_variant``: from the start with two entries
+    exchanged, or at looser tolerances)."""
     gravity = {} if g is None else {"g": float(g)}
-    if variant is None:
-        run = module(pkg, "problem_42").throw(float(v0), float(drag), **gravity)
-    else:
-        run = _varied(module(pkg, "problem_42"), float(v0), float(drag), gravity.get("g"), variant)
+    p42 = module(pkg, "problem_42")
+    with solver_variant(variant, p42) if variant is not None else nullcontext():
+        run = p42.throw(float(v0), float(drag), **gravity)
     if not isinstance(run, dict):
         raise ValueError(f"throw must return a dict, got {str(run)[:200]}")
     t = np.asarray(run.get("t"), dtype=float).reshape(-1)
@@ -76,29 +76,6 @@ def throw(pkg, v0, drag, g=None, variant=None):
         raise ValueError(f"throw: 'y' must have one row (height, velocity) per time ({t.size} x 2), got shape "
                          f"{y.shape}")
     return {key: _optional(run.get(key)) for key in ("t_apex", "height_apex", "t_land", "v_land")} | {"t": t, "y": y}
-
-
-def _varied(p42, v0, drag, g, variant):
-    """The flight of ``throw`` with one thing varied (``throw``'s ``variant``), as ``throw`` returns it."""
-    from scipy.integrate import solve_ivp
-
-    kind, *rest = variant
-    start, rtol, atol = [0.0, v0], 1e-10, 1e-12
-    if kind == "start":
-        i, j = (int(k) for k in rest)
-        start[i], start[j] = start[j], start[i]
-    elif kind == "tolerance":
-        rtol, atol = (float(x) for x in rest)
-    else:
-        raise ValueError(f"throw: no run variant {kind!r}")
-    gravity = p42.GRAVITY if g is None else g
-    result = solve_ivp(p42.ball_ode, (0.0, p42.T_MAX), start, args=(drag, gravity), events=p42.make_events(),
-                       rtol=rtol, atol=atol)
-    (t_apex, t_land), (y_apex, y_land) = result.t_events, result.y_events
-    return {"t_apex": float(t_apex[0]) if len(t_apex) else None,
-            "height_apex": float(y_apex[0][0]) if len(t_apex) else None,
-            "t_land": float(t_land[0]) if len(t_land) else None,
-            "v_land": float(y_land[0][1]) if len(t_land) else None, "t": result.t, "y": result.y.T}
 
 
 @probe(reference_only=True)

@@ -1,10 +1,12 @@
 """Probes of problem 44: the event function of the second support, and the bar's run up to it (with the package's
 own constraint of problem 43 along the run)."""
 
+from contextlib import nullcontext
+
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_run, fixed_step, trace
+from ._dynamics import fixed_run, fixed_step, solver_variant, trace
 from ._forms import Arr, Dict, Flag, Maybe, Num, Seq
 
 #: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
@@ -44,16 +46,14 @@ def event(pkg, states, s, d):
 def simulate(pkg, q0, t_end, s, bar=None, d=None, variant=None):
     """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` and the half-width ``d`` where given):
     the run, the event, and ``c`` of the package's own ``problem_43.constraint`` at every output time (the first
-    support, at ``d``, 0 unless given).  ``variant`` (the diagnosis engine's, on the reference): ``["tolerance",
-    rtol, atol]``, the run integrated by ``solve_ivp``'s default method at those tolerances with the package's own
-    ``bar_ode`` and event, where ``simulate`` integrates it."""
+    support, at ``d``, 0 unless given).  ``variant`` (the diagnosis engine's, on the reference): the package's run
+    with ``solve_ivp`` called as a slip would call it (``_dynamics.solver_variant``: at looser tolerances)."""
     other = {} if bar is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar)))
     if d is not None:
         other["d"] = float(d)
-    if variant is None:
-        run = module(pkg, "problem_44").simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
-    else:
-        run = _loose(module(pkg, "problem_44"), q0, t_end, s, other, variant)
+    p44 = module(pkg, "problem_44")
+    with solver_variant(variant, p44) if variant is not None else nullcontext():
+        run = p44.simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
     t, q, qd = trace(run, 3, "problem_44.simulate")
     constraint = module(pkg, "problem_43").constraint
     width = 0.0 if d is None else float(d)
@@ -64,27 +64,6 @@ def simulate(pkg, q0, t_end, s, bar=None, d=None, variant=None):
         for key in ("q_event", "qd_event"):
             out[key] = np.asarray(run[key], dtype=float).reshape(3)
     return out
-
-
-def _loose(p44, q0, t_end, s, other, variant):
-    """The bar's run of ``simulate`` by ``solve_ivp`` (its default method) at the tolerances of ``variant``
-    (``["tolerance", rtol, atol]``), output every ``T_STEP`` as ``simulate`` outputs."""
-    from scipy.integrate import solve_ivp
-
-    kind, rtol, atol = variant
-    if kind != "tolerance":
-        raise ValueError(f"simulate: no run variant {kind!r}")
-    bar = {key: value for key, value in other.items() if key != "d"}
-    event = p44.make_contact_event(float(s)) if "d" not in other else p44.make_contact_event(float(s), other["d"])
-    t_eval = np.arange(0.0, float(t_end) + p44.T_STEP / 2, p44.T_STEP)
-    y0 = np.append(np.asarray(q0, dtype=float), [0.0, 0.0, 0.0])
-    result = solve_ivp(lambda t, y: p44.bar_ode(t, y, **bar), (0.0, float(t_end)), y0, t_eval=t_eval,
-                       events=[event], rtol=float(rtol), atol=float(atol))
-    run = {"t": result.t, "q": result.y[:3].T, "qd": result.y[3:].T, "t_event": None}
-    if len(result.t_events[0]):
-        y_event = result.y_events[0][0]
-        run.update(t_event=float(result.t_events[0][0]), q_event=y_event[:3], qd_event=y_event[3:])
-    return run
 
 
 @probe(reference_only=True)
