@@ -413,6 +413,10 @@ def _simulation(ctx, controller):
 #: where the table of the start check begins [s] (mid-motion: q_des and qd_des differ from those at 0), and how long
 #: that run lasts [s]
 LATER_START, START_RUN = 1.0, 0.045
+#: over that short run any solve_ivp method at its default tolerances follows the reference's within this (at most
+#: 1.8e-4, BDF; RK45 7e-6), far closer than the band of a whole run: a run read from the wrong columns is told within it (the rates there are
+#: small, and the band would not tell them from zero)
+REREAD = Tol("a short run, a reasonable integrator", 1e-3)
 #: the sheet's q_des(0), printed with five decimals
 PRINTED = Tol("the sheet's five decimals", 1e-5)
 TYPED_START_HINT = ("Your simulation starts from the sheet's q_des(0) whatever table it is given: start from the "
@@ -435,6 +439,7 @@ def _assert_starts_on_the_table(ctx, controller):
     table = _table(ctx)
     later = _later_table(table)
     call = f"simulate({controller!r}, a table starting at q_des = {np.round(later['q'][0], 4).tolist()}, {START_RUN:g})"
+    ours = ctx.reference(p37.simulate, controller, later, START_RUN, persist=True)  # (the kit's key holds it)
     got = ctx.student(p37.simulate, controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
     n = int(np.sum(np.asarray(later["t"]) <= START_RUN))
     q, qd = (run_array(got, key, (n, 3), call) for key in ("q", "qd"))
@@ -445,8 +450,23 @@ def _assert_starts_on_the_table(ctx, controller):
         assert_close(mine, start, f"the state (q, qd) at t = 0 of {call}", EXACT, context="(the table's first row)")
     except CheckFailure as exc:
         typed = close(mine, np.concatenate([table["q"][0], table["qd"][0]]), PRINTED)
+        reread = None if typed else _reread(got, ours, REREAD)
+        if reread is not None:
+            raise CheckFailure(exc.message, *reread) from None
         raise CheckFailure(exc.message, TYPED_START_HINT if typed else INITIAL_HINT,
                            "typed_numbers" if typed else "initial_state") from None
+
+
+def _reread(got, expected, tol=BAND["q"]):
+    """``(hint, "state_row")`` where the student's run is the reference's with its q or qd read from other columns of
+    the solution within ``tol`` (a start that looks wrong only because the wrong columns are returned), else None."""
+    from grader.diagnosis.runs import reread_runs
+
+    found = reread_runs(got, expected, ("q", "qd"), tol)
+    if found is None:
+        return None
+    return (f"Looks like {found.detail}: solve_ivp's y holds q in its first three rows and qd in the last three.",
+            "state_row")
 
 
 def _own_model(ctx, controller, table, probes):
@@ -485,7 +505,7 @@ def _diagnosis(ctx, controller, got, expected, probes, ode):
     run leaves the reference's, and the diagnosis engine names a cause if it finds one)."""
     start = np.concatenate([expected["q"][0], expected["qd"][0]])
     if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
-        return INITIAL_HINT, "initial_state"
+        return _reread(got, expected) or (INITIAL_HINT, "initial_state")
     if not close(ctx.student(p37.robot_ode, controller, _table(ctx), probes), ode, EXACT):
         return ODE_HINT, "wrong_ode"
     return None

@@ -122,6 +122,13 @@ def check_walker_run(ctx):
         assert_close(got["t"], expected["t"], "the output times", EXACT,
                      note=f"The sheet asks for {N_OUTPUT} equally spaced outputs from 0 to {T_END:g} s "
                           f"(np.linspace(0, t_end, n)).")
+    from grader.diagnosis.runs import reread_runs
+
+    reread = reread_runs(got, expected, ("q", "qd"), BAND["q"])
+    if reread is not None:  # the energy of states read from the wrong rows drifts too: not the integration's
+        assert_run(got, expected, ("q", "qd"), BAND, "the walker's run", diagnosis="state_row",
+                   hint=f"Looks like {reread.detail}: solve_ivp's y holds q in its first two rows and qd in the "
+                        "last two.")
     assert_energy_conserved(got, ENERGY, "the unactuated walker",
                             "With M, f, g right (problem 37) and walker_ode right (the check above), the energy "
                             "drifts only if the integration is coarse: use scipy.integrate.solve_ivp.")

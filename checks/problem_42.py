@@ -83,10 +83,16 @@ def check_events(ctx):
             fail(got.get("problem") if isinstance(got, dict) else f"the probe could not read your events: {got}",
                  "Return the two event functions as a tuple: return apex, landing.", "format")
         heights, velocities = (np.array([y[k] for y in args[0]]) for k in (0, 1))
+        rows = {"apex": velocities, "landing": heights}
+        exchanged = all(close(got[name]["values"], rows[other], EXACT)
+                        for name, other in (("apex", "landing"), ("landing", "apex")))
         for name, value, other in (("apex", velocities, heights), ("landing", heights, velocities)):
+            read = (Mistake("swapped", other, "make_events() returns (apex, landing): the apex is where the velocity "
+                            "y[1] falls through zero, the landing where the height y[0] does.") if exchanged else
+                    Mistake("state_row", other, f"{name} reads the other row of the state y = (height, velocity): "
+                            f"its residual is {RESIDUALS[name]}."))
             assert_close(got[name]["values"], value, f"{name}(t, y)", EXACT, [
-                Mistake("swapped", other, "make_events() returns (apex, landing): the apex is where the velocity "
-                        "y[1] falls through zero, the landing where the height y[0] does."),
+                read,
                 Mistake("event_sign", -value, f"The residual of {name} is {RESIDUALS[name]} itself: with its sign "
                         f"turned, the crossing runs the other way and direction -1 misses it."),
             ], context="at four random states y = (height, velocity)")
@@ -117,6 +123,13 @@ def _flight(got, expected, v0, drag, bands, g=None):
         fail(f"{what}: the ball never landed (t_land is None); the reference's lands at t = "
              f"{expected['t_land']:.4f} s.", "The landing event (height through zero, direction -1, terminal) must be "
              "among the events passed to solve_ivp(..., events=...).", "no_event")
+    from grader.diagnosis.runs import exchanged_events
+
+    if exchanged_events(got, expected, ("t_apex", "t_land"), bands["t_land"]) is not None:
+        fail(f"{what}: your t_land = {got['t_land']:.4f} s is the reference's apex and your t_apex = "
+             f"{got['t_apex']:.4f} s its landing: the two events' results are read in each other's place.",
+             "solve_ivp returns t_events and y_events in the order of events=[...]: with make_events() = (apex, "
+             "landing), t_events[0] is the apex and t_events[1] the landing.", "swapped")
     if got["t_land"] < LAUNCH:
         fail(f"{what}: the landing was found at t = {got['t_land']:.3g} s, the launch; the reference's ball lands at "
              f"t = {expected['t_land']:.4f} s.", DIRECTION_HINT, "event_direction")

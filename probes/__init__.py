@@ -21,7 +21,13 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   ``"rhs_args"``: the indices of the run's arguments it takes first, None for one not given), at which the
   engine tells a wrong model from a wrong integration; with ``"parameters"`` (``{"arg": index, "names": (...),
   "sheet": probe}``), the argument that holds the run's parameters (a mass, an inertia, g; the probe of their
-  sheet values for a run not given them), which the engine tries exchanged and scaled by re-running the reference;
+  sheet values for a run not given them), which the engine tries exchanged and scaled by re-running the reference,
+  or ``{"args": (indices), "names": (...), "sheet": probe}`` for parameters given one argument each (exchanged,
+  and each given one at its sheet value); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...),
+  "tolerances": True}``), the probe's argument by which the engine asks the reference's run with ``solve_ivp``
+  called as a slip would call it (``_dynamics.solver_variant``: from a start with two entries exchanged, at looser
+  tolerances); with ``"at_events"`` (``{key: (event, state[, entry])}``), the result's values taken from the
+  state at an event, which the engine tries read from its other rows;
 * ``constants``: the probe (no arguments) of the problem's named constants (a mass, g, a length);
 * ``draw``: False when the engine must not draw a second input itself (the probe is slow, or its arguments must
   keep their relations).

@@ -11,6 +11,7 @@ shifted coordinates).  ``mfg_mistakes`` computes, from the package's kinematics,
 mistakes give; the grader calls it on the reference only.
 """
 
+from contextlib import contextmanager
 from types import SimpleNamespace
 
 import numpy as np
@@ -33,6 +34,7 @@ __all__ = [
     "fixed_step",
     "fixed_run",
     "pendulum_motion_fixed",
+    "solver_variant",
     "mfg_terms",
 ]
 
@@ -254,6 +256,42 @@ def pendulum_motion(pkg, t_end, I_grav, q0=None):
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
     return {"t": t, "q": q, "qd": qd, "T": T, "V": V}
+
+
+@contextmanager
+def solver_variant(variant, *modules):
+    """While the package computes a run: ``scipy.integrate.solve_ivp`` as a slip would call it (the diagnosis
+    engine's runs of the reference, ``variant``): ``["tolerance", rtol, atol]``, every call by the default method
+    (RK45) at those tolerances; ``["start", i, j]``, the first call from its ``y0`` with the entries ``i`` and ``j``
+    exchanged.  ``modules``: the package's modules that hold ``solve_ivp`` by name, replaced there too."""
+    import scipy.integrate
+
+    original = scipy.integrate.solve_ivp
+    kind, *rest = variant
+    if kind not in ("tolerance", "start"):
+        raise ValueError(f"no run variant {kind!r}")
+    calls = []
+
+    def varied(fun, t_span, y0, *args, **kwargs):
+        if kind == "tolerance":
+            kwargs.update(method="RK45", rtol=float(rest[0]), atol=float(rest[1]))
+        elif not calls:
+            y0 = np.array(y0, dtype=float)
+            i, j = (int(k) for k in rest)
+            y0[[i, j]] = y0[[j, i]]
+        calls.append(kind)
+        return original(fun, t_span, y0, *args, **kwargs)
+
+    held = [m for m in modules if getattr(m, "solve_ivp", None) is original]
+    scipy.integrate.solve_ivp = varied
+    for m in held:
+        m.solve_ivp = varied
+    try:
+        yield
+    finally:
+        scipy.integrate.solve_ivp = original
+        for m in held:
+            m.solve_ivp = original
 
 
 def fixed_run(run, n):

@@ -1,10 +1,12 @@
 """Probes of problem 42: the two event functions of the thrown ball, the flight, and the computation behind the key
 of question (b)."""
 
+from contextlib import nullcontext
+
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_step
+from ._dynamics import fixed_step, solver_variant
 from ._forms import Arr, Dict, Either, Flag, Maybe, Num, Seq, Text
 
 #: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
@@ -52,13 +54,20 @@ def _optional(value):
     args=("scalar", "scalar", "scalar"),
     draw=False,
     motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
-               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2)},
+               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2),
+               "parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g"), "sheet": "problem_42.sheet_ball"},
+               "variants": {"arg": 3, "starts": ((0, 1),), "tolerances": True},
+               "at_events": {"height_apex": ("t_apex", "y", 0), "v_land": ("t_land", "y", 1)}},
 )
-def throw(pkg, v0, drag, g=None):
+def throw(pkg, v0, drag, g=None, variant=None):
     """``throw(v0, drag)`` (and ``g`` where given): the apex and the landing, and the run ``t``, ``y`` (rows
-    ``(height, velocity)``)."""
+    ``(height, velocity)``).  ``variant`` (the diagnosis engine's, on the reference): the package's flight with
+    ``solve_ivp`` called as a slip would call it (``_dynamics.solver_variant``: from the start with two entries
+    exchanged, or at looser tolerances)."""
     gravity = {} if g is None else {"g": float(g)}
-    run = module(pkg, "problem_42").throw(float(v0), float(drag), **gravity)
+    p42 = module(pkg, "problem_42")
+    with solver_variant(variant, p42) if variant is not None else nullcontext():
+        run = p42.throw(float(v0), float(drag), **gravity)
     if not isinstance(run, dict):
         raise ValueError(f"throw must return a dict, got {str(run)[:200]}")
     t = np.asarray(run.get("t"), dtype=float).reshape(-1)
@@ -67,6 +76,14 @@ def throw(pkg, v0, drag, g=None):
         raise ValueError(f"throw: 'y' must have one row (height, velocity) per time ({t.size} x 2), got shape "
                          f"{y.shape}")
     return {key: _optional(run.get(key)) for key in ("t_apex", "height_apex", "t_land", "v_land")} | {"t": t, "y": y}
+
+
+@probe(reference_only=True)
+def sheet_ball(pkg):
+    """The sheet's ball ``(v0, drag, g)``: the values ``throw`` runs with where it is not given them (the diagnosis
+    engine calls it on the reference)."""
+    p42 = module(pkg, "problem_42")
+    return [float(p42.V0), float(p42.DRAG), float(p42.GRAVITY)]
 
 
 @probe(reference_only=True)

@@ -1,10 +1,12 @@
 """Probes of problem 44: the event function of the second support, and the bar's run up to it (with the package's
 own constraint of problem 43 along the run)."""
 
+from contextlib import nullcontext
+
 import numpy as np
 
 from . import module, probe
-from ._dynamics import fixed_run, fixed_step, trace
+from ._dynamics import fixed_run, fixed_step, solver_variant, trace
 from ._forms import Arr, Dict, Flag, Maybe, Num, Seq
 
 #: an event function's values at the states, and its ``terminal`` and ``direction`` attributes (None when missing)
@@ -37,16 +39,21 @@ def event(pkg, states, s, d):
     says="simulate(q0, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
                "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,),
-               "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"}},
+               "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"},
+               "variants": {"arg": 5, "tolerances": True},
+               "at_events": {"q_event": ("t_event", "q"), "qd_event": ("t_event", "qd")}},
 )
-def simulate(pkg, q0, t_end, s, bar=None, d=None):
+def simulate(pkg, q0, t_end, s, bar=None, d=None, variant=None):
     """``simulate(q0, t_end, s)`` (the sheet's bar, or ``bar = (m, theta, g)`` and the half-width ``d`` where given):
     the run, the event, and ``c`` of the package's own ``problem_43.constraint`` at every output time (the first
-    support, at ``d``, 0 unless given)."""
+    support, at ``d``, 0 unless given).  ``variant`` (the diagnosis engine's, on the reference): the package's run
+    with ``solve_ivp`` called as a slip would call it (``_dynamics.solver_variant``: at looser tolerances)."""
     other = {} if bar is None else dict(zip(("m", "theta", "g"), (float(x) for x in bar)))
     if d is not None:
         other["d"] = float(d)
-    run = module(pkg, "problem_44").simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
+    p44 = module(pkg, "problem_44")
+    with solver_variant(variant, p44) if variant is not None else nullcontext():
+        run = p44.simulate(np.asarray(q0, dtype=float), float(t_end), float(s), **other)
     t, q, qd = trace(run, 3, "problem_44.simulate")
     constraint = module(pkg, "problem_43").constraint
     width = 0.0 if d is None else float(d)

@@ -19,8 +19,10 @@ The grammar:
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
-  wrong row, a wrong initial state, an event found late or early, an error that grows with the step, the run's
-  parameters exchanged or scaled (the reference re-run so).
+  wrong row (of the run, or of the state at an event), a wrong initial state, an event found late or early, an
+  error that grows with the step, the run's parameters exchanged, scaled or ignored, its start's entries exchanged
+  and solve_ivp at looser tolerances (the reference re-run so); a randomized comparison's second failing run must
+  show the same cause.
 
 Before any cause of a run, the student's right-hand side is compared with the reference's along the run (where the
 probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,

@@ -52,14 +52,12 @@ from .runs import (
     INTEGRATION,
     is_run,
     model_evidences,
-    motion_slips,
-    parameter_slips,
     parameter_variants,
     rhs_cases,
     rhs_call,
     RHS_TOL,
     run_in_log,
-    step_slips,
+    run_slips,
 )
 
 __all__ = [
@@ -275,10 +273,11 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         if model.state == "differs":  # the mistake is in the model: its cause, or none (never the integration)
             return model.finding
         integration = model.state == "agrees"
-        steps = step_slips(scene, run, decl) if integration else []
-        found += parameter_slips(scene, run, decl)
-        found += steps + [h for h in motion_slips(run, decl) if not (steps and h.name.startswith("event"))
-                          and (integration or h.name not in INTEGRATION)]
+        found += run_slips(scene, run, decl, integration)
+        second = evidences[1] if len(evidences) > 1 and is_run(evidences[1]) else None
+        if found and second is not None:  # a randomized comparison's second failing run: the causes of both
+            again = {h.key for h in run_slips(scene, second, decl, integration)}
+            found = [h for h in found if h.key in again]
     if run is not None:
         trace.note("run", found=[h.name for h in found])
     if first.source is None:  # a value derived from the student's own: explain the results it came from

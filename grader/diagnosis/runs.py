@@ -1,6 +1,10 @@
 """Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
-constant offset, a state from the wrong row, a wrong start, an event found late or early, and an error that grows
-with the step (against fixed-step runs of the reference's own right-hand side).
+constant offset, a state from the wrong row (of the run, or of the state at an event), a wrong start, an event found
+late or early, and an error that grows with the step (against fixed-step runs of the reference's own right-hand
+side); and the reference re-run as a slip would run it (``parameter_variants``: its arguments exchanged, scaled or
+ignored, its start's entries exchanged, solve_ivp at looser tolerances), every such run a function of the run's
+arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose columns are read from the
+wrong rows of the solution, which looks like a wrong start or a drifting energy) and ``exchanged_events``.
 
 Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
 reference's at states along the reference's run (``model_evidences``): a run that leaves the reference's is not
@@ -12,7 +16,7 @@ import itertools
 
 import numpy as np
 
-from ..errors import StudentFault
+from ..errors import GraderFault, StudentFault
 from ..values import Tol, format_array
 from .evidence import (
     array_of,
@@ -52,8 +56,16 @@ __all__ = [
     "rhs_call",
     "model_evidences",
     "PARAMETER_FACTORS",
+    "LOOSE_TOLERANCES",
+    "run_slips",
+    "MAX_FAMILIES",
     "parameter_variants",
     "parameter_slips",
+    "event_state_slips",
+    "reread",
+    "reread_runs",
+    "exchanged_events",
+    "EVENT_AGREES",
 ]
 
 
@@ -68,8 +80,14 @@ RHS_TOL = Tol("right-hand side", 1e-7, 1e-6)
 #: the causes that blame the integration of a run (with every name of the step_size family), told only where its
 #: right-hand side is the reference's
 INTEGRATION = ("step_size", "event_late", "event_early", "energy_drift", "no_event")
+#: the student's event is found where the reference's is, for a value at it to be read (rows of the state there)
+EVENT_AGREES = Tol("event time", 1e-3, 1e-3)
 #: the factors a run's parameter (a mass, an inertia, g) is tried at, and their words
 PARAMETER_FACTORS = ((2.0, "twice"), (0.5, "half"))
+#: the tolerances ``(rtol, atol)`` of ``solve_ivp`` (its default method) at which the reference's run is re-run
+#: where the probe takes them (``motion["variants"]``): looser than the defaults (1e-3, 1e-6), which every check's
+#: bands admit
+LOOSE_TOLERANCES = ((1e-2, 1e-2), (1e-1, 1e-1), (1e-2, 1e-6), (1e-1, 1e-6))
 #: a fit of a run's error this close, by about one times a fixed-step run's, needs no other run to be tried (the
 #: student's run is that scheme at that step)
 STEP_EXACT = 0.05
@@ -122,7 +140,7 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
     read from the wrong row, a time shift, a wrong initial state."""
     motion = decl.motion
     tol = evidence.tol
-    found = event_slips(evidence, decl)
+    found = event_slips(evidence, decl) + event_state_slips(evidence, decl)
     aligned = aligned_runs(evidence, decl)
     if aligned is None:
         return found
@@ -142,23 +160,9 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
             found.append(Hypothesis("motion:offset-start", "initial_state", 2, f"your run starts at {words} from "
                                      "the given state and keeps that offset"))
     # a state read from the wrong row
-    columns = [(k, j) for k in keys for j in range(R[k].shape[1])]
-    mapping, explained = {}, True
-    for k in wrong:
-        for i in range(G[k].shape[1]):
-            if within(G[k][:, i], R[k][:, i], tol):
-                continue
-            rows = [(k2, j) for k2, j in columns if (k2, j) != (k, i) and within(G[k][:, i], R[k2][:, j], tol)
-                    and distinct(R[k2][:, j], R[k][:, i], tol)]
-            if not rows:
-                explained = False
-                break
-            mapping[(k, i)] = rows[0]
-        if not explained:
-            break
-    if explained and mapping:
-        words = ", ".join(f"{k}[{i}] is the reference's {k2}[{j}]" for (k, i), (k2, j) in mapping.items())
-        found.append(Hypothesis("motion:row", "state_row", 2, f"your run has a state from the wrong row: {words}"))
+    rows = reread(G, R, keys, tol)
+    if rows is not None:
+        found.append(rows)
     # a time shift
     shift = time_shift(t, G, t_r, R_full, tol)
     if shift is not None:
@@ -171,6 +175,111 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
         words = "; ".join(f"{k}(t0) = {format_array(G[k][0])}, expected {format_array(R[k][0])}" for k in start)
         found.append(Hypothesis("motion:start", "initial_state", 3, f"your run starts from another state: {words}"))
     return found
+
+
+def reread(G: dict, R: dict, keys, tol: Tol) -> Hypothesis | None:
+    """The student's run ``G`` is the reference's ``R`` (both ``{key: samples x components}`` at the same times) with
+    columns read from other rows of the solution (the rates for the angles, the halves exchanged): every column of
+    the student's that is not the reference's own is, within ``tol``, another column of the reference's that
+    differs clearly from its own; None where some column is neither (or none is wrong)."""
+    columns = [(k, j) for k in keys if k in R for j in range(R[k].shape[1])]
+    mapping = {}
+    for k in keys:
+        if k not in G or k not in R or G[k].shape != R[k].shape:
+            return None
+        for i in range(G[k].shape[1]):
+            if within(G[k][:, i], R[k][:, i], tol):
+                continue
+            rows = [(k2, j) for k2, j in columns if (k2, j) != (k, i) and within(G[k][:, i], R[k2][:, j], tol)
+                    and distinct(R[k2][:, j], R[k][:, i], tol) and distinct(R[k2][:, j], 0.0 * R[k2][:, j], tol)]
+            if not rows:
+                return None
+            mapping[(k, i)] = rows[0]
+    if not mapping:
+        return None
+    words = ", ".join(f"{k}[{i}] is the reference's {k2}[{j}]" for (k, i), (k2, j) in mapping.items())
+    return Hypothesis("motion:row", "state_row", 2, f"your run has a state from the wrong row: {words}")
+
+
+def reread_runs(got, expected, keys, tol: Tol) -> Hypothesis | None:
+    """``reread`` of two runs' results (dicts with ``"t"`` and the ``keys``) at the same output times; None where
+    their times differ or a key is missing."""
+    t = array_of(expected.get("t")) if isinstance(expected, dict) else None
+    mine_t = array_of(got.get("t")) if isinstance(got, dict) else None
+    if t is None or mine_t is None or t.ndim != 1 or mine_t.shape != t.shape or not np.allclose(mine_t, t,
+                                                                                                 atol=1e-9):
+        return None
+    G, R = {}, {}
+    for key in keys:
+        mine, ours = array_of(got.get(key)), array_of(expected.get(key))
+        if mine is None or ours is None or mine.size != ours.size or ours.size % t.size:
+            return None
+        G[key], R[key] = mine.reshape(t.size, -1), ours.reshape(t.size, -1)
+    return reread(G, R, keys, tol)
+
+
+def exchanged_events(got: dict, expected: dict, keys, tol: Tol):
+    """``(a, b)``: the student's times of the events ``a`` and ``b`` (keys of the runs' results) are the reference's
+    exchanged (the results of two events unpacked in each other's place), where the reference's two differ
+    clearly; None where no two are."""
+    times = {}
+    for key in keys:
+        mine, ours = array_of(got.get(key)), array_of(expected.get(key))
+        if mine is None or ours is None or mine.size != 1 or ours.size != 1:
+            continue
+        times[key] = (mine.reshape(()), ours.reshape(()))
+    for a, b in itertools.combinations(times, 2):
+        (mine_a, ours_a), (mine_b, ours_b) = times[a], times[b]
+        if distinct(ours_a, ours_b, tol) and within(mine_a, ours_b, tol) and within(mine_b, ours_a, tol):
+            return a, b
+    return None
+
+
+def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
+    """A state at an event read from the wrong row (``motion["at_events"]``: ``{key: (event, state[, entry])}``, the
+    values of a run's result taken from its state at an event): where the student's event is found when the
+    reference's is, their value of the compared key is, within the comparison's tolerance, another entry of the
+    reference's state at that event (another such key, or the reference's run there) that differs clearly from
+    the right one and is not zero within the tolerance (a zero, a velocity at an apex say, tells no row)."""
+    motion, tol = decl.motion, evidence.tol
+    at_events = motion.get("at_events") or {}
+    source, student = evidence.source, evidence.student
+    if source is None or student is None or not source.path or source.path[0] not in at_events:
+        return []
+    key = source.path[0]
+    event = at_events[key][0]
+    mine_t, our_t = array_of(at(student.root, (event,))), array_of(at(source.root, (event,)))
+    if mine_t is None or our_t is None or mine_t.size != 1 or our_t.size != 1:
+        return []
+    te = float(our_t)
+    if abs(float(mine_t) - te) > EVENT_AGREES.atol + EVENT_AGREES.rtol * abs(te):
+        return []  # the event itself is found elsewhere: a value at it tells nothing of its rows
+    mine, ours = array_of(at(student.root, (key,))), array_of(at(source.root, (key,)))
+    if mine is None or ours is None or mine.shape != ours.shape or within(mine, ours, tol):
+        return []
+    candidates = {}
+    for other, (other_event, *_rest) in at_events.items():
+        value = array_of(at(source.root, (other,)))
+        if other_event == event and value is not None:
+            candidates[f"its {other}"] = value
+            if value.size > 1:
+                candidates.update({f"its {other}[{j}]": value.reshape(-1)[j] for j in range(value.size)})
+    ran = run_of(source.root, motion)
+    if ran is not None and ran[0][0] <= te <= ran[0][-1]:
+        t, R = ran
+        for state, samples in R.items():
+            row = np.array([np.interp(te, t, samples[:, j]) for j in range(samples.shape[1])])
+            candidates[f"its {state} at the event"] = row
+            candidates.update({f"its {state}[{j}] at the event": row[j] for j in range(row.size)})
+    wrong = [label for label, value in candidates.items()
+             if np.shape(value) == ours.shape and within(mine, np.asarray(value, dtype=float), tol)
+             and distinct(np.asarray(value, dtype=float), ours, tol)
+             and not within(np.asarray(value, dtype=float), 0.0 * ours, tol)]
+    if not wrong:
+        return []
+    return [Hypothesis(f"event:row:{key}", "state_row", 2,
+                       f"your {key} is the reference's state at the event {event} = {te:.6g} s read from the wrong "
+                       f"row: it is {wrong[0]} (expected {format_array(ours)})")]
 
 
 def event_slips(evidence: Evidence, decl: Declaration) -> list:
@@ -398,13 +507,77 @@ def model_evidences(scene: Scene, evidence: Evidence, decl: Declaration):
     return found
 
 
+def run_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: bool) -> list:
+    """Every slip of a run that reproduces the student's: its arguments varied (``parameter_slips``), an error that
+    grows with the step (``step_slips``, which an event found late then is a part of) and the motion's slips
+    (``motion_slips``); a cause that blames the integration only where the student's right-hand side is the
+    reference's (``integration``).  Where those at the simplest span more than ``MAX_FAMILIES`` families, none."""
+    steps = step_slips(scene, evidence, decl) if integration else []
+    found = parameter_slips(scene, evidence, decl, integration)
+    found += steps + [h for h in motion_slips(evidence, decl) if not (steps and h.name.startswith("event"))
+                      and (integration or h.name not in INTEGRATION)]
+    return found if len(_families(found)) <= MAX_FAMILIES else []
+
+
+#: a run whose hypotheses (at their simplest) span more families than this is told no cause: that many causes fit
+#: it alike, and none is known
+MAX_FAMILIES = 2
+
+
+def _families(found: list) -> set:
+    from checks._diagnoses import DIAGNOSES
+
+    if not found:
+        return set()
+    cost = min(h.cost for h in found)
+    return {DIAGNOSES[h.name].family if h.name in DIAGNOSES else h.name for h in found if h.cost == cost}
+
+
 def parameter_variants(motion: dict, args: tuple, sheet) -> list:
-    """``(hypothesis, arguments)`` of the run's parameters (``motion["parameters"]``: ``{"arg": index, "names":
-    (...)}``; ``sheet``: their values where the argument is not given) exchanged in pairs or scaled by the
-    ``PARAMETER_FACTORS``.  Two parameters of equal value are not exchanged: that cannot be told."""
+    """``(hypothesis, arguments)``: the run's arguments varied, each a run of the reference that a slip of the
+    student's would give (every one a function of the run's arguments alone, so the kit's key holds them).
+
+    ``motion["parameters"]``, the run's parameters (``sheet``: their values where an argument is not given):
+
+    * ``{"arg": index, "names": (...)}``, one argument holding them all: exchanged in pairs or scaled by the
+      ``PARAMETER_FACTORS``;
+    * ``{"args": (indices), "names": (...)}``, one argument each: exchanged in pairs (any two, where one at least is
+      not given: the grammar's input slips exchange the given ones), and each given one at the sheet's value (the
+      argument ignored, the module's constant used instead).
+
+    Two parameters of equal value are not exchanged: that cannot be told.  ``motion["variants"]`` (``{"arg":
+    index, "starts": ((i, j), ...), "tolerances": True}``): the reference re-run by the probe from its start with
+    the entries ``i`` and ``j`` exchanged, and by ``solve_ivp`` at the ``LOOSE_TOLERANCES``."""
+    found = []
     spec = motion.get("parameters")
-    if not spec:
-        return []
+    if spec and "arg" in spec:
+        found += _vector_variants(spec, args, sheet)
+    elif spec and "args" in spec:
+        found += _scalar_variants(spec, args, sheet)
+    variants = motion.get("variants")
+    if variants:
+        index = variants["arg"]
+
+        def run_with(variant):
+            new = list(args) + [None] * max(0, index + 1 - len(args))
+            new[index] = variant
+            return tuple(new)
+
+        for i, j in variants.get("starts", ()):
+            found.append((Hypothesis(f"run:start:{i}:{j}", "initial_state", 2,
+                                     f"your run starts from the given state with its entries {i} and {j} exchanged: "
+                                     "the reference's run from there is yours"), run_with(["start", i, j])))
+        if variants.get("tolerances"):
+            for rtol, atol in LOOSE_TOLERANCES:
+                found.append((Hypothesis(f"run:tolerance:{rtol:g}:{atol:g}", "step_size", 2,
+                                         f"your run is the reference's integrated by solve_ivp at rtol = {rtol:g}, "
+                                         f"atol = {atol:g} (its error grows with the tolerance, and so with the "
+                                         "steps it lets the solver take): integrate at the defaults (rtol 1e-3, "
+                                         "atol 1e-6) or tighter"), run_with(["tolerance", rtol, atol])))
+    return found
+
+
+def _vector_variants(spec: dict, args: tuple, sheet) -> list:
     index, names = spec["arg"], tuple(spec["names"])
     given = args[index] if index < len(args) and args[index] is not None else sheet
     values = array_of(given)
@@ -435,21 +608,58 @@ def parameter_variants(motion: dict, args: tuple, sheet) -> list:
     return found
 
 
-def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration) -> list:
-    """The run's parameters exchanged or scaled (``parameter_variants``): the reference re-run so reproduces the
-    student's run over the whole span both cover (and ends where it does), while it differs clearly from the
-    reference's own run."""
+def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
+    indices, names = tuple(spec["args"]), tuple(spec["names"])
+    defaults = array_of(sheet)
+    if defaults is None or defaults.shape != (len(names),):
+        return []
+    given = [index < len(args) and args[index] is not None for index in indices]
+    values = [float(args[index]) if g else float(defaults[k]) for k, (index, g) in enumerate(zip(indices, given))]
+
+    def run_with(changes):
+        new = list(args) + [None] * max(0, max(indices) + 1 - len(args))
+        for k, value in changes.items():
+            new[indices[k]] = value
+        return tuple(new)
+
+    found = []
+    for i, j in itertools.combinations(range(len(names)), 2):
+        if (given[i] and given[j]) or np.isclose(values[i], values[j], rtol=1e-9, atol=0.0):
+            continue
+        found.append((Hypothesis(f"run:swap:{i}:{j}", "argument_order", 2,
+                                 f"{names[i]} and {names[j]} are exchanged: the reference's run with {names[i]} = "
+                                 f"{values[j]:g} and {names[j]} = {values[i]:g} is yours"),
+                      run_with({i: values[j], j: values[i]})))
+    for k, name in enumerate(names):
+        if given[k] and not np.isclose(values[k], defaults[k], rtol=1e-9, atol=0.0):
+            found.append((Hypothesis(f"run:sheet:{k}", "ignored_argument", 2,
+                                     f"{name} = {values[k]:g} is given, but your run is the reference's with the "
+                                     f"sheet's {name} = {defaults[k]:g}: the argument is ignored"),
+                          run_with({k: float(defaults[k])})))
+    return found
+
+
+def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: bool = True) -> list:
+    """The run's arguments varied (``parameter_variants``): the reference re-run so reproduces the student's run
+    over the whole span both cover (and ends where it does), while it differs clearly from the reference's own run.
+    A run at loose tolerances (``step_size``) is told only where the student's right-hand side is the reference's
+    (``integration``)."""
     motion = decl.motion
     spec, source, student = motion.get("parameters"), evidence.source, evidence.student
-    if not spec or source is None or student is None:
+    if not (spec or motion.get("variants")) or source is None or student is None:
         return []
     mine, ours = run_of(student.root, motion), run_of(source.root, motion)
     if mine is None or ours is None:
         return []
-    sheet = scene.reference(spec["sheet"], ()) if spec.get("sheet") else None
+    sheet = scene.reference(spec["sheet"], ()) if spec and spec.get("sheet") else None
     found = []
     for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet):
-        root = scene.reference(source.probe, args, persist=True)
+        if hypothesis.name in INTEGRATION and not integration:
+            continue
+        try:
+            root = scene.reference(source.probe, args, persist=True)
+        except GraderFault:
+            continue  # the reference refuses the varied run (it never ends, say): no hypothesis
         theirs = run_of(root, motion)
         if theirs is not None and _same_run(mine, theirs, evidence.tol) and not _same_run(ours, theirs,
                                                                                            evidence.tol, DISTINCT):

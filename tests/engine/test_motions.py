@@ -80,6 +80,67 @@ REVERSED_PIN = Planted(
     new="    return np.array(q_minus, dtype=float), -qd_minus, float(Lam[0])",
     check="p47.plastic_impact", diagnosis="", message="")
 
+#: solve_ivp at tolerances far looser than its defaults: the reference re-run so is the student's run (its error
+#: grows with the tolerance), and the right-hand side agrees: a step-size cause
+LOOSE_BAR = Planted(
+    name="motions-p44-loose-tolerances", problem=44, file="problem_44.py",
+    old="events=[make_contact_event(s, d)], rtol=1e-10, atol=1e-12)",
+    new="events=[make_contact_event(s, d)], rtol=1e-1, atol=1e-1)",
+    check="p44.event", diagnosis="step_size", message="rtol = 0.1, atol = 0.1")
+#: the start speed and the gravity exchanged (g is not given: the sheet's)
+V0_AND_G_EXCHANGED = Planted(
+    name="motions-p42-v0-and-g-exchanged", problem=42, file="problem_42.py",
+    old="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, v0], args=(drag, g),",
+    new="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, g], args=(drag, v0),",
+    check="p42.flight", diagnosis="argument_order", message="v0 and g are exchanged")
+#: the module's V0 thrown whatever v0 is given: the sheet's ball is right, a random one is the sheet's speed
+V0_IGNORED = Planted(
+    name="motions-p42-v0-ignored", problem=42, file="problem_42.py",
+    old="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, v0], args=(drag, g),",
+    new="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, V0], args=(drag, g),",
+    check="p42.flight_random", diagnosis="ignored_argument", message="the argument is ignored")
+#: the rates at the event read from the position rows of the event's state
+EVENT_RATES_FROM_POSITIONS = Planted(
+    name="motions-p44-event-rates-from-positions", problem=44, file="problem_44.py",
+    old="q_event=y_event[:3], qd_event=y_event[3:])",
+    new="q_event=y_event[:3], qd_event=y_event[:3])",
+    check="p44.event", diagnosis="state_row", message="its q_event")
+#: the walker's angles read from the rate rows: its energy drifts too, which is not the integration's
+ANGLES_FROM_RATE_ROWS = Planted(
+    name="motions-p38-angles-from-rate-rows", problem=38, file="problem_38.py",
+    old='return {"t": result.t, "q": result.y[:2].T, "qd": result.y[2:].T}',
+    new='return {"t": result.t, "q": result.y[2:].T, "qd": result.y[2:].T}',
+    check="p38.walker_run", diagnosis="state_row", message="q[0] is the reference's qd[0]")
+#: the arm's rates read from the angle columns: its start looks wrong only because of the columns returned
+RATES_FROM_ANGLE_COLUMNS = Planted(
+    name="motions-p37-rates-from-angle-columns", problem=37, file="problem_37.py",
+    old='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}',
+    new='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, :3]}',
+    check="p37.computed_torques_run", diagnosis="state_row", message="qd[0] is the reference's q[0]")
+#: the apex event reads the height: only one event reads the other row, the two are not exchanged
+APEX_ON_THE_HEIGHT = Planted(
+    name="motions-p42-apex-on-the-height", problem=42, file="problem_42.py",
+    old="    def apex(t, y, *args):\n        return y[1]",
+    new="    def apex(t, y, *args):\n        return y[0]",
+    check="p42.events", diagnosis="state_row", message="apex reads the other row")
+#: a near miss of a state read from the wrong rows: the walker started with its rates negated is a wrong start
+RATES_NEGATED_AT_THE_START = Planted(
+    name="motions-p38-start-rates-negated", problem=38, file="problem_38.py",
+    old="y0 = np.concatenate([np.asarray(q0, dtype=float), np.asarray(qd0, dtype=float)])",
+    new="y0 = np.concatenate([np.asarray(q0, dtype=float), -np.asarray(qd0, dtype=float)])",
+    check="p38.walker_run", diagnosis="initial_state", message="")
+#: a near miss of a run at loose tolerances: gravity 5% too strong in the run's arguments (the right-hand side
+#: agrees, the run is off); no run of the reference's at a looser tolerance is it
+STRONGER_GRAVITY = Planted(
+    name="motions-p44-stronger-gravity", problem=44, file="problem_44.py",
+    old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
+    new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, 1.05 * g),",
+    check="p44.event", diagnosis="", message="")
+
+RUN_SLIPS = [LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED, EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS,
+             RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT, RATES_NEGATED_AT_THE_START]
+NEAR_MISSES = [STRONGER_GRAVITY]
+
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
             MASS_AND_INERTIA_EXCHANGED]
 
@@ -92,7 +153,8 @@ def strict(monkeypatch):
 
 @pytest.fixture(scope="module")
 def slot():
-    yield from warm_slot(sorted({m.problem for m in MISTAKES + [REVERSED_WIRE, REVERSED_PIN]}))
+    yield from warm_slot(sorted({m.problem for m in MISTAKES + RUN_SLIPS + NEAR_MISSES
+                                 + [REVERSED_WIRE, REVERSED_PIN]}))
 
 
 def graded(mistake, tmp_path, kit_oracle, deferred_ids, slot):
@@ -110,6 +172,26 @@ def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, sl
     target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
     assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
     assert mistake.message in target.hint, target.hint
+
+
+@pytest.mark.parametrize("mistake", RUN_SLIPS, ids=lambda m: m.name)
+def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    """Slips of the run, not of its model: the run's arguments exchanged or ignored, solve_ivp's tolerances
+    loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
+    the other row; and a wrong start, which a state read from the wrong rows must not be mistaken for."""
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
+    assert mistake.message in target.hint, target.hint
+
+
+@pytest.mark.parametrize("mistake", NEAR_MISSES, ids=lambda m: m.name)
+def test_a_run_off_for_another_reason_is_not_told_as_its_tolerances(mistake, tmp_path, kit_oracle, deferred_ids,
+                                                                      slot):
+    """A run whose arguments are off by a factor no hypothesis tries: its right-hand side agrees and the run
+    leaves the reference's, but no run at looser tolerances, no exchange and no wrong row is it."""
+    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    told = set(families_of(target.diagnosis))
+    assert not told & (INTEGRATION | {"state_row", "order", "initial_state"}), (target.diagnosis, target.hint)
 
 
 @pytest.mark.parametrize("mistake", [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR],
@@ -233,3 +315,86 @@ def test_parameters_of_equal_value_are_never_exchanged():
     assert {"run:swap:0:2", "run:swap:1:2"} <= keys
     keys = {h.key for h, _ in parameter_variants(motion, (None,), (1.5, 2.5, 9.81))}
     assert "run:swap:0:1" in keys
+
+
+def test_parameters_given_one_argument_each_are_exchanged_only_where_one_is_the_sheets():
+    """A run's parameters given one argument each: two given ones are the grammar's to exchange (its input slips),
+    so the run's tier exchanges a pair only where one takes the sheet's value; a given one is also tried at the
+    sheet's value (ignored), where it differs from it."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g")}}
+    variants = dict((h.key, args) for h, args in parameter_variants(motion, (10.0, 0.1), (10.0, 0.1, 9.81)))
+    assert set(variants) == {"run:swap:0:2", "run:swap:1:2"}, variants
+    assert variants["run:swap:0:2"] == (9.81, 0.1, 10.0)
+    variants = dict((h.key, args) for h, args in parameter_variants(motion, (20.0, 0.3), (10.0, 0.1, 9.81)))
+    assert variants["run:sheet:0"] == (10.0, 0.3, None) and variants["run:sheet:1"] == (20.0, 0.1, None)
+    assert "run:sheet:2" not in variants
+    # v0 = g: their exchange cannot be told
+    assert "run:swap:0:2" not in {h.key for h, _ in parameter_variants(motion, (9.81, 0.1), (10.0, 0.1, 9.81))}
+
+
+def test_run_variants_are_functions_of_the_arguments():
+    """The start's entries exchanged and the looser tolerances are asked of the probe by its own variant argument,
+    after the run's arguments (the kit's key holds them: they depend on nothing of the student's)."""
+    from grader.diagnosis.runs import LOOSE_TOLERANCES, parameter_variants
+
+    motion = {"variants": {"arg": 3, "starts": ((0, 1),), "tolerances": True}}
+    found = parameter_variants(motion, (10.0, 0.1), None)
+    assert [args for _, args in found][0] == (10.0, 0.1, None, ["start", 0, 1])
+    assert [h.name for h, _ in found] == ["initial_state"] + ["step_size"] * len(LOOSE_TOLERANCES)
+    assert all(args[:3] == (10.0, 0.1, None) for _, args in found)
+
+
+def test_events_exchanged_are_told_apart_from_events_found_late():
+    from grader.diagnosis.runs import exchanged_events
+
+    expected = {"t_apex": 0.9, "t_land": 1.7}
+    band = Tol("event time", 2e-3)
+    assert exchanged_events({"t_apex": 1.7, "t_land": 0.9}, expected, ("t_apex", "t_land"), band) == ("t_apex",
+                                                                                                       "t_land")
+    assert exchanged_events({"t_apex": 0.95, "t_land": 1.75}, expected, ("t_apex", "t_land"), band) is None
+    assert exchanged_events({"t_apex": 1.7, "t_land": None}, expected, ("t_apex", "t_land"), band) is None
+    # two events at one time: no exchange can be told
+    assert exchanged_events({"t_apex": 1.0, "t_land": 1.0}, {"t_apex": 1.0, "t_land": 1.0}, ("t_apex", "t_land"),
+                            band) is None
+
+
+def test_a_row_read_from_a_column_that_is_zero_is_not_told():
+    """A state that stays zero tells no row: a run that returns zeros for it is not told as read from there."""
+    from grader.diagnosis.runs import reread
+
+    t = np.linspace(0.0, 1.0, 11)
+    R = {"q": np.column_stack([np.sin(t), np.zeros_like(t)]), "qd": np.column_stack([np.cos(t), 2 * t])}
+    tol = Tol("band", 1e-3)
+    found = reread({"q": R["q"], "qd": np.column_stack([np.cos(t), np.sin(t)])}, R, ("q", "qd"), tol)
+    assert found is not None and "qd[1] is the reference's q[0]" in found.detail, found
+    assert reread({"q": R["q"], "qd": np.column_stack([np.cos(t), np.zeros_like(t)])}, R, ("q", "qd"), tol) is None
+    assert reread(R, R, ("q", "qd"), tol) is None
+
+
+def _event_evidence(student_event, student_value):
+    """The rates at an event of a stand-in run: the student's event time and rates, against the reference's."""
+    from grader.diagnosis import Declaration, Source
+
+    t = np.linspace(0.0, 1.0, 11)
+    ours = {"t": t, "q": np.column_stack([t, t * t]), "qd": np.column_stack([np.ones_like(t), 2 * t]),
+            "t_event": 1.0, "q_event": np.array([1.0, 1.0]), "qd_event": np.array([1.0, 2.0])}
+    mine = dict(ours, t_event=student_event, qd_event=np.asarray(student_value, dtype=float))
+    decl = Declaration(motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",),
+                               "at_events": {"q_event": ("t_event", "q"), "qd_event": ("t_event", "qd")}})
+    evidence = Evidence(mine["qd_event"], ours["qd_event"], Tol("qd at the event", 1e-3), "qd_event",
+                        source=Source("stub.run", (), ("qd_event",), ours),
+                        student=Source("stub.run", (), ("qd_event",), mine))
+    return evidence, decl
+
+
+def test_a_state_at_an_event_is_read_from_its_rows_only_where_the_event_agrees():
+    from grader.diagnosis.runs import event_state_slips
+
+    evidence, decl = _event_evidence(1.0, [1.0, 1.0])  # the rates are the positions at the event
+    assert [h.name for h in event_state_slips(evidence, decl)] == ["state_row"]
+    evidence, decl = _event_evidence(1.2, [1.0, 1.0])  # the event itself is found late: its rows tell nothing
+    assert event_state_slips(evidence, decl) == []
+    evidence, decl = _event_evidence(1.0, [1.0, 3.0])  # no row of the state at the event
+    assert event_state_slips(evidence, decl) == []
