@@ -247,7 +247,7 @@ SLIPS = {
     "accumulated": ("missing_term", "a sum that `{f}` accumulates keeps only its last term"),
     "components": ("swapped", "two components of a vector are exchanged in one expression of `{f}`"),
     "count": ("wrong_factor", "`{f}` divides by the number of entries where their sum belongs"),
-    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum itself belongs"),
+    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
 }
 
 
@@ -449,9 +449,24 @@ def _moved(node: ast.BinOp):
     return node
 
 
-def _own_transpose(node: ast.BinOp) -> bool:
-    """A product of a matrix with its own transpose at the two factors that meet (``J.T @ J``)."""
-    (left, lfield), (right, rfield) = _meeting(node)
+def _ends(node: ast.BinOp):
+    """The first and the last factor of a product (``J.T`` and ``J`` of ``J.T @ I @ J``), with their holders."""
+    return _edge(node, "left"), _edge(node, "right")
+
+
+def _flipped(node, ends):
+    """``node`` with the transpose moved from one end of its product to the other (changed in place)."""
+    (left, lfield), (right, rfield) = ends
+    a, b = getattr(left, lfield), getattr(right, rfield)
+    setattr(left, lfield, a.value if _transposed_leaf(a) else _transposed(a))
+    setattr(right, rfield, b.value if _transposed_leaf(b) else _transposed(b))
+    return node
+
+
+def _own_transpose(node: ast.BinOp, factors=None) -> bool:
+    """A product of a matrix with its own transpose at the two factors that meet (``J.T @ J``), or at
+    ``factors``."""
+    (left, lfield), (right, rfield) = factors or _meeting(node)
     a, b = getattr(left, lfield), getattr(right, rfield)
     if _transposed_leaf(a) == _transposed_leaf(b):
         return False
@@ -499,6 +514,8 @@ def _binop_slips(node: ast.BinOp):
     elif isinstance(op, ast.MatMult):
         if _movable(node):
             yield "sides", _moved
+        if _own_transpose(node, _ends(node)):  # ``J.T @ I @ J`` as ``J @ I @ J.T``
+            yield "sides", lambda n: _flipped(n, _ends(n))
         # ``X.T @ X`` the other way round is ``X @ X.T``: the transpose on the wrong factor
         yield "sides" if _own_transpose(node) else "factors", lambda n: _with(n, left=n.right, right=n.left)
         for side, other in (("left", "right"), ("right", "left")):
