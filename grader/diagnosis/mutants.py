@@ -245,7 +245,9 @@ SLIPS = {
     "solved": ("multiplied_not_solved", "`{f}` multiplies by a matrix where it should solve with it"),
     "inverse": ("no_inverse", "`{f}` uses a matrix where its inverse belongs"),
     "accumulated": ("missing_term", "a sum that `{f}` accumulates keeps only its last term"),
-    "components": ("swapped", "two components of a vector are exchanged in one expression of `{f}`"),
+    "components": ("swapped", "two quantities of one kind (two components of a vector, two gains, ...) are "
+                              "exchanged in one expression of `{f}`"),
+    "returned_degrees": ("degrees", "`{f}` returns an angle in degrees"),
     "count": ("wrong_factor", "`{f}` divides by the number of entries where their sum belongs"),
     "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
 }
@@ -299,6 +301,9 @@ def _slips(node, parent):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
+    if isinstance(node, ast.Return):
+        for k in _returned_names(node):  # ``np.array([x, y, gamma])`` with gamma in degrees
+            yield "returned_degrees", lambda n, k=k: _in_degrees(n, k)
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):
         if _trigs(node) >= {"sin", "cos"}:
             yield "trigs", _all_trigs_exchanged
@@ -333,19 +338,25 @@ def _reads(node, parent) -> list:
     return list(node.elts)
 
 
-#: the last part of a name that says which component of a vector it is (``r_x``, ``a_y``, ``q1``)
-_COMPONENT = re.compile(r"^(\w*?)_?([xyz]|[1-6])$")
+#: the part of a name that tells one of a kind from another, at most this long (``x`` of ``r_x``, ``P`` of
+#: ``P_GAIN``, ``2`` of ``m2``)
+_KIND = 2
+
+
+def _of_a_kind(a: str, b: str) -> bool:
+    """Two names of one kind: they differ in one short part between underscores (``r_x``, ``r_y``; ``P_GAIN``,
+    ``D_GAIN``) or in a last digit or axis (``m1``, ``m2``)."""
+    first, second = a.split("_"), b.split("_")
+    if len(first) == len(second) > 1:
+        differ = [(x, y) for x, y in zip(first, second) if x != y]
+        return len(differ) == 1 and all(0 < len(part) <= _KIND for part in differ[0])
+    return len(a) > 1 and a[:-1] == b[:-1] and all(c in "xyz123456" for c in (a[-1], b[-1]))
 
 
 def _components(statement) -> list:
-    """Pairs of names of one statement that are two components of one vector (``r_x`` and ``r_y``)."""
+    """Pairs of names of one statement that are two of a kind (two components of one vector, two gains)."""
     names = sorted({n.id for n in ast.walk(statement) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)})
-    stems = {}
-    for name in names:
-        found = _COMPONENT.match(name)
-        if found and found.group(1):
-            stems.setdefault(found.group(1), []).append(name)
-    return [(group[i], group[j]) for group in stems.values() for i, j in _pairs(len(group))]
+    return [(names[i], names[j]) for i, j in _pairs(len(names)) if _of_a_kind(names[i], names[j])]
 
 
 def _renamed_in(statement, a: str, b: str):
@@ -353,6 +364,26 @@ def _renamed_in(statement, a: str, b: str):
     for node in ast.walk(statement):
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
             node.id = b if node.id == a else a if node.id == b else node.id
+    return statement
+
+
+def _returned_list(statement: ast.Return):
+    """The list or tuple a return statement builds (itself, or the first argument of ``np.array(...)``)."""
+    value = statement.value
+    if isinstance(value, ast.Call) and _callee(value) == "array" and value.args:
+        value = value.args[0]
+    return value if isinstance(value, (ast.List, ast.Tuple)) and len(value.elts) <= 6 else None
+
+
+def _returned_names(statement: ast.Return) -> list:
+    """The entries of a returned list that are names (an angle among them may be returned in degrees)."""
+    built = _returned_list(statement)
+    return [] if built is None else [k for k, e in enumerate(built.elts) if isinstance(e, ast.Name)]
+
+
+def _in_degrees(statement: ast.Return, k: int):
+    built = _returned_list(statement)
+    built.elts[k] = ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "rad2deg", ast.Load()), [built.elts[k]], [])
     return statement
 
 
@@ -390,6 +421,23 @@ def _state_parts(function: ast.FunctionDef) -> set:
             and len(target.elts) == len(value.elts) else [(target, value)]
         found |= {t.id for t, v in pairs if isinstance(t, ast.Name) and _state_read(v)}
     return found
+
+
+def _skews(function: ast.FunctionDef) -> set:
+    """The names the function binds to a skew matrix (``lever = skew(r)``)."""
+    return {t.id for node in ast.walk(function) if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call)
+            and _callee(node.value) == "skew" for t in node.targets if isinstance(t, ast.Name)}
+
+
+def _skew(node, skews: set, slip: str = "transpose") -> bool:
+    """A skew matrix, or its transpose (``skew(r)``, ``lever.T`` where ``lever = skew(r)``); for the slips of a
+    product, a factor of it."""
+    if slip != "transpose" and isinstance(node, ast.BinOp):
+        return _skew(node.left, skews) or _skew(node.right, skews)
+    if isinstance(node, ast.Attribute) and node.attr == "T":
+        node = node.value
+    return (isinstance(node, ast.Call) and _callee(node) == "skew") or (isinstance(node, ast.Name)
+                                                                        and node.id in skews)
 
 
 def _reciprocal(node) -> bool:
@@ -553,7 +601,7 @@ def _call_slips(node: ast.Call):
     if callee in ("inv", "solve") or any(isinstance(a, ast.Starred) for a in args):
         return
     positional = args[:4]
-    for i, j in _pairs(len(positional)):
+    for i, j in _pairs(len(args[:6])):
         exchange = "rows" if _state_read(args[i]) and _state_read(args[j]) else \
             "cross" if callee == "cross" else "arguments"
         yield exchange, lambda n, i=i, j=j: _exchanged(n, "args", i, j)
@@ -640,7 +688,7 @@ def _mutated(function: _Function, lines: tuple):
              for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
              if guarded in (False, ITERABLE) and _in(node, lines)]
     seen = {ast.dump(function.node)}
-    parts = _state_parts(function.node)
+    parts, skews = _state_parts(function.node), _skews(function.node)
     for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
         slips = _parameter_slips(function.node, lines) if index is None else _slips(node, parent)
         for slip, edit in slips:
@@ -649,6 +697,8 @@ def _mutated(function: _Function, lines: tuple):
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             if isinstance(edit, tuple) and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
+            if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
+                slip = "sign"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
             tree = copy.deepcopy(function.node)
             if isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])

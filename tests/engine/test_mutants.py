@@ -178,6 +178,10 @@ OPERATORS = [
      "gamma += angle\n    return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), gamma])",
      "gamma += angle\n    return np.array([x - d * np.cos(gamma), y + d * np.sin(gamma), gamma])", "problem_22.loop",
      ARMS, (), "sin_cos_swapped", "`end_effector_loop` takes sin where cos belongs and cos where sin belongs"),
+    ("an angle returned in degrees", "p22.loop_values", "planar.py",
+     "gamma += angle\n    return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), gamma])",
+     "gamma += angle\n    return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), np.rad2deg(gamma)])",
+     "problem_22.loop", ARMS, (), "degrees", "`end_effector_loop` returns an angle in degrees"),
     ("a sum that keeps only its last term", "p22.loop_values", "planar.py", "y += length * np.cos(gamma)",
      "y = length * np.cos(gamma)", "problem_22.loop", ARMS, (), "missing_term",
      "a sum that `end_effector_loop` accumulates keeps only its last term"),
@@ -364,6 +368,41 @@ def gram(J, K):
     # BEGIN SOLUTION problem 98
     return J.T @ J + 2.0 * np.eye(3), J.T @ K
     # END SOLUTION
+
+
+P_GAIN, D_GAIN = 4.0, 1.5
+
+
+def skew(w):
+    """The cross-product matrix (given)."""
+    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+
+def track(q, qd, q_des, qd_des):
+    """A PD law with the module's gains."""
+    # BEGIN SOLUTION problem 98
+    return P_GAIN * (q_des - q) + D_GAIN * (qd_des - qd)
+    # END SOLUTION
+
+
+def transport(r, w, v):
+    """``v - r x w + r / 2`` by a cross-product matrix."""
+    # BEGIN SOLUTION problem 98
+    lever = skew(r)
+    return v - lever @ w + 0.5 * r
+    # END SOLUTION
+
+
+def sextet(a, b, c, d, e, f):
+    """A weighted sum of six arguments."""
+    # BEGIN SOLUTION problem 98
+    return weigh(a, b, c, d, 2.0 * e, f)
+    # END SOLUTION
+
+
+def weigh(a, b, c, d, e, f):
+    """(given)"""
+    return a + 2.0 * b + 3.0 * c + 5.0 * d + 7.0 * e + 11.0 * f
 
 
 def loads(m1, m2, points):
@@ -571,7 +610,7 @@ def test_two_components_exchanged_in_one_expression_are_swapped(made_up):
 
     names, found = names_of(made_up, "moment", exchanged, [(1.0, -2.0, 0.5, 0.7), (0.3, 0.8, -1.2, 0.4)])
     assert names == {"swapped"}, [(h.name, h.detail) for h in found]
-    assert any("two components of a vector are exchanged in one expression of `moment`" in h.detail for h in found)
+    assert any("are exchanged in one expression of `moment`" in h.detail for h in found)
 
 
 def test_a_matrix_for_its_inverse_is_an_inverse_slip(made_up):
@@ -606,6 +645,38 @@ def test_an_exchange_inside_a_loops_iterable_is_tried(made_up):
     names, found = names_of(made_up, "loads", exchanged, inputs)
     assert names == {"swapped"}, [(h.name, h.detail) for h in found]
     assert any("two entries that `loads` builds are exchanged" in h.detail for h in found)
+
+
+def test_two_gains_exchanged_in_one_expression_are_swapped(made_up):
+    """``D_GAIN (q_des - q) + P_GAIN (qd_des - qd)``: two constants of one kind exchanged."""
+    def exchanged(q, qd, q_des, qd_des):
+        return 1.5 * (q_des - q) + 4.0 * (qd_des - qd)
+
+    names, found = names_of(made_up, "track", exchanged, [(V(0.5, -1.0), V(2.0, 0.4), V(0.1, 0.2), V(-0.3, 0.9)),
+                                                           (V(1.2, 0.3), V(-0.5, 0.8), V(0.7, -1.1), V(0.4, 0.6))])
+    assert names == {"swapped"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_skew_matrix_transposed_is_a_sign_slip(made_up):
+    """``v + lever @ w`` for ``v - lever @ w``: the sign of a term, or ``lever.T @ w`` or ``w @ lever`` (a skew
+    matrix transposed is the matrix negated): one family, a sign, never a transpose or the factors' order."""
+    def flipped(r, w, v):
+        return v + np.cross(r, w) + 0.5 * r
+
+    names, found = names_of(made_up, "transport", flipped, [(V(0.5, -1.0, 2.0), V(0.1, 0.2, 0.3), V(1.0, 0.0, 0.5)),
+                                                             (V(1.2, 0.3, -0.4), V(-0.5, 0.8, 0.2), V(0.3, 0.3, 0.1))])
+    assert names == {"sign_flip"}, [(h.name, h.detail) for h in found]
+
+
+def test_two_late_arguments_of_a_call_exchanged_are_tried(made_up):
+    """The fifth and the sixth argument of a call exchanged."""
+    def exchanged(a, b, c, d, e, f):
+        return a + 2.0 * b + 3.0 * c + 5.0 * d + 7.0 * f + 22.0 * e
+
+    names, found = names_of(made_up, "sextet", exchanged, [(1.0, 2.0, 3.0, 4.0, 5.0, 6.0),
+                                                            (0.5, -1.0, 0.3, 2.0, -0.7, 1.9)])
+    assert "argument_order" in names and {DIAGNOSES[n].family for n in names} == {"order"}, names
+    assert any("two arguments of a call in `sextet` are exchanged" in h.detail for h in found)
 
 
 # ------------------------------------------------------------------------------------------ graded
