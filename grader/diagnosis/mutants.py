@@ -8,8 +8,13 @@ check (or of a neighbouring problem: one region may serve two of the sheet's pro
 runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6).
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
-missing, two arguments, factors or entries exchanged, a number doubled or halved, ``/`` for ``*``, a square or a
-square root missing, sin for cos, degrees, a transpose, a neighbouring index, two names exchanged).  A mutant is
+missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
+``*``, a square or a square root missing or added, sin for cos (in one call, or throughout one expression),
+degrees, a transpose or one on the wrong factor, a neighbouring index, two names exchanged (throughout, or two of a
+kind in one expression), a solve or an inverse left out, a sum that keeps only its last term, a count for a sum).
+A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
+exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
+matrix transposed is a sign; inside a loop's iterable only exchanges are made.  A mutant is
 kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the
 second one (and on a third where the engine can draw one), and differs from the expected value (an equivalent
 mutant says nothing).  A slip inside an index is one of the index.  A cause is named only when

@@ -195,8 +195,9 @@ OPERATORS = [
      "return m / 12 * np.diag([np.sqrt(b**2 + c**2),", "problem_16.body", CUBOIDS, (), "wrong_factor",
      "`cuboid_inertia` takes a square root of a sum of squares where the sum belongs"),
     ("a count for a sum", "p16.second_moments", "inertia.py", "second = 0.5 * (moments.sum() - 2.0 * moments)",
-     "second = 0.5 * (len(moments) - 2.0 * moments)", "problem_16.dimensions", [(2.0, 0.5, 0.6, 0.7), (0.5, 0.4, 0.5, 0.8)],
-     ("cuboid",), "wrong_factor", "`principal_second_moments` divides by the number of entries where their sum belongs"),
+     "second = 0.5 * (len(moments) - 2.0 * moments)", "problem_16.dimensions",
+     [(2.0, 0.5, 0.6, 0.7), (0.5, 0.4, 0.5, 0.8)], ("cuboid",), "wrong_factor",
+     "`principal_second_moments` divides by the number of entries where their sum belongs"),
 ]
 
 
