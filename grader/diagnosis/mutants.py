@@ -8,8 +8,13 @@ check (or of a neighbouring problem: one region may serve two of the sheet's pro
 runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6).
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
-missing, two arguments, factors or entries exchanged, a number doubled or halved, ``/`` for ``*``, a square or a
-square root missing, sin for cos, degrees, a transpose, a neighbouring index, two names exchanged).  A mutant is
+missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
+``*``, a square or a square root missing or added, sin for cos (in one call, or throughout one expression),
+degrees, a transpose or one on the wrong factor, a neighbouring index, two names exchanged (throughout, or two of a
+kind in one expression), a solve or an inverse left out, a sum that keeps only its last term, a count for a sum).
+A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
+exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
+matrix transposed is a sign; inside a loop's iterable only exchanges are made.  A mutant is
 kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the
 second one (and on a third where the engine can draw one), and differs from the expected value (an equivalent
 mutant says nothing).  A slip inside an index is one of the index.  A cause is named only when
@@ -76,6 +81,12 @@ _END = re.compile(r"#\s*END SOLUTION")
 _ROTATION = re.compile(r"^(A_\w+|A|R[123]?|R_\w+|rotation\w*|expm_skew)$")
 _TRIG = {"sin": "cos", "cos": "sin"}
 _DEGREES = ("radians", "deg2rad")
+#: the guard of a loop's iterable: exchanges only (a permuted iterable runs the loop as often)
+ITERABLE = "iterable"
+#: the slips made inside a loop's iterable
+_EXCHANGES = frozenset({"entries", "arguments", "blocks", "rows", "names"})
+#: a run's state by the course's notation (``y`` of ``fun(t, y)`` and of solve_ivp's result, ``y_event``)
+_STATE = re.compile(r"^(y|y_\w+|state)$")
 
 
 class _Timeout(BaseException):
@@ -169,19 +180,23 @@ def _definitions(tree: ast.Module):
 
 def _walk(node, guarded=False, indexing=False):
     """``(node, guarded, indexing)`` in pre-order; ``guarded``: inside a loop's bounds or a condition, never
-    mutated; ``indexing``: inside an index (``q[2 * k - 1]``), where every slip is one of the index."""
+    mutated (``ITERABLE``: inside the iterable of a loop, where only an exchange is made: the loop runs as often);
+    ``indexing``: inside an index (``q[2 * k - 1]``), where every slip is one of the index."""
     yield node, guarded, indexing
     for field, value in ast.iter_fields(node):
-        guard = guarded or _guards(node, field)
+        guard = guarded if guarded is True else (_guards(node, field) or guarded)
         index = indexing or (isinstance(node, ast.Subscript) and field == "slice")
         for item in value if isinstance(value, list) else [value]:
             if isinstance(item, ast.AST):
                 yield from _walk(item, guard, index)
 
 
-def _guards(node, field: str) -> bool:
-    return ((isinstance(node, ast.For) and field == "iter") or (isinstance(node, (ast.While, ast.If, ast.IfExp))
-            and field == "test") or isinstance(node, (ast.comprehension, ast.Raise, ast.Assert))
+def _guards(node, field: str):
+    """True where nothing is mutated, ``ITERABLE`` in the iterable of a loop, else False."""
+    if (isinstance(node, (ast.For, ast.comprehension)) and field == "iter"):
+        return ITERABLE
+    return ((isinstance(node, (ast.While, ast.If, ast.IfExp)) and field == "test")
+            or isinstance(node, (ast.comprehension, ast.Raise, ast.Assert))
             or (isinstance(node, ast.Call) and _callee(node) in ("range", "len", "reshape", "zeros", "ones", "eye",
                                                                  "empty", "full", "linspace", "arange")))
 
@@ -228,6 +243,18 @@ SLIPS = {
     "parameters": ("argument_order", "two of the arguments of `{f}` are exchanged"),
     "factors": ("factor_order", "two factors of a product in `{f}` are multiplied the other way round"),
     "entries": ("swapped", "two entries that `{f}` builds are exchanged"),
+    "blocks": ("argument_order", "two groups of arguments of a call in `{f}` are exchanged"),
+    "sides": ("transpose", "a product in `{f}` transposes the wrong factor"),
+    "trigs": ("sin_cos_swapped", "`{f}` takes sin where cos belongs and cos where sin belongs in one expression"),
+    "rows": ("state_row", "`{f}` reads a part of the state from the wrong rows"),
+    "solved": ("multiplied_not_solved", "`{f}` multiplies by a matrix where it should solve with it"),
+    "inverse": ("no_inverse", "`{f}` uses a matrix where its inverse belongs"),
+    "accumulated": ("missing_term", "a sum that `{f}` accumulates keeps only its last term"),
+    "components": ("swapped", "two quantities of one kind (two components of a vector, two gains, ...) are "
+                              "exchanged in one expression of `{f}`"),
+    "returned_degrees": ("degrees", "`{f}` returns an angle in degrees"),
+    "count": ("wrong_factor", "`{f}` divides by the number of entries where their sum belongs"),
+    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
 }
 
 
@@ -259,6 +286,8 @@ def _slips(node, parent):
         other = ast.Sub() if isinstance(node.op, ast.Add) else ast.Add()
         yield "sign", lambda n: _with(n, op=other)
         yield "term", lambda n: ast.Pass()
+        if isinstance(node.target, ast.Name):
+            yield "accumulated", _assigned
     elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
         yield "sign", lambda n: n.operand
     elif isinstance(node, ast.Call):
@@ -267,15 +296,247 @@ def _slips(node, parent):
         yield "transpose", lambda n: n.value
     elif isinstance(node, (ast.Tuple, ast.List)) and 2 <= len(node.elts) <= 6 \
             and not any(isinstance(e, ast.Starred) for e in node.elts):
+        reads = _reads(node, parent)
         for i, j in _pairs(len(node.elts)):
-            yield "entries", lambda n, i=i, j=j: _exchanged(n, "elts", i, j)
+            exchange = "rows" if _state_read(reads[i]) and _state_read(reads[j]) else "entries"
+            yield exchange, lambda n, i=i, j=j: _exchanged(n, "elts", i, j)
+        if all(_reciprocal(e) for e in node.elts):
+            yield "inverse", lambda n: _with(n, elts=[e.right for e in n.elts])
     elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
         yield from _index_slips(node)
+        if _state_read(node) and _half(node.slice):
+            yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
+    if isinstance(node, ast.Return):
+        for k in _returned_names(node):  # ``np.array([x, y, gamma])`` with gamma in degrees
+            yield "returned_degrees", lambda n, k=k: _in_degrees(n, k)
+    if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):
+        if _trigs(node) >= {"sin", "cos"}:
+            yield "trigs", _all_trigs_exchanged
+        for a, b in _components(node):
+            yield "components", lambda n, a=a, b=b: _renamed_in(n, a, b)
     if isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Add, ast.Sub, ast.Mult, ast.MatMult)) \
             and isinstance(node, (ast.Name, ast.Attribute, ast.Subscript, ast.Call)):
         yield "sign", _negated
         if isinstance(parent.op, ast.MatMult) and not (isinstance(node, ast.Attribute) and node.attr == "T"):
             yield "transpose", _transposed
+
+
+def _assigned(node: ast.AugAssign):
+    """``s += x`` as ``s = x`` (``s -= x`` as ``s = -x``): a sum that keeps only its last term."""
+    value = node.value if isinstance(node.op, ast.Add) else _negated(node.value)
+    return ast.copy_location(ast.Assign([ast.Name(node.target.id, ast.Store())], value), node)
+
+
+def _state_read(node) -> bool:
+    """A read of a part of a run's state (``y[:3]``, ``result.y[3:].T``, ``y_event[0]``)."""
+    while isinstance(node, ast.Attribute) and node.attr == "T":
+        node = node.value
+    return isinstance(node, ast.Subscript) and bool(_STATE.match(_label(node.value) or "-"))
+
+
+def _reads(node, parent) -> list:
+    """What each entry of a tuple or list reads: its own value, or for the names a tuple assigns
+    (``q, qd = y[:3], y[3:]``) the values assigned to them."""
+    if isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign) and isinstance(parent.value, ast.Tuple) \
+            and len(parent.value.elts) == len(node.elts):
+        return list(parent.value.elts)
+    return list(node.elts)
+
+
+#: the part of a name that tells one of a kind from another, at most this long (``x`` of ``r_x``, ``P`` of
+#: ``P_GAIN``, ``2`` of ``m2``)
+_KIND = 2
+
+
+def _of_a_kind(a: str, b: str) -> bool:
+    """Two names of one kind: they differ in one short part between underscores (``r_x``, ``r_y``; ``P_GAIN``,
+    ``D_GAIN``) or in a last digit or axis (``m1``, ``m2``)."""
+    first, second = a.split("_"), b.split("_")
+    if len(first) == len(second) > 1:
+        differ = [(x, y) for x, y in zip(first, second) if x != y]
+        return len(differ) == 1 and all(0 < len(part) <= _KIND for part in differ[0])
+    return len(a) > 1 and a[:-1] == b[:-1] and all(c in "xyz123456" for c in (a[-1], b[-1]))
+
+
+def _components(statement) -> list:
+    """Pairs of names of one statement that are two of a kind (two components of one vector, two gains)."""
+    names = sorted({n.id for n in ast.walk(statement) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)})
+    return [(names[i], names[j]) for i, j in _pairs(len(names)) if _of_a_kind(names[i], names[j])]
+
+
+def _renamed_in(statement, a: str, b: str):
+    """``a`` for ``b`` and ``b`` for ``a`` in one statement's reads (the copy is changed in place)."""
+    for node in ast.walk(statement):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            node.id = b if node.id == a else a if node.id == b else node.id
+    return statement
+
+
+def _returned_list(statement: ast.Return):
+    """The list or tuple a return statement builds (itself, or the first argument of ``np.array(...)``)."""
+    value = statement.value
+    if isinstance(value, ast.Call) and _callee(value) == "array" and value.args:
+        value = value.args[0]
+    return value if isinstance(value, (ast.List, ast.Tuple)) and len(value.elts) <= 6 else None
+
+
+def _returned_names(statement: ast.Return) -> list:
+    """The entries of a returned list that are names (an angle among them may be returned in degrees)."""
+    built = _returned_list(statement)
+    return [] if built is None else [k for k, e in enumerate(built.elts) if isinstance(e, ast.Name)]
+
+
+def _in_degrees(statement: ast.Return, k: int):
+    built = _returned_list(statement)
+    built.elts[k] = ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "rad2deg", ast.Load()), [built.elts[k]], [])
+    return statement
+
+
+def _square(node) -> bool:
+    return isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow) and _number(node.right) \
+        and node.right.value == 2
+
+
+def _summed(call: ast.Call):
+    """What ``x.sum()`` or ``np.sum(x)`` sums (a plain sum, no axis), or None."""
+    if call.keywords:
+        return None
+    if _callee(call) == "sum" and isinstance(call.func, ast.Attribute) and not call.args \
+            and isinstance(call.func.value, (ast.Name, ast.Attribute)):
+        return call.func.value
+    if _callee(call) == "sum" and isinstance(call.func, ast.Attribute) and len(call.args) == 1 \
+            and _label(call.func.value) == "np" and isinstance(call.args[0], (ast.Name, ast.Attribute)):
+        return call.args[0]
+    return None
+
+
+def _half(index) -> bool:
+    """``[:k]`` or ``[k:]``: one half of a vector, whose other half is ``[k:]`` or ``[:k]``."""
+    return isinstance(index, ast.Slice) and index.step is None and (index.lower is None) != (index.upper is None)
+
+
+def _state_parts(function: ast.FunctionDef) -> set:
+    """The names the function binds to parts of a run's state (``q, qd = y[:3], y[3:]``)."""
+    found = set()
+    for node in ast.walk(function):
+        if not isinstance(node, ast.Assign) or len(node.targets) != 1:
+            continue
+        target, value = node.targets[0], node.value
+        pairs = zip(target.elts, value.elts) if isinstance(target, ast.Tuple) and isinstance(value, ast.Tuple) \
+            and len(target.elts) == len(value.elts) else [(target, value)]
+        found |= {t.id for t, v in pairs if isinstance(t, ast.Name) and _state_read(v)}
+    return found
+
+
+def _skews(function: ast.FunctionDef) -> set:
+    """The names the function binds to a skew matrix (``lever = skew(r)``)."""
+    return {t.id for node in ast.walk(function) if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call)
+            and _callee(node.value) == "skew" for t in node.targets if isinstance(t, ast.Name)}
+
+
+def _skew(node, skews: set, slip: str = "transpose") -> bool:
+    """A skew matrix, or its transpose (``skew(r)``, ``lever.T`` where ``lever = skew(r)``); for the slips of a
+    product, a factor of it."""
+    if slip != "transpose" and isinstance(node, ast.BinOp):
+        return _skew(node.left, skews) or _skew(node.right, skews)
+    if isinstance(node, ast.Attribute) and node.attr == "T":
+        node = node.value
+    return (isinstance(node, ast.Call) and _callee(node) == "skew") or (isinstance(node, ast.Name)
+                                                                        and node.id in skews)
+
+
+def _reciprocal(node) -> bool:
+    return isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div) and _number(node.left) \
+        and node.left.value == 1
+
+
+def _trigs(node) -> set:
+    return {_callee(n) for n in ast.walk(node) if isinstance(n, ast.Call) and _callee(n) in _TRIG
+            and len(n.args) == 1}
+
+
+def _all_trigs_exchanged(node):
+    """sin for cos and cos for sin throughout one statement (the copy is changed in place)."""
+    for call in ast.walk(node):
+        if isinstance(call, ast.Call) and _callee(call) in _TRIG and len(call.args) == 1:
+            call.func = _renamed(call.func)
+    return node
+
+
+def _edge(node, side: str):
+    """``(holder, field)`` of the factor of a product at its ``side`` ("left" or "right") end."""
+    holder, field = None, None
+    while isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.MatMult)):
+        holder, field, node = node, side, getattr(node, side)
+    return holder, field
+
+
+def _transposed_leaf(node) -> bool:
+    return isinstance(node, ast.Attribute) and node.attr == "T"
+
+
+def _meeting(node: ast.BinOp):
+    """The two factors that meet at a product (``J.T`` and ``J`` of ``m * J.T @ J``), with their holders."""
+    (left, lfield), (right, rfield) = _edge(node.left, "right"), _edge(node.right, "left")
+    left, lfield = (node, "left") if left is None else (left, lfield)
+    right, rfield = (node, "right") if right is None else (right, rfield)
+    return (left, lfield), (right, rfield)
+
+
+def _movable(node: ast.BinOp) -> bool:
+    (left, lfield), (right, rfield) = _meeting(node)
+    return _transposed_leaf(getattr(left, lfield)) != _transposed_leaf(getattr(right, rfield))
+
+
+def _moved(node: ast.BinOp):
+    """``A.T @ B`` as ``A @ B.T`` (``m * J.T @ J`` as ``m * J @ J.T``): the transpose of the factor on one side
+    of the product moved to the factor on the other (the copy is changed in place)."""
+    (left, lfield), (right, rfield) = _meeting(node)
+    a, b = getattr(left, lfield), getattr(right, rfield)
+    if _transposed_leaf(a):
+        setattr(left, lfield, a.value)
+        setattr(right, rfield, _transposed(b))
+    else:
+        setattr(left, lfield, _transposed(a))
+        setattr(right, rfield, b.value)
+    return node
+
+
+def _ends(node: ast.BinOp):
+    """The first and the last factor of a product (``J.T`` and ``J`` of ``J.T @ I @ J``), with their holders."""
+    return _edge(node, "left"), _edge(node, "right")
+
+
+def _flipped(node, ends):
+    """``node`` with the transpose moved from one end of its product to the other (changed in place)."""
+    (left, lfield), (right, rfield) = ends
+    a, b = getattr(left, lfield), getattr(right, rfield)
+    setattr(left, lfield, a.value if _transposed_leaf(a) else _transposed(a))
+    setattr(right, rfield, b.value if _transposed_leaf(b) else _transposed(b))
+    return node
+
+
+def _own_transpose(node: ast.BinOp, factors=None) -> bool:
+    """A product of a matrix with its own transpose at the two factors that meet (``J.T @ J``), or at
+    ``factors``."""
+    (left, lfield), (right, rfield) = factors or _meeting(node)
+    a, b = getattr(left, lfield), getattr(right, rfield)
+    if _transposed_leaf(a) == _transposed_leaf(b):
+        return False
+    a, b = (a.value, b) if _transposed_leaf(a) else (a, b.value)
+    return ast.dump(a) == ast.dump(b)
+
+
+def _blocks(args: list, first: int, size: int) -> list:
+    args = list(args)
+    args[first:first + 2 * size] = args[first + size:first + 2 * size] + args[first:first + size]
+    return args
+
+
+def _keywords(node: ast.Call, a: str, b: str) -> list:
+    values = {k.arg: k.value for k in node.keywords}
+    return [ast.keyword(k.arg, values[b] if k.arg == a else values[a] if k.arg == b else k.value)
+            for k in node.keywords]
 
 
 def _pairs(count: int):
@@ -287,18 +548,29 @@ def _binop_slips(node: ast.BinOp):
     if isinstance(op, (ast.Add, ast.Sub)):
         other = ast.Sub() if isinstance(op, ast.Add) else ast.Add()
         yield "sign", lambda n: _with(n, op=other)
+        if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):  # |r| for |r|^2
+            yield "norm", lambda n: ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "sqrt", ast.Load()), [n], [])
         yield "term", lambda n: n.left
         if isinstance(op, ast.Add):
             yield "term", lambda n: n.right
     elif isinstance(op, ast.Mult):
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
+            operand = getattr(node, side)
+            if isinstance(operand, ast.UnaryOp) and isinstance(operand.op, ast.USub) and not _number(operand.operand):
+                # ``-m * theta``: the factor m left out keeps the minus
+                yield _dropped(operand.operand), lambda n, other=other: _negated(getattr(n, other))
         yield "multiplies", lambda n: _with(n, op=ast.Div())
     elif isinstance(op, ast.Div):
         yield "divides", lambda n: _with(n, op=ast.Mult())
         yield _dropped(node.right), lambda n: n.left
     elif isinstance(op, ast.MatMult):
-        yield "factors", lambda n: _with(n, left=n.right, right=n.left)
+        if _movable(node):
+            yield "sides", _moved
+        if _own_transpose(node, _ends(node)):  # ``J.T @ I @ J`` as ``J @ I @ J.T``
+            yield "sides", lambda n: _flipped(n, _ends(n))
+        # ``X.T @ X`` the other way round is ``X @ X.T``: the transpose on the wrong factor
+        yield "sides" if _own_transpose(node) else "factors", lambda n: _with(n, left=n.right, right=n.left)
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
@@ -322,11 +594,29 @@ def _call_slips(node: ast.Call):
         yield "radians", lambda n: n.args[0]
     if callee == "sqrt" and len(args) == 1:
         yield "root", lambda n: n.args[0]
+    summed = _summed(node)
+    if summed is not None:  # ``masses.sum()`` as ``len(masses)``
+        yield "count", lambda n: ast.Call(ast.Name("len", ast.Load()), [_summed(n)], [])
+    if callee == "solve" and len(args) == 2 and not node.keywords:
+        yield "solved", lambda n: ast.BinOp(n.args[0], ast.MatMult(), n.args[1])
+    if callee == "inv" and len(args) == 1:
+        yield "inverse", lambda n: n.args[0]
+    if callee == "inv" and not args and isinstance(node.func, ast.Attribute):  # sympy's ``M.inv()``
+        yield "inverse", lambda n: n.func.value
     if callee in ("inv", "solve") or any(isinstance(a, ast.Starred) for a in args):
         return
     positional = args[:4]
-    for i, j in _pairs(len(positional)):
-        yield "cross" if callee == "cross" else "arguments", lambda n, i=i, j=j: _exchanged(n, "args", i, j)
+    for i, j in _pairs(len(args[:6])):
+        exchange = "rows" if _state_read(args[i]) and _state_read(args[j]) else \
+            "cross" if callee == "cross" else "arguments"
+        yield exchange, lambda n, i=i, j=j: _exchanged(n, "args", i, j)
+    for size in range(2, len(args[:8]) // 2 + 1):  # ``f(q, qd, q_des, qd_des)`` as ``f(q_des, qd_des, q, qd)``
+        for first in range(len(args[:8]) - 2 * size + 1):
+            yield "blocks", lambda n, size=size, first=first: _with(n, args=_blocks(n.args, first, size))
+    keywords = [k for k in node.keywords[:4] if k.arg is not None]
+    for i, j in _pairs(len(keywords)):
+        exchange = "rows" if _state_read(keywords[i].value) and _state_read(keywords[j].value) else "arguments"
+        yield exchange, lambda n, a=keywords[i].arg, b=keywords[j].arg: _with(n, keywords=_keywords(n, a, b))
     names = [a.id for a in positional if isinstance(a, ast.Name)]
     for i, j in _pairs(len(names)):
         if names[i] != names[j]:
@@ -399,14 +689,21 @@ def _in(node, lines: tuple) -> bool:
 
 def _mutated(function: _Function, lines: tuple):
     """``(slip, new definition)`` of every slip of the function's regions ``lines``, each once."""
-    sites = [(index, node, parent, indexing)
+    sites = [(index, node, parent, guarded, indexing)
              for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
-             if not guarded and _in(node, lines)]
+             if guarded in (False, ITERABLE) and _in(node, lines)]
     seen = {ast.dump(function.node)}
-    for index, node, parent, indexing in [(None, function.node, None, False)] + sites:
+    parts, skews = _state_parts(function.node), _skews(function.node)
+    for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
         slips = _parameter_slips(function.node, lines) if index is None else _slips(node, parent)
         for slip, edit in slips:
+            if guarded == ITERABLE and slip not in _EXCHANGES:
+                continue
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
+            if isinstance(edit, tuple) and edit[1] in parts and edit[2] in parts:
+                slip = "rows"  # two parts of the state exchanged: read from each other's rows
+            if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
+                slip = "sign"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
             tree = copy.deepcopy(function.node)
             if isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])

@@ -114,6 +114,10 @@ BEARINGS = [(INERTIA, 10.0, 5.0, 9.81, 0.8), (1.5 * INERTIA, 7.0, 3.0, 9.81, 1.2
 IMPULSES = [(0.3, -2.0, 1.5, 0.2, 0.4, 0.1), (-0.5, -1.0, 2.5, 0.3, 0.2, 0.3)]
 POINTS = [(1.0, 2.0, 0.5, 0.7), (0.3, 1.5, 1.2, 0.4)]
 STEINER = [(np.diag([1.0, 2.0, 2.5]), 2.0, V(0.3, -0.2, 0.5)), (np.diag([1.3, 2.6, 3.0]), 0.7, V(-0.6, 0.1, 0.4))]
+SPD = np.array([[2.0, 0.3, -0.1], [0.3, 1.5, 0.2], [-0.1, 0.2, 1.0]])
+DYNAMICS = [(SPD, V(0.3, -1.0, 0.5), V(0.0, -2.0, 0.1), V(1.0, 0.4, -0.7)),
+            (1.5 * SPD + np.eye(3), V(-0.8, 0.2, 1.1), V(0.5, 0.3, -1.2), V(-0.4, 0.9, 0.6))]
+CUBOIDS = [("cuboid", 2.0, 0.3, 0.5, 0.7), ("cuboid", 0.8, 1.1, 0.4, 0.6)]
 
 #: (slip, check, file, old, new, probe, inputs, path, diagnosis, the hint's detail)
 OPERATORS = [
@@ -170,6 +174,30 @@ OPERATORS = [
     ("a neighbouring index", "p39.bearing_forces", "problem_39.py", "[0.0, 2.0 * moment[2] / d,",
      "[0.0, 2.0 * moment[1] / d,", "problem_39.bearing_forces", BEARINGS, (0,), "wrong_index",
      "`bearing_forces` reads an entry from a neighbouring index"),
+    ("sin and cos exchanged throughout one expression", "p22.loop_values", "planar.py",
+     "gamma += angle\n    return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), gamma])",
+     "gamma += angle\n    return np.array([x - d * np.cos(gamma), y + d * np.sin(gamma), gamma])", "problem_22.loop",
+     ARMS, (), "sin_cos_swapped", "`end_effector_loop` takes sin where cos belongs and cos where sin belongs"),
+    ("an angle returned in degrees", "p22.loop_values", "planar.py",
+     "gamma += angle\n    return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), gamma])",
+     "gamma += angle\n    return np.array([x - d * np.sin(gamma), y + d * np.cos(gamma), np.rad2deg(gamma)])",
+     "problem_22.loop", ARMS, (), "degrees", "`end_effector_loop` returns an angle in degrees"),
+    ("a sum that keeps only its last term", "p22.loop_values", "planar.py", "y += length * np.cos(gamma)",
+     "y = length * np.cos(gamma)", "problem_22.loop", ARMS, (), "missing_term",
+     "a sum that `end_effector_loop` accumulates keeps only its last term"),
+    ("a product where a solve belongs", "p37.forward_dynamics", "dynamics.py", "return np.linalg.solve(M, f + g + tau)",
+     "return M @ (f + g + tau)", "_dynamics.forward_dynamics", DYNAMICS, (), "multiplied_not_solved",
+     "`forward_dynamics` multiplies by a matrix where it should solve with it"),
+    ("a factor under a minus", "p43.forces", "problem_43.py", "np.array([0.0, -m * g, 0.0])",
+     "np.array([0.0, -g, 0.0])", "problem_43.forces", [(2.0, 9.81), (0.7, 3.5)], ("g",), "missing_factor",
+     "one factor of a product in `forces` is left out"),
+    ("a norm for its square", "p16.cuboid", "inertia.py", "return m / 12 * np.diag([b**2 + c**2,",
+     "return m / 12 * np.diag([np.sqrt(b**2 + c**2),", "problem_16.body", CUBOIDS, (), "wrong_factor",
+     "`cuboid_inertia` takes a square root of a sum of squares where the sum belongs"),
+    ("a count for a sum", "p16.second_moments", "inertia.py", "second = 0.5 * (moments.sum() - 2.0 * moments)",
+     "second = 0.5 * (len(moments) - 2.0 * moments)", "problem_16.dimensions",
+     [(2.0, 0.5, 0.6, 0.7), (0.5, 0.4, 0.5, 0.8)], ("cuboid",), "wrong_factor",
+     "`principal_second_moments` divides by the number of entries where their sum belongs"),
 ]
 
 
@@ -290,6 +318,102 @@ def logarithm(a, b):
     # BEGIN SOLUTION problem 98
     return np.array([math.log(a), b])
     # END SOLUTION
+
+
+def rates(t, y):
+    """``dy/dt`` of a run whose state is ``y = (q, qd)``."""
+    # BEGIN SOLUTION problem 98
+    q, qd = y[:2], y[2:]
+    return np.concatenate([qd, -3.0 * q - 0.5 * qd + np.array([t, 0.0])])
+    # END SOLUTION
+
+
+def halves(v, w):
+    """A vector ``v = (a, b)`` that is no run's state, mixed with ``w``."""
+    # BEGIN SOLUTION problem 98
+    a, b = v[:2], v[2:]
+    return np.concatenate([b + w, 2.0 * a - b])
+    # END SOLUTION
+
+
+def feedback(q, qd, q_des, qd_des):
+    """A PD law (given, no solution region)."""
+    return 4.0 * (q_des - q) + 1.5 * (qd_des - qd)
+
+
+def control(q, qd, q_des, qd_des):
+    """A feedforward product and the PD law."""
+    # BEGIN SOLUTION problem 98
+    return q * qd + feedback(q, qd, q_des, qd_des)
+    # END SOLUTION
+
+
+def moment(f_x, f_y, r_x, r_y):
+    """The moment of ``f`` about the origin at ``r``, and ``f . r``."""
+    # BEGIN SOLUTION problem 98
+    m_z = r_x * f_y - r_y * f_x
+    return np.array([m_z, r_x * f_x + r_y * f_y])
+    # END SOLUTION
+
+
+def compliance(k1, k2):
+    """The displacements of two springs in series under the loads (1, 0.5)."""
+    # BEGIN SOLUTION problem 98
+    K = np.array([[k1 + k2, -k2], [-k2, k2]])
+    return np.linalg.inv(K) @ np.array([1.0, 0.5])
+    # END SOLUTION
+
+
+def gram(J, K):
+    """``J.T J`` and ``J.T K``."""
+    # BEGIN SOLUTION problem 98
+    return J.T @ J + 2.0 * np.eye(3), J.T @ K
+    # END SOLUTION
+
+
+P_GAIN, D_GAIN = 4.0, 1.5
+
+
+def skew(w):
+    """The cross-product matrix (given)."""
+    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+
+def track(q, qd, q_des, qd_des):
+    """A PD law with the module's gains."""
+    # BEGIN SOLUTION problem 98
+    return P_GAIN * (q_des - q) + D_GAIN * (qd_des - qd)
+    # END SOLUTION
+
+
+def transport(r, w, v):
+    """``v - r x w + r / 2`` by a cross-product matrix."""
+    # BEGIN SOLUTION problem 98
+    lever = skew(r)
+    return v - lever @ w + 0.5 * r
+    # END SOLUTION
+
+
+def sextet(a, b, c, d, e, f):
+    """A weighted sum of six arguments."""
+    # BEGIN SOLUTION problem 98
+    return weigh(a, b, c, d, 2.0 * e, f)
+    # END SOLUTION
+
+
+def weigh(a, b, c, d, e, f):
+    """(given)"""
+    return a + 2.0 * b + 3.0 * c + 5.0 * d + 7.0 * e + 11.0 * f
+
+
+def loads(m1, m2, points):
+    """A sum over two parts, each by its mass and point."""
+    # BEGIN SOLUTION problem 98
+    total = np.array([m1, 2.0 * m2])
+    for m, r in zip((m1, m2), points):
+        total += m * r
+    return total
+    # END SOLUTION
 '''
 
 
@@ -307,16 +431,16 @@ def made_up(tmp_path, monkeypatch):
 
 
 def made_up_probe(name):
-    def probe(pkg, a, b):
-        return getattr(importlib.import_module(f"{pkg.__name__}.problem_98"), name)(a, b)
+    def probe(pkg, *args):
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_98"), name)(*args)
 
     return probe
 
 
-def made_up_evidences(package, name, student, inputs):
+def made_up_evidences(package, name, student, inputs, path=()):
     probe = made_up_probe(name)
-    return [Evidence(np.asarray(student(*args), dtype=float), np.asarray(probe(package, *args), dtype=float), TIGHT,
-                     "value", source=Source(probe, args, ())) for args in inputs]
+    return [Evidence(array_of(at(student(*args), path)), array_of(at(probe(package, *args), path)), TIGHT,
+                     "value", source=Source(probe, args, path)) for args in inputs]
 
 
 def test_a_value_two_families_give_is_could_be(made_up):
@@ -420,6 +544,140 @@ def test_the_mutants_are_bounded(made_up, monkeypatch):
     monkeypatch.setattr(mutants, "MAX_MUTANTS", 2)
     evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
     assert mutants.mutant_slips(scene("p98.difference"), evidences) == []
+
+
+# ------------------------------------------------------------------------------------------ kinds of slip
+
+
+def names_of(made_up, name, student, inputs, path=()):
+    found = mutants.mutant_slips(scene("p98.made_up"), made_up_evidences(made_up, name, student, inputs, path))
+    return {h.name for h in found}, found
+
+
+STATES = [(0.3, V(0.5, -1.0, 2.0, 0.4)), (1.1, V(-0.2, 0.7, -0.6, 1.5))]
+
+
+def test_parts_of_a_runs_state_read_from_each_others_rows_are_a_state_row_slip(made_up):
+    """``q, qd = y[2:], y[:2]``: the two halves of a run's state exchanged (whether the reads or the names are
+    exchanged) is a state read from the wrong rows, not two names or entries swapped."""
+    def exchanged(t, y):
+        q, qd = y[2:], y[:2]
+        return np.concatenate([qd, -3.0 * q - 0.5 * qd + np.array([t, 0.0])])
+
+    names, found = names_of(made_up, "rates", exchanged, STATES)
+    assert names == {"state_row"}, [(h.name, h.detail) for h in found]
+    assert any("`rates` reads a part of the state from the wrong rows" in h.detail for h in found)
+
+
+def test_a_part_of_a_runs_state_read_from_the_other_half_is_a_state_row_slip(made_up):
+    """``qd = y[:2]``: the rates read from the rows of the angles (the other half of the state)."""
+    def copied(t, y):
+        q, qd = y[:2], y[:2]
+        return np.concatenate([qd, -3.0 * q - 0.5 * qd + np.array([t, 0.0])])
+
+    names, found = names_of(made_up, "rates", copied, STATES)
+    assert names == {"state_row"}, [(h.name, h.detail) for h in found]
+
+
+def test_halves_of_a_vector_that_is_no_state_exchanged_are_swapped_entries(made_up):
+    """The near miss: the same exchange of a vector that is no run's state (not ``y`` of ``f(t, y)``) is an
+    exchange of entries or names, never a state row."""
+    def exchanged(v, w):
+        a, b = v[2:], v[:2]
+        return np.concatenate([b + w, 2.0 * a - b])
+
+    names, found = names_of(made_up, "halves", exchanged, [(V(0.5, -1.0, 2.0, 0.4), V(1.0, 2.0)),
+                                                            (V(-0.2, 0.7, -0.6, 1.5), V(0.3, -0.4))])
+    assert names and {DIAGNOSES[n].family for n in names} == {"order"}, [(h.name, h.detail) for h in found]
+
+
+def test_two_groups_of_arguments_exchanged_could_be_order_or_sign(made_up):
+    """``feedback(q_des, qd_des, q, qd)``: the measured and the desired state exchanged as groups; the PD law then
+    has the opposite sign, so both slips give the student's value: "could be", never the sign alone."""
+    def exchanged(q, qd, q_des, qd_des):
+        return q * qd + 4.0 * (q - q_des) + 1.5 * (qd - qd_des)
+
+    names, found = names_of(made_up, "control", exchanged, [(V(0.5, -1.0), V(2.0, 0.4), V(0.1, 0.2), V(-0.3, 0.9)),
+                                                             (V(1.2, 0.3), V(-0.5, 0.8), V(0.7, -1.1), V(0.4, 0.6))])
+    assert "argument_order" in names and {DIAGNOSES[n].family for n in names} == {"order", "sign"}, names
+    assert any("two groups of arguments of a call in `control` are exchanged" in h.detail for h in found)
+    assert explaining._finding(found, "here").hint.startswith("Could be ")
+
+
+def test_two_components_exchanged_in_one_expression_are_swapped(made_up):
+    """``m_z = r_y f_y - r_x f_x``: r_x and r_y exchanged in one expression only (the other keeps them)."""
+    def exchanged(f_x, f_y, r_x, r_y):
+        return np.array([r_y * f_y - r_x * f_x, r_x * f_x + r_y * f_y])
+
+    names, found = names_of(made_up, "moment", exchanged, [(1.0, -2.0, 0.5, 0.7), (0.3, 0.8, -1.2, 0.4)])
+    assert names == {"swapped"}, [(h.name, h.detail) for h in found]
+    assert any("are exchanged in one expression of `moment`" in h.detail for h in found)
+
+
+def test_a_matrix_for_its_inverse_is_an_inverse_slip(made_up):
+    def uninverted(k1, k2):
+        return np.array([[k1 + k2, -k2], [-k2, k2]]) @ np.array([1.0, 0.5])
+
+    names, found = names_of(made_up, "compliance", uninverted, [(3.0, 2.0), (1.5, 4.0)])
+    assert names == {"no_inverse"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_transpose_on_the_wrong_factor_of_a_product_is_a_transpose_slip(made_up):
+    """``J J.T`` for ``J.T J`` exchanges the factors too, but the slip is where the transpose sits: a transpose;
+    the near miss ``K J.T`` for ``J.T K`` (two matrices) is the factors' order."""
+    J = [np.array([[0.3, 1.0, -0.2], [0.5, 0.1, 0.7], [-0.4, 0.6, 0.9]]),
+         np.array([[1.1, -0.3, 0.2], [0.0, 0.8, -0.5], [0.6, 0.4, 0.3]])]
+    K = [np.array([[0.2, 0.1, 0.0], [1.0, -0.5, 0.3], [0.4, 0.4, -0.8]]),
+         np.array([[-0.6, 0.9, 0.1], [0.3, 0.2, 1.2], [0.7, -0.1, 0.5]])]
+    inputs = list(zip(J, K))
+    names, found = names_of(made_up, "gram", lambda J, K: (J @ J.T + 2.0 * np.eye(3), J.T @ K), inputs, (0,))
+    assert names == {"transpose"}, [(h.name, h.detail) for h in found]
+    assert any("a product in `gram` transposes the wrong factor" in h.detail for h in found)
+    names, found = names_of(made_up, "gram", lambda J, K: (J.T @ J + 2.0 * np.eye(3), K @ J.T), inputs, (1,))
+    assert names == {"factor_order"}, [(h.name, h.detail) for h in found]
+
+
+def test_an_exchange_inside_a_loops_iterable_is_tried(made_up):
+    """``zip((m2, m1), points)``: the loop runs as often, its parts paired with each other's mass."""
+    def exchanged(m1, m2, points):
+        return np.array([m1, 2.0 * m2]) + m2 * points[0] + m1 * points[1]
+
+    inputs = [(1.0, 2.5, [V(0.1, 0.2), V(-0.3, 0.4)]), (0.4, 1.5, [V(0.7, -0.2), V(0.3, 0.8)])]
+    names, found = names_of(made_up, "loads", exchanged, inputs)
+    assert names == {"swapped"}, [(h.name, h.detail) for h in found]
+    assert any("two entries that `loads` builds are exchanged" in h.detail for h in found)
+
+
+def test_two_gains_exchanged_in_one_expression_are_swapped(made_up):
+    """``D_GAIN (q_des - q) + P_GAIN (qd_des - qd)``: two constants of one kind exchanged."""
+    def exchanged(q, qd, q_des, qd_des):
+        return 1.5 * (q_des - q) + 4.0 * (qd_des - qd)
+
+    names, found = names_of(made_up, "track", exchanged, [(V(0.5, -1.0), V(2.0, 0.4), V(0.1, 0.2), V(-0.3, 0.9)),
+                                                           (V(1.2, 0.3), V(-0.5, 0.8), V(0.7, -1.1), V(0.4, 0.6))])
+    assert names == {"swapped"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_skew_matrix_transposed_is_a_sign_slip(made_up):
+    """``v + lever @ w`` for ``v - lever @ w``: the sign of a term, or ``lever.T @ w`` or ``w @ lever`` (a skew
+    matrix transposed is the matrix negated): one family, a sign, never a transpose or the factors' order."""
+    def flipped(r, w, v):
+        return v + np.cross(r, w) + 0.5 * r
+
+    names, found = names_of(made_up, "transport", flipped, [(V(0.5, -1.0, 2.0), V(0.1, 0.2, 0.3), V(1.0, 0.0, 0.5)),
+                                                             (V(1.2, 0.3, -0.4), V(-0.5, 0.8, 0.2), V(0.3, 0.3, 0.1))])
+    assert names == {"sign_flip"}, [(h.name, h.detail) for h in found]
+
+
+def test_two_late_arguments_of_a_call_exchanged_are_tried(made_up):
+    """The fifth and the sixth argument of a call exchanged."""
+    def exchanged(a, b, c, d, e, f):
+        return a + 2.0 * b + 3.0 * c + 5.0 * d + 7.0 * f + 22.0 * e
+
+    names, found = names_of(made_up, "sextet", exchanged, [(1.0, 2.0, 3.0, 4.0, 5.0, 6.0),
+                                                            (0.5, -1.0, 0.3, 2.0, -0.7, 1.9)])
+    assert "argument_order" in names and {DIAGNOSES[n].family for n in names} == {"order"}, names
+    assert any("two arguments of a call in `sextet` are exchanged" in h.detail for h in found)
 
 
 # ------------------------------------------------------------------------------------------ graded
