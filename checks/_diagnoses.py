@@ -20,7 +20,9 @@ never by the quantity it concerns or by its symptom:
 * things in each other's place within one expression (arguments, factors, entries) is ``order``; an update of a
   step that reads a value the step has already changed (or the other way round) takes a value of another time and
   is ``time_shift``;
-* a rotation left out, on one side only or the other frame's is ``frame``; a reference point moved is ``offset``;
+* a rotation left out, on one side only or the other frame's is ``frame``; a reference point moved, or a term that
+  is the same on every input (a radius, a height) left out or added, puts every value off by the same amount and
+  is ``offset``;
 * an argument whose value has no effect (a given gravity replaced by the Earth's) is ``ignored_argument``;
 * a state read from another row or column of the state or the solution is ``state_row``;
 * what the integration does (the step, the tolerance) is ``step_size``; when an event fires and whether it ends the

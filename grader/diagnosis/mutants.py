@@ -1005,15 +1005,38 @@ def _value(package, evidence: Evidence):
     return value
 
 
-def _hypotheses(kept: list[Mutant]) -> list[Hypothesis]:
+def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = ()) -> list[Hypothesis]:
     families = {DIAGNOSES[m.name].family for m in kept}
     if not kept or len(families) > MAX_FAMILIES:
         return []
+    constant = families <= _TERMS and _constant_difference(evidences)
     found = {}
     for mutant in kept:
-        key = f"mutant:{mutant.name}:{mutant.detail}"
-        found.setdefault(key, Hypothesis(key, mutant.name, COST, mutant.detail))
+        name, detail = mutant.name, mutant.detail
+        if constant:  # a term that is the same on every input: the values are all off by it
+            name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
+        key = f"mutant:{name}:{detail}"
+        found.setdefault(key, Hypothesis(key, name, COST, detail))
     return list(found.values())
+
+
+#: the families of a term left out or added: where the term is the same on every input, the slip is an offset
+_TERMS = {"missing_term", "extra_term"}
+
+
+def _constant_difference(evidences: list[Evidence]) -> bool:
+    """True when the student's values differ from the expected ones by the same amount on every input (at least
+    two, whose expected values differ): what a constant term left out or added gives."""
+    if len(evidences) < 2:
+        return False
+    first = evidences[0]
+    difference = first.got - first.expected
+    for other in evidences[1:]:
+        if other.got.shape != first.got.shape or not distinct(other.expected, first.expected, first.tol):
+            return False
+        if not within(other.got - other.expected, difference, first.tol):
+            return False
+    return True
 
 
 def _tried(evidences: list[Evidence]) -> bool:
@@ -1041,6 +1064,7 @@ def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothe
     problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
     if problem is None:
         return []
+    inputs = list(evidences)
     try:
         kept = _kept(problem, evidences)
         trace.note("mutants", problem=problem, kept=None if kept is None else sorted({m.name for m in kept}))
@@ -1048,10 +1072,11 @@ def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothe
             third = _another(another)
             if third is not None:
                 kept = _kept(problem, [third], kept)
+                inputs.append(third)
                 trace.note("third", kept=None if kept is None else sorted({m.name for m in kept}))
     except GraderFault:
         return []
-    return _hypotheses(kept or [])
+    return _hypotheses(kept or [], inputs)
 
 
 def _another(another) -> Evidence | None:

@@ -414,6 +414,13 @@ def loads(m1, m2, points):
         total += m * r
     return total
     # END SOLUTION
+
+
+def height(a, b):
+    """``a b + 0.4 + b``: a product, a constant and an argument."""
+    # BEGIN SOLUTION problem 98
+    return np.array([a * b + 0.4 + b])
+    # END SOLUTION
 '''
 
 
@@ -760,3 +767,16 @@ def test_the_deadline_counts_work_not_waiting():
         with mutants._Deadline(0.2):
             while True:
                 pass
+
+
+def test_a_constant_term_left_out_is_an_offset(made_up):
+    """A term that is the same on every input, left out, puts every value off by it: an offset, not a missing term
+    of the formula; a term that changes with the input, left out, stays a missing term."""
+    inputs = [(1.0, 3.0), (2.5, -0.5), (-0.7, 1.9)]
+    constant = made_up_evidences(made_up, "height", lambda a, b: [a * b + b], inputs)
+    found = mutants.mutant_slips(scene("p98.height"), constant)
+    assert found and {h.name for h in found} == {"offset"}, [(h.name, h.detail) for h in found]
+    assert all("same on every input" in h.detail and "`height`" in h.detail for h in found)
+    varying = made_up_evidences(made_up, "height", lambda a, b: [a * b + 0.4], inputs)
+    found = mutants.mutant_slips(scene("p98.height"), varying)
+    assert found and {DIAGNOSES[h.name].family for h in found} == {"missing_term"}, [(h.name, h.detail) for h in found]
