@@ -151,7 +151,8 @@ def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
 
 
 #: the engine's draws of a second input before it gives up: a draw on which the reference raises, or gives a
-#: degenerate value (none, another shape, zeros where the input shown has none), is not used
+#: degenerate value (none, or zeros where the input shown has none), is not used; one that gives another shape
+#: ends the search (the arguments set the shape: a duration, a count)
 DRAW_ATTEMPTS = 3
 
 
@@ -175,7 +176,10 @@ def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
             fault = exc
             continue
         value = array_of(at(root, source.path))
-        if value is None or value.shape != expected.shape or _vanishes(value, expected, tol):
+        if value is not None and value.shape != expected.shape:  # the arguments set the shape (a duration, say)
+            trace.note("second", reason="the value's shape changes with the arguments")
+            return None
+        if value is None or _vanishes(value, expected, tol):
             continue
         if not distinct(value, expected, tol):
             trace.note("second", reason="the value does not change with the arguments")
