@@ -223,6 +223,47 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
                     Source(source.probe, tuple(args), student.path, got_root))
 
 
+#: the other values of the call shown that a slip of the formula tier must reproduce as well, at most
+SIBLINGS = 12
+
+
+def _siblings(evidences: list) -> list:
+    """The other values of the call behind the input shown (where there are two inputs), as comparisons of their
+    own, those nearest the compared one first: a slip inside a formula must give the student's whole result of
+    that call (the values they have right as well as the ones they have wrong), not only the one compared; two
+    slips that give the same compared value (a term left out, two arguments exchanged that put that term
+    elsewhere) differ there."""
+    if len(evidences) < 2:
+        return []
+    first = evidences[0]
+    source, student = first.source, first.student
+    if source is None or student is None or source.root is None or student.root is None \
+            or source.probe != student.probe or source.path != student.path:
+        return []
+    found = []
+    for path, expected in _leaves(source.root):
+        if path == tuple(source.path):
+            continue
+        got = array_of(at(student.root, path))
+        if got is None or got.shape != expected.shape:
+            continue
+        found.append(Evidence(got, expected, first.tol, first.name, None, None,
+                              Source(source.probe, tuple(source.args), path, source.root),
+                              Source(student.probe, tuple(student.args), path, student.root)))
+    found.sort(key=lambda e: -_shared(e.source.path, tuple(source.path)))
+    return found[:SIBLINGS]
+
+
+def _shared(a: tuple, b: tuple) -> int:
+    """The length of the common start of two paths."""
+    n = 0
+    for x, y in zip(a, b):
+        if x != y:
+            break
+        n += 1
+    return n
+
+
 def _equal_args(a, b) -> bool:
     try:
         return call_key("", tuple(a)) == call_key("", tuple(b))
@@ -347,7 +388,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
     if not found and not (decl is not None and decl.motion):  # slips inside a formula: the last tier
-        found += mutant_slips(scene, evidences, lambda: _second_input(scene, evidences[-1]))
+        found += mutant_slips(scene, evidences + _siblings(evidences), lambda: _second_input(scene, evidences[-1]))
         if not found and left_to_live(scene, evidences):
             return Finding((), KIT_NOTE)
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
