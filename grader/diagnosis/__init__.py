@@ -3,7 +3,10 @@
 When a check's comparison fails and its catalogue of known mistakes has no match, the engine evaluates the
 reference under a grammar of common slips on the same inputs and keeps the hypotheses that reproduce the
 student's answer within the comparison's tolerance on the input shown *and* on a second, non-degenerate one (the
-randomized comparison's second failing input, or an input the engine draws itself); it ranks them by simplicity
+randomized comparison's second failing input, or an input the engine draws itself: the probe's declared roles
+drawn anew, or else every float of its arguments varied but kept what it is, a rotation a rotation, a symmetric
+matrix symmetric, a positive mass positive; a draw on which the reference raises or gives a degenerate value is
+not used); it ranks them by simplicity
 and says "looks like X" (one), "could be X or Y" (several at the simplest level) or nothing (none).  It never
 names a default cause.
 

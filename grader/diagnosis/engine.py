@@ -39,9 +39,9 @@ from .grammar import (
     perturbations,
     perturbed,
     precision_slips,
-    redraw,
     replaced,
     rotation_of,
+    second_args,
 )
 from . import trace
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
@@ -150,24 +150,70 @@ def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
     return Source(student.probe, tuple(student.args), student.path, root)
 
 
+#: the engine's draws of a second input before it gives up: a draw on which the reference raises, or gives a
+#: degenerate value (none, or zeros where the input shown has none), is not used; one that gives another shape
+#: ends the search (the arguments set the shape: a duration, a count)
+DRAW_ATTEMPTS = 3
+
+
+def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
+    """``(args, root)``: the first of the engine's draws of a second input for ``source``'s call (``second_args``)
+    on which the reference gives a usable value at ``source.path`` (``expected``: the value of the input shown),
+    or None: nothing to draw, no usable draw, or a value that does not change with the arguments (a second input
+    would tell nothing).  In the student kit a draw whose value the key does not hold ends the explanation (a
+    grader fault), as every other call the key lacks."""
+    decl = declaration(source.probe)
+    seed = scene.draw_seed(source)
+    fault = None
+    for attempt in range(DRAW_ATTEMPTS):
+        args = second_args(decl, tuple(source.args), seed, attempt)
+        if args is None:
+            trace.note("second", reason="nothing to draw")
+            return None
+        try:
+            root = scene.reference(source.probe, args)
+        except GraderFault as exc:
+            fault = exc
+            continue
+        value = array_of(at(root, source.path))
+        if value is not None and value.shape != expected.shape:  # the arguments set the shape (a duration, say)
+            trace.note("second", reason="the value's shape changes with the arguments")
+            return None
+        if value is None or _vanishes(value, expected, tol):
+            continue
+        if not distinct(value, expected, tol):
+            trace.note("second", reason="the value does not change with the arguments")
+            return None
+        return args, root
+    trace.note("second", reason="no usable draw")
+    if fault is not None and getattr(scene.ctx.oracle, "mode", "") == "kit":
+        raise fault
+    return None
+
+
+def _vanishes(value: np.ndarray, expected: np.ndarray, tol: Tol) -> bool:
+    """A drawn value of zeros where the value shown has none: a degenerate input."""
+    zeros = np.zeros_like(value)
+    return not distinct(value, zeros, tol) and distinct(expected, zeros, tol)
+
+
 def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
-    """The same comparison on an input the engine draws (the probe's declared angles, vectors, rotations and
-    scalars drawn anew): the student's value there and the reference's, or None."""
+    """The same comparison on an input the engine draws (``_drawn``: the probe's declared angles, vectors,
+    rotations and scalars drawn anew, or every float of its arguments varied): the student's value there and the
+    reference's, or None."""
     source, student = evidence.source, evidence.student
-    if source is None or student is None or source.probe != student.probe:
+    if source is None or student is None or source.probe != student.probe or evidence.motion:
         return None
     if not _equal_args(source.args, student.args):
         return None
-    decl = declaration(source.probe)
-    if decl is None or decl.motion:
+    drawn = _drawn(scene, source, evidence.expected, evidence.tol)
+    if drawn is None:
         return None
-    args = redraw(decl, source.args, scene.draw_seed(source))
-    if args is None:
-        return None
-    expected_root = scene.reference(source.probe, args)
+    args, expected_root = drawn
     try:
         got_root = scene.student(source.probe, args)
     except StudentFault:
+        trace.note("second", reason="the student's code raised on it")
         return None
     expected, got = array_of(at(expected_root, source.path)), array_of(at(got_root, student.path))
     if expected is None or got is None or got.shape != expected.shape:
@@ -175,6 +221,47 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
     return Evidence(got, expected, evidence.tol, evidence.name, None, None,
                     Source(source.probe, tuple(args), source.path, expected_root),
                     Source(source.probe, tuple(args), student.path, got_root))
+
+
+#: the other values of the call shown that a slip of the formula tier must reproduce as well, at most
+SIBLINGS = 12
+
+
+def _siblings(evidences: list) -> list:
+    """The other values of the call behind the input shown (where there are two inputs), as comparisons of their
+    own, those nearest the compared one first: a slip inside a formula must give the student's whole result of
+    that call (the values they have right as well as the ones they have wrong), not only the one compared; two
+    slips that give the same compared value (a term left out, two arguments exchanged that put that term
+    elsewhere) differ there."""
+    if len(evidences) < 2:
+        return []
+    first = evidences[0]
+    source, student = first.source, first.student
+    if source is None or student is None or source.root is None or student.root is None \
+            or source.probe != student.probe or source.path != student.path:
+        return []
+    found = []
+    for path, expected in _leaves(source.root):
+        if path == tuple(source.path):
+            continue
+        got = array_of(at(student.root, path))
+        if got is None or got.shape != expected.shape:
+            continue
+        found.append(Evidence(got, expected, first.tol, first.name, None, None,
+                              Source(source.probe, tuple(source.args), path, source.root),
+                              Source(student.probe, tuple(student.args), path, student.root)))
+    found.sort(key=lambda e: -_shared(e.source.path, tuple(source.path)))
+    return found[:SIBLINGS]
+
+
+def _shared(a: tuple, b: tuple) -> int:
+    """The length of the common start of two paths."""
+    n = 0
+    for x, y in zip(a, b):
+        if x != y:
+            break
+        n += 1
+    return n
 
 
 def _equal_args(a, b) -> bool:
@@ -284,7 +371,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         return _finding(found, "here") if found or first.call is None else _from_results(scene, evidences)
     decl = declaration(first.source.probe)
     constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
-    if len(evidences) == 1 and decl is not None and not decl.motion:
+    if len(evidences) == 1 and not (decl is not None and decl.motion):
         second = _second_input(scene, first)
         if second is not None:
             evidences = [first, second]
@@ -301,7 +388,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     if not found or min(h.cost for h in found) >= 3:
         found += _ignored(scene, evidences[0])
     if not found and not (decl is not None and decl.motion):  # slips inside a formula: the last tier
-        found += mutant_slips(scene, evidences, lambda: _second_input(scene, evidences[-1]))
+        found += mutant_slips(scene, evidences + _siblings(evidences), lambda: _second_input(scene, evidences[-1]))
         if not found and left_to_live(scene, evidences):
             return Finding((), KIT_NOTE)
     return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
@@ -463,13 +550,13 @@ def recording(ctx) -> None:
 
 def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
     """A comparison of ``got`` with ``expected`` (within ``tol``) is made while the key is recorded: prepare the
-    engine's calls for the probe call it came from, found as ``explain`` finds it (only the calls of declared probes
-    are searched; a printed value is traced through the student's call, ``traced``)."""
-    declared = [entry for entry in getattr(ctx, "calls", ()) if declaration(entry[1]) is not None]
-    if not declared:
-        return
-    source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None)
-    if source is None and got is not None and isinstance(tol, Tol):
+    engine's calls for the probe call it came from, found as ``explain`` finds it (the calls of declared probes are
+    searched first; a printed value is traced through the student's call, ``traced``; a value of another probe's
+    call gets the engine's second input only)."""
+    calls = getattr(ctx, "calls", ())
+    declared = [entry for entry in calls if declaration(entry[1]) is not None]
+    source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None) if declared else None
+    if source is None and got is not None and isinstance(tol, Tol) and declared:
         student = locate(declared, got, "student") or evaluated(declared, got, tol)
         if student is not None:
             try:
@@ -477,13 +564,15 @@ def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
             except (Budget, GraderFault):
                 source = None
     if source is None:
-        return
+        source = locate(calls, expected, "reference", tol if isinstance(tol, Tol) else None)
+        if source is None or declaration(source.probe) is not None:
+            return
     seen = ctx.__dict__.setdefault("_engine_prepared", set())
     key = call_key(source.probe, source.args)
     if key in seen:
         return
     seen.add(key)
-    prepare(ctx, source)
+    prepare(ctx, source, tol if isinstance(tol, Tol) else None)
 
 
 def prepare_call(ctx, probe: str, args: tuple) -> None:
@@ -511,13 +600,11 @@ def prepared(ctx, probe: str, args: tuple) -> None:
         prepare(ctx, Source(probe, tuple(args), ()))
 
 
-def prepare(ctx, source: Source) -> None:
+def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
     """Make every reference call the engine may need to explain a failing comparison with a value of ``source``'s
     call: its inputs transformed, its terms, the problem's constants, and a second input drawn with its own
-    variants (the kit's key then holds them)."""
+    variants (the kit's key then holds them; ``tol``: the comparison's, which tells a usable draw)."""
     decl = declaration(source.probe)
-    if decl is None:
-        return
     scene = Scene(ctx)
 
     def ask(probe, args, persist=False):
@@ -529,33 +616,45 @@ def prepare(ctx, source: Source) -> None:
             return None
 
     try:
-        constants_of(scene, decl, source.args)
-        for _, args in input_slips(decl, source.args):
-            ask(source.probe, args)
-        for args in perturbations(decl, source.args):
-            ask(source.probe, args)
-        if decl.terms:
-            ask(decl.terms, source.args)
-        if decl.motion.get("fixed_step"):
-            for scheme in decl.motion.get("schemes", ("euler",)):
-                for h in decl.motion.get("steps", FIXED_STEPS):
-                    ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
-        if decl.motion.get("rhs"):
-            _prepare_model(ask, decl, source)
-        if decl.motion.get("parameters"):
-            spec = decl.motion["parameters"]
-            sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
-            for _, args in parameter_variants(decl.motion, tuple(source.args), sheet):
-                ask(source.probe, args, persist=True)
-        if not decl.motion and not getattr(ctx, "randomized", False):
-            args = redraw(decl, source.args, scene.draw_seed(source))
-            if args is not None and ask(source.probe, args) is not None:
-                for _, variant in input_slips(decl, args):
+        if decl is not None:
+            _prepare_declared(scene, ask, decl, source)
+        if not (decl is not None and decl.motion) and not getattr(ctx, "randomized", False):
+            root = source.root if source.root is not None else ask(source.probe, source.args)
+            expected = array_of(at(root, source.path))
+            drawn = None if expected is None else _drawn(scene, source, expected, tol or SECOND_TOL)
+            if drawn is not None and decl is not None:
+                for _, variant in input_slips(decl, drawn[0]):
                     ask(source.probe, variant)
                 if decl.terms:
-                    ask(decl.terms, args)
+                    ask(decl.terms, drawn[0])
     except (Budget, GraderFault):
         pass
+
+
+#: the tolerance that tells a usable second input while the key is recorded, for a comparison that gives none
+SECOND_TOL = Tol("drawn", 1e-9, 1e-9)
+
+
+def _prepare_declared(scene: Scene, ask, decl: Declaration, source: Source) -> None:
+    """The calls of a declared probe's slips, terms, constants, fixed steps, right-hand sides and parameters."""
+    constants_of(scene, decl, source.args)
+    for _, args in input_slips(decl, source.args):
+        ask(source.probe, args)
+    for args in perturbations(decl, source.args):
+        ask(source.probe, args)
+    if decl.terms:
+        ask(decl.terms, source.args)
+    if decl.motion.get("fixed_step"):
+        for scheme in decl.motion.get("schemes", ("euler",)):
+            for h in decl.motion.get("steps", FIXED_STEPS):
+                ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
+    if decl.motion.get("rhs"):
+        _prepare_model(ask, decl, source)
+    if decl.motion.get("parameters"):
+        spec = decl.motion["parameters"]
+        sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
+        for _, args in parameter_variants(decl.motion, tuple(source.args), sheet):
+            ask(source.probe, args, persist=True)
 
 
 def _prepare_model(ask, decl: Declaration, source: Source) -> None:

@@ -27,6 +27,9 @@ __all__ = [
     "ignore_candidates",
     "perturbations",
     "redraw",
+    "DRAWN_ENTRIES",
+    "varied",
+    "second_args",
 ]
 
 
@@ -42,6 +45,14 @@ FACTORS = (
 )
 #: the factors a number among the arguments may be off by (a full length for a half, a diameter for a radius)
 ARGUMENT_FACTORS = ((2.0, "twice"), (0.5, "half"))
+#: an array of more numbers than this among the arguments is data (a table, a time grid) that the general draw keeps
+DRAWN_ENTRIES = 64
+#: a monotonic run of at least this many numbers is a grid (times, steps) that the general draw keeps
+GRID_ENTRIES = 8
+#: the general draw scales a number by exp(+-u), u drawn in this range: clearly another value, of the same sign
+DRAWN_SPREAD = (0.15, 0.45)
+#: the general draw turns a rotation by an angle in this range [rad] about a drawn axis
+DRAWN_TURN = (0.3, 0.9)
 
 
 def _ordinal(i: int) -> str:
@@ -342,3 +353,119 @@ def redraw(decl: Declaration, args: tuple, seed_words) -> tuple | None:
     for path, role, value in leaves:
         drawn = replaced(drawn, path, _draw_leaf(role, value, rng))
     return drawn
+
+
+def _factors(rng, shape):
+    """Factors clearly other than 1, of either side, one per entry of ``shape``."""
+    u = rng.uniform(*DRAWN_SPREAD, shape)
+    return np.exp(np.where(rng.random(shape) < 0.5, -u, u))
+
+
+def _turn(rng, n: int):
+    """A rotation of ``n`` dimensions (2 or 3) by an angle of ``DRAWN_TURN``."""
+    angle = rng.uniform(*DRAWN_TURN) * rng.choice((-1.0, 1.0))
+    c, s = np.cos(angle), np.sin(angle)
+    if n == 2:
+        return np.array([[c, -s], [s, c]])
+    axis = rng.normal(size=3)
+    axis /= np.linalg.norm(axis)
+    K = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
+    return np.eye(3) + s * K + (1.0 - c) * K @ K
+
+
+def _varied_array(a: np.ndarray, rng) -> np.ndarray:
+    """Another array of the same kind: a rotation (an orthogonal 2 x 2 or 3 x 3 matrix) turned, a symmetric matrix
+    changed by a congruence with a positive diagonal (symmetric, definite where it was, its zeros kept), a unit
+    vector changed and normalized, any other array scaled entry by entry (signs and zeros kept); a table or a
+    grid kept."""
+    if a.size == 0 or a.size > DRAWN_ENTRIES or not np.all(np.isfinite(a)):
+        return a
+    if a.ndim == 0:
+        return a * _factors(rng, ())
+    if a.ndim == 1 and a.size >= GRID_ENTRIES and (np.all(np.diff(a) > 0) or np.all(np.diff(a) < 0)):
+        return a
+    if a.ndim == 2 and a.shape[0] == a.shape[1] and a.shape[0] in (2, 3) \
+            and np.max(np.abs(a.T @ a - np.eye(a.shape[0]))) < 1e-9:
+        return _turn(rng, a.shape[0]) @ a
+    if a.ndim == 2 and a.shape[0] == a.shape[1] > 1 and np.allclose(a, a.T, rtol=0.0, atol=1e-12 * np.max(np.abs(a))):
+        D = np.diag(np.sqrt(_factors(rng, a.shape[0])))
+        return D @ a @ D
+    changed = a * _factors(rng, a.shape)
+    if a.ndim == 1 and a.size > 1 and abs(np.linalg.norm(a) - 1.0) < 1e-9:
+        return changed / np.linalg.norm(changed)
+    return changed
+
+
+def _numbers(value):
+    """The array of a (nested) list or tuple of real numbers with one float at least, or of a float array; else
+    None (an integer, a flag, a string, a structure of other things)."""
+    if isinstance(value, np.ndarray):
+        return value.astype(float) if value.dtype.kind == "f" else None
+    if isinstance(value, float):
+        return np.asarray(value)
+    if not isinstance(value, (list, tuple)) or not value:
+        return None
+    flat, stack = [], [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, (list, tuple)):
+            stack.extend(item)
+        elif isinstance(item, (bool, np.bool_)) or not isinstance(item, (int, float, np.integer, np.floating)):
+            return None
+        else:
+            flat.append(item)
+    if not any(isinstance(x, (float, np.floating)) for x in flat):
+        return None
+    try:
+        return np.asarray(value, dtype=float)
+    except ValueError:  # ragged
+        return None
+
+
+def _varied_value(value, rng):
+    array = _numbers(value)
+    if array is not None:
+        changed = _varied_array(array, rng)
+        if changed is array or np.array_equal(changed, array):
+            return value
+        if isinstance(value, np.ndarray):
+            return changed
+        if isinstance(value, (float, np.floating)):
+            return float(changed)
+        listed = changed.tolist()
+        return tuple(listed) if isinstance(value, tuple) else listed
+    if isinstance(value, dict):
+        return {key: _varied_value(item, rng) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        items = [_varied_value(item, rng) for item in value]
+        return tuple(items) if isinstance(value, tuple) else items
+    return value
+
+
+def varied(args: tuple, seed_words) -> tuple | None:
+    """A second input like ``args`` for a probe whose arguments are not declared (or declare nothing to draw): every
+    float among them changed but kept what it is (``_varied_array``: a rotation stays a rotation, a symmetric
+    matrix symmetric, a positive mass positive, a unit vector a unit vector, a zero a zero), integers, flags,
+    strings, tables and the structure untouched; None when nothing changes."""
+    rng = np.random.default_rng(seed_words)
+    drawn = tuple(_varied_value(item, rng) for item in args)
+    from .evidence import call_key
+
+    try:
+        return None if call_key("", drawn) == call_key("", tuple(args)) else drawn
+    except Exception:  # noqa: BLE001 - arguments that cannot be keyed are not drawn
+        return None
+
+
+def second_args(decl: Declaration | None, args: tuple, seed_words, attempt: int = 0) -> tuple | None:
+    """The arguments of the engine's own second input, the ``attempt``-th draw: the declared roles drawn anew
+    (``redraw``), else every float of the arguments varied (``varied``); None for a run, a probe that must not be
+    drawn (``draw=False``) or arguments that hold no number to change."""
+    if decl is not None and (decl.motion or not decl.draw):
+        return None
+    words = list(seed_words) if attempt == 0 else [*seed_words, attempt]
+    if decl is not None:
+        drawn = redraw(decl, args, words)
+        if drawn is not None:
+            return drawn
+    return varied(tuple(args), words)

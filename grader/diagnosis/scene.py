@@ -8,6 +8,7 @@ from contextlib import nullcontext
 
 import numpy as np
 
+from ..errors import GraderFault
 from .evidence import array_of, call_key, Declaration, Source
 from .grammar import label_of, leaves_of
 
@@ -21,7 +22,9 @@ __all__ = [
 ]
 
 
-#: the reference calls one explanation may make (inputs transformed, terms, a second input and its variants)
+#: the distinct reference calls one explanation may make (inputs transformed, terms, a second input and its
+#: variants); a call asked again (the same input slips of the results of one call, explained one by one) is
+#: answered from the scene and not counted twice
 MAX_REFERENCE_CALLS = 80
 #: the student's calls one explanation may make (a second input, an argument changed)
 MAX_STUDENT_CALLS = 6
@@ -41,20 +44,39 @@ class Scene:
         self.ctx = ctx
         self.reference_calls = 0
         self.student_calls = 0
+        self._answers: dict[str, tuple] = {}  # call key -> (value, None) or (None, the grader fault it raised)
 
     def reference(self, probe: str, args: tuple, persist: bool = False):
-        self.reference_calls += 1
-        if self.reference_calls > MAX_REFERENCE_CALLS:
-            raise Budget()
+        try:
+            key = call_key(probe, tuple(args))
+        except Exception:  # noqa: BLE001 - arguments that cannot be keyed are asked every time
+            key = None
+        if key is not None and key in self._answers and not persist:
+            value, fault = self._answers[key]
+            if fault is not None:
+                raise fault
+            return value
+        if key is None or key not in self._answers:
+            self.reference_calls += 1
+            if self.reference_calls > MAX_REFERENCE_CALLS:
+                raise Budget(f"{MAX_REFERENCE_CALLS} reference calls")
         oracle = self.ctx.oracle
         asking = getattr(oracle, "diagnosing", None)  # a value the diagnosis needs: the kit's key holds it in full
-        with asking() if asking is not None else nullcontext():
-            return oracle.reference(probe, tuple(args), persist, check=self.ctx.check_id)
+        try:
+            with asking() if asking is not None else nullcontext():
+                value = oracle.reference(probe, tuple(args), persist, check=self.ctx.check_id)
+        except GraderFault as exc:
+            if key is not None:
+                self._answers[key] = (None, exc)
+            raise
+        if key is not None:
+            self._answers[key] = (value, None)
+        return value
 
     def student(self, probe: str, args: tuple):
         self.student_calls += 1
         if self.student_calls > MAX_STUDENT_CALLS:
-            raise Budget()
+            raise Budget(f"{MAX_STUDENT_CALLS} student calls")
         return self.ctx.child.call(probe, *args, timeout=STUDENT_TIMEOUT)
 
     def draw_seed(self, source: Source) -> list:
