@@ -207,11 +207,11 @@ def _callee(call: ast.Call) -> str:
 
 
 def _label(node) -> str:
-    """A name that says what an operand is (``A_IB`` of ``self.A_IB``, ``R3`` of ``R3(phi)``)."""
+    """A name that says what an operand is (``A_IB`` of ``self.A_IB`` and of ``A_IB.T``, ``R3`` of ``R3(phi)``)."""
     if isinstance(node, ast.Name):
         return node.id
     if isinstance(node, ast.Attribute):
-        return node.attr
+        return _label(node.value) if node.attr == "T" else node.attr
     if isinstance(node, ast.Call):
         return _callee(node)
     if isinstance(node, ast.Subscript):

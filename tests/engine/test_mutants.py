@@ -416,6 +416,13 @@ def loads(m1, m2, points):
     # END SOLUTION
 
 
+def back(v, A_IB):
+    """``A_IB.T v``: a vector turned back into body coordinates."""
+    # BEGIN SOLUTION problem 98
+    return A_IB.T @ np.asarray(v, dtype=float)
+    # END SOLUTION
+
+
 def height(a, b):
     """``a b + 0.4 + b``: a product, a constant and an argument."""
     # BEGIN SOLUTION problem 98
@@ -780,3 +787,13 @@ def test_a_constant_term_left_out_is_an_offset(made_up):
     varying = made_up_evidences(made_up, "height", lambda a, b: [a * b + 0.4], inputs)
     found = mutants.mutant_slips(scene("p98.height"), varying)
     assert found and {DIAGNOSES[h.name].family for h in found} == {"missing_term"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_transposed_rotation_left_out_is_a_frame_slip(made_up):
+    """``A_IB.T @ v`` as ``v``: the operand left out is a rotation (transposed), so the vector stays in the other
+    frame's coordinates (wrong_frame), not a factor left out of a product."""
+    turns = [Rotation.from_euler("xyz", angles).as_matrix() for angles in ((0.3, -0.5, 0.9), (1.1, 0.2, -0.4))]
+    inputs = [(np.array([0.2, -1.0, 0.7]), turns[0]), (np.array([1.3, 0.4, -0.6]), turns[1])]
+    evidences = made_up_evidences(made_up, "back", lambda v, A: v, inputs)
+    found = mutants.mutant_slips(scene("p98.back"), evidences)
+    assert found and {h.name for h in found} == {"wrong_frame"}, [(h.name, h.detail) for h in found]
