@@ -36,6 +36,15 @@ starts at 0% right; the check of each is the first of its problem's checks that 
 that repeats one of the first set or of the planted suite, and a slip that is as truly a slip of another family
 (``R3(-q)`` is ``R3(q).T``; a throw that ignores its ``v0`` starts from a wrong state), whose family is no fact.  ``--set named2`` holds its
 candidates that were already named rightly, ``--set pool2`` both.  The whole second set takes about a minute.
+
+Both sets were then read while the engine was built.  ``--set fresh3`` is a third held-out set
+(``tests/diagnosis/fresh3/``), written apart from the engine in the same way (from the sheet, the problem data and
+the reference alone) and kept from its builders until they were done.  Its rule is the second set's: graded on
+the grader of the day it was written, the first of its problem's checks that it fails does not name the true
+family (so it starts at 0% right); the family of a slip that is as truly of another is no fact and it was left
+out; and a slip that repeats one of the earlier sets or of the planted suite (the same file and replaced text, or
+the same edit) was dropped.  Candidates that no check failed are not in it.  ``--set named3`` holds its candidates
+that were already named rightly, ``--set pool3`` both.
 """
 
 from __future__ import annotations
@@ -65,7 +74,10 @@ __all__ = [
     "NAMED",
     "FRESH2",
     "NAMED2",
+    "FRESH3",
+    "NAMED3",
     "SETS",
+    "HELD_OUT",
     "SEED",
     "VERDICTS",
     "Fresh",
@@ -90,8 +102,14 @@ NAMED = ROOT / "tests" / "diagnosis" / "named"
 #: the second held-out set, written apart from the engine and from the first set, and its candidates already named
 FRESH2 = ROOT / "tests" / "diagnosis" / "fresh2"
 NAMED2 = ROOT / "tests" / "diagnosis" / "named2"
+#: the third held-out set, written apart from the engine and kept from its builders, and its candidates already named
+FRESH3 = ROOT / "tests" / "diagnosis" / "fresh3"
+NAMED3 = ROOT / "tests" / "diagnosis" / "named3"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
-        "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2)}
+        "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
+        "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3)}
+#: the sets that hold only mistakes whose cause was not told when they were written: the issue's target is read on them
+HELD_OUT = ("fresh", "fresh2", "fresh3")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
@@ -436,7 +454,7 @@ def summary(graded: list[Graded], naming_: Naming, seconds: float | None = None,
             lines.append(_row(exercise, mine))
     weak = [g for g in graded if g.mistake.exercise in ("I", "VI", "VII")]
     lines += [_row("I+VI+VII", weak), _row("all", graded), ""]
-    if graded and which in ("fresh", "fresh2"):
+    if graded and which in HELD_OUT:
         counts = Counter(g.verdict for g in graded)
         right, wrong = 100 * counts["right"] / len(graded), 100 * counts["wrong"] / len(graded)
         met = right >= 60 and wrong <= 2
@@ -490,8 +508,8 @@ def _select(mistakes: list[Fresh], args) -> list[Fresh]:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--set", choices=sorted(SETS), default="fresh", help="fresh (default): the mistakes today's "
-                        "catalogues do not name rightly; named: those they do; pool: both; fresh2, named2, pool2: the "
-                        "same of the second held-out set")
+                        "catalogues do not name rightly; named: those they do; pool: both; fresh2, named2, pool2 and "
+                        "fresh3, named3, pool3: the same of the second and third held-out sets")
     parser.add_argument("--exercises", help="only these exercises, e.g. VI,VII")
     parser.add_argument("--problems", help="only these problems, e.g. 42,44")
     parser.add_argument("--names", help="only the mistakes of these names")
