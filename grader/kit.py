@@ -65,8 +65,12 @@ class ReferenceChild:
     def call(self, probe: str, *args, timeout: float | None = None):
         from probes._codec import decode
 
+        from .checking import in_random_input
+
         self.calls += 1
-        _, encoded, _ = self.oracle.compute(probe, args)
+        key, encoded, _ = self.oracle.compute(probe, args)
+        if not in_random_input():  # a fixed case asked of the student (see _answers_to_the_student)
+            self.oracle.student_fixed_keys.add(key)
         return decode(encoded)
 
     def output(self) -> tuple[str, str]:
@@ -119,8 +123,17 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
     for call in shared:
         del key.calls[call]
     key.drop_checks(key.withheld)
+    for call in _answers_to_the_student(oracle) & set(key.calls):
+        del key.calls[call]
     _hold_at_sheet_digits(key, oracle, numbers, answers, seed)
     return key, reports
+
+
+def _answers_to_the_student(oracle: RecordingOracle) -> set[str]:
+    """Calls the key must not hold at all: the reference on the arguments of a fixed case asked of the student
+    that no check asks of the reference (the diagnosis engine traces a student's value to such a call), which a
+    lookup of the key would answer with a value of the right kind (a shape check earns its point with any)."""
+    return oracle.student_fixed_keys - oracle.fixed_keys
 
 
 def _kit_failures(key: AnswerKey, student: RecordingOracle, numbers, answers, seed) -> tuple[set[str], list]:

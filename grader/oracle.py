@@ -521,6 +521,7 @@ class RecordingOracle(LiveOracle):
         self.secret = secret
         self.key = AnswerKey(int(seed), fingerprint or sources_fingerprint(), __version__)
         self.fixed_keys: set[str] = set()  # calls of the reference on fixed cases (see round_fixed_cases)
+        self.student_fixed_keys: set[str] = set()  # calls of the "student" (the reference) on fixed cases
 
     def reference(self, probe: str, args: tuple, persist: bool = False, check: str | None = None):
         from .checking import in_random_input

@@ -20,3 +20,9 @@ def sandbox_header() -> list[str]:
 
 def pytest_report_header(config):
     return sandbox_header()
+
+
+# The kit's answer key, recorded once per test process: defined here, once, rather than imported into each test
+# module (a fixture imported into a module is that module's own, and a session fixture of several modules is
+# recorded once for each of them).
+from .kit_support import answer_key, deferred_ids, kit_oracle  # noqa: E402,F401

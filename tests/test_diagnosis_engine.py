@@ -28,12 +28,9 @@ from grader.workers import Forked
 
 from .kit_support import (  # noqa: F401 (fixtures)
     SEED,
-    answer_key,
     assert_named_failure,
     assert_same_verdicts,
-    deferred_ids,
     grade_live_and_kit,
-    kit_oracle,
     warm_slot,
 )
 from .submissions import Planted, build_planted

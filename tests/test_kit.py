@@ -27,7 +27,7 @@ from grader.oracle import KEY_FILE, LiveOracle
 from grader.results import Status
 
 from .environments import base_python, public_tmp_dir
-from .kit_support import KIT_SEED, SEED, answer_key, deferred_ids, kit_oracle  # noqa: F401 (fixtures)
+from .kit_support import KIT_SEED, SEED
 from .submissions import ROOT, copy_reference
 
 #: a solution line shorter than this is too generic to be specific ("q = np.asarray(q, dtype=float)")

@@ -21,7 +21,7 @@ from grader import grade_problem
 from grader.workers import Fresh
 from grader.results import Status
 
-from .kit_support import SEED, answer_key, kit_oracle  # noqa: F401 (fixtures)
+from .kit_support import SEED
 from .submissions import copy_reference
 
 FRAMES = ("A_IC1", "A_IC2", "A_IC3")

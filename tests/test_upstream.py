@@ -23,11 +23,8 @@ from grader.results import Status
 
 from .kit_support import (  # noqa: F401 (fixtures)
     SEED,
-    answer_key,
     assert_same_verdicts,
-    deferred_ids,
     grade_live_and_kit,
-    kit_oracle,
 )
 from .submissions import ROOT, build_planted, copy_reference, planted_mistakes
 

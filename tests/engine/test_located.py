@@ -23,11 +23,8 @@ from grader.diagnosis.evidence import Source, counterpart, evaluated, sibling
 from grader.results import Status
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
-    answer_key,
     assert_same_verdicts,
-    deferred_ids,
     grade_live_and_kit,
-    kit_oracle,
     warm_slot,
 )
 from tests.submissions import Planted, build_planted
