@@ -69,8 +69,9 @@ class ReferenceChild:
 
         self.calls += 1
         key, encoded, _ = self.oracle.compute(probe, args)
-        if not in_random_input():  # a fixed case asked of the student (see _answers_to_the_student)
-            self.oracle.student_fixed_keys.add(key)
+        fixed = getattr(self.oracle, "student_fixed_keys", None)  # a recording oracle's (_answers_to_the_student)
+        if fixed is not None and not in_random_input():
+            fixed.add(key)
         return decode(encoded)
 
     def output(self) -> tuple[str, str]:
@@ -130,10 +131,11 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
 
 
 def _answers_to_the_student(oracle: RecordingOracle) -> set[str]:
-    """Calls the key must not hold at all: the reference on the arguments of a fixed case asked of the student
-    that no check asks of the reference (the diagnosis engine traces a student's value to such a call), which a
-    lookup of the key would answer with a value of the right kind (a shape check earns its point with any)."""
-    return oracle.student_fixed_keys - oracle.fixed_keys
+    """Calls the key must not hold at all: the diagnosis engine's calls of the reference on the arguments of a
+    fixed case asked of the student that no check asks of the reference (the engine traces a student's value to
+    such a call), which a lookup of the key would answer with a value of the right kind (a shape check earns its
+    point with any)."""
+    return (oracle.student_fixed_keys & oracle.diagnosis_keys) - oracle.fixed_keys
 
 
 def _kit_failures(key: AnswerKey, student: RecordingOracle, numbers, answers, seed) -> tuple[set[str], list]:

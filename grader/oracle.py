@@ -522,6 +522,7 @@ class RecordingOracle(LiveOracle):
         self.key = AnswerKey(int(seed), fingerprint or sources_fingerprint(), __version__)
         self.fixed_keys: set[str] = set()  # calls of the reference on fixed cases (see round_fixed_cases)
         self.student_fixed_keys: set[str] = set()  # calls of the "student" (the reference) on fixed cases
+        self.diagnosis_keys: set[str] = set()  # calls of the reference the diagnosis engine asked
 
     def reference(self, probe: str, args: tuple, persist: bool = False, check: str | None = None):
         from .checking import in_random_input
@@ -529,6 +530,8 @@ class RecordingOracle(LiveOracle):
         key, encoded, value = self.compute(probe, args, persist)
         if not in_random_input() and not _in_diagnosis() and not _reference_only(probe):
             self.fixed_keys.add(key)
+        if _in_diagnosis():
+            self.diagnosis_keys.add(key)
         entry = self.key.calls.setdefault(key, {"value": encoded, "checks": []})
         if check is not None and check not in entry["checks"]:
             entry["checks"].append(check)
