@@ -20,9 +20,9 @@ import grader.diagnosis as engine
 from grader.checking import Tol
 from grader.diagnosis import Declaration, Evidence, explain
 from grader.diagnosis.evidence import Source, counterpart, evaluated, sibling
-from grader.results import Status
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
+    assert_named_failure,
     assert_same_verdicts,
     grade_live_and_kit,
     warm_slot,
@@ -66,13 +66,7 @@ def test_a_derived_comparison_is_told_its_cause(mistake, tmp_path, kit_oracle, d
     submission = build_planted(mistake, tmp_path / "pkg")
     live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
     assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    target = {r.check_id: r for r in live.results}[mistake.check]
-    assert target.status is Status.FAILED, target.message
-    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
-    assert mistake.message in target.hint, target.hint
-    unexpected = [r.check_id for r in live.results if r.status not in (Status.PASSED, Status.SKIPPED)
-                  and r.check_id not in (mistake.check, *mistake.also)]
-    assert not unexpected, unexpected
+    assert_named_failure(mistake, live)
 
 
 # ------------------------------------------------------------------------------------------ stand-ins
