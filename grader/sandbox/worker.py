@@ -264,7 +264,7 @@ def seal() -> None:
     """After the start-up's imports, before any code of a submission: the grader's own packages can no longer be
     imported, and those that were are forgotten."""
     sys.meta_path.insert(0, BlockTrustedPackages())
-    for name in [m for m in sys.modules if m.split(".")[0] in BLOCKED]:
+    for name in [m for m in sys.modules.copy() if m.split(".")[0] in BLOCKED]:
         del sys.modules[name]
     sys.setrecursionlimit(3000)
 
