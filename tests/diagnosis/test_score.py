@@ -331,3 +331,29 @@ def test_the_script_grades_and_classifies_a_subset(tmp_path):
             assert row["verdict"] == classify(row["diagnosis"], row["family"], family_of)
     for exercise in EXERCISES:
         assert any(line.lstrip().startswith(exercise + " ") for line in run.stdout.splitlines())
+
+
+@pytest.mark.slow
+def test_the_unlisted_measure_leaves_out_a_mistake_that_a_check_names_without_the_engine():
+    """``--unlisted`` grades each mistake with the engine off and on: a planted mistake of problem 8 that its
+    check's catalogue names (a body-frame Euler step) is listed and left out of the measure; the engine's own
+    development mistake of the same problem (the rate matrix inverted), which no catalogue names, is not, and is
+    read with the engine on."""
+    from .score import Fresh, grade_all, summary
+
+    planted = Fresh("p08-euler-body-frame", 8, "problem_08.py", "return A_IC + dt * skew(I_omega) @ A_IC",
+                    "return A_IC + dt * A_IC @ skew(I_omega)", "p08.euler_step", "frame", "a body-frame step")
+    engine = Fresh("engine-inverse-rate-matrix", 8, "rotations.py",
+                   "return np.array([[1.0, 0.0, -sb], [0.0, ca, cb * sa], [0.0, -sa, ca * cb]])",
+                   "return np.linalg.inv(np.array([[1.0, 0.0, -sb], [0.0, ca, cb * sa], [0.0, -sa, ca * cb]]))",
+                   "p08.rate_matrix", "inverse", "the rate matrix inverted")
+    naming_ = naming()
+    graded = {g.mistake.name: g for g in grade_all([planted, engine], naming_.family_of, unlisted=True)}
+    assert graded["p08-euler-body-frame"].listed is True
+    assert graded["engine-inverse-rate-matrix"].listed is False
+    assert graded["engine-inverse-rate-matrix"].verdict == "right", graded["engine-inverse-rate-matrix"].diagnosis
+    text = summary(list(graded.values()), naming_, which="pool")
+    assert "listed (named rightly with the diagnosis engine off): 1; the issue's measure is read on the other 1" in text
+    assert "right 100%, wrong 0%; mistakes that no check names rightly without the engine" in text
+    plain = grade_all([engine], naming_.family_of)
+    assert plain[0].listed is None and "listed (named" not in summary(plain, naming_, which="pool")
