@@ -885,7 +885,8 @@ def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) ->
 _ABSORB = 100_000
 #: how often the deadline looks at the clock [s]
 _POLL = 0.02
-#: a thread that waits rather than works is interrupted after this many times the budget of wall time
+#: a thread that waits rather than works is interrupted after this many times the budget of wall time (not counting
+#: the time it was ready to run and waited for a core, where the system tells it)
 WAIT_FACTOR = 5.0
 
 
@@ -897,13 +898,32 @@ def _cpu_clock(thread: int):
         return None
 
 
+def _schedstat(native_id: int) -> str | None:
+    """The scheduler's statistics of a thread of this process (Linux: CPU time, time spent ready to run but waiting
+    for a core, in ns), or None where they cannot be read."""
+    path = f"/proc/self/task/{native_id}/schedstat"
+    return path if _queued(path) is not None else None
+
+
+def _queued(path: str | None) -> float | None:
+    """Seconds the thread has spent ready to run and waiting for a core, or None."""
+    if path is None:
+        return None
+    try:
+        with open(path, encoding="ascii") as stats:
+            return int(stats.read().split()[1]) / 1e9
+    except (OSError, ValueError, IndexError):
+        return None
+
+
 
 class _Deadline:
     """Interrupts the running thread with ``_Timeout`` once it has spent ``seconds`` of CPU time, unless left
     before: what the tier may try does not depend on how loaded the machine is (a busy machine slows the wall clock,
     not the work).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``: not on macOS or
-    Windows) it counts wall time; and a thread that waits without working is interrupted after ``WAIT_FACTOR``
-    times ``seconds`` of wall time in any case."""
+    Windows) it counts wall time; and a thread that waits without working (for a lock, say) is interrupted after
+    ``WAIT_FACTOR`` times ``seconds`` of wall time in any case, less the time it was ready to run and waited for a
+    core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the work early."""
 
     def __init__(self, seconds: float):
         self.thread = threading.get_ident()
@@ -913,19 +933,24 @@ class _Deadline:
         self.fired = False
         self.done = threading.Event()
         self.clock = _cpu_clock(self.thread)
+        self.schedstat = _schedstat(threading.get_native_id())
         self.timer = threading.Thread(target=self._watch, daemon=True)
 
-    def _spent(self, start_cpu: float, start_wall: float) -> bool:
+    def _spent(self, start_cpu: float, start_wall: float, start_queued: float | None) -> bool:
         wall = time.monotonic() - start_wall
         if self.clock is None:
             return wall >= self.seconds
+        queued = _queued(self.schedstat)
+        if queued is not None and start_queued is not None:
+            wall -= queued - start_queued  # ready to run, but no core was free: the machine's load, not waiting
         return time.clock_gettime(self.clock) - start_cpu >= self.seconds or wall >= WAIT_FACTOR * self.seconds
 
     def _watch(self) -> None:
         start_cpu = time.clock_gettime(self.clock) if self.clock is not None else 0.0
         start_wall = time.monotonic()
+        start_queued = _queued(self.schedstat)
         while not self.done.wait(min(_POLL, self.seconds)):
-            if self._spent(start_cpu, start_wall):
+            if self._spent(start_cpu, start_wall, start_queued):
                 self._fire()
                 return
 

@@ -11,6 +11,7 @@ code of the check's problem, kept when it reproduces the student's value on the 
   the engine off no catalogue names a cause of that family.
 """
 
+import os
 import importlib
 import itertools
 import shutil
@@ -794,3 +795,48 @@ def test_a_transposed_rotation_left_out_is_a_frame_slip(made_up):
     evidences = made_up_evidences(made_up, "back", lambda v, A: v, inputs)
     found = mutants.mutant_slips(scene("p98.back"), evidences)
     assert found and {h.name for h in found} == {"wrong_frame"}, [(h.name, h.detail) for h in found]
+
+
+@pytest.mark.skipif(not (hasattr(time, "pthread_getcpuclockid") and hasattr(os, "sched_setaffinity")
+                         and os.path.exists(f"/proc/self/task/{os.getpid()}/schedstat")),
+                    reason="no CPU clock or scheduler statistics of a thread here")
+def test_a_thread_that_waits_for_a_core_is_not_stopped_early():
+    """On a machine far busier than it has cores, the explaining thread waits for a core most of the time: that
+    wait is not the waiting the deadline bounds, so the work is not stopped before its budget of CPU time is spent.
+    Run in a child process pinned to one core beside twenty busy processes (also pinned there), within a generous
+    bound."""
+    import subprocess
+    import sys
+
+    script = """
+import os, time
+from grader.diagnosis import mutants
+
+os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
+hogs = []
+for _ in range(20):
+    pid = os.fork()
+    if pid == 0:
+        while True:
+            pass
+    hogs.append(pid)
+try:
+    clock = time.pthread_getcpuclockid(__import__("threading").get_ident())
+    started, cpu = time.monotonic(), time.clock_gettime(clock)
+    try:
+        with mutants._Deadline(0.2) as deadline:
+            while time.clock_gettime(clock) - cpu < 0.15:
+                pass
+    except mutants._Timeout:
+        pass
+    print(deadline.fired, time.monotonic() - started)
+finally:
+    for pid in hogs:
+        os.kill(pid, 9)
+        os.waitpid(pid, 0)
+"""
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr[-2000:]
+    fired, wall = run.stdout.split()
+    assert float(wall) > mutants.WAIT_FACTOR * 0.2  # it did wait for the core far longer than the wall-time bound
+    assert fired == "False"
