@@ -531,12 +531,14 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
     if len(evidences) < 2:
         return None
     first, second = _result_evidences(evidences[0]), _result_evidences(evidences[1])
-    findings = []
+    findings, left = [], False
     for path in [path for path in first if path in second][:RESULT_LEAVES]:
         finding = find(scene, [first[path], second[path]])
         if finding is not None and finding.names:
             findings.append((first[path].name, finding))
-    findings = [(label, finding) for label, finding in findings if finding.names]
+        left = left or (finding is not None and not finding.names and KIT_NOTE in finding.hint)
+    if left:  # the student kit: a result left to the graded submission's formula tier, which may say more
+        return Finding((), KIT_NOTE)
     if not findings or len({f.diagnosis for _, f in findings}) != 1:
         return None
     hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
@@ -568,12 +570,15 @@ def _told(tiers: list, where: str) -> Finding | None:
     the families stay within ``MAX_FAMILIES``, and left out where they would not: it adds a name, not an
     explanation, and never makes the engine name nothing.
     Within a tier the simplest outranks the others (its costs rank slips of one kind, on the same inputs); across
-    tiers no cost outranks a rival that reproduces the answer on the same inputs (see the package's map)."""
+    tiers no cost outranks a rival that reproduces the answer on the same inputs (see the package's map), and a
+    later tier's name of a family already told is not told (the first tier's name is the more particular: a
+    gravity's sign before a term's)."""
     told = []
     for tier in tiers:
         if tier:
             cost = min(h.cost for h in tier)
-            told += [h for h in tier if h.cost == cost and h not in told]
+            known = {DIAGNOSES[h.name].family for h in told}  # a later tier's name of a family told adds nothing
+            told += [h for h in tier if h.cost == cost and h not in told and DIAGNOSES[h.name].family not in known]
     if not told:
         return None
     seen = [h for h in told if not h.twin]
