@@ -9,8 +9,9 @@ matrix symmetric, a positive mass positive; a draw on which the reference raises
 not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
 (none, or more than two).  It never names a default cause.
 
-Every tier is heard (the run's, the outputs', the inputs', the declared terms', an argument ignored, the
-formulas'), even where an earlier one explained the answer: a slip that two tiers reproduce alike, with two
+Every tier is heard (the run's, the outputs', the inputs', the declared terms', the formulas'; the test of an
+argument ignored where nothing simpler than its cost explained it, ``engine.IGNORED_COST``), even where an earlier
+one explained the answer: a slip that two tiers reproduce alike, with two
 families, is told with both rather than with the one the first tier saw (an angular velocity integrated backwards
 gives the transpose of the rotation: a transpose to the output tier, a sign to the student).  The rule of rank:
 
@@ -18,8 +19,8 @@ gives the transpose of the rotation: a transpose to the output tier, a sign to t
   inputs (a whole value's sign before one entry's), and the named sets are told rightly so;
 * across tiers no hypothesis outranks a rival for being simpler: the tiers' costs measure different things (an
   output transformed, an input transformed, a formula's code changed), and two slips that give the student's
-  value on the same inputs cannot be told apart by them; a later tier's name of a family already told is not told
-  (the earlier tier's is the more particular: a gravity's sign, not one term's sign);
+  value on the same inputs cannot be told apart by them (a rival of the same family adds its name, as the names of
+  one tier's simplest slips did: a gravity's sign beside a term's sign, which no tier can tell the more particular);
 * nor for reproducing on more inputs: every tier is held to the inputs of the comparison (the formula tier to a
   third one as well, where it can draw one), and a hypothesis that fails one of them is not kept at all;
 * where the hypotheses told span more than two families (``engine.MAX_FAMILIES``), nothing is named;

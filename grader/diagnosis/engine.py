@@ -387,7 +387,8 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs)]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
-    tiers.append(_heard(lambda: _ignored(scene, evidences[0]), explained, "ignored"))
+    if not explained or min(h.cost for tier in tiers for h in tier) >= IGNORED_COST:
+        tiers.append(_heard(lambda: _ignored(scene, evidences[0]), explained, "ignored"))
     if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
                                                lambda: _second_input(scene, evidences[-1])), any(tiers), "formulas")
@@ -411,6 +412,10 @@ def _left_to_live(finding: Finding | None) -> Finding:
     return Finding((), f"{finding.hint}\n{KIT_NOTE}")
 
 
+#: the test of an ignored argument is heard only where no slip simpler than cost 3 explained the answer: it changes
+#: one argument on the input shown only, and a shrunk input (a zero among the others) leaves a value unchanged by
+#: chance; heard after every explanation it told such chances beside right causes
+IGNORED_COST = 3
 #: the keys of the input tier's hypotheses (``grammar.input_slips``): the reference on transformed arguments
 INPUT_KEYS = "in:"
 
@@ -570,15 +575,12 @@ def _told(tiers: list, where: str) -> Finding | None:
     the families stay within ``MAX_FAMILIES``, and left out where they would not: it adds a name, not an
     explanation, and never makes the engine name nothing.
     Within a tier the simplest outranks the others (its costs rank slips of one kind, on the same inputs); across
-    tiers no cost outranks a rival that reproduces the answer on the same inputs (see the package's map), and a
-    later tier's name of a family already told is not told (the first tier's name is the more particular: a
-    gravity's sign before a term's)."""
+    tiers no cost outranks a rival that reproduces the answer on the same inputs (see the package's map)."""
     told = []
     for tier in tiers:
         if tier:
             cost = min(h.cost for h in tier)
-            known = {DIAGNOSES[h.name].family for h in told}  # a later tier's name of a family told adds nothing
-            told += [h for h in tier if h.cost == cost and h not in told and DIAGNOSES[h.name].family not in known]
+            told += [h for h in tier if h.cost == cost and h not in told]
     if not told:
         return None
     seen = [h for h in told if not h.twin]

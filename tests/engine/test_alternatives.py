@@ -113,12 +113,11 @@ def test_across_tiers_a_rival_of_another_family_is_told_beside_the_first():
     assert set(finding.names) == {"sign_flip", "argument_order"} and finding.hint.startswith("Could be ")
 
 
-def test_a_later_tiers_name_of_a_family_told_is_not_told():
-    """The run tier's gravity sign and the formula tier's sign of a term: one family, the first tier's name."""
+def test_a_rival_of_the_same_family_adds_its_name_not_a_family():
+    """The run tier's gravity sign and the formula tier's sign of a term: one family, both names."""
     finding = explaining._told([[H("gravity_sign", 2)], [], [], [], [], [H("sign_flip", 4)]], "here")
-    assert finding.names == ("gravity_sign",) and finding.hint.startswith("Looks like ")
-    within = explaining._told([[H("sign_flip", 1, "a"), H("angle_sign", 1, "b")]], "here")
-    assert set(within.names) == {"sign_flip", "angle_sign"}
+    assert finding.names == ("gravity_sign", "sign_flip")
+    assert {DIAGNOSES[n].family for n in finding.names} == {"sign"}
 
 
 def test_more_than_two_families_name_nothing():
@@ -166,7 +165,23 @@ SKEW_TRANSPOSED = Planted(
     check="p12.sheet_cases", diagnosis="transpose or angle_sign",
     message="a rotation transposed is the rotation the other way", also=("p12.wheel",))
 
-MISTAKES = [SKEW_TRANSPOSED]
+#: problem 8's exponential step with dt left out: dt does not change the student's value (the test of an ignored
+#: argument), and the formula tier reproduces it with a factor left out: two tiers, two families, both told
+STEP_WITHOUT_DT = Planted(
+    name="alternatives-p08-exponential-step-without-dt", problem=8, file="problem_08.py",
+    old="return expm_skew(dt * skew(I_omega)) @ np.asarray(A_IC, dtype=float)",
+    new="return expm_skew(skew(I_omega)) @ np.asarray(A_IC, dtype=float)",
+    check="p08.exponential_step", diagnosis="ignored_argument or missing_factor", message="Could be ",
+    also=("p08.part_c",))
+#: near miss: the step taken twice as long: only the inputs' tier reproduces it (dt at twice its value), and the
+#: formula tier, heard, adds nothing: one family, "looks like"
+STEP_TWICE = Planted(
+    name="alternatives-p08-exponential-step-twice", problem=8, file="problem_08.py",
+    old="return expm_skew(dt * skew(I_omega)) @ np.asarray(A_IC, dtype=float)",
+    new="return expm_skew(2.0 * dt * skew(I_omega)) @ np.asarray(A_IC, dtype=float)",
+    check="p08.exponential_step", diagnosis="scaled_argument", message="Looks like ", also=("p08.part_c",))
+
+MISTAKES = [SKEW_TRANSPOSED, STEP_WITHOUT_DT, STEP_TWICE]
 
 
 @pytest.fixture(scope="module")

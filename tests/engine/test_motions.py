@@ -38,7 +38,7 @@ GRAVITY_SIGN_BAR = Planted(
     name="motions-p44-gravity-sign", problem=44, file="problem_44.py",
     old="qdd, _ = accelerations(y[:3], y[3:], m, theta, g)",
     new="qdd, _ = accelerations(y[:3], y[3:], m, theta, -g)",
-    check="p44.motion", diagnosis="gravity_sign", message="the mistake is in the model")
+    check="p44.motion", diagnosis="gravity_sign or sign_flip", message="the mistake is in the model")
 ROWS_OF_THE_BAR = Planted(
     name="motions-p44-ode-rows", problem=44, file="problem_44.py",
     old="return np.concatenate([y[3:], qdd])",
