@@ -6,9 +6,37 @@ student's answer within the comparison's tolerance on the input shown *and* on a
 randomized comparison's second failing input, or an input the engine draws itself: the probe's declared roles
 drawn anew, or else every float of its arguments varied but kept what it is, a rotation a rotation, a symmetric
 matrix symmetric, a positive mass positive; a draw on which the reference raises or gives a degenerate value is
-not used); it ranks them by simplicity
-and says "looks like X" (one), "could be X or Y" (several at the simplest level) or nothing (none).  It never
-names a default cause.
+not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
+(none, or more than two).  It never names a default cause.
+
+Every tier is heard (the run's, the outputs', the inputs', the declared terms', the formulas'; the test of an
+argument ignored where nothing simpler than its cost explained it, ``engine.IGNORED_COST``), even where an earlier
+one explained the answer: a slip that two tiers reproduce alike, with two
+families, is told with both rather than with the one the first tier saw (an angular velocity integrated backwards
+gives the transpose of the rotation: a transpose to the output tier, a sign to the student).  The rule of rank:
+
+* within a tier the simplest hypotheses outrank the others: its costs compare slips of one kind on the same
+  inputs (a whole value's sign before one entry's), and the named sets are told rightly so;
+* across tiers no hypothesis outranks a rival for being simpler: the tiers' costs measure different things (an
+  output transformed, an input transformed, a formula's code changed), and two slips that give the student's
+  value on the same inputs cannot be told apart by them (a rival of the same family adds its name, as the names of
+  one tier's simplest slips did: a gravity's sign beside a term's sign, which no tier can tell the more particular);
+* nor for reproducing on more inputs: every tier is held to the inputs of the comparison (the formula tier to a
+  third one as well, where it can draw one), and a hypothesis that fails one of them is not kept at all;
+* where the hypotheses told span more than two families (``engine.MAX_FAMILIES``), nothing is named;
+* a later tier heard after an earlier one explained the answer that runs out of its budget (calls, the formula
+  tier's time) leaves the earlier finding standing, as it stood before the later tier was heard;
+* the student kit cannot hear the formula tier (it holds no reference code): where its own tiers explain the
+  answer it names no cause, says what they found and that the graded submission may say more.
+
+Measured on the sets of realistic mistakes (``tests/diagnosis/score.py``, ``--set pool``, ``pool2``, ``pool3``):
+hearing every tier, with the equivalences below, turned three wrong causes into "could be" with the true one and
+took no right one; an order by cost across tiers had told the first tier's family alone.
+
+Slips that are one value by mathematics (a rotation transposed and the rotation of the negated angle, a skew
+matrix transposed and negated, a cross product with its operands exchanged and negated) are declared once with the
+grammar (``grammar.EQUIVALENCES``) and told together by whichever tier finds one of them; such a twin adds a name,
+not an explanation: where it would take the families told past two, it is left out rather than nothing named.
 
 The grammar:
 

@@ -368,7 +368,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     if run is not None:
         trace.note("run", found=[h.name for h in found])
     if first.source is None:  # a value derived from the student's own: explain the results it came from
-        return _finding(found, "here") if found or first.call is None else _from_results(scene, evidences)
+        return _told([found], "here") if found or first.call is None else _from_results(scene, evidences)
     decl = declaration(first.source.probe)
     constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
     if len(evidences) == 1 and not (decl is not None and decl.motion):
@@ -380,18 +380,60 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     inputs = [_predict(scene, e, constants) for e in evidences]
     if len(inputs) == 1:
         inputs[0] = _single(inputs[0])
-    found += _keep(inputs, list(inputs[0].predicted))
-    found += term_slips(inputs)
+    keys = list(inputs[0].predicted)
+    outputs = _keep(inputs, [k for k in keys if not k.startswith(INPUT_KEYS)])
     if all(_same_shape(e) for e in evidences) and not (decl is not None and decl.motion):
-        found += precision_slips(first.got, first.expected, first.tol)
-    trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for h in found])
-    if not found or min(h.cost for h in found) >= 3:
-        found += _ignored(scene, evidences[0])
-    if not found and not (decl is not None and decl.motion):  # slips inside a formula: the last tier
-        found += mutant_slips(scene, evidences + _siblings(evidences), lambda: _second_input(scene, evidences[-1]))
-        if not found and left_to_live(scene, evidences):
-            return Finding((), KIT_NOTE)
-    return _finding(found, "on the input shown and on a second one" if len(evidences) > 1 else "here")
+        outputs += precision_slips(first.got, first.expected, first.tol)
+    tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs)]
+    trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
+    explained = any(tiers)
+    if not explained or min(h.cost for tier in tiers for h in tier) >= IGNORED_COST:
+        tiers.append(_heard(lambda: _ignored(scene, evidences[0]), explained, "ignored"))
+    if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
+        formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
+                                               lambda: _second_input(scene, evidences[-1])), any(tiers), "formulas")
+        if not formulas and left_to_live(scene, evidences):
+            return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
+        tiers.append(formulas)
+    return _told(tiers, _where(evidences))
+
+
+def _where(evidences: list) -> str:
+    return "on the input shown and on a second one" if len(evidences) > 1 else "here"
+
+
+def _left_to_live(finding: Finding | None) -> Finding:
+    """The student kit's finding where the graded submission would also hear the formula tier, which the kit
+    cannot (it holds no reference code): no name, since a slip inside a formula may reproduce the answer as well
+    and be told beside it, and the hint of what the kit's own tiers found, with the note that the graded
+    submission may say more."""
+    if finding is None or not finding.names:
+        return Finding((), KIT_NOTE)
+    return Finding((), f"{finding.hint}\n{KIT_NOTE}")
+
+
+#: the test of an ignored argument is heard only where no slip simpler than cost 3 explained the answer: it changes
+#: one argument on the input shown only, and a shrunk input (a zero among the others) leaves a value unchanged by
+#: chance; heard after every explanation it told such chances beside right causes
+IGNORED_COST = 3
+#: the keys of the input tier's hypotheses (``grammar.input_slips``): the reference on transformed arguments
+INPUT_KEYS = "in:"
+
+
+def _heard(ask, explained: bool, tier: str) -> list:
+    """The hypotheses of a later tier, asked whether or not an earlier one explained the answer (``explained``): a
+    slip that two tiers reproduce alike is told with both families.  Where an earlier tier explained it, a later
+    tier that runs out of its budget leaves the earlier finding standing (as it stood before the later was heard);
+    where none did, the budget ends the explanation (``Budget``)."""
+    if not explained:
+        return ask()
+    try:
+        found = ask()
+    except Budget as exc:
+        trace.note("heard", tier=tier, stopped=str(exc)[:80])
+        return []
+    trace.note("heard", tier=tier, found=[h.name for h in found])
+    return found
 
 
 def _traced_source(source: Source | None):
@@ -494,12 +536,14 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
     if len(evidences) < 2:
         return None
     first, second = _result_evidences(evidences[0]), _result_evidences(evidences[1])
-    findings = []
+    findings, left = [], False
     for path in [path for path in first if path in second][:RESULT_LEAVES]:
         finding = find(scene, [first[path], second[path]])
         if finding is not None and finding.names:
             findings.append((first[path].name, finding))
-    findings = [(label, finding) for label, finding in findings if finding.names]
+        left = left or (finding is not None and not finding.names and KIT_NOTE in finding.hint)
+    if left:  # the student kit: a result left to the graded submission's formula tier, which may say more
+        return Finding((), KIT_NOTE)
     if not findings or len({f.diagnosis for _, f in findings}) != 1:
         return None
     hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
@@ -520,12 +564,41 @@ def _single(one: _Input) -> _Input:
     return one
 
 
+#: the families a finding may span, at most: past them, that many causes fit the answer alike and none is told
+MAX_FAMILIES = 2
+
+
+def _told(tiers: list, where: str) -> Finding | None:
+    """The finding of the tiers heard (``tiers``: the hypotheses of each, in the engine's order): the simplest of
+    each tier, all of them told ("could be X or Y"), or None where they span more than ``MAX_FAMILIES`` families.
+    A twin (the same value as another slip by mathematics, ``grammar.EQUIVALENCES``) is told beside its slip where
+    the families stay within ``MAX_FAMILIES``, and left out where they would not: it adds a name, not an
+    explanation, and never makes the engine name nothing.
+    Within a tier the simplest outranks the others (its costs rank slips of one kind, on the same inputs); across
+    tiers no cost outranks a rival that reproduces the answer on the same inputs (see the package's map)."""
+    told = []
+    for tier in tiers:
+        if tier:
+            cost = min(h.cost for h in tier)
+            told += [h for h in tier if h.cost == cost and h not in told]
+    if not told:
+        return None
+    seen = [h for h in told if not h.twin]
+    families = {DIAGNOSES[h.name].family for h in seen}
+    if len(families) > MAX_FAMILIES:
+        trace.note("rivals", families=sorted(families))
+        return None
+    if len(families | {DIAGNOSES[h.name].family for h in told}) > MAX_FAMILIES:  # a twin adds no explanation
+        trace.note("twins", dropped=[h.name for h in told if h.twin])
+        told = seen
+    return _finding(told, where)
+
+
 def _finding(found: list, where: str) -> Finding | None:
-    """The simplest hypotheses found, by name, and the hint that says what they are and where they hold."""
+    """The hypotheses told (``_told``), by name, and the hint that says what they are and where they hold."""
     if not found:
         return None
-    cost = min(h.cost for h in found)
-    simplest = [h for h in found if h.cost == cost]
+    simplest = list(found)
     by_name: dict[str, list[Hypothesis]] = {}
     for h in simplest:
         by_name.setdefault(h.name, []).append(h)

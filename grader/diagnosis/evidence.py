@@ -136,6 +136,7 @@ class Hypothesis:
     name: str  # its diagnosis
     cost: int  # simplicity: 1 simplest
     detail: str  # what it is, for the hint
+    twin: bool = False  # the same value as another hypothesis by mathematics (``grammar.EQUIVALENCES``)
 
 
 def call_key(probe: str, args: tuple) -> str:

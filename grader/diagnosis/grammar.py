@@ -6,6 +6,7 @@ roles."""
 from __future__ import annotations
 
 import itertools
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -13,6 +14,10 @@ from ..values import Tol
 from .evidence import array_of, at, Declaration, equal, Hypothesis, within
 
 __all__ = [
+    "Equivalence",
+    "EQUIVALENCES",
+    "kinds_of",
+    "equivalents",
     "ENTRYWISE",
     "FACTORS",
     "ARGUMENT_FACTORS",
@@ -55,6 +60,58 @@ DRAWN_SPREAD = (0.15, 0.45)
 DRAWN_TURN = (0.3, 0.9)
 
 
+@dataclass(frozen=True)
+class Equivalence:
+    """Two slips that give one value by mathematics wherever the value (or the expression) is of ``kind``: what
+    the student did cannot be told from the value, so a slip ``seen`` is told with its twin ``also`` ("could be X
+    or Y"), whichever tier saw it."""
+
+    seen: str  # the diagnosis of the slip a tier finds
+    kind: str  # what the value or the expression must be (``kinds_of``; the formula tier's own: "cross")
+    also: str  # the diagnosis of the twin slip
+    detail: str  # what the twin is, for the hint
+
+
+#: the slips that are one value by mathematics, declared once for every tier: a rotation transposed is the
+#: rotation of the negated angle (or of the angular velocity integrated backwards); a skew matrix transposed is its
+#: negative; a cross product (an antisymmetric product) with its operands exchanged is its negative, as a whole
+#: difference with the opposite sign is the difference of its operands exchanged
+EQUIVALENCES = (
+    Equivalence("transpose", "rotation", "angle_sign",
+                "a rotation transposed is the rotation the other way: an angle or an angular velocity with the "
+                "opposite sign gives it"),
+    Equivalence("transpose", "skew", "sign_flip", "a skew matrix transposed is the skew matrix negated"),
+    Equivalence("sign_flip", "skew", "transpose", "a skew matrix negated is the skew matrix transposed"),
+    Equivalence("sign_flip", "cross", "factor_order",
+                "a cross product with the opposite sign is the cross product of its operands exchanged"),
+)
+#: how far a matrix may be from orthogonal, or from skew, and still be one (relative to its size)
+KIND_TOL = 1e-9
+
+
+def kinds_of(value) -> frozenset:
+    """What a value is among the kinds of ``EQUIVALENCES``: "rotation" (a proper orthogonal matrix), "skew" (a
+    nonzero skew-symmetric matrix)."""
+    E = array_of(value)
+    if E is None or E.ndim != 2 or E.shape[0] != E.shape[1] or E.shape[0] < 2 or not np.all(np.isfinite(E)):
+        return frozenset()
+    kinds = set()
+    n = E.shape[0]
+    if np.max(np.abs(E.T @ E - np.eye(n))) < KIND_TOL * n and np.linalg.det(E) > 0:
+        kinds.add("rotation")
+    scale = np.max(np.abs(E))
+    if scale > 0 and np.max(np.abs(E + E.T)) <= KIND_TOL * scale:
+        kinds.add("skew")
+    return frozenset(kinds)
+
+
+def equivalents(hypothesis: Hypothesis, kinds) -> list:
+    """The twins of ``hypothesis`` (``EQUIVALENCES``) on a value or an expression of ``kinds``: hypotheses of the
+    same key, cost and value under the other name."""
+    return [Hypothesis(f"{hypothesis.key}={e.also}", e.also, hypothesis.cost, e.detail, twin=True)
+            for e in EQUIVALENCES if e.seen == hypothesis.name and e.kind in kinds]
+
+
 def _ordinal(i: int) -> str:
     return f"{i + 1}"
 
@@ -62,15 +119,22 @@ def _ordinal(i: int) -> str:
 def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
     """``(hypothesis, value)`` of the output slips of an expected value ``E``."""
     out = []
-    add = out.append
+    kinds = kinds_of(E)
+
+    def add(slip, whole: bool = False):
+        """A slip; a slip of the whole value with its twins (a row's sign of a skew matrix is no transpose)."""
+        out.append(slip)
+        if whole:
+            out.extend((twin, slip[1]) for twin in equivalents(slip[0], kinds))
+
     if E.ndim == 2 and E.shape[0] == E.shape[1] and E.shape[0] > 1:
-        add((Hypothesis("transpose", "transpose", 1, "your matrix is the transpose of the expected one"), E.T))
+        add((Hypothesis("transpose", "transpose", 1, "your matrix is the transpose of the expected one"), E.T), True)
         if np.linalg.cond(E) < 1e8:
             add((Hypothesis("inverse", "inverse", 2, "your matrix is the inverse of the expected one"),
                  np.linalg.inv(E)))
     if E.size == 1 and abs(float(E.ravel()[0])) > 1e-9:
         add((Hypothesis("inverse", "inverse", 2, "your value is the reciprocal of the expected one"), 1.0 / E))
-    add((Hypothesis("sign", "sign_flip", 1, "your value is the expected one with the opposite sign"), -E))
+    add((Hypothesis("sign", "sign_flip", 1, "your value is the expected one with the opposite sign"), -E), True)
     for factor, name, words in ((2.0, "factor_two", "twice"), (0.5, "factor_half", "half")):
         add((Hypothesis(f"scale:{factor}", name, 1, f"your value is {words} the expected one"), factor * E))
     for factor, words in FACTORS:

@@ -14,7 +14,8 @@ degrees, a transpose or one on the wrong factor, a neighbouring index, two names
 kind in one expression), a solve or an inverse left out, a sum that keeps only its last term, a count for a sum).
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
-matrix transposed is a sign; inside a loop's iterable only exchanges are made.  A mutant is
+matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
+sign or the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is
 kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the
 second one (and on a third where the engine can draw one), and differs from the expected value (an equivalent
 mutant says nothing).  A slip inside an index is one of the index.  A cause is named only when
@@ -51,6 +52,7 @@ from checks._diagnoses import DIAGNOSES
 from ..errors import GraderFault
 from . import trace
 from .evidence import array_of, at, distinct, Evidence, Hypothesis, within
+from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "Mutant",
            "mutants_of", "mutant_slips", "left_to_live"]
@@ -223,6 +225,8 @@ def _label(node) -> str:
 SLIPS = {
     "sign": ("sign_flip", "one term or factor of `{f}` has the wrong sign"),
     "cross": ("sign_flip", "a cross product in `{f}` is taken the other way round (its sign flips)"),
+    "skew": ("sign_flip", "a skew matrix in `{f}` is transposed, or multiplied from the other side (either negates "
+                          "it)"),
     "term": ("missing_term", "one term of a sum in `{f}` is left out"),
     "factor": ("missing_factor", "one factor of a product in `{f}` is left out"),
     "rotation": ("wrong_frame", "a rotation is left out in `{f}`: a vector stays in the coordinates of another frame"),
@@ -703,7 +707,7 @@ def _mutated(function: _Function, lines: tuple):
             if isinstance(edit, tuple) and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
             if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
-                slip = "sign"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
+                slip = "skew"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
             tree = copy.deepcopy(function.node)
             if isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])
@@ -1042,7 +1046,13 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = ()) -> list[Hypo
             name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
         key = f"mutant:{name}:{detail}"
         found.setdefault(key, Hypothesis(key, name, COST, detail))
+        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())):  # one value by mathematics: both told
+            found.setdefault(twin.key, twin)
     return list(found.values())
+
+
+#: what the expression of a slip is, for the grammar's equivalences (``grammar.EQUIVALENCES``)
+KINDS = {"skew": ("skew",), "cross": ("cross",)}
 
 
 #: the families of a term left out or added: where the term is the same on every input, the slip is an offset

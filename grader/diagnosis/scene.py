@@ -26,8 +26,10 @@ __all__ = [
 #: variants); a call asked again (the same input slips of the results of one call, explained one by one) is
 #: answered from the scene and not counted twice
 MAX_REFERENCE_CALLS = 80
-#: the student's calls one explanation may make (a second input, an argument changed)
-MAX_STUDENT_CALLS = 6
+#: the student's calls one explanation may make (a second input, an argument changed, the formula tier's third
+#: input); the later tiers are heard where an earlier one explained the answer, and the test of an ignored argument
+#: (up to four calls) with the formula tier's third input then both ask, where before at most one did
+MAX_STUDENT_CALLS = 8
 #: how long one of the engine's calls of the student's code may take [s]
 STUDENT_TIMEOUT = 5.0
 

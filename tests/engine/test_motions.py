@@ -31,12 +31,14 @@ GRAVITY_SIGN_PENDULUM = Planted(
     name="motions-p24-gravity-sign", problem=24, file="problem_24.py",
     old="return np.concatenate([qd, forward_dynamics(M, f, g, np.zeros(3))])",
     new="return np.concatenate([qd, forward_dynamics(M, f, -g, np.zeros(3))])",
-    check="p24.simulated_motion", diagnosis="gravity_sign", message="the mistake is in the model")
+    check="p24.simulated_motion", diagnosis="gravity_sign or transpose", message="the mistake is in the model")
+# (the planar arm's joints all turn about the 3-axis: its joint rotations transposed, the angles negated, mirror
+# the arm, whose gravity torques then change sign; the formula tier reproduces the right-hand side so too)
 GRAVITY_SIGN_BAR = Planted(
     name="motions-p44-gravity-sign", problem=44, file="problem_44.py",
     old="qdd, _ = accelerations(y[:3], y[3:], m, theta, g)",
     new="qdd, _ = accelerations(y[:3], y[3:], m, theta, -g)",
-    check="p44.motion", diagnosis="gravity_sign", message="the mistake is in the model")
+    check="p44.motion", diagnosis="gravity_sign or sign_flip", message="the mistake is in the model")
 ROWS_OF_THE_BAR = Planted(
     name="motions-p44-ode-rows", problem=44, file="problem_44.py",
     old="return np.concatenate([y[3:], qdd])",

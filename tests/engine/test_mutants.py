@@ -670,15 +670,17 @@ def test_two_gains_exchanged_in_one_expression_are_swapped(made_up):
     assert names == {"swapped"}, [(h.name, h.detail) for h in found]
 
 
-def test_a_skew_matrix_transposed_is_a_sign_slip(made_up):
+def test_a_skew_matrix_transposed_is_a_sign_or_a_transpose(made_up):
     """``v + lever @ w`` for ``v - lever @ w``: the sign of a term, or ``lever.T @ w`` or ``w @ lever`` (a skew
-    matrix transposed is the matrix negated): one family, a sign, never a transpose or the factors' order."""
+    matrix transposed is the matrix negated, ``grammar.EQUIVALENCES``): a sign or a transpose, told both, never the
+    factors' order."""
     def flipped(r, w, v):
         return v + np.cross(r, w) + 0.5 * r
 
     names, found = names_of(made_up, "transport", flipped, [(V(0.5, -1.0, 2.0), V(0.1, 0.2, 0.3), V(1.0, 0.0, 0.5)),
                                                              (V(1.2, 0.3, -0.4), V(-0.5, 0.8, 0.2), V(0.3, 0.3, 0.1))])
-    assert names == {"sign_flip"}, [(h.name, h.detail) for h in found]
+    assert names == {"sign_flip", "transpose"}, [(h.name, h.detail) for h in found]
+    assert any("a skew matrix in `transport` is transposed" in h.detail for h in found)
 
 
 def test_two_late_arguments_of_a_call_exchanged_are_tried(made_up):
