@@ -45,6 +45,17 @@ family (so it starts at 0% right); the family of a slip that is as truly of anot
 out; and a slip that repeats one of the earlier sets or of the planted suite (the same file and replaced text, or
 the same edit) was dropped.  Candidates that no check failed are not in it.  ``--set named3`` holds its candidates
 that were already named rightly, ``--set pool3`` both.
+
+``--set fresh4`` is a fourth held-out set (``tests/diagnosis/fresh4/``), written like the third apart from the
+engine (from the sheet, the problem data and the reference alone) and kept from its builders until they were done,
+but chosen by another rule: it holds every realistic mistake whose check fails, whether the grader of the day named
+its cause rightly or not (``today`` is recorded with each, and was not looked at while the set was chosen).  The
+earlier sets kept only the mistakes that were not named rightly, which selects the engine's failures; this one
+samples the mistakes themselves, so it does not start at 0% right, and the issue's target is read on those of its
+mistakes that no check's own catalogue names.  As before, the check of each is the first of its problem's checks
+that it fails, a slip whose family is no fact was left out, and a slip that repeats one of the earlier sets, of
+their named companions, of the engine's own tests or of the planted suite (the same file and replaced text, or the
+same planted text) was dropped.  Candidates that no check failed are not in it.
 """
 
 from __future__ import annotations
@@ -76,6 +87,7 @@ __all__ = [
     "NAMED2",
     "FRESH3",
     "NAMED3",
+    "FRESH4",
     "SETS",
     "HELD_OUT",
     "SEED",
@@ -105,11 +117,15 @@ NAMED2 = ROOT / "tests" / "diagnosis" / "named2"
 #: the third held-out set, written apart from the engine and kept from its builders, and its candidates already named
 FRESH3 = ROOT / "tests" / "diagnosis" / "fresh3"
 NAMED3 = ROOT / "tests" / "diagnosis" / "named3"
+#: the fourth held-out set, written apart from the engine: every realistic mistake whose check fails, named or not
+FRESH4 = ROOT / "tests" / "diagnosis" / "fresh4"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
-        "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3)}
-#: the sets that hold only mistakes whose cause was not told when they were written: the issue's target is read on them
-HELD_OUT = ("fresh", "fresh2", "fresh3")
+        "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
+        "fresh4": (FRESH4,)}
+#: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
+#: when they were written, the fourth every realistic mistake whose check fails
+HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
