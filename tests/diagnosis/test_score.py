@@ -253,6 +253,23 @@ def test_the_recorded_diagnoses_of_the_third_set_are_not_the_right_cause_in_it_a
 # ------------------------------------------------------------------------------------------------- the fourth set
 
 
+def test_the_fourth_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families():
+    """Every realistic mistake whose check fails is kept, whatever its diagnosis, so the families are spread by the
+    slips themselves: none of them holds more than a fifth of the set (and a little)."""
+    per_exercise = Counter(m.exercise for m in FRESH4_SET)
+    assert set(per_exercise) == set(EXERCISES)
+    assert len(FRESH4_SET) >= 90
+    graded = {e: sum(1 for p in problems if p not in (23, 29)) for e, problems in EXERCISES.items()}
+    for exercise, count in per_exercise.items():
+        share = graded[exercise] / sum(graded.values())
+        assert 0.5 * share <= count / len(FRESH4_SET) <= 1.5 * share, (exercise, count, per_exercise)
+    assert {m.problem for m in FRESH4_SET} >= set(SIMULATED) - {5}
+    assert sum(1 for m in FRESH4_SET if m.problem in SIMULATED) >= 20
+    families = Counter(m.family for m in FRESH4_SET)
+    assert len(families) >= 12, families
+    assert max(families.values()) <= 0.22 * len(FRESH4_SET), families
+
+
 def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_or_the_planted_suite():
     """Neither the same edit, nor the same replaced text in the same file, nor the same planted text; the earlier
     entries are those of the three sets, their named companions, the engine's own mistakes (``tests/engine``) and
