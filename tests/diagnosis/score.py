@@ -46,15 +46,26 @@ out; and a slip that repeats one of the earlier sets or of the planted suite (th
 the same edit) was dropped.  Candidates that no check failed are not in it.  ``--set named3`` holds its candidates
 that were already named rightly, ``--set pool3`` both.
 
-**What the target is read on.**  The held-out sets above hold only mistakes that the grader of their day did not
-name rightly: a set chosen so starts at 0% and leaves out, with the mistakes a catalogue names, every mistake the
-engine already named, so it is harder than the issue's "realistic mistakes that the catalogues do not list".
+``--set fresh4`` is a fourth held-out set (``tests/diagnosis/fresh4/``), written like the third apart from the
+engine (from the sheet, the problem data and the reference alone) and kept from its builders until they were done,
+but chosen by another rule: it holds every realistic mistake whose check fails, whether the grader of the day named
+its cause rightly or not (``today`` is recorded with each, and was not looked at while the set was chosen).  The
+earlier sets kept only the mistakes that were not named rightly, which selects the engine's failures; this one
+samples the mistakes themselves, so it does not start at 0% right, and the issue's target is read on those of its
+mistakes that no check's own catalogue names.  As before, the check of each is the first of its problem's checks
+that it fails, a slip whose family is no fact was left out, and a slip that repeats one of the earlier sets, of
+their named companions, of the engine's own tests or of the planted suite (the same file and replaced text, or the
+same planted text) was dropped.  Candidates that no check failed are not in it.
+
+**What the target is read on.**  The first three held-out sets hold only mistakes that the grader of their day did
+not name rightly: a set chosen so starts at 0% and leaves out, with the mistakes a catalogue names, every mistake
+the engine already named, so it is harder than the issue's "realistic mistakes that the catalogues do not list".
 ``--unlisted`` reads the issue's measure on any set: each mistake is graded twice, with the diagnosis engine
 switched off and on; one whose check names its true cause with the engine off is *listed* (a check's own catalogue
 or message tells it) and is left out of the measure, and the target is read on the others, graded with the engine
-on.  On a held-out set that measure is the same as the set's own (nothing in it was named when it was written); on
-a pool (a held-out set with its ``named`` companion) it is the issue's measure on all the realistic mistakes that
-were written.
+on.  On the first three held-out sets that measure is the set's own (nothing in them was named when they were
+written); on a pool (one of them with its ``named`` companion) it is the issue's measure on all the realistic
+mistakes that were written; on the fourth set it is the issue's measure itself (``--set fresh4 --unlisted``).
 """
 
 from __future__ import annotations
@@ -86,6 +97,7 @@ __all__ = [
     "NAMED2",
     "FRESH3",
     "NAMED3",
+    "FRESH4",
     "SETS",
     "HELD_OUT",
     "SEED",
@@ -115,11 +127,15 @@ NAMED2 = ROOT / "tests" / "diagnosis" / "named2"
 #: the third held-out set, written apart from the engine and kept from its builders, and its candidates already named
 FRESH3 = ROOT / "tests" / "diagnosis" / "fresh3"
 NAMED3 = ROOT / "tests" / "diagnosis" / "named3"
+#: the fourth held-out set, written apart from the engine: every realistic mistake whose check fails, named or not
+FRESH4 = ROOT / "tests" / "diagnosis" / "fresh4"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
-        "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3)}
-#: the sets that hold only mistakes whose cause was not told when they were written: the issue's target is read on them
-HELD_OUT = ("fresh", "fresh2", "fresh3")
+        "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
+        "fresh4": (FRESH4,)}
+#: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
+#: when they were written, the fourth every realistic mistake whose check fails
+HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
@@ -503,7 +519,9 @@ def summary(graded: list[Graded], naming_: Naming, seconds: float | None = None,
     weak = [g for g in graded if g.mistake.exercise in ("I", "VI", "VII")]
     lines += [_row("I+VI+VII", weak), _row("all", graded), ""]
     if graded and which in HELD_OUT:
-        lines.append(_target(graded, "the set holds only mistakes whose cause was not told when it was written"))
+        lines.append(_target(graded, "every mistake of the set, also those a check names without the engine (the "
+                                      "issue's measure: --unlisted)" if which == "fresh4" else
+                             "the set holds only mistakes whose cause was not told when it was written"))
     if graded and all(g.listed is not None for g in graded):
         lines += _unlisted(graded)
     for verdict, title in (("wrong", "told a wrong cause"), ("not caught", "not caught (the check did not fail)")):

@@ -1,6 +1,6 @@
-"""The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second
-and third held-out sets written apart from the engine (``fresh2``, ``fresh3``), and the script that grades them and classifies each
-diagnosis (``tests/diagnosis/score.py``).
+"""The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second,
+third and fourth held-out sets written apart from the engine (``fresh2``, ``fresh3``, ``fresh4``), and the script
+that grades them and classifies each diagnosis (``tests/diagnosis/score.py``).
 
 The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
 into the reference, and the diagnosis recorded with it (``today``) is not the right cause, which is what put it in
@@ -27,6 +27,7 @@ from .score import (
     FRESH,
     FRESH2,
     FRESH3,
+    FRESH4,
     NAMED,
     NAMED2,
     NAMED3,
@@ -45,6 +46,7 @@ FRESH2_SET = fresh_mistakes(FRESH2)
 NAMED2_SET = fresh_mistakes(NAMED2)
 FRESH3_SET = fresh_mistakes(FRESH3)
 NAMED3_SET = fresh_mistakes(NAMED3)
+FRESH4_SET = fresh_mistakes(FRESH4)
 
 
 def _fallback(name):
@@ -63,8 +65,8 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
     assert sum(per_exercise[e] for e in ("I", "VI", "VII")) > len(FRESH_SET) / 2
 
 
-@pytest.mark.parametrize("sets", [(FRESH_SET, NAMED_SET), (FRESH2_SET, NAMED2_SET), (FRESH3_SET, NAMED3_SET)],
-                         ids=["first", "second", "third"])
+@pytest.mark.parametrize("sets", [(FRESH_SET, NAMED_SET), (FRESH2_SET, NAMED2_SET), (FRESH3_SET, NAMED3_SET),
+                                  (FRESH4_SET, [])], ids=["first", "second", "third", "fourth"])
 def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
     for mistakes in sets:
         assert defects(mistakes) == []
@@ -246,6 +248,45 @@ def test_the_recorded_diagnoses_of_the_third_set_are_not_the_right_cause_in_it_a
         assert all(recorded(n) != "unrecorded" for n in mistake.today.split(" or ") if n), mistake.name
     assert [m.name for m in FRESH3_SET if classify(m.today, m.family, recorded) == "right"] == []
     assert [m.name for m in NAMED3_SET if classify(m.today, m.family, recorded) != "right"] == []
+
+
+# ------------------------------------------------------------------------------------------------- the fourth set
+
+
+def test_the_fourth_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families():
+    """Every realistic mistake whose check fails is kept, whatever its diagnosis, so the families are spread by the
+    slips themselves: none of them holds more than a fifth of the set (and a little)."""
+    per_exercise = Counter(m.exercise for m in FRESH4_SET)
+    assert set(per_exercise) == set(EXERCISES)
+    assert len(FRESH4_SET) >= 90
+    graded = {e: sum(1 for p in problems if p not in (23, 29)) for e, problems in EXERCISES.items()}
+    for exercise, count in per_exercise.items():
+        share = graded[exercise] / sum(graded.values())
+        assert 0.5 * share <= count / len(FRESH4_SET) <= 1.5 * share, (exercise, count, per_exercise)
+    assert {m.problem for m in FRESH4_SET} >= set(SIMULATED) - {5}
+    assert sum(1 for m in FRESH4_SET if m.problem in SIMULATED) >= 20
+    families = Counter(m.family for m in FRESH4_SET)
+    assert len(families) >= 12, families
+    assert max(families.values()) <= 0.22 * len(FRESH4_SET), families
+
+
+def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_or_the_planted_suite():
+    """Neither the same edit, nor the same replaced text in the same file, nor the same planted text; the earlier
+    entries are those of the three sets, their named companions, the engine's own mistakes (``tests/engine``) and
+    the planted suite."""
+    import tomllib
+
+    earlier = _earlier_entries() + [{"name": m.name, "file": m.file, "old": m.old, "new": m.new}
+                                    for m in FRESH3_SET + NAMED3_SET]
+    for path in sorted((ROOT / "tests" / "engine").rglob("*.toml")):
+        earlier += [e for e in tomllib.loads(path.read_text()).get("mistake", []) if "old" in e and "file" in e]
+    replaced = {(e["file"], e["old"]) for e in earlier}
+    assert [m.name for m in FRESH4_SET if (m.file, m.old) in replaced] == []
+    planted = {_planted_text(e) for e in earlier if (ROOT / "reference" / e["file"]).is_file()}
+    texts = [_planted_text({"file": m.file, "old": m.old, "new": m.new}) for m in FRESH4_SET]
+    assert [m.name for m, text in zip(FRESH4_SET, texts) if text in planted] == []
+    assert len(set(texts)) == len(texts)
+    assert not {e.get("name") for e in earlier} & {m.name for m in FRESH4_SET}
 
 
 # ------------------------------------------------------------------------------------------------- classification
