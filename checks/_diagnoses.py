@@ -16,7 +16,7 @@ never by the quantity it concerns or by its symptom:
 * a term left out of a sum is ``missing_term``, a term added is ``extra_term`` (a value taken about another point
   than asked adds the parallel-axis term: ``about_origin``, ``about_the_joint``; an absolute position where a lever
   arm belongs leaves out the position subtracted);
-* a sign of a term, an axis, a residual, an inequality is ``sign`` (a reflection is one axis's sign);
+* a sign of a term, an axis, a residual, an inequality is ``sign``;
 * things in each other's place within one expression (arguments, factors, entries) is ``order``; an update of a
   step that reads a value the step has already changed (or the other way round) takes a value of another time and
   is ``time_shift``;
@@ -27,6 +27,11 @@ never by the quantity it concerns or by its symptom:
 * a state read from another row or column of the state or the solution is ``state_row``;
 * what the integration does (the step, the tolerance) is ``step_size``; when an event fires and whether it ends the
   run is ``event``.
+
+A name that says what the answer shows rather than what the slip did, where slips of several families show it
+alike, has a family of its own among the symptoms, beside ``shape`` and ``not_orthonormal``, and its hint says what
+differs and what may cause it: a reflection (``handedness``: one axis reversed, or two exchanged), a body with the
+right moments in the wrong orientation (``orientation``), a run that diverges (``diverged``).
 
 ``grader.checking`` refuses a name that is not in the table (``Mistake``, ``fail``, ``CheckFailure``): a grader
 fault, never the student's.  The table checks itself when it is imported: every name once, every family known,
@@ -112,6 +117,12 @@ _FAMILIES = (
     Family("format", "an answer in the wrong format", "answered in the wrong format"),
     Family("not_finite", "NaN or infinite values", "returned NaN or infinite values"),
     Family("not_orthonormal", "a matrix that is not orthonormal", "returned a matrix that is not orthonormal"),
+    Family("handedness", "a reflection instead of a rotation (det = -1: one axis reversed, or two exchanged)",
+           "returned a reflection instead of a rotation (det = -1)"),
+    Family("orientation", "a body with the right principal moments in the wrong orientation",
+           "built a body with the right moments in the wrong orientation"),
+    Family("diverged", "a run that diverges (a mass near zero, a step far too large, a servo too stiff)",
+           "built models whose runs diverge"),
     Family("not_spd", "a matrix that is not symmetric positive-definite",
            "returned a matrix that is not symmetric positive-definite"),
     Family("typed_numbers", "the sheet's printed numbers typed in", "typed in the sheet's printed numbers"),
@@ -190,7 +201,7 @@ _TABLE = (
     _D("rolling_sign", "sign", "a rolling motion the wrong way", "rolled the wrong way"),
     _D("rotation_sense", "sign", "a rotation the wrong way round", "turned the wrong way round"),
     _D("slope_sign", "sign", "a slope the wrong way", "tilted the slope the wrong way"),
-    _D("reflection", "sign", "a reflection instead of a rotation (det = -1)",
+    _D("reflection", "handedness", "a reflection instead of a rotation (det = -1)",
        "built a reflection instead of a rotation (det = -1)"),
     # ---------------------------------------------------------------- order
     _D("argument_order", "order", "arguments in the wrong order", "swapped the arguments"),
@@ -369,7 +380,7 @@ _TABLE = (
     _D("no_sag", "formula", "a controller that does not sag as PD alone must", "gave the PD controller no sag"),
     _D("wrong_rate", "scale", "a servo driven at the wrong rate", "drove the servo at the wrong rate"),
     _D("free_symbols", "formula", "symbols the expression should not contain", "left stray symbols in"),
-    _D("orientation", "transpose", "a body with the wrong orientation", "oriented the body wrongly"),
+    _D("orientation", "orientation", "a body with the wrong orientation", "oriented the body wrongly"),
     _D("unsorted", "order", "principal moments out of order", "left the principal moments unsorted"),
     # ---------------------------------------------------------------- models (Exercise I, trees)
     _D("box_full_size", "scale", "a box with full edges where MuJoCo wants half", "gave MuJoCo full box sizes"),
@@ -399,7 +410,7 @@ _TABLE = (
     _D("no_connect", "missing_term", "a loop not closed by a connect", "did not close the loop"),
     _D("not_assembled", "model", "a linkage that is not assembled", "did not assemble the linkage"),
     _D("no_swing", "model", "a link that does not swing", "built a link that does not swing"),
-    _D("diverged", "step_size", "a model whose run diverges", "built a model whose run diverges"),
+    _D("diverged", "diverged", "a model whose run diverges", "built a model whose run diverges"),
     _D("load_error", "model", "a model that MuJoCo cannot load", "wrote a model MuJoCo cannot load"),
     _D("refused", "model", "a model the grader refuses (files, includes)", "wrote a model that was refused"),
     _D("density_matters", "model", "a model in which the density changes the motion",

@@ -63,7 +63,8 @@ def check_c(ctx):
              "not_orthonormal")
     if np.linalg.det(A) < 0:
         fail(f"your A_IC is a reflection (det = {np.linalg.det(A):+.2f}), not a rotation.",
-             "One axis points the wrong way: C is a right-handed frame.", "reflection")
+             "C is a right-handed frame: one axis of yours points the wrong way, or two axes are in each other's "
+             "place.", "reflection")
     R = nearest_rotation(A)
     angle = np.degrees(np.arccos(np.clip((np.trace(target.T @ R) - 1) / 2, -1, 1)))
     if angle > C_ANGLE_DEG:

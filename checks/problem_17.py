@@ -47,8 +47,8 @@ def inertias(draw):
 NOT_ROTATED_HINT = ("Your body has the inertia diag(I1, I2, I3): it is built along the principal axes but not turned "
                     "into B. Map every point (or the body's axes) with V, the matrix of eigenvectors: r_B = V @ r.")
 ORIENTATION_HINT = ("Your body has the right principal moments but the wrong orientation: the k-th principal "
-                    "direction is the k-th COLUMN of V (in the order of the moments), and points map as r_B = V @ r "
-                    "(not V.T @ r).")
+                    "direction is the k-th COLUMN of V (in the order of the moments), points map as r_B = V @ r "
+                    "(not V.T @ r), and each distance belongs on its own principal axis.")
 
 
 def assert_reproduces(J, B_I_G, name, note, scale_hints=(), where=""):

@@ -430,8 +430,8 @@ def assert_rotation(A, name: str, tol: Tol = STRUCTURE):
         fail(
             f"{name} is a reflection, not a rotation: det = {det:+.6f} (a rotation has det = +1).\n"
             f"got:\n{format_array(A)}",
-            "One axis points the wrong way: check the signs of the sin terms (a sign flip turns a rotation "
-            "into a reflection).",
+            "One axis points the wrong way, or two axes are in each other's place: check the signs of the sin "
+            "terms and the order of the rows and columns (either turns a rotation into a reflection).",
             "reflection",
         )
     return A

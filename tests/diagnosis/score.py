@@ -100,6 +100,7 @@ __all__ = [
     "FRESH4",
     "SETS",
     "HELD_OUT",
+    "SYMPTOMS",
     "SEED",
     "VERDICTS",
     "Fresh",
@@ -144,6 +145,10 @@ FAMILIES = (
     "transpose", "sign", "order", "scale", "frame", "missing_term", "extra_term", "ignored_argument",
     "initial_state", "time_shift", "offset", "step_size", "event", "state_row", "inverse", "precision",
 )
+
+#: the vocabulary's families that say what an answer shows rather than what the slip did (a reflection, a run that
+#: diverges): a name of one names no cause, whatever ``FALLBACK`` read it as when the first set was written
+SYMPTOMS = ("handedness", "orientation", "diverged")
 
 #: the course's exercises and their problems
 EXERCISES = {"I": range(1, 6), "II": range(6, 11), "III": range(11, 21), "IV": range(21, 29),
@@ -342,6 +347,8 @@ def naming(prefer_engine: bool = True) -> Naming:
 
     def family_of(name: str):
         try:
+            if str(engine(name)) in SYMPTOMS:
+                return None
             family = _normalized(engine(name))
         except Exception:  # noqa: BLE001 - a name the table does not hold (or refuses) is looked up in the fallback
             return fallback(name)

@@ -398,3 +398,15 @@ def test_the_unlisted_measure_leaves_out_a_mistake_that_a_check_names_without_th
     assert "right 100%, wrong 0%; mistakes that no check names rightly without the engine" in text
     plain = grade_all([engine], naming_.family_of)
     assert plain[0].listed is None and "listed (named" not in summary(plain, naming_, which="pool")
+
+
+def test_a_name_that_states_a_symptom_of_several_families_names_no_cause():
+    """A reflection (one axis reversed, or two exchanged), a body in the wrong orientation and a run that diverges
+    say what the answer shows, which slips of several families show alike: told, they name no cause, neither the
+    sign, transpose or step they were once read as, nor a wrong one."""
+    family_of = naming().family_of
+    for name, true in (("reflection", "sign"), ("reflection", "order"), ("orientation", "transpose"),
+                       ("orientation", "order"), ("diverged", "step_size"), ("diverged", "extra_term")):
+        assert family_of(name) is None, name
+        assert classify(name, true, family_of) == "none", (name, true)
+    assert classify("reflection or transpose", "transpose", family_of) == "right"
