@@ -186,7 +186,7 @@ def locate(log, raw, side: str, tol: Tol | None = None) -> Source | None:
         for path, item in walk(value):
             if not isinstance(item, (dict, str)) and equal(item, raw):
                 found.append(Source(probe, tuple(args), path, value))
-    if len({(s.probe, repr(s.args)[:2000], s.path) for s in found}) == 1:
+    if _sole(found):
         return found[0]
     target = array_of(raw)
     if tol is None or found or target is None or target.size == 0:
@@ -199,9 +199,29 @@ def locate(log, raw, side: str, tol: Tol | None = None) -> Source | None:
             candidate = array_of(item)
             if candidate is not None and candidate.shape == target.shape and within(candidate, target, tol):
                 near.append(Source(probe, tuple(args), path, value))
-    if len({(s.probe, repr(s.args)[:2000], s.path) for s in near}) == 1:
+    if _sole(near):
         return near[0]
     return None
+
+
+def _sole(found: list[Source]) -> bool:
+    """True when ``found`` names one call and path only: every source has the same probe, path and arguments (the
+    same objects, or the same text of them).  Answered at the first that differs: a value found in many places of
+    a long log (a zero of a tree's state, say) is not written out for each."""
+    if not found:
+        return False
+    first = found[0]
+    text = None
+    for other in found[1:]:
+        if other.probe != first.probe or other.path != first.path:
+            return False
+        if len(other.args) == len(first.args) and all(a is b for a, b in zip(other.args, first.args)):
+            continue
+        if text is None:
+            text = repr(first.args)[:2000]
+        if repr(other.args)[:2000] != text:
+            return False
+    return True
 
 
 def counterpart(log, raw, source: Source | None, tol: Tol) -> Source | None:

@@ -204,3 +204,22 @@ def test_a_value_of_zero_that_stays_zero_is_no_ignored_argument(monkeypatch):
     assert finding is None or "ignored_argument" not in finding.names, finding
     finding = explain_at((0.7, 2.9), lambda a, b: 2 * a)
     assert finding is not None and finding.names == ("ignored_argument",), finding
+
+
+def test_a_value_is_located_only_where_one_call_and_path_hold_it():
+    """``locate`` traces a value to a call only where one call and one path of it hold the value: the same call
+    logged twice (its arguments equal, or the very objects) is one; two paths, two probes or other arguments are
+    several, and name no call."""
+    from grader.diagnosis.evidence import locate
+
+    A = np.array([[0.0, -1.0], [1.0, 0.0]])
+    value = np.array([0.25, -0.5])
+    twice = [("reference", "p98.f", (A,), {"r": value}), ("reference", "p98.f", (A.copy(),), {"r": value.copy()})]
+    found = locate(twice, value.copy(), "reference")
+    assert found is not None and found.probe == "p98.f" and found.path == ("r",)
+    same_objects = [("reference", "p98.f", (A,), {"r": value}), ("reference", "p98.f", (A,), {"r": value.copy()})]
+    assert locate(same_objects, value.copy(), "reference") is not None
+    for log in ([("reference", "p98.f", (A,), {"r": value, "s": value.copy()})],
+                [("reference", "p98.f", (A,), {"r": value}), ("reference", "p98.g", (A,), {"r": value.copy()})],
+                [("reference", "p98.f", (A,), {"r": value}), ("reference", "p98.f", (2 * A,), {"r": value.copy()})]):
+        assert locate(log, value.copy(), "reference") is None
