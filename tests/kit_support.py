@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import copy
 import re
+from pathlib import Path
 
 import pytest
 
@@ -246,3 +247,32 @@ def assert_named_failure(mistake, report):
                   and r.check_id not in (mistake.check, *mistake.also)]
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
     return target
+
+
+def engine_mistakes(path) -> tuple[list, dict[str, str]]:
+    """The planted mistakes of one of the diagnosis engine's tables (``tests/engine/*.toml``) and the family of each,
+    by name."""
+    import tomllib
+
+    from tests.submissions import Planted
+
+    entries = tomllib.loads(Path(path).read_text()).get("mistake", [])
+    mistakes = [Planted(name=e["name"], problem=e["problem"], file=e["file"], old=e["old"], new=e["new"],
+                        check=e["check"], diagnosis=e["diagnosis"], message=e["message"],
+                        also=tuple(e.get("also", ()))) for e in entries]
+    return mistakes, {e["name"]: e["family"] for e in entries}
+
+
+def assert_no_catalogue_names_it(mistake, submission, zygote, monkeypatch) -> None:
+    """With the diagnosis engine off, ``mistake.check`` still fails and names no cause of the mistake's families:
+    only the engine names it."""
+    import grader.diagnosis as engine
+    from checks._diagnoses import families_of
+    from grader import grade_problem
+    from grader.workers import Forked
+
+    monkeypatch.setattr(engine, "ENABLED", False)
+    off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(zygote))
+    unexplained = {r.check_id: r for r in off.results}[mistake.check]
+    assert unexplained.status is Status.FAILED, unexplained.message
+    assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis

@@ -16,7 +16,6 @@ import importlib
 import itertools
 import shutil
 import time
-import tomllib
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -26,24 +25,23 @@ from scipy.spatial.transform import Rotation
 
 import grader.diagnosis as engine
 from checks._diagnoses import DIAGNOSES, families_of
-from grader import grade_problem
 from grader.checking import Tol
 from grader.diagnosis import engine as explaining
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
 from grader.private import drop_private, private_import
 from grader.results import Status
-from grader.workers import Forked
 from probes._codec import decode, encode
 
 from ..kit_support import (  # noqa: F401 (fixtures)
-    SEED,
     assert_named_failure,
+    assert_no_catalogue_names_it,
     assert_same_verdicts,
+    engine_mistakes,
     grade_live_and_kit,
     warm_slot,
 )
-from ..submissions import Planted, build_planted
+from ..submissions import build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 TIGHT = Tol("tight", 1e-9, 1e-9)
@@ -697,16 +695,7 @@ def test_two_late_arguments_of_a_call_exchanged_are_tried(made_up):
 # ------------------------------------------------------------------------------------------ graded
 
 
-def formula_mistakes() -> list[Planted]:
-    entries = tomllib.loads((ROOT / "tests" / "engine" / "formulas.toml").read_text())["mistake"]
-    return [Planted(name=e["name"], problem=e["problem"], file=e["file"], old=e["old"], new=e["new"],
-                    check=e["check"], diagnosis=e["diagnosis"], message=e["message"], also=tuple(e.get("also", ())))
-            for e in entries]
-
-
-FORMULAS = formula_mistakes()
-FAMILIES = {e["name"]: e["family"] for e in tomllib.loads(
-    (ROOT / "tests" / "engine" / "formulas.toml").read_text())["mistake"]}
+FORMULAS, FAMILIES = engine_mistakes(ROOT / "tests" / "engine" / "formulas.toml")
 
 
 @pytest.fixture(scope="module")
@@ -730,11 +719,7 @@ def test_a_slip_inside_a_formula_is_named_live_and_left_to_the_submission_in_the
     if not theirs.diagnosis:
         assert mutants.KIT_NOTE in theirs.hint, theirs.hint
     assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    monkeypatch.setattr(engine, "ENABLED", False)  # no catalogue names a cause of the family
-    off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
-    unexplained = {r.check_id: r for r in off.results}[mistake.check]
-    assert unexplained.status is Status.FAILED, unexplained.message
-    assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis
+    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
 
 
 def test_the_trace_says_what_each_tier_found(made_up, tmp_path, monkeypatch):

@@ -15,7 +15,6 @@ grammar and the tier of formulas judge a hypothesis on two inputs.
 """
 
 import sys
-import tomllib
 import types
 from pathlib import Path
 
@@ -24,23 +23,22 @@ import pytest
 
 import grader.diagnosis as engine
 from checks._diagnoses import families_of
-from grader import grade_problem
 from grader.checking import CheckFailure, Tol, assert_close
 from grader.context import Context, explained
 from grader.diagnosis import scene as scenes
 from grader.diagnosis.grammar import DRAWN_ENTRIES, second_args, varied
 from grader.errors import GraderFault
 from grader.results import Status
-from grader.workers import Forked
 
 from ..kit_support import (  # noqa: F401 (fixtures)
-    SEED,
     assert_named_failure,
+    assert_no_catalogue_names_it,
     assert_same_verdicts,
+    engine_mistakes,
     grade_live_and_kit,
     warm_slot,
 )
-from ..submissions import Planted, build_planted
+from ..submissions import build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 TIGHT = Tol("tight", 1e-9, 1e-9)
@@ -271,16 +269,7 @@ def test_a_repeated_reference_call_is_counted_once(monkeypatch):
 # ------------------------------------------------------------------------------------------ graded
 
 
-def drawn_mistakes() -> list[Planted]:
-    entries = tomllib.loads((ROOT / "tests" / "engine" / "second_inputs.toml").read_text()).get("mistake", [])
-    return [Planted(name=e["name"], problem=e["problem"], file=e["file"], old=e["old"], new=e["new"],
-                    check=e["check"], diagnosis=e["diagnosis"], message=e["message"], also=tuple(e.get("also", ())))
-            for e in entries]
-
-
-DRAWN = drawn_mistakes()
-FAMILIES = {e["name"]: e["family"] for e in tomllib.loads(
-    (ROOT / "tests" / "engine" / "second_inputs.toml").read_text()).get("mistake", [])}
+DRAWN, FAMILIES = engine_mistakes(ROOT / "tests" / "engine" / "second_inputs.toml")
 
 
 @pytest.fixture(scope="module")
@@ -303,8 +292,4 @@ def test_a_mistake_shown_on_one_input_is_named_on_a_drawn_second_one(
     theirs = {r.check_id: r for r in kit.results}[mistake.check]
     assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
     assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    monkeypatch.setattr(engine, "ENABLED", False)  # no catalogue names a cause of the family
-    off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
-    unexplained = {r.check_id: r for r in off.results}[mistake.check]
-    assert unexplained.status is Status.FAILED, unexplained.message
-    assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis
+    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
