@@ -214,16 +214,22 @@ def _earlier_entries():
 def test_the_third_set_covers_every_exercise_roughly_in_proportion_and_the_simulated_problems():
     """Problem 5 is left out of the simulated problems: its graded part is the structure of a repaired model, and
     every slip written for it repeated the planted suite or was not caught."""
-    per_exercise = Counter(m.exercise for m in FRESH3_SET)
+    _assert_in_proportion(FRESH3_SET, 80)
+    assert len({m.family for m in FRESH3_SET}) >= 10
+
+
+def _assert_in_proportion(mistakes, at_least: int) -> None:
+    """At least ``at_least`` mistakes, every exercise within half and one and a half times its share of the graded
+    problems, and the simulated problems but 5 all there, with twenty mistakes or more."""
+    per_exercise = Counter(m.exercise for m in mistakes)
     assert set(per_exercise) == set(EXERCISES)
-    assert len(FRESH3_SET) >= 80
+    assert len(mistakes) >= at_least
     graded = {e: sum(1 for p in problems if p not in (23, 29)) for e, problems in EXERCISES.items()}
     for exercise, count in per_exercise.items():
         share = graded[exercise] / sum(graded.values())
-        assert 0.5 * share <= count / len(FRESH3_SET) <= 1.5 * share, (exercise, count, per_exercise)
-    assert {m.problem for m in FRESH3_SET} >= set(SIMULATED) - {5}
-    assert sum(1 for m in FRESH3_SET if m.problem in SIMULATED) >= 20
-    assert len({m.family for m in FRESH3_SET}) >= 10
+        assert 0.5 * share <= count / len(mistakes) <= 1.5 * share, (exercise, count, per_exercise)
+    assert {m.problem for m in mistakes} >= set(SIMULATED) - {5}
+    assert sum(1 for m in mistakes if m.problem in SIMULATED) >= 20
 
 
 def test_the_third_set_repeats_no_mistake_of_the_earlier_sets_or_of_the_planted_suite():
@@ -256,15 +262,7 @@ def test_the_recorded_diagnoses_of_the_third_set_are_not_the_right_cause_in_it_a
 def test_the_fourth_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families():
     """Every realistic mistake whose check fails is kept, whatever its diagnosis, so the families are spread by the
     slips themselves: none of them holds more than a fifth of the set (and a little)."""
-    per_exercise = Counter(m.exercise for m in FRESH4_SET)
-    assert set(per_exercise) == set(EXERCISES)
-    assert len(FRESH4_SET) >= 90
-    graded = {e: sum(1 for p in problems if p not in (23, 29)) for e, problems in EXERCISES.items()}
-    for exercise, count in per_exercise.items():
-        share = graded[exercise] / sum(graded.values())
-        assert 0.5 * share <= count / len(FRESH4_SET) <= 1.5 * share, (exercise, count, per_exercise)
-    assert {m.problem for m in FRESH4_SET} >= set(SIMULATED) - {5}
-    assert sum(1 for m in FRESH4_SET if m.problem in SIMULATED) >= 20
+    _assert_in_proportion(FRESH4_SET, 90)
     families = Counter(m.family for m in FRESH4_SET)
     assert len(families) >= 12, families
     assert max(families.values()) <= 0.22 * len(FRESH4_SET), families
