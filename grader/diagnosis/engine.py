@@ -598,9 +598,8 @@ def _finding(found: list, where: str) -> Finding | None:
     """The hypotheses told (``_told``), by name, and the hint that says what they are and where they hold."""
     if not found:
         return None
-    simplest = list(found)
     by_name: dict[str, list[Hypothesis]] = {}
-    for h in simplest:
+    for h in found:
         by_name.setdefault(h.name, []).append(h)
     names = tuple(by_name)
     if len(names) == 1:

@@ -920,7 +920,6 @@ def _queued(path: str | None) -> float | None:
         return None
 
 
-
 class _Deadline:
     """Interrupts the running thread with ``_Timeout`` once it has spent ``seconds`` of CPU time, unless left
     before: what the tier may try does not depend on how loaded the machine is (a busy machine slows the wall clock,
