@@ -103,10 +103,16 @@ def test_an_entry_with_an_unknown_family_or_field_is_refused(tmp_path):
 def test_the_recorded_diagnoses_are_not_the_right_cause_in_the_fresh_set_and_are_in_the_named_one():
     """What put a mistake in the fresh set: when it was written, the grader did not name its cause (``today``).
     Every name recorded is one the fallback table knows."""
-    for mistake in FRESH_SET + NAMED_SET:
-        assert all(_fallback(n) != "?" for n in mistake.today.split(" or ") if n), mistake.name
-    assert [m.name for m in FRESH_SET if classify(m.today, m.family, _fallback) == "right"] == []
-    assert [m.name for m in NAMED_SET if classify(m.today, m.family, _fallback) != "right"] == []
+    _assert_chosen_by_their_recorded_diagnoses(FRESH_SET, NAMED_SET, _fallback, "?")
+
+
+def _assert_chosen_by_their_recorded_diagnoses(fresh, named, recorded, unknown) -> None:
+    """Every name recorded with a held-out set and its named part (``today``) has a family in ``recorded`` (not
+    ``unknown``); none of the set's was of the true family when it was written, each of the named part's was."""
+    for mistake in fresh + named:
+        assert all(recorded(n) != unknown for n in mistake.today.split(" or ") if n), mistake.name
+    assert [m.name for m in fresh if classify(m.today, m.family, recorded) == "right"] == []
+    assert [m.name for m in named if classify(m.today, m.family, recorded) != "right"] == []
 
 
 # ------------------------------------------------------------------------------------------------- the second set
@@ -173,13 +179,8 @@ def test_the_second_set_repeats_no_mistake_of_the_first_sets_or_of_the_planted_s
 
 
 def test_the_recorded_diagnoses_of_the_second_set_are_not_the_right_cause_in_it_and_are_in_its_named_part():
-    def recorded(name):
-        return RECORDED2.get(name, "unrecorded")
-
-    for mistake in FRESH2_SET + NAMED2_SET:
-        assert all(recorded(n) != "unrecorded" for n in mistake.today.split(" or ") if n), mistake.name
-    assert [m.name for m in FRESH2_SET if classify(m.today, m.family, recorded) == "right"] == []
-    assert [m.name for m in NAMED2_SET if classify(m.today, m.family, recorded) != "right"] == []
+    _assert_chosen_by_their_recorded_diagnoses(FRESH2_SET, NAMED2_SET,
+                                               lambda name: RECORDED2.get(name, "unrecorded"), "unrecorded")
 
 
 # ------------------------------------------------------------------------------------------------- the third set
@@ -235,25 +236,24 @@ def _assert_in_proportion(mistakes, at_least: int) -> None:
 def test_the_third_set_repeats_no_mistake_of_the_earlier_sets_or_of_the_planted_suite():
     """Neither the same edit, nor the same replaced text in the same file, nor the same planted text (compared
     without whitespace, so that a slip written with another context is still the same slip); no name is shared."""
-    earlier = _earlier_entries()
-    third = FRESH3_SET + NAMED3_SET
+    _assert_repeats_none(FRESH3_SET + NAMED3_SET, _earlier_entries())
+
+
+def _assert_repeats_none(mistakes, earlier: list[dict]) -> None:
+    """No mistake of ``mistakes`` replaces the text an ``earlier`` entry replaces in the same file, plants the same
+    text (without whitespace) or shares its name, and no two of them plant the same text."""
     replaced = {(e["file"], e["old"]) for e in earlier}
-    assert [m.name for m in third if (m.file, m.old) in replaced] == []
+    assert [m.name for m in mistakes if (m.file, m.old) in replaced] == []
     planted = {_planted_text(e) for e in earlier if (ROOT / "reference" / e["file"]).is_file()}
-    texts = [_planted_text({"file": m.file, "old": m.old, "new": m.new}) for m in third]
-    assert [m.name for m, text in zip(third, texts) if text in planted] == []
+    texts = [_planted_text({"file": m.file, "old": m.old, "new": m.new}) for m in mistakes]
+    assert [m.name for m, text in zip(mistakes, texts) if text in planted] == []
     assert len(set(texts)) == len(texts)
-    assert not {e.get("name") for e in earlier} & {m.name for m in third}
+    assert not {e.get("name") for e in earlier} & {m.name for m in mistakes}
 
 
 def test_the_recorded_diagnoses_of_the_third_set_are_not_the_right_cause_in_it_and_are_in_its_named_part():
-    def recorded(name):
-        return RECORDED3.get(name, "unrecorded")
-
-    for mistake in FRESH3_SET + NAMED3_SET:
-        assert all(recorded(n) != "unrecorded" for n in mistake.today.split(" or ") if n), mistake.name
-    assert [m.name for m in FRESH3_SET if classify(m.today, m.family, recorded) == "right"] == []
-    assert [m.name for m in NAMED3_SET if classify(m.today, m.family, recorded) != "right"] == []
+    _assert_chosen_by_their_recorded_diagnoses(FRESH3_SET, NAMED3_SET,
+                                               lambda name: RECORDED3.get(name, "unrecorded"), "unrecorded")
 
 
 # ------------------------------------------------------------------------------------------------- the fourth set
@@ -278,13 +278,7 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
                                     for m in FRESH3_SET + NAMED3_SET]
     for path in sorted((ROOT / "tests" / "engine").rglob("*.toml")):
         earlier += [e for e in tomllib.loads(path.read_text()).get("mistake", []) if "old" in e and "file" in e]
-    replaced = {(e["file"], e["old"]) for e in earlier}
-    assert [m.name for m in FRESH4_SET if (m.file, m.old) in replaced] == []
-    planted = {_planted_text(e) for e in earlier if (ROOT / "reference" / e["file"]).is_file()}
-    texts = [_planted_text({"file": m.file, "old": m.old, "new": m.new}) for m in FRESH4_SET]
-    assert [m.name for m, text in zip(FRESH4_SET, texts) if text in planted] == []
-    assert len(set(texts)) == len(texts)
-    assert not {e.get("name") for e in earlier} & {m.name for m in FRESH4_SET}
+    _assert_repeats_none(FRESH4_SET, earlier)
 
 
 # ------------------------------------------------------------------------------------------------- classification
