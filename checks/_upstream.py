@@ -176,13 +176,14 @@ def judge_failure(ctx, failure: CheckFailure, judged_value, rejudge):
     why = carried_note(found)
     if found.flaw or found.value is None:
         raise CheckFailure(f"{failure.message}\n{why} But {found.flaw}: nothing is carried forward on it.",
-                           failure.hint, failure.diagnosis, failure.candidates) from None
+                           failure.hint, failure.diagnosis, failure.candidates, failure.evidence) from None
     try:
         rejudge(found.value)
     except CheckFailure as again:
         first, _, rest = again.message.partition("\n")
         raise CheckFailure(f"{first}\n(judged on your own {_names(found)}: the reference's code of this problem "
-                           f"with your {_names(found)})\n{why}\n{rest}", again.hint, again.diagnosis) from None
+                           f"with your {_names(found)})\n{why}\n{rest}", again.hint, again.diagnosis,
+                           again.candidates, again.evidence) from None
     for function in found.functions:
         if function in SHARED:
             ctx.carry_forward(SHARED[function][1], _names(found))

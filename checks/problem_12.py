@@ -97,7 +97,7 @@ def check_integration_rotation(ctx):
         assert_rotation(A, "A_IB after 100 steps")
     except CheckFailure as exc:
         if close(A, simulate(GENERIC, DT, STEPS, "explicit_euler")["A_IB"], SHEET):
-            fail(exc.message, KINEMATIC_MISTAKES["explicit_euler"], "explicit_euler")
+            fail(exc.message, KINEMATIC_MISTAKES["explicit_euler"], "explicit_euler", evidence=exc.evidence)
         raise
     if close(A, GENERIC["A_IB"], STRUCTURE):
         fail(f"A_IB after 100 steps is still its initial value: the body did not turn, although B_omega_B = "
@@ -237,4 +237,4 @@ def check_wheel(ctx):
                       SIMULATION, what=f"for the point B_r_BQ = {np.round(point, 4).tolist()}", dt=WHEEL_DT)
     except CheckFailure as exc:
         fail(exc.message, "The checks of integration_step and position_of_point above localize the mistake.",
-             exc.diagnosis)
+             exc.diagnosis, evidence=exc.evidence)

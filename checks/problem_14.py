@@ -45,7 +45,7 @@ def check_screw_at_rest(ctx):
                      EXACT)
     except CheckFailure as exc:
         fail(exc.message, "Without rotation there is no screw axis: test omega @ omega == 0 before dividing by it "
-             "and return two zero vectors.", exc.diagnosis)
+             "and return two zero vectors.", exc.diagnosis, evidence=exc.evidence)
 
 
 @check(1, title="the sheet's run (100 steps of 0.01 s): the body's state follows the reference",
@@ -58,7 +58,7 @@ def check_run_state(ctx):
             assert_traces(got, expected, STATE, SIMULATION, what=what, dt=DT)
         except CheckFailure as exc:
             fail(exc.message, "This is the integration step of problem 12: its checks localize the mistake.",
-                 exc.diagnosis)
+                 exc.diagnosis, evidence=exc.evidence)
 
 
 @check(3, title="the sheet's run: at every step T lies on the screw axis and moves parallel to omega",

@@ -60,7 +60,7 @@ def assert_reproduces(J, B_I_G, name, note, scale_hints=(), where=""):
         assert_close(J, B_I_G, name, REPRODUCE, mistakes, context=where, note=note)
     except CheckFailure as exc:
         if not exc.diagnosis and close(np.linalg.eigvalsh(J), moments, REPRODUCE):
-            fail(exc.message, ORIENTATION_HINT, "orientation")
+            fail(exc.message, ORIENTATION_HINT, "orientation", evidence=exc.evidence)
         raise
 
 
@@ -133,7 +133,7 @@ def check_principal_axes(ctx):
         except CheckFailure as exc:
             if close(V.T @ np.diag(moments) @ V, B_I_G, REPRODUCE):
                 fail(exc.message, "The principal axes are the COLUMNS of V (B_I_G = V @ diag @ V.T): you returned "
-                     "them as rows.", "transpose")
+                     "them as rows.", "transpose", evidence=exc.evidence)
             raise
 
     ctx.student(p17.principal_axes, sheet_matrices(ctx)[0][2])

@@ -73,7 +73,7 @@ def assert_derivative(J, central, name, function, mistakes, hint, names=None):
     except CheckFailure as exc:
         if exc.diagnosis:
             raise
-        fail(exc.message, hint)
+        fail(exc.message, hint, evidence=exc.evidence)
 
 
 def _assert_derivative(ctx, case):

@@ -196,7 +196,7 @@ def _assert_recursion_value(value, expected, name):
     except CheckFailure as exc:
         fail(exc.message, "The recursion earns its points only when it computes the poses: point_k(q, k) returns "
              "P_k = P_(k-1) + q_(2k-1) (-sin g_(k-1), cos g_(k-1)) with g_k = g_(k-1) + q_(2k), and "
-             "end_effector_recursive adds the final link to point_k(q, n).", "wrong_values")
+             "end_effector_recursive adds the final link to point_k(q, n).", "wrong_values", evidence=exc.evidence)
 
 
 @check(2, title="point_k calls itself, from P_n down to the origin, and end_effector_recursive uses it; both return "

@@ -452,9 +452,9 @@ def _assert_starts_on_the_table(ctx, controller):
         typed = close(mine, np.concatenate([table["q"][0], table["qd"][0]]), PRINTED)
         reread = None if typed else _reread(got, ours, REREAD)
         if reread is not None:
-            raise CheckFailure(exc.message, *reread) from None
+            raise CheckFailure(exc.message, *reread, evidence=exc.evidence) from None
         raise CheckFailure(exc.message, TYPED_START_HINT if typed else INITIAL_HINT,
-                           "typed_numbers" if typed else "initial_state") from None
+                           "typed_numbers" if typed else "initial_state", evidence=exc.evidence) from None
 
 
 def _reread(got, expected, tol=BAND["q"]):

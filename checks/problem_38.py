@@ -138,8 +138,8 @@ def check_walker_run(ctx):
     except CheckFailure as exc:
         start = np.concatenate([expected["q"][0], expected["qd"][0]])
         if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
-            raise CheckFailure(exc.message, "The run starts at q0 = (0, 0), qd0 = (-0.1, +1).", "initial_state") \
-                from None
+            raise CheckFailure(exc.message, "The run starts at q0 = (0, 0), qd0 = (-0.1, +1).", "initial_state",
+                               evidence=exc.evidence) from None
         raise
     _assert_small_motion(ctx)
 
@@ -192,7 +192,8 @@ def _assert_small_motion(ctx):
                      context="(the start passed to simulate)")
     except CheckFailure as exc:
         typed = close(start, SHEET_START, EXACT)
-        raise CheckFailure(exc.message, START_HINT, "typed_numbers" if typed else "initial_state") from None
+        raise CheckFailure(exc.message, START_HINT, "typed_numbers" if typed else "initial_state",
+                           evidence=exc.evidence) from None
     assert_run(got, expected, ("q", "qd"), SMALL_BAND, f"the small motion of {what}", hint=SMALL_HINT,
                diagnosis="integration",
                note="Any solve_ivp method at its default tolerances stays within the band; the motion itself is a "

@@ -178,8 +178,10 @@ class JudgedOnSubmission(Exception):
         self.message = message
 
 
-def fail(message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None):
-    raise CheckFailure(message, hint, diagnosis, candidates)
+def fail(message: str, hint: str = "", diagnosis: str = "", candidates: tuple | None = None, evidence=None):
+    """Raise ``CheckFailure``.  Where a check words anew a failure it caught, it passes the caught one's
+    ``evidence`` along: without it the diagnosis engine is never asked about the comparison that failed."""
+    raise CheckFailure(message, hint, diagnosis, candidates, evidence)
 
 
 @dataclass(frozen=True)
