@@ -133,6 +133,28 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
         evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
         if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one
             evidence.expected = array_of(at_point(evidence.source.root, evidence.source.path))
+    if evidence.source is not None and evidence.student is not None \
+            and evidence.student.probe != evidence.source.probe:
+        evidence.student = _asked_alike(scene, evidence) or evidence.student
+
+
+def _asked_alike(scene: Scene, evidence: Evidence) -> Source | None:
+    """The student's call of the expected value's own probe, on its arguments, where the compared value came from
+    another probe of theirs (a reply that holds it beside other things: a Jacobian beside the chain's values its
+    central differences were taken from) and that call gives the compared value again: the second input and the
+    formula tier then ask the two sides alike.  One call of the student's code; None where it raises, gives
+    another value, or the probe declares nothing to the engine."""
+    source = evidence.source
+    if declaration(source.probe) is None or evidence.got is None:
+        return None
+    try:
+        root = scene.student(source.probe, source.args)
+    except (StudentFault, Budget):
+        return None
+    value = array_of(at(root, source.path))
+    if value is None or value.shape != evidence.got.shape or not within(value, evidence.got, evidence.tol):
+        return None
+    return Source(source.probe, tuple(source.args), source.path, root)
 
 
 def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
