@@ -20,6 +20,7 @@ import grader.diagnosis as engine
 from grader.checking import Tol
 from grader.diagnosis import Declaration, Evidence, explain
 from grader.diagnosis.evidence import Source, counterpart, evaluated, sibling
+from grader.errors import StudentFault
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
     assert_named_failure,
@@ -98,6 +99,8 @@ class _Child:
         self.functions = functions
 
     def call(self, probe, *args, timeout=None):
+        if probe not in self.functions:  # as a worker answers a probe the student's package cannot
+            raise StudentFault(f"your code has no {probe}")
         return self.functions[probe](*args)
 
 
