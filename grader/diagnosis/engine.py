@@ -412,8 +412,10 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     if not explained or min(h.cost for tier in tiers for h in tier) >= IGNORED_COST:
         tiers.append(_heard(lambda: _ignored(scene, evidences[0]), explained, "ignored"))
     if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
+        told = {DIAGNOSES[h.name].family for tier in tiers for h in tier} if any(tiers) else None
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
-                                               lambda: _second_input(scene, evidences[-1])), any(tiers), "formulas")
+                                               lambda: _second_input(scene, evidences[-1]), told),
+                          any(tiers), "formulas")
         if not formulas and left_to_live(scene, evidences):
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)

@@ -24,7 +24,10 @@ the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds of
-the thread's CPU time (a mutant that is still running then is interrupted, and nothing is named), warnings are
+the thread's CPU time (a mutant that is still running then is interrupted, and nothing is named); where an earlier
+tier already explained the answer, the tier is heard for rivals of the families not told yet only, the first
+``LATE_MUTANTS`` of them within ``LATE_TIME_BUDGET`` (``late``: a rival of a family told adds a name, not an
+explanation, and the rivals found so cost a failing grading a fraction of the whole tier), warnings are
 silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the
 scene's budget of the student's calls.  The student kit holds no reference code: the tier runs with the live
 reference only (``left_to_live``: the kit then says that the graded submission may say more).
@@ -54,8 +57,8 @@ from . import trace
 from .evidence import array_of, at, distinct, Evidence, Hypothesis, within
 from .grammar import equivalents
 
-__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "Mutant",
-           "mutants_of", "mutant_slips", "left_to_live"]
+__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE",
+           "NAMES_A_FUNCTION", "SLIPS", "Mutant", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -63,6 +66,12 @@ MAX_MUTANTS = 600
 #: the CPU time one explanation's mutants may take [s] (the thread's own, so that a loaded machine names what an
 #: idle one names); a mutant still running then is interrupted
 TIME_BUDGET = 2.0
+#: where an earlier tier already explained the answer, the formula tier is heard for rivals of other families only
+#: (a rival of a family told adds a name, not an explanation): of its mutants whose family is not told yet, the
+#: first this many, within ``LATE_TIME_BUDGET``; past them the earlier finding stands
+LATE_MUTANTS = 40
+#: the CPU time of the mutants heard after an earlier tier explained the answer [s]
+LATE_TIME_BUDGET = 0.4
 #: a solution region of problem N +- this many counts as the check's problem's own (the screw axis of problem 13
 #: is the region of problem 14)
 NEIGHBOURS = 1
@@ -1088,11 +1097,13 @@ def left_to_live(scene, evidences: list[Evidence]) -> bool:
     return problem is not None and importlib.util.find_spec(f"checks.problem_{problem:02d}") is not None
 
 
-def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothesis]:
+def mutant_slips(scene, evidences: list[Evidence], another=None, told=None) -> list[Hypothesis]:
     """The slips of the reference's own code that reproduce the student's value on the input shown and on the
     second one (``evidences``: two, each with its reference call ``source``), and on a third one where
     ``another()`` gives it (an input the engine draws, the student's value there within the scene's budget): two
-    inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit."""
+    inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit.
+    ``told``: the families an earlier tier already explained the answer with (None: none did); the tier then
+    tries rivals of other families only, within a budget of its own (``late``)."""
     if not _tried(evidences) or getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
     problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
@@ -1100,7 +1111,7 @@ def mutant_slips(scene, evidences: list[Evidence], another=None) -> list[Hypothe
         return []
     inputs = list(evidences)
     try:
-        kept = _kept(problem, evidences)
+        kept = _kept(problem, evidences, told=told)
         trace.note("mutants", problem=problem, kept=None if kept is None else sorted({m.name for m in kept}))
         if kept and another is not None:
             third = _another(another)
@@ -1123,25 +1134,41 @@ def _another(another) -> Evidence | None:
     return third if third is not None and third.source is not None and third.got is not None else None
 
 
-def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None) -> list[Mutant] | None:
+def late(mutants: list[Mutant], told) -> list[Mutant]:
+    """The mutants heard after an earlier tier explained the answer with the families ``told``: those of other
+    families, the first ``LATE_MUTANTS`` of them."""
+    return [m for m in mutants if DIAGNOSES[m.name].family not in told][:LATE_MUTANTS]
+
+
+def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
+          told=None) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
-    the student's value on ``evidences``, or None when the time ran out."""
+    the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``."""
     first = evidences[0]
+    started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
         kept, originals = None, {}
         try:
             root, package = _package()
-            with _Deadline(TIME_BUDGET) as deadline:
+            with _Deadline(TIME_BUDGET if told is None else LATE_TIME_BUDGET) as deadline:
                 if mutants is None:
                     mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
                     trace.note("mutated", count=None if mutants is None else len(mutants),
-                               functions=sorted({m.function for m in mutants or ()}))
+                               functions=sorted({m.function for m in mutants or ()}),
+                               seconds=round(time.thread_time() - started, 3))
+                    if mutants and told is not None:
+                        mutants = late(mutants, told)
+                        trace.note("late", told=sorted(told), count=len(mutants))
                 if mutants:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
+                    if kept:
+                        trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
+                                                                      if any(m is x for x in kept)])
         except _Timeout:
             trace.note("timeout")
             kept = None
         finally:
             _restore(originals)  # once the deadline can interrupt nothing more
+    trace.note("spent", seconds=round(time.thread_time() - started, 3))
     return kept

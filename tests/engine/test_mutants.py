@@ -462,6 +462,37 @@ def test_a_value_two_families_give_is_could_be(made_up):
     assert finding.hint.startswith("Could be ") and len(finding.names) == 2
 
 
+def test_after_an_explanation_only_rivals_of_other_families_are_tried(made_up, monkeypatch):
+    """Where an earlier tier already explained the answer (``told``: its families), the tier tries only the
+    mutants of families not told yet, the first ``LATE_MUTANTS`` of them: ``b - a`` explained as a sign adds the
+    exchange of the arguments (another family), not the sign again; with no mutant left to try it adds nothing."""
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    found = mutants.mutant_slips(scene("p98.difference"), evidences, told={"sign"})
+    assert {DIAGNOSES[h.name].family for h in found} == {"order"}, [(h.name, h.detail) for h in found]
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, told={"sign", "order"}) == []
+    monkeypatch.setattr(mutants, "LATE_MUTANTS", 0)
+    assert mutants.mutant_slips(scene("p98.difference"), evidences, told={"sign"}) == []
+
+
+def test_the_late_mutants_are_the_first_of_other_families():
+    made = [mutants.Mutant("problem_98", ("f",), slip, None)
+            for slip in ("sign", "entries", "square", "sign", "arguments", "halved")]
+    assert [m.slip for m in mutants.late(made, {"sign"})][:4] == ["entries", "square", "arguments", "halved"]
+    assert [m.slip for m in mutants.late(made, {"sign", "scale"})] == ["entries", "arguments"]
+    assert len(mutants.late(made * 20, set())) == mutants.LATE_MUTANTS
+
+
+def test_after_an_explanation_the_tier_has_a_smaller_time_budget(made_up, monkeypatch):
+    """A mutant that hangs is interrupted within ``LATE_TIME_BUDGET`` where an earlier tier explained the answer
+    (the earlier finding then stands): the budget of the whole tier is not spent on rivals."""
+    monkeypatch.setattr(mutants, "TIME_BUDGET", 600.0)
+    monkeypatch.setattr(mutants, "LATE_TIME_BUDGET", 0.3)
+    evidences = made_up_evidences(made_up, "settle", lambda a, b: [a + 1.0, 0.5 * a * b], [(1.0, 0.3), (2.0, 0.7)])
+    started = time.monotonic()
+    assert mutants.mutant_slips(scene("p98.settle"), evidences, told={"order"}) == []
+    assert time.monotonic() - started < 60.0  # bounded by the late budget, not the whole tier's (a loaded machine)
+
+
 def test_a_third_input_rules_out_a_coincidence_of_the_two_shown(made_up):
     """Where the engine can draw another input (``another``), a slip is kept only if it gives the student's value
     there too: a value that agrees with ``b - a`` on the two inputs shown but not elsewhere names nothing."""
