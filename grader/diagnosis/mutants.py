@@ -11,7 +11,11 @@ Each mutant changes one place of one function's solution region (``SLIPS``: a te
 missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
 ``*``, a square or a square root missing or added, sin for cos (in one call, or throughout one expression),
 degrees, a transpose or one on the wrong factor, a neighbouring index, two names exchanged (throughout, or two of a
-kind in one expression), a solve or an inverse left out, a sum that keeps only its last term, a count for a sum).
+kind in one expression), a solve or an inverse left out, a sum that keeps only its last term, a count for a sum,
+a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a
+name of the function or an attribute of the reference, related by the course's notation), a quantity read in
+another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied to one term only (``A @ x + y`` for
+``A @ (x + y)``), one entry of a list with the wrong sign).
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
 matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
@@ -39,6 +43,7 @@ import __future__
 import ast
 import copy
 import ctypes
+import itertools
 import re
 import sys
 import threading
@@ -144,25 +149,25 @@ class _Function:
     path: tuple
     node: ast.FunctionDef
     regions: tuple  # ((problem, first line, last line), ...)
+    attributes: frozenset = frozenset()  # the attributes the reference reads or sets (``B_omega_B``)
 
 
 @lru_cache(maxsize=4)
 def _functions(root: str) -> tuple[_Function, ...]:
     """Every function of the reference's modules (top level, or a method of a top-level class) that holds a
     solution region; the parsed modules are kept for the process."""
-    found = []
+    modules = []
     for path in sorted(Path(root).glob("*.py")):
-        if path.name == "__init__.py":
-            continue
-        source = path.read_text(encoding="utf-8")
-        regions = _regions(source.splitlines())
-        if not regions:
-            continue
-        tree = ast.parse(source, filename=str(path))
-        for node, names in _definitions(tree):
+        if path.name != "__init__.py":
+            source = path.read_text(encoding="utf-8")
+            modules.append((path, _regions(source.splitlines()), ast.parse(source, filename=str(path))))
+    attributes = frozenset(n.attr for _, _, tree in modules for n in ast.walk(tree) if isinstance(n, ast.Attribute))
+    found = []
+    for path, regions, tree in modules:
+        for node, names in _definitions(tree) if regions else ():
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
-                found.append(_Function(path.stem, names, node, inside))
+                found.append(_Function(path.stem, names, node, inside, attributes))
     return tuple(found)
 
 
@@ -270,6 +275,11 @@ SLIPS = {
     "returned_degrees": ("degrees", "`{f}` returns an angle in degrees"),
     "count": ("wrong_factor", "`{f}` divides by the number of entries where their sum belongs"),
     "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
+    "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
+    "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
+    "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
+    "rotated": ("wrong_frame", "a rotation in `{f}` is applied to one term of a sum only, not the whole sum"),
+    "entry_sign": ("sign_flip", "one entry that `{f}` builds has the wrong sign"),
 }
 
 
@@ -334,6 +344,93 @@ def _slips(node, parent):
         yield "sign", _negated
         if isinstance(parent.op, ast.MatMult) and not (isinstance(node, ast.Attribute) and node.attr == "T"):
             yield "transpose", _transposed
+
+
+#: the marks of a rate in the course's notation: ``qd`` of ``q``, ``qdd`` of ``qd``, ``omegaDot`` of ``omega``,
+#: ``dOm`` of ``Om``, ``x_dot`` of ``x``
+_RATE_SUFFIXES = ("d", "dot", "Dot")
+#: a quantity and its rate by their letters (``B_v_B`` and ``B_a_B``)
+_RATE_LETTERS = {("r", "v"), ("v", "a")}
+#: a part of a name that names a frame (``I``, ``B``, ``C3``, ``Dp``, ``DpDs``)
+_FRAME_PART = re.compile(r"^[A-Z][A-Za-z0-9]{0,4}$")
+
+
+def _rate(a: str, b: str) -> bool:
+    """``b`` names the rate of what ``a`` names: one part of the name (between underscores) carries a rate's mark
+    (``qd`` of ``q``, ``B_omegaDot_B`` of ``B_omega_B``, ``dq1`` of ``q1``) or the next letter of r, v, a."""
+    if b == f"{a}_dot":
+        return True
+    first, second = a.split("_"), b.split("_")
+    if len(first) != len(second):
+        return False
+    differ = [(x, y) for x, y in zip(first, second) if x != y]
+    if len(differ) != 1 or not differ[0][0]:
+        return False
+    x, y = differ[0]
+    return y in {x + mark for mark in _RATE_SUFFIXES} | {"d" + x} or (x, y) in _RATE_LETTERS
+
+
+def _rates(a: str, b: str) -> bool:
+    """One of two names names the other's rate."""
+    return _rate(a, b) or _rate(b, a)
+
+
+def _frames(a: str, b: str) -> bool:
+    """Two names of one quantity in the coordinates of two frames, by the course's notation: ``I_v_B`` and
+    ``B_v_B`` (the frame of the coordinates, the quantity, its points), ``A_IC2`` and ``A_IC3`` (two rotations)."""
+    first, second = a.split("_"), b.split("_")
+    if len(first) != len(second) or len(first) < 2:
+        return False
+    frame = 1 if len(first) == 2 and first[0] == second[0] == "A" else 0 if len(first) >= 3 else None
+    if frame is None or first[:frame] + first[frame + 1:] != second[:frame] + second[frame + 1:]:
+        return False
+    return first[frame] != second[frame] and all(_FRAME_PART.match(p) for p in (first[frame], second[frame]))
+
+
+def _related(a: str, b: str) -> str | None:
+    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames" or None."""
+    if a == b:
+        return None
+    return "rates" if _rates(a, b) else "frames" if _frames(a, b) else None
+
+
+def _read_slips(node, names: frozenset, attributes: frozenset):
+    """A read of a name (or of an object's attribute) replaced by a name of the function (an attribute of the
+    module) that is its rate or what it is the rate of, or the same quantity in another frame's coordinates
+    (``_related``)."""
+    if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+        for other in sorted(names):
+            slip = _related(node.id, other)
+            if slip is not None:
+                yield slip, lambda n, other=other: ast.Name(other, ast.Load())
+    elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and node.attr != "T":
+        for other in sorted(attributes):
+            slip = _related(node.attr, other)
+            if slip is not None:
+                yield slip, lambda n, other=other: _with(n, attr=other)
+
+
+def _distributed_slips(node: ast.BinOp):
+    """A factor that multiplies a sum applied to one term of it only (``A @ (x + y)`` as ``A @ x + y``,
+    ``(x + y) / c`` as ``x + y / c``): a rotation so applied leaves the other term in another frame's
+    coordinates."""
+    if isinstance(node.op, (ast.Mult, ast.MatMult)) and _summed_operand(node.right):
+        slip = "rotated" if _ROTATION.match(_label(node.left) or "-") else "distributed"
+        yield slip, lambda n: _with(n.right, left=_with(n, right=n.right.left))
+        yield slip, lambda n: _with(n.right, right=_with(n, right=n.right.right))
+    if isinstance(node.op, (ast.Mult, ast.Div)) and _summed_operand(node.left):
+        yield "distributed", lambda n: _with(n.left, right=_with(n, left=n.left.right))
+
+
+def _summed_operand(node) -> bool:
+    return isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub))
+
+
+def _entry_slips(node, parent):
+    """An entry of a list or tuple (a name, an attribute, an entry, a call's value) with the wrong sign."""
+    if isinstance(parent, (ast.Tuple, ast.List)) and isinstance(parent.ctx, ast.Load) \
+            and isinstance(node, (ast.Name, ast.Attribute, ast.Subscript, ast.Call)):
+        yield "entry_sign", _negated
 
 
 def _assigned(node: ast.AugAssign):
@@ -559,6 +656,7 @@ def _pairs(count: int):
 
 
 def _binop_slips(node: ast.BinOp):
+    yield from _distributed_slips(node)
     op = node.op
     if isinstance(op, (ast.Add, ast.Sub)):
         other = ast.Sub() if isinstance(op, ast.Add) else ast.Add()
@@ -709,8 +807,10 @@ def _mutated(function: _Function, lines: tuple):
              if guarded in (False, ITERABLE) and _in(node, lines)]
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
+    names = _names(function.node)
     for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
-        slips = _parameter_slips(function.node, lines) if index is None else _slips(node, parent)
+        slips = _parameter_slips(function.node, lines) if index is None else itertools.chain(
+            _slips(node, parent), _entry_slips(node, parent), _read_slips(node, names, function.attributes))
         for slip, edit in slips:
             if guarded == ITERABLE and slip not in _EXCHANGES:
                 continue
@@ -733,6 +833,12 @@ def _mutated(function: _Function, lines: tuple):
             if key not in seen:
                 seen.add(key)
                 yield slip, tree
+
+
+def _names(function: ast.FunctionDef) -> frozenset:
+    """The names a function reads or binds, and its arguments."""
+    arguments = function.args.posonlyargs + function.args.args + function.args.kwonlyargs
+    return frozenset({n.id for n in ast.walk(function) if isinstance(n, ast.Name)} | {a.arg for a in arguments})
 
 
 def _parented(root):

@@ -190,6 +190,14 @@ OPERATORS = [
     ("a norm for its square", "p16.cuboid", "inertia.py", "return m / 12 * np.diag([b**2 + c**2,",
      "return m / 12 * np.diag([np.sqrt(b**2 + c**2),", "problem_16.body", CUBOIDS, (), "wrong_factor",
      "`cuboid_inertia` takes a square root of a sum of squares where the sum belongs"),
+    ("a rate where its derivative belongs", "p37.torques", "problem_37.py",
+     "return M @ qdd_des - f - g + pd_torque(q, qd, q_des, qd_des)",
+     "return M @ qd_des - f - g + pd_torque(q, qd, q_des, qd_des)", "problem_37.torques",
+     [("computed_torques", [(SPD, V(0.3, -1.0, 0.5), V(0.0, -2.0, 0.1), V(0.2, 0.4, -0.1), V(-0.5, 0.3, 0.8),
+                              V(0.1, 0.6, -0.2), V(0.9, -0.4, 0.3), V(-1.1, 0.7, 0.5))]),
+      ("computed_torques", [(1.5 * SPD + np.eye(3), V(-0.8, 0.2, 1.1), V(0.5, 0.3, -1.2), V(-0.3, 0.2, 0.6),
+                              V(0.4, -0.9, 0.1), V(-0.6, 0.2, 0.7), V(0.3, 0.5, -0.8), V(0.6, -0.2, 1.3))])],
+     (0,), "state_row", "`computed_torque` reads a quantity where its rate belongs"),
     ("a count for a sum", "p16.second_moments", "inertia.py", "second = 0.5 * (moments.sum() - 2.0 * moments)",
      "second = 0.5 * (len(moments) - 2.0 * moments)", "problem_16.dimensions",
      [(2.0, 0.5, 0.6, 0.7), (0.5, 0.4, 0.5, 0.8)], ("cuboid",), "wrong_factor",
@@ -424,6 +432,42 @@ def height(a, b):
     # BEGIN SOLUTION problem 98
     return np.array([a * b + 0.4 + b])
     # END SOLUTION
+
+
+class Body:
+    """A body's state in the course's notation (given)."""
+
+    def __init__(self, A_IB, B_v_B, B_omega_B, B_omegaDot_B):
+        self.A_IB, self.B_v_B, self.B_omega_B, self.B_omegaDot_B = A_IB, B_v_B, B_omega_B, B_omegaDot_B
+        self.I_v_B = A_IB @ B_v_B
+
+
+def point_velocity(body, B_r_BP):
+    """``I_v_P = I_v_B + A_IB (B_omega_B x B_r_BP)``."""
+    # BEGIN SOLUTION problem 98
+    return body.I_v_B + body.A_IB @ np.cross(body.B_omega_B, B_r_BP)
+    # END SOLUTION
+
+
+def lever_position(A_IB, B_r_IB, B_r_BP):
+    """``I_r_IP = A_IB (B_r_IB + B_r_BP)``."""
+    # BEGIN SOLUTION problem 98
+    return A_IB @ (B_r_IB + B_r_BP)
+    # END SOLUTION
+
+
+def mean_rate(a, b, dt):
+    """``(a + b) / dt``."""
+    # BEGIN SOLUTION problem 98
+    return np.array([(a + b) / dt, a * b])
+    # END SOLUTION
+
+
+def offsets(dx, dy):
+    """The offset of a hip from a stance foot."""
+    # BEGIN SOLUTION problem 98
+    return np.array([-dx, dy, 0.5 * dx])
+    # END SOLUTION
 '''
 
 
@@ -578,6 +622,98 @@ def test_a_mutant_that_raises_is_dropped(made_up):
     evidences = made_up_evidences(made_up, "logarithm", lambda a, b: [-np.log(a), b], [(2.0, -0.3), (0.5, -1.7)])
     found = mutants.mutant_slips(scene("p98.logarithm"), evidences)
     assert [h.name for h in found] == ["sign_flip"]
+
+
+#: a body's state (the made-up ``Body``'s arguments) and a point on it, on two inputs
+BODY_STATES = [((ROTATIONS[0], V(0.4, -0.2, 0.9), V(0.3, 1.1, -0.5), V(-0.7, 0.2, 0.6)), V(0.5, 0.1, -0.3)),
+               ((ROTATIONS[1], V(-1.0, 0.6, 0.2), V(-0.8, 0.4, 0.9), V(0.3, -1.2, 0.5)), V(-0.2, 0.7, 0.4))]
+
+
+def _bodies(package):
+    body = importlib.import_module(f"{package.__name__}.problem_98").Body
+    return [(body(*state), point) for state, point in BODY_STATES]
+
+
+def _velocity(rate=False, frame=False, both=False):
+    """The made-up ``point_velocity`` as a student may write it: the angular acceleration read where the angular
+    velocity belongs (``rate``), the velocity in body coordinates (``frame``), or the sum of both rates
+    (``both``: no single slip)."""
+    def student(body, B_r_BP):
+        omega = body.B_omegaDot_B if rate else body.B_omega_B + body.B_omegaDot_B if both else body.B_omega_B
+        return (body.B_v_B if frame else body.I_v_B) + body.A_IB @ np.cross(omega, B_r_BP)
+
+    return student
+
+
+def test_a_rate_read_where_the_quantity_belongs_is_a_state_read(made_up):
+    """``body.B_omegaDot_B`` read where ``body.B_omega_B`` belongs (an attribute of the course's notation and its
+    rate): a state read from the wrong rows; the sum of both (no single slip) names no such cause."""
+    evidences = made_up_evidences(made_up, "point_velocity", _velocity(rate=True), _bodies(made_up))
+    found = mutants.mutant_slips(scene("p98.point_velocity"), evidences)
+    assert {h.name for h in found} == {"state_row"}, [(h.name, h.detail) for h in found]
+    assert any("reads a quantity where its rate belongs" in h.detail and "`point_velocity`" in h.detail
+               for h in found)
+    near = made_up_evidences(made_up, "point_velocity", _velocity(both=True), _bodies(made_up))
+    assert "state_row" not in {h.name for h in mutants.mutant_slips(scene("p98.point_velocity"), near)}
+
+
+def test_a_quantity_read_in_another_frames_coordinates_is_a_frame_slip(made_up):
+    """``body.B_v_B`` read where ``body.I_v_B`` belongs (one quantity, the coordinates of another frame): a frame
+    slip; the velocity left out altogether (a term, not a frame) is not told as one."""
+    evidences = made_up_evidences(made_up, "point_velocity", _velocity(frame=True), _bodies(made_up))
+    found = mutants.mutant_slips(scene("p98.point_velocity"), evidences)
+    assert {h.name for h in found} == {"wrong_frame"}, [(h.name, h.detail) for h in found]
+    assert any("in the coordinates of another frame" in h.detail for h in found)
+
+    def without(body, B_r_BP):
+        return body.A_IB @ np.cross(body.B_omega_B, B_r_BP)
+
+    near = made_up_evidences(made_up, "point_velocity", without, _bodies(made_up))
+    assert "wrong_frame" not in {h.name for h in mutants.mutant_slips(scene("p98.point_velocity"), near)}
+
+
+def test_the_names_related_by_rate_and_by_frame():
+    """By the course's notation: a rate's mark on one part of a name, the next of r, v, a; one quantity in two
+    frames' coordinates (the first part), or two rotations; not two different quantities or points."""
+    for a, b in (("q", "qd"), ("qd", "qdd"), ("B_omega_B", "B_omegaDot_B"), ("dq1", "q1"), ("x", "x_dot"),
+                 ("B_v_B", "B_a_B"), ("Om", "dOm")):
+        assert mutants._related(a, b) == "rates", (a, b)
+    for a, b in (("I_v_B", "B_v_B"), ("A_IC2", "A_IC3"), ("I_r_IB", "B_r_IB")):
+        assert mutants._related(a, b) == "frames", (a, b)
+    for a, b in (("B_J_R", "B_J_S"), ("Dp_r_DpDs", "Dp_r_IDp"), ("P_GAIN", "D_GAIN"), ("m1", "m2"), ("q", "q"),
+                 ("B_v_B", "B_omega_B"), ("A_IB", "B_IB")):
+        assert mutants._related(a, b) is None, (a, b)
+
+
+def test_a_factor_applied_to_one_term_of_a_sum(made_up):
+    """``A_IB @ B_r_IB + B_r_BP`` where ``A_IB @ (B_r_IB + B_r_BP)`` belongs: a rotation applied to one term only, a
+    frame slip; ``a + b / dt`` for ``(a + b) / dt``: a factor of one term only.  The rotation on the other term
+    turned back instead (two slips) names no such cause."""
+    inputs = [(ROTATIONS[2], V(0.3, -0.4, 1.0), V(0.8, 0.1, -0.6)),
+              (ROTATIONS[3], V(-0.5, 0.9, 0.2), V(0.2, -0.7, 0.4))]
+    evidences = made_up_evidences(made_up, "lever_position", lambda A, r, p: A @ r + p, inputs)
+    found = mutants.mutant_slips(scene("p98.lever_position"), evidences)
+    assert {h.name for h in found} == {"wrong_frame"}, [(h.name, h.detail) for h in found]
+    assert any("a rotation in `lever_position` is applied to one term of a sum only" in h.detail for h in found)
+    near = made_up_evidences(made_up, "lever_position", lambda A, r, p: A @ r + A.T @ p, inputs)
+    assert mutants.mutant_slips(scene("p98.lever_position"), near) == []
+    scalars = made_up_evidences(made_up, "mean_rate", lambda a, b, dt: [a + b / dt, a * b],
+                                [(1.0, 3.0, 0.5), (2.5, -0.5, 4.0)])
+    found = mutants.mutant_slips(scene("p98.mean_rate"), scalars)
+    assert {h.name for h in found} == {"missing_factor"}, [(h.name, h.detail) for h in found]
+    assert any("multiplies one term of a sum only" in h.detail for h in found)
+
+
+def test_one_entry_of_a_list_with_the_wrong_sign(made_up):
+    """``[-dx, -dy, ...]`` where ``[-dx, dy, ...]`` belongs: one entry's sign; ``-2 dy`` (a sign and a factor)
+    names no such cause."""
+    inputs = [(0.3, 0.8), (1.2, -0.4)]
+    evidences = made_up_evidences(made_up, "offsets", lambda dx, dy: [-dx, -dy, 0.5 * dx], inputs)
+    found = mutants.mutant_slips(scene("p98.offsets"), evidences)
+    assert {h.name for h in found} == {"sign_flip"}, [(h.name, h.detail) for h in found]
+    assert any("one entry that `offsets` builds has the wrong sign" in h.detail for h in found)
+    near = made_up_evidences(made_up, "offsets", lambda dx, dy: [-dx, -2.0 * dy, 0.5 * dx], inputs)
+    assert mutants.mutant_slips(scene("p98.offsets"), near) == []
 
 
 def test_the_mutants_are_bounded(made_up, monkeypatch):
