@@ -26,8 +26,8 @@ gives the transpose of the rotation: a transpose to the output tier, a sign to t
 * where the hypotheses told span more than two families (``engine.MAX_FAMILIES``), nothing is named;
 * a later tier heard after an earlier one explained the answer that runs out of its budget (calls, the formula
   tier's time) leaves the earlier finding standing, as it stood before the later tier was heard; the formula tier
-  so heard tries rivals of the families not told yet only, within a budget of its own (``mutants.LATE_MUTANTS``,
-  ``mutants.LATE_TIME_BUDGET``);
+  so heard tries rivals of the families not told yet first, then those of the families told as time allows,
+  within a budget of its own (``mutants.LATE_MUTANTS``, ``mutants.LATE_TIME_BUDGET``);
 * the student kit cannot hear the formula tier (it holds no reference code): where its own tiers explain the
   answer it names no cause, says what they found and that the graded submission may say more.
 

@@ -29,9 +29,9 @@ the student's functions, never the reference's code.
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds of
 the thread's CPU time (a mutant that is still running then is interrupted, and nothing is named); where an earlier
-tier already explained the answer, the tier is heard for rivals of the families not told yet only, the first
-``LATE_MUTANTS`` of them within ``LATE_TIME_BUDGET`` (``late``: a rival of a family told adds a name, not an
-explanation, and the rivals found so cost a failing grading a fraction of the whole tier), warnings are
+tier already explained the answer, the tier is heard for rivals within a budget of its own, ``LATE_MUTANTS`` mutants
+and ``LATE_TIME_BUDGET``, those of the families not told yet first (``late``: a rival of a family told adds a name,
+not an explanation), warnings are
 silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the
 scene's budget of the student's calls.  The student kit holds no reference code: the tier runs with the live
 reference only (``left_to_live``: the kit then says that the graded submission may say more).
@@ -71,11 +71,11 @@ MAX_MUTANTS = 600
 #: the CPU time one explanation's mutants may take [s] (the thread's own, so that a loaded machine names what an
 #: idle one names); a mutant still running then is interrupted
 TIME_BUDGET = 2.0
-#: where an earlier tier already explained the answer, the formula tier is heard for rivals of other families only
-#: (a rival of a family told adds a name, not an explanation): of its mutants whose family is not told yet, the
-#: first this many, within ``LATE_TIME_BUDGET``; past them the earlier finding stands.  The mutants come in the
-#: order of the code, and a rival may be the last of them (problem 43's solve left out, 157th of 159): the first
-#: 40 lost it
+#: where an earlier tier already explained the answer, the formula tier's mutants tried at most, those of the
+#: families not told yet first, then those of the families told (a rival of a family told adds a name, not an
+#: explanation), within ``LATE_TIME_BUDGET``: where the time runs out before the rivals of other families were all
+#: tried, the earlier finding stands.  The mutants come in the order of the code, and a rival may be the last of
+#: them (problem 43's solve left out, 157th of 159): the first 40 lost it
 LATE_MUTANTS = 200
 #: the CPU time of the mutants heard after an earlier tier explained the answer [s]
 LATE_TIME_BUDGET = 0.4
@@ -1099,12 +1099,16 @@ class _Deadline:
 
 
 def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: _Deadline,
-              originals: dict, judged: bool = True) -> list[Mutant] | None:
+              originals: dict, judged: bool = True, kept: list | None = None,
+              progress: dict | None = None) -> list[Mutant] | None:
     """The mutants that reproduce the student's value on every input (and, ``judged``, differ from the expected
     value on one, and from zero), or None when the time ran out first.  ``originals`` keeps the code of every
-    function changed (``_restore`` puts it back)."""
-    kept = []
-    for mutant in mutants:
+    function changed (``_restore`` puts it back); ``kept`` (given) gathers the mutants kept as they are found and
+    ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out."""
+    kept = [] if kept is None else kept
+    progress = {} if progress is None else progress
+    for tried, mutant in enumerate(mutants):
+        progress["tried"] = tried
         if deadline.fired:
             return None
         holder = _live(package, mutant.module, mutant.path)
@@ -1129,6 +1133,7 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         if not any(distinct(v, np.zeros_like(v), e.tol) for v, e in zip(values, inputs)):
             continue
         kept.append(mutant)
+    progress["tried"] = len(mutants)
     return kept
 
 
@@ -1211,7 +1216,7 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None) -> l
     ``another()`` gives it (an input the engine draws, the student's value there within the scene's budget): two
     inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit.
     ``told``: the families an earlier tier already explained the answer with (None: none did); the tier then
-    tries rivals of other families only, within a budget of its own (``late``)."""
+    tries rivals within a budget of its own, those of other families first (``late``)."""
     if not _tried(evidences) or getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
     problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
@@ -1242,10 +1247,15 @@ def _another(another) -> Evidence | None:
     return third if third is not None and third.source is not None and third.got is not None else None
 
 
-def late(mutants: list[Mutant], told) -> list[Mutant]:
-    """The mutants heard after an earlier tier explained the answer with the families ``told``: those of other
-    families, the first ``LATE_MUTANTS`` of them."""
-    return [m for m in mutants if DIAGNOSES[m.name].family not in told][:LATE_MUTANTS]
+def late(mutants: list[Mutant], told) -> tuple[list[Mutant], int]:
+    """The mutants heard after an earlier tier explained the answer with the families ``told``, in the order they
+    are tried, and how many of them come first as rivals of other families: those of other families, then those
+    of the families told (a rival of a family told adds a name, not an explanation: it is tried as time allows),
+    the first ``LATE_MUTANTS`` of them."""
+    others = [m for m in mutants if DIAGNOSES[m.name].family not in told]
+    same = [m for m in mutants if DIAGNOSES[m.name].family in told]
+    order = (others + same)[:LATE_MUTANTS]
+    return order, min(len(others), len(order))
 
 
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
@@ -1256,7 +1266,7 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
     started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
-        kept, originals = None, {}
+        kept, originals, found, progress, rivals = None, {}, [], {}, None
         try:
             root, package = _package()
             with _Deadline(TIME_BUDGET if told is None else LATE_TIME_BUDGET) as deadline:
@@ -1266,17 +1276,21 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                                functions=sorted({m.function for m in mutants or ()}),
                                seconds=round(time.thread_time() - started, 3))
                     if mutants and told is not None:
-                        mutants = late(mutants, told)
-                        trace.note("late", told=sorted(told), count=len(mutants))
+                        mutants, rivals = late(mutants, told)
+                        trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
                 if mutants:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1,
+                                     kept=found, progress=progress)
                     if kept:
                         trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
                                                                       if any(m is x for x in kept)])
         except _Timeout:
-            trace.note("timeout")
             kept = None
         finally:
             _restore(originals)  # once the deadline can interrupt nothing more
+        if kept is None and mutants:
+            trace.note("timeout", tried=progress.get("tried"))
+            if rivals is not None and progress.get("tried", 0) >= rivals:
+                kept = found  # every rival of another family was tried: the time ran out on names of a family told
     trace.note("spent", seconds=round(time.thread_time() - started, 3))
     return kept

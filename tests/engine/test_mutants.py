@@ -506,24 +506,27 @@ def test_a_value_two_families_give_is_could_be(made_up):
     assert finding.hint.startswith("Could be ") and len(finding.names) == 2
 
 
-def test_after_an_explanation_only_rivals_of_other_families_are_tried(made_up, monkeypatch):
-    """Where an earlier tier already explained the answer (``told``: its families), the tier tries only the
-    mutants of families not told yet, the first ``LATE_MUTANTS`` of them: ``b - a`` explained as a sign adds the
-    exchange of the arguments (another family), not the sign again; with no mutant left to try it adds nothing."""
+def test_after_an_explanation_rivals_of_other_families_are_tried_first(made_up, monkeypatch):
+    """Where an earlier tier already explained the answer (``told``: its families), the tier tries the mutants of
+    families not told yet first, then those of the families told as time allows, at most ``LATE_MUTANTS``: ``b - a``
+    explained as a sign adds the exchange of the arguments (another family) and the sign's own name; with no mutant
+    left to try it adds nothing."""
     evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
     found = mutants.mutant_slips(scene("p98.difference"), evidences, told={"sign"})
-    assert {DIAGNOSES[h.name].family for h in found} == {"order"}, [(h.name, h.detail) for h in found]
-    assert mutants.mutant_slips(scene("p98.difference"), evidences, told={"sign", "order"}) == []
+    assert {DIAGNOSES[h.name].family for h in found} == {"order", "sign"}, [(h.name, h.detail) for h in found]
     monkeypatch.setattr(mutants, "LATE_MUTANTS", 0)
     assert mutants.mutant_slips(scene("p98.difference"), evidences, told={"sign"}) == []
 
 
-def test_the_late_mutants_are_the_first_of_other_families():
+def test_the_late_mutants_are_those_of_other_families_first():
     made = [mutants.Mutant("problem_98", ("f",), slip, None)
             for slip in ("sign", "entries", "square", "sign", "arguments", "halved")]
-    assert [m.slip for m in mutants.late(made, {"sign"})][:4] == ["entries", "square", "arguments", "halved"]
-    assert [m.slip for m in mutants.late(made, {"sign", "scale"})] == ["entries", "arguments"]
-    assert len(mutants.late(made * (mutants.LATE_MUTANTS // len(made) + 1), set())) == mutants.LATE_MUTANTS
+    order, rivals = mutants.late(made, {"sign"})
+    assert [m.slip for m in order] == ["entries", "square", "arguments", "halved", "sign", "sign"] and rivals == 4
+    order, rivals = mutants.late(made, {"sign", "scale"})
+    assert [m.slip for m in order] == ["entries", "arguments", "sign", "square", "sign", "halved"] and rivals == 2
+    order, rivals = mutants.late(made * (mutants.LATE_MUTANTS // len(made) + 1), set())
+    assert len(order) == rivals == mutants.LATE_MUTANTS
 
 
 def test_after_an_explanation_the_tier_has_a_smaller_time_budget(made_up, monkeypatch):
