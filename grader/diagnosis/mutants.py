@@ -75,9 +75,10 @@ TIME_BUDGET = 2.0
 #: families not told yet first, then those of the families told (a rival of a family told adds a name, not an
 #: explanation), within ``LATE_TIME_BUDGET``: where the time runs out before the rivals of other families were all
 #: tried, the earlier finding stands.  The mutants come in the order of the code, and a rival may be the last of
-#: them (problem 43's solve left out, 157th of 159): the first 40 lost it
-LATE_MUTANTS = 200
-#: the CPU time of the mutants heard after an earlier tier explained the answer [s]
+#: them (problem 43's solve left out, 157th of 159: the first 40 lost it), so all of them, as many as the tier makes
+LATE_MUTANTS = MAX_MUTANTS
+#: the CPU time of the evaluation of the mutants heard after an earlier tier explained the answer [s] (their making,
+#: which the process caches, is bounded by ``TIME_BUDGET``: problem 31's 477 took more than this the first time)
 LATE_TIME_BUDGET = 0.4
 #: a solution region of problem N +- this many counts as the check's problem's own (the screw axis of problem 13
 #: is the region of problem 14)
@@ -1269,7 +1270,7 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
         kept, originals, found, progress, rivals = None, {}, [], {}, None
         try:
             root, package = _package()
-            with _Deadline(TIME_BUDGET if told is None else LATE_TIME_BUDGET) as deadline:
+            with _Deadline(TIME_BUDGET) as deadline:
                 if mutants is None:
                     mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
                     trace.note("mutated", count=None if mutants is None else len(mutants),
@@ -1278,12 +1279,15 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                     if mutants and told is not None:
                         mutants, rivals = late(mutants, told)
                         trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
-                if mutants:
+                if mutants and rivals is None:
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
+            if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
+                with _Deadline(LATE_TIME_BUDGET) as deadline:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1,
                                      kept=found, progress=progress)
-                    if kept:
-                        trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
-                                                                      if any(m is x for x in kept)])
+            if kept:
+                trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
+                                                              if any(m is x for x in kept)])
         except _Timeout:
             kept = None
         finally:
