@@ -9,9 +9,8 @@ matrix symmetric, a positive mass positive; a draw on which the reference raises
 not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
 (none, or more than two).  It never names a default cause.
 
-Every tier is heard (the run's, the outputs', the inputs', the declared terms', the formulas'; the test of an
-argument ignored where nothing simpler than its cost explained it, ``engine.IGNORED_COST``), even where an earlier
-one explained the answer: a slip that two tiers reproduce alike, with two
+Every tier is heard (the run's, the outputs', the inputs', the declared terms', the test of an argument ignored,
+the formulas'), even where an earlier one explained the answer: a slip that two tiers reproduce alike, with two
 families, is told with both rather than with the one the first tier saw (an angular velocity integrated backwards
 gives the transpose of the rotation: a transpose to the output tier, a sign to the student).  The rule of rank:
 
@@ -48,7 +47,8 @@ The grammar:
   problem's rotation);
 * inputs (the reference on transformed arguments): arguments swapped, angles as degrees, negated angles, a
   rotation argument transposed, a vector argument in the other frame, an argument ignored (the student's value
-  does not change when it does);
+  does not change when it does, under two independent changes of it, on both inputs where there are two, while the
+  reference's does: a value that does not follow an argument at all is the finding, not a guess);
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the

@@ -32,6 +32,7 @@ from .evidence import (
     within,
 )
 from .grammar import (
+    changed_how,
     ignore_candidates,
     input_slips,
     label_of,
@@ -45,7 +46,7 @@ from .grammar import (
 )
 from . import trace
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
-from .scene import Budget, constants_of, Scene
+from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
 from .runs import (
     FIXED_STEPS,
@@ -293,41 +294,99 @@ def _equal_args(a, b) -> bool:
         return False
 
 
-def _ignored(scene: Scene, evidence: Evidence) -> list:
-    """An argument the student's function ignores: their value stays the same when the argument changes (every
-    declared argument changes the reference's value).  A value of zero tells nothing: a product that vanishes on
-    the input shown stays zero when one of its factors changes."""
+def _testable(evidence: Evidence) -> bool:
+    """A comparison the test of an ignored argument can change: the reference's and the student's value come from
+    calls of one probe with the same arguments (not a run), and the student's value is not zero (a product that
+    vanishes on an input stays zero when one of its factors changes: that tells nothing)."""
     source, student = evidence.source, evidence.student
-    if source is None or student is None or not _equal_args(source.args, student.args):
-        return []
-    if not distinct(evidence.got, np.zeros_like(evidence.got), evidence.tol):
-        return []
+    if source is None or student is None or source.probe != student.probe or evidence.motion:
+        return False
+    if not _equal_args(source.args, student.args):
+        return False
     decl = declaration(source.probe)
-    if decl is None or decl.motion:
-        return []
-    leaves = ignore_candidates(decl, source.args)
-    found = []
-    for path, role, value in leaves:
-        changed = perturbed(value)
-        if changed is None:
-            continue
-        args = replaced(source.args, path, changed)
+    if decl is not None and decl.motion:
+        return False
+    return evidence.got.size > 0 and distinct(evidence.got, np.zeros_like(evidence.got), evidence.tol)
+
+
+def _unchanged(scene: Scene, evidence: Evidence, path, change: int) -> bool | None:
+    """Whether the student's value stays what it is when the argument at ``path`` takes another value (the
+    ``change``-th of ``grammar.perturbed``); None where that tells nothing: the argument cannot be changed, the
+    reference's value does not change with it (no sensitivity), or either side refuses the changed input."""
+    source, student = evidence.source, evidence.student
+    try:
+        changed = perturbed(at(list(source.args), path), change)
+    except (IndexError, KeyError, TypeError):
+        return None
+    if changed is None:
+        return None
+    args = replaced(tuple(source.args), path, changed)
+    try:
         theirs = array_of(at(scene.reference(source.probe, args), source.path))
-        if theirs is None or theirs.shape != evidence.expected.shape \
-                or not distinct(theirs, evidence.expected, evidence.tol):
-            continue  # the reference's value does not depend on it either
-        try:
-            other = array_of(at(scene.student(source.probe, args), student.path))
-        except StudentFault:
+    except GraderFault:
+        return None
+    if theirs is None or theirs.shape != evidence.expected.shape \
+            or not distinct(theirs, evidence.expected, evidence.tol):
+        return None
+    try:
+        other = array_of(at(scene.student(source.probe, args), student.path))
+    except StudentFault:
+        return None
+    if other is None or other.shape != evidence.got.shape:
+        return None
+    return within(other, evidence.got, evidence.tol)
+
+
+#: the student's calls the test of an ignored argument may make, at most (one per argument the reference's value
+#: follows, and one more for each that the student's does not): it is heard beside every other tier, and the
+#: formula tier's third input still needs one of the explanation's ``MAX_STUDENT_CALLS``
+IGNORED_CALLS = 5
+
+
+def _ignored(scene: Scene, evidences: list) -> list:
+    """The arguments the student's function ignores: where the reference's value changes with an argument, the
+    student's stays the same, under two independent changes of it (``grammar.perturbed``), the second on the
+    second input where there is one (else on the input shown).  A value unchanged by chance (a factor that
+    vanishes on one input, a change that happens to leave it) does not survive both; a value that does not change
+    with an argument at all is the finding itself, not a guess.  Every declared angle, scalar, vector and rotation
+    is changed (for a probe that declares none, every argument that is real numbers); where every argument the
+    reference follows is ignored, the answer is constant."""
+    first = evidences[0]
+    if not _testable(first):
+        trace.note("ignored", reason="not testable")
+        return []
+    decl = declaration(first.source.probe)
+    second = evidences[1] if len(evidences) > 1 and _testable(evidences[1]) \
+        and evidences[1].source.probe == first.source.probe else None
+    leaves = ignore_candidates(decl, first.source.args)
+    budget = scene.student_calls + min(IGNORED_CALLS, MAX_STUDENT_CALLS - 1 - scene.student_calls)
+    found, followed, complete = [], [], True
+    for path, _, value in leaves:
+        if scene.student_calls + 2 > budget:  # an argument tested is changed twice where it is ignored
+            complete = False
+            break
+        unchanged = _unchanged(scene, first, path, 0)
+        if unchanged is None:
             continue
-        if other is not None and other.shape == evidence.got.shape and within(other, evidence.got, evidence.tol):
+        followed.append(path)
+        if not unchanged:
+            continue
+        if _unchanged(scene, second if second is not None else first, path, 1):
+            where = "on both inputs" if second is not None else "under two changes of it"
             found.append(Hypothesis(f"ignored:{path}", "ignored_argument", 3,
-                                     f"your value does not change when {label_of(decl, path)} does: the function "
-                                     f"ignores it"))
-    if len(leaves) > 1 and len(found) == len(leaves):  # nothing changes it: no use of the input at all
+                                    f"your value does not change when {_label(decl, path)} {changed_how(value)} "
+                                    f"({where}), while the expected one does: the function ignores it"))
+    trace.note("ignored", arguments=len(leaves), followed=len(followed), found=[h.key for h in found],
+               complete=complete)
+    if complete and len(followed) > 1 and len(found) == len(followed):  # nothing changes it: no use of the input
         return [Hypothesis("ignored:all", "constant_answer", 3, "your value does not change when any of the "
-                            f"arguments ({', '.join(label_of(decl, p) for p, _, _ in leaves)}) does")]
+                           f"arguments ({', '.join(_label(decl, p) for p in followed)}) does")]
     return found
+
+
+def _label(decl: Declaration | None, path) -> str:
+    return label_of(decl, path) if decl is not None else f"argument {path[0] + 1}" + "".join(
+        f"[{k!r}]" for k in path[1:])
 
 
 def _keep(inputs: list, keys) -> list:
@@ -409,8 +468,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs)]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
-    if not explained or min(h.cost for tier in tiers for h in tier) >= IGNORED_COST:
-        tiers.append(_heard(lambda: _ignored(scene, evidences[0]), explained, "ignored"))
+    tiers.append(_heard(lambda: _ignored(scene, evidences), explained, "ignored"))
     if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
         told = {DIAGNOSES[h.name].family for tier in tiers for h in tier} if any(tiers) else None
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
@@ -436,10 +494,6 @@ def _left_to_live(finding: Finding | None) -> Finding:
     return Finding((), f"{finding.hint}\n{KIT_NOTE}")
 
 
-#: the test of an ignored argument is heard only where no slip simpler than cost 3 explained the answer: it changes
-#: one argument on the input shown only, and a shrunk input (a zero among the others) leaves a value unchanged by
-#: chance; heard after every explanation it told such chances beside right causes
-IGNORED_COST = 3
 #: the keys of the input tier's hypotheses (``grammar.input_slips``): the reference on transformed arguments
 INPUT_KEYS = "in:"
 
@@ -714,10 +768,16 @@ def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
     try:
         if decl is not None:
             _prepare_declared(scene, ask, decl, source)
+        else:  # the test of an ignored argument changes the numbers of a probe that declares nothing
+            for args in perturbations(None, source.args):
+                ask(source.probe, args)
         if not (decl is not None and decl.motion) and not getattr(ctx, "randomized", False):
             root = source.root if source.root is not None else ask(source.probe, source.args)
             expected = array_of(at(root, source.path))
             drawn = None if expected is None else _drawn(scene, source, expected, tol or SECOND_TOL)
+            if drawn is not None:
+                for args in perturbations(decl, drawn[0]):
+                    ask(source.probe, args)
             if drawn is not None and decl is not None:
                 for _, variant in input_slips(decl, drawn[0]):
                     ask(source.probe, variant)

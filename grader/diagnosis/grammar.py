@@ -29,6 +29,9 @@ __all__ = [
     "rotation_of",
     "input_slips",
     "perturbed",
+    "changed_how",
+    "IGNORED_ARGUMENTS",
+    "IGNORED_ROLES",
     "ignore_candidates",
     "perturbations",
     "redraw",
@@ -340,40 +343,94 @@ def input_slips(decl: Declaration, args: tuple) -> list:
     return out
 
 
-def perturbed(value):
-    """Another value of an argument, of the same kind (for the test of an ignored argument)."""
+#: the test of an ignored argument changes this many declared arguments at most (or, for a probe that declares
+#: none, numeric arguments), in the order of the call
+IGNORED_ARGUMENTS = 6
+#: the roles of declared arguments that the test of an ignored argument changes
+IGNORED_ROLES = ("angle", "angles", "scalar", "vector", "rotation")
+#: the two changes of the test of an ignored argument, independent of each other: a number ``x`` becomes
+#: ``a x + b`` (a positive number stays positive, a zero changes), a rotation is turned by ``angle`` about an axis,
+#: a symmetric matrix is changed by a congruence with the positive diagonal ``diagonal`` (definite where it was),
+#: any other array is scaled by ``a`` (a direction, the signs and the ratios of its entries kept: masses stay
+#: positive, their centre stays where it is)
+_CHANGES = (
+    {"a": 1.37, "b": 0.29, "axis": 2, "angle": 0.61, "diagonal": (1.3, 0.8, 1.15)},
+    {"a": 0.71, "b": 0.17, "axis": 0, "angle": -0.47, "diagonal": (0.85, 1.25, 0.7)},
+)
+
+
+def perturbed(value, change: int = 0):
+    """Another value of an argument, of the same kind (for the test of an ignored argument): the ``change``-th of
+    two independent changes (``_CHANGES``); None for a value that is not numbers, a table, a grid (times), or a
+    value the change leaves as it is (zeros)."""
     array = array_of(value)
-    if array is None:
+    if array is None or array.size == 0 or array.size > DRAWN_ENTRIES or not np.all(np.isfinite(array)):
         return None
+    c = _CHANGES[change]
     if array.ndim == 0:
-        x = float(array)
-        return x * 1.37 + 0.29
-    if array.shape == (3, 3) and np.max(np.abs(array.T @ array - np.eye(3))) < 1e-6:
-        turn = np.eye(3)  # a turn by 0.61 rad about the 3-axis
-        turn[:2, :2] = [[np.cos(0.61), -np.sin(0.61)], [np.sin(0.61), np.cos(0.61)]]
-        return turn @ array
-    pattern = np.linspace(0.31, 0.97, array.size).reshape(array.shape)
-    changed = array * 1.21 + pattern
-    return changed.tolist() if isinstance(value, list) else changed
+        return float(array) * c["a"] + c["b"]
+    if array.ndim == 1 and array.size >= GRID_ENTRIES and (np.all(np.diff(array) > 0) or np.all(np.diff(array) < 0)):
+        return None
+    n = array.shape[0]
+    if array.ndim == 2 and array.shape == (n, n) and n in (2, 3) and np.max(np.abs(array.T @ array - np.eye(n))) < 1e-6:
+        turn, (cos, sin) = np.eye(n), (np.cos(c["angle"]), np.sin(c["angle"]))
+        i, j = ((0, 1) if n == 2 else [k for k in range(3) if k != c["axis"]])
+        turn[[i, i, j, j], [i, j, i, j]] = [cos, -sin, sin, cos]
+        changed = turn @ array
+    elif array.ndim == 2 and array.shape == (n, n) and 1 < n <= 3 \
+            and np.allclose(array, array.T, rtol=0.0, atol=1e-12 * max(np.max(np.abs(array)), 1e-300)):
+        D = np.diag(np.sqrt(c["diagonal"][:n]))
+        changed = D @ array @ D
+    elif array.ndim == 1 and array.size > 1 and abs(np.linalg.norm(array) - 1.0) < 1e-9:
+        turn = np.linspace(0.2, 0.6, array.size) * (1.0 if change == 0 else -1.0)
+        changed = (array + turn) / np.linalg.norm(array + turn)  # a unit vector stays one
+    else:
+        changed = array * c["a"]
+    if not np.any(np.abs(changed - array) > 1e-12 * np.max(np.abs(array))):
+        return None
+    return changed.tolist() if isinstance(value, (list, tuple)) else changed
 
 
-def ignore_candidates(decl: Declaration, args) -> list:
-    """The arguments the test of an ignored argument changes: the first four declared numbers (angles and scalars:
-    a constant written in their place; a vector or a rotation that changes nothing points to a term left out,
-    which the other slips name)."""
-    return [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
-            if role in ("angle", "scalar") and len(path) == 1][:4]
+def changed_how(value) -> str:
+    """How ``perturbed`` changes a value, for the hint: "does" (a number), "turns" (a rotation, a direction) or
+    "is scaled" (any other array)."""
+    array = array_of(value)
+    if array is None or array.ndim == 0:
+        return "does"
+    n = array.shape[0]
+    if array.ndim == 2 and array.shape == (n, n) and n in (2, 3) and np.max(np.abs(array.T @ array - np.eye(n))) < 1e-6:
+        return "turns"
+    if array.ndim == 1 and array.size > 1 and abs(np.linalg.norm(array) - 1.0) < 1e-9:
+        return "turns"
+    if array.ndim == 2 and array.shape == (n, n) and 1 < n <= 3 \
+            and np.allclose(array, array.T, rtol=0.0, atol=1e-12 * max(np.max(np.abs(array)), 1e-300)):
+        return "does"
+    return "is scaled"
 
 
-def perturbations(decl: Declaration, args) -> list:
-    """The arguments of the test of an ignored argument, one changed at a time."""
-    if decl.motion:
+def ignore_candidates(decl: Declaration | None, args) -> list:
+    """``(path, role, value)``: the arguments the test of an ignored argument changes, at most
+    ``IGNORED_ARGUMENTS``: every declared angle, scalar, vector and rotation (a frame given by its rotation, a
+    mass, a start), or for a probe that declares none, every argument that is real numbers (``_numbers``: not a
+    count, a flag or a structure; role "")."""
+    if decl is not None and decl.args:
+        found = [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
+                 if role in IGNORED_ROLES]
+    else:
+        found = [((i,), "", value) for i, value in enumerate(args) if _numbers(value) is not None]
+    return [(path, role, value) for path, role, value in found if perturbed(value) is not None][:IGNORED_ARGUMENTS]
+
+
+def perturbations(decl: Declaration | None, args) -> list:
+    """The arguments of the test of an ignored argument, one changed at a time, by each of its two changes."""
+    if decl is not None and decl.motion:
         return []
     out = []
     for path, _, value in ignore_candidates(decl, args):
-        changed = perturbed(value)
-        if changed is not None:
-            out.append(replaced(tuple(args), path, changed))
+        for change in range(len(_CHANGES)):
+            changed = perturbed(value, change)
+            if changed is not None:
+                out.append(replaced(tuple(args), path, changed))
     return out
 
 
