@@ -69,6 +69,7 @@ __all__ = [
     "compare_mfg",
     "first_departure",
     "assert_run",
+    "assert_event_found",
     "run_figure",
     "run_array",
     "same_crossings",
@@ -401,6 +402,43 @@ def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", 
         mine_root, our_root = roots if roots is not None else (mine[key], expected[key])
         evidence = Evidence(mine[key], np.asarray(expected[key], dtype=float), tols[key], key, mine_root, our_root)
         raise CheckFailure(exc.message, hint, diagnosis, evidence=evidence) from None
+
+
+def assert_event_found(got, expected, event, keys, tols, what, message, hint):
+    """Where the run ``got`` has no ``event`` (None) and the reference's run ``expected`` has: a run that leaves
+    the reference's before the reference's event fails there, at the first output time where one of ``keys``
+    departs (``tols`` per key), with the whole runs as evidence for the diagnosis engine (the run never reaching
+    the event is then a symptom, and its cause is what differs: a start, a model); only a run that follows the
+    reference's up to its event and goes on without one has missed the event (``no_event``, ``message`` and
+    ``hint``)."""
+    if not isinstance(got, dict) or got.get(event) is not None:
+        return
+    t_event = float(expected[event])
+    t_ours = np.asarray(expected["t"], dtype=float)
+    t_mine = run_array(got, "t", None, what)
+    before = np.flatnonzero((t_ours < t_event - 1e-12) & (t_ours >= t_mine[0] - 1e-12) & (t_ours <= t_mine[-1] + 1e-12)) \
+        if t_mine.size > 1 and np.all(np.diff(t_mine) > 0) else np.zeros(0, dtype=int)
+    if before.size:
+        ours = {key: np.asarray(expected[key], dtype=float)[before] for key in keys}
+        mine = {}
+        for key in keys:
+            rows = run_array(got, key, (t_mine.size, ours[key].shape[1]), what)
+            mine[key] = np.column_stack([np.interp(t_ours[before], t_mine, rows[:, j]) for j in range(rows.shape[1])])
+        departures = [(i, k, key) for k, key in enumerate(keys)
+                      if (i := first_departure(mine[key], ours[key], tols[key])) is not None]
+        if departures:
+            i, _, key = min(departures)
+            t = t_ours[before][i]
+            try:
+                assert_close(mine[key][i], ours[key][i], f"{key} at t = {t:.6g} s", tols[key], context=f"({what})",
+                             note=f"{message} Your run leaves the reference's before its event, first at t = "
+                                  f"{t:.6g} s; up to there it agrees.")
+            except CheckFailure as exc:
+                from grader.diagnosis import Evidence
+
+                evidence = Evidence(mine[key], ours[key], tols[key], key, got, expected)
+                raise CheckFailure(exc.message, "", "", evidence=evidence) from None
+    fail(message, hint, "no_event")
 
 
 def subsample(t, y, n=250):

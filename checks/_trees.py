@@ -402,6 +402,29 @@ def _agrees_before(bodies, expected, k, quantity, tol):
     return True
 
 
+#: the quantities one function of a joint computes (its pose, its motion, its Jacobians): a mistaken recursion is
+#: named only where it gives the student's every quantity of the group that departs, in every body
+GROUPS = (probe_trees.POSE, probe_trees.MOTION[:4], probe_trees.MOTION[4:])
+
+
+def _reproduces(bodies, theirs, quantity, tol):
+    """True when the mistaken ``bodies`` give the student's bodies ``theirs`` in every quantity of the group of
+    ``quantity`` (``GROUPS``), not only in the one compared: a slip that gives one vector of the student's by
+    chance (a zero where the test case makes a term vanish) and another elsewhere is not the student's slip."""
+    group = next(g for g in GROUPS if quantity in g)
+    for mine, body in zip(bodies, theirs):
+        for name in group:
+            value = mine.get(name)
+            if value is None:
+                continue
+            try:
+                if not close(body.get(name), value, tol):
+                    return False
+            except Exception:  # noqa: BLE001 - a quantity that cannot be compared is not reproduced
+                return False
+    return True
+
+
 UNVISITED_HINT = (
     "The recursion must visit every child joint of every body: Body.forward_kinematics loops over ALL of "
     "self.child_joints and each joint recurses into its successor (Joint.forward_kinematics, problem 24). A return "
@@ -462,7 +485,8 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from
                 departed = True
                 continue
             found = [Mistake(m_name, state[k][quantity], m_hint)
-                     for m_name, m_hint, state in mistakes if _agrees_before(state, expected, k, quantity, tol)]
+                     for m_name, m_hint, state in mistakes
+                     if _agrees_before(state, expected, k, quantity, tol) and _reproduces(state, bodies, quantity, tol)]
             if quantity == "B_r_IB":
                 found.append(Mistake("wrong_frame", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],

@@ -30,7 +30,7 @@ from grader.checking import (
 )
 from probes import problem_37 as p37, problem_46 as p46
 
-from ._dynamics import assert_fresh_along_a_run, assert_run, run_array, same_crossings, subsample
+from ._dynamics import assert_event_found, assert_fresh_along_a_run, assert_run, run_array, same_crossings, subsample
 from ._effects import assert_no_side_effects, same, shown
 from ._real import rank_flaw, require_real
 from ._upstream import judging
@@ -325,11 +325,18 @@ def _violation(run, what):
     return t[after], np.linalg.norm(ANCHOR - x[after], axis=1) - WIRE_LENGTH
 
 
-def _event(got, what, expected=0.933):
-    if not isinstance(got, dict) or got.get("t_event") is None:
-        fail(f"{what}: no event, the wire never became taut (t_event is None); the reference's run hits it at "
-             f"t = {expected:.3f} s.", "The residual |anchor - I_r_E| - wire_length rises through zero: the event "
-             "needs direction = +1 (and terminal = True).", "no_event")
+def _event(got, what, expected):
+    """The student's event time; where their run has none, the first place it leaves the reference's run
+    ``expected`` before the reference's event is what differs (``assert_event_found``), and only a run that follows
+    the reference's there and never fires has missed the event."""
+    if not isinstance(got, dict):
+        fail(f"{what} returned no dict of the run.", "Return a dict with the keys named in the docstring.", "format")
+    assert_event_found(got, expected, "t_event", ("q", "qd"), BAND, what,
+                       f"{what}: no event, the wire never became taut (t_event is None); the reference's run hits it "
+                       f"at t = {float(expected['t_event']):.3f} s.",
+                       "Your run follows the reference's up to its event, yet no event fires: the residual |anchor - "
+                       "I_r_E| - wire_length rises through zero there, so the event needs direction = +1 (and "
+                       "terminal = True).")
     return float(got["t_event"])
 
 
@@ -350,7 +357,7 @@ def _aligned(got, expected, margin=0.01):
 def check_event_and_impact(ctx):
     got, expected = _run(ctx, True)
     what = "simulate(trajectory, baumgarte=True)"
-    t_event = _event(got, what)
+    t_event = _event(got, what, expected)
     assert_close(t_event, expected["t_event"], "t_event", EVENT_TIME, context=f"(a tight reference run; the sheet "
                  f"prints {SHEET_EVENT_TIME})", note=f"{ERRATUM} {BANDS_NOTE}")
     q_minus, q_plus = (as_array(got[key], key, (3,)) for key in ("q_minus", "q_plus"))
@@ -379,7 +386,7 @@ def _assert_other_wire(ctx):
     what = (f"simulate(trajectory, baumgarte=True, t_end={T_OTHER:g}, anchor={anchor.tolist()}, "
             f"wire_length={length:g})")
     got = ctx.student(p46.simulate, table, True, T_OTHER, OTHER_WIRE, timeout=SIMULATION_TIMEOUT)
-    t_event = _event(got, what, expected["t_event"])
+    t_event = _event(got, what, expected)
     assert_close(t_event, expected["t_event"], f"t_event of {what}", EVENT_TIME,
                  [Mistake("typed_numbers", SHEET_EVENT_TIME, TYPED_EVENT_HINT)],
                  context="(a tight reference run; a wire the sheet does not print)", note=BANDS_NOTE)
@@ -396,8 +403,8 @@ def check_constrained_motion(ctx):
     got, expected = _run(ctx, True)
     plain, plain_expected = _run(ctx, False)
     what = "simulate(trajectory, baumgarte=True)"
-    _event(got, what)
-    _event(plain, "simulate(trajectory, baumgarte=False)")
+    _event(got, what, expected)
+    _event(plain, "simulate(trajectory, baumgarte=False)", plain_expected)
     curves = {}
     for label, run in (("with Baumgarte", got), ("without", plain)):
         curves[label] = _violation(run, label)
