@@ -416,8 +416,10 @@ def assert_event_found(got, expected, event, keys, tols, what, message, hint):
     t_event = float(expected[event])
     t_ours = np.asarray(expected["t"], dtype=float)
     t_mine = run_array(got, "t", None, what)
-    before = np.flatnonzero((t_ours < t_event - 1e-12) & (t_ours >= t_mine[0] - 1e-12) & (t_ours <= t_mine[-1] + 1e-12)) \
-        if t_mine.size > 1 and np.all(np.diff(t_mine) > 0) else np.zeros(0, dtype=int)
+    before = np.zeros(0, dtype=int)
+    if t_mine.size > 1 and np.all(np.diff(t_mine) > 0):
+        before = np.flatnonzero((t_ours < t_event - 1e-12) & (t_ours >= t_mine[0] - 1e-12)
+                                & (t_ours <= t_mine[-1] + 1e-12))
     if before.size:
         ours = {key: np.asarray(expected[key], dtype=float)[before] for key in keys}
         mine = {}

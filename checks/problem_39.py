@@ -8,7 +8,18 @@ gravity is the gyroscopic moment ``omega x (I2 omega)``.
 import numpy as np
 
 from grader import strategies as st
-from grader.checking import EXACT, STAGE_RANDOM, STAGE_VALUES, Mistake, Tol, assert_close, check, close, fail
+from grader.checking import (
+    EXACT,
+    STAGE_RANDOM,
+    STAGE_VALUES,
+    Mistake,
+    Tol,
+    assert_close,
+    assert_close_each,
+    check,
+    close,
+    fail,
+)
 from probes import problem_39 as p39
 
 TITLE = "Turbine"
@@ -134,14 +145,19 @@ def _force_mistakes(I2, omega, m, g, d, expected):
     ]
 
 
-def _assert_forces(got, expected, args, tol, context="", extra=()):
-    """``[F1, F2]`` (rows) against the expected forces, with the known mistakes of the pair (and ``extra``)."""
+def _force_case(got, expected, args, tol, context="", extra=()):
+    """The comparison of ``[F1, F2]`` (rows) with the expected forces, with the known mistakes of the pair (and
+    ``extra``), as ``assert_close_each`` takes it."""
     if not isinstance(got, list) or len(got) != 2:
         fail(f"bearing_forces must return the two forces (F1, F2), got {str(got)[:200]}", diagnosis="format")
     found = [*extra, *(Mistake(mistake, np.array(value), hint)
                        for mistake, value, hint in _force_mistakes(*args, expected))]
-    assert_close(np.array(got, dtype=float), np.array(expected), "(F1, F2) (one force per row)", tol, found,
-                 context=context)
+    return np.array(got, dtype=float), np.array(expected), "(F1, F2) (one force per row)", tol, found, context
+
+
+def _assert_forces(got, expected, args, tol, context="", extra=()):
+    """``[F1, F2]`` (rows) against the expected forces, with the known mistakes of the pair (and ``extra``)."""
+    assert_close_each([_force_case(got, expected, args, tol, context, extra)])
 
 
 def _own_rotor(rng):
@@ -156,18 +172,19 @@ def _own_rotor(rng):
        stage=STAGE_VALUES, group="forces")
 def check_bearing_forces(ctx):
     args = (I2_SHEET, OMEGA, MASS, GRAVITY, DISTANCE)
-    got = ctx.student(p39.bearing_forces, *args)
-    _assert_forces(got, [F1_SHEET, F2_SHEET], args, FORCES, "(the sheet's model answer)")
+    cases = [_force_case(ctx.student(p39.bearing_forces, *args), [F1_SHEET, F2_SHEET], args, FORCES,
+                         "(the sheet's model answer)")]
     expected = ctx.reference(p39.bearing_forces, *OTHER_ROTOR)
-    _assert_forces(ctx.student(p39.bearing_forces, *OTHER_ROTOR), expected, OTHER_ROTOR, EXACT,
-                   "(a rotor the sheet does not print, against the reference)",
-                   [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
+    cases.append(_force_case(ctx.student(p39.bearing_forces, *OTHER_ROTOR), expected, OTHER_ROTOR, EXACT,
+                             "(a rotor the sheet does not print, against the reference)",
+                             [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)]))
     I2, *rest = ctx.draw(_own_rotor)
     rotor = (np.array(I2), *rest)
     expected = ctx.reference(p39.bearing_forces, *rotor)
-    _assert_forces(ctx.student(p39.bearing_forces, *rotor), expected, rotor, EXACT,
-                   f"(a rotor of its own, omega = {rest[0]:.4g} rad/s, m = {rest[1]:.4g} kg, against the reference)",
-                   [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)])
+    cases.append(_force_case(ctx.student(p39.bearing_forces, *rotor), expected, rotor, EXACT,
+                             f"(a rotor of its own, omega = {rest[0]:.4g} rad/s, m = {rest[1]:.4g} kg, against the "
+                             "reference)", [Mistake("typed_numbers", np.array([F1_SHEET, F2_SHEET]), TYPED_HINT)]))
+    assert_close_each(cases)  # a known mistake is named where it gives the student's forces on every rotor
 
 
 @st.composite

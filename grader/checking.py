@@ -45,6 +45,7 @@ __all__ = [
     "fail",
     "as_array",
     "assert_close",
+    "assert_close_each",
     "assert_rotation",
     "close",
     "format_array",
@@ -382,6 +383,41 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
 
     raise CheckFailure("\n".join(lines), hint, diagnosis, matches if mistakes else None,
                        Evidence(got, expected, tol, name, raw_got, raw_expected))
+
+
+def assert_close_each(cases) -> None:
+    """Compare the ``cases`` of one check, each ``(got, expected, name, tol, mistakes, context)`` as ``assert_close``
+    takes them, and fail at the first that does not match.  A known mistake is named only where it reproduces the
+    student's answer on every case compared, not on the first alone (a slip that a special input, such as the
+    sheet's, makes give the student's value by chance): on each later case that fails, a mistake of that name
+    must match again, and on each that passes, the mistake of that name, where the case lists one, must give the
+    expected value too.  Where no known mistake holds on every case, the failure names none (and the diagnosis
+    engine may)."""
+    first, results = None, []
+    for got, expected, name, tol, mistakes, context in cases:
+        try:
+            assert_close(got, expected, name, tol, mistakes, context=context)
+        except CheckFailure as exc:
+            first = exc if first is None else first
+            results.append((exc, list(mistakes or ()), expected, tol))
+        else:
+            results.append((None, list(mistakes or ()), expected, tol))
+    if first is None:
+        return
+    kept = tuple(mistake for mistake in first.candidates or () if all(
+        _holds(mistake.name, failure, mistakes, expected, tol) for failure, mistakes, expected, tol in results))
+    if first.candidates is None or len(kept) == len(first.candidates):
+        raise first
+    hint, diagnosis = diagnose(kept)
+    raise CheckFailure(first.message, hint, diagnosis, kept, first.evidence)
+
+
+def _holds(name: str, failure, mistakes: list, expected, tol: Tol) -> bool:
+    """A known mistake named ``name`` is consistent with one case: it matches the student's value where the case
+    failed, and gives the expected value where the case passed (or the case lists no mistake of that name)."""
+    if failure is not None:
+        return any(m.name == name for m in failure.candidates or ())
+    return all(_matches(np.asarray(expected, dtype=float), m, tol) for m in mistakes if m.name == name)
 
 
 def _engine() -> bool:

@@ -9,7 +9,8 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
 
 * ``args``: a role per argument (nested like the argument for a dict or a tuple; "" for none): ``"angle"`` (a
   scalar in radians), ``"angles"`` (an array of them), ``"vector"``, ``"rotation"`` (a rotation matrix),
-  ``"scalar"`` (a number such as a mass or a length), ``"matrix"``, ``"step"`` and ``"count"``;
+  ``"scalar"`` (a number such as a mass or a length), ``"inertia"`` (a symmetric positive definite matrix, drawn
+  with other moments about other axes), ``"matrix"``, ``"step"`` and ``"count"``;
 * ``rotation``: the argument (an index, or a path ``(index, key)``) that holds the problem's rotation, to try the
   result and the vector arguments in the other frame;
 * ``terms``: the probe (same arguments, run on the reference) that splits the result into named terms:

@@ -19,7 +19,7 @@ def inertia_misaligned(pkg, I1, alpha):
 @probe(
     returns=Tup(Arr(3), Arr(3)),
     says="bearing_forces(I2, {1}, {2}, {3}, {4})",
-    args=("", "scalar", "scalar", "scalar", "scalar"),
+    args=("inertia", "scalar", "scalar", "scalar", "scalar"),
 )
 def bearing_forces(pkg, I2, omega, m, g, d):
     """``[F1, F2]`` of ``bearing_forces(I2, omega, m, g, d)``."""

@@ -47,7 +47,7 @@ The grammar:
   problem's rotation);
 * inputs (the reference on transformed arguments): arguments swapped, angles as degrees, negated angles, a
   rotation argument transposed, a vector argument in the other frame, an argument ignored (the student's value
-  does not change when it does, under two independent changes of it, on both inputs where there are two, while the
+  does not change when it does, on the input shown and on one with every argument moved at once, while the
   reference's does: a value that does not follow an argument at all is the finding, not a guess);
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;

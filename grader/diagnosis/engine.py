@@ -33,6 +33,7 @@ from .evidence import (
 )
 from .grammar import (
     changed_how,
+    moved,
     ignore_candidates,
     input_slips,
     label_of,
@@ -309,13 +310,14 @@ def _testable(evidence: Evidence) -> bool:
     return evidence.got.size > 0 and distinct(evidence.got, np.zeros_like(evidence.got), evidence.tol)
 
 
-def _unchanged(scene: Scene, evidence: Evidence, path, change: int) -> bool | None:
-    """Whether the student's value stays what it is when the argument at ``path`` takes another value (the
-    ``change``-th of ``grammar.perturbed``); None where that tells nothing: the argument cannot be changed, the
-    reference's value does not change with it (no sensitivity), or either side refuses the changed input."""
-    source, student = evidence.source, evidence.student
+def _unchanged(scene: Scene, at_input: Evidence, path) -> bool | None:
+    """Whether the student's value stays what it is on ``at_input`` (a comparison: its arguments, the student's
+    value and the reference's) when the argument at ``path`` takes another value (``grammar.perturbed``); None
+    where that tells nothing: the argument cannot be changed, the reference's value does not change with it (no
+    sensitivity), or either side refuses the changed input."""
+    source, student = at_input.source, at_input.student
     try:
-        changed = perturbed(at(list(source.args), path), change)
+        changed = perturbed(at(list(source.args), path))
     except (IndexError, KeyError, TypeError):
         return None
     if changed is None:
@@ -325,32 +327,52 @@ def _unchanged(scene: Scene, evidence: Evidence, path, change: int) -> bool | No
         theirs = array_of(at(scene.reference(source.probe, args), source.path))
     except GraderFault:
         return None
-    if theirs is None or theirs.shape != evidence.expected.shape \
-            or not distinct(theirs, evidence.expected, evidence.tol):
+    if theirs is None or theirs.shape != at_input.expected.shape \
+            or not distinct(theirs, at_input.expected, at_input.tol):
         return None
     try:
         other = array_of(at(scene.student(source.probe, args), student.path))
     except StudentFault:
         return None
-    if other is None or other.shape != evidence.got.shape:
+    if other is None or other.shape != at_input.got.shape:
         return None
-    return within(other, evidence.got, evidence.tol)
+    return within(other, at_input.got, at_input.tol)
+
+
+def _moved_input(scene: Scene, evidence: Evidence, decl: Declaration | None) -> Evidence | None:
+    """The comparison on ``evidence``'s input with every argument moved at once (``grammar.moved``): the
+    student's value there and the reference's, or None (nothing to move, a side refuses it, or a value of zero)."""
+    source, student = evidence.source, evidence.student
+    args = moved(decl, source.args)
+    if args is None:
+        return None
+    try:
+        expected = array_of(at(scene.reference(source.probe, args), source.path))
+        got = array_of(at(scene.student(source.probe, args), student.path))
+    except (GraderFault, StudentFault):
+        return None
+    if expected is None or got is None or got.shape != expected.shape \
+            or not distinct(got, np.zeros_like(got), evidence.tol):
+        return None
+    return Evidence(got, expected, evidence.tol, evidence.name, None, None,
+                    Source(source.probe, args, source.path, None), Source(source.probe, args, student.path, None))
 
 
 #: the student's calls the test of an ignored argument may make, at most (one per argument the reference's value
-#: follows, and one more for each that the student's does not): it is heard beside every other tier, and the
-#: formula tier's third input still needs one of the explanation's ``MAX_STUDENT_CALLS``
+#: follows, one for the input with every argument moved, and one more for each argument that the student's value
+#: does not follow): it is heard beside every other tier, and the formula tier's third input still needs one of
+#: the explanation's ``MAX_STUDENT_CALLS``
 IGNORED_CALLS = 5
 
 
 def _ignored(scene: Scene, evidences: list) -> list:
     """The arguments the student's function ignores: where the reference's value changes with an argument, the
-    student's stays the same, under two independent changes of it (``grammar.perturbed``), the second on the
-    second input where there is one (else on the input shown).  A value unchanged by chance (a factor that
-    vanishes on one input, a change that happens to leave it) does not survive both; a value that does not change
-    with an argument at all is the finding itself, not a guess.  Every declared angle, scalar, vector and rotation
-    is changed (for a probe that declares none, every argument that is real numbers); where every argument the
-    reference follows is ignored, the answer is constant."""
+    student's stays the same, on the input shown and again on an input where every argument is moved at once
+    (``grammar.moved``, from the second input where there is one): a value unchanged by chance (a zero among the
+    other arguments, an axis the input's inertia happens to keep) does not survive the move.  A value that does
+    not follow an argument at all is the finding itself, not a guess.  Every declared angle, scalar, vector and
+    rotation is changed, and every other argument of real numbers; where every argument the reference follows is
+    ignored, the answer is constant."""
     first = evidences[0]
     if not _testable(first):
         trace.note("ignored", reason="not testable")
@@ -360,22 +382,24 @@ def _ignored(scene: Scene, evidences: list) -> list:
         and evidences[1].source.probe == first.source.probe else None
     leaves = ignore_candidates(decl, first.source.args)
     budget = scene.student_calls + min(IGNORED_CALLS, MAX_STUDENT_CALLS - 1 - scene.student_calls)
-    found, followed, complete = [], [], True
+    found, followed, complete, shifted = [], [], True, False
     for path, _, value in leaves:
-        if scene.student_calls + 2 > budget:  # an argument tested is changed twice where it is ignored
+        if scene.student_calls + (2 if shifted else 3) > budget:  # an argument ignored is tested on both inputs
             complete = False
             break
-        unchanged = _unchanged(scene, first, path, 0)
+        unchanged = _unchanged(scene, first, path)
         if unchanged is None:
             continue
         followed.append(path)
         if not unchanged:
             continue
-        if _unchanged(scene, second if second is not None else first, path, 1):
-            where = "on both inputs" if second is not None else "under two changes of it"
+        if shifted is False:
+            shifted = _moved_input(scene, second if second is not None else first, decl)
+        if shifted is not None and _unchanged(scene, shifted, path):
             found.append(Hypothesis(f"ignored:{path}", "ignored_argument", 3,
                                     f"your value does not change when {_label(decl, path)} {changed_how(value)} "
-                                    f"({where}), while the expected one does: the function ignores it"))
+                                    "(on the input shown and on one with every argument changed), while the "
+                                    "expected one does: the function ignores it"))
     trace.note("ignored", arguments=len(leaves), followed=len(followed), found=[h.key for h in found],
                complete=complete)
     if complete and len(followed) > 1 and len(found) == len(followed):  # nothing changes it: no use of the input

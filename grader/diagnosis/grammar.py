@@ -30,6 +30,7 @@ __all__ = [
     "input_slips",
     "perturbed",
     "changed_how",
+    "moved",
     "IGNORED_ARGUMENTS",
     "IGNORED_ROLES",
     "ignore_candidates",
@@ -347,43 +348,66 @@ def input_slips(decl: Declaration, args: tuple) -> list:
 #: none, numeric arguments), in the order of the call
 IGNORED_ARGUMENTS = 6
 #: the roles of declared arguments that the test of an ignored argument changes
-IGNORED_ROLES = ("angle", "angles", "scalar", "vector", "rotation")
+IGNORED_ROLES = ("angle", "angles", "scalar", "vector", "rotation", "inertia")
 #: the two changes of the test of an ignored argument, independent of each other: a number ``x`` becomes
-#: ``a x + b`` (a positive number stays positive, a zero changes), a rotation is turned by ``angle`` about an axis,
-#: a symmetric matrix is changed by a congruence with the positive diagonal ``diagonal`` (definite where it was),
-#: any other array is scaled by ``a`` (a direction, the signs and the ratios of its entries kept: masses stay
-#: positive, their centre stays where it is)
+#: ``a x + b`` (a positive number stays positive, a zero changes), a rotation or a symmetric matrix is turned by
+#: ``angle`` about the oblique ``axis`` (``R A`` and ``R A R.T``: a rotation stays one, an inertia keeps its
+#: moments and loses its zeros), a unit vector is turned, any other array is scaled by ``a`` (its direction, signs
+#: and ratios kept: masses stay positive, their centre where it is), or, where every argument is moved at once,
+#: ``a x + b p`` with ``p`` a pattern of one sign (its zeros moved as well)
 _CHANGES = (
-    {"a": 1.37, "b": 0.29, "axis": 2, "angle": 0.61, "diagonal": (1.3, 0.8, 1.15)},
-    {"a": 0.71, "b": 0.17, "axis": 0, "angle": -0.47, "diagonal": (0.85, 1.25, 0.7)},
+    {"a": 1.37, "b": 0.29, "axis": (1.0, 2.0, 3.0), "angle": 0.61, "pattern": (0.31, 0.97)},
+    {"a": 0.71, "b": 0.17, "axis": (3.0, -1.0, 2.0), "angle": -0.47, "pattern": (0.83, 0.23)},
 )
 
 
-def perturbed(value, change: int = 0):
+def _oblique(n: int, change: dict) -> np.ndarray:
+    c, s = np.cos(change["angle"]), np.sin(change["angle"])
+    if n == 2:
+        return np.array([[c, -s], [s, c]])
+    axis = np.asarray(change["axis"]) / np.linalg.norm(change["axis"])
+    K = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
+    return np.eye(3) + s * K + (1.0 - c) * K @ K
+
+
+def _kind(array: np.ndarray) -> str:
+    """What ``perturbed`` keeps an array: "rotation", "symmetric", "unit", "grid" or "array"."""
+    n = array.shape[0] if array.ndim else 0
+    if array.ndim == 2 and array.shape == (n, n) and n in (2, 3):
+        if np.max(np.abs(array.T @ array - np.eye(n))) < 1e-6:
+            return "rotation"
+        if np.allclose(array, array.T, rtol=0.0, atol=1e-12 * max(np.max(np.abs(array)), 1e-300)):
+            return "symmetric"
+    if array.ndim == 1 and array.size >= GRID_ENTRIES and (np.all(np.diff(array) > 0) or np.all(np.diff(array) < 0)):
+        return "grid"
+    if array.ndim == 1 and array.size > 1 and abs(np.linalg.norm(array) - 1.0) < 1e-9:
+        return "unit"
+    return "array"
+
+
+def perturbed(value, change: int = 0, move: bool = False):
     """Another value of an argument, of the same kind (for the test of an ignored argument): the ``change``-th of
-    two independent changes (``_CHANGES``); None for a value that is not numbers, a table, a grid (times), or a
-    value the change leaves as it is (zeros)."""
+    two independent changes (``_CHANGES``; ``move``: an array's zeros moved too, where every argument is moved);
+    None for a value that is not numbers, a table, a grid (times), or a value the change leaves as it is."""
     array = array_of(value)
     if array is None or array.size == 0 or array.size > DRAWN_ENTRIES or not np.all(np.isfinite(array)):
         return None
     c = _CHANGES[change]
     if array.ndim == 0:
         return float(array) * c["a"] + c["b"]
-    if array.ndim == 1 and array.size >= GRID_ENTRIES and (np.all(np.diff(array) > 0) or np.all(np.diff(array) < 0)):
+    kind = _kind(array)
+    if kind == "grid":
         return None
-    n = array.shape[0]
-    if array.ndim == 2 and array.shape == (n, n) and n in (2, 3) and np.max(np.abs(array.T @ array - np.eye(n))) < 1e-6:
-        turn, (cos, sin) = np.eye(n), (np.cos(c["angle"]), np.sin(c["angle"]))
-        i, j = ((0, 1) if n == 2 else [k for k in range(3) if k != c["axis"]])
-        turn[[i, i, j, j], [i, j, i, j]] = [cos, -sin, sin, cos]
-        changed = turn @ array
-    elif array.ndim == 2 and array.shape == (n, n) and 1 < n <= 3 \
-            and np.allclose(array, array.T, rtol=0.0, atol=1e-12 * max(np.max(np.abs(array)), 1e-300)):
-        D = np.diag(np.sqrt(c["diagonal"][:n]))
-        changed = D @ array @ D
-    elif array.ndim == 1 and array.size > 1 and abs(np.linalg.norm(array) - 1.0) < 1e-9:
+    if kind == "rotation":
+        changed = _oblique(array.shape[0], c) @ array
+    elif kind == "symmetric":
+        R = _oblique(array.shape[0], c)
+        changed = R @ array @ R.T
+    elif kind == "unit":
         turn = np.linspace(0.2, 0.6, array.size) * (1.0 if change == 0 else -1.0)
         changed = (array + turn) / np.linalg.norm(array + turn)  # a unit vector stays one
+    elif move:
+        changed = array * c["a"] + c["b"] * np.linspace(*c["pattern"], array.size).reshape(array.shape)
     else:
         changed = array * c["a"]
     if not np.any(np.abs(changed - array) > 1e-12 * np.max(np.abs(array))):
@@ -392,45 +416,57 @@ def perturbed(value, change: int = 0):
 
 
 def changed_how(value) -> str:
-    """How ``perturbed`` changes a value, for the hint: "does" (a number), "turns" (a rotation, a direction) or
-    "is scaled" (any other array)."""
+    """How ``perturbed`` changes a value, for the hint: "does" (a number, a symmetric matrix), "turns" (a rotation,
+    a direction) or "is scaled" (any other array)."""
     array = array_of(value)
     if array is None or array.ndim == 0:
         return "does"
-    n = array.shape[0]
-    if array.ndim == 2 and array.shape == (n, n) and n in (2, 3) and np.max(np.abs(array.T @ array - np.eye(n))) < 1e-6:
-        return "turns"
-    if array.ndim == 1 and array.size > 1 and abs(np.linalg.norm(array) - 1.0) < 1e-9:
-        return "turns"
-    if array.ndim == 2 and array.shape == (n, n) and 1 < n <= 3 \
-            and np.allclose(array, array.T, rtol=0.0, atol=1e-12 * max(np.max(np.abs(array)), 1e-300)):
-        return "does"
-    return "is scaled"
+    return {"rotation": "turns", "unit": "turns", "array": "is scaled"}.get(_kind(array), "does")
 
 
 def ignore_candidates(decl: Declaration | None, args) -> list:
     """``(path, role, value)``: the arguments the test of an ignored argument changes, at most
     ``IGNORED_ARGUMENTS``: every declared angle, scalar, vector and rotation (a frame given by its rotation, a
-    mass, a start), or for a probe that declares none, every argument that is real numbers (``_numbers``: not a
-    count, a flag or a structure; role "")."""
-    if decl is not None and decl.args:
-        found = [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
-                 if role in IGNORED_ROLES]
-    else:
-        found = [((i,), "", value) for i, value in enumerate(args) if _numbers(value) is not None]
+    mass, a start), and every other argument that is real numbers (``_numbers``: not a count, a flag or a
+    structure; role "")."""
+    declared = [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
+                if role in IGNORED_ROLES] if decl is not None and decl.args else []
+    taken = {path[0] for path, _, _ in leaves_of(decl.args, list(args))} if decl is not None and decl.args else set()
+    found = declared + [((i,), "", value) for i, value in enumerate(args)
+                        if i not in taken and _numbers(value) is not None]
+    found.sort(key=lambda leaf: leaf[0])
     return [(path, role, value) for path, role, value in found if perturbed(value) is not None][:IGNORED_ARGUMENTS]
 
 
+def moved(decl: Declaration | None, args) -> tuple | None:
+    """``args`` with every argument of the test of an ignored argument changed at once (the second change, zeros
+    moved): an input where nothing of the shown one's special values is left (a zero that makes a term vanish, an
+    axis an inertia happens to keep); None where nothing changes."""
+    out, changed = tuple(args), False
+    for path, _, value in ignore_candidates(decl, args):
+        new = perturbed(value, 1, move=True)
+        if new is not None:
+            out, changed = replaced(out, path, new), True
+    return out if changed else None
+
+
 def perturbations(decl: Declaration | None, args) -> list:
-    """The arguments of the test of an ignored argument, one changed at a time, by each of its two changes."""
+    """The arguments of the test of an ignored argument: each changed alone on ``args``, every one moved at once
+    (``moved``), and each changed again on the moved input."""
     if decl is not None and decl.motion:
         return []
     out = []
     for path, _, value in ignore_candidates(decl, args):
-        for change in range(len(_CHANGES)):
-            changed = perturbed(value, change)
+        changed = perturbed(value)
+        if changed is not None:
+            out.append(replaced(tuple(args), path, changed))
+    base = moved(decl, args)
+    if base is not None:
+        out.append(base)
+        for path, _, value in ignore_candidates(decl, base):
+            changed = perturbed(value)
             if changed is not None:
-                out.append(replaced(tuple(args), path, changed))
+                out.append(replaced(base, path, changed))
     return out
 
 
@@ -453,6 +489,12 @@ def _draw_leaf(role, value, rng):
         return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
                          [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
                          [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    if role == "inertia" and array.ndim == 2 and array.shape[0] == array.shape[1] in (2, 3):
+        n = array.shape[0]
+        scale = max(float(np.trace(array)) / n, 1e-12)  # the size of its moments, kept
+        moments = scale * rng.uniform(0.5, 1.5, n)
+        R = _turn(rng, n)
+        return R @ np.diag(moments) @ R.T  # symmetric, definite, its axes other than the shown one's
     if role == "scalar":
         scale = max(abs(float(array.ravel()[0])), 0.1) if array.size else 1.0
         drawn = array * rng.uniform(0.6, 1.6, array.shape) if array.ndim else float(scale * rng.uniform(0.6, 1.6))
@@ -461,12 +503,12 @@ def _draw_leaf(role, value, rng):
 
 
 def redraw(decl: Declaration, args: tuple, seed_words) -> tuple | None:
-    """A second input like ``args`` with every declared angle, vector, rotation and scalar drawn anew (None when
-    the probe declares nothing to draw)."""
+    """A second input like ``args`` with every declared angle, vector, rotation, inertia and scalar drawn anew (None
+    when the probe declares nothing to draw)."""
     if not decl.draw:
         return None
     leaves = [(path, role, value) for path, role, value in leaves_of(decl.args, list(args))
-              if role in ("angle", "angles", "vector", "rotation", "scalar")]
+              if role in ("angle", "angles", "vector", "rotation", "scalar", "inertia")]
     if not leaves:
         return None
     rng = np.random.default_rng(seed_words)
