@@ -402,15 +402,24 @@ def _agrees_before(bodies, expected, k, quantity, tol):
     return True
 
 
-#: the quantities one function of a joint computes (its pose, its motion, its Jacobians): a mistaken recursion is
-#: named only where it gives the student's every quantity of the group that departs, in every body
+#: the quantities one function of a joint computes (its pose, its motion, its Jacobians): a mistaken recursion
+#: whose value vanishes where the student's does is named only where it gives the student's every quantity of that
+#: group, in every body
 GROUPS = (probe_trees.POSE, probe_trees.MOTION[:4], probe_trees.MOTION[4:])
+
+
+def _vanishes(value, tol):
+    """A mistaken value of zeros: the test case makes the slip's term vanish, and many slips give it alike."""
+    try:
+        return close(value, np.zeros_like(np.asarray(value, dtype=float)), tol)
+    except Exception:  # noqa: BLE001 - a value that cannot be compared is no zero
+        return False
 
 
 def _reproduces(bodies, theirs, quantity, tol):
     """True when the mistaken ``bodies`` give the student's bodies ``theirs`` in every quantity of the group of
-    ``quantity`` (``GROUPS``), not only in the one compared: a slip that gives one vector of the student's by
-    chance (a zero where the test case makes a term vanish) and another elsewhere is not the student's slip."""
+    ``quantity`` (``GROUPS``), not only in the one compared: a slip that gives a zero of the student's by the test
+    case's chance (a term that vanishes there) and another value elsewhere is not the student's slip."""
     group = next(g for g in GROUPS if quantity in g)
     for mine, body in zip(bodies, theirs):
         for name in group:
@@ -486,7 +495,8 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from
                 continue
             found = [Mistake(m_name, state[k][quantity], m_hint)
                      for m_name, m_hint, state in mistakes
-                     if _agrees_before(state, expected, k, quantity, tol) and _reproduces(state, bodies, quantity, tol)]
+                     if _agrees_before(state, expected, k, quantity, tol)
+                     and (not _vanishes(state[k][quantity], tol) or _reproduces(state, bodies, quantity, tol))]
             if quantity == "B_r_IB":
                 found.append(Mistake("wrong_frame", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],

@@ -396,7 +396,8 @@ def _ignored(scene: Scene, evidences: list) -> list:
         if shifted is False:
             shifted = _moved_input(scene, second if second is not None else first, decl)
         if shifted is not None and _unchanged(scene, shifted, path):
-            found.append(Hypothesis(f"ignored:{path}", "ignored_argument", 3,
+            key = f"{IGNORED_KEYS[0] if array_of(value).ndim == 0 else IGNORED_ARRAY}{path}"
+            found.append(Hypothesis(key, "ignored_argument", 3,
                                     f"your value does not change when {_label(decl, path)} {changed_how(value)} "
                                     "(on the input shown and on one with every argument changed), while the "
                                     "expected one does: the function ignores it"))
@@ -499,9 +500,20 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
                                                lambda: _second_input(scene, evidences[-1]), told),
                           any(tiers), "formulas")
         if not formulas and left_to_live(scene, evidences):
+            tiers = _beside(tiers)
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)
-    return _told(tiers, _where(evidences))
+    return _told(_beside(tiers), _where(evidences))
+
+
+def _beside(tiers: list) -> list:
+    """The tiers, where a value that does not follow an array argument (a vector, a rotation, masses) is told only
+    beside another tier's explanation: alone it may be a term left out that carried all of the value's dependence
+    on that argument (a rolling joint's translation left out leaves a velocity that no angle changes), which is no
+    argument ignored; a number ignored, or every argument (a constant answer), is told alone as well."""
+    if any(tier for tier in tiers if not any(h.key.startswith(IGNORED_KEYS) for h in tier)):
+        return tiers
+    return [[h for h in tier if not h.key.startswith(IGNORED_ARRAY)] for tier in tiers]
 
 
 def _where(evidences: list) -> str:
@@ -520,6 +532,9 @@ def _left_to_live(finding: Finding | None) -> Finding:
 
 #: the keys of the input tier's hypotheses (``grammar.input_slips``): the reference on transformed arguments
 INPUT_KEYS = "in:"
+#: the keys of the test of an ignored argument: a number ignored (or every argument), an array ignored
+IGNORED_ARRAY = "ignored-array:"
+IGNORED_KEYS = ("ignored:", IGNORED_ARRAY)
 
 
 def _heard(ask, explained: bool, tier: str) -> list:

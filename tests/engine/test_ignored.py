@@ -1,0 +1,163 @@
+"""The test of an ignored argument is a rival heard beside every other tier, and it guesses nothing.
+
+* It changes every declared angle, scalar, vector and rotation, and every other argument of real numbers (a
+  probe that declares nothing included): a frame given by its rotation, masses, a vector.
+* An argument is told ignored only where the reference's value follows it and the student's stays the same, on
+  the input shown and again on an input where every argument is moved at once (``grammar.moved``): a value left
+  unchanged by a special input (a vector parallel to another, an axis an inertia keeps) is not.
+* Heard beside the other tiers: a slip that another tier reproduces as well is told "could be X or
+  ignored_argument".
+
+Graded as ``grade batch`` grades (a warm fork), live and from the kit's answer key; the stand-ins below show the
+rule on values the test controls.
+"""
+
+import numpy as np
+import pytest
+
+import grader.diagnosis as engine
+from grader.checking import Tol
+from grader.diagnosis import Declaration, Evidence, explain
+from grader.diagnosis.grammar import ignore_candidates, moved, perturbed
+
+from tests.kit_support import (  # noqa: F401 (fixtures)
+    assert_named_failure,
+    assert_same_verdicts,
+    grade_live_and_kit,
+    warm_slot,
+)
+from tests.submissions import Planted, build_planted
+
+#: problem 7's body angular velocity with A_CI left out, unskew(dA_IC): the value does not follow the rotation A_IC
+#: (the test of an ignored argument turns it), and the formula tier reproduces it with a factor left out
+OMEGA_WITHOUT_ROTATION = Planted(
+    name="ignored-p07-omega-body-without-rotation", problem=7, file="rotations.py",
+    old="    return unskew(np.asarray(A_IC).T @ np.asarray(dA_IC))", new="    return unskew(np.asarray(dA_IC))",
+    check="p07.omega_body", diagnosis="ignored_argument or missing_factor", message="when A turns")
+
+MISTAKES = [OMEGA_WITHOUT_ROTATION]
+
+
+@pytest.fixture(autouse=True)
+def strict(monkeypatch):
+    """A defect of the engine fails the test instead of naming no cause."""
+    monkeypatch.setattr(engine, "STRICT", True)
+
+
+@pytest.fixture(scope="module")
+def slot():
+    yield from warm_slot(sorted({m.problem for m in MISTAKES}))
+
+
+@pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
+def test_an_ignored_rotation_is_told_beside_its_rival(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    assert_named_failure(mistake, live)
+
+
+# ------------------------------------------------------------------------------------------ the changes
+
+
+def test_the_changes_keep_what_an_argument_is():
+    A = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    I = np.diag([1.0, 2.0, 3.0])
+    masses = [1.0, 3.0, 0.5]
+    for change in (0, 1):
+        turned = perturbed(A, change)
+        assert np.allclose(turned.T @ turned, np.eye(3)) and np.isclose(np.linalg.det(turned), 1.0)
+        inertia = perturbed(I, change)
+        assert np.allclose(inertia, inertia.T) and np.allclose(np.linalg.eigvalsh(inertia), [1.0, 2.0, 3.0])
+        assert abs(inertia[0, 2]) > 1e-3  # its axes moved: no zero of the one shown is left
+        assert all(m > 0 for m in perturbed(masses, change))
+        assert perturbed(1.5, change) != 1.5 and perturbed(0.0, change) != 0.0
+    assert perturbed(np.linspace(0.0, 1.0, 20)) is None  # a grid of times is not changed
+    assert perturbed(np.zeros(3)) is None  # nor a value no scale changes
+
+
+def test_every_argument_of_real_numbers_is_a_candidate():
+    decl = Declaration(args=("rotation", "", ""), names=("A", "table", "n"))
+    args = (np.eye(3), [[0.5, 1.5], [2.0, 0.25]], 3)
+    assert [leaf[0] for leaf in ignore_candidates(decl, args)] == [(0,), (1,)]
+    assert [leaf[0] for leaf in ignore_candidates(None, ([1.0, 2.0], "text", 4))] == [(0,)]
+    shifted = moved(decl, args)
+    assert not np.allclose(shifted[0], args[0]) and shifted[2] == 3
+
+
+# ------------------------------------------------------------------------------------------ stand-ins
+
+TIGHT = Tol("tight", 1e-9, 1e-9)
+
+
+class _Oracle:
+    mode = "live"
+
+    def __init__(self, functions):
+        self.functions = functions
+
+    def reference(self, probe, args, persist=False, check=None):
+        return self.functions[probe](*args)
+
+    def draw(self, site, make, seed, check=None):
+        return make(np.random.default_rng(seed))
+
+
+class _Child:
+    def __init__(self, functions):
+        self.functions = functions
+
+    def call(self, probe, *args, timeout=None):
+        return self.functions[probe](*args)
+
+
+def _explain(monkeypatch, probe, decl, reference, student, args):
+    """The engine's finding for a check that compares the student's ``probe(*args)`` with the reference's."""
+    monkeypatch.setitem(engine.DECLARATIONS, probe, decl)
+    expected = np.asarray(reference(*args), dtype=float)
+    got = np.asarray(student(*args), dtype=float)
+
+    class Ctx:
+        check_id = "p99.stub"
+        oracle = _Oracle({probe: lambda *a: np.asarray(reference(*a), dtype=float)})
+        child = _Child({probe: lambda *a: np.asarray(student(*a), dtype=float)})
+        seed = 7
+        calls = [("reference", probe, args, expected), ("student", probe, args, got)]
+
+    return explain(Ctx(), [Evidence(got, expected, TIGHT, "the value", got, expected)])
+
+
+def test_a_frame_ignored_is_told_beside_the_other_frame(monkeypatch):
+    """``A @ v`` where the student returns ``v``: the output in the other frame reproduces it, and so does the
+    rotation ignored; both are told."""
+    decl = Declaration(args=("rotation", "vector"), names=("A", "v"), rotation=0, draw=False)
+    A = np.array([[0.36, -0.48, 0.8], [0.8, 0.6, 0.0], [-0.48, 0.64, 0.6]])
+    finding = _explain(monkeypatch, "stub.mapped", decl, lambda A, v: np.asarray(A) @ v, lambda A, v: np.asarray(v),
+                       (A, np.array([0.3, -1.2, 0.7])))
+    assert finding is not None and "ignored_argument" in finding.names and "wrong_frame" in finding.names, finding
+    assert "when A turns" in finding.hint
+
+
+def test_masses_that_do_not_scale_the_value_are_told_ignored(monkeypatch):
+    """A probe that declares nothing: the student's sum of squared distances without the masses does not follow
+    the masses."""
+    points = np.array([[1.0, 0.5, -0.2], [-0.3, 0.8, 1.1], [0.4, -1.0, 0.6]])
+
+    def weighted(masses, points):
+        return np.array([np.sum(np.asarray(masses) * np.sum(np.asarray(points) ** 2, axis=1))])
+
+    finding = _explain(monkeypatch, "stub.second_moment", None, weighted,
+                       lambda masses, points: np.array([np.sum(np.asarray(points) ** 2)]), ([2.0, 0.5, 1.5], points))
+    assert finding is not None and finding.names == ("ignored_argument",), finding
+    assert "argument 1 is scaled" in finding.hint
+
+
+def test_a_value_unchanged_by_a_special_input_is_no_ignored_argument(monkeypatch):
+    """Near miss: the student's ``v + v x w`` for the reference's ``v + w``, shown where ``w`` is parallel to
+    ``v``: there the student's value stays ``v`` when ``w`` is scaled, but it follows ``w`` on an input where every
+    argument is moved; nothing is told ignored."""
+    decl = Declaration(args=("vector", "vector"), names=("v", "w"), draw=False)
+    v = np.array([0.6, -0.3, 0.9])
+    finding = _explain(monkeypatch, "stub.sum", decl, lambda v, w: np.asarray(v) + np.asarray(w),
+                       lambda v, w: np.asarray(v) + np.cross(v, w), (v, 1.7 * v))
+    assert finding is None or "ignored_argument" not in finding.names, finding
