@@ -24,7 +24,9 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   "sheet": probe}``), the argument that holds the run's parameters (a mass, an inertia, g; the probe of their
   sheet values for a run not given them), which the engine tries exchanged and scaled by re-running the reference,
   or ``{"args": (indices), "names": (...), "sheet": probe}`` for parameters given one argument each (exchanged,
-  and each given one at its sheet value); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...),
+  and each given one at its sheet value); with ``"start"`` (``{"arg": index, "name": ..., "sheet": probe}``), the
+  argument that holds the run's start and the probe of the sheet's, which the engine tries in its place (the start
+  ignored); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...),
   "tolerances": True}``), the probe's argument by which the engine asks the reference's run with ``solve_ivp``
   called as a slip would call it (``_dynamics.solver_variant``: from a start with two entries exchanged, at looser
   tolerances); with ``"at_events"`` (``{key: (event, state[, entry])}``), the result's values taken from the

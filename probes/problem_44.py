@@ -40,6 +40,7 @@ def event(pkg, states, s, d):
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_44.simulate_fixed",
                "schemes": ("euler", "symplectic"), "rhs": "problem_44.bar_ode", "rhs_args": (3,),
                "parameters": {"arg": 3, "names": ("m", "theta", "g"), "sheet": "problem_44.sheet_bar"},
+               "start": {"arg": 0, "name": "q0", "sheet": "problem_44.sheet_start"},
                "variants": {"arg": 5, "tolerances": True},
                "at_events": {"q_event": ("t_event", "q"), "qd_event": ("t_event", "qd")}},
 )
@@ -111,6 +112,13 @@ def bar_ode_terms(pkg, bar, cases):
         terms["f"].append(np.concatenate([zero, bias[3:]]))
         terms["gravity"].append(np.concatenate([zero, full[3:] - bias[3:]]))
     return {"terms": terms, "extra": {}}
+
+
+@probe(reference_only=True)
+def sheet_start(pkg):
+    """The sheet's start ``Q0``: the positions ``simulate`` starts from where it is given no ``q0`` (the diagnosis
+    engine calls it on the reference)."""
+    return [float(x) for x in module(pkg, "problem_44").Q0]
 
 
 @probe(reference_only=True)

@@ -845,10 +845,11 @@ def _prepare_declared(scene: Scene, ask, decl: Declaration, source: Source) -> N
                 ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
     if decl.motion.get("rhs"):
         _prepare_model(ask, decl, source)
-    if decl.motion.get("parameters"):
-        spec = decl.motion["parameters"]
+    if decl.motion.get("parameters") or decl.motion.get("start"):
+        spec = decl.motion.get("parameters") or {}
         sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
-        for _, args in parameter_variants(decl.motion, tuple(source.args), sheet):
+        start = ask(decl.motion["start"]["sheet"], ()) if decl.motion.get("start") else None
+        for _, args in parameter_variants(decl.motion, tuple(source.args), sheet, start):
             ask(source.probe, args, persist=True)
 
 

@@ -533,7 +533,7 @@ def _families(found: list) -> set:
     return {DIAGNOSES[h.name].family if h.name in DIAGNOSES else h.name for h in found if h.cost == cost}
 
 
-def parameter_variants(motion: dict, args: tuple, sheet) -> list:
+def parameter_variants(motion: dict, args: tuple, sheet, start=None) -> list:
     """``(hypothesis, arguments)``: the run's arguments varied, each a run of the reference that a slip of the
     student's would give (every one a function of the run's arguments alone, so the kit's key holds them).
 
@@ -545,6 +545,10 @@ def parameter_variants(motion: dict, args: tuple, sheet) -> list:
       not given: the grammar's input slips exchange the given ones), and each given one at the sheet's value (the
       argument ignored, the module's constant used instead).
 
+    ``motion["start"]`` (``{"arg": index, "name": ..., "sheet": probe}``), the argument that holds the run's start
+    (``start``: the sheet's): the reference's run from the sheet's start where another is given (the argument
+    ignored, the module's start used instead); told beside a start that differs (``initial_state``), at its cost.
+
     Two parameters of equal value are not exchanged: that cannot be told.  ``motion["variants"]`` (``{"arg":
     index, "starts": ((i, j), ...), "tolerances": True}``): the reference re-run by the probe from its start with
     the entries ``i`` and ``j`` exchanged, and by ``solve_ivp`` at the ``LOOSE_TOLERANCES``."""
@@ -554,6 +558,7 @@ def parameter_variants(motion: dict, args: tuple, sheet) -> list:
         found += _vector_variants(spec, args, sheet)
     elif spec and "args" in spec:
         found += _scalar_variants(spec, args, sheet)
+    found += _start_variants(motion.get("start"), args, start)
     variants = motion.get("variants")
     if variants:
         index = variants["arg"]
@@ -575,6 +580,23 @@ def parameter_variants(motion: dict, args: tuple, sheet) -> list:
                                          "steps it lets the solver take): integrate at the defaults (rtol 1e-3, "
                                          "atol 1e-6) or tighter"), run_with(["tolerance", rtol, atol])))
     return found
+
+
+def _start_variants(spec: dict | None, args: tuple, start) -> list:
+    """The run from the sheet's start (``start``) where the argument ``spec["arg"]`` gives another: the start
+    ignored."""
+    if not spec or start is None:
+        return []
+    index, name = spec["arg"], spec.get("name", "the start")
+    given = array_of(args[index]) if index < len(args) and args[index] is not None else None
+    sheet = array_of(start)
+    if given is None or sheet is None or given.shape != sheet.shape or np.allclose(given, sheet, rtol=1e-9, atol=0.0):
+        return []
+    changed = list(args)
+    changed[index] = [float(x) for x in sheet.ravel()]
+    return [(Hypothesis("run:start-sheet", "ignored_argument", 3,
+                        f"{name} = {format_array(given)} is given, but your run is the reference's from the sheet's "
+                        f"{name} = {format_array(sheet)}: the argument is ignored"), tuple(changed))]
 
 
 def _vector_variants(spec: dict, args: tuple, sheet) -> list:
@@ -646,14 +668,15 @@ def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integra
     (``integration``)."""
     motion = decl.motion
     spec, source, student = motion.get("parameters"), evidence.source, evidence.student
-    if not (spec or motion.get("variants")) or source is None or student is None:
+    if not (spec or motion.get("variants") or motion.get("start")) or source is None or student is None:
         return []
     mine, ours = run_of(student.root, motion), run_of(source.root, motion)
     if mine is None or ours is None:
         return []
     sheet = scene.reference(spec["sheet"], ()) if spec and spec.get("sheet") else None
+    start = scene.reference(motion["start"]["sheet"], ()) if motion.get("start") else None
     found = []
-    for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet):
+    for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet, start):
         if hypothesis.name in INTEGRATION and not integration:
             continue
         try:

@@ -161,3 +161,21 @@ def test_a_value_unchanged_by_a_special_input_is_no_ignored_argument(monkeypatch
     finding = _explain(monkeypatch, "stub.sum", decl, lambda v, w: np.asarray(v) + np.asarray(w),
                        lambda v, w: np.asarray(v) + np.cross(v, w), (v, 1.7 * v))
     assert finding is None or "ignored_argument" not in finding.names, finding
+
+
+# ------------------------------------------------------------------------------------------ a run's start
+
+
+def test_a_run_from_the_sheets_start_is_a_variant_where_another_start_is_given():
+    """A run's start declared with the probe of the sheet's (``motion["start"]``): the reference's run from the
+    sheet's start is tried where another is given (the start ignored), at the cost of a start that differs, so both
+    are told; where the sheet's start is given, nothing is tried."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"time": "t", "states": ("q",), "start": {"arg": 0, "name": "q0", "sheet": "stub.sheet_start"}}
+    sheet = [1.0, 1.0, 0.75]
+    found = parameter_variants(motion, ([0.5, 1.25, 0.75], 2.0), None, sheet)
+    assert [(h.name, h.cost, args) for h, args in found] == [("ignored_argument", 3, ([1.0, 1.0, 0.75], 2.0))]
+    assert "q0 = [0.5000, 1.2500, 0.7500] is given" in found[0][0].detail
+    assert parameter_variants(motion, (list(sheet), 2.0), None, sheet) == []
+    assert parameter_variants(motion, ([0.5, 1.25, 0.75], 2.0), None, None) == []
