@@ -28,7 +28,7 @@ __all__ = [
 MAX_REFERENCE_CALLS = 80
 #: the student's calls one explanation may make (a second input, an argument changed, the formula tier's third
 #: input); the later tiers are heard where an earlier one explained the answer, and the test of an ignored argument
-#: (up to four calls) with the formula tier's third input then both ask, where before at most one did
+#: (``engine.IGNORED_CALLS`` at most, leaving one) with the formula tier's third input then both ask
 MAX_STUDENT_CALLS = 8
 #: how long one of the engine's calls of the student's code may take [s]
 STUDENT_TIMEOUT = 5.0
