@@ -138,18 +138,29 @@ def test_a_frame_ignored_is_told_beside_the_other_frame(monkeypatch):
     assert "when A turns" in finding.hint
 
 
-def test_masses_that_do_not_scale_the_value_are_told_ignored(monkeypatch):
+def test_masses_ignored_are_told_beside_a_rival_never_alone(monkeypatch):
     """A probe that declares nothing: the student's sum of squared distances without the masses does not follow
-    the masses."""
+    the masses, which the test of an ignored argument finds; alone, no other tier explaining it, an array that a
+    value does not follow may as well be a term left out that carried all of its dependence on it, and nothing is
+    told; a number ignored is told alone."""
+    from grader.diagnosis import engine as explaining
+
     points = np.array([[1.0, 0.5, -0.2], [-0.3, 0.8, 1.1], [0.4, -1.0, 0.6]])
 
     def weighted(masses, points):
         return np.array([np.sum(np.asarray(masses) * np.sum(np.asarray(points) ** 2, axis=1))])
 
+    heard = []
+    ignored = explaining._ignored
+    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences: heard.append(ignored(scene, evidences))
+                        or heard[-1])
     finding = _explain(monkeypatch, "stub.second_moment", None, weighted,
                        lambda masses, points: np.array([np.sum(np.asarray(points) ** 2)]), ([2.0, 0.5, 1.5], points))
+    assert [h.name for h in heard[0]] == ["ignored_argument"] and "argument 1 is scaled" in heard[0][0].detail
+    assert finding is None or "ignored_argument" not in finding.names, finding
+    finding = _explain(monkeypatch, "stub.scaled", None, lambda m, v: m * np.asarray(v),
+                       lambda m, v: 2.0 * np.asarray(v), (1.5, [0.5, -1.0, 2.0]))
     assert finding is not None and finding.names == ("ignored_argument",), finding
-    assert "argument 1 is scaled" in finding.hint
 
 
 def test_a_value_unchanged_by_a_special_input_is_no_ignored_argument(monkeypatch):

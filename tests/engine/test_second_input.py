@@ -197,7 +197,16 @@ def test_a_slip_that_holds_on_the_input_shown_only_is_not_named():
     assert failure.diagnosis == "" and failure.hint == ""
 
 
-def test_a_draw_on_which_the_reference_raises_is_not_used():
+@pytest.fixture
+def draws_only(monkeypatch):
+    """The reference's calls of the tests below are the engine's draws only: the test of an ignored argument, heard
+    beside every other tier, changes the arguments as well, and is not heard here (``test_ignored`` tests it)."""
+    from grader.diagnosis import engine as explaining
+
+    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences: [])
+
+
+def test_a_draw_on_which_the_reference_raises_is_not_used(draws_only):
     """The reference refuses the first draw (a mass out of its range, say): the next draw is the second input."""
     drawn = []
 
@@ -213,7 +222,7 @@ def test_a_draw_on_which_the_reference_raises_is_not_used():
     assert "on the input shown and on a second one" in failure.hint
 
 
-def test_a_degenerate_draw_is_not_used():
+def test_a_degenerate_draw_is_not_used(draws_only):
     """The reference gives zeros on the first draw where the input shown gives none: the next draw is used."""
     drawn = []
 
@@ -228,7 +237,7 @@ def test_a_degenerate_draw_is_not_used():
     assert len(drawn) == 2 and failure.diagnosis == "factor_two"
 
 
-def test_a_value_that_does_not_change_with_the_arguments_gets_no_second_input():
+def test_a_value_that_does_not_change_with_the_arguments_gets_no_second_input(draws_only):
     """The compared value is a constant of the problem (the probe's arguments feed other results): a drawn input
     tells nothing, and a slip that one input shows is judged as on one input."""
     constant = np.array([[1.0, 2.0], [3.0, 4.0]])
