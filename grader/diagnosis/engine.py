@@ -508,10 +508,16 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
 
 def _beside(tiers: list) -> list:
     """The tiers, where a value that does not follow an array argument (a vector, a rotation, masses) is told only
-    beside another tier's explanation: alone it may be a term left out that carried all of the value's dependence
-    on that argument (a rolling joint's translation left out leaves a velocity that no angle changes), which is no
-    argument ignored; a number ignored, or every argument (a constant answer), is told alone as well."""
-    if any(tier for tier in tiers if not any(h.key.startswith(IGNORED_KEYS) for h in tier)):
+    beside another tier's explanation, as a twin is (``_told``): alone it may be a term left out that carried all
+    of the value's dependence on that argument (a rolling joint's translation left out leaves a velocity that no
+    angle changes), which is no argument ignored, and where it would take the families told past
+    ``MAX_FAMILIES`` it is left out rather than nothing named (a pendulum's Jacobian that no angle changes, beside
+    a sign and a term that each reproduce it).  A number ignored, or every argument (a constant answer), is a
+    tier's explanation as any other."""
+    others = [tier for tier in tiers if not any(h.key.startswith(IGNORED_KEYS) for h in tier)]
+    simplest = [h for tier in others if tier for h in tier if h.cost == min(g.cost for g in tier) and not h.twin]
+    families = {DIAGNOSES[h.name].family for h in simplest}
+    if simplest and len(families | {DIAGNOSES["ignored_argument"].family}) <= MAX_FAMILIES:
         return tiers
     return [[h for h in tier if not h.key.startswith(IGNORED_ARRAY)] for tier in tiers]
 
