@@ -98,6 +98,24 @@ SIMULATION_BAND = {"q": Tol("a reasonable integrator", 5e-2), "qd": Tol("a reaso
 SIMULATION_TIMEOUT = 30.0
 #: the run released from a configuration of its own is compared over this time [s]
 OWN_T_END = 0.5
+#: that run's start: every angle within this of 0 [rad], every speed between these in size, either sign [rad/s]
+OWN_Q0 = 1.0
+OWN_QD0 = (0.5, 1.5)
+
+
+def draw_start(rng):
+    """A start ``[q0, qd0]`` of the run released from a configuration of its own: angles up to ``OWN_Q0``, speeds
+    of order 1 rad/s, none of them near 0 (a run that ignored ``qd0`` would start at rest)."""
+    q0 = rng.uniform(-OWN_Q0, OWN_Q0, 3)
+    qd0 = rng.choice((-1.0, 1.0), 3) * rng.uniform(*OWN_QD0, 3)
+    return [[float(x) for x in q0], [float(x) for x in qd0]]
+
+
+def _assert_start(run, q0, qd0, what):
+    """The run's first output is its start ``(q0, qd0)``: the angles and the speeds told apart, each named."""
+    for key, value in (("q", q0), ("qd", qd0)):
+        assert_close(np.asarray(run[key])[0], value, f"{key} at t = 0", EXACT, context=f"({what})",
+                     note="The run starts from the state it is given: q = q0 and qd = qd0 at t = 0.")
 
 
 def _assert_output_times(t, expected, what):
@@ -142,12 +160,14 @@ def check_simulated_motion(ctx):
     assert_run(head, ours, ("q", "qd"), SIMULATION_BAND, "the first second of the run", roots=(got, expected),
                note="Any solve_ivp method at its default tolerances stays within the band; later the motion is "
                     "chaotic and accurate runs part.")
-    # released from a configuration of its own, drawn anew at each grading (no key holds its run)
-    q0 = ctx.draw(lambda rng: [float(x) for x in rng.uniform(-1.0, 1.0, 3)])
-    ours = ctx.reference(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0)
-    mine = ctx.student(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, timeout=SIMULATION_TIMEOUT)
-    own = f"problem_24.simulate({OWN_T_END:g}, q0)"
+    # released from a configuration and with speeds of its own, drawn anew at each grading (no key holds its run)
+    q0, qd0 = ctx.draw(draw_start)
+    ours = ctx.reference(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, qd0)
+    mine = ctx.student(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, qd0,
+                       timeout=SIMULATION_TIMEOUT)
+    own = f"problem_24.simulate({OWN_T_END:g}, q0, qd0)"
+    released = f"the run released at q0 = {np.round(q0, 4).tolist()} with qd0 = {np.round(qd0, 4).tolist()}"
     _assert_output_times(run_array(mine, "t", np.shape(ours["t"]), own), ours["t"], own)
-    assert_run(mine, ours, ("q", "qd"), SIMULATION_BAND,
-               f"the run released at q0 = {np.round(q0, 4).tolist()} (the first {OWN_T_END:g} s)",
+    _assert_start(mine, q0, qd0, released)
+    assert_run(mine, ours, ("q", "qd"), SIMULATION_BAND, f"{released} (the first {OWN_T_END:g} s)",
                note="Any solve_ivp method at its default tolerances stays within the band.")
