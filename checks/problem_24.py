@@ -78,7 +78,7 @@ def check_side_effects(ctx):
 
 import numpy as np  # noqa: E402
 
-from grader.checking import EXACT, Mistake, Tol, assert_close, close  # noqa: E402
+from grader.checking import EXACT, Mistake, Tol, assert_close, close, fail  # noqa: E402
 from probes import _dynamics as probe_dynamics  # noqa: E402
 
 from ._dynamics import assert_energy_conserved, assert_run, run_array, run_figure  # noqa: E402
@@ -101,14 +101,17 @@ OWN_T_END = 0.5
 #: that run's start: every angle within this of 0 [rad], every speed between these in size, either sign [rad/s]
 OWN_Q0 = 1.0
 OWN_QD0 = (0.5, 1.5)
+#: that run's output step, one of these [s] (none the default 0.01 s)
+OWN_DT = (0.005, 0.02, 0.025)
 
 
 def draw_start(rng):
-    """A start ``[q0, qd0]`` of the run released from a configuration of its own: angles up to ``OWN_Q0``, speeds
-    of order 1 rad/s, none of them near 0 (a run that ignored ``qd0`` would start at rest)."""
+    """The arguments ``[q0, qd0, dt]`` of the run released from a configuration of its own: angles up to
+    ``OWN_Q0``, speeds of order 1 rad/s, none of them near 0 (a run that ignored ``qd0`` would start at rest), an
+    output step of ``OWN_DT`` (a run that ignored ``dt`` would output every 0.01 s)."""
     q0 = rng.uniform(-OWN_Q0, OWN_Q0, 3)
     qd0 = rng.choice((-1.0, 1.0), 3) * rng.uniform(*OWN_QD0, 3)
-    return [[float(x) for x in q0], [float(x) for x in qd0]]
+    return [[float(x) for x in q0], [float(x) for x in qd0], float(rng.choice(OWN_DT))]
 
 
 def _assert_start(run, q0, qd0, what):
@@ -118,17 +121,21 @@ def _assert_start(run, q0, qd0, what):
                      note="The run starts from the state it is given: q = q0 and qd = qd0 at t = 0.")
 
 
-def _assert_output_times(t, expected, what):
-    """The run's output times are the reference's (every ``SIMULATION_DT`` from 0): the states are compared row by
-    row, so a run whose times are shifted would otherwise pass with the right states at the wrong times."""
+def _assert_output_times(run, expected, what, dt=SIMULATION_DT):
+    """The run's output times are the reference's (every ``dt`` from 0): the states are compared row by row, so a
+    run whose times are shifted would otherwise pass with the right states at the wrong times."""
+    expected = np.asarray(expected, dtype=float)
+    note = f"An output every dt = {dt:g} s from 0 to {expected[-1]:g} s (the t_eval of solve_ivp)."
+    t = run_array(run, "t", None, what)
+    if t.shape != expected.shape:
+        fail(f"the output times of {what} are {t.size} values, expected {expected.size}.\n{note}",
+             diagnosis="shape")
     if close(t, expected, EXACT):
         return
-    expected = np.asarray(expected, dtype=float)
-    shifts = [Mistake("time_shift", expected + sign * SIMULATION_DT, "The states are right, the times beside them "
+    shifts = [Mistake("time_shift", expected + sign * dt, "The states are right, the times beside them "
                       "are not: return the times solve_ivp returns (result.t), which start at t = 0.")
               for sign in (1, -1)]
-    assert_close(t, expected, f"the output times of {what}", EXACT, shifts,
-                 note=f"An output every {SIMULATION_DT:g} s from 0 (the t_eval of solve_ivp).")
+    assert_close(t, expected, f"the output times of {what}", EXACT, shifts, note=note)
 
 
 @check(2, title="simulate(): released at rest from q = (pi/6, -pi/4, pi/3), the pendulum conserves its energy over "
@@ -145,7 +152,7 @@ def check_simulated_motion(ctx):
     ctx.add_figure(run_figure("Problem 24: the energy T + V (conserved)", "E [J]", got["t"],
                               np.column_stack([got["T"] + got["V"]]), expected["t"],
                               np.column_stack([expected["T"] + expected["V"]]), ["T + V"]))
-    _assert_output_times(got["t"], expected["t"], what)
+    _assert_output_times(got, expected["t"], what)
     start = np.concatenate([SIMULATION_Q0, np.zeros(3)])
     if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
         assert_close(np.concatenate([got["q"][0], got["qd"][0]]), start, "(q, qd) at t = 0", EXACT,
@@ -160,14 +167,15 @@ def check_simulated_motion(ctx):
     assert_run(head, ours, ("q", "qd"), SIMULATION_BAND, "the first second of the run", roots=(got, expected),
                note="Any solve_ivp method at its default tolerances stays within the band; later the motion is "
                     "chaotic and accurate runs part.")
-    # released from a configuration and with speeds of its own, drawn anew at each grading (no key holds its run)
-    q0, qd0 = ctx.draw(draw_start)
-    ours = ctx.reference(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, qd0)
-    mine = ctx.student(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, qd0,
+    # released from a configuration and with speeds of its own, output at a step of its own, drawn anew at each
+    # grading (no key holds its run)
+    q0, qd0, dt = ctx.draw(draw_start)
+    ours = ctx.reference(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, qd0, dt)
+    mine = ctx.student(probe_dynamics.pendulum_motion, OWN_T_END, SIMULATION_GRAV, q0, qd0, dt,
                        timeout=SIMULATION_TIMEOUT)
-    own = f"problem_24.simulate({OWN_T_END:g}, q0, qd0)"
+    own = f"problem_24.simulate({OWN_T_END:g}, q0, qd0, dt={dt:g})"
     released = f"the run released at q0 = {np.round(q0, 4).tolist()} with qd0 = {np.round(qd0, 4).tolist()}"
-    _assert_output_times(run_array(mine, "t", np.shape(ours["t"]), own), ours["t"], own)
+    _assert_output_times(mine, ours["t"], own, dt)
     _assert_start(mine, q0, qd0, released)
     assert_run(mine, ours, ("q", "qd"), SIMULATION_BAND, f"{released} (the first {OWN_T_END:g} s)",
                note="Any solve_ivp method at its default tolerances stays within the band.")

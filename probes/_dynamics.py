@@ -246,13 +246,17 @@ def trace(run, n, what):
                "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02),
                "rhs": "problem_24.pendulum_ode", "rhs_args": ()},
 )
-def pendulum_motion(pkg, t_end, I_grav, q0=None, qd0=None):
-    """Problem 24: the package's ``problem_24.simulate(t_end)`` (released at ``q0`` and with the speeds ``qd0`` when
-    given) and, at every output time, the energies ``T`` and ``V`` of its own triple pendulum
-    (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
+def pendulum_motion(pkg, t_end, I_grav, q0=None, qd0=None, dt=None):
+    """Problem 24: the package's ``problem_24.simulate(t_end)`` (released at ``q0`` with the speeds ``qd0``, output
+    every ``dt``, each when given) and, at every output time, the energies ``T`` and ``V`` of its own triple
+    pendulum (``build_triple_pendulum(DynamicBody)``) under ``I_grav``."""
     p24 = module(pkg, "problem_24")
-    start = [q0] if qd0 is None else [p24.Q if q0 is None else q0, qd0]
-    run = p24.simulate(t_end, *(np.asarray(x, dtype=float) for x in start if x is not None))
+    given = [q0, qd0, None if dt is None else float(dt)]
+    while given and given[-1] is None:
+        given.pop()
+    defaults = (p24.Q, (0.0, 0.0, 0.0), 0.01)
+    args = [np.asarray(default if x is None else x, dtype=float) for x, default in zip(given[:2], defaults)]
+    run = p24.simulate(t_end, *args, *given[2:])
     t, q, qd = trace(run, 3, "problem_24.simulate")
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
     T, V = np.array([energies(tree, a, b, I_grav) for a, b in zip(q, qd)]).reshape(-1, 2).T
@@ -338,8 +342,8 @@ def fixed_step(fun, y0, t_end, h, scheme, event=None, direction=-1.0):
 def pendulum_motion_fixed(pkg, t_end, I_grav, *rest):
     """Problem 24's pendulum released as in ``problem_24.simulate``, run by a fixed-step ``scheme`` at step ``h``
     with the package's own ``pendulum_ode`` (the diagnosis engine calls it on the reference, with the arguments of
-    ``pendulum_motion`` followed by ``h, scheme``: ``rest`` is ``(h, scheme)``, ``(q0, h, scheme)`` or
-    ``(q0, qd0, h, scheme)``)."""
+    ``pendulum_motion`` followed by ``h, scheme``: ``rest`` is ``(h, scheme)``, ``(q0, h, scheme)``,
+    ``(q0, qd0, h, scheme)`` or ``(q0, qd0, dt, h, scheme)``)."""
     *start, h, scheme = rest
     q0, qd0 = (list(start) + [None, None])[:2]
     p24 = module(pkg, "problem_24")
