@@ -25,6 +25,7 @@ from grader.checking import (
 from probes import problem_03 as p03
 
 from ._mujoco import (
+    ALUMINIUM,
     DIRECTION,
     EARTH,
     HDPE,
@@ -54,6 +55,12 @@ MANUAL = {
 DURATION, DRIVEN_DURATION = 5.0, 10.0
 #: 3(c): joint 1 turns at 1 rad/s
 RATE = 1.0
+#: the models are also built of another material and 3(c) for another rate: a model with HDPE's density or the
+#: sheet's rate typed in would pass every check at the sheet's values
+OTHER_DENSITY = ALUMINIUM
+OTHER_RATE = 2.5
+#: the model built for ``OTHER_RATE`` is run this long [s]
+OTHER_RATE_DURATION = 1.0
 ANGLE = Tol("angle, MuJoCo vs the reference's ODE", 0.05)
 RATE_TOL = Tol("rate, MuJoCo vs the reference's ODE", 0.5)
 #: 3(c): joint 1 follows q1 = t (a servo of kp = 1000 stays within 1e-4 rad)
@@ -65,11 +72,23 @@ VARIANTS = {"geometry": "3(a), inertia from the geometry", "custom": "3(b), cust
             "driven": "3(c), joint 1 driven"}
 
 
-def _model(ctx, variant, gravity=EARTH):
-    rate = RATE if variant == "driven" else None
+def _model(ctx, variant, gravity=EARTH, density=HDPE, rate=RATE):
+    rate = rate if variant == "driven" else None
     what = f"the model of {VARIANTS[variant]}"
-    desc = model_of(student_once(ctx, p03.model, variant, HDPE, gravity, rate), what)
+    desc = model_of(student_once(ctx, p03.model, variant, density, gravity, rate), what)
     return desc, what
+
+
+def _density(ctx, variant):
+    """The model takes the density it is given: built of aluminium, each link has the mass of an aluminium brick."""
+    desc, what = _model(ctx, variant, density=OTHER_DENSITY)
+    expected = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, OTHER_DENSITY)["mass"]
+    sheet = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)["mass"]
+    for k, joint in enumerate(hinges(desc, 2, what)):
+        assert_close(body_of(desc, joint)["mass"], expected,
+                     f"the mass of link {k + 1} of {what} built of aluminium ({OTHER_DENSITY:g} kg/m^3)", MASS,
+                     mistakes=[Mistake("ignored_argument", sheet, f"That is the mass of an HDPE link ({HDPE:g} "
+                                       "kg/m^3): build the model with the density you are given.")])
 
 
 def _gravity(ctx, variant):
@@ -169,10 +188,12 @@ def check_model_a(ctx):
     _gravity(ctx, "geometry")
 
 
-@check(1, title="3(a): mass, centre of mass and inertia about z from the geometry equal the analytic values",
+@check(1, title="3(a): mass, centre of mass and inertia about z from the geometry equal the analytic values, for "
+       "the density given",
        stage=STAGE_STRUCTURE, group="model_a")
 def check_geometry_inertia(ctx):
     desc, what, bodies = _structure(ctx, "geometry")
+    _density(ctx, "geometry")
     custom = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)
     mistakes = _inertia_mistakes(custom, HDPE)
     for k, body in enumerate(bodies):
@@ -185,11 +206,12 @@ def check_geometry_inertia(ctx):
 
 
 @check(2, title="3(b): each body declares the custom mass, centre of mass, moments and products of inertia, and "
-       "the model the gravity given",
+       "the model the gravity given, for the density given",
        stage=STAGE_STRUCTURE, group="model_b")
 def check_custom_inertia(ctx):
     desc, what, bodies = _structure(ctx, "custom")
     _gravity(ctx, "custom")
+    _density(ctx, "custom")
     custom = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)
     mistakes = _inertia_mistakes(custom, HDPE)
     for k, body in enumerate(bodies):
@@ -246,7 +268,7 @@ def check_traces_b(ctx):
 # ------------------------------------------------------------------------------------ 3(c): joint 1 driven
 
 
-@check(1, title="3(c): two links as in 3(a) with the gravity given, and an actuator drives joint 1",
+@check(1, title="3(c): two links as in 3(a) with the gravity and the density given, and an actuator drives joint 1",
        stage=STAGE_DEFINED, group="driven")
 def check_driven_model(ctx):
     desc, what, _ = _structure(ctx, "driven")
@@ -260,10 +282,23 @@ def check_driven_model(ctx):
         which = ", ".join(f"joint {j + 1}" if j >= 0 else "no joint" for j in driven)
         fail(f"{what}: its actuator drives {which}; the sheet drives joint 1 (q1 = t) and leaves joint 2 free.",
              'Attach the servo to the first hinge: <intvelocity joint="joint1" kp="1000"/>.', "actuator_joint")
+    _density(ctx, "driven")
 
 
-@check(2, title="3(c): joint 1 moves at the prescribed rate, q1 = t, from the start (1 rad/s at t = 0)", stage=STAGE_VALUES,
-       group="driven")
+def _other_rate(ctx):
+    """Joint 1 turns at the rate given: the model built for ``OTHER_RATE`` follows q1 = OTHER_RATE t (a model with
+    the sheet's rate typed in would pass the run at the sheet's rate)."""
+    what = f"the model of {VARIANTS['driven']} built for a rate of {OTHER_RATE:g} rad/s"
+    got = run_of(student_once(ctx, p03.run, "driven", HDPE, EARTH, OTHER_RATE_DURATION, SAMPLE, OTHER_RATE,
+                              timeout=30), what)
+    t = np.asarray(got["t"], dtype=float)
+    assert_close(got["qpos"][:, 0], OTHER_RATE * t, f"q1 of {what}", DRIVEN, context=f"(q1 = {OTHER_RATE:g} t)",
+                 mistakes=[Mistake("ignored_argument", RATE * t, f"That is the sheet's rate, {RATE:g} rad/s: drive "
+                                   "joint 1 at the rate you are given (the keyframe's qvel and ctrl).")])
+
+
+@check(2, title="3(c): joint 1 moves at the prescribed rate, q1 = t, from the start (1 rad/s at t = 0), and at "
+       "another rate given", stage=STAGE_VALUES, group="driven")
 def check_driven_rate(ctx):
     got, expected, duration = _run(ctx, "driven")
     start, start_ref = float(got["qvel"][0, 0]), float(expected["qd"][0, 0])
@@ -276,6 +311,7 @@ def check_driven_rate(ctx):
     t, q1, q1_ref = expected["t"], got["qpos"][:, 0], expected["q"][:, 0]
     bad = np.flatnonzero(~(np.abs(q1 - q1_ref) <= DRIVEN.atol))
     if not bad.size and abs(start - start_ref) <= DRIVEN.atol:
+        _other_rate(ctx)
         return
     i = int(bad[0]) if bad.size else 0
     slope = float(np.polyfit(t, q1, 1)[0]) if np.all(np.isfinite(q1)) else float("nan")
