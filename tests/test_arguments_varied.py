@@ -22,7 +22,11 @@ from .submissions import ROOT, copy_reference
 ALLOWLIST = ROOT / "tests" / "arguments_allowed.toml"
 PROBLEMS = [p.number for p in problems()]
 #: problems whose checks were mended to vary an argument, with the arguments that must now take several values
-MENDED = {24: ("problem_24.simulate:q0", "problem_24.simulate:qd0", "problem_24.simulate:dt")}
+MENDED = {
+    3: ("problem_03.double_pendulum:density", "problem_03.double_pendulum_custom_inertia:density",
+        "problem_03.driven_double_pendulum:density", "problem_03.driven_double_pendulum:rate"),
+    24: ("problem_24.simulate:q0", "problem_24.simulate:qd0", "problem_24.simulate:dt"),
+}
 
 
 def allowed() -> dict[str, str]:
