@@ -254,8 +254,7 @@ def pendulum_motion(pkg, t_end, I_grav, q0=None, qd0=None, dt=None):
     given = [q0, qd0, None if dt is None else float(dt)]
     while given and given[-1] is None:
         given.pop()
-    defaults = (p24.Q, (0.0, 0.0, 0.0), 0.01)
-    args = [np.asarray(default if x is None else x, dtype=float) for x, default in zip(given[:2], defaults)]
+    args = [np.asarray(default if x is None else x, dtype=float) for x, default in zip(given, (p24.Q, np.zeros(3)))]
     run = p24.simulate(t_end, *args, *given[2:])
     t, q, qd = trace(run, 3, "problem_24.simulate")
     tree = p24.build_triple_pendulum(module(pkg, "dynamics").DynamicBody)
