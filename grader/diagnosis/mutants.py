@@ -250,8 +250,9 @@ SLIPS = {
     "number": ("wrong_factor", "a number in `{f}` is left out of a product"),
     "doubled": ("wrong_factor", "a number in `{f}` is doubled"),
     "halved": ("wrong_factor", "a number in `{f}` is halved"),
-    "multiplies": ("wrong_factor", "`{f}` multiplies where it should divide"),
-    "divides": ("wrong_factor", "`{f}` divides where it should multiply"),
+    # named by the reference's operation; the phrase says what the student's code does instead
+    "multiplies": ("wrong_factor", "`{f}` divides where it should multiply"),
+    "divides": ("wrong_factor", "`{f}` multiplies where it should divide"),
     "square": ("wrong_factor", "a square is missing in `{f}`"),
     "root": ("wrong_factor", "a square root is missing in `{f}`"),
     "trig": ("sin_cos_swapped", "`{f}` takes sin where cos belongs, or the reverse"),
