@@ -57,6 +57,15 @@ that it fails, a slip whose family is no fact was left out, and a slip that repe
 their named companions, of the engine's own tests or of the planted suite (the same file and replaced text, or the
 same planted text) was dropped.  Candidates that no check failed are not in it.
 
+``--set fresh5`` is a fifth held-out set (``tests/diagnosis/fresh5/``), written like the fourth and kept from the
+engine's builders until they were done: from the sheet, the problem data and the reference alone, every realistic
+mistake whose check fails, whatever the grader of the day said of it (``today`` is recorded with each and was not
+looked at while the set was chosen).  Its check is the first of its problem's checks that it fails; a slip whose
+family is no fact was left out; a slip that repeats one of the four earlier sets, their named companions, the
+engine's own tests or the planted suite (the same file and replaced text, or the same planted text) was dropped
+(where an earlier entry makes another slip in the same line, the entry replaces a narrower text of it); candidates
+that no check failed are not in it.
+
 **What the target is read on.**  The first three held-out sets hold only mistakes that the grader of their day did
 not name rightly: a set chosen so starts at 0% and leaves out, with the mistakes a catalogue names, every mistake
 the engine already named, so it is harder than the issue's "realistic mistakes that the catalogues do not list".
@@ -65,7 +74,8 @@ switched off and on; one whose check names its true cause with the engine off is
 or message tells it) and is left out of the measure, and the target is read on the others, graded with the engine
 on.  On the first three held-out sets that measure is the set's own (nothing in them was named when they were
 written); on a pool (one of them with its ``named`` companion) it is the issue's measure on all the realistic
-mistakes that were written; on the fourth set it is the issue's measure itself (``--set fresh4 --unlisted``).
+mistakes that were written; on the fourth and fifth sets it is the issue's measure itself (``--set fresh4
+--unlisted``, ``--set fresh5 --unlisted``).
 """
 
 from __future__ import annotations
@@ -98,6 +108,7 @@ __all__ = [
     "FRESH3",
     "NAMED3",
     "FRESH4",
+    "FRESH5",
     "SETS",
     "HELD_OUT",
     "SYMPTOMS",
@@ -130,13 +141,15 @@ FRESH3 = ROOT / "tests" / "diagnosis" / "fresh3"
 NAMED3 = ROOT / "tests" / "diagnosis" / "named3"
 #: the fourth held-out set, written apart from the engine: every realistic mistake whose check fails, named or not
 FRESH4 = ROOT / "tests" / "diagnosis" / "fresh4"
+#: the fifth held-out set, written like the fourth apart from the engine: every realistic mistake whose check fails
+FRESH5 = ROOT / "tests" / "diagnosis" / "fresh5"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
         "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
-        "fresh4": (FRESH4,)}
+        "fresh4": (FRESH4,), "fresh5": (FRESH5,)}
 #: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
-#: when they were written, the fourth every realistic mistake whose check fails
-HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4")
+#: when they were written, the fourth and fifth every realistic mistake whose check fails
+HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
@@ -527,7 +540,7 @@ def summary(graded: list[Graded], naming_: Naming, seconds: float | None = None,
     lines += [_row("I+VI+VII", weak), _row("all", graded), ""]
     if graded and which in HELD_OUT:
         lines.append(_target(graded, "every mistake of the set, also those a check names without the engine (the "
-                                      "issue's measure: --unlisted)" if which == "fresh4" else
+                                      "issue's measure: --unlisted)" if which in ("fresh4", "fresh5") else
                              "the set holds only mistakes whose cause was not told when it was written"))
     if graded and all(g.listed is not None for g in graded):
         lines += _unlisted(graded)
