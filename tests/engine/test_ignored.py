@@ -26,6 +26,7 @@ from tests.kit_support import (  # noqa: F401 (fixtures)
     grade_live_and_kit,
     warm_slot,
 )
+from tests.engine.stand_ins import StandInChild, StandInOracle
 from tests.submissions import Planted, build_planted
 
 #: problem 7's body angular velocity with A_CI left out, unskew(dA_IC): the value does not follow the rotation A_IC
@@ -90,27 +91,6 @@ def test_every_argument_of_real_numbers_is_a_candidate():
 TIGHT = Tol("tight", 1e-9, 1e-9)
 
 
-class _Oracle:
-    mode = "live"
-
-    def __init__(self, functions):
-        self.functions = functions
-
-    def reference(self, probe, args, persist=False, check=None):
-        return self.functions[probe](*args)
-
-    def draw(self, site, make, seed, check=None):
-        return make(np.random.default_rng(seed))
-
-
-class _Child:
-    def __init__(self, functions):
-        self.functions = functions
-
-    def call(self, probe, *args, timeout=None):
-        return self.functions[probe](*args)
-
-
 def _explain(monkeypatch, probe, decl, reference, student, args):
     """The engine's finding for a check that compares the student's ``probe(*args)`` with the reference's."""
     monkeypatch.setitem(engine.DECLARATIONS, probe, decl)
@@ -119,8 +99,8 @@ def _explain(monkeypatch, probe, decl, reference, student, args):
 
     class Ctx:
         check_id = "p99.stub"
-        oracle = _Oracle({probe: lambda *a: np.asarray(reference(*a), dtype=float)})
-        child = _Child({probe: lambda *a: np.asarray(student(*a), dtype=float)})
+        oracle = StandInOracle({probe: lambda *a: np.asarray(reference(*a), dtype=float)})
+        child = StandInChild({probe: lambda *a: np.asarray(student(*a), dtype=float)})
         seed = 7
         calls = [("reference", probe, args, expected), ("student", probe, args, got)]
 

@@ -20,7 +20,7 @@ import grader.diagnosis as engine
 from grader.checking import Tol
 from grader.diagnosis import Declaration, Evidence, explain
 from grader.diagnosis.evidence import Source, counterpart, evaluated, sibling
-from grader.errors import StudentFault
+from tests.engine.stand_ins import StandInChild, StandInOracle
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
     assert_named_failure,
@@ -81,29 +81,6 @@ def _value(m, a):
     return np.array([m * a, m - 2 * a])
 
 
-class _Oracle:
-    mode = "live"
-
-    def __init__(self, functions):
-        self.functions = functions
-
-    def reference(self, probe, args, persist=False, check=None):
-        return self.functions[probe](*args)
-
-    def draw(self, site, make, seed, check=None):
-        return make(np.random.default_rng(seed))
-
-
-class _Child:
-    def __init__(self, functions):
-        self.functions = functions
-
-    def call(self, probe, *args, timeout=None):
-        if probe not in self.functions:  # as a worker answers a probe the student's package cannot
-            raise StudentFault(f"your code has no {probe}")
-        return self.functions[probe](*args)
-
-
 def _explain_points(monkeypatch, rows, asked=(0, 1, 2)):
     """A check that evaluates the student's symbolic answer at ``POINTS`` (``stub.symbolic``: one row per point)
     and compares each row with the reference's ``stub.value`` at that point (asked at the points ``asked``); the
@@ -117,8 +94,8 @@ def _explain_points(monkeypatch, rows, asked=(0, 1, 2)):
 
     class Ctx:
         check_id = "p99.symbolic"
-        oracle = _Oracle({"stub.value": _value})
-        child = _Child({})
+        oracle = StandInOracle({"stub.value": _value})
+        child = StandInChild({})
         seed = 1
 
     Ctx.calls = calls
@@ -196,8 +173,8 @@ def test_a_value_of_zero_that_stays_zero_is_no_ignored_argument(monkeypatch):
 
         class Ctx:
             check_id = "p99.sum"
-            oracle = _Oracle({"stub.sum": lambda a, b: np.array([a + b])})
-            child = _Child({"stub.sum": lambda a, b: np.array([student(a, b)])})
+            oracle = StandInOracle({"stub.sum": lambda a, b: np.array([a + b])})
+            child = StandInChild({"stub.sum": lambda a, b: np.array([student(a, b)])})
             seed = 1
             calls = [("reference", "stub.sum", args, expected), ("student", "stub.sum", args, got)]
 

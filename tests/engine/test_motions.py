@@ -22,6 +22,7 @@ from tests.kit_support import (  # noqa: F401 (fixtures)
     grade_live_and_kit,
     warm_slot,
 )
+from tests.engine.stand_ins import StandInChild, StandInOracle
 from tests.submissions import Planted, build_planted
 
 #: the families of the causes that blame a run's integration
@@ -233,24 +234,6 @@ def test_the_energy_drift_of_a_wrong_model_was_blamed_on_the_integration(tmp_pat
 # ------------------------------------------------------------------------------------------ stand-ins
 
 
-class _Oracle:
-    mode = "live"
-
-    def __init__(self, functions):
-        self.functions = functions
-
-    def reference(self, probe, args, persist=False, check=None):
-        return self.functions[probe](*args)
-
-
-class _Child:
-    def __init__(self, functions):
-        self.functions = functions
-
-    def call(self, probe, *args, timeout=None):
-        return self.functions[probe](*args)
-
-
 def _ball(v0, g, t):
     return {"t": t, "y": np.column_stack([v0 * t - g * t * t / 2, v0 - g * t])}
 
@@ -278,8 +261,8 @@ def _explain_ball(monkeypatch, student_g, reference_g, student_v0=4.0):
         calls = [("reference", "stub.throw", (4.0, reference_g), expected),
                  ("student", "stub.throw", (4.0, reference_g), got)]
         check_id = "p99.run"
-        oracle = _Oracle(reference)
-        child = _Child(student)
+        oracle = StandInOracle(reference)
+        child = StandInChild(student)
         seed = 1
 
     evidence = Evidence(np.asarray(got["y"]), np.asarray(expected["y"]), Tol("band", 1e-3), "y", got, expected)
