@@ -915,3 +915,35 @@ def test_seeds_come_from_the_folders_secret_made_once_and_reproduce_with_seed(tm
         messages[seed] = {r["check_id"]: r["message"] for r in json.loads(js.read_text())["reports"][0]["results"]}
     assert all(messages[graded.seed][r.check_id] == r.message for r in failed)
     assert any(messages[graded.seed + 1][r.check_id] != r.message for r in failed)  # the inputs follow the seed
+
+
+def test_a_worker_killed_before_its_clean_up_leaves_no_folder_after_the_batch(tmp_path, monkeypatch):
+    """A grading slot ended by SIGKILL (an operator, the OOM killer, a supervisor's last resort) runs no clean-up: its
+    warm process's staging folder stays.  The next warm process, and the end of each batch, remove the folders of
+    slots that are gone; a folder of a slot still running is left to it."""
+    from grader.batch.run import _sweep_slots
+    from grader.sandbox.zygote import SLOT_PREFIX
+
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temporary))  # the worker's, started below
+    slot = Slot(multiprocessing.get_context("spawn"), 1, LIMITS, sandbox_mode(), (6,))
+    slot.wait_ready()
+    made = list(temporary.glob(f"{SLOT_PREFIX}*"))
+    assert [_owner_of(p) for p in made] == [slot.process.pid]
+    slot.process.kill()
+    slot.process.join()
+    slot.conn.close()
+    assert list(temporary.glob(f"{SLOT_PREFIX}*")) == made  # no clean-up ran
+    running = temporary / f"{SLOT_PREFIX}{os.getpid()}-0123456789abcdef"
+    running.mkdir()
+    unknown = temporary / f"{SLOT_PREFIX}not-a-slot"
+    unknown.mkdir()
+    _sweep_slots()
+    assert sorted(temporary.glob(f"{SLOT_PREFIX}*")) == sorted([running, unknown])
+
+
+def _owner_of(folder):
+    from grader.sandbox.zygote import SLOT_PREFIX
+
+    return int(folder.name[len(SLOT_PREFIX):].split("-")[0])

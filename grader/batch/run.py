@@ -219,7 +219,18 @@ def run_batch(
         if export and not report.interrupted:
             _export_class(out, book, course, report)
         report.seconds = time.monotonic() - start
+    _sweep_slots()
     return report
+
+
+def _sweep_slots() -> None:
+    """The staging folders of this machine's grading slots that ended without removing them (a slot killed before
+    its clean-up ran): the workers are stopped by now.  Looked for where the slots made them, the temporary folder
+    of a process started now (``TMPDIR`` as it is set; this process's own may have been fixed before)."""
+    from ..sandbox.zygote import sweep_orphans
+
+    folder = os.environ.get("TMPDIR")
+    sweep_orphans(Path(folder) if folder and Path(folder).is_dir() else None)
 
 
 # ---------------------------------------------------------------------------------------------- run_batch's steps

@@ -46,7 +46,7 @@ from ..errors import GraderFault, SandboxError
 from . import users
 from .launch import ForkConfig, Limits, SandboxMode, prepare_fork, prepare_zygote, renew_home, sandbox_mode
 
-__all__ = ["Zygote", "ForkedProcess", "warm_modules"]
+__all__ = ["Zygote", "ForkedProcess", "warm_modules", "SLOT_PREFIX", "sweep_orphans"]
 
 #: the project's packages: never preloaded (the zygote cannot see them, except the probes it imports itself)
 _PROJECT = ("grader", "checks", "probes", "reference", "student_template", "tests", "tools")
@@ -107,6 +107,50 @@ class ForkedProcess:
             self.pidfd = -1
 
 
+#: the staging folders of warm processes: ``grader-slot-<pid of the process that made it>-<random>``
+SLOT_PREFIX = "grader-slot-"
+
+
+def _owner(folder: Path) -> int | None:
+    pid, _, token = folder.name[len(SLOT_PREFIX):].partition("-")
+    return int(pid) if pid.isdigit() and token else None
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process
+        return True
+    return True
+
+
+def sweep_orphans(folder: Path | None = None) -> list[Path]:
+    """Remove the staging folders in ``folder`` (the temporary folder) whose process is gone without removing them
+    (ended by SIGKILL, say, before its clean-up could run): each batch does at its end, each warm process before it
+    makes its own.  A folder of a process still running, of another user, or of another name is left alone.  The
+    folders removed."""
+    root = Path(folder) if folder is not None else Path(tempfile.gettempdir())
+    removed = []
+    try:
+        candidates = sorted(root.glob(f"{SLOT_PREFIX}*"))
+    except OSError:
+        return removed
+    for path in candidates:
+        pid = _owner(path)
+        if pid is None or _alive(pid):
+            continue
+        try:
+            if path.is_symlink() or not path.is_dir() or path.stat().st_uid != os.getuid():
+                continue
+        except OSError:
+            continue
+        shutil.rmtree(path, ignore_errors=True)
+        removed.append(path)
+    return removed
+
+
 class Zygote:
     """The warm process of one slot.  ``start`` it once; ``prepare`` and ``fork`` a worker per student (``Child``
     does, given ``zygote=``); ``sweep`` after each; ``close`` at the end.  Not thread-safe: one slot, one
@@ -119,7 +163,7 @@ class Zygote:
         self.preload = list(preload)
         self.python = python
         # named now, made by ``start``: whatever interrupts the making (a stop's signal), ``close`` removes it
-        self.staging = Path(tempfile.gettempdir()) / f"grader-slot-{secrets.token_hex(8)}"
+        self.staging = Path(tempfile.gettempdir()) / f"{SLOT_PREFIX}{os.getpid()}-{secrets.token_hex(8)}"
         self._made = False
         self.info: dict = {}
         self.starts = 0  # warm processes started (1 unless one died)
@@ -140,6 +184,7 @@ class Zygote:
         """Start the warm process and wait until it imported everything; raises ``SandboxError`` when it cannot."""
         self._stop()
         if not self._made:
+            sweep_orphans(self.staging.parent)
             self.staging.mkdir(mode=0o700)  # a new folder, as mkdtemp makes one, then readable by the sandbox
             self._made = True
             os.chmod(self.staging, 0o755)
