@@ -131,8 +131,10 @@ def sweep_orphans(folder: Path | None = None) -> list[Path]:
     (ended by SIGKILL, say, before its clean-up could run): each batch does at its end, each warm process before it
     makes its own.  A folder of a process still running, of another user, or of another name is left alone.  The
     folders removed."""
-    root = Path(folder) if folder is not None else Path(tempfile.gettempdir())
     removed = []
+    if os.name != "posix":  # no warm processes there, and os.kill(pid, 0) would end the process it names
+        return removed
+    root = Path(folder) if folder is not None else Path(tempfile.gettempdir())
     try:
         candidates = sorted(root.glob(f"{SLOT_PREFIX}*"))
     except OSError:
