@@ -35,6 +35,14 @@ KNOWN_DIVERGENT: dict[tuple[str, str], str] = {
         "the reference's answer to the student's fixed case",
 }
 
+@pytest.fixture(autouse=True)
+def strict(monkeypatch):
+    """A defect of the diagnosis engine fails the test instead of naming no cause (imported by the engine's tests)."""
+    import grader.diagnosis as engine
+
+    monkeypatch.setattr(engine, "STRICT", True)
+
+
 @pytest.fixture(scope="session")
 def answer_key():
     from grader.kit import record_key
@@ -247,6 +255,20 @@ def assert_named_failure(mistake, report):
                   and r.check_id not in (mistake.check, *mistake.also)]
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"
     return target
+
+
+def assert_told_alike(mistake, dest, kit_oracle, deferred_ids, zygote):
+    """``mistake`` planted in a copy of the reference at ``dest`` and graded as ``grade batch`` grades, live and from
+    the kit's answer key: the kit gives the same verdicts (and the same cause or none), and live ``mistake.check``
+    fails with the mistake's diagnosis and message (``assert_named_failure``).  The submission and the two
+    reports."""
+    from .submissions import build_planted
+
+    submission = build_planted(mistake, dest)
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=zygote)
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    assert_named_failure(mistake, live)
+    return submission, live, kit
 
 
 def engine_mistakes(path) -> tuple[list, dict[str, str]]:

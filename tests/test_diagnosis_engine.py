@@ -17,35 +17,25 @@ import numpy as np
 import pytest
 
 import grader.diagnosis as engine
-from checks._diagnoses import families_of, family_of
-from grader import grade_problem
+from checks._diagnoses import family_of
 from grader import strategies as st
 from grader.checking import EXACT, CheckFailure, Tol, assert_close
 from grader.context import Context, explained
 from grader.diagnosis import Declaration, Evidence, explain
-from grader.results import Status
-from grader.workers import Forked
 
 from .kit_support import (  # noqa: F401 (fixtures)
-    SEED,
-    assert_named_failure,
-    assert_same_verdicts,
-    grade_live_and_kit,
+    assert_no_catalogue_names_it,
+    assert_told_alike,
+    strict,
     warm_slot,
 )
-from .submissions import Planted, build_planted
+from .submissions import Planted
 
 ROOT = Path(__file__).resolve().parents[1]
 #: the families of the engine's grammar
 GRAMMAR = {"transpose", "inverse", "sign", "order", "scale", "frame", "missing_term", "extra_term",
            "ignored_argument", "initial_state", "time_shift", "offset", "step_size", "event", "state_row",
            "precision"}
-
-
-@pytest.fixture(autouse=True)
-def strict(monkeypatch):
-    """A defect of the engine fails the test instead of naming no cause."""
-    monkeypatch.setattr(engine, "STRICT", True)
 
 
 @pytest.fixture(autouse=True)
@@ -502,12 +492,5 @@ def test_every_family_of_the_grammar_has_its_mistake():
 @pytest.mark.parametrize("mistake", DEVELOPMENT, ids=lambda m: m.name)
 def test_the_engine_names_a_mistake_no_catalogue_lists(mistake, tmp_path, kit_oracle, deferred_ids, slot,
                                                        monkeypatch):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_named_failure(mistake, live)
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    monkeypatch.setattr(engine, "ENABLED", False)  # no catalogue names the cause (a shape, say, is not a cause)
-    off = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
-    unexplained = {r.check_id: r for r in off.results}[mistake.check]
-    assert unexplained.status is Status.FAILED, unexplained.message
-    assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis
+    submission, _, _ = assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)  # (a shape, say, is not a cause)

@@ -14,7 +14,6 @@ does, and nothing where more than two do.
 import numpy as np
 import pytest
 
-import grader.diagnosis as engine
 from checks._diagnoses import DIAGNOSES
 from grader.diagnosis import engine as explaining
 from grader.diagnosis.evidence import Hypothesis
@@ -22,18 +21,10 @@ from grader.diagnosis.grammar import EQUIVALENCES, equivalents, kinds_of, output
 from grader.diagnosis.scene import Budget
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
-    assert_same_verdicts,
-    grade_live_and_kit,
+    assert_told_alike,
     warm_slot,
 )
-from tests.submissions import Planted, build_planted
-
-
-@pytest.fixture(autouse=True)
-def strict(monkeypatch):
-    """A defect of the engine fails the test instead of naming no cause."""
-    monkeypatch.setattr(engine, "STRICT", True)
+from tests.submissions import Planted
 
 
 def turn(axis, angle):
@@ -192,7 +183,4 @@ def slot():
 @pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
 def test_a_planted_mistake_is_told_with_every_family_that_reproduces_it(mistake, tmp_path, kit_oracle,
                                                                         deferred_ids, slot):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_named_failure(mistake, live)
+    assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)

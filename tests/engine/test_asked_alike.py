@@ -21,13 +21,11 @@ from grader.diagnosis.engine import _asked_alike
 from grader.diagnosis.evidence import Evidence, Source
 
 from ..kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
     assert_no_catalogue_names_it,
-    assert_same_verdicts,
-    grade_live_and_kit,
+    assert_told_alike,
     warm_slot,
 )
-from ..submissions import Planted, build_planted
+from ..submissions import Planted
 
 #: one factor of one entry of the Jacobian left out (cos(phi) in d z / d phi)
 FACTOR_LEFT_OUT = Planted(
@@ -44,10 +42,7 @@ def slot():
 def test_a_jacobian_judged_against_the_students_own_chain_is_explained(tmp_path, kit_oracle, deferred_ids, slot,
                                                                         monkeypatch):
     mistake = FACTOR_LEFT_OUT
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_named_failure(mistake, live)
+    submission, _, _ = assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
 
 

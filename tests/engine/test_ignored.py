@@ -21,13 +21,11 @@ from grader.diagnosis import Declaration, Evidence, explain
 from grader.diagnosis.grammar import ignore_candidates, moved, perturbed
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
-    assert_same_verdicts,
-    grade_live_and_kit,
+    assert_told_alike,
     warm_slot,
 )
 from tests.engine.stand_ins import StandInChild, StandInOracle
-from tests.submissions import Planted, build_planted
+from tests.submissions import Planted
 
 #: problem 7's body angular velocity with A_CI left out, unskew(dA_IC): the value does not follow the rotation A_IC
 #: (the test of an ignored argument turns it), and the formula tier reproduces it with a factor left out
@@ -39,12 +37,6 @@ OMEGA_WITHOUT_ROTATION = Planted(
 MISTAKES = [OMEGA_WITHOUT_ROTATION]
 
 
-@pytest.fixture(autouse=True)
-def strict(monkeypatch):
-    """A defect of the engine fails the test instead of naming no cause."""
-    monkeypatch.setattr(engine, "STRICT", True)
-
-
 @pytest.fixture(scope="module")
 def slot():
     yield from warm_slot(sorted({m.problem for m in MISTAKES}))
@@ -52,10 +44,7 @@ def slot():
 
 @pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
 def test_an_ignored_rotation_is_told_beside_its_rival(mistake, tmp_path, kit_oracle, deferred_ids, slot):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_named_failure(mistake, live)
+    assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
 
 
 # ------------------------------------------------------------------------------------------ the changes

