@@ -87,7 +87,11 @@ def _set_mistakes(args):
     A_IC, _, A_IX, X_v, X_r = args
     ignored = ("The components are given in the coordinate system X: convert them to C first, "
                "C_v = A_IC.T @ A_IX @ X_v.")
+    own = ("Without a coordinate system X, set_vector(v) and set_offset(r) take components in C itself: store "
+           "them as they are, C_v = v.")
     return {
+        "C_v_own": [Mistake("wrong_frame", A_IC.T @ X_v, own)],
+        "C_r_CO_own": [Mistake("wrong_frame", A_IC.T @ X_r, own)],
         "C_v": [Mistake("ignored_frame", X_v, ignored),
                 Mistake("transpose", A_IX.T @ A_IC @ X_v, TRANSPOSE_HINT + " C_v = A_CI @ A_IX @ X_v = "
                         "A_IC.T @ A_IX @ X_v.")],
@@ -96,12 +100,14 @@ def _set_mistakes(args):
     }
 
 
-@check(2, title="set_vector(v, X) and set_offset(r, X) take components in another coordinate system X (random "
-       "values)", stage=STAGE_RANDOM, group="set_in_other_frame")
+@check(2, title="set_vector(v, X) and set_offset(r, X) take components in another coordinate system X, and in C "
+       "itself without X (random values)", stage=STAGE_RANDOM, group="set_in_other_frame")
 def check_set_in_other_frame(ctx):
     def compare(got, expected, args):
         _assert_entries(got, expected, ("C_v", "C_r_CO", "I_v", "I_r_IO"), _set_mistakes(args),
                         "after v.set_vector(X_v, X) and v.set_offset(X_r, X)")
+        _assert_entries(got, expected, ("C_v_own", "C_r_CO_own"), _set_mistakes(args),
+                        "after w.set_vector(X_v) and w.set_offset(X_r), without X")
 
     ctx.student(p11.set_in, EXAMPLE_MOVE[0], EXAMPLE_MOVE[1], *EXAMPLE_MOVE[4:], EXAMPLE_MOVE[2])
     ctx.compare_random(

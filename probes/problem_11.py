@@ -43,16 +43,22 @@ def moved(pkg, A_IC, I_r_IC, C_v, C_r_CO, A_new, I_r_new):
 
 
 @probe(
-    returns=Dict({"C_v": Arr(3), "C_r_CO": Arr(3), "I_v": Arr(3), "I_r_IO": Arr(3)}),
+    returns=Dict({"C_v": Arr(3), "C_r_CO": Arr(3), "I_v": Arr(3), "I_r_IO": Arr(3), "C_v_own": Arr(3),
+                  "C_r_CO_own": Arr(3)}),
     says="the bound vector after set_vector and set_offset",
     args=("rotation", "vector", "rotation", "vector", "vector"),
     rotation=0,
 )
 def set_in(pkg, A_IC, I_r_IC, A_IX, X_v, X_r):
-    """The vector after ``set_vector(X_v, X)`` and ``set_offset(X_r, X)`` with another coordinate system X."""
-    steps = [("v.set_vector", [X_v, "@X"]), ("v.set_offset", [X_r, "@X"])]
-    read = [("C_v", "v.C_v"), ("C_r_CO", "v.C_r_CO"), ("I_v", "v.I_v"), ("I_r_IO", "v.I_r_IO")]
-    return run(pkg, _objects(A_IC, I_r_IC, [0, 0, 0], [0, 0, 0], A_IX), steps, read=read)["final"]
+    """The vector after ``set_vector(X_v, X)`` and ``set_offset(X_r, X)`` with another coordinate system X, and
+    a second vector ``w`` on C after ``set_vector(X_v)`` and ``set_offset(X_r)`` without one (components in C
+    itself: ``C_v_own``, ``C_r_CO_own``)."""
+    objects = [*_objects(A_IC, I_r_IC, [0, 0, 0], [0, 0, 0], A_IX), ("w", VECTOR, {"C": "@C"})]
+    steps = [("v.set_vector", [X_v, "@X"]), ("v.set_offset", [X_r, "@X"]), ("w.set_vector", [X_v]),
+             ("w.set_offset", [X_r])]
+    read = [("C_v", "v.C_v"), ("C_r_CO", "v.C_r_CO"), ("I_v", "v.I_v"), ("I_r_IO", "v.I_r_IO"),
+            ("C_v_own", "w.C_v"), ("C_r_CO_own", "w.C_r_CO")]
+    return run(pkg, objects, steps, read=read)["final"]
 
 
 @probe(
