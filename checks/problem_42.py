@@ -148,7 +148,7 @@ def _flight(got, expected, v0, drag, bands, g=None):
 
 @check(3, title="throw(): the sheet's ball (v0 = 10 m/s, k = 0.1 1/m) peaks and lands at the reference's times "
        "(within 2e-3 s) and heights; the landing ends the run and is not the launch; thrown on the Moon it follows "
-       "its g", stage=STAGE_VALUES, group="events")
+       "its g, and it stops at its t_max", stage=STAGE_VALUES, group="events")
 def check_flight(ctx):
     expected = ctx.reference(p42.throw, V0, DRAG)
     got = ctx.student(p42.throw, V0, DRAG, timeout=20)
@@ -157,6 +157,7 @@ def check_flight(ctx):
                           reference=[("height", *subsample(expected["t"], np.asarray(expected["y"])[:, 0]))]))
     _flight(got, expected, V0, DRAG, SHEET_BANDS)
     _assert_moon(ctx, expected)
+    _assert_cut_short(ctx)
 
 
 #: the sheet's ball thrown on the Moon (g = 1.62 m/s^2, problem 2's Moon): it lands at 7.03 s (the sheet's at 1.69
@@ -177,6 +178,23 @@ def _assert_moon(ctx, sheet):
                      TIME, [Mistake("typed_numbers", sheet["t_land"], MOON_HINT)],
                      context="(the sheet's ball on the Moon, against a tight reference run)")
     _flight(got, expected, V0, DRAG, RANDOM_BANDS, g=MOON)
+
+
+#: a t_max [s] after the sheet's ball's apex (0.80 s) and before its landing (1.69 s)
+CUT = 1.2
+
+
+def _assert_cut_short(ctx):
+    """The sheet's ball thrown with ``t_max = CUT`` stops there in the air: no landing, the run ends at CUT."""
+    expected = ctx.reference(p42.cut_short, V0, DRAG, CUT)
+    got = ctx.student(p42.cut_short, V0, DRAG, CUT, timeout=20)
+    what = f"throw(v0 = {V0:g}, drag = {DRAG:g}, t_max = {CUT:g})"
+    if got["t_land"] is not None or not close(got["t_end"], expected["t_end"], TIME):
+        landed = "" if got["t_land"] is None else f" and lands at t = {got['t_land']:.4f} s"
+        fail(f"{what}: the flight must end at t_max = {CUT:g} s with the ball still in the air (t_land None); your "
+             f"run ends at t = {got['t_end']:.4f} s{landed}.",
+             "Integrate over the span (0, t_max) that throw is given: solve_ivp(ball_ode, (0.0, t_max), ...).",
+             "ignored_argument")
 
 
 @st.composite

@@ -78,6 +78,19 @@ def throw(pkg, v0, drag, g=None, variant=None):
     return {key: _optional(run.get(key)) for key in ("t_apex", "height_apex", "t_land", "v_land")} | {"t": t, "y": y}
 
 
+@probe(returns=Dict({"t_land": Maybe(Num()), "t_end": Num()}), says="throw({0}, {1}, t_max={2})")
+def cut_short(pkg, v0, drag, t_max):
+    """``throw(v0, drag, t_max=t_max)`` with a ``t_max`` before the landing: the landing time (None where the
+    ball has not landed) and the run's last time."""
+    run = module(pkg, "problem_42").throw(float(v0), float(drag), t_max=float(t_max))
+    if not isinstance(run, dict):
+        raise ValueError(f"throw must return a dict, got {str(run)[:200]}")
+    t = np.asarray(run.get("t"), dtype=float).reshape(-1)
+    if not t.size:
+        raise ValueError("throw: 't' holds no time")
+    return {"t_land": _optional(run.get("t_land")), "t_end": float(t[-1])}
+
+
 @probe(reference_only=True)
 def sheet_ball(pkg):
     """The sheet's ball ``(v0, drag, g)``: the values ``throw`` runs with where it is not given them (the diagnosis
