@@ -32,7 +32,7 @@ from grader.checking import (
 )
 from probes import problem_04 as p04
 
-from ._mujoco import DIRECTION, EARTH, HDPE, LENGTH, POSITION, hinges, model_of, student_once
+from ._mujoco import ALUMINIUM, DIRECTION, EARTH, HDPE, LENGTH, MOON, POSITION, hinges, model_of, student_once
 
 TITLE = "A four-bar linkage: assembly and balance"
 MANUAL = {
@@ -311,8 +311,8 @@ def check_balanced(ctx):
 # ------------------------------------------------------------------------------------ the MuJoCo model
 
 
-def _model(ctx, q, what, point=FIXED_POINT):
-    return model_of(student_once(ctx, p04.model, HDPE, EARTH, q, point), what)
+def _model(ctx, q, what, point=FIXED_POINT, density=HDPE, gravity=EARTH):
+    return model_of(student_once(ctx, p04.model, density, gravity, q, point), what)
 
 
 def _along(desc, what):
@@ -365,17 +365,51 @@ def _assert_structure(ctx, point):
 
 
 @check(2, title="four_bar(...): released at rest in an unbalanced configuration, MuJoCo's acceleration along the "
-       "linkage's motion is the reference's", stage=STAGE_VALUES, group="model")
+       "linkage's motion is the reference's, of HDPE on the Earth and of aluminium on the Moon", stage=STAGE_VALUES,
+       group="model")
 def check_model_dynamics(ctx):
     q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, FIXED_POINT)["q"]
-    expected = ctx.reference(p04.tangent_acceleration, q, HDPE, EARTH)
-    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()})"
-    alpha = _along(_model(ctx, q, what), what)
-    assert_close(alpha, expected["alpha"], f"the acceleration along the linkage's motion in {what}", ALONG,
-                 mistakes=[Mistake("missing_gravity", 0.0, "Nothing accelerates the linkage: gravity must be "
-                                   "(0, -g, 0), in the plane of the motion.")],
+    earth = _assert_alpha(ctx, q, HDPE, EARTH)
+    moon = _assert_alpha(ctx, q, OTHER_DENSITY, OTHER_GRAVITY)
+    _assert_density(earth, moon, q)
+
+
+#: the model is also built of another material under another gravity: the acceleration at rest follows g (the
+#: density cancels from it), the links' masses follow the density
+OTHER_DENSITY, OTHER_GRAVITY = ALUMINIUM, MOON
+#: the moving bodies' total masses of two densities are in the densities' ratio (MuJoCo's masses are exact)
+MASS_RATIO = Tol("ratio of the links' masses of two densities", 1e-6)
+
+
+def _assert_alpha(ctx, q, density, gravity):
+    """The acceleration along the linkage's motion of the model of ``density`` under ``gravity`` is the
+    reference's; returns the student's model description."""
+    expected = ctx.reference(p04.tangent_acceleration, q, density, gravity)
+    what = f"four_bar({density:g}, {gravity:g}, q = {np.round(q, 6).tolist()})"
+    desc = _model(ctx, q, what, density=density, gravity=gravity)
+    mistakes = [Mistake("missing_gravity", 0.0, "Nothing accelerates the linkage: gravity must be (0, -g, 0), in "
+                        "the plane of the motion.")]
+    if gravity != EARTH:
+        sheet = ctx.reference(p04.tangent_acceleration, q, density, EARTH)["alpha"]
+        mistakes.append(Mistake("ignored_argument", sheet, "The model's gravity is the Earth's 9.81 whatever gravity "
+                                "four_bar is given: write <option gravity=\"0 -g 0\"/> with the g passed in."))
+    assert_close(_along(desc, what), expected["alpha"], f"the acceleration along the linkage's motion in {what}",
+                 ALONG, mistakes=mistakes,
                  note="alpha = t.T qfrc_smooth / (t.T M t) with t the unit null vector of the constraint Jacobian: "
                       "exact even though MuJoCo's soft constraint lets qacc itself differ from alpha t.")
+    return desc
+
+
+def _assert_density(earth, moon, q):
+    """The links built of ``OTHER_DENSITY`` weigh the ratio of the densities more than those of HDPE."""
+    masses = [sum(b["mass"] for b in desc["bodies"]) for desc in (earth, moon)]
+    what = f"four_bar({OTHER_DENSITY:g}, {OTHER_GRAVITY:g}, q = {np.round(q, 6).tolist()})"
+    if masses[0] <= 0.0:
+        fail(f"four_bar({HDPE:g}, {EARTH:g}, ...): the links have no mass.", "Give each link's geom the density "
+             "passed in: <geom ... density=\"...\"/>.")
+    assert_close(masses[1] / masses[0], OTHER_DENSITY / HDPE, f"the links' total mass in {what} over that of HDPE",
+                 MASS_RATIO, mistakes=[Mistake("ignored_argument", 1.0, "The links weigh the same whatever density "
+                                               "four_bar is given: give each link's geom the density passed in.")])
 
 
 @check(1, title="4(b): in your balanced configuration your MuJoCo model stays at rest (no acceleration along the "
