@@ -21,17 +21,13 @@ from pathlib import Path
 
 import numpy as np
 
-from grader.context import Context
 from grader.gate import probe_function
-from grader.loader import cleanup, materialize
-from grader.oracle import LiveOracle, call_key
-from grader.runner import _run_checks, problem_module
-from grader.sandbox import Child
+from grader.oracle import call_key
 from probes import name_of
 from probes._codec import decode, encode
 
-from .kit_support import SEED
 from .submissions import ROOT
+from .wrapped import grade_wrapped
 
 __all__ = ["ProbeCalls", "Recorder", "probe_calls", "instrumented", "parameter_values", "gaps"]
 
@@ -59,15 +55,7 @@ class ProbeCalls:
 def probe_calls(problem: int, reference: Path, zygote) -> list[tuple[str, tuple]]:
     """Every ``(probe, args)`` the checks of ``problem`` send to the student's package while ``reference`` (a copy
     of the reference) is graded (live reference, the suite's seed)."""
-    submission = materialize(reference, zygote.staging)
-    try:
-        with Child(submission.path, zygote=zygote) as child:
-            child.start()
-            recorder = ProbeCalls(child)
-            ctx = Context(problem, recorder, submission.answers, submission.answers_error, SEED, LiveOracle())
-            results = _run_checks(problem_module(problem), ctx, problem)
-    finally:
-        cleanup(submission)
+    results, recorder = grade_wrapped(problem, reference, zygote, ProbeCalls)
     failed = [r.check_id for r in results if not r.passed]
     assert not failed, f"the reference fails {failed}: its calls are no measure"
     return recorder.calls

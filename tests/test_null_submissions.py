@@ -22,17 +22,14 @@ import pytest
 
 from checks._effects import same
 from grader.problems import problems
-from grader.context import Context
 from grader.errors import StudentFault
-from grader.loader import cleanup, materialize
-from grader.oracle import LiveOracle, call_key
+from grader.oracle import call_key
 from grader.results import Status
-from grader.runner import _run_checks, problem_module
-from grader.sandbox import Child
 
-from .kit_support import SEED, warm_slot
+from .kit_support import warm_slot
 from .nulls import FILLS, build_null
 from .submissions import ROOT, copy_reference
+from .wrapped import grade_wrapped
 
 PROBLEMS = [p.number for p in problems()]
 
@@ -61,17 +58,7 @@ class RecordingChild:
 
 def grade_recorded(problem: int, source, zygote):
     """The results of one problem of a submission (live reference) and the student values each check saw."""
-    module = problem_module(problem)
-    submission = materialize(source, zygote.staging)
-    try:
-        with Child(submission.path, zygote=zygote) as child:
-            child.start()
-            recorder = RecordingChild(child)
-            ctx = Context(problem, recorder, submission.answers, submission.answers_error, SEED, LiveOracle())
-            recorder.ctx = ctx
-            results = _run_checks(module, ctx, problem)
-    finally:
-        cleanup(submission)
+    results, recorder = grade_wrapped(problem, source, zygote, RecordingChild)
     return results, recorder.calls
 
 
