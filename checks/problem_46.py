@@ -318,11 +318,12 @@ def _run(ctx, baumgarte):
     return runs[baumgarte], expected
 
 
-def _violation(run, what):
+def _violation(run, what, anchor=ANCHOR, wire_length=WIRE_LENGTH):
+    """The times after the event and the wire's stretch ``|anchor - I_r_E| - wire_length`` at them."""
     t = run_array(run, "t", None, what)
     x = run_array(run, "x", (t.size, 3), what)
     after = t >= run["t_event"]
-    return t[after], np.linalg.norm(ANCHOR - x[after], axis=1) - WIRE_LENGTH
+    return t[after], np.linalg.norm(anchor - x[after], axis=1) - wire_length
 
 
 def _event(got, what, expected):
@@ -353,7 +354,7 @@ def _aligned(got, expected, margin=0.01):
 
 @check(3, title="the run: the wire becomes taut at t = 0.933 s (within 2e-3 s of a tight run), q+ = q-, the impact "
        "leaves J qd+ = 0 with Lam > 0, and q+, qd+ match within the erratum's bands; with a wire hung elsewhere, the "
-       "event and q+ follow", stage=STAGE_VALUES, group="wire")
+       "event and q+ follow and the run stays on that wire", stage=STAGE_VALUES, group="wire")
 def check_event_and_impact(ctx):
     got, expected = _run(ctx, True)
     what = "simulate(trajectory, baumgarte=True)"
@@ -394,6 +395,20 @@ def _assert_other_wire(ctx):
     assert_close(q_plus, q_minus, f"q_plus of {what}", EXACT, context="(an impact changes velocities only)")
     assert_close(q_plus, expected["q_plus"], f"q_plus of {what}", Q_PLUS, context="(a tight reference run)",
                  note=BANDS_NOTE)
+    _assert_taut(got, what, anchor, length)
+
+
+def _assert_taut(run, what, anchor, wire_length):
+    """After the impact the run holds the end effector on the wire it was given, within ``TAUT``."""
+    t, violation = _violation(run, what, anchor, wire_length)
+    if t.size and np.abs(violation).max() > TAUT.atol:
+        i = int(np.argmax(np.abs(violation) > TAUT.atol))
+        fail(f"{what}: after the impact the end effector leaves the wire it was given: |anchor - I_r_E| - "
+             f"wire_length = {violation[i]:.3g} m at t = {t[i]:.4g} s (with Baumgarte stabilisation it stays "
+             f"within {TAUT.atol:g} m).",
+             "The constrained phase holds the end effector on the wire passed to simulate: every function of the "
+             "constrained phase (constrained_ode, constraint_terms) needs that anchor and wire_length, not the "
+             "sheet's.")
 
 
 @check(3, title="the constrained motion after the impact: constrained_ode honours baumgarte and keeps nothing "
