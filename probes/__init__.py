@@ -36,9 +36,11 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   keep their relations).
 """
 
+import contextlib
 import importlib
+import threading
 
-__all__ = ["probe", "module", "lookup", "name_of", "ProbeLookupError"]
+__all__ = ["probe", "module", "lookup", "name_of", "remembered", "fresh", "ProbeLookupError"]
 
 #: the keywords a probe may declare
 DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw")
@@ -66,6 +68,31 @@ def probe(func=None, *, returns=None, says="", reference_only=False, **declared)
         return f
 
     return mark(func) if func is not None else mark
+
+
+_FRESH = threading.local()
+
+
+def remembered(store: dict, key, make):
+    """``store[key]``, made by ``make()`` the first time: what a probe computes once per package and process (a
+    symbolic answer simplified and lambdified).  Within ``fresh()`` it is made anew and not kept."""
+    if getattr(_FRESH, "on", False):
+        return make()
+    if key not in store:
+        store[key] = make()
+    return store[key]
+
+
+@contextlib.contextmanager
+def fresh():
+    """Within: the probes of this thread remember nothing (``remembered``), for a package whose functions' code
+    changes between calls (the diagnosis engine's mutants of the reference)."""
+    before = getattr(_FRESH, "on", False)
+    _FRESH.on = True
+    try:
+        yield
+    finally:
+        _FRESH.on = before
 
 
 def module(package, name):

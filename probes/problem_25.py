@@ -3,7 +3,7 @@ contacts."""
 
 import numpy as np
 
-from . import _trees, module, probe
+from . import _trees, module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
 from ._trees import OUTLINE, POSES
 
@@ -32,7 +32,7 @@ def tree_poses(pkg, description, q):
 def _symbolic(pkg):
     """``cog_positions_symbolic()`` as numeric functions of ``(alpha, gamma)`` (computed once per package), or the
     symbols other than ``q`` that the expressions contain."""
-    if pkg.__name__ not in _SYMBOLIC:
+    def make():
         import sympy as sp
 
         q, x, J = module(pkg, "problem_25").cog_positions_symbolic()
@@ -40,8 +40,9 @@ def _symbolic(pkg):
         x, J = sp.Matrix(x), sp.Matrix(J)
         free = sorted(str(s) for s in (x.free_symbols | J.free_symbols) - set(symbols))
         functions = None if free else (sp.lambdify(symbols, x, "numpy"), sp.lambdify(symbols, J, "numpy"))
-        _SYMBOLIC[pkg.__name__] = (functions, free, [str(s) for s in symbols])
-    return _SYMBOLIC[pkg.__name__]
+        return functions, free, [str(s) for s in symbols]
+
+    return remembered(_SYMBOLIC, pkg.__name__, make)
 
 
 @probe(

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from . import module, probe
+from . import module, probe, remembered
 from ._forms import Arr, Dict, Items, Seq, Text
 
 #: the entries of a joint-function dict, vectors as 3 x 1 and S, R as 3 x nq
@@ -13,8 +13,7 @@ _FUNCTIONS = {}
 def _functions(pkg, kind):
     """``({key: numeric function of (q, qd, qdd[, r])}, {key: what is wrong with it})`` for the joint function
     ``<kind>_joint_function()`` of the package (computed once per package and kind)."""
-    key = (pkg.__name__, kind)
-    if key not in _FUNCTIONS:
+    def make():
         import sympy as sp
 
         result = getattr(module(pkg, "problem_35"), f"{kind}_joint_function")()
@@ -32,8 +31,9 @@ def _functions(pkg, kind):
                 problems[name] = "contains the symbols " + ", ".join(sorted(map(str, free)))
                 continue
             functions[name] = sp.lambdify(symbols, expr, "numpy")
-        _FUNCTIONS[key] = (functions, problems)
-    return _FUNCTIONS[key]
+        return functions, problems
+
+    return remembered(_FUNCTIONS, (pkg.__name__, kind), make)
 
 
 @probe(

@@ -3,7 +3,7 @@ grader sends (the grader never sees the expressions themselves)."""
 
 import numpy as np
 
-from . import module, probe
+from . import module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
 
 #: the symbols the answer may use
@@ -22,11 +22,12 @@ def _answer(pkg):
     import sympy as sp
 
     p40 = module(pkg, "problem_40")
-    key = (pkg.__name__, id(p40))
-    if key not in _ANSWERS:
+
+    def make():
         M, f, g = p40.equations_of_motion_symbolic()
-        _ANSWERS[key] = {"M": sp.Matrix(M), "f": sp.Matrix(f), "g": sp.Matrix(g)}
-    return _ANSWERS[key]
+        return {"M": sp.Matrix(M), "f": sp.Matrix(f), "g": sp.Matrix(g)}
+
+    return remembered(_ANSWERS, (pkg.__name__, id(p40)), make)
 
 
 def _functions(pkg):
@@ -35,19 +36,17 @@ def _functions(pkg):
     import sympy as sp
 
     answer = _answer(pkg)
-    cache = ("functions", id(answer))
-    if cache not in _ANSWERS:
-        for key, matrix in answer.items():
-            if matrix.shape not in (SHAPES[key], (SHAPES[key][0], 1), (1, SHAPES[key][0])) or (
-                    key == "M" and matrix.shape != (2, 2)):
-                return {"problem": f"{key} has shape {matrix.shape}, expected {SHAPES[key]}"}
-            unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
-            if unknown:
-                return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
-        _ANSWERS[cache] = {key: sp.lambdify([sp.Symbol(name) for name in NAMES],
-                                            matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
-                           for key, matrix in answer.items()}
-    return _ANSWERS[cache]
+    for key, matrix in answer.items():
+        if matrix.shape not in (SHAPES[key], (SHAPES[key][0], 1), (1, SHAPES[key][0])) or (
+                key == "M" and matrix.shape != (2, 2)):
+            return {"problem": f"{key} has shape {matrix.shape}, expected {SHAPES[key]}"}
+        unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
+        if unknown:
+            return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
+    return remembered(_ANSWERS, ("functions", id(answer)), lambda: {
+        key: sp.lambdify([sp.Symbol(name) for name in NAMES],
+                         matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
+        for key, matrix in answer.items()})
 
 
 @probe(

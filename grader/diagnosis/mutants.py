@@ -927,9 +927,13 @@ def _probe(probe):
 
 
 def _call(package, probe, args, path):
+    """The value at ``path`` of ``probe(*args)`` on the private package, made anew by the probe (``probes.fresh``:
+    a probe that keeps what it computed once per package would give the reference's value for every mutant)."""
+    from probes import fresh
     from probes._codec import decode, encode
 
-    value = decode(encode(_probe(probe)(package, *copy.deepcopy(tuple(args)))))
+    with fresh():
+        value = decode(encode(_probe(probe)(package, *copy.deepcopy(tuple(args)))))
     return array_of(at(value, path))
 
 
