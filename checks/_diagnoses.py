@@ -216,6 +216,8 @@ _TABLE = (
        "returned the state derivative in the wrong order"),
     _D("rotation_side", "order", "a rotation multiplied from the wrong side", "multiplied from the wrong side"),
     _D("factor_order", "order", "the factors of a product in the wrong order", "multiplied factors in the wrong order"),
+    _D("sibling_matrix", "order", "a matrix where its sibling belongs (J_R for J_S)",
+       "used a matrix where its sibling belongs"),
     _D("sin_cos_swapped", "order", "sin and cos swapped", "swapped sin and cos"),
     _D("beta_sin_cos", "order", "sin and cos of beta swapped", "swapped sin and cos of beta"),
     _D("phi_sin_cos", "order", "sin and cos of phi swapped", "swapped sin and cos of phi"),

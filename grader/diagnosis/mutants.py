@@ -282,6 +282,15 @@ SLIPS = {
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
     "rotated": ("wrong_frame", "a rotation in `{f}` is applied to one term of a sum only, not the whole sum"),
     "entry_sign": ("sign_flip", "one entry that `{f}` builds has the wrong sign"),
+    "ratio": ("ratio_inverted", "a ratio in `{f}` is upside down"),
+    "neighbours": ("factor_order", "two neighbouring factors of a product in `{f}` are multiplied in the wrong "
+                                   "order"),
+    "rotations": ("rotation_order", "two neighbouring rotations of a product in `{f}` are multiplied in the wrong "
+                                    "order"),
+    "interleaved": ("state_row", "`{f}` reads the parts of the state from alternate entries where they are its "
+                                 "halves"),
+    "siblings": ("sibling_matrix", "`{f}` reads a matrix where its sibling belongs (one of a pair such as J_R and "
+                                   "J_S)"),
 }
 
 
@@ -329,6 +338,8 @@ def _slips(node, parent):
             yield exchange, lambda n, i=i, j=j: _exchanged(n, "elts", i, j)
         if all(_reciprocal(e) for e in node.elts):
             yield "inverse", lambda n: _with(n, elts=[e.right for e in n.elts])
+        if isinstance(node.ctx, ast.Load) and _halves(node.elts):  # ``y[:3], y[3:]`` as ``y[::2], y[1::2]``
+            yield "interleaved", _interleaved
     elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
@@ -389,11 +400,20 @@ def _frames(a: str, b: str) -> bool:
     return first[frame] != second[frame] and all(_FRAME_PART.match(p) for p in (first[frame], second[frame]))
 
 
+def _siblings(a: str, b: str) -> bool:
+    """Two matrices of a pair by the course's notation: one capital letter names the matrix and its last part, one
+    capital letter, tells the two apart (``B_J_S`` and ``B_J_R``, ``S_J_S`` and ``S_J_R``)."""
+    first, second = a.split("_"), b.split("_")
+    return len(first) == len(second) >= 3 and first[:-1] == second[:-1] and first[-1] != second[-1] \
+        and len(first[-2]) == 1 and first[-2].isupper() \
+        and all(len(p) == 1 and p.isupper() for p in (first[-1], second[-1]))
+
+
 def _related(a: str, b: str) -> str | None:
-    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames" or None."""
+    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames", "siblings" or None."""
     if a == b:
         return None
-    return "rates" if _rates(a, b) else "frames" if _frames(a, b) else None
+    return "rates" if _rates(a, b) else "frames" if _frames(a, b) else "siblings" if _siblings(a, b) else None
 
 
 def _read_slips(node, names: frozenset, attributes: frozenset):
@@ -529,6 +549,22 @@ def _half(index) -> bool:
     return isinstance(index, ast.Slice) and index.step is None and (index.lower is None) != (index.upper is None)
 
 
+def _halves(entries: list) -> bool:
+    """Two reads of a run's state, its first half and its second (``y[:k], y[k:]``)."""
+    if len(entries) != 2 or not all(_state_read(e) and isinstance(e, ast.Subscript) for e in entries):
+        return False
+    first, second = (e.slice for e in entries)
+    return _half(first) and _half(second) and first.lower is None and second.upper is None \
+        and ast.dump(first.upper) == ast.dump(second.lower) and ast.dump(entries[0].value) == ast.dump(entries[1].value)
+
+
+def _interleaved(node):
+    """``y[:k], y[k:]`` as ``y[::2], y[1::2]``."""
+    first, second = node.elts
+    return _with(node, elts=[_with(first, slice=ast.Slice(None, None, ast.Constant(2))),
+                             _with(second, slice=ast.Slice(ast.Constant(1), None, ast.Constant(2)))])
+
+
 def _state_parts(function: ast.FunctionDef) -> set:
     """The names the function binds to parts of a run's state (``q, qd = y[:3], y[3:]``)."""
     found = set()
@@ -616,6 +652,21 @@ def _moved(node: ast.BinOp):
     return node
 
 
+def _chained(node) -> bool:
+    """A product of matrices (``A @ B``), the left operand of a longer one."""
+    return isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult)
+
+
+def _neighbours_exchanged(node: ast.BinOp):
+    """``A @ B @ C`` as ``A @ C @ B``: the two factors that meet at the product exchanged (the copy is changed in
+    place)."""
+    (left, lfield), (right, rfield) = _meeting(node)
+    a, b = getattr(left, lfield), getattr(right, rfield)
+    setattr(left, lfield, b)
+    setattr(right, rfield, a)
+    return node
+
+
 def _ends(node: ast.BinOp):
     """The first and the last factor of a product (``J.T`` and ``J`` of ``J.T @ I @ J``), with their holders."""
     return _edge(node, "left"), _edge(node, "right")
@@ -679,6 +730,7 @@ def _binop_slips(node: ast.BinOp):
     elif isinstance(op, ast.Div):
         yield "divides", lambda n: _with(n, op=ast.Mult())
         yield _dropped(node.right), lambda n: n.left
+        yield "ratio", lambda n: _with(n, left=n.right, right=n.left)  # ``12 / m`` as ``m / 12``
     elif isinstance(op, ast.MatMult):
         if _movable(node):
             yield "sides", _moved
@@ -686,6 +738,11 @@ def _binop_slips(node: ast.BinOp):
             yield "sides", lambda n: _flipped(n, _ends(n))
         # ``X.T @ X`` the other way round is ``X @ X.T``: the transpose on the wrong factor
         yield "sides" if _own_transpose(node) else "factors", lambda n: _with(n, left=n.right, right=n.left)
+        if _chained(node.left) and not _own_transpose(node):  # ``A @ B @ C`` as ``A @ C @ B``
+            (left, lfield), (right, rfield) = _meeting(node)
+            both = _ROTATION.match(_label(getattr(left, lfield)) or "-") and \
+                _ROTATION.match(_label(getattr(right, rfield)) or "-")
+            yield "rotations" if both else "neighbours", _neighbours_exchanged
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
