@@ -198,6 +198,11 @@ OPERATORS = [
      "second = 0.5 * (len(moments) - 2.0 * moments)", "problem_16.dimensions",
      [(2.0, 0.5, 0.6, 0.7), (0.5, 0.4, 0.5, 0.8)], ("cuboid",), "wrong_factor",
      "`principal_second_moments` divides by the number of entries where their sum belongs"),
+    ("a slip in a symbolic answer that its probe computes once per package", "p45.jacobian", "problem_45.py",
+     "y * sp.cos(phi) - x * sp.sin(phi) - d,", "y * sp.sin(phi) - x * sp.sin(phi) - d,", "problem_45.evaluate",
+     [("J", [dict(s=0.3, l=1.2, d=0.4, m=2.0, theta=0.5, phid=-1.0)]),
+      ("J", [dict(s=0.7, l=0.9, d=0.25, m=1.5, theta=0.8, phid=-0.5)])], (0,), "sin_cos_swapped",
+     "`impact_jacobian` takes sin where cos belongs"),
 ]
 
 
@@ -463,6 +468,46 @@ def offsets(dx, dy):
     """The offset of a hip from a stance foot."""
     # BEGIN SOLUTION problem 98
     return np.array([-dx, dy, 0.5 * dx])
+    # END SOLUTION
+
+
+def oscillation(m, k):
+    """The period and the angular frequency of a mass on a spring."""
+    # BEGIN SOLUTION problem 98
+    omega = np.sqrt(k / m)
+    return np.array([2.0 * np.pi / omega, omega])
+    # END SOLUTION
+
+
+def R1(a):
+    """(given)"""
+    return np.array([[1.0, 0.0, 0.0], [0.0, np.cos(a), -np.sin(a)], [0.0, np.sin(a), np.cos(a)]])
+
+
+def R3(a):
+    """(given)"""
+    return np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0.0, 0.0, 1.0]])
+
+
+def gimbal(a, b, v):
+    """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
+    # BEGIN SOLUTION problem 98
+    return R3(a) @ R1(b) @ R3(0.5 * b) @ v
+    # END SOLUTION
+
+
+class Link:
+    """A link's Jacobians in the course's notation (given)."""
+
+    def __init__(self, B_J_S, B_J_R):
+        self.B_J_S, self.B_J_R = B_J_S, B_J_R
+
+
+def link_rates(B_J_S, B_J_R, qd):
+    """``(B_v_B, 2 B_omega_B) = (B_J_S qd, 2 B_J_R qd)`` of a link."""
+    # BEGIN SOLUTION problem 98
+    link = Link(B_J_S, B_J_R)
+    return np.concatenate([link.B_J_S @ qd, 2.0 * link.B_J_R @ qd])
     # END SOLUTION
 '''
 
@@ -993,3 +1038,107 @@ finally:
     fired, wall = run.stdout.split()
     assert float(wall) > mutants.WAIT_FACTOR * 0.2  # it did wait for the core far longer than the wall-time bound
     assert fired == "False"
+
+
+# ------------------------------------------------------------------------------------------ ratios, neighbours, halves
+
+
+def test_a_ratio_upside_down_is_an_inverse_slip(made_up):
+    """``omega / (2 pi)`` where the period ``2 pi / omega`` belongs: a ratio turned upside down, not a product for
+    a division."""
+    def inverted(m, k):
+        omega = np.sqrt(k / m)
+        return np.array([omega / (2.0 * np.pi), omega])
+
+    names, found = names_of(made_up, "oscillation", inverted, [(2.0, 5.0), (0.7, 3.0)])
+    assert names == {"ratio_inverted"}, [(h.name, h.detail) for h in found]
+    assert any("a ratio in `oscillation` is upside down" in h.detail for h in found)
+
+
+def test_a_product_for_a_ratio_is_not_a_ratio_upside_down(made_up):
+    """The near miss: ``2 pi omega`` multiplies where the ratio divides; no ratio is upside down."""
+    def multiplied(m, k):
+        omega = np.sqrt(k / m)
+        return np.array([2.0 * np.pi * omega, omega])
+
+    names, found = names_of(made_up, "oscillation", multiplied, [(2.0, 5.0), (0.7, 3.0)])
+    assert names == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+
+
+GIMBALS = [(0.4, -0.7, V(0.3, 1.0, -0.5)), (1.2, 0.5, V(-0.8, 0.2, 0.6))]
+
+
+def test_two_neighbouring_rotations_exchanged_are_rotations_in_the_wrong_order(made_up):
+    """``R3(a) R3(b / 2) R1(b)``: the two inner rotations of a longer product exchanged (no exchange
+    of the operands of one ``@`` gives it)."""
+    def exchanged(a, b, v):
+        P = importlib.import_module(f"{made_up.__name__}.problem_98")
+        return P.R3(a) @ P.R3(0.5 * b) @ P.R1(b) @ v
+
+    names, found = names_of(made_up, "gimbal", exchanged, GIMBALS)
+    assert names and {DIAGNOSES[n].family for n in names} == {"order"}, [(h.name, h.detail) for h in found]
+    assert "rotation_order" in names, [(h.name, h.detail) for h in found]
+
+
+def test_a_product_of_rotations_reversed_is_no_neighbouring_exchange(made_up):
+    """The near miss: the whole product reversed is no exchange of two neighbours."""
+    def reversed_(a, b, v):
+        P = importlib.import_module(f"{made_up.__name__}.problem_98")
+        return P.R3(0.5 * b) @ P.R1(b) @ P.R3(a) @ v
+
+    names, found = names_of(made_up, "gimbal", reversed_, GIMBALS)
+    assert "rotation_order" not in names and "factor_order" not in names, [(h.name, h.detail) for h in found]
+
+
+def test_a_runs_state_read_as_alternate_entries_is_a_state_row_slip(made_up):
+    """``q, qd = y[::2], y[1::2]`` where the state is ``(q, qd)``: its parts read as interleaved pairs."""
+    def interleaved(t, y):
+        q, qd = y[::2], y[1::2]
+        return np.concatenate([qd, -3.0 * q - 0.5 * qd + np.array([t, 0.0])])
+
+    names, found = names_of(made_up, "rates", interleaved, STATES)
+    assert names == {"state_row"}, [(h.name, h.detail) for h in found]
+    assert any("`rates` reads the parts of the state from alternate entries" in h.detail for h in found)
+
+
+def test_a_vector_that_is_no_state_read_as_alternate_entries_is_no_state_row_slip(made_up):
+    """The near miss: the halves of a vector that is no run's state read as alternate entries."""
+    def interleaved(v, w):
+        a, b = v[::2], v[1::2]
+        return np.concatenate([b + w, 2.0 * a - b])
+
+    names, found = names_of(made_up, "halves", interleaved, [(V(0.5, -1.0, 2.0, 0.4), V(1.0, 2.0)),
+                                                              (V(-0.2, 0.7, -0.6, 1.5), V(0.3, -0.4))])
+    assert "state_row" not in names, [(h.name, h.detail) for h in found]
+
+
+LINKS = [(np.array([[0.3, -1.0], [0.5, 0.2], [1.1, 0.4]]), np.array([[0.0, 0.7], [1.0, -0.3], [0.2, 0.9]]),
+          V(0.8, -0.6)),
+         (np.array([[-0.4, 0.6], [0.9, 1.3], [0.1, -0.8]]), np.array([[0.5, 0.0], [-0.2, 1.0], [0.7, 0.3]]),
+          V(-1.2, 0.5))]
+
+
+def test_a_matrix_read_for_its_sibling_is_named(made_up):
+    """``B_J_R qd`` where ``B_J_S qd`` belongs: the rotational Jacobian for the translational one."""
+    def sibling(B_J_S, B_J_R, qd):
+        return np.concatenate([B_J_R @ qd, 2.0 * B_J_R @ qd])
+
+    names, found = names_of(made_up, "link_rates", sibling, LINKS)
+    assert names == {"sibling_matrix"}, [(h.name, h.detail) for h in found]
+    assert any("`link_rates` reads a matrix where its sibling belongs" in h.detail for h in found)
+
+
+def test_a_sum_of_sibling_matrices_is_no_sibling_read(made_up):
+    """The near miss: ``(B_J_S + B_J_R) qd`` reads both; no one read of a sibling gives it."""
+    def summed(B_J_S, B_J_R, qd):
+        return np.concatenate([(B_J_S + B_J_R) @ qd, 2.0 * B_J_R @ qd])
+
+    names, found = names_of(made_up, "link_rates", summed, LINKS)
+    assert "sibling_matrix" not in names, [(h.name, h.detail) for h in found]
+
+
+def test_the_siblings_by_the_course_notation():
+    assert mutants._siblings("B_J_S", "B_J_R") and mutants._siblings("S_J_R", "S_J_S")
+    assert not mutants._siblings("I_r_IB", "I_r_IC")  # two points' positions: no pair of matrices
+    assert not mutants._siblings("B_v_B", "B_a_B")  # a rate, told as one
+    assert not mutants._siblings("A_IB", "A_IC")  # two frames, told as one
