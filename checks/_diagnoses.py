@@ -312,6 +312,8 @@ _TABLE = (
     _D("previous_sample", "time_shift", "the previous table row instead of an interpolation",
        "took the row before instead of interpolating"),
     _D("offset", "offset", "a constant offset", "were off by a constant offset"),
+    _D("from_origin", "offset", "a position measured from the origin where it is measured from a point",
+       "measured a position from the origin instead of from its point"),
     _D("step_size", "step_size", "an integration error that grows with the step (a step too large)",
        "integrated with a step too large"),
     _D("integration", "step_size", "an integration too coarse (a loose integrator or a step too large)",

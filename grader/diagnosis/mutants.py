@@ -15,7 +15,11 @@ kind in one expression), a solve or an inverse left out, a sum that keeps only i
 a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a
 name of the function or an attribute of the reference, related by the course's notation), a quantity read in
 another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied to one term only (``A @ x + y`` for
-``A @ (x + y)``), one entry of a list with the wrong sign).
+``A @ (x + y)``), one entry of a list with the wrong sign, a ratio upside down (``m / 12`` for ``12 / m``), two
+neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's
+state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a
+pair (``B_J_R`` for ``B_J_S``), a position taken from the origin where it is measured from a point (``I_r_E`` for
+``I_r_E - anchor``: an offset, not a term left out), an argument left out of every product it is a factor of).
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
 matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
@@ -99,6 +103,8 @@ _END = re.compile(r"#\s*END SOLUTION")
 #: a rotation matrix by the course's notation (``A_IB``, ``R3(...)``): dropping it leaves a vector in another frame
 _ROTATION = re.compile(r"^(A_\w+|A|R[123]?|R_\w+|rotation\w*|expm_skew)$")
 _TRIG = {"sin": "cos", "cos": "sin"}
+#: a point's position by the course's notation (``I_r_IB``, ``B_r_BP``, ``I_r_E``)
+_POSITION = re.compile(r"^[A-Za-z0-9]+_r_[A-Za-z0-9]+$")
 _DEGREES = ("radians", "deg2rad")
 #: the guard of a loop's iterable: exchanges only (a permuted iterable runs the loop as often)
 ITERABLE = "iterable"
@@ -289,6 +295,9 @@ SLIPS = {
                                     "order"),
     "interleaved": ("state_row", "`{f}` reads the parts of the state from alternate entries where they are its "
                                  "halves"),
+    "origin": ("from_origin", "`{f}` measures a position from the origin where it is measured from another "
+                                                    "point"),
+    "unit": ("missing_factor", "`{f}` leaves one of its arguments out of every product it is a factor of"),
     "siblings": ("sibling_matrix", "`{f}` reads a matrix where its sibling belongs (one of a pair such as J_R and "
                                    "J_S)"),
 }
@@ -716,7 +725,9 @@ def _binop_slips(node: ast.BinOp):
         yield "sign", lambda n: _with(n, op=other)
         if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):  # |r| for |r|^2
             yield "norm", lambda n: ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "sqrt", ast.Load()), [n], [])
-        yield "term", lambda n: n.left
+        # ``I_r_E - anchor`` as ``I_r_E``: a position taken from the origin, not from the point subtracted
+        yield "origin" if isinstance(op, ast.Sub) and _POSITION.match(_label(node.left) or "-") else "term", \
+            lambda n: n.left
         if isinstance(op, ast.Add):
             yield "term", lambda n: n.right
     elif isinstance(op, ast.Mult):
@@ -841,11 +852,43 @@ def _exchanged(node, field: str, i: int, j: int):
 
 
 def _parameter_slips(function: ast.FunctionDef, lines: tuple):
-    """Two of the function's own arguments exchanged wherever the region uses them."""
+    """Two of the function's own arguments exchanged wherever the region uses them; an argument that the region
+    reads only as a factor of products left out of all of them (``-d * c2``, ``-d * s2`` as ``-c2``, ``-s2``)."""
     used = {node.id for node in ast.walk(function) if isinstance(node, ast.Name) and _in(node, lines)}
     names = [a.arg for a in function.args.args + function.args.kwonlyargs if a.arg in used and a.arg != "self"]
     for i, j in _pairs(len(names)):
         yield "parameters", ("names", names[i], names[j])
+    for name in _factors_only(function, lines, names):
+        yield "unit", ("unit", name)
+
+
+def _factors_only(function: ast.FunctionDef, lines: tuple, names: list) -> list:
+    """The arguments ``names`` that the region reads at least twice, each time as a factor of a product (itself,
+    or under a minus)."""
+    parents = {id(child): node for node in ast.walk(function) for child in ast.iter_child_nodes(node)}
+    reads: dict = {}
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in names and _in(node, lines):
+            parent = parents.get(id(node))
+            if isinstance(parent, ast.UnaryOp) and isinstance(parent.op, ast.USub):
+                parent = parents.get(id(parent))
+            factor = isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.Mult)
+            reads.setdefault(node.id, []).append(factor)
+    return [name for name in names if len(reads.get(name, ())) >= 2 and all(reads[name])]
+
+
+def _unit(function: ast.FunctionDef, lines: tuple, name: str) -> None:
+    """Every read of ``name`` in the region as 1 (the function changed in place)."""
+    for node in ast.walk(function):
+        for field, value in ast.iter_fields(node):
+            for k, item in enumerate(value if isinstance(value, list) else [value]):
+                if isinstance(item, ast.Name) and item.id == name and isinstance(item.ctx, ast.Load) \
+                        and _in(item, lines):
+                    one = ast.copy_location(ast.Constant(1.0), item)
+                    if isinstance(value, list):
+                        value[k] = one
+                    else:
+                        setattr(node, field, one)
 
 
 def _swap_names(function: ast.FunctionDef, lines: tuple, a: str, b: str) -> None:
@@ -874,12 +917,14 @@ def _mutated(function: _Function, lines: tuple):
             if guarded == ITERABLE and slip not in _EXCHANGES:
                 continue
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
-            if isinstance(edit, tuple) and edit[1] in parts and edit[2] in parts:
+            if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
             if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
                 slip = "skew"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
             tree = copy.deepcopy(function.node)
-            if isinstance(edit, tuple):
+            if isinstance(edit, tuple) and edit[0] == "unit":
+                _unit(tree, lines, edit[1])
+            elif isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])
             else:
                 nodes = list(_parented(tree))

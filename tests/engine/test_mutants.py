@@ -509,6 +509,27 @@ def link_rates(B_J_S, B_J_R, qd):
     link = Link(B_J_S, B_J_R)
     return np.concatenate([link.B_J_S @ qd, 2.0 * link.B_J_R @ qd])
     # END SOLUTION
+
+
+def moment_about(I_r_IP, I_r_IC, I_v_P, I_v_C, f):
+    """The moment of ``f`` at P about C, and the velocity of P relative to C's."""
+    # BEGIN SOLUTION problem 98
+    return np.concatenate([np.cross(I_r_IP - I_r_IC, f), I_v_P - I_v_C])
+    # END SOLUTION
+
+
+def arm(q, d):
+    """The end of an arm of length ``d`` at the angle ``q``, and ``q``."""
+    # BEGIN SOLUTION problem 98
+    return np.array([-d * np.sin(q), d * np.cos(q), q])
+    # END SOLUTION
+
+
+def arm_reach(q, d):
+    """The end of an arm of length ``d`` at the angle ``q``, and ``q + d``."""
+    # BEGIN SOLUTION problem 98
+    return np.array([-d * np.sin(q), d * np.cos(q), q + d])
+    # END SOLUTION
 '''
 
 
@@ -1145,3 +1166,57 @@ def test_the_siblings_by_the_course_notation():
     assert not mutants._siblings("I_r_IB", "I_r_IC")  # two points' positions: no pair of matrices
     assert not mutants._siblings("B_v_B", "B_a_B")  # a rate, told as one
     assert not mutants._siblings("A_IB", "A_IC")  # two frames, told as one
+
+
+MOMENTS = [(V(1.0, 0.5, -0.3), V(0.2, -0.4, 0.6), V(0.3, 1.1, -0.2), V(-0.5, 0.4, 0.9), V(0.7, -0.2, 1.3)),
+           (V(-0.6, 1.2, 0.4), V(0.9, 0.3, -0.5), V(-1.0, 0.2, 0.6), V(0.4, -0.7, 0.1), V(0.2, 0.8, -0.4))]
+
+
+def test_a_position_taken_from_the_origin_is_an_offset_slip(made_up):
+    """``I_r_IP x f`` where ``(I_r_IP - I_r_IC) x f`` belongs: the moment about the origin, not about C; the point
+    subtracted from a position is no term of a sum."""
+    def about_origin(I_r_IP, I_r_IC, I_v_P, I_v_C, f):
+        return np.concatenate([np.cross(I_r_IP, f), I_v_P - I_v_C])
+
+    names, found = names_of(made_up, "moment_about", about_origin, MOMENTS)
+    assert names == {"from_origin"}, [(h.name, h.detail) for h in found]
+    assert any("`moment_about` measures a position from the origin" in h.detail for h in found)
+
+
+def test_a_velocity_left_out_of_a_difference_is_a_missing_term(made_up):
+    """The near miss: ``I_v_P`` where ``I_v_P - I_v_C`` belongs is no position: a term left out."""
+    def absolute(I_r_IP, I_r_IC, I_v_P, I_v_C, f):
+        return np.concatenate([np.cross(I_r_IP - I_r_IC, f), I_v_P])
+
+    names, found = names_of(made_up, "moment_about", absolute, MOMENTS)
+    assert names == {"missing_term"}, [(h.name, h.detail) for h in found]
+
+
+def test_an_argument_left_out_of_every_product_is_a_missing_factor(made_up):
+    """``(-sin q, cos q)`` where ``(-d sin q, d cos q)`` belongs: the length left out of both products (one slip,
+    made twice)."""
+    def without(q, d):
+        return np.array([-np.sin(q), np.cos(q), q])
+
+    names, found = names_of(made_up, "arm", without, [(0.4, 2.0), (-1.1, 0.7)])
+    assert names == {"missing_factor"}, [(h.name, h.detail) for h in found]
+    assert any("`arm` leaves one of its arguments out of every product" in h.detail for h in found)
+
+
+def test_an_argument_read_also_in_a_sum_is_not_left_out_of_its_products(made_up):
+    """The near miss: where the argument is also a term of a sum, leaving it out of the products alone is two
+    slips, and it is not dropped everywhere."""
+    def without(q, d):
+        return np.array([-np.sin(q), np.cos(q), q + d])
+
+    names, found = names_of(made_up, "arm_reach", without, [(0.4, 2.0), (-1.1, 0.7)])
+    assert "missing_factor" not in names, [(h.name, h.detail) for h in found]
+    assert mutants._factors_only(*_region_of(made_up, "arm_reach"), ["q", "d"]) == []
+    assert mutants._factors_only(*_region_of(made_up, "arm"), ["q", "d"]) == ["d"]
+
+
+def _region_of(made_up, name):
+    """The definition of the made-up problem's function ``name`` and the lines of its region."""
+    root, _ = mutants._package()
+    function = next(f for f in mutants._functions(str(root)) if f.path[-1] == name)
+    return function.node, tuple((first, last) for _, first, last in function.regions)
