@@ -18,8 +18,9 @@ another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied
 ``A @ (x + y)``), one entry of a list with the wrong sign, a ratio upside down (``m / 12`` for ``12 / m``), two
 neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's
 state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a
-pair (``B_J_R`` for ``B_J_S``), a position taken from the origin where it is measured from a point (``I_r_E`` for
-``I_r_E - anchor``: an offset, not a term left out), an argument left out of every product it is a factor of).
+pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``), a
+position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``: an offset, not a
+term left out), an argument left out of every product it is a factor of).
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
 matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
@@ -297,6 +298,7 @@ SLIPS = {
                                  "halves"),
     "origin": ("from_origin", "`{f}` measures a position from the origin where it is measured from another "
                                                     "point"),
+    "minuend": ("missing_term", "the first term of a difference in `{f}` is left out"),
     "unit": ("missing_factor", "`{f}` leaves one of its arguments out of every product it is a factor of"),
     "siblings": ("sibling_matrix", "`{f}` reads a matrix where its sibling belongs (one of a pair such as J_R and "
                                    "J_S)"),
@@ -728,8 +730,8 @@ def _binop_slips(node: ast.BinOp):
         # ``I_r_E - anchor`` as ``I_r_E``: a position taken from the origin, not from the point subtracted
         yield "origin" if isinstance(op, ast.Sub) and _POSITION.match(_label(node.left) or "-") else "term", \
             lambda n: n.left
-        if isinstance(op, ast.Add):
-            yield "term", lambda n: n.right
+        # ``a - b`` as ``b``: the first term left out, the second kept as it reads (``r r^T`` for ``r.r E - r r^T``)
+        yield "term" if isinstance(op, ast.Add) else "minuend", lambda n: n.right
     elif isinstance(op, ast.Mult):
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
