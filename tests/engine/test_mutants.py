@@ -1224,3 +1224,12 @@ def _region_of(made_up, name):
     root, _ = mutants._package()
     function = next(f for f in mutants._functions(str(root)) if f.path[-1] == name)
     return function.node, tuple((first, last) for _, first, last in function.regions)
+
+
+def test_the_second_term_of_a_difference_alone_with_its_minus_is_not_the_first_left_out(tmp_path):
+    """The near miss: ``I_G - m r r^T`` keeps the minus of the term left alone; leaving out the first term of the
+    difference keeps the second as it reads (``+ m r r^T``), so that slip does not give it."""
+    found = slips_of(tmp_path, "p19.parallel_axis", "inertia.py",
+                     "return as_matrix(I_G) + m * ((r @ r) * np.eye(3) - np.outer(r, r))",
+                     "return as_matrix(I_G) - m * np.outer(r, r)", "problem_19.parallel_axis", STEINER)
+    assert not any("the first term of a difference" in h.detail for h in found), [(h.name, h.detail) for h in found]
