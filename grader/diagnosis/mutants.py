@@ -743,7 +743,8 @@ def _binop_slips(node: ast.BinOp):
     elif isinstance(op, ast.Div):
         yield "divides", lambda n: _with(n, op=ast.Mult())
         yield _dropped(node.right), lambda n: n.left
-        yield "ratio", lambda n: _with(n, left=n.right, right=n.left)  # ``12 / m`` as ``m / 12``
+        if not _reciprocal(node):  # ``12 / m`` as ``m / 12`` (``1 / x`` as ``x``: a reciprocal, the inputs' slip)
+            yield "ratio", lambda n: _with(n, left=n.right, right=n.left)
     elif isinstance(op, ast.MatMult):
         if _movable(node):
             yield "sides", _moved
