@@ -62,6 +62,7 @@ __all__ = [
     "parameter_variants",
     "parameter_slips",
     "event_state_slips",
+    "event_state",
     "reread",
     "reread_runs",
     "exchanged_events",
@@ -239,8 +240,11 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     """A state at an event read from the wrong row (``motion["at_events"]``: ``{key: (event, state[, entry])}``, the
     values of a run's result taken from its state at an event): where the student's event is found when the
     reference's is, their value of the compared key is, within the comparison's tolerance, another entry of the
-    reference's state at that event (another such key, or the reference's run there) that differs clearly from
-    the right one and is not zero within the tolerance (a zero, a velocity at an apex say, tells no row)."""
+    reference's state at that event (another such key, the reference's run there, or as many consecutive entries of
+    its whole state there from another start: ``_windows``, a slice one entry off, the halves exchanged) that
+    differs clearly from the right one and is not zero within the tolerance (a zero, a velocity at an apex say,
+    tells no row).  Only where the event itself is found where the reference's is: an event on another quantity
+    moves the state read at it, which no row then reproduces."""
     motion, tol = decl.motion, evidence.tol
     at_events = motion.get("at_events") or {}
     source, student = evidence.source, evidence.student
@@ -271,6 +275,7 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
             row = np.array([np.interp(te, t, samples[:, j]) for j in range(samples.shape[1])])
             candidates[f"its {state} at the event"] = row
             candidates.update({f"its {state}[{j}] at the event": row[j] for j in range(row.size)})
+    candidates.update(_windows(evidence, motion, event, te, key, ours.size))
     wrong = [label for label, value in candidates.items()
              if np.shape(value) == ours.shape and within(mine, np.asarray(value, dtype=float), tol)
              and distinct(np.asarray(value, dtype=float), ours, tol)
@@ -280,6 +285,48 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     return [Hypothesis(f"event:row:{key}", "state_row", 2,
                        f"your {key} is the reference's state at the event {event} = {te:.6g} s read from the wrong "
                        f"row: it is {wrong[0]} (expected {format_array(ours)})")]
+
+
+def event_state(root, motion: dict, event: str, te: float):
+    """The whole state at the event ``event`` (at ``te``) of a run's result ``root``, its declared states
+    concatenated in their order: each from the result's value of that whole state at the event where it holds one
+    (``at_events``: exact, where a state jumps there), else the run interpolated at ``te``; with the offset of each
+    state in it (``{state: offset}``), or None where a state is missing."""
+    at_events = motion.get("at_events") or {}
+    held = {}
+    for other, (other_event, *rest) in at_events.items():
+        if other_event == event and len(rest) == 1:
+            held.setdefault(rest[0], other)
+    ran = run_of(root, motion)
+    parts, offsets, size = [], {}, 0
+    for state in motion.get("states", ()):
+        value = array_of(at(root, (held[state],))) if state in held else None
+        if value is None and ran is not None and state in ran[1] and ran[0][0] <= te <= ran[0][-1]:
+            t, samples = ran[0], ran[1][state]
+            value = np.array([np.interp(te, t, samples[:, j]) for j in range(samples.shape[1])])
+        if value is None:
+            return None
+        offsets[state] = size
+        parts.append(value.reshape(-1))
+        size += value.size
+    return (np.concatenate(parts), offsets) if parts else None
+
+
+def _windows(evidence: Evidence, motion: dict, event: str, te: float, key: str, n: int) -> dict:
+    """``{label: value}``: the reference's whole state at the event (``event_state``) read at another offset,
+    ``n`` consecutive entries from each other start than the compared value's own (a slice one entry off, the
+    halves of the state exchanged); the compared value's own offset from ``at_events`` (its state's, and its
+    entry's)."""
+    _, state, *entry = motion["at_events"][key]
+    whole = event_state(evidence.source.root, motion, event, te)
+    if whole is None or state not in whole[1]:
+        return {}
+    y, offsets = whole
+    own = offsets[state] + (int(entry[0]) if entry else 0)
+    if n < 2:  # one entry: the entries of each state are candidates already
+        return {}
+    return {f"its state at the event y_event[{k}:{k + n}] (where {key} is y_event[{own}:{own + n}])": y[k:k + n]
+            for k in range(y.size - n + 1) if k != own}
 
 
 def event_slips(evidence: Evidence, decl: Declaration) -> list:
