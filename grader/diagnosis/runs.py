@@ -57,6 +57,7 @@ __all__ = [
     "model_evidences",
     "PARAMETER_FACTORS",
     "LOOSE_TOLERANCES",
+    "LOOSE_SHARE",
     "run_slips",
     "MAX_FAMILIES",
     "parameter_variants",
@@ -710,8 +711,10 @@ def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
 
 def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: bool = True) -> list:
     """The run's arguments varied (``parameter_variants``): the reference re-run so reproduces the student's run
-    over the whole span both cover (and ends where it does), while it differs clearly from the reference's own run.
-    A run at loose tolerances (``step_size``) is told only where the student's right-hand side is the reference's
+    over the whole span both cover (and ends where it does), while it differs clearly from the reference's own run
+    or, for a run at looser tolerances, while the student's is far nearer to it than to the reference's
+    (``LOOSE_SHARE``: a solver's error at a loose tolerance may leave the band by a few tolerances only).  A run at
+    loose tolerances (``step_size``) is told only where the student's right-hand side is the reference's
     (``integration``)."""
     motion = decl.motion
     spec, source, student = motion.get("parameters"), evidence.source, evidence.student
@@ -731,10 +734,49 @@ def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integra
         except GraderFault:
             continue  # the reference refuses the varied run (it never ends, say): no hypothesis
         theirs = run_of(root, motion)
-        if theirs is not None and _same_run(mine, theirs, evidence.tol) and not _same_run(ours, theirs,
-                                                                                           evidence.tol, DISTINCT):
+        if theirs is None or not _same_run(mine, theirs, evidence.tol):
+            continue
+        if not _same_run(ours, theirs, evidence.tol, DISTINCT) or hypothesis.name in INTEGRATION \
+                and _loose_explains((mine, student.root), (theirs, root), (ours, source.root), motion, evidence.tol):
             found.append(hypothesis)
     return found
+
+
+#: a run of the reference's at looser tolerances that stays near its own run explains the student's where the
+#: student's is nearer to it than this share of their distance from the reference's own run (both in tolerances,
+#: at the worst output time or event): the solver's error at a loose tolerance is a student's run just outside the
+#: band, which the rule of every other variant (clearly another run than the reference's) cannot see
+LOOSE_SHARE = 0.25
+
+
+def _loose_explains(mine, theirs, ours, motion: dict, tol: Tol) -> bool:
+    """The student's run leaves the reference's (``ours``) beyond the tolerance, and the run at looser tolerances
+    (``theirs``) leaves at most ``LOOSE_SHARE`` of that distance (each ``(run, root)``: its events counted)."""
+    far, near = _misfit(mine, ours, motion, tol), _misfit(mine, theirs, motion, tol)
+    return far is not None and near is not None and far > 1.0 and near <= LOOSE_SHARE * far
+
+
+def _misfit(mine, theirs, motion: dict, tol: Tol) -> float | None:
+    """The largest distance of the run ``mine`` from ``theirs`` (each ``(run, root)``, a run ``(t, states)``), in
+    tolerances, at the output times of the first that the second covers and at the events both find; None where
+    they start apart or share no state."""
+    ((t_m, M), root_m), ((t_t, T), root_t) = mine, theirs
+    if abs(t_m[0] - t_t[0]) > 1e-9:
+        return None
+    inside = t_m <= t_t[-1] + 1e-12
+    worst, shared = 0.0, False
+    for key in M:
+        if key not in T or M[key].shape[1] != T[key].shape[1]:
+            continue
+        at_t = np.column_stack([np.interp(t_m[inside], t_t, T[key][:, j]) for j in range(T[key].shape[1])])
+        worst = max(worst, float(np.max(np.abs(M[key][inside] - at_t) / (tol.atol + tol.rtol * np.abs(at_t)),
+                                        initial=0.0)))
+        shared = True
+    for key in motion.get("events", ()):
+        a, b = array_of(at(root_m, (key,))), array_of(at(root_t, (key,)))
+        if a is not None and b is not None and a.size == 1 and b.size == 1:
+            worst = max(worst, abs(float(a) - float(b)) / (tol.atol + tol.rtol * abs(float(b))))
+    return worst if shared else None
 
 
 def _same_run(mine, theirs, tol: Tol, times: float = 1.0) -> bool:

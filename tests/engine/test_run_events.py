@@ -102,3 +102,65 @@ def test_no_slice_is_told_where_the_event_is_elsewhere_or_the_value_no_slice():
     assert event_state_slips(_evidence("q_event", [2.0, 2.0, 1.0], t_event=0.9), decl) == []
     assert event_state_slips(_evidence("q_event", [2.0, 1.0, 2.0]), decl) == []  # entries in another order
     assert event_state_slips(_evidence("q_event", [-1.0, -2.0, -2.0]), decl) == []  # negated
+
+
+# ------------------------------------------------------------------------------------------ loose tolerances
+
+
+#: solve_ivp at rtol 1e-2 with an atol of its own (the band's run at rtol 1e-2 and atol 1e-6 is the nearest the
+#: engine re-runs): the bar's random runs leave the band by a few tolerances only
+LOOSE_RANDOM_BAR = Planted(
+    name="run-events-p44-rtol-1e-2-atol-1e-7", problem=44, file="problem_44.py",
+    old="events=[make_contact_event(s, d)], rtol=1e-10, atol=1e-12)",
+    new="events=[make_contact_event(s, d)], rtol=1e-2, atol=1e-7)",
+    check="p44.event_random", diagnosis="step_size", message="rtol = 0.01")
+
+
+@pytest.fixture(scope="module")
+def bar_slot():
+    yield from warm_slot([44])
+
+
+def test_a_run_just_outside_its_band_at_loose_tolerances_is_told(tmp_path, kit_oracle, deferred_ids, bar_slot):
+    target = graded(LOOSE_RANDOM_BAR, tmp_path, kit_oracle, deferred_ids, bar_slot)
+    assert target.diagnosis == LOOSE_RANDOM_BAR.diagnosis, (target.diagnosis, target.hint)
+    assert LOOSE_RANDOM_BAR.message in target.hint, target.hint
+
+
+class _Scene:
+    """The reference's runs by their variant argument (None: its own); a variant it lacks is its own run."""
+
+    def __init__(self, runs):
+        self.runs = runs
+
+    def reference(self, probe, args, persist=False):
+        return self.runs.get(None if args[-1] is None else tuple(args[-1]), self.runs[None])
+
+
+def _exp_run(rate, t_event):
+    t = np.linspace(0.0, 1.0, 21)
+    return {"t": t, "y": np.exp(rate * t)[:, None], "t_event": t_event}
+
+
+def _loose(student):
+    """The student's run against the reference's (``exp(t)``, its event at 1.0) and a run at looser tolerances
+    that errs by 0.3 % of the value (``exp(1.003 t)``), within a band of 1e-3."""
+    from grader.diagnosis.runs import parameter_slips
+
+    motion = {"time": "t", "states": ("y",), "events": ("t_event",), "variants": {"arg": 0, "tolerances": True}}
+    ours, loose = _exp_run(1.0, 1.0), _exp_run(1.003, 1.0)
+    scene = _Scene({None: ours, ("tolerance", 1e-2, 1e-2): loose})
+    evidence = Evidence(student["y"], ours["y"], Tol("band", 1e-3), "y",
+                        source=Source("stub.run", (None,), ("y",), ours),
+                        student=Source("stub.run", (None,), ("y",), student))
+    return parameter_slips(scene, evidence, Declaration(motion=motion))
+
+
+def test_a_run_nearer_a_looser_solve_than_the_reference_is_its_tolerance():
+    """The student's run differs from the reference's by a few tolerances (no run clearly another than the
+    reference's): it is told at loose tolerances where the looser run is far nearer to it than the reference's,
+    and not where the student's run is as far from both (another rate)."""
+    found = _loose(_exp_run(1.0031, 1.0))
+    assert [h.name for h in found] == ["step_size"], found
+    assert _loose(_exp_run(1.0015, 1.0)) == []  # halfway: as near to the reference's run as to the loose one
+    assert _loose(_exp_run(0.997, 1.0)) == []  # off the other way
