@@ -26,7 +26,8 @@ never by the quantity it concerns or by its symptom:
 * an argument whose value has no effect (a given gravity replaced by the Earth's) is ``ignored_argument``;
 * a state read from another row or column of the state or the solution is ``state_row``;
 * what the integration does (the step, the tolerance) is ``step_size``; when an event fires and whether it ends the
-  run is ``event``.
+  run is ``event``: an event's residual that reads another row of the state watches another quantity, and fires
+  elsewhere (``event_quantity``), as one of another support does (``first_support``).
 
 A name that says what the answer shows rather than what the slip did, where slips of several families show it
 alike, has a family of its own among the symptoms, beside ``shape`` and ``not_orthonormal``, and its hint says what
@@ -326,6 +327,8 @@ _TABLE = (
     _D("not_terminal", "event", "an event that does not end the run", "did not end the run at the event"),
     _D("apex_terminal", "event", "an event that ends the run where it should only mark a point",
        "ended the run at an event that only marks a point"),
+    _D("event_quantity", "event", "an event that watches the wrong quantity (another row of the state)",
+       "watched the wrong quantity in an event"),
     _D("state_row", "state_row", "a state read from the wrong row (or column) of the solution",
        "read a state from the wrong row"),
     _D("wrong_index", "state_row", "an entry read from the wrong index (a neighbouring row or column)",

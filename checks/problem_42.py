@@ -89,8 +89,8 @@ def check_events(ctx):
         for name, value, other in (("apex", velocities, heights), ("landing", heights, velocities)):
             read = (Mistake("swapped", other, "make_events() returns (apex, landing): the apex is where the velocity "
                             "y[1] falls through zero, the landing where the height y[0] does.") if exchanged else
-                    Mistake("state_row", other, f"{name} reads the other row of the state y = (height, velocity): "
-                            f"its residual is {RESIDUALS[name]}."))
+                    Mistake("event_quantity", other, f"{name} reads the other row of the state y = (height, "
+                            f"velocity), so it watches the other quantity: its residual is {RESIDUALS[name]}."))
             assert_close(got[name]["values"], value, f"{name}(t, y)", EXACT, [
                 read,
                 Mistake("event_sign", -value, f"The residual of {name} is {RESIDUALS[name]} itself: with its sign "

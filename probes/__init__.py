@@ -30,7 +30,8 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   "tolerances": True}``), the probe's argument by which the engine asks the reference's run with ``solve_ivp``
   called as a slip would call it (``_dynamics.solver_variant``: from a start with two entries exchanged, at looser
   tolerances); with ``"at_events"`` (``{key: (event, state[, entry])}``), the result's values taken from the
-  state at an event, which the engine tries read from its other rows;
+  state at an event, which the engine tries read from its other rows and from other slices of the whole state
+  there (a key that holds a whole state gives the engine that state at the event exactly, where it jumps);
 * ``constants``: the probe (no arguments) of the problem's named constants (a mass, g, a length);
 * ``draw``: False when the engine must not draw a second input itself (the probe is slow, or its arguments must
   keep their relations).

@@ -168,7 +168,8 @@ def constrained(pkg, cases):
     ),
     says="simulate(table, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_46.simulate_fixed",
-               "schemes": ("euler", "symplectic"), "rhs": "problem_46.free_ode", "rhs_args": (0,)},
+               "schemes": ("euler", "symplectic"), "rhs": "problem_46.free_ode", "rhs_args": (0,),
+               "at_events": {"q_minus": ("t_event", "q"), "qd_minus": ("t_event", "qd"), "q_plus": ("t_event", "q")}},
 )
 def simulate(pkg, table, baumgarte, t_end, wire=None):
     """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every

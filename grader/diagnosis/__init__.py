@@ -52,10 +52,12 @@ The grammar:
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
-  wrong row (of the run, or of the state at an event), a wrong initial state, an event found late or early, an
-  error that grows with the step, the run's parameters exchanged, scaled or ignored, its start's entries exchanged
-  and solve_ivp at looser tolerances (the reference re-run so); a randomized comparison's second failing run must
-  show the same cause.
+  wrong row (of the run, or of the state at an event: another of its rows, or a slice of the whole state there
+  from another start, where the event itself is found where the reference's is), a wrong initial state, an event
+  found late or early, an error that grows with the step, the run's parameters exchanged, scaled or ignored, its
+  start's entries exchanged and solve_ivp at looser tolerances (the reference re-run so: a run clearly another than
+  the reference's, or one far nearer to the student's than the reference's is); a randomized comparison's second
+  failing run must show the same cause.
 
 Before any cause of a run, the student's right-hand side is compared with the reference's along the run (where the
 probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,

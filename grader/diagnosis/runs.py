@@ -1,9 +1,9 @@
 """Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
-constant offset, a state from the wrong row (of the run, or of the state at an event), a wrong start, an event found
-late or early, and an error that grows with the step (against fixed-step runs of the reference's own right-hand
-side); and the reference re-run as a slip would run it (``parameter_variants``: its arguments exchanged, scaled or
-ignored, its start's entries exchanged, solve_ivp at looser tolerances), every such run a function of the run's
-arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose columns are read from the
+constant offset, a state from the wrong row (of the run, or of the state at an event: another row, or a slice of the
+whole state there from another start), a wrong start, an event found late or early, and an error that grows with
+the step (against fixed-step runs of the reference's own right-hand side); and the reference re-run as a slip would
+run it (``parameter_variants``: its arguments exchanged, scaled or ignored, its start's entries exchanged, solve_ivp
+at looser tolerances), every such run a function of the run's arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose columns are read from the
 wrong rows of the solution, which looks like a wrong start or a drifting energy) and ``exchanged_events``.
 
 Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
@@ -57,11 +57,13 @@ __all__ = [
     "model_evidences",
     "PARAMETER_FACTORS",
     "LOOSE_TOLERANCES",
+    "LOOSE_SHARE",
     "run_slips",
     "MAX_FAMILIES",
     "parameter_variants",
     "parameter_slips",
     "event_state_slips",
+    "event_state",
     "reread",
     "reread_runs",
     "exchanged_events",
@@ -239,8 +241,11 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     """A state at an event read from the wrong row (``motion["at_events"]``: ``{key: (event, state[, entry])}``, the
     values of a run's result taken from its state at an event): where the student's event is found when the
     reference's is, their value of the compared key is, within the comparison's tolerance, another entry of the
-    reference's state at that event (another such key, or the reference's run there) that differs clearly from
-    the right one and is not zero within the tolerance (a zero, a velocity at an apex say, tells no row)."""
+    reference's state at that event (another such key, the reference's run there, or as many consecutive entries of
+    its whole state there from another start: ``_windows``, a slice one entry off, the halves exchanged) that
+    differs clearly from the right one and is not zero within the tolerance (a zero, a velocity at an apex say,
+    tells no row).  Only where the event itself is found where the reference's is: an event on another quantity
+    moves the state read at it, which no row then reproduces."""
     motion, tol = decl.motion, evidence.tol
     at_events = motion.get("at_events") or {}
     source, student = evidence.source, evidence.student
@@ -271,6 +276,7 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
             row = np.array([np.interp(te, t, samples[:, j]) for j in range(samples.shape[1])])
             candidates[f"its {state} at the event"] = row
             candidates.update({f"its {state}[{j}] at the event": row[j] for j in range(row.size)})
+    candidates.update(_windows(evidence, motion, event, te, key, ours.size))
     wrong = [label for label, value in candidates.items()
              if np.shape(value) == ours.shape and within(mine, np.asarray(value, dtype=float), tol)
              and distinct(np.asarray(value, dtype=float), ours, tol)
@@ -280,6 +286,48 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     return [Hypothesis(f"event:row:{key}", "state_row", 2,
                        f"your {key} is the reference's state at the event {event} = {te:.6g} s read from the wrong "
                        f"row: it is {wrong[0]} (expected {format_array(ours)})")]
+
+
+def event_state(root, motion: dict, event: str, te: float):
+    """The whole state at the event ``event`` (at ``te``) of a run's result ``root``, its declared states
+    concatenated in their order: each from the result's value of that whole state at the event where it holds one
+    (``at_events``: exact, where a state jumps there), else the run interpolated at ``te``; with the offset of each
+    state in it (``{state: offset}``), or None where a state is missing."""
+    at_events = motion.get("at_events") or {}
+    held = {}
+    for other, (other_event, *rest) in at_events.items():
+        if other_event == event and len(rest) == 1:
+            held.setdefault(rest[0], other)
+    ran = run_of(root, motion)
+    parts, offsets, size = [], {}, 0
+    for state in motion.get("states", ()):
+        value = array_of(at(root, (held[state],))) if state in held else None
+        if value is None and ran is not None and state in ran[1] and ran[0][0] <= te <= ran[0][-1]:
+            t, samples = ran[0], ran[1][state]
+            value = np.array([np.interp(te, t, samples[:, j]) for j in range(samples.shape[1])])
+        if value is None:
+            return None
+        offsets[state] = size
+        parts.append(value.reshape(-1))
+        size += value.size
+    return (np.concatenate(parts), offsets) if parts else None
+
+
+def _windows(evidence: Evidence, motion: dict, event: str, te: float, key: str, n: int) -> dict:
+    """``{label: value}``: the reference's whole state at the event (``event_state``) read at another offset,
+    ``n`` consecutive entries from each other start than the compared value's own (a slice one entry off, the
+    halves of the state exchanged); the compared value's own offset from ``at_events`` (its state's, and its
+    entry's)."""
+    _, state, *entry = motion["at_events"][key]
+    whole = event_state(evidence.source.root, motion, event, te)
+    if whole is None or state not in whole[1]:
+        return {}
+    y, offsets = whole
+    own = offsets[state] + (int(entry[0]) if entry else 0)
+    if n < 2:  # one entry: the entries of each state are candidates already
+        return {}
+    return {f"its state at the event y_event[{k}:{k + n}] (where {key} is y_event[{own}:{own + n}])": y[k:k + n]
+            for k in range(y.size - n + 1) if k != own}
 
 
 def event_slips(evidence: Evidence, decl: Declaration) -> list:
@@ -663,8 +711,10 @@ def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
 
 def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: bool = True) -> list:
     """The run's arguments varied (``parameter_variants``): the reference re-run so reproduces the student's run
-    over the whole span both cover (and ends where it does), while it differs clearly from the reference's own run.
-    A run at loose tolerances (``step_size``) is told only where the student's right-hand side is the reference's
+    over the whole span both cover (and ends where it does), while it differs clearly from the reference's own run
+    or, for a run at looser tolerances, while the student's is far nearer to it than to the reference's
+    (``LOOSE_SHARE``: a solver's error at a loose tolerance may leave the band by a few tolerances only).  A run at
+    loose tolerances (``step_size``) is told only where the student's right-hand side is the reference's
     (``integration``)."""
     motion = decl.motion
     spec, source, student = motion.get("parameters"), evidence.source, evidence.student
@@ -684,10 +734,49 @@ def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integra
         except GraderFault:
             continue  # the reference refuses the varied run (it never ends, say): no hypothesis
         theirs = run_of(root, motion)
-        if theirs is not None and _same_run(mine, theirs, evidence.tol) and not _same_run(ours, theirs,
-                                                                                           evidence.tol, DISTINCT):
+        if theirs is None or not _same_run(mine, theirs, evidence.tol):
+            continue
+        if not _same_run(ours, theirs, evidence.tol, DISTINCT) or hypothesis.name in INTEGRATION \
+                and _loose_explains((mine, student.root), (theirs, root), (ours, source.root), motion, evidence.tol):
             found.append(hypothesis)
     return found
+
+
+#: a run of the reference's at looser tolerances that stays near its own run explains the student's where the
+#: student's is nearer to it than this share of their distance from the reference's own run (both in tolerances,
+#: at the worst output time or event): the solver's error at a loose tolerance is a student's run just outside the
+#: band, which the rule of every other variant (clearly another run than the reference's) cannot see
+LOOSE_SHARE = 0.25
+
+
+def _loose_explains(mine, theirs, ours, motion: dict, tol: Tol) -> bool:
+    """The student's run leaves the reference's (``ours``) beyond the tolerance, and the run at looser tolerances
+    (``theirs``) leaves at most ``LOOSE_SHARE`` of that distance (each ``(run, root)``: its events counted)."""
+    far, near = _misfit(mine, ours, motion, tol), _misfit(mine, theirs, motion, tol)
+    return far is not None and near is not None and far > 1.0 and near <= LOOSE_SHARE * far
+
+
+def _misfit(mine, theirs, motion: dict, tol: Tol) -> float | None:
+    """The largest distance of the run ``mine`` from ``theirs`` (each ``(run, root)``, a run ``(t, states)``), in
+    tolerances, at the output times of the first that the second covers and at the events both find; None where
+    they start apart or share no state."""
+    ((t_m, M), root_m), ((t_t, T), root_t) = mine, theirs
+    if abs(t_m[0] - t_t[0]) > 1e-9:
+        return None
+    inside = t_m <= t_t[-1] + 1e-12
+    worst, shared = 0.0, False
+    for key in M:
+        if key not in T or M[key].shape[1] != T[key].shape[1]:
+            continue
+        at_t = np.column_stack([np.interp(t_m[inside], t_t, T[key][:, j]) for j in range(T[key].shape[1])])
+        worst = max(worst, float(np.max(np.abs(M[key][inside] - at_t) / (tol.atol + tol.rtol * np.abs(at_t)),
+                                        initial=0.0)))
+        shared = True
+    for key in motion.get("events", ()):
+        a, b = array_of(at(root_m, (key,))), array_of(at(root_t, (key,)))
+        if a is not None and b is not None and a.size == 1 and b.size == 1:
+            worst = max(worst, abs(float(a) - float(b)) / (tol.atol + tol.rtol * abs(float(b))))
+    return worst if shared else None
 
 
 def _same_run(mine, theirs, tol: Tol, times: float = 1.0) -> bool:

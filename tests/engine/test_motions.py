@@ -117,12 +117,13 @@ RATES_FROM_ANGLE_COLUMNS = Planted(
     old='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}',
     new='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, :3]}',
     check="p37.computed_torques_run", diagnosis="state_row", message="qd[0] is the reference's q[0]")
-#: the apex event reads the height: only one event reads the other row, the two are not exchanged
+#: the apex event reads the height: only one event reads the other row, the two are not exchanged; it watches the
+#: other quantity (an event's slip, as an event of the other support is), no state of a run is read from it
 APEX_ON_THE_HEIGHT = Planted(
     name="motions-p42-apex-on-the-height", problem=42, file="problem_42.py",
     old="    def apex(t, y, *args):\n        return y[1]",
     new="    def apex(t, y, *args):\n        return y[0]",
-    check="p42.events", diagnosis="state_row", message="apex reads the other row")
+    check="p42.events", diagnosis="event_quantity", message="apex reads the other row")
 #: a near miss of a state read from the wrong rows: the walker started with its rates negated is a wrong start
 RATES_NEGATED_AT_THE_START = Planted(
     name="motions-p38-start-rates-negated", problem=38, file="problem_38.py",
