@@ -75,7 +75,7 @@ arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import RECORDING, doubted, find, note_comparison, prepare, prepare_call, prepared, recording
+from .engine import RECORDING, doubted, find, judged, note_comparison, prepare, prepare_call, prepared, recording
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
@@ -90,6 +90,9 @@ __all__ = [
     "declaration",
     "explain",
     "doubt",
+    "judge",
+    "symptom",
+    "SYMPTOMS",
     "prepare",
     "prepare_call",
     "prepared",
@@ -134,6 +137,31 @@ def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
     finding = _guarded(doubted, Scene(ctx), evidence)
     trace.end(finding)
     return finding
+
+
+#: the families of the vocabulary that say what a value shows (a property it lacks), not what slip made it: a check
+#: that names one judged the student's value, which the engine may compare with the reference's (``judge``)
+SYMPTOMS = ("not_orthonormal", "handedness", "orientation", "not_spd")
+
+
+def judge(ctx, evidence) -> Finding | None:
+    """The cause behind a value a check judged by a property rather than compared (``engine.judged``): the student's
+    probe call the value came from compared with the reference's call on the same arguments, to be told beside the
+    failure's own words; None: none found.  ``evidence``: the failure's comparison, if it carries one."""
+    if not ENABLED:
+        return None
+    trace.begin(getattr(ctx, "check_id", ""), "judged")
+    finding = _guarded(judged, Scene(ctx), evidence)
+    trace.end(finding)
+    return finding
+
+
+def symptom(diagnosis: str) -> bool:
+    """Whether ``diagnosis`` names only symptoms (``SYMPTOMS``), no cause."""
+    from checks._diagnoses import DIAGNOSES
+
+    names = [name for name in diagnosis.split(" or ") if name]
+    return bool(names) and all(name in DIAGNOSES and DIAGNOSES[name].family in SYMPTOMS for name in names)
 
 
 def _guarded(ask, scene: Scene, evidence) -> Finding | None:
