@@ -126,3 +126,53 @@ def test_a_failure_that_names_a_cause_is_not_asked(monkeypatch):
     assert explained(ctx, failure).diagnosis == "transpose"
     monkeypatch.setitem(engine.DECLARATIONS, "stub_judged.run", Declaration(motion={"time": 0}))
     assert judged_call([("student", "stub_judged.run", (1.0,), np.zeros(3))], None) is None
+
+
+# ------------------------------------------------------------------------------------------ a shown input that raised
+
+
+def _randomized(monkeypatch, student):
+    """A context whose randomized comparison of the stub probe failed twice: on the input shown the student's code
+    raised (a failure stated in words, no comparison), and on another input a check's own ``compare`` compared a
+    value derived from the student's result with the reference's (the call it came from in ``Evidence.call``)."""
+    from grader.checking import Tol
+    from grader.context import Context
+    from grader.diagnosis import Evidence
+
+    ctx = _context(monkeypatch, student, [])
+    context = Context(99, ctx.child, {}, None, 7, ctx.oracle)
+    context.begin("p99.stub")
+    shown = CheckFailure("R1(0.0) raised ValueError, but every angle has a rotation")
+    alpha = 0.9
+    got_root, expected_root = student(alpha), _R1(alpha)
+    got, expected = got_root @ [0.0, 1.0, 0.0], expected_root @ [0.0, 1.0, 0.0]
+    compared = CheckFailure("R1(0.9) @ e2 is not the expected value", "", "", None,
+                            Evidence(got, expected, Tol("tight", 1e-9, 1e-9), "R1 @ e2", got, expected,
+                                     call=("stub_judged.R1", (alpha,), got_root, expected_root)))
+    return context, shown, [(0, (0.0,), shown), (3, (alpha,), compared)]
+
+
+def test_a_shown_input_that_raised_is_told_the_cause_found_on_another(monkeypatch):
+    def student(alpha):
+        if alpha == 0.0:
+            raise ValueError("no angle")
+        A = _R1(alpha)
+        A[2, 1] = -A[2, 1]
+        return A
+
+    context, shown, failures = _randomized(monkeypatch, student)
+    told = context._narrowed(shown, failures)
+    assert told.message == shown.message  # the failure shown stays
+    assert told.diagnosis == "sign_flip", (told.diagnosis, told.hint)
+    assert told.hint.startswith("On another input where your function returned a value: looks like a sign slip")
+
+
+def test_a_shown_input_that_raised_names_nothing_where_no_slip_holds_on_another(monkeypatch):
+    def student(alpha):
+        A = _R1(alpha)
+        A[2, 1] += 0.3 + 0.1 * alpha**2
+        return A
+
+    context, shown, failures = _randomized(monkeypatch, student)
+    told = context._narrowed(shown, failures)
+    assert told.diagnosis == "" and told.hint == "" and told.explained
