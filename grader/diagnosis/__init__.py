@@ -61,6 +61,13 @@ Before any cause of a run, the student's right-hand side is compared with the re
 probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,
 and no cause that blames the integration is told, by the engine or by a check (``doubt``).
 
+A check that judges the student's value by a property and names only its symptom (``SYMPTOMS``: a matrix that is
+not orthonormal, a reflection, a body in the wrong orientation) asks the engine too (``judge``): the student's
+probe call behind the value is compared with the reference's call on the same arguments, each result that differs
+is explained as a failing comparison (on the input shown and the engine's own second input), and a cause found is
+told beside the symptom, whose message stays.  A randomized comparison whose shown input has no comparison (the
+student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
+
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
 grading context), never from ``reference`` itself.  Every reference call the engine may need is a function of the
