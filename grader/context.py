@@ -27,7 +27,7 @@ from .checking import (
     diagnose,
     random_input,
 )
-from .diagnosis import doubt, explain, prepare_call, prepared, recording, remember_run, trace
+from .diagnosis import doubt, explain, judge, symptom, prepare_call, prepared, recording, remember_run, trace
 from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, private_hypothesis_home
@@ -388,6 +388,8 @@ class Context:
         failure = _narrowed(shown, _generic(failures)[1])
         if not isinstance(failure, CheckFailure) or failure.diagnosis or failure.explained:
             return failure
+        if failure.evidence is None:
+            return self._told_beside(failure, failures)
         first = _property(shown)
         others = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
                   if exc is not shown and isinstance(exc, CheckFailure) and exc.evidence is not None
@@ -396,6 +398,30 @@ class Context:
             return CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates,
                                 failure.evidence, explained=True)
         return explained(self, failure, [failure.evidence, others[0].evidence])
+
+    def _told_beside(self, failure: CheckFailure, failures) -> CheckFailure:
+        """A failure shown without a comparison (the student's code raised, or a property stated in words), where
+        other failing inputs of the same check did compare the student's value with the reference's: the cause
+        the diagnosis engine finds there (on two of them, or on one and its own second input) told beside the
+        failure shown, which stays as it is.  Asked once (``explained``)."""
+        compared = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
+                    if exc is not failure and isinstance(exc, CheckFailure) and exc.evidence is not None
+                    and not exc.diagnosis]
+        alike = [exc for exc in compared if compared and _property(exc) == _property(compared[0])]
+        finding = None
+        if len(alike) > 1:
+            finding = explained(self, alike[0], [alike[0].evidence, alike[1].evidence])
+        elif alike and alike[0].evidence.call is not None:
+            found = judge(self, alike[0].evidence)
+            if found is not None and found.names:
+                finding = CheckFailure(alike[0].message, found.hint, found.diagnosis, explained=True)
+        if finding is None or not finding.diagnosis:
+            return CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates,
+                                failure.evidence, explained=True)
+        hint = "\n".join(part for part in (failure.hint, f"On another input where your function returned a value: "
+                                             f"{finding.hint[:1].lower()}{finding.hint[1:]}") if part)
+        return CheckFailure(failure.message, hint, finding.diagnosis, failure.candidates, failure.evidence,
+                            explained=True)
 
     def _fresh_inputs(self, strategy, examples: int) -> list:
         try:
@@ -625,7 +651,7 @@ def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
     if failure.diagnosis:
         finding = doubt(ctx, failure.evidence, failure.diagnosis)  # an integration blamed for a wrong model
         if finding is None:
-            return failure
+            return _beside_symptom(ctx, failure)
         return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
                             explained=True)
     if failure.evidence is None:
@@ -639,6 +665,21 @@ def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
         hint = "\n".join(part for part in (failure.hint, finding.hint) if part)
         return CheckFailure(failure.message, hint, "", failure.candidates, failure.evidence, explained=True)
     return CheckFailure(failure.message, finding.hint, finding.diagnosis, failure.candidates, failure.evidence,
+                        explained=True)
+
+
+def _beside_symptom(ctx, failure: CheckFailure) -> CheckFailure:
+    """A failure whose diagnosis names only a symptom (``diagnosis.SYMPTOMS``), with the cause the diagnosis engine
+    finds by comparing the student's call behind the judged value with the reference's (``diagnosis.judge``): the
+    message (the symptom) stays, the hint tells the symptom's and then the cause's, and the diagnosis names the
+    cause.  Where the engine finds none, the failure as it was."""
+    if not symptom(failure.diagnosis):
+        return failure
+    finding = judge(ctx, failure.evidence)
+    if finding is None or not finding.names:
+        return failure
+    hint = "\n".join(part for part in (failure.hint, finding.hint) if part)
+    return CheckFailure(failure.message, hint, finding.diagnosis, failure.candidates, failure.evidence,
                         explained=True)
 
 

@@ -63,6 +63,13 @@ Before any cause of a run, the student's right-hand side is compared with the re
 probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,
 and no cause that blames the integration is told, by the engine or by a check (``doubt``).
 
+A check that judges the student's value by a property and names only its symptom (``SYMPTOMS``: a matrix that is
+not orthonormal, a reflection, a body in the wrong orientation) asks the engine too (``judge``): the student's
+probe call behind the value is compared with the reference's call on the same arguments, each result that differs
+is explained as a failing comparison (on the input shown and the engine's own second input), and a cause found is
+told beside the symptom, whose message stays.  A randomized comparison whose shown input has no comparison (the
+student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
+
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
 grading context), never from ``reference`` itself.  Every reference call the engine may need is a function of the
@@ -77,7 +84,7 @@ arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import RECORDING, doubted, find, note_comparison, prepare, prepare_call, prepared, recording
+from .engine import RECORDING, doubted, find, judged, note_comparison, prepare, prepare_call, prepared, recording
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
@@ -92,6 +99,9 @@ __all__ = [
     "declaration",
     "explain",
     "doubt",
+    "judge",
+    "symptom",
+    "SYMPTOMS",
     "prepare",
     "prepare_call",
     "prepared",
@@ -136,6 +146,31 @@ def doubt(ctx, evidence, diagnosis: str) -> Finding | None:
     finding = _guarded(doubted, Scene(ctx), evidence)
     trace.end(finding)
     return finding
+
+
+#: the families of the vocabulary that say what a value shows (a property it lacks), not what slip made it: a check
+#: that names one judged the student's value, which the engine may compare with the reference's (``judge``)
+SYMPTOMS = ("not_orthonormal", "handedness", "orientation", "not_spd")
+
+
+def judge(ctx, evidence) -> Finding | None:
+    """The cause behind a value a check judged by a property rather than compared (``engine.judged``): the student's
+    probe call the value came from compared with the reference's call on the same arguments, to be told beside the
+    failure's own words; None: none found.  ``evidence``: the failure's comparison, if it carries one."""
+    if not ENABLED:
+        return None
+    trace.begin(getattr(ctx, "check_id", ""), "judged")
+    finding = _guarded(judged, Scene(ctx), evidence)
+    trace.end(finding)
+    return finding
+
+
+def symptom(diagnosis: str) -> bool:
+    """Whether ``diagnosis`` names only symptoms (``SYMPTOMS``), no cause."""
+    from checks._diagnoses import DIAGNOSES
+
+    names = [name for name in diagnosis.split(" or ") if name]
+    return bool(names) and all(name in DIAGNOSES and DIAGNOSES[name].family in SYMPTOMS for name in names)
 
 
 def _guarded(ask, scene: Scene, evidence) -> Finding | None:

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from checks._diagnoses import DIAGNOSES
+from probes import ProbeLookupError, lookup
 
 from ..values import Tol, format_array
 from ..errors import GraderFault, StudentFault
@@ -72,6 +73,8 @@ __all__ = [
     "prepare_call",
     "prepare",
     "RESULT_LEAVES",
+    "JUDGED_TOL",
+    "judged",
 ]
 
 
@@ -671,6 +674,76 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
         return None
     hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
     return Finding(findings[0][1].names, hint)
+
+
+#: the tolerance of the comparison the engine makes itself where a check judged the student's value by a property
+#: and named a symptom (``judged``): the student's call against the reference's on the same arguments
+JUDGED_TOL = Tol("the reference's value of the same call", 1e-8, 1e-8)
+
+
+def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
+    """Where a check judged the student's value by a property and said its symptom (a matrix that is not
+    orthonormal, a body in the wrong orientation), the cause behind it: the student's call the value came from
+    (``judged_call``) compared with the reference's call on the same arguments, each result that differs explained
+    as a failing comparison of its own (on the input shown and the engine's own second input), and a cause named
+    where the results explained agree on it; None otherwise.  ``evidence``: the failure's comparison, if any (the
+    value it holds tells the call; its tolerance is the comparison's)."""
+    log = getattr(scene.ctx, "calls", ())
+    call = judged_call(log, evidence)
+    if call is None:
+        trace.note("judged", reason="no declared call")
+        return None
+    tol = evidence.tol if evidence is not None and isinstance(evidence.tol, Tol) else JUDGED_TOL
+    expected_root = scene.reference(call.probe, call.args)
+    results = _result_evidences(Evidence(np.zeros(0), np.zeros(0), tol, "the result",
+                                         call=(call.probe, call.args, call.root, expected_root)))
+    trace.note("judged", probe=call.probe, differs=[list(map(str, path)) for path in results])
+    findings, left = [], False
+    for path in list(results)[:RESULT_LEAVES]:
+        finding = find(scene, [results[path]])
+        if finding is not None and finding.names:
+            findings.append((results[path].name, finding))
+        left = left or (finding is not None and not finding.names and KIT_NOTE in finding.hint)
+    if left:
+        return Finding((), KIT_NOTE)
+    if not findings or len({f.diagnosis for _, f in findings}) != 1:
+        return None
+    if len(findings) == 1:
+        return findings[0][1]
+    hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
+    return Finding(findings[0][1].names, hint)
+
+
+def judged_call(log, evidence: Evidence | None) -> Source | None:
+    """The student's probe call (not a run's) behind a value a check judged: the call of the failure's comparison
+    (``Evidence.call``), else the call whose result holds the compared value, else the last probe call the check
+    made of the student's code (the check judges what it asked last); None."""
+    if evidence is not None and evidence.call is not None:
+        probe, args, got_root, _ = evidence.call
+        return Source(probe, tuple(args), (), got_root) if _judgeable(probe) else None
+    if evidence is not None:
+        found = locate(log, evidence.raw_got, "student")
+        if found is not None and _judgeable(found.probe):
+            return Source(found.probe, found.args, (), found.root)
+    for side, probe, args, value in reversed(log):
+        if side == "student" and _judgeable(probe):
+            return Source(probe, tuple(args), (), value)
+    return None
+
+
+def _judgeable(probe) -> bool:
+    """A probe whose call the engine may compare with the reference's: one it knows by name (``probes``), not a
+    run's (whose comparison is the checks' own)."""
+    if not isinstance(probe, str):
+        return False
+    decl = declaration(probe)
+    if decl is None:
+        try:
+            lookup(probe)
+        except ProbeLookupError:
+            return False
+        return True
+    return not decl.motion
 
 
 def _same_shape(evidence: Evidence) -> bool:
