@@ -17,13 +17,16 @@ from grader.checking import (
     EXACT,
     STAGE_RANDOM,
     STAGE_VALUES,
+    CheckFailure,
     Mistake,
     Tol,
     assert_close,
     check,
+    close,
     fail,
     format_array,
 )
+from grader.context import explained
 from probes import problem_27 as p27
 
 from ._answers import choice
@@ -43,6 +46,8 @@ QUESTIONS = {
 HOLDS = 1e-6
 #: residuals of (e) are computed with central differences
 RESIDUALS = Tol("central differences", 1e-5, 1e-5)
+#: the random rigid motions (seed) and times of (e) the residuals are compared on
+FRAME_CASES = ((0, 0.3), (3, -0.2))
 COORDINATES = st.floats(-5.0, 5.0, **FINITE)
 POINTS = st.tuples(COORDINATES, COORDINATES)
 
@@ -244,16 +249,49 @@ def check_governor_jacobian(ctx):
 @check(1, title="frame_derivative_residuals(seed, t) = |lhs - rhs| of the statements of (e) on random rigid motions",
        stage=STAGE_VALUES, group="frames", secret=True)
 def check_frame_residuals(ctx):
-    for seed, t in ((0, 0.3), (3, -0.2)):
+    failures = []
+    for seed, t in FRAME_CASES:
         expected = _residuals(ctx, p27.frame_derivative_residuals, seed, t)
         own = judged(ctx, p27.frame_derivative_residuals, seed, t)  # with the student's cardan, skew, ...
         got = ctx.student(p27.frame_derivative_residuals, seed, t)
         if not isinstance(got, dict) or sorted(map(str, got)) != ["1", "2", "3", "4"]:
+            if failures:  # the first case's failure is the one shown
+                break
             fail(f"frame_derivative_residuals({seed}, {t}) must return a dict with the keys 1, 2, 3, 4; got "
                  f"{str(got)[:200]}")
         name = f"|lhs - rhs| of statements 1-4, frame_derivative_residuals({seed}, {t})"
         mine = [got[str(k)] for k in (1, 2, 3, 4)]
-        held(ctx, own, lambda mine=mine, expected=expected, name=name: assert_close(
-            mine, [expected[k] for k in (1, 2, 3, 4)], name, RESIDUALS),
-             lambda value, mine=mine, name=name: assert_close(mine, [value[str(k)] for k in (1, 2, 3, 4)], name,
-                                                              RESIDUALS))
+        try:
+            held(ctx, own, lambda mine=mine, expected=expected, name=name: assert_close(
+                mine, [expected[k] for k in (1, 2, 3, 4)], name, RESIDUALS),
+                 lambda value, mine=mine, name=name: assert_close(mine, [value[str(k)] for k in (1, 2, 3, 4)], name,
+                                                                  RESIDUALS))
+        except CheckFailure as failure:
+            failures.append((failure, got, expected))
+    if failures:
+        raise _statement_failure(ctx, failures)
+
+
+def _statement_failure(ctx, failures):
+    """The first failure of the residuals, its evidence the residual of the first statement that differs from the
+    reference's (one entry of each side's result, so that the engine finds the calls it came from), on each case
+    where it differs (the engine hears two inputs where both cases fail there)."""
+    failure, got, expected = failures[0]
+    if failure.diagnosis or failure.evidence is None:
+        return failure
+    differing = [k for k in (1, 2, 3, 4) if not close(np.asarray(float(got[str(k)])), np.asarray(expected[k]),
+                                                      RESIDUALS)]
+    if not differing:  # judged on the student's own shared functions: that comparison stands
+        return failure
+    k = differing[0]
+    evidences = [_statement_evidence(mine, ours, k) for _, mine, ours in failures
+                 if not close(np.asarray(float(mine[str(k)])), np.asarray(ours[k]), RESIDUALS)]
+    failure = CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates, evidences[0])
+    return explained(ctx, failure, evidences)
+
+
+def _statement_evidence(got, expected, k):
+    from grader.diagnosis import Evidence
+
+    return Evidence(np.asarray(float(got[str(k)])), np.asarray(float(expected[k])), RESIDUALS,
+                    f"|lhs - rhs| of statement {k}", got[str(k)], expected[k])
