@@ -47,6 +47,8 @@ def student_once(ctx, probe, *args, timeout=None):
     key = call_key(probe, args)
     if key not in cache:
         cache[key] = ctx.student(probe, *args, timeout=timeout)
+    else:  # the running check's log holds the call its values came from (the diagnosis engine reads it)
+        ctx.calls.append(("student", probe, args, cache[key]))
     return cache[key]
 
 
