@@ -44,7 +44,8 @@ REFUSED = Dict({"error": Text()})
 DESCRIPTION = Dict({
     "gravity": Arr(3), "timestep": Num(), "integrator": Text(), "keyframes": Num(), "contacts": Num(),
     "qpos": Arr(None), "qvel": Arr(None),
-    "bodies": Seq(Dict({"name": Text(), "parent": Num(), "mass": Num(), "com": Arr(3), "inertia": Arr(3, 3)})),
+    "bodies": Seq(Dict({"name": Text(), "parent": Num(), "mass": Num(), "com": Arr(3), "inertia": Arr(3, 3),
+                        "frame": Arr(3, 3)}, optional=("frame",))),
     "joints": Seq(Dict({"name": Text(), "type": Text(), "body": Num(), "anchor": Arr(3), "axis": Arr(3),
                         "damping": Num(), "armature": Num(), "frictionloss": Num(), "stiffness": Num()})),
     "actuators": Seq(Dict({"name": Text(), "joint": Num(), "gear": Num(), "unit_torque": Arr(None),
@@ -197,8 +198,8 @@ def posed(model, data, qpos=None):
 
 def describe(model, data) -> dict:
     """What the model declares, in the world frame of its initial configuration: gravity, integrator, the moving
-    bodies (mass, centre of mass, inertia about it), the joints (type, anchor, axis, damping), the actuators (the
-    joint torque at unit control), the equality constraints, keyframes and contacts."""
+    bodies (mass, centre of mass, inertia about it, orientation), the joints (type, anchor, axis, damping), the
+    actuators (the joint torque at unit control), the equality constraints, keyframes and contacts."""
     import mujoco
     import numpy as np
 
@@ -211,6 +212,7 @@ def describe(model, data) -> dict:
             "mass": float(model.body_mass[b]),
             "com": data.xipos[b].copy(),
             "inertia": R @ np.diag(model.body_inertia[b]) @ R.T,
+            "frame": data.xmat[b].reshape(3, 3).copy(),
         })
     types = _enum_names(mujoco.mjtJoint, "mjJNT_")
     joints = []
