@@ -306,6 +306,8 @@ _TABLE = (
     _D("starts_at_rest", "initial_state", "a run that starts at rest where it should move",
        "started at rest instead of in motion"),
     _D("not_horizontal", "initial_state", "a start that is not horizontal", "did not start horizontal"),
+    _D("initial_pose", "initial_state", "a model built in another configuration (a body turned about its joint)",
+       "built the model in another configuration"),
     _D("time_shift", "time_shift", "a motion shifted in time", "shifted the motion in time"),
     _D("step_count", "time_shift", "one step too many or too few", "ran a step too many or too few"),
     _D("nearest_sample", "time_shift", "the nearest table row instead of an interpolation",

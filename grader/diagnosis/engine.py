@@ -47,6 +47,7 @@ from .grammar import (
     second_args,
 )
 from . import trace
+from .models import model_slips
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -476,8 +477,13 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
             found = [h for h in found if h.key in again]
     if run is not None:
         trace.note("run", found=[h.name for h in found])
+    described = [] if run is not None else _heard(lambda: model_slips(scene, first), bool(found), "model")
+    if described:  # a value of the student's MuJoCo model: its differences from the reference's model
+        trace.note("model_slips", found=[h.name for h in described])
     if first.source is None:  # a value derived from the student's own: explain the results it came from
-        return _told([found], "here") if found or first.call is None else _from_results(scene, evidences)
+        if found or described or first.call is None:
+            return _told([found, described], "in your model" if described else "here")
+        return _from_results(scene, evidences)
     decl = declaration(first.source.probe)
     constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
     if len(evidences) == 1 and not (decl is not None and decl.motion):
@@ -493,7 +499,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     outputs = _keep(inputs, [k for k in keys if not k.startswith(INPUT_KEYS)])
     if all(_same_shape(e) for e in evidences) and not (decl is not None and decl.motion):
         outputs += precision_slips(first.got, first.expected, first.tol)
-    tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs)]
+    tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs), described]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
     tiers.append(_heard(lambda: _ignored(scene, evidences), explained, "ignored"))
