@@ -136,7 +136,8 @@ def _loose(name):
 
 def assert_same_diagram(got, expected, name, mistakes=()):
     """Fail unless the set of ``(subclass, base)`` pairs ``got`` is ``expected``; name what is missing or extra and
-    recognise reversed pairs, misspelt names, a forgotten second base, a class left out and indirect bases.
+    recognise reversed pairs (all of them, or some: every arrow not in the diagram a missing one turned round),
+    misspelt names, a forgotten second base, a class left out and indirect bases.
     ``mistakes`` are further ``(diagnosis, predicate(got, expected), hint)``, tried first after the names."""
     if got == expected:
         return
@@ -145,6 +146,11 @@ def assert_same_diagram(got, expected, name, mistakes=()):
                f"missing:\n{_arrows(expected - got)}\nnot in the diagram:\n{_arrows(got - expected)}")
     if {(base, sub) for sub, base in got} == expected:
         fail(message, "Each pair is [subclass, base]: you wrote [base, subclass].", "reversed")
+    if got - expected and got - expected == {(base, sub) for sub, base in expected - got}:
+        turned = len(got - expected)
+        fail(message, f"Each pair is [subclass, base]: {turned} of your pairs {'is' if turned == 1 else 'are'} "
+                      "[base, subclass] (the arrows not in the diagram are the missing ones turned round).",
+             "reversed")
     if {(_loose(sub), _loose(base)) for sub, base in got} == {(_loose(s), _loose(b)) for s, b in expected}:
         fail(message, "Use the class names exactly as in the code (with the _v2 suffix and the same capitals).",
              "class_names")
