@@ -52,7 +52,8 @@ DESCRIPTION = Dict({
                            "stateful": Flag()})),
     "equalities": Seq(Dict({"type": Text(), "active": Flag(), "point1": Arr(3), "point2": Arr(3),
                             "to_world": Flag()}, optional=("point1", "point2", "to_world"))),
-})
+    "sites": Seq(Dict({"name": Text(), "body": Num(), "pos": Arr(3), "world": Arr(3)})),
+}, optional=("sites",))
 #: ``run(model, data, ...)``: after a divergence the samples stay NaN
 RUN = Dict({"t": Arr(None), "qpos": Arr(None, None, finite=False), "qvel": Arr(None, None, finite=False),
             "steps": Num(), "timestep": Num(), "integrator": Text(), "max_contacts": Num(),
@@ -199,7 +200,8 @@ def posed(model, data, qpos=None):
 def describe(model, data) -> dict:
     """What the model declares, in the world frame of its initial configuration: gravity, integrator, the moving
     bodies (mass, centre of mass, inertia about it, orientation), the joints (type, anchor, axis, damping), the
-    actuators (the joint torque at unit control), the equality constraints, keyframes and contacts."""
+    actuators (the joint torque at unit control), the equality constraints, the sites (their body, their position in
+    it and in the world), keyframes and contacts."""
     import mujoco
     import numpy as np
 
@@ -254,6 +256,8 @@ def describe(model, data) -> dict:
             p1, p2, other = _equality_points(model, data, i)
             entry.update({"point1": p1, "point2": p2, "to_world": other == 0})
         equalities.append(entry)
+    sites = [{"name": _name(model, mujoco.mjtObj.mjOBJ_SITE, k), "body": int(model.site_bodyid[k]),
+              "pos": model.site_pos[k].copy(), "world": data.site_xpos[k].copy()} for k in range(model.nsite)]
     return {
         "gravity": model.opt.gravity.copy(),
         "timestep": float(model.opt.timestep),
@@ -262,6 +266,7 @@ def describe(model, data) -> dict:
         "joints": joints,
         "actuators": actuators,
         "equalities": equalities,
+        "sites": sites,
         "keyframes": int(model.nkey),
         "qpos": data.qpos.copy(),
         "qvel": data.qvel.copy(),

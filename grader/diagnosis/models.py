@@ -49,10 +49,9 @@ def is_model(value) -> bool:
     return isinstance(value, dict) and isinstance(value.get("bodies"), list) and isinstance(value.get("joints"), list)
 
 
-def model_call(log, evidence: Evidence):
-    """``(probe, args, description)``: the student's model the compared value came from (the call found behind it,
-    else the check's latest call of the student's code that returned a model), or None."""
-    student = evidence.student
+def model_call(log, student):
+    """``(probe, args, description)``: the student's model a compared value came from (``student``: the call found
+    behind it, else the check's latest call of the student's code that returned a model), or None."""
     if student is not None and is_model(student.root):
         return student.probe, tuple(student.args), student.root
     for side, probe, args, value in reversed(list(log)):
@@ -199,7 +198,7 @@ def _vector(d) -> str:
 def model_slips(scene, evidence: Evidence) -> list[Hypothesis]:
     """The slips of the student's model that hold every difference from the reference's model on the same arguments,
     where the compared value is one of them (one story, or the grammar of values on a single attribute)."""
-    found = model_call(getattr(scene.ctx, "calls", ()), evidence)
+    found = model_call(getattr(scene.ctx, "calls", ()), evidence.student)
     if found is None or evidence.got is None:
         return []
     probe, args, mine = found
@@ -329,3 +328,4 @@ def _attribute_slips(mine, theirs, path) -> list[Hypothesis]:
             kept.append(Hypothesis(f"model:{'/'.join(map(str, path))}:{hypothesis.key}", hypothesis.name,
                                    hypothesis.cost, f"{hypothesis.detail} (the model's {what})", hypothesis.twin))
     return kept
+

@@ -1,0 +1,173 @@
+"""Values a check computes from the student's MuJoCo model, or picks from a probe's result, have a source for the
+diagnosis engine.
+
+* A MuJoCo model (``grader.diagnosis.models``): the student's compiled model is compared with the reference's on
+  the same arguments, element by element; a body moved with what it carries is an offset (and a scale where it
+  sits at a factor of the lever from its parent's joint), a body turned about its joint where the reference's
+  starts unturned is the model built in another configuration, where it starts turned by an angle given the slip
+  of that angle (degrees, a sign), and one attribute alone differing is told by the grammar of values.
+  Differences that no one story holds name nothing.
+* A check that compares a list built from a probe's dict of results hands the engine one entry of each side's
+  result, on both of its cases (problem 27's residuals of (e)): the formula tier finds the slip behind it.
+
+The planted mistakes are in no set of ``tests/diagnosis/``, no table of ``tests/engine/`` and no planted suite;
+graded as ``grade batch`` grades (a warm fork), live and from the kit's answer key (the same verdicts, and the same
+cause or none).
+"""
+
+import numpy as np
+import pytest
+
+from grader.checking import Tol
+from grader.diagnosis import Evidence, Source
+from grader.diagnosis.models import model_slips
+from grader.diagnosis.scene import Scene
+from grader.results import Status
+from tests.kit_support import (  # noqa: F401 (fixtures)
+    SEED,
+    assert_told_alike,
+    grade_live_and_kit,
+    warm_slot,
+)
+from tests.submissions import Planted, build_planted
+
+#: problem 3's custom-inertia model with its second link hung further out along the first (L + W for L): an offset,
+#: no factor of the grammar
+LINK_FURTHER_OUT = Planted(
+    name="models-p03-custom-link2-further-out", problem=3, file="problem_03.py",
+    old="inner = link_body(2, pos=LENGTH, inertial=inertial)",
+    new="inner = link_body(2, pos=LENGTH + WIDTH, inertial=inertial)",
+    check="p03.custom_inertia", diagnosis="offset", message="sit (+0.01, +0, +0) m from where they belong")
+#: problem 3's model (a) with its second link starting turned a quarter turn about joint 2: its centre of mass moves,
+#: its joint does not
+LINK_TURNED = Planted(
+    name="models-p03-link2-starts-turned", problem=3, file="problem_03.py",
+    old="    inner = link_body(2, density, pos=LENGTH)\n    return _model(\"double_pendulum\"",
+    new="    inner = link_body(2, density, pos=LENGTH, angle=np.pi / 2)\n    return _model(\"double_pendulum\"",
+    check="p03.geometry_inertia", diagnosis="initial_pose", message="start turned by +90.0 degrees about its joint",
+    also=("p03.traces_a",))
+#: problem 27's statement 4 of (e) with its transport term added instead of subtracted
+STATEMENT_4_SIGN = Planted(
+    name="models-p27-statement-4-transport-sign", problem=27, file="problem_27.py",
+    old="A.T @ (m * I_r(t, 2)) - skew(w) @ B_P", new="A.T @ (m * I_r(t, 2)) + skew(w) @ B_P",
+    check="p27.frame_residuals", diagnosis="sign_flip or transpose", message="sign")
+
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, STATEMENT_4_SIGN]
+
+#: a near miss: every hinge of problem 2's links placed off its body's origin (inside the link), the link itself
+#: where it belongs: the anchors move and the centres of mass do not, which no one story of a model holds
+JOINT_INSIDE_LINK = Planted(
+    name="models-p02-joint-inside-link", problem=2, file="problem_02.py",
+    old='<joint name="joint{i}" type="hinge" axis="0 0 1"',
+    new='<joint name="joint{i}" type="hinge" pos="0.01 0 0" axis="0 0 1"',
+    check="p02.joint", diagnosis="", message="")
+
+
+@pytest.fixture(scope="module")
+def slot():
+    yield from warm_slot(sorted({m.problem for m in MISTAKES + [JOINT_INSIDE_LINK]}))
+
+
+@pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
+def test_a_value_without_a_reference_call_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, slot):
+    assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+
+
+def test_a_model_whose_differences_no_story_holds_names_nothing(tmp_path, kit_oracle, slot):
+    submission = build_planted(JOINT_INSIDE_LINK, tmp_path / "pkg")
+    live, _ = grade_live_and_kit(JOINT_INSIDE_LINK.problem, submission, kit_oracle, zygote=slot)
+    target = {r.check_id: r for r in live.results}[JOINT_INSIDE_LINK.check]
+    assert target.status is Status.FAILED, target.message
+    assert target.diagnosis == "", (target.diagnosis, target.hint)
+
+
+# ------------------------------------------------------------------------------------------ stand-ins
+
+L = 0.2
+
+
+def _rotation(angle):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _chain(angles, lengths=(L, L), gravity=(0.0, -9.81, 0.0)):
+    """A description of a planar chain of bricks (``probes._mjcf.describe``): body i turned by ``angles[i]``
+    relative to its parent, hung at ``lengths[i - 1]`` along its parent's x."""
+    bodies, joints, frame, origin = [], [], np.eye(3), np.zeros(3)
+    for i, angle in enumerate(angles):
+        if i:
+            origin = origin + frame @ np.array([lengths[i - 1], 0.0, 0.0])
+        frame = frame @ _rotation(angle)
+        bodies.append({"name": f"link{i + 1}", "parent": i, "mass": 0.5, "com": origin + frame @ [L / 2, 0.0, 0.0],
+                       "inertia": frame @ np.diag([1e-5, 2e-3, 2e-3]) @ frame.T, "frame": frame})
+        joints.append({"name": f"joint{i + 1}", "type": "hinge", "body": i + 1, "anchor": origin, "axis":
+                       np.array([0.0, 0.0, 1.0]), "damping": 0.0, "armature": 0.0, "frictionloss": 0.0,
+                       "stiffness": 0.0})
+    return {"gravity": np.array(gravity), "timestep": 0.002, "bodies": bodies, "joints": joints, "actuators": [],
+            "qpos": np.zeros(len(angles)), "qvel": np.zeros(len(angles))}
+
+
+class _Oracle:
+    mode = "live"
+
+    def __init__(self, answer):
+        self.answer = answer
+
+    def reference(self, probe, args, persist=False, check=""):
+        return self.answer
+
+
+class _Ctx:
+    check_id = "stub.model"
+
+    def __init__(self, mine, theirs):
+        self.oracle = _Oracle(theirs)
+        self.calls = [("student", "stub.model", (1.0,), mine)]
+
+
+def _told(mine, theirs, got):
+    """The names the model tier tells for a comparison of ``got`` (a value of the student's model ``mine``)."""
+    tol = Tol("positions", 1e-6)
+    evidence = Evidence(np.asarray(got, dtype=float), np.zeros(np.shape(got)), tol, "value", got, None)
+    evidence.student = Source("stub.model", (1.0,), (), mine)
+    return sorted({h.name for h in model_slips(Scene(_Ctx(mine, theirs)), evidence)})
+
+
+def test_a_configuration_given_in_degrees_is_told_as_degrees():
+    theirs, mine = _chain([0.4, -0.7]), _chain([np.degrees(0.4), -0.7])
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["degrees"]
+
+
+def test_a_link_turned_by_its_parent_s_angle_as_well_names_nothing():
+    """The second link given its absolute angle where its angle relative to the first belongs: a turn that is no
+    slip of the angle's value."""
+    theirs, mine = _chain([0.4, -0.7]), _chain([0.4, -0.7 + 0.4])
+    assert _told(mine, theirs, mine["bodies"][1]["com"]) == []
+
+
+def test_a_link_unturned_in_the_reference_is_a_model_built_in_another_configuration():
+    theirs, mine = _chain([0.0, 0.0]), _chain([0.0, 1.1])
+    assert _told(mine, theirs, mine["bodies"][1]["com"]) == ["initial_pose"]
+
+
+def test_a_link_hung_at_half_the_lever_is_an_offset_and_a_factor():
+    theirs, mine = _chain([0.3, 0.5]), _chain([0.3, 0.5], lengths=(L / 2, L))
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["factor_half", "offset"]
+
+
+def test_gravity_alone_negated_is_a_sign():
+    theirs, mine = _chain([0.0, 0.0]), _chain([0.0, 0.0], gravity=(0.0, 9.81, 0.0))
+    assert _told(mine, theirs, mine["gravity"]) == ["sign_flip"]
+
+
+def test_differences_the_compared_value_is_not_among_name_nothing():
+    """Gravity negated, but the compared value is a centre of mass that is the reference's."""
+    theirs, mine = _chain([0.0, 0.0]), _chain([0.0, 0.0], gravity=(0.0, 9.81, 0.0))
+    assert _told(mine, theirs, mine["bodies"][1]["com"]) == []
+
+
+def test_two_stories_at_once_name_nothing():
+    """A link moved and gravity negated: no one story holds both."""
+    theirs, mine = _chain([0.0, 0.0]), _chain([0.0, 0.0], lengths=(1.5 * L, L), gravity=(0.0, 9.81, 0.0))
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == []
