@@ -16,16 +16,19 @@ holds them all, and the compared value is among them:
   unturned relative to its parent, the model built in another configuration (its ``euler`` or its keyframe);
   where it starts turned by an angle (a configuration the model is given), the slip of that angle's value that
   gives the student's turn (its sign, degrees, a factor), else nothing;
-* one attribute alone differs (gravity, an axis, a damping, a gear): the grammar of values on it (a sign, entries
-  exchanged, a factor).
+* one attribute alone differs (gravity, an axis, a damping, a gear, a site's position in its body): the grammar of
+  values on it (a sign, entries exchanged, a factor).
 
-Differences that no one story holds name nothing.  The world positions of a connect's points and what the model
-does at rest (a four-bar's acceleration) follow from the bodies and are not compared.
+Differences that no one story holds name nothing.  The world positions of sites and of a connect's points follow
+from the attributes: they are not compared, but a compared value may be one of them (the point a connect holds,
+moved with its site).  What the model does at rest (a four-bar's acceleration) is not compared.
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+from probes import ProbeLookupError, name_of
 
 from ..errors import GraderFault
 from ..values import Tol
@@ -53,11 +56,19 @@ def model_call(log, student):
     """``(probe, args, description)``: the student's model a compared value came from (``student``: the call found
     behind it, else the check's latest call of the student's code that returned a model), or None."""
     if student is not None and is_model(student.root):
-        return student.probe, tuple(student.args), student.root
+        return _named(student.probe), tuple(student.args), student.root
     for side, probe, args, value in reversed(list(log)):
         if side == "student" and is_model(value):
-            return probe, tuple(args), value
+            return _named(probe), tuple(args), value
     return None
+
+
+def _named(probe):
+    """The probe's name (the log holds the function a check called)."""
+    try:
+        return name_of(probe)
+    except ProbeLookupError:
+        return probe
 
 
 def _same(a, b) -> bool:
@@ -70,6 +81,14 @@ def _paths(desc) -> list:
     paths += [("bodies", i, key) for i in range(len(desc["bodies"])) for key in _BODY]
     paths += [("joints", j, key) for j in range(len(desc["joints"])) for key in _JOINT]
     paths += [("actuators", u, key) for u in range(len(desc.get("actuators") or ())) for key in _ACTUATOR]
+    paths += [("sites", k, "pos") for k in range(len(desc.get("sites") or ()))]
+    return paths
+
+
+def _derived_paths(desc) -> list:
+    """The values that follow from the attributes (the world positions of sites and of a connect's points)."""
+    paths = [("sites", k, "world") for k in range(len(desc.get("sites") or ()))]
+    paths += [("equalities", i, key) for i in range(len(desc.get("equalities") or ())) for key in ("point1", "point2")]
     return paths
 
 
@@ -82,13 +101,18 @@ def _alike_trees(mine, theirs) -> bool:
         return False
     if any(int(a["parent"]) != int(b["parent"]) for a, b in zip(mine["bodies"], theirs["bodies"])):
         return False
+    if len(mine.get("sites") or ()) != len(theirs.get("sites") or ()) or \
+            len(mine.get("equalities") or ()) != len(theirs.get("equalities") or ()):
+        return False
+    if any(int(a["body"]) != int(b["body"]) for a, b in zip(mine.get("sites") or (), theirs.get("sites") or ())):
+        return False
     return all(a["type"] == b["type"] and int(a["body"]) == int(b["body"])
                for a, b in zip(mine["joints"], theirs["joints"]))
 
 
-def differences(mine, theirs) -> list:
-    """The paths of the attributes where two models with the same tree differ."""
-    return [path for path in _paths(theirs) if at(theirs, path) is not None
+def differences(mine, theirs, paths=None) -> list:
+    """The paths of the attributes (or of ``paths``) where two models with the same tree differ."""
+    return [path for path in (_paths(theirs) if paths is None else paths) if at(theirs, path) is not None
             and not _same(at(mine, path), at(theirs, path))]
 
 
@@ -209,7 +233,8 @@ def model_slips(scene, evidence: Evidence) -> list[Hypothesis]:
     if not is_model(theirs) or not _alike_trees(mine, theirs):
         return []
     differing = differences(mine, theirs)
-    if not differing or not _compared(mine, differing, evidence.got):
+    derived = differences(mine, theirs, _derived_paths(theirs))
+    if not differing or not _compared(mine, differing + derived, evidence.got):
         return []
     told = []
     for body in range(1, len(theirs["bodies"]) + 1):
