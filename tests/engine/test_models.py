@@ -46,13 +46,14 @@ LINK_TURNED = Planted(
     new="    inner = link_body(2, density, pos=LENGTH, angle=np.pi / 2)\n    return _model(\"double_pendulum\"",
     check="p03.geometry_inertia", diagnosis="initial_pose", message="start turned by +90.0 degrees about its joint",
     also=("p03.traces_a",))
-#: problem 27's statement 4 of (e) with its transport term added instead of subtracted
-STATEMENT_4_SIGN = Planted(
-    name="models-p27-statement-4-transport-sign", problem=27, file="problem_27.py",
-    old="A.T @ (m * I_r(t, 2)) - skew(w) @ B_P", new="A.T @ (m * I_r(t, 2)) + skew(w) @ B_P",
-    check="p27.frame_residuals", diagnosis="sign_flip or transpose", message="sign")
+#: problem 27's body components of the angular momentum, in the statements of (e), rotated with A_IB where its
+#: transpose belongs
+MOMENTUM_TRANSPOSED = Planted(
+    name="models-p27-body-momentum-transposed", problem=27, file="problem_27.py",
+    old="B_L, B_P = A.T @ I_L(t), m * B_v", new="B_L, B_P = A @ I_L(t), m * B_v",
+    check="p27.frame_residuals", diagnosis="transpose or factor_order", message="transpose")
 
-MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, STATEMENT_4_SIGN]
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, MOMENTUM_TRANSPOSED]
 
 #: a near miss: every hinge of problem 2's links placed off its body's origin (inside the link), the link itself
 #: where it belongs: the anchors move and the centres of mass do not, which no one story of a model holds
