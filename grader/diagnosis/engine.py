@@ -47,7 +47,7 @@ from .grammar import (
     second_args,
 )
 from . import trace
-from .models import is_model, model_call, model_slips
+from .models import model_slips
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -840,8 +840,6 @@ def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
     searched first; a printed value is traced through the student's call, ``traced``; a value of another probe's
     call gets the engine's second input only)."""
     calls = getattr(ctx, "calls", ())
-    if got is not None and any(side == "student" and is_model(value) for side, _, _, value in calls):
-        _prepare_model_once(ctx, calls, got)
     declared = [entry for entry in calls if declaration(entry[1]) is not None]
     source = locate(declared, expected, "reference", tol if isinstance(tol, Tol) else None) if declared else None
     if source is None and got is not None and isinstance(tol, Tol) and declared:
@@ -861,22 +859,6 @@ def note_comparison(ctx, expected, tol: Tol | None = None, got=None) -> None:
         return
     seen.add(key)
     prepare(ctx, source, tol if isinstance(tol, Tol) else None)
-
-
-def _prepare_model_once(ctx, calls, got) -> None:
-    """The reference's model for a comparison of a value of the student's model (``models.prepare_model``), asked
-    once per call."""
-    found = model_call(calls, locate(calls, got, "student"))
-    if found is None:
-        return
-    seen = ctx.__dict__.setdefault("_engine_prepared", set())
-    key = "model:" + call_key(found[0], found[1])
-    if key not in seen:
-        seen.add(key)
-        try:
-            Scene(ctx).reference(found[0], found[1])
-        except (Budget, GraderFault):
-            pass
 
 
 def prepare_call(ctx, probe: str, args: tuple) -> None:
