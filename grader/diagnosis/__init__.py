@@ -59,6 +59,15 @@ The grammar:
   the reference's, or one far nearer to the student's than the reference's is); a randomized comparison's second
   failing run must show the same cause.
 
+* models (``models``: a value of the student's MuJoCo model, which a check compares with the sheet's numbers or
+  the reference's analytic values, so that no reference call stands behind it): the student's compiled model and
+  the reference's on the same arguments, element by element; a body moved with what it carries (an offset, and a
+  scale where it sits at a factor of the lever from its parent's joint), a body turned about its joint (the model
+  built in another configuration, or the slip of the angle it was given), one attribute alone differing (the
+  grammar of values), each only where it holds every difference and the compared value is among them.  The kit's
+  key holds no reference's model for a call asked of the student alone: there the kit leaves the cause to the
+  graded submission.
+
 Before any cause of a run, the student's right-hand side is compared with the reference's along the run (where the
 probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,
 and no cause that blames the integration is told, by the engine or by a check (``doubt``).
@@ -77,7 +86,7 @@ probe's arguments alone, so the student kit's answer key holds them: while the k
 of a declared probe makes them (``prepare``).
 
 The package: ``evidence`` (declarations, evidence, where values came from), ``grammar`` (slips of values and
-arguments), ``terms``, ``runs``, ``scene`` (the reference and the student's code, with budgets) and ``engine``
+arguments), ``terms``, ``runs``, ``models``, ``scene`` (the reference and the student's code, with budgets) and ``engine``
 (explaining, and recording the key).
 """
 

@@ -106,7 +106,17 @@ def _chain(angles, lengths=(L, L), gravity=(0.0, -9.81, 0.0)):
                        np.array([0.0, 0.0, 1.0]), "damping": 0.0, "armature": 0.0, "frictionloss": 0.0,
                        "stiffness": 0.0})
     return {"gravity": np.array(gravity), "timestep": 0.002, "bodies": bodies, "joints": joints, "actuators": [],
-            "qpos": np.zeros(len(angles)), "qvel": np.zeros(len(angles))}
+            "qpos": np.zeros(len(angles)), "qvel": np.zeros(len(angles)), "sites": [], "equalities": []}
+
+
+def _tipped(desc, pos):
+    """``desc`` with a site at ``pos`` on its last body, and a connect that joins it to the world where the site
+    is."""
+    frame, origin = desc["bodies"][-1]["frame"], desc["joints"][-1]["anchor"]
+    world = origin + frame @ np.asarray(pos, dtype=float)
+    return {**desc, "sites": [{"name": "tip", "body": len(desc["bodies"]), "pos": np.asarray(pos, dtype=float),
+                               "world": world}],
+            "equalities": [{"type": "connect", "active": True, "point1": world, "point2": world, "to_world": True}]}
 
 
 class _Oracle:
@@ -172,3 +182,9 @@ def test_two_stories_at_once_name_nothing():
     """A link moved and gravity negated: no one story holds both."""
     theirs, mine = _chain([0.0, 0.0]), _chain([0.0, 0.0], lengths=(1.5 * L, L), gravity=(0.0, 9.81, 0.0))
     assert _told(mine, theirs, mine["joints"][1]["anchor"]) == []
+
+
+def test_a_site_with_its_coordinates_exchanged_is_told_by_the_point_it_holds():
+    """The compared value is the world point a connect holds, which follows from the site's position in its body."""
+    theirs, mine = _tipped(_chain([0.3, -0.5]), [L, 0.0, 0.0]), _tipped(_chain([0.3, -0.5]), [0.0, L, 0.0])
+    assert _told(mine, theirs, mine["equalities"][0]["point1"]) == ["swapped"]
