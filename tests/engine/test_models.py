@@ -1,5 +1,4 @@
-"""Values a check computes from the student's MuJoCo model, or picks from a probe's result, have a source for the
-diagnosis engine.
+"""Values a check computes from the student's MuJoCo model have a source for the diagnosis engine.
 
 * A MuJoCo model (``grader.diagnosis.models``): the student's compiled model is compared with the reference's on
   the same arguments, element by element; a body moved with what it carries is an offset (and a scale where it
@@ -7,8 +6,6 @@ diagnosis engine.
   starts unturned is the model built in another configuration, where it starts turned by an angle given the slip
   of that angle (degrees, a sign), and one attribute alone differing is told by the grammar of values.
   Differences that no one story holds name nothing.
-* A check that compares a list built from a probe's dict of results hands the engine one entry of each side's
-  result, on both of its cases (problem 27's residuals of (e)): the formula tier finds the slip behind it.
 
 The planted mistakes are in no set of ``tests/diagnosis/``, no table of ``tests/engine/`` and no planted suite;
 graded as ``grade batch`` grades (a warm fork), live and from the kit's answer key (the same verdicts, and the same
@@ -46,14 +43,7 @@ LINK_TURNED = Planted(
     new="    inner = link_body(2, density, pos=LENGTH, angle=np.pi / 2)\n    return _model(\"double_pendulum\"",
     check="p03.geometry_inertia", diagnosis="initial_pose", message="start turned by +90.0 degrees about its joint",
     also=("p03.traces_a",))
-#: problem 27's body components of the angular momentum, in the statements of (e), rotated with A_IB where its
-#: transpose belongs
-MOMENTUM_TRANSPOSED = Planted(
-    name="models-p27-body-momentum-transposed", problem=27, file="problem_27.py",
-    old="B_L, B_P = A.T @ I_L(t), m * B_v", new="B_L, B_P = A @ I_L(t), m * B_v",
-    check="p27.frame_residuals", diagnosis="transpose or factor_order", message="transpose")
-
-MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, MOMENTUM_TRANSPOSED]
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED]
 
 #: a near miss: every hinge of problem 2's links placed off its body's origin (inside the link), the link itself
 #: where it belongs: the anchors move and the centres of mass do not, which no one story of a model holds
