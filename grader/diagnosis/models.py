@@ -48,8 +48,14 @@ _MODEL = ("gravity", "timestep", "qpos", "qvel")
 
 
 def is_model(value) -> bool:
-    """``value`` is a model's description (``probes._mjcf.describe``)."""
-    return isinstance(value, dict) and isinstance(value.get("bodies"), list) and isinstance(value.get("joints"), list)
+    """``value`` is a MuJoCo model's description (``probes._mjcf.describe``), not any result with bodies and joints
+    (a tree's description of the course's own classes)."""
+    if not isinstance(value, dict) or not {"gravity", "timestep"} <= set(value):
+        return False
+    bodies, joints = value.get("bodies"), value.get("joints")
+    return isinstance(bodies, list) and isinstance(joints, list) \
+        and all(isinstance(b, dict) and {"parent", "mass", "com", "inertia"} <= set(b) for b in bodies) \
+        and all(isinstance(j, dict) and {"type", "body", "anchor", "axis"} <= set(j) for j in joints)
 
 
 def model_call(log, student):

@@ -178,3 +178,9 @@ def test_a_site_with_its_coordinates_exchanged_is_told_by_the_point_it_holds():
     """The compared value is the world point a connect holds, which follows from the site's position in its body."""
     theirs, mine = _tipped(_chain([0.3, -0.5]), [L, 0.0, 0.0]), _tipped(_chain([0.3, -0.5]), [0.0, L, 0.0])
     assert _told(mine, theirs, mine["equalities"][0]["point1"]) == ["swapped"]
+
+
+def test_a_tree_of_the_course_s_own_classes_is_no_model():
+    """A result with bodies and joints that is no MuJoCo model's description (a tree of problem 24's classes)."""
+    tree = {"bodies": [{"name": "B1", "A_IB": np.eye(3)}], "joints": [{"name": "J1", "q": 0.3}]}
+    assert _told(tree, tree, [0.3]) == []
