@@ -17,6 +17,7 @@ __all__ = [
     "call_key",
     "Declaration",
     "DECLARATIONS",
+    "OF_FORMULAS",
     "declaration",
     "Source",
     "Evidence",
@@ -55,6 +56,9 @@ class Declaration:
 
 
 DECLARATIONS: dict[str, Declaration | None] = {}
+#: the declarations that only the tier of formulas reads (``mutants.part_of``): a probe that declares nothing else
+#: declares nothing to the other tiers
+OF_FORMULAS = frozenset({"part"})
 
 
 def declaration(probe: str) -> Declaration | None:
@@ -69,7 +73,7 @@ def declaration(probe: str) -> Declaration | None:
     except ProbeLookupError:
         DECLARATIONS[probe] = None
         return None
-    declared = getattr(func, "declared", None) or {}
+    declared = {key: value for key, value in (getattr(func, "declared", None) or {}).items() if key not in OF_FORMULAS}
     if not declared:
         DECLARATIONS[probe] = None
         return None
