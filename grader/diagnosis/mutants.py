@@ -64,11 +64,11 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at, distinct, Evidence, Hypothesis, within
+from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE",
-           "NAMES_A_FUNCTION", "SLIPS", "Mutant", "mutants_of", "mutant_slips", "late", "left_to_live", "part_of"]
+           "NAMES_A_FUNCTION", "SLIPS", "Mutant", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -1175,18 +1175,6 @@ def _reproduced(package, inputs: list[Evidence], calls: list) -> list | None:
             return None
         values.append(value)
     return values
-
-
-def part_of(source) -> tuple | None:
-    """``(probe, args)`` of the cheaper call whose result holds the source's value at the same path (the probe's
-    declared ``part``, ``probes.probe``), or None."""
-    try:
-        part = (getattr(_probe(source.probe), "declared", None) or {}).get("part")
-        if not part or not source.path or source.path[0] not in part["keys"]:
-            return None
-        return part["probe"], tuple(source.args[k] for k in part["args"])
-    except (ImportError, AttributeError, LookupError, TypeError, ValueError):
-        return None
 
 
 def _value(package, evidence: Evidence, call: tuple):

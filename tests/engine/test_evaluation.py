@@ -5,6 +5,8 @@ how cheaply it is found.
   mutant is evaluated on the part, and on the whole probe only where the part reproduces the student's value;
   the slips kept are those the whole probe alone keeps (a mutant that reproduces on the part but raises in the
   rest of the probe is not kept), and the whole probe is called for the few mutants that pass the part only.
+* The other tiers, which need the reference's value at a path only, ask the live reference for the part (the
+  student kit's key holds the probe's own calls).
 * The declaration holds on the reference: every probe that declares a part gives the part's values at its keys.
 * The arguments of one input are copied for each call of a mutant (a mutant may change them in place) from one
   kept copy.
@@ -196,3 +198,41 @@ def test_every_declared_part_holds_on_the_reference():
             assert np.array_equal(np.asarray(whole[key]), np.asarray(cheaper[key])), (name, key)
         if set(func.declared) == {"part"}:
             assert declaration(name) is None
+
+
+# ------------------------------------------------------------------------------------------ the reference's values
+
+
+def test_the_live_reference_is_asked_for_the_declared_part(monkeypatch):
+    """The engine's other tiers ask the reference for a value at a path (an argument changed, every argument
+    moved, an input slip): live through the declared part (the same value, without the rest of the probe), in the
+    student kit through the probe itself (its key holds the probe's calls); a path outside the part's keys, or a
+    probe that declares none, is asked as it is."""
+    import grader.diagnosis.scene as scene_module
+    from grader.diagnosis.evidence import part_of
+    from grader.diagnosis.scene import Scene
+
+    from .stand_ins import StandInOracle
+
+    asked = []
+
+    def whole(a, b, rooted):
+        asked.append("whole")
+        return {"d": np.array([(a - b) / 2.0, a * b]), "root": math.sqrt(abs(a - b))}
+
+    def part(a, b):
+        asked.append("part")
+        return {"d": np.array([(a - b) / 2.0, a * b])}
+
+    whole.declared = {"part": {"keys": ("d",), "probe": "made_up.part", "args": (0, 1)}}
+    oracle = StandInOracle({"made_up.whole": whole, "made_up.part": part})
+    live = Scene(SimpleNamespace(oracle=oracle, check_id="p97.halve"))
+    monkeypatch.setattr(scene_module, "part_of", lambda source: part_of(Source(whole, source.args, source.path)))
+    value = live.reference_at("made_up.whole", (3.0, 1.0, True), ("d",))
+    assert np.array_equal(value, [1.0, 3.0]) and asked == ["part"] and live.reference_calls == 1
+    assert live.reference_at("made_up.whole", (3.0, 1.0, True), ("root",)) == math.sqrt(2.0)
+    assert asked == ["part", "whole"]
+    oracle.mode = "kit"
+    kit = Scene(SimpleNamespace(oracle=oracle, check_id="p97.halve"))
+    assert np.array_equal(kit.reference_at("made_up.whole", (3.0, 1.0, True), ("d",)), [1.0, 3.0])
+    assert asked == ["part", "whole", "whole"]
