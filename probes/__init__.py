@@ -34,7 +34,13 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   there (a key that holds a whole state gives the engine that state at the event exactly, where it jumps);
 * ``constants``: the probe (no arguments) of the problem's named constants (a mass, g, a length);
 * ``draw``: False when the engine must not draw a second input itself (the probe is slow, or its arguments must
-  keep their relations).
+  keep their relations);
+* ``part``: ``{"keys": (key, ...), "probe": name, "args": (index, ...)}`` where the result's values at these keys
+  are those of a cheaper probe (its result's values at the same keys) on the arguments at these indices: the
+  engine's tier of formulas tries a mutant on that probe first, and on the whole one only where the cheaper one
+  reproduces the student's value (the rest of the result is not computed for the mutants that cannot).  It is no
+  declaration of the arguments or of the result: a probe that declares only its part is tried by the other tiers
+  as one that declares nothing.
 """
 
 import contextlib
@@ -44,7 +50,7 @@ import threading
 __all__ = ["probe", "module", "lookup", "name_of", "remembered", "fresh", "ProbeLookupError"]
 
 #: the keywords a probe may declare
-DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw")
+DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw", "part")
 
 
 def probe(func=None, *, returns=None, says="", reference_only=False, **declared):

@@ -163,7 +163,8 @@ def _positions(tree):
             "M_path": Tup(Arr(None, None), Arr(None, None)),
             "positions": Seq(Tup(Seq(Arr(3)), Seq(Arr(3)))),
         }
-    )
+    ),
+    part={"keys": ("M", "f", "g"), "probe": "_dynamics.mfg", "args": (0, 1, 2, 3)},
 )
 def lagrange(pkg, description, q, qd, I_grav, h):
     """What the physics checks need from the package alone: ``M``, ``f``, ``g`` at ``(q, qd)``; every body's mass,

@@ -108,7 +108,7 @@ def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: boo
         return one
     for hypothesis, args in input_slips(decl, source.args):
         try:
-            value = array_of(at(scene.reference(source.probe, args), source.path))
+            value = scene.reference_at(source.probe, args, source.path)
         except GraderFault:
             continue
         if value is not None:
@@ -328,7 +328,7 @@ def _unchanged(scene: Scene, at_input: Evidence, path) -> bool | None:
         return None
     args = replaced(tuple(source.args), path, changed)
     try:
-        theirs = array_of(at(scene.reference(source.probe, args), source.path))
+        theirs = scene.reference_at(source.probe, args, source.path)
     except GraderFault:
         return None
     if theirs is None or theirs.shape != at_input.expected.shape \
@@ -351,7 +351,7 @@ def _moved_input(scene: Scene, evidence: Evidence, decl: Declaration | None) -> 
     if args is None:
         return None
     try:
-        expected = array_of(at(scene.reference(source.probe, args), source.path))
+        expected = scene.reference_at(source.probe, args, source.path)
         got = array_of(at(scene.student(source.probe, args), student.path))
     except (GraderFault, StudentFault):
         return None

@@ -17,6 +17,8 @@ __all__ = [
     "call_key",
     "Declaration",
     "DECLARATIONS",
+    "SHORTCUTS",
+    "part_of",
     "declaration",
     "Source",
     "Evidence",
@@ -55,6 +57,9 @@ class Declaration:
 
 
 DECLARATIONS: dict[str, Declaration | None] = {}
+#: the declarations that only say how a value is computed more cheaply (``part_of``): a probe that declares nothing
+#: else declares nothing to the engine's tiers
+SHORTCUTS = frozenset({"part"})
 
 
 def declaration(probe: str) -> Declaration | None:
@@ -69,7 +74,7 @@ def declaration(probe: str) -> Declaration | None:
     except ProbeLookupError:
         DECLARATIONS[probe] = None
         return None
-    declared = getattr(func, "declared", None) or {}
+    declared = {key: value for key, value in (getattr(func, "declared", None) or {}).items() if key not in SHORTCUTS}
     if not declared:
         DECLARATIONS[probe] = None
         return None
@@ -85,6 +90,19 @@ def declaration(probe: str) -> Declaration | None:
     )
     DECLARATIONS[probe] = found
     return found
+
+
+def part_of(source) -> tuple | None:
+    """``(probe, args)`` of the cheaper call whose result holds ``source``'s value at the same path (its probe's
+    declared ``part``, ``probes.probe``), or None.  The probe may be given by its function (a test's own)."""
+    try:
+        func = source.probe if callable(source.probe) else lookup(source.probe)
+        part = (getattr(func, "declared", None) or {}).get("part")
+        if not part or not source.path or source.path[0] not in part["keys"]:
+            return None
+        return part["probe"], tuple(source.args[k] for k in part["args"])
+    except (ProbeLookupError, AttributeError, LookupError, TypeError, ValueError):
+        return None
 
 
 @dataclass(frozen=True)

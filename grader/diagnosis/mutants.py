@@ -27,8 +27,12 @@ matrix transposed is its negative, told as a sign or a transpose, and a cross pr
 sign or the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is
 kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the
 second one (and on a third where the engine can draw one), and differs from the expected value (an equivalent
-mutant says nothing).  A slip inside an index is one of the index.  A cause is named only when
-the mutants kept are of one family of the vocabulary, or of two; the hint says what kind of slip and in which of
+mutant says nothing).  Where the probe computes more than the compared value and declares the cheaper call that
+holds it (``part``: ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and
+on the whole probe only where it reproduces the student's value there: the mutants kept are those the whole probe
+keeps, at the cost of the part for the others.  Each call gets its own copy of the input's arguments (a mutant may
+change them in place), unpickled from one kept for the input.  A slip inside an index is one of the index.  A cause
+is named only when the mutants kept are of one family of the vocabulary, or of two; the hint says what kind of slip and in which of
 the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
@@ -49,6 +53,7 @@ import ast
 import copy
 import ctypes
 import itertools
+import pickle
 import re
 import sys
 import threading
@@ -64,7 +69,7 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at, distinct, Evidence, Hypothesis, within
+from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE",
@@ -1032,14 +1037,29 @@ def _probe(probe):
 
 
 def _call(package, probe, args, path):
-    """The value at ``path`` of ``probe(*args)`` on the private package, made anew by the probe (``probes.fresh``:
-    a probe that keeps what it computed once per package would give the reference's value for every mutant)."""
+    """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the bytes of
+    ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per
+    package would give the reference's value for every mutant)."""
     from probes import fresh
     from probes._codec import decode, encode
 
     with fresh():
-        value = decode(encode(_probe(probe)(package, *copy.deepcopy(tuple(args)))))
+        value = decode(encode(_probe(probe)(package, *_copied(args))))
     return array_of(at(value, path))
+
+
+def _kept_once(args: tuple):
+    """The arguments of one input, kept once for the many calls of its mutants: pickled, where they can be (a
+    copy unpickled costs a fraction of a deep copy of nested data), else as they are."""
+    try:
+        return pickle.dumps(tuple(args), protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # noqa: BLE001 - arguments that cannot be pickled are deep-copied at each call
+        return tuple(args)
+
+
+def _copied(args) -> tuple:
+    """A copy of the arguments for one call (a mutant may change them in place)."""
+    return pickle.loads(args) if isinstance(args, bytes) else copy.deepcopy(tuple(args))
 
 
 def _traced(package, root: Path, probe, args) -> set:
@@ -1218,6 +1238,9 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out."""
     kept = [] if kept is None else kept
     progress = {} if progress is None else progress
+    calls = [(e.source.probe, _kept_once(e.source.args)) for e in inputs]
+    parts = [part_of(e.source) for e in inputs]
+    parts = [None if part is None else (part[0], _kept_once(part[1])) for part in parts]
     for tried, mutant in enumerate(mutants):
         progress["tried"] = tried
         if deadline.fired:
@@ -1226,15 +1249,12 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         originals.setdefault(id(holder), (holder, holder.__code__))
         holder.__code__ = mutant.code
         try:
-            values = []
-            for evidence in inputs:
-                value = _value(package, evidence)
-                if value is None or not within(evidence.got, value, evidence.tol):
-                    break
-                values.append(value)
+            values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)])
+            if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
+                values = _reproduced(package, inputs, calls)
         finally:
             holder.__code__ = originals[id(holder)][1]
-        if len(values) < len(inputs):
+        if values is None:
             continue
         if not judged:
             kept.append(mutant)
@@ -1253,12 +1273,24 @@ def _restore(originals: dict) -> None:
         holder.__code__ = code
 
 
-def _value(package, evidence: Evidence):
-    """The mutated package's value of the comparison's call (None when the mutant raises or gives another
-    shape)."""
-    source = evidence.source
+def _reproduced(package, inputs: list[Evidence], calls: list) -> list | None:
+    """The mutated package's values of ``calls`` (``(probe, arguments)``: each input's call, or its declared part),
+    or None at the first that does not reproduce the student's value."""
+    values = []
+    for evidence, call in zip(inputs, calls):
+        value = _value(package, evidence, call)
+        if value is None or not within(evidence.got, value, evidence.tol):
+            return None
+        values.append(value)
+    return values
+
+
+def _value(package, evidence: Evidence, call: tuple):
+    """The mutated package's value of ``call`` (``(probe, arguments)``: the comparison's call, or its declared
+    part) at the comparison's path (None when the mutant raises or gives another shape)."""
+    probe, args = call
     try:
-        value = _call(package, source.probe, source.args, source.path)
+        value = _call(package, probe, args, evidence.source.path)
     except (Exception, RecursionError):  # noqa: BLE001 - a mutant that raises reproduces nothing
         return None
     if value is None or value.shape != evidence.got.shape:

@@ -9,7 +9,7 @@ from contextlib import nullcontext
 import numpy as np
 
 from ..errors import GraderFault
-from .evidence import array_of, call_key, Declaration, Source
+from .evidence import array_of, at, call_key, Declaration, part_of, Source
 from .grammar import label_of, leaves_of
 
 __all__ = [
@@ -74,6 +74,16 @@ class Scene:
         if key is not None:
             self._answers[key] = (value, None)
         return value
+
+    def reference_at(self, probe: str, args: tuple, path: tuple):
+        """The reference's value at ``path`` of ``probe(*args)`` (an array, or None), with the live reference through
+        the cheaper call the probe declares to hold it (``part``); the student kit's key holds the probe's own
+        calls."""
+        part = part_of(Source(probe, tuple(args), tuple(path))) if getattr(self.ctx.oracle, "mode", "") == "live" \
+            else None
+        if part is not None:
+            probe, args = part
+        return array_of(at(self.reference(probe, args), path))
 
     def student(self, probe: str, args: tuple):
         self.student_calls += 1
