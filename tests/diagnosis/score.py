@@ -66,6 +66,16 @@ engine's own tests or the planted suite (the same file and replaced text, or the
 (where an earlier entry makes another slip in the same line, the entry replaces a narrower text of it); candidates
 that no check failed are not in it.
 
+``--set fresh6`` is a sixth held-out set (``tests/diagnosis/fresh6/``), written like the fifth and kept from the
+engine's builders until they were done: from the sheet, the problem data and the reference alone, every realistic
+mistake whose check fails, whatever the grader of the day said of it (``today``, recorded with each after the set was
+chosen; an empty string where the check named nothing).  Its check is the first of its problem's checks that it fails;
+a slip whose family is no fact was left out; a slip that repeats one of the five earlier sets, their named companions,
+the engine's own tests or the planted suite (the same file and replaced text, the same planted text, or the same slip
+written otherwise) was dropped; candidates that no check failed, or whose check errs instead of failing, are not in
+it.  Most of its entries (87 of 94) make another slip in a line that an earlier entry also edits; each replaces a text
+of that line that no earlier entry replaces.
+
 **What the target is read on.**  The first three held-out sets hold only mistakes that the grader of their day did
 not name rightly: a set chosen so starts at 0% and leaves out, with the mistakes a catalogue names, every mistake
 the engine already named, so it is harder than the issue's "realistic mistakes that the catalogues do not list".
@@ -74,8 +84,8 @@ switched off and on; one whose check names its true cause with the engine off is
 or message tells it) and is left out of the measure, and the target is read on the others, graded with the engine
 on.  On the first three held-out sets that measure is the set's own (nothing in them was named when they were
 written); on a pool (one of them with its ``named`` companion) it is the issue's measure on all the realistic
-mistakes that were written; on the fourth and fifth sets it is the issue's measure itself (``--set fresh4
---unlisted``, ``--set fresh5 --unlisted``).
+mistakes that were written; on the fourth, fifth and sixth sets it is the issue's measure itself (``--set fresh4
+--unlisted``, ``--set fresh5 --unlisted``, ``--set fresh6 --unlisted``).
 """
 
 from __future__ import annotations
@@ -109,6 +119,7 @@ __all__ = [
     "NAMED3",
     "FRESH4",
     "FRESH5",
+    "FRESH6",
     "SETS",
     "HELD_OUT",
     "SYMPTOMS",
@@ -143,13 +154,15 @@ NAMED3 = ROOT / "tests" / "diagnosis" / "named3"
 FRESH4 = ROOT / "tests" / "diagnosis" / "fresh4"
 #: the fifth held-out set, written like the fourth apart from the engine: every realistic mistake whose check fails
 FRESH5 = ROOT / "tests" / "diagnosis" / "fresh5"
+#: the sixth held-out set, written like the fifth apart from the engine: every realistic mistake whose check fails
+FRESH6 = ROOT / "tests" / "diagnosis" / "fresh6"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
         "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
-        "fresh4": (FRESH4,), "fresh5": (FRESH5,)}
+        "fresh4": (FRESH4,), "fresh5": (FRESH5,), "fresh6": (FRESH6,)}
 #: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
-#: when they were written, the fourth and fifth every realistic mistake whose check fails
-HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5")
+#: when they were written, the fourth, fifth and sixth every realistic mistake whose check fails
+HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
@@ -540,7 +553,7 @@ def summary(graded: list[Graded], naming_: Naming, seconds: float | None = None,
     lines += [_row("I+VI+VII", weak), _row("all", graded), ""]
     if graded and which in HELD_OUT:
         lines.append(_target(graded, "every mistake of the set, also those a check names without the engine (the "
-                                      "issue's measure: --unlisted)" if which in ("fresh4", "fresh5") else
+                                      "issue's measure: --unlisted)" if which in ("fresh4", "fresh5", "fresh6") else
                              "the set holds only mistakes whose cause was not told when it was written"))
     if graded and all(g.listed is not None for g in graded):
         lines += _unlisted(graded)

@@ -1,5 +1,5 @@
 """The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second,
-third, fourth and fifth held-out sets written apart from the engine (``fresh2`` ... ``fresh5``), and the script
+third, fourth, fifth and sixth held-out sets written apart from the engine (``fresh2`` ... ``fresh6``), and the script
 that grades them and classifies each diagnosis (``tests/diagnosis/score.py``).
 
 The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
@@ -29,6 +29,7 @@ from .score import (
     FRESH3,
     FRESH4,
     FRESH5,
+    FRESH6,
     NAMED,
     NAMED2,
     NAMED3,
@@ -49,6 +50,7 @@ FRESH3_SET = fresh_mistakes(FRESH3)
 NAMED3_SET = fresh_mistakes(NAMED3)
 FRESH4_SET = fresh_mistakes(FRESH4)
 FRESH5_SET = fresh_mistakes(FRESH5)
+FRESH6_SET = fresh_mistakes(FRESH6)
 
 
 def _fallback(name):
@@ -68,8 +70,8 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
 
 
 @pytest.mark.parametrize("sets", [(FRESH_SET, NAMED_SET), (FRESH2_SET, NAMED2_SET), (FRESH3_SET, NAMED3_SET),
-                                  (FRESH4_SET, []), (FRESH5_SET, [])],
-                         ids=["first", "second", "third", "fourth", "fifth"])
+                                  (FRESH4_SET, []), (FRESH5_SET, []), (FRESH6_SET, [])],
+                         ids=["first", "second", "third", "fourth", "fifth", "sixth"])
 def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
     for mistakes in sets:
         assert defects(mistakes) == []
@@ -307,6 +309,31 @@ def test_the_fifth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_
     for path in sorted((ROOT / "tests" / "engine").rglob("*.toml")):
         earlier += [e for e in tomllib.loads(path.read_text()).get("mistake", []) if "old" in e and "file" in e]
     _assert_repeats_none(FRESH5_SET, earlier)
+
+
+# ------------------------------------------------------------------------------------------------- the sixth set
+
+
+def test_the_sixth_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families():
+    """Chosen like the fifth set (every realistic mistake whose check fails, whatever its diagnosis), so no family
+    holds more than a fifth of the set (and a little)."""
+    _assert_in_proportion(FRESH6_SET, 90)
+    families = Counter(m.family for m in FRESH6_SET)
+    assert len(families) >= 12, families
+    assert max(families.values()) <= 0.22 * len(FRESH6_SET), families
+
+
+def test_the_sixth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_or_the_planted_suite():
+    """Neither the same edit, nor the same replaced text in the same file, nor the same planted text, nor a name; the
+    earlier entries are those of the five sets, their named companions, the engine's own mistakes (``tests/engine``)
+    and the planted suite."""
+    import tomllib
+
+    earlier = _earlier_entries() + [{"name": m.name, "file": m.file, "old": m.old, "new": m.new}
+                                    for m in FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET]
+    for path in sorted((ROOT / "tests" / "engine").rglob("*.toml")):
+        earlier += [e for e in tomllib.loads(path.read_text()).get("mistake", []) if "old" in e and "file" in e]
+    _assert_repeats_none(FRESH6_SET, earlier)
 
 
 # ------------------------------------------------------------------------------------------------- classification
