@@ -324,8 +324,12 @@ def check_driven_rate(ctx):
     if np.isclose(slope, RATE, rtol=0.02):
         fail(message, "On average the rate is right but the joint strays from q1 = t: stiffen the servo (kp = 1000) "
              "and drop its damping kv, which lags the joint behind a moving setpoint.", "soft_servo")
-    fail(message, "The servo's control is the rate in rad/s (an <intvelocity> integrates it into the setpoint): "
-         "set it, and the keyframe's initial velocity, to the rate.", "wrong_rate")
+    if np.isclose(slope, -RATE, rtol=0.05):
+        fail(message, "Joint 1 turns the other way: the servo's control and the keyframe's initial velocity are the "
+             "rate itself, +rate (q1 = +t).", "sign_flip")
+    hint = ("The servo's control is the rate in rad/s (an <intvelocity> integrates it into the setpoint): set it, and "
+            "the keyframe's initial velocity, to the rate.")
+    fail(message, hint, "wrong_rate" if slope > 0 and not np.isclose(slope, RATE, rtol=0.05) else "")
 
 
 @check(2, title="3(c): joint 2's angle and rate follow the reference over 10 s (up to the chaos horizon, if any)",
