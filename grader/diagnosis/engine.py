@@ -500,7 +500,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         inputs[0] = _single(inputs[0])
     keys = list(inputs[0].predicted)
     outputs = _keep(inputs, [k for k in keys if not k.startswith(INPUT_KEYS)])
-    if all(_same_shape(e) for e in evidences) and not (decl is not None and decl.motion):
+    if all(_same_shape(e) for e in evidences):  # a run's value as well: it equals a rounded one only if rounded
         outputs += precision_slips(first.got, first.expected, first.tol)
     tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs), described]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])

@@ -358,7 +358,7 @@ def event_slips(evidence: Evidence, decl: Declaration) -> list:
                                          f"your run agrees with the reference's up to its event, but your {key} "
                                          f"is {te:.6g} where it is {tr:.6g}: the event is found {te - tr:.3g} s "
                                          "late (a coarse search for it, or a step that jumps over it)"))
-            else:
+            elif t_s[-1] <= te + tol.atol + tol.rtol * abs(te):  # a run that goes on past te was not stopped there
                 found.append(Hypothesis(f"event:early:{key}", "event_early", 2,
                                          f"your run agrees with the reference's until it stops, but your {key} is "
                                          f"{te:.6g} where it is {tr:.6g}: the event is found {tr - te:.3g} s early"))
