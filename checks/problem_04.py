@@ -283,7 +283,7 @@ def _assert_balanced(q, point, sheet_q=None):
         if not np.allclose(loop_points(q)[-1], np.asarray(point)[:2], atol=CLOSURE.atol):
             fail(f"{call} returned {np.round(q, 6).tolist()}, the configuration you return for the sheet's fixed "
                  f"point (0.5, 0, 0): its loop does not close at ({point[0]:g}, {point[1]:g}).", TYPED_HINT,
-                 "typed_numbers")
+                 "typed_numbers or ignored_argument")
     _assert_assembled(q, [None] * 4, point, call)
     t = np.linalg.svd(closure_jacobian(q))[2][-1]
     work = float(t @ height_gradient(q)) / LENGTH

@@ -303,6 +303,8 @@ def check_constrained_dynamics(ctx):
 OTHER_WIRE = (np.array([-1.0, -0.9, -1.0]), 2.1)
 #: the run with the other wire ends shortly after its impact
 T_OTHER = 1.1
+IGNORED_WIRE_HINT = ("Your run becomes taut where the sheet's wire does whatever wire it is given: pass simulate's "
+                     "anchor and wire_length on to make_wire_event (and to the constrained phase).")
 TYPED_EVENT_HINT = ("Your run has the sheet's event time whatever wire it is given: detect the event with "
                     "solve_ivp(..., events=[wire_stretched]) for the anchor and wire_length passed to simulate.")
 
@@ -388,8 +390,10 @@ def _assert_other_wire(ctx):
             f"wire_length={length:g})")
     got = ctx.student(p46.simulate, table, True, T_OTHER, OTHER_WIRE, timeout=SIMULATION_TIMEOUT)
     t_event = _event(got, what, expected)
+    sheet = ctx.reference(p46.simulate, table, True, T_END, persist=True)["t_event"]
     assert_close(t_event, expected["t_event"], f"t_event of {what}", EVENT_TIME,
-                 [Mistake("typed_numbers", SHEET_EVENT_TIME, TYPED_EVENT_HINT)],
+                 [Mistake("typed_numbers", SHEET_EVENT_TIME, TYPED_EVENT_HINT),
+                  Mistake("ignored_argument", sheet, IGNORED_WIRE_HINT)],
                  context="(a tight reference run; a wire the sheet does not print)", note=BANDS_NOTE)
     q_minus, q_plus = (as_array(got[key], f"{key} of {what}", (3,)) for key in ("q_minus", "q_plus"))
     assert_close(q_plus, q_minus, f"q_plus of {what}", EXACT, context="(an impact changes velocities only)")
