@@ -286,54 +286,37 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
     _assert_repeats_none(FRESH4_SET, earlier)
 
 
-# ------------------------------------------------------------------------------------------------- the fifth set
+# ------------------------------------------------------------------------------------ the fifth and sixth sets
+
+#: the sets written like the fourth (every realistic mistake whose check fails, whatever its diagnosis), each with
+#: the sets written before it beyond the first three (whose entries ``_earlier_entries`` reads itself)
+LATER_SETS = {"fifth": (FRESH5_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET),
+              "sixth": (FRESH6_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET)}
 
 
-def test_the_fifth_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families():
+@pytest.mark.parametrize("which", sorted(LATER_SETS))
+def test_a_later_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families(which):
     """Chosen like the fourth set (every realistic mistake whose check fails, whatever its diagnosis), so no family
     holds more than a fifth of the set (and a little)."""
-    _assert_in_proportion(FRESH5_SET, 90)
-    families = Counter(m.family for m in FRESH5_SET)
+    chosen, _ = LATER_SETS[which]
+    _assert_in_proportion(chosen, 90)
+    families = Counter(m.family for m in chosen)
     assert len(families) >= 12, families
-    assert max(families.values()) <= 0.22 * len(FRESH5_SET), families
+    assert max(families.values()) <= 0.22 * len(chosen), families
 
 
-def test_the_fifth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_or_the_planted_suite():
+@pytest.mark.parametrize("which", sorted(LATER_SETS))
+def test_a_later_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_or_the_planted_suite(which):
     """Neither the same edit, nor the same replaced text in the same file, nor the same planted text, nor a name; the
-    earlier entries are those of the four sets, their named companions, the engine's own mistakes (``tests/engine``)
-    and the planted suite."""
+    earlier entries are those of the sets before it, their named companions, the engine's own mistakes
+    (``tests/engine``) and the planted suite."""
     import tomllib
 
-    earlier = _earlier_entries() + [{"name": m.name, "file": m.file, "old": m.old, "new": m.new}
-                                    for m in FRESH3_SET + NAMED3_SET + FRESH4_SET]
+    chosen, before = LATER_SETS[which]
+    earlier = _earlier_entries() + [{"name": m.name, "file": m.file, "old": m.old, "new": m.new} for m in before]
     for path in sorted((ROOT / "tests" / "engine").rglob("*.toml")):
         earlier += [e for e in tomllib.loads(path.read_text()).get("mistake", []) if "old" in e and "file" in e]
-    _assert_repeats_none(FRESH5_SET, earlier)
-
-
-# ------------------------------------------------------------------------------------------------- the sixth set
-
-
-def test_the_sixth_set_covers_every_exercise_roughly_in_proportion_the_simulated_problems_and_many_families():
-    """Chosen like the fifth set (every realistic mistake whose check fails, whatever its diagnosis), so no family
-    holds more than a fifth of the set (and a little)."""
-    _assert_in_proportion(FRESH6_SET, 90)
-    families = Counter(m.family for m in FRESH6_SET)
-    assert len(families) >= 12, families
-    assert max(families.values()) <= 0.22 * len(FRESH6_SET), families
-
-
-def test_the_sixth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests_or_the_planted_suite():
-    """Neither the same edit, nor the same replaced text in the same file, nor the same planted text, nor a name; the
-    earlier entries are those of the five sets, their named companions, the engine's own mistakes (``tests/engine``)
-    and the planted suite."""
-    import tomllib
-
-    earlier = _earlier_entries() + [{"name": m.name, "file": m.file, "old": m.old, "new": m.new}
-                                    for m in FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET]
-    for path in sorted((ROOT / "tests" / "engine").rglob("*.toml")):
-        earlier += [e for e in tomllib.loads(path.read_text()).get("mistake", []) if "old" in e and "file" in e]
-    _assert_repeats_none(FRESH6_SET, earlier)
+    _assert_repeats_none(chosen, earlier)
 
 
 # ------------------------------------------------------------------------------------------------- classification
