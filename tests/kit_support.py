@@ -279,16 +279,30 @@ def assert_named_failure(mistake, report):
     return target
 
 
-def assert_told_alike(mistake, dest, kit_oracle, deferred_ids, zygote):
+def graded_alike(mistake, dest, kit_oracle, deferred_ids, zygote):
     """``mistake`` planted in a copy of the reference at ``dest`` and graded as ``grade batch`` grades, live and from
-    the kit's answer key: the kit gives the same verdicts (and the same cause or none), and live ``mistake.check``
-    fails with the mistake's diagnosis and message (``assert_named_failure``).  The submission and the two
+    the kit's answer key, which gives the same verdicts (and the same cause or none).  The submission and the two
     reports."""
     from .submissions import build_planted
 
     submission = build_planted(mistake, dest)
     live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=zygote)
     assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    return submission, live, kit
+
+
+def failed_alike(mistake, dest, kit_oracle, deferred_ids, zygote):
+    """The live result of ``mistake.check`` (``graded_alike``), which fails."""
+    _, live, _ = graded_alike(mistake, dest, kit_oracle, deferred_ids, zygote)
+    target = {r.check_id: r for r in live.results}[mistake.check]
+    assert target.status is Status.FAILED, target.message
+    return target
+
+
+def assert_told_alike(mistake, dest, kit_oracle, deferred_ids, zygote):
+    """``graded_alike``, and live ``mistake.check`` fails with the mistake's diagnosis and message
+    (``assert_named_failure``).  The submission and the two reports."""
+    submission, live, kit = graded_alike(mistake, dest, kit_oracle, deferred_ids, zygote)
     assert_named_failure(mistake, live)
     return submission, live, kit
 

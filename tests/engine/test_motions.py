@@ -18,7 +18,7 @@ from grader.diagnosis import Evidence, explain
 from grader.results import Status
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
-    assert_same_verdicts,
+    failed_alike,
     grade_live_and_kit,
     warm_slot,
 )
@@ -152,19 +152,9 @@ def slot():
                                  + [REVERSED_WIRE, REVERSED_PIN]}))
 
 
-def graded(mistake, tmp_path, kit_oracle, deferred_ids, slot):
-    """The live result of the mistake's check, once the kit is seen to give every check the same verdict."""
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    target = {r.check_id: r for r in live.results}[mistake.check]
-    assert target.status is Status.FAILED, target.message
-    return target, submission
-
-
 @pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
 def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, slot):
-    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
     assert mistake.message in target.hint, target.hint
 
@@ -174,7 +164,7 @@ def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferre
     """Slips of the run, not of its model: the run's arguments exchanged or ignored, solve_ivp's tolerances
     loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
     the other row; and a wrong start, which a state read from the wrong rows must not be mistaken for."""
-    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
     assert mistake.message in target.hint, target.hint
 
@@ -184,7 +174,7 @@ def test_a_run_off_for_another_reason_is_not_told_as_its_tolerances(mistake, tmp
                                                                       slot):
     """A run whose arguments are off by a factor no hypothesis tries: its right-hand side agrees and the run
     leaves the reference's, but no run at looser tolerances, no exchange and no wrong row is it."""
-    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     told = set(families_of(target.diagnosis))
     assert not told & (INTEGRATION | {"state_row", "order", "initial_state"}), (target.diagnosis, target.hint)
 
@@ -207,7 +197,7 @@ def test_an_impact_is_told_elastic_only_where_its_velocities_follow_that_law(mis
                                                                             deferred_ids, slot):
     """Every velocity reversed also reverses the closing one (restitution 1 along the constraint), but the other
     velocities are not the elastic law's: no elastic impact is told."""
-    target, _ = graded(mistake, tmp_path, kit_oracle, deferred_ids, slot)
+    target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert "elastic" not in target.diagnosis.split(" or "), (target.diagnosis, target.hint)
 
 

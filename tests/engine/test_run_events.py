@@ -14,14 +14,12 @@ from checks._diagnoses import families_of
 from grader.checking import Tol
 from grader.diagnosis import Declaration, Evidence, Source
 from grader.diagnosis.runs import event_state, event_state_slips
-from grader.results import Status
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
-    assert_same_verdicts,
-    grade_live_and_kit,
+    failed_alike,
     warm_slot,
 )
-from tests.submissions import Planted, build_planted
+from tests.submissions import Planted
 
 #: the angles before the impact read one entry on: two angles and the first rate; the impact keeps them (q_plus)
 ANGLES_ONE_ENTRY_ON = Planted(
@@ -42,24 +40,14 @@ def slot():
     yield from warm_slot([46])
 
 
-def graded(mistake, tmp_path, kit_oracle, deferred_ids, slot):
-    """The live result of the mistake's check, once the kit is seen to give every check the same verdict."""
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    target = {r.check_id: r for r in live.results}[mistake.check]
-    assert target.status is Status.FAILED, target.message
-    return target
-
-
 def test_a_state_at_an_event_read_from_another_start_is_told(tmp_path, kit_oracle, deferred_ids, slot):
-    target = graded(ANGLES_ONE_ENTRY_ON, tmp_path, kit_oracle, deferred_ids, slot)
+    target = failed_alike(ANGLES_ONE_ENTRY_ON, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert target.diagnosis == ANGLES_ONE_ENTRY_ON.diagnosis, (target.diagnosis, target.hint)
     assert ANGLES_ONE_ENTRY_ON.message in target.hint, target.hint
 
 
 def test_a_state_at_an_event_negated_is_no_row(tmp_path, kit_oracle, deferred_ids, slot):
-    target = graded(ANGLES_NEGATED, tmp_path, kit_oracle, deferred_ids, slot)
+    target = failed_alike(ANGLES_NEGATED, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert "state_row" not in families_of(target.diagnosis), (target.diagnosis, target.hint)
 
 
@@ -122,7 +110,7 @@ def bar_slot():
 
 
 def test_a_run_just_outside_its_band_at_loose_tolerances_is_told(tmp_path, kit_oracle, deferred_ids, bar_slot):
-    target = graded(LOOSE_RANDOM_BAR, tmp_path, kit_oracle, deferred_ids, bar_slot)
+    target = failed_alike(LOOSE_RANDOM_BAR, tmp_path / "pkg", kit_oracle, deferred_ids, bar_slot)
     assert target.diagnosis == LOOSE_RANDOM_BAR.diagnosis, (target.diagnosis, target.hint)
     assert LOOSE_RANDOM_BAR.message in target.hint, target.hint
 
