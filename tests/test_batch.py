@@ -15,6 +15,7 @@ import subprocess
 import sys
 import time
 from dataclasses import replace
+from pathlib import Path
 
 import pytest
 
@@ -941,6 +942,37 @@ def test_a_worker_killed_before_its_clean_up_leaves_no_folder_after_the_batch(tm
     unknown.mkdir()
     _sweep_slots()
     assert sorted(temporary.glob(f"{SLOT_PREFIX}*")) == sorted([running, unknown])
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="zombies are told from /proc")
+def test_a_slot_killed_and_not_yet_collected_by_its_parent_leaves_no_folder_after_the_batch(tmp_path, monkeypatch):
+    """A slot's process that has ended but whose exit its parent has not collected yet (a zombie) runs no clean-up
+    any more: its folder is swept as a gone process's is.  A process of this batch still running is waited for, up
+    to a bound, then left to itself."""
+    from grader.batch import run
+    from grader.sandbox.zygote import SLOT_PREFIX
+
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temporary))
+    ended = subprocess.Popen([sys.executable, "-c", "pass"])
+    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    try:
+        deadline = time.monotonic() + 30
+        while Path(f"/proc/{ended.pid}/stat").read_text().split(")")[-1].split()[0] != "Z":
+            assert time.monotonic() < deadline, "the child did not end"
+            time.sleep(0.05)
+        zombie = temporary / f"{SLOT_PREFIX}{ended.pid}-0123456789abcdef"
+        alive = temporary / f"{SLOT_PREFIX}{running.pid}-0123456789abcdef"
+        zombie.mkdir()
+        alive.mkdir()
+        monkeypatch.setattr(run, "SLOTS_ENDING", 0.5, raising=False)
+        run._sweep_slots()
+        assert sorted(temporary.glob(f"{SLOT_PREFIX}*")) == [alive]
+    finally:
+        running.kill()
+        running.wait()
+        ended.wait()
 
 
 def _owner_of(folder):

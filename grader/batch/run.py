@@ -223,14 +223,24 @@ def run_batch(
     return report
 
 
+#: how long [s] the end of a batch waits for its own slots that are still ending to remove their folders
+SLOTS_ENDING = 10.0
+
+
 def _sweep_slots() -> None:
     """The staging folders of this machine's grading slots that ended without removing them (a slot killed before
-    its clean-up ran): the workers are stopped by now.  Looked for where the slots made them, the temporary folder
-    of a process started now (``TMPDIR`` as it is set; this process's own may have been fixed before)."""
-    from ..sandbox.zygote import sweep_orphans
+    its clean-up ran): the workers are stopped by now, though a process of this batch may still be ending (waited
+    for, ``SLOTS_ENDING``, then swept again).  Looked for where the slots made them, the temporary folder of a
+    process started now (``TMPDIR`` as it is set; this process's own may have been fixed before)."""
+    from ..sandbox.zygote import ending_slots, sweep_orphans
 
     folder = os.environ.get("TMPDIR")
-    sweep_orphans(Path(folder) if folder and Path(folder).is_dir() else None)
+    where = Path(folder) if folder and Path(folder).is_dir() else None
+    deadline = time.monotonic() + SLOTS_ENDING
+    sweep_orphans(where)
+    while ending_slots(where) and time.monotonic() < deadline:
+        time.sleep(0.1)
+        sweep_orphans(where)
 
 
 # ---------------------------------------------------------------------------------------------- run_batch's steps

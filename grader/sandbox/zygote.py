@@ -46,7 +46,7 @@ from ..errors import GraderFault, SandboxError
 from . import users
 from .launch import ForkConfig, Limits, SandboxMode, prepare_fork, prepare_zygote, renew_home, sandbox_mode
 
-__all__ = ["Zygote", "ForkedProcess", "warm_modules", "SLOT_PREFIX", "sweep_orphans"]
+__all__ = ["Zygote", "ForkedProcess", "warm_modules", "SLOT_PREFIX", "sweep_orphans", "ending_slots"]
 
 #: the project's packages: never preloaded (the zygote cannot see them, except the probes it imports itself)
 _PROJECT = ("grader", "checks", "probes", "reference", "student_template", "tests", "tools")
@@ -116,14 +116,53 @@ def _owner(folder: Path) -> int | None:
     return int(pid) if pid.isdigit() and token else None
 
 
+def _stat(pid: int) -> list[str] | None:
+    """The fields of ``/proc/<pid>/stat`` after the process's name (state, parent, ...), or None where there is
+    no such file (another system, or the process is gone)."""
+    try:
+        text = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return None
+    return text[text.rfind(")") + 2:].split()
+
+
 def _alive(pid: int) -> bool:
+    """The process runs: it exists and, where ``/proc`` tells, is not a zombie (ended, its exit not yet collected
+    by its parent: its clean-up will never run)."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return False
     except PermissionError:  # another user's process
         return True
-    return True
+    fields = _stat(pid)
+    return not (fields and fields[0] == "Z")
+
+
+def _descends_from_us(pid: int) -> bool:
+    """``pid`` is a child of this process or of one of its children (read from ``/proc``; False elsewhere)."""
+    for _ in range(64):
+        fields = _stat(pid)
+        if fields is None:
+            return False
+        pid = int(fields[1])
+        if pid == os.getpid():
+            return True
+        if pid <= 1:
+            return False
+    return False
+
+
+def ending_slots(folder: Path | None = None) -> list[Path]:
+    """The staging folders in ``folder`` whose process is one of this process's own and still runs: a slot that
+    is ending, whose clean-up removes its folder."""
+    root = Path(folder) if folder is not None else Path(tempfile.gettempdir())
+    try:
+        candidates = sorted(root.glob(f"{SLOT_PREFIX}*"))
+    except OSError:
+        return []
+    return [path for path in candidates
+            if (pid := _owner(path)) is not None and _alive(pid) and _descends_from_us(pid)]
 
 
 def sweep_orphans(folder: Path | None = None) -> list[Path]:
