@@ -266,13 +266,18 @@ def warm_slot(problems):
         yield zygote
 
 
+def assert_told(mistake, target):
+    """The check's result ``target`` names the mistake's diagnosis and has its message in the hint."""
+    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
+    assert mistake.message in target.hint, target.hint
+
+
 def assert_named_failure(mistake, report):
     """The result of ``mistake.check`` in ``report``: failed, with the mistake's diagnosis and its message in the
     hint, and no other check failed than those the mistake names (``also``)."""
     target = {r.check_id: r for r in report.results}[mistake.check]
     assert target.status is Status.FAILED, target.message
-    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
-    assert mistake.message in target.hint, target.hint
+    assert_told(mistake, target)
     unexpected = [r.check_id for r in report.results if r.status not in (Status.PASSED, Status.SKIPPED)
                   and r.check_id not in (mistake.check, *mistake.also)]
     assert not unexpected, f"checks failed that the mistake should not touch: {unexpected}"

@@ -18,6 +18,7 @@ from grader.diagnosis import Evidence, explain
 from grader.results import Status
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
+    assert_told,
     failed_alike,
     grade_live_and_kit,
     warm_slot,
@@ -155,8 +156,7 @@ def slot():
 @pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
 def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, slot):
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
-    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
-    assert mistake.message in target.hint, target.hint
+    assert_told(mistake, target)
 
 
 @pytest.mark.parametrize("mistake", RUN_SLIPS, ids=lambda m: m.name)
@@ -165,8 +165,7 @@ def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferre
     loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
     the other row; and a wrong start, which a state read from the wrong rows must not be mistaken for."""
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
-    assert target.diagnosis == mistake.diagnosis, (target.diagnosis, target.hint)
-    assert mistake.message in target.hint, target.hint
+    assert_told(mistake, target)
 
 
 @pytest.mark.parametrize("mistake", NEAR_MISSES, ids=lambda m: m.name)
