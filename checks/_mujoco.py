@@ -11,14 +11,14 @@ from dataclasses import replace
 
 import numpy as np
 
-from grader.checking import CheckFailure, Tol, fail, figure
+from grader.checking import CheckFailure, Mistake, Tol, assert_close, fail, figure
 from grader.oracle import call_key
 from grader.results import Series
 
 __all__ = [
     "LENGTH", "WIDTH", "HEIGHT", "VOLUME", "ALUMINIUM", "HDPE", "EARTH", "MOON", "SAMPLE",
     "MASS", "POSITION", "DIRECTION", "student_once", "model_of", "reference_of", "run_of", "hinges",
-    "body_of", "compare_traces", "trace_figure", "MAX_POINTS",
+    "body_of", "assert_link_masses", "compare_traces", "trace_figure", "MAX_POINTS",
 ]
 
 #: the sheet's link [m] (problem data, P2): a brick 20 x 1 x 1 cm, length along its x-axis
@@ -26,6 +26,7 @@ LENGTH, WIDTH, HEIGHT = 0.2, 0.01, 0.01
 VOLUME = LENGTH * WIDTH * HEIGHT
 #: densities [kg/m^3] and magnitudes of gravity [m/s^2] of the sheet
 ALUMINIUM, HDPE = 2700.0, 950.0
+MATERIALS = {ALUMINIUM: "aluminium", HDPE: "HDPE"}
 EARTH, MOON = 9.81, 1.62
 #: traces are compared every 10 ms
 SAMPLE = 0.01
@@ -106,6 +107,19 @@ def hinges(desc, n, what):
 def body_of(desc, joint):
     """The body a joint moves."""
     return desc["bodies"][int(joint["body"]) - 1]
+
+
+def assert_link_masses(desc, what, links, density, link_mass):
+    """The model ``desc`` was built of ``density``: each of its ``links`` hinged bodies has the mass of the sheet's
+    link of that density (``link_mass(density)``, the reference's); an HDPE link's mass there is the density
+    ignored."""
+    expected, sheet = link_mass(density), link_mass(HDPE)
+    material = MATERIALS.get(density, "a density")
+    for k, joint in enumerate(hinges(desc, links, what)):
+        assert_close(body_of(desc, joint)["mass"], expected,
+                     f"the mass of link {k + 1} of {what} built of {material} ({density:g} kg/m^3)", MASS,
+                     mistakes=[Mistake("ignored_argument", sheet, f"That is the mass of an HDPE link ({HDPE:g} "
+                                       "kg/m^3): build the model with the density you are given.")])
 
 
 def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", note=""):

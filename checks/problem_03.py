@@ -36,6 +36,7 @@ from ._mujoco import (
     POSITION,
     SAMPLE,
     WIDTH,
+    assert_link_masses,
     body_of,
     compare_traces,
     hinges,
@@ -82,13 +83,8 @@ def _model(ctx, variant, gravity=EARTH, density=HDPE, rate=RATE):
 def _density(ctx, variant):
     """The model takes the density it is given: built of aluminium, each link has the mass of an aluminium brick."""
     desc, what = _model(ctx, variant, density=OTHER_DENSITY)
-    expected = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, OTHER_DENSITY)["mass"]
-    sheet = ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, HDPE)["mass"]
-    for k, joint in enumerate(hinges(desc, 2, what)):
-        assert_close(body_of(desc, joint)["mass"], expected,
-                     f"the mass of link {k + 1} of {what} built of aluminium ({OTHER_DENSITY:g} kg/m^3)", MASS,
-                     mistakes=[Mistake("ignored_argument", sheet, f"That is the mass of an HDPE link ({HDPE:g} "
-                                       "kg/m^3): build the model with the density you are given.")])
+    assert_link_masses(desc, what, 2, OTHER_DENSITY,
+                       lambda density: ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, density)["mass"])
 
 
 def _gravity(ctx, variant):

@@ -30,9 +30,24 @@ from grader.checking import (
     fail,
     figure,
 )
+from probes import problem_03 as p03
 from probes import problem_04 as p04
 
-from ._mujoco import ALUMINIUM, DIRECTION, EARTH, HDPE, LENGTH, MOON, POSITION, hinges, model_of, student_once
+from ._mujoco import (
+    ALUMINIUM,
+    DIRECTION,
+    EARTH,
+    HDPE,
+    HEIGHT,
+    LENGTH,
+    MOON,
+    POSITION,
+    WIDTH,
+    assert_link_masses,
+    hinges,
+    model_of,
+    student_once,
+)
 
 TITLE = "A four-bar linkage: assembly and balance"
 MANUAL = {
@@ -369,21 +384,19 @@ def _assert_structure(ctx, point):
        group="model")
 def check_model_dynamics(ctx):
     q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, FIXED_POINT)["q"]
-    earth = _assert_alpha(ctx, q, HDPE, EARTH)
-    moon = _assert_alpha(ctx, q, OTHER_DENSITY, OTHER_GRAVITY)
-    _assert_density(earth, moon, q)
+    _assert_alpha(ctx, q, HDPE, EARTH)
+    assert_link_masses(*_assert_alpha(ctx, q, OTHER_DENSITY, OTHER_GRAVITY), 3, OTHER_DENSITY,
+                       lambda density: ctx.reference(p03.link_inertia, LENGTH, WIDTH, HEIGHT, density)["mass"])
 
 
 #: the model is also built of another material under another gravity: the acceleration at rest follows g (the
 #: density cancels from it), the links' masses follow the density
 OTHER_DENSITY, OTHER_GRAVITY = ALUMINIUM, MOON
-#: the moving bodies' total masses of two densities are in the densities' ratio (MuJoCo's masses are exact)
-MASS_RATIO = Tol("ratio of the links' masses of two densities", 1e-6)
 
 
 def _assert_alpha(ctx, q, density, gravity):
     """The acceleration along the linkage's motion of the model of ``density`` under ``gravity`` is the
-    reference's; returns the student's model description."""
+    reference's; returns the student's model description and what it is called."""
     expected = ctx.reference(p04.tangent_acceleration, q, density, gravity)
     what = f"four_bar({density:g}, {gravity:g}, q = {np.round(q, 6).tolist()})"
     desc = _model(ctx, q, what, density=density, gravity=gravity)
@@ -397,19 +410,7 @@ def _assert_alpha(ctx, q, density, gravity):
                  ALONG, mistakes=mistakes,
                  note="alpha = t.T qfrc_smooth / (t.T M t) with t the unit null vector of the constraint Jacobian: "
                       "exact even though MuJoCo's soft constraint lets qacc itself differ from alpha t.")
-    return desc
-
-
-def _assert_density(earth, moon, q):
-    """The links built of ``OTHER_DENSITY`` weigh the ratio of the densities more than those of HDPE."""
-    masses = [sum(b["mass"] for b in desc["bodies"]) for desc in (earth, moon)]
-    what = f"four_bar({OTHER_DENSITY:g}, {OTHER_GRAVITY:g}, q = {np.round(q, 6).tolist()})"
-    if masses[0] <= 0.0:
-        fail(f"four_bar({HDPE:g}, {EARTH:g}, ...): the links have no mass.", "Give each link's geom the density "
-             "passed in: <geom ... density=\"...\"/>.")
-    assert_close(masses[1] / masses[0], OTHER_DENSITY / HDPE, f"the links' total mass in {what} over that of HDPE",
-                 MASS_RATIO, mistakes=[Mistake("ignored_argument", 1.0, "The links weigh the same whatever density "
-                                               "four_bar is given: give each link's geom the density passed in.")])
+    return desc, what
 
 
 @check(1, title="4(b): in your balanced configuration your MuJoCo model stays at rest (no acceleration along the "
