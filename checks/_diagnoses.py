@@ -346,6 +346,8 @@ _TABLE = (
     # ---------------------------------------------------------------- precision
     _D("float32", "precision", "values computed in single precision (float32)", "computed in single precision"),
     _D("rounded", "precision", "values rounded to a few decimals", "rounded the values"),
+    _D("absolute_tolerance", "precision", "a tolerance not relative to the size of the values",
+       "compared with an absolute tolerance"),
     # ---------------------------------------------------------------- integration schemes
     _D("euler_not_exponential", "step_size", "an Euler step where the matrix exponential belongs",
        "used Euler instead of the matrix exponential"),

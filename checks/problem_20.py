@@ -31,6 +31,15 @@ def _sheet(ctx, k):
     return ctx.reference(p20.sheet_matrices)[str(k)]
 
 
+#: the principal moments of a small part, in kg m^2 (a bead of a gram and a few millimetres): a tolerance that is not
+#: relative to the matrix's size judges them by the tolerance alone
+SMALL_BODY = 1e-10
+
+ABSOLUTE_TOLERANCE = ("Compare with a tolerance relative to the size of the matrix (tol times its largest entry), "
+                      "not an absolute one: a small body's moments (1e-10 kg m^2 for a bead) are below any fixed "
+                      "tolerance.", "absolute_tolerance")
+
+
 def _option(ctx, key):
     """The chosen option of 20(``key``) as an integer (``3``, ``3.0`` or ``"3"``)."""
     return choice(ctx, key, (1, 2, 3, 4), f"20({key})")
@@ -71,15 +80,19 @@ def _judge(ctx, matrices, expected_ok, property_text, mistake=None):
 
 
 @check(1, title="is_inertia_matrix accepts valid inertia matrices (random orientations, the sheet's option 1, a "
-       "flat plate with I3 = I1 + I2)", stage=STAGE_STRUCTURE, group="accepts")
+       "flat plate with I3 = I1 + I2, a small body's)", stage=STAGE_STRUCTURE, group="accepts")
 def check_accepts_valid(ctx):
     rng = np.random.default_rng(ctx.seed)
     matrices = [(f"a random inertia matrix (principal moments {compact(m)})", _rotated(m, rng.integers(2**31)))
                 for m in (np.array([y + z, x + z, x + y]) for x, y, z in rng.uniform(0.2, 2.0, (4, 3)))]
     matrices += [("the sheet's option 1", _sheet(ctx, 1)), ("a flat plate diag(1, 1, 2)", np.diag([1.0, 1.0, 2.0])),
-                 ("a rotated flat plate diag(1, 1.5, 2.5)", _rotated([1.0, 1.5, 2.5], 5))]
+                 ("a rotated flat plate diag(1, 1.5, 2.5)", _rotated([1.0, 1.5, 2.5], 5)),
+                 (f"a small body's inertia, a rotated diag(2, 2.5, 3) * {SMALL_BODY:g}",
+                  _rotated(SMALL_BODY * np.array([2.0, 2.5, 3.0]), 13))]
 
     def mistake(label):
+        if "small body" in label:
+            return ABSOLUTE_TOLERANCE
         if "plate" in label:
             return ("For a flat body I3 = I1 + I2 exactly: the triangle inequality allows equality (I3 <= I1 + I2, "
                     "with a small tolerance for rounding).", "plate_rejected")
@@ -123,9 +136,13 @@ def check_rejects_triangle(ctx):
     matrices = [("diag(1, 1.5, 3)", np.diag([1.0, 1.5, 3.0])),
                 ("a rotated diag(1, 1.5, 3) whose diagonal entries satisfy the triangle inequality",
                  _rotated([1.0, 1.5, 3.0], 3)),
-                ("the sheet's option 3", _sheet(ctx, 3)), ("the sheet's option 4", _sheet(ctx, 4))]
+                ("the sheet's option 3", _sheet(ctx, 3)), ("the sheet's option 4", _sheet(ctx, 4)),
+                (f"a small body's rotated diag(1, 1.5, 3) * {SMALL_BODY:g}",
+                 _rotated(SMALL_BODY * np.array([1.0, 1.5, 3.0]), 17))]
 
     def mistake(label):
+        if "small body" in label:
+            return ABSOLUTE_TOLERANCE
         if label.startswith("diag"):
             return ("The principal moments of any mass distribution satisfy I3 <= I1 + I2 (I1 + I2 - I3 = "
                     "2 sum m z² >= 0): test it on the sorted eigenvalues.", "forgot_triangle_inequality")
