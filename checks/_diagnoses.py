@@ -329,6 +329,8 @@ _TABLE = (
     _D("not_terminal", "event", "an event that does not end the run", "did not end the run at the event"),
     _D("apex_terminal", "event", "an event that ends the run where it should only mark a point",
        "ended the run at an event that only marks a point"),
+    _D("extremum_from_steps", "event", "an extremum (an apex) read from the solver's steps instead of located by "
+       "an event", "read an extremum from the solver's steps instead of an event"),
     _D("event_quantity", "event", "an event that watches the wrong quantity (another row of the state)",
        "watched the wrong quantity in an event"),
     _D("state_row", "state_row", "a state read from the wrong row (or column) of the solution",

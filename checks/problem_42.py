@@ -1,10 +1,11 @@
 """Checks of problem 42: event detection with ``solve_ivp`` on the thrown ball (``make_events``, ``throw``), and
 the multiple-choice question (b) (answers.toml ``[problem_42] b``).
 
-The event functions at random states and their attributes; then the flight of the sheet's ball and of random
-balls: the apex and the landing against a tight reference run within bands that any ``solve_ivp`` method at its
-default tolerances meets (a fixed-step loop at a large step does not), the landing ends the run (terminal) and is
-not the launch (direction -1).  The key of (b) is computed by the reference and stays with the instructor.
+The event functions at random states and their attributes; then the flight of the sheet's ball, of balls thrown
+in a vacuum (whose solver steps lie far apart, so an apex read from the highest step misses) and of random balls:
+the apex and the landing against a tight reference run within bands that any ``solve_ivp`` method at its default
+tolerances meets (a fixed-step loop at a large step does not), the landing ends the run (terminal) and is not the
+launch (direction -1).  The key of (b) is computed by the reference and stays with the instructor.
 """
 
 import numpy as np
@@ -55,6 +56,9 @@ _SEEDS = st.integers(0, 2**32 - 1)
 
 BANDS_NOTE = ("Any scipy.integrate.solve_ivp method at its default tolerances, with events=make_events(), lands "
               "within the bands.")
+APEX_HINT = ("Your apex is the highest of your run's own rows (at t = {t:.4f} s): the solver's steps fall where "
+             "its step size puts them, and the apex lies between two of them. Read it from the apex event, "
+             "t_events[0] and y_events[0], which solve_ivp locates on its dense output.")
 DIRECTION_HINT = ("The ball starts on the ground, where the height is zero: with direction 0 or +1 that zero "
                   "counts as a landing and the integration stops at once. direction = -1 counts only a fall "
                   "through zero (from + to -).")
@@ -146,14 +150,32 @@ def _flight(got, expected, v0, drag, bands, g=None):
     if got["t_apex"] is None:
         fail(f"{what}: no apex was marked (t_apex is None); the reference's is at t = {expected['t_apex']:.4f} s.",
              "Pass both events to solve_ivp; t_events[0] holds the apex times.", "no_event")
+    at_step = _highest_step(t, np.asarray(got["y"]))
     for key, tol in bands.items():
-        assert_close(got[key], expected[key], key, tol, context=f"({what}, against a tight reference run)",
-                     note=BANDS_NOTE)
+        assert_close(got[key], expected[key], key, tol, _apex_mistakes(key, at_step),
+                     context=f"({what}, against a tight reference run)", note=BANDS_NOTE)
+
+
+def _highest_step(t, y):
+    """``{"t_apex", "height_apex"}`` of the highest row of a run strictly inside it (not its first or last row,
+    where a run that starts or ends at an event has the event's own state), or None."""
+    if t.size < 3 or y.shape != (t.size, 2):
+        return None
+    top = int(np.argmax(y[:, 0]))
+    return {"t_apex": float(t[top]), "height_apex": float(y[top, 0])} if 0 < top < t.size - 1 else None
+
+
+def _apex_mistakes(key, at_step):
+    """The apex read from the highest of the run's own rows (the solver's steps) rather than its event."""
+    if at_step is None or key not in at_step:
+        return []
+    return [Mistake("extremum_from_steps", at_step[key], APEX_HINT.format(t=at_step["t_apex"]))]
 
 
 @check(3, title="throw(): the sheet's ball (v0 = 10 m/s, k = 0.1 1/m) peaks and lands at the reference's times "
        "(within 2e-3 s) and heights; the landing ends the run and is not the launch; thrown on the Moon it follows "
-       "its g, and it stops at its t_max", stage=STAGE_VALUES, group="events")
+       "its g, thrown in a vacuum (on the Earth and on Mars) it peaks at the parabola's apex, and it stops at its "
+       "t_max", stage=STAGE_VALUES, group="events")
 def check_flight(ctx):
     expected = ctx.reference(p42.throw, V0, DRAG)
     got = ctx.student(p42.throw, V0, DRAG, timeout=20)
@@ -162,6 +184,7 @@ def check_flight(ctx):
                           reference=[("height", *subsample(expected["t"], np.asarray(expected["y"])[:, 0]))]))
     _flight(got, expected, V0, DRAG, SHEET_BANDS)
     _assert_moon(ctx, expected)
+    _assert_vacuum(ctx)
     _assert_cut_short(ctx)
 
 
@@ -183,6 +206,26 @@ def _assert_moon(ctx, sheet):
                      TIME, [Mistake("typed_numbers", sheet["t_land"], MOON_HINT)],
                      context="(the sheet's ball on the Moon, against a tight reference run)")
     _flight(got, expected, V0, DRAG, RANDOM_BANDS, g=MOON)
+
+
+#: the sheet's ball thrown in a vacuum (k = 0), on the Earth (the sheet's g) and on Mars (g = 3.71 m/s^2): the
+#: flight is a parabola (apex at v0/g, at the height v0^2/(2 g)), on which the error estimates of the solve_ivp
+#: methods are (near) zero, so their steps grow up to tenfold at a time and lie far apart: at the reference's
+#: tolerances the highest step lies 0.09 s from the apex on the Earth and 1.6 s on Mars, and for each method
+#: (RK45, RK23, DOP853, Radau, BDF, LSODA) at rtol from 1e-3 to 1e-12 (atol 1e-6 or rtol / 100) at least 0.21 s
+#: from it on one of the two, where the events of every method find the apex to 2e-6 s and 3e-5 m, and a grid of
+#: 1 ms to 5e-4 s; both land before the sheet's t_max
+MARS = 3.71
+#: the gravities of the throws in a vacuum (None: the sheet's, which throw is not given)
+VACUUM = (None, MARS)
+
+
+def _assert_vacuum(ctx):
+    """The sheet's ball thrown in a vacuum peaks and lands where the reference's does, within the sheet's bands."""
+    throws = [(V0, 0.0) if g is None else (V0, 0.0, g) for g in VACUUM]
+    expected = [ctx.reference(p42.throw, *args) for args in throws]
+    for args, g, ours in zip(throws, VACUUM, expected):
+        _flight(ctx.student(p42.throw, *args, timeout=20), ours, V0, 0.0, SHEET_BANDS, g=g)
 
 
 #: a t_max [s] after the sheet's ball's apex (0.80 s) and before its landing (1.69 s)
