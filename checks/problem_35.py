@@ -1,5 +1,7 @@
 """Checks of problem 35: the symbolic joint functions of the four joint types, evaluated in the sandbox at the
-points the check sends and compared with the reference's numeric joint functions."""
+points the check sends and compared with the reference's numeric joint functions; and ``joint_function_from_pose``
+on poses that are not linear in q (a polar joint, a crank), where the part of a time derivative that depends on q
+shows."""
 
 import numpy as np
 
@@ -10,7 +12,7 @@ from ._shapes import as_dict, as_list
 
 TITLE = "Specific Joint Functions"
 
-NQ = {"rotational": 1, "translational": 1, "virtual_3dof": 3, "rolling_contact": 1}
+NQ = {"rotational": 1, "translational": 1, "virtual_3dof": 3, "rolling_contact": 1, "polar": 2, "crank": 1}
 NAMES = {"rotational": "(a) rotational", "translational": "(b) translational", "virtual_3dof": "(c) 3-DOF",
          "rolling_contact": "(d) rolling contact"}
 VECTORS = ("Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "omega_rel", "omega_rel_dot")
@@ -25,6 +27,10 @@ QDD_HINT = ("The time derivative of an expression in q and qd has two parts: d/d
             "qdd; yours misses the second.")
 ROLLING_HINT = ("The circle rolls the wrong way: turning counter-clockwise by gamma it rolls towards -x, "
                 "Dp_r_DpDs = (-r gamma, 0, 0), S = (-r, 0, 0).")
+BIAS_HINT = ("The time derivative of an expression in q and qd has two parts: d/dt f(q, qd) = (df/dq) qd + (df/dqd) "
+             "qdd; yours misses the first. It vanishes where the pose is linear in q, as for the sheet's four joints, "
+             "but not on a crank or a polar joint: there r_rel_ddot holds a centripetal term (and on the polar joint a "
+             "Coriolis term).")
 TRANSPOSE_HINT = "A_DpDs maps Ds- to Dp-coordinates: R3(gamma); you have its transpose R3(-gamma)."
 
 
@@ -36,17 +42,21 @@ def _points(ctx, kind):
 
 
 def _evaluate(ctx, kind, points):
-    got = as_dict(ctx.student(p35.joint_function, kind, points), f"the reply for {kind}_joint_function()",
-                  ("problems", "values"))
-    for name, problem in as_dict(got["problems"], f"the problems of {kind}_joint_function()").items():
-        what = f"{kind}_joint_function() has no entry {name!r}" if problem == "missing" else (
-            f"{name} of {kind}_joint_function() {problem}: it must depend on q, qd, qdd"
-            f"{' and r' if kind == 'rolling_contact' else ''} only")
+    return _read(ctx.student(p35.joint_function, kind, points), f"{kind}_joint_function()", points,
+                 " and r" if kind == "rolling_contact" else "")
+
+
+def _read(got, function, points, extra=""):
+    """The student's entries at each point, from the reply of a probe of ``function`` (its ``problems`` fail)."""
+    got = as_dict(got, f"the reply for {function}", ("problems", "values"))
+    for name, problem in as_dict(got["problems"], f"the problems of {function}").items():
+        what = f"{function} has no entry {name!r}" if problem == "missing" else (
+            f"{name} of {function} {problem}: it must depend on q, qd, qdd{extra} only")
         fail(f"{what}, so it cannot be evaluated.",
              "Use the symbols of the dict's q, qd, qdd (and r): derivatives d_<name>, dd_<name> are in qd, qdd.",
              "free_symbols" if problem != "missing" else "format")
-    values = as_list(got["values"], f"the values of {kind}_joint_function() at the {len(points)} points", len(points))
-    return [as_dict(value, f"{kind}_joint_function() at a point", KEYS) for value in values]
+    values = as_list(got["values"], f"the values of {function} at the {len(points)} points", len(points))
+    return [as_dict(value, f"{function} at a point", KEYS) for value in values]
 
 
 def _entries(values, kind):
@@ -126,3 +136,48 @@ check_rotational_subspaces, check_rotational_values = _checks("rotational")
 check_translational_subspaces, check_translational_values = _checks("translational")
 check_virtual_3dof_subspaces, check_virtual_3dof_values = _checks("virtual_3dof")
 check_rolling_contact_subspaces, check_rolling_contact_values = _checks("rolling_contact")
+
+
+# ------------------------------------------------------------------------------------------ poses not linear in q
+
+#: the accelerations: their part (df/dq) qd (the bias, their value at qdd = 0) vanishes on every joint of the sheet,
+#: whose relative pose is linear in q, and shows on a pose that is not
+ACCELERATIONS = ("r_rel_ddot", "omega_rel_dot")
+
+
+def _pose_mistakes(name, target, without_bias, without_qdd):
+    """The catalogue on a pose not linear in q: the sheet's joints' mistakes, with the accelerations' two parts each
+    left out as the reference gives them (at qd = 0 the bias is gone, at qdd = 0 the qdd part is)."""
+    found = [mistake for mistake in _mistakes("pose", name, target) if mistake.name != "missing_qdd"]
+    if name in ACCELERATIONS:
+        found += [Mistake(diagnosis, value, hint) for diagnosis, value, hint in (
+            ("missing_bias", without_bias, BIAS_HINT), ("missing_qdd", without_qdd, QDD_HINT))
+            if not close(value, target, EXACT)]
+    return found
+
+
+def _pose_values(ctx, pose):
+    nq = NQ[pose]
+    points = ctx.draw(lambda rng: [{"q": rng.uniform(-2, 2, nq), "qd": rng.uniform(-2, 2, nq),
+                                    "qdd": rng.uniform(-2, 2, nq)} for _ in range(POINTS)])
+    still = [point | {"qd": np.zeros(nq)} for point in points]
+    steady = [point | {"qdd": np.zeros(nq)} for point in points]
+    expected, without_bias, without_qdd = (ctx.reference(p35.pose_joint_function, pose, rows)["values"]
+                                           for rows in (points, still, steady))
+    what = f"joint_function_from_pose(...) of the {pose} joint ({p35.POSES[pose]})"
+    got = _read(ctx.student(p35.pose_joint_function, pose, points), what, points)
+    for i, (point, values) in enumerate(zip(points, got)):
+        ours, bias_free, qdd_free = (_entries(reply[i], pose) for reply in (expected, without_bias, without_qdd))
+        for name, value in _entries(values, pose).items():
+            if not close(value, ours[name], EXACT):
+                assert_close(value, ours[name], f"{name} {_at(point, pose)}", EXACT,
+                             _pose_mistakes(name, ours[name], bias_free[name], qdd_free[name]),
+                             context=f"({what}, against the reference's; seed {ctx.seed})")
+
+
+@check(1, title="joint_function_from_pose on poses not linear in q (a polar joint: turned by gamma about the "
+       "3-axis, slid by s along the turned 1-axis; a crank of 0.5 m): every entry at random points",
+       stage=STAGE_RANDOM, group="poses")
+def check_poses_values(ctx):
+    for pose in p35.POSES:
+        _pose_values(ctx, pose)
