@@ -63,8 +63,8 @@ def probe_calls(problem: int, reference: Path, zygote) -> list[tuple[str, tuple]
 
 def fingerprint(value, depth: int = 0) -> str:
     """A short text that is equal for equal values: numbers to ``DIGITS`` digits, containers by their items, a
-    function by its name, an object by its class, its ``name`` and (called with it directly) its public
-    attributes, the objects among them by their class and name."""
+    function by its name, a symbolic (sympy) value by its text, an object by its class, its ``name`` and (called
+    with it directly) its public attributes, the objects among them by their class and name."""
     if value is None or isinstance(value, (bool, str)):
         return repr(value)
     if isinstance(value, (int, float, np.integer, np.floating)):
@@ -80,6 +80,8 @@ def fingerprint(value, depth: int = 0) -> str:
         return f"array{array.shape}:" + hashlib.sha256(rounded.tobytes()).hexdigest()[:16]
     if callable(value) and hasattr(value, "__qualname__"):
         return f"function {value.__qualname__}"
+    if type(value).__module__.split(".")[0] == "sympy":
+        return f"{type(value).__name__}:{value}"
     name = getattr(value, "name", None)
     label = f"{type(value).__name__}({name!r})" if isinstance(name, str) else type(value).__name__
     if depth > 0 or not hasattr(value, "__dict__"):
