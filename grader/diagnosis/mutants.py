@@ -20,7 +20,13 @@ neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ 
 state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a
 pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``), a
 position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``: an offset, not a
-term left out), an argument left out of every product it is a factor of).
+term left out), an argument left out of every product it is a factor of), and the slips of precision
+(``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
+loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
+short, pi as 3.14 or 3.1416, 9.81 as 9.8).  A slip of precision is told only where the student's value is in the band
+such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
+(``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to draw) the slips
+of precision alone are tried there, where the value is in the band.
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
 matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
@@ -73,7 +79,7 @@ from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, wit
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE",
-           "NAMES_A_FUNCTION", "SLIPS", "Mutant", "mutants_of", "mutant_slips", "late", "left_to_live"]
+           "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "Mutant", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -307,7 +313,25 @@ SLIPS = {
     "unit": ("missing_factor", "`{f}` leaves one of its arguments out of every product it is a factor of"),
     "siblings": ("sibling_matrix", "`{f}` reads a matrix where its sibling belongs (one of a pair such as J_R and "
                                    "J_S)"),
+    "single": ("float32", "`{f}` computes in single precision (float32) where numpy's float64 belongs"),
+    "single_argument": ("float32", "`{f}` converts an argument to single precision (float32) before it uses it"),
+    "short": ("rounded", "`{f}` uses a constant typed short (pi as 3.14, g as 9.8)"),
 }
+#: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
+PRECISION_SLIPS = frozenset({"single", "single_argument", "short"})
+#: the largest difference between the student's value and the expected one, relative to the expected value's size,
+#: that a slip of precision makes (a constant typed to two decimals, float32 accumulated over a run: pi as 3.14 is
+#: 5e-4, g as 9.8 is 1e-3, float32 alone about 1e-7); past it a slip of precision is not told
+PRECISION_BAND = 1e-2
+#: a slip of precision is told only where it leaves at most this share of the difference between the student's
+#: value and the expected one (a value merely near the student's, inside a loose tolerance, is no reproduction)
+PRECISION_SHARE = 0.1
+#: how pi is typed short
+SHORT_PI = (3.14, 3.1416)
+#: the decimals a number of the code is typed short to
+SHORT_DECIMALS = (1, 2)
+#: the names of a function's arguments that a slip of precision converts at its start (a run's state, coordinates)
+_SINGLE = re.compile(r"^(y|y_\w+|state|q|qd|x)$")
 
 
 def _dropped(operand) -> str:
@@ -329,6 +353,52 @@ def _number(node) -> bool:
     return isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool)
 
 
+def _pi(node) -> bool:
+    """``np.pi``, ``math.pi`` or ``pi`` read."""
+    return (isinstance(node, ast.Attribute) and node.attr == "pi" or isinstance(node, ast.Name) and node.id == "pi") \
+        and isinstance(node.ctx, ast.Load)
+
+
+def _typed_short(value: float) -> list:
+    """The values of a number of the code typed to fewer decimals (``SHORT_DECIMALS``: 9.81 as 9.8), each a slip of
+    precision (not zero, off by at most ``PRECISION_BAND`` of it)."""
+    found = []
+    for decimals in SHORT_DECIMALS:
+        typed = round(value, decimals)
+        if typed != 0.0 and typed != value and abs(typed - value) <= PRECISION_BAND * abs(value) \
+                and typed not in found:
+            found.append(typed)
+    return found
+
+
+#: how numpy's double precision is named in a dtype
+_DOUBLE = frozenset({"float", "float64", "double", "f8", "float_"})
+
+
+def _double(node) -> bool:
+    """A dtype of double precision (``float``, ``np.float64``, ``"float64"``)."""
+    if isinstance(node, ast.Name):
+        return node.id in _DOUBLE
+    if isinstance(node, ast.Attribute):
+        return node.attr in _DOUBLE
+    return isinstance(node, ast.Constant) and node.value in _DOUBLE
+
+
+def _float32():
+    return ast.Attribute(ast.Name("np", ast.Load()), "float32", ast.Load())
+
+
+def _single_slips(node: ast.Call):
+    """A dtype of double precision given as single (``np.asarray(q, dtype=float)``, ``.astype(float)``)."""
+    for k, keyword in enumerate(node.keywords):
+        if keyword.arg == "dtype" and _double(keyword.value):
+            yield "single", lambda n, k=k: _with(n, keywords=[
+                ast.keyword("dtype", _float32()) if i == k else w for i, w in enumerate(n.keywords)])
+    if _callee(node) in ("astype", "array", "asarray") and node.args and _double(node.args[-1]) \
+            and len(node.args) == (1 if _callee(node) == "astype" else 2):
+        yield "single", lambda n: _with(n, args=n.args[:-1] + [_float32()])
+
+
 def _slips(node, parent):
     """``(slip, edit)`` of the slips at ``node`` (``slip``: a key of ``SLIPS``): ``edit(copy)`` gives the node
     that replaces the copy of ``node``, or ``("names", a, b)`` exchanges two names throughout the function."""
@@ -346,6 +416,12 @@ def _slips(node, parent):
         yield from _call_slips(node)
     elif isinstance(node, ast.Attribute) and node.attr == "T" and isinstance(node.ctx, ast.Load):
         yield "transpose", lambda n: n.value
+    elif _pi(node):
+        for typed in SHORT_PI:
+            yield "short", lambda n, typed=typed: ast.Constant(typed)
+    elif _number(node) and isinstance(node.value, float):
+        for typed in _typed_short(node.value):
+            yield "short", lambda n, typed=typed: ast.Constant(typed)
     elif isinstance(node, (ast.Tuple, ast.List)) and 2 <= len(node.elts) <= 6 \
             and not any(isinstance(e, ast.Starred) for e in node.elts):
         reads = _reads(node, parent)
@@ -794,6 +870,7 @@ def _call_slips(node: ast.Call):
         yield "inverse", lambda n: n.args[0]
     if callee == "inv" and not args and isinstance(node.func, ast.Attribute):  # sympy's ``M.inv()``
         yield "inverse", lambda n: n.func.value
+    yield from _single_slips(node)
     if callee in ("inv", "solve") or any(isinstance(a, ast.Starred) for a in args):
         return
     positional = args[:4]
@@ -868,6 +945,9 @@ def _parameter_slips(function: ast.FunctionDef, lines: tuple):
         yield "parameters", ("names", names[i], names[j])
     for name in _factors_only(function, lines, names):
         yield "unit", ("unit", name)
+    for name in names:
+        if _SINGLE.match(name):
+            yield "single_argument", ("single", name)
 
 
 def _factors_only(function: ast.FunctionDef, lines: tuple, names: list) -> list:
@@ -899,6 +979,13 @@ def _unit(function: ast.FunctionDef, lines: tuple, name: str) -> None:
                         setattr(node, field, one)
 
 
+def _single(function: ast.FunctionDef, name: str) -> None:
+    """The argument ``name`` converted to single precision at the function's start (changed in place)."""
+    cast = ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "asarray", ast.Load()), [ast.Name(name, ast.Load())],
+                    [ast.keyword("dtype", _float32())])
+    function.body.insert(0, ast.copy_location(ast.Assign([ast.Name(name, ast.Store())], cast), function.body[0]))
+
+
 def _swap_names(function: ast.FunctionDef, lines: tuple, a: str, b: str) -> None:
     for node in ast.walk(function):
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and _in(node, lines):
@@ -914,15 +1001,20 @@ def _mutated(function: _Function, lines: tuple):
     """``(slip, new definition)`` of every slip of the function's regions ``lines``, each once."""
     sites = [(index, node, parent, guarded, indexing)
              for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
-             if guarded in (False, ITERABLE) and _in(node, lines)]
+             if _in(node, lines)]
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
     names = _names(function.node)
     for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
-        slips = _parameter_slips(function.node, lines) if index is None else itertools.chain(
-            _slips(node, parent), _entry_slips(node, parent), _read_slips(node, names, function.attributes))
+        if index is None:
+            slips = _parameter_slips(function.node, lines)
+        elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
+            slips = _single_slips(node) if isinstance(node, ast.Call) else ()
+        else:
+            slips = itertools.chain(_slips(node, parent), _entry_slips(node, parent),
+                                    _read_slips(node, names, function.attributes))
         for slip, edit in slips:
-            if guarded == ITERABLE and slip not in _EXCHANGES:
+            if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
                 continue
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
@@ -932,6 +1024,8 @@ def _mutated(function: _Function, lines: tuple):
             tree = copy.deepcopy(function.node)
             if isinstance(edit, tuple) and edit[0] == "unit":
                 _unit(tree, lines, edit[1])
+            elif isinstance(edit, tuple) and edit[0] == "single":
+                _single(tree, edit[1])
             elif isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])
             else:
@@ -1256,11 +1350,15 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
             holder.__code__ = originals[id(holder)][1]
         if values is None:
             continue
+        if mutant.slip in PRECISION_SLIPS and not all(_closely(v, e) for v, e in zip(values, inputs)):
+            continue
         if not judged:
             kept.append(mutant)
             continue
-        if not any(distinct(v, e.expected, e.tol) for v, e in zip(values, inputs)):
-            continue  # an equivalent mutant
+        beyond = mutant.slip in PRECISION_SLIPS and not all(within(v, e.expected, e.tol)
+                                                             for v, e in zip(values, inputs))
+        if not beyond and not any(distinct(v, e.expected, e.tol) for v, e in zip(values, inputs)):
+            continue  # an equivalent mutant (one of precision differs by little, but beyond the tolerance)
         if not any(distinct(v, np.zeros_like(v), e.tol) for v, e in zip(values, inputs)):
             continue
         kept.append(mutant)
@@ -1360,14 +1458,17 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None) -> l
     inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit.
     ``told``: the families an earlier tier already explained the answer with (None: none did); the tier then
     tries rivals within a budget of its own, those of other families first (``late``)."""
-    if not _tried(evidences) or getattr(scene.ctx.oracle, "mode", "") != "live":
+    if getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
+    if not _tried(evidences):
+        return _imprecise(scene, evidences, another)
     problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
     if problem is None:
         return []
     inputs = list(evidences)
     try:
         kept = _kept(problem, evidences, told=told)
+        kept = None if kept is None else [m for m in kept if _precise(m, inputs)]
         trace.note("mutants", problem=problem, kept=None if kept is None else sorted({m.name for m in kept}))
         if kept and another is not None:
             third = _another(another)
@@ -1378,6 +1479,56 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None) -> l
     except GraderFault:
         return []
     return _hypotheses(kept or [], inputs)
+
+
+def _imprecise(scene, evidences: list[Evidence], another) -> list[Hypothesis]:
+    """The slips of precision (``PRECISION_SLIPS``) that reproduce the student's value on the one input a
+    comparison has, where that value is in the band of precision (``PRECISION_BAND``): a constant typed short, or a
+    computation in float32, reproduced to within ``PRECISION_SHARE`` of the difference, says what no other slip of
+    the code does so closely; a third input, where the engine can draw one, must show it too."""
+    first = evidences[0] if evidences else None
+    if first is None or first.source is None or first.got is None or not _in_band(first):
+        return []
+    problem = _problem(getattr(scene.ctx, "check_id", ""), first.source.probe)
+    if problem is None:
+        return []
+    inputs = [first]
+    try:
+        kept = _kept(problem, inputs, only=PRECISION_SLIPS)
+        kept = [m for m in kept or () if _precise(m, inputs)]
+        trace.note("imprecise", problem=problem, kept=sorted({m.name for m in kept}))
+        if kept and another is not None:
+            third = _another(another)
+            if third is not None:
+                inputs.append(third)
+                kept = [m for m in _kept(problem, [third], kept) or () if _precise(m, inputs)]
+    except GraderFault:
+        return []
+    return _hypotheses(kept, inputs)
+
+
+def _in_band(evidence: Evidence) -> bool:
+    """The student's value differs from the expected one by no more than a slip of precision makes
+    (``PRECISION_BAND`` of the expected value's size), and differs."""
+    got, expected = evidence.got, evidence.expected
+    if got is None or expected is None or got.shape != expected.shape or not np.all(np.isfinite(got)):
+        return False
+    scale = float(np.max(np.abs(expected))) if expected.size else 0.0
+    difference = float(np.max(np.abs(got - expected))) if got.size else 0.0
+    return scale > 0 and 0 < difference <= PRECISION_BAND * scale
+
+
+def _precise(mutant: Mutant, inputs: list[Evidence]) -> bool:
+    """A mutant of another slip than precision, or one of precision where the student's value is in the band of
+    precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well)."""
+    return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) for e in inputs)
+
+
+def _closely(value: np.ndarray, evidence: Evidence) -> bool:
+    """``value`` leaves at most ``PRECISION_SHARE`` of the difference between the student's value and the expected
+    one (a slip of precision reproduces the student's value, not merely a value inside the tolerance of it)."""
+    difference = float(np.max(np.abs(evidence.got - evidence.expected))) if evidence.got.size else 0.0
+    return float(np.max(np.abs(evidence.got - value))) <= PRECISION_SHARE * difference
 
 
 def _another(another) -> Evidence | None:
@@ -1402,10 +1553,12 @@ def late(mutants: list[Mutant], told) -> tuple[list[Mutant], int]:
 
 
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
-          told=None) -> list[Mutant] | None:
+          told=None, only=None) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
-    the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``."""
+    the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``; ``only``:
+    the slips tried, where not all."""
     first = evidences[0]
+    judged = len(evidences) > 1 or only is not None  # one input of its own: a slip of precision, judged there
     started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
@@ -1415,6 +1568,8 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
             with _Deadline(TIME_BUDGET) as deadline:
                 if mutants is None:
                     mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
+                    if mutants and only is not None:
+                        mutants = [m for m in mutants if m.slip in only]
                     trace.note("mutated", count=None if mutants is None else len(mutants),
                                functions=sorted({m.function for m in mutants or ()}),
                                seconds=round(time.thread_time() - started, 3))
@@ -1422,10 +1577,10 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                         mutants, rivals = late(mutants, told)
                         trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
                 if mutants and rivals is None:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1)
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged)
             if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
                 with _Deadline(LATE_TIME_BUDGET) as deadline:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=len(evidences) > 1,
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
                                      kept=found, progress=progress)
             if kept:
                 trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)

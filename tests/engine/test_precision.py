@@ -1,0 +1,191 @@
+"""The formula tier's slips of precision (``grader.diagnosis.mutants``: ``PRECISION_SLIPS``): a dtype of double
+precision given as single, an argument converted to float32 at a function's start, a constant typed short (pi as
+3.14, 9.81 as 9.8).
+
+Each is a mistake planted into a copy of the reference (or of a made-up problem) that the tier names, and a near
+miss it must not name: a value in the band of precision that no slip of precision reproduces, a constant typed so
+short that the value leaves the band.  A slip of precision is tried on one input too (a comparison the engine cannot
+draw a second input for), only where the student's value is in the band.
+"""
+
+import importlib
+import itertools
+
+import numpy as np
+import pytest
+
+from checks._diagnoses import DIAGNOSES
+from grader.checking import Tol
+from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source, array_of, at
+from grader.private import drop_private, private_import
+
+from .test_mutants import BEARINGS, evidence, planted_package, scene
+
+TIGHT = Tol("tight", 1e-9, 1e-9)
+_NUMBERS = itertools.count()
+
+
+def named(found) -> set:
+    return {h.name for h in found}
+
+
+def failing(evidences):
+    """Every comparison fails, by little: the student's value is near the expected one but beyond the tolerance."""
+    for e in evidences:
+        assert not np.allclose(e.got, e.expected, rtol=1e-12, atol=1e-12)
+        assert mutants._in_band(e)
+    return evidences
+
+
+def planted_slips(tmp_path, check_id, file, old, new, probe, inputs, path):
+    student = planted_package(tmp_path, file, old, new)
+    try:
+        evidences = failing([evidence(probe, args, path, student) for args in inputs])
+        return mutants.mutant_slips(scene(check_id), evidences)
+    finally:
+        drop_private(student)
+
+
+# ------------------------------------------------------------------------------------------ on the reference
+
+
+def test_a_product_in_single_precision_is_named_float32(tmp_path):
+    """Problem 39's inertia taken as float32 inside the moment of the bearing forces: the dtype given as single."""
+    found = planted_slips(tmp_path, "p39.bearing_forces", "problem_39.py",
+                          "moment = np.cross(w, np.asarray(I2, dtype=float) @ w)",
+                          "moment = np.cross(w, np.asarray(I2, dtype=np.float32) @ w)",
+                          "problem_39.bearing_forces", BEARINGS, (0,))
+    assert named(found) == {"float32"}, [(h.name, h.detail) for h in found]
+    assert any("`bearing_forces` computes in single precision" in h.detail for h in found)
+
+
+def test_a_value_off_by_little_that_no_slip_of_precision_gives_names_nothing(tmp_path):
+    """The near miss: the same moment off by a relative 3e-7, in the band of precision, but no float32 and no
+    constant typed short gives it."""
+    found = planted_slips(tmp_path, "p39.bearing_forces", "problem_39.py",
+                          "moment = np.cross(w, np.asarray(I2, dtype=float) @ w)",
+                          "moment = np.cross(w, np.asarray(I2, dtype=float) @ w) * (1.0 + 3e-7)",
+                          "problem_39.bearing_forces", BEARINGS, (0,))
+    assert found == [], [(h.name, h.detail) for h in found]
+
+
+PENDULUM_STATES = [([(0.0, [0.3, -0.2, 0.5, 0.1, 0.4, -0.3])],), ([(0.5, [-0.7, 0.4, 0.1, -0.6, 0.2, 0.8])],)]
+
+
+def test_a_runs_state_converted_to_single_precision_is_named_float32(tmp_path):
+    """Problem 24's right-hand side with the state converted to float32 before the equations of motion: the
+    argument converted at the function's start."""
+    found = planted_slips(tmp_path, "p24.pendulum_ode", "problem_24.py", "    q, qd = y[:3], y[3:]\n",
+                          "    y = y.astype(np.float32)\n    q, qd = y[:3], y[3:]\n", "problem_24.pendulum_ode",
+                          PENDULUM_STATES, (0,))
+    assert named(found) == {"float32"}, [(h.name, h.detail) for h in found]
+    assert any("`pendulum_ode` converts an argument to single precision" in h.detail for h in found)
+
+
+def test_a_slip_of_precision_is_not_told_outside_the_band():
+    """A student's value off the expected one by more than ``PRECISION_BAND`` is no loss of precision, nor is one
+    that equals it."""
+    expected = np.array([1.0, -2.0, 0.5])
+
+    def at_difference(d):
+        return Evidence(expected + np.array([0.0, d, 0.0]), expected, TIGHT, "value")
+
+    assert mutants._in_band(at_difference(1e-7)) and mutants._in_band(at_difference(0.019))
+    assert not mutants._in_band(at_difference(0.03)) and not mutants._in_band(at_difference(0.0))
+    assert not mutants._in_band(Evidence(np.array([np.nan, 0.0, 0.0]), expected, TIGHT, "value"))
+
+
+# ------------------------------------------------------------------------------------------ a made-up problem
+
+
+SOURCE = '''"""A made-up problem for the slips of precision."""
+
+import numpy as np
+
+
+def turn(n, w):
+    """The angle and the point on the unit circle after ``n`` steps of ``pi / n`` at the rate ``w``."""
+    # BEGIN SOLUTION problem 97
+    step = np.pi / n
+    angle = w * step * n
+    return np.array([angle, np.cos(angle), np.sin(angle)])
+    # END SOLUTION
+
+
+def weight(m):
+    """The weight of ``m`` under g = 9.81."""
+    # BEGIN SOLUTION problem 97
+    return np.array([0.0, -m * 9.81, 0.0])
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def made_up(tmp_path, monkeypatch):
+    """A package of one made-up problem (97) that the tier mutates in place of the reference."""
+    root = tmp_path / "made_up"
+    root.mkdir()
+    (root / "__init__.py").write_text('"""A made-up package."""\n')
+    (root / "problem_97.py").write_text(SOURCE)
+    package = private_import(f"_made_up_precision_{next(_NUMBERS)}", root)
+    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
+    yield package
+    drop_private(package)
+
+
+def shown_alone(package, name, student, args):
+    """The one comparison of ``name(*args)``: the engine has no second input of it."""
+    def probe(pkg, *a):
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_97"), name)(*a)
+
+    return [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), TIGHT, "value",
+                     source=Source(probe, args, ()))]
+
+
+def one_input(package, name, student, args):
+    """The one failing comparison of ``name(*args)``, off by little."""
+    return failing(shown_alone(package, name, student, args))
+
+
+def test_pi_typed_short_is_named_rounded_on_one_input(made_up):
+    """``pi`` typed as 3.1416 in the step: on the one input shown, a constant typed short reproduces it."""
+    def student(n, w):
+        angle = w * (3.1416 / n) * n
+        return np.array([angle, np.cos(angle), np.sin(angle)])
+
+    found = mutants.mutant_slips(scene("p97.turn"), one_input(made_up, "turn", student, (40, 1.3)))
+    assert named(found) == {"rounded"} and {DIAGNOSES[h.name].family for h in found} == {"precision"}
+    assert any("`turn` uses a constant typed short" in h.detail for h in found)
+
+
+def test_g_typed_short_is_named_rounded_on_one_input(made_up):
+    found = mutants.mutant_slips(scene("p97.weight"), one_input(made_up, "weight", lambda m: [0.0, -m * 9.8, 0.0],
+                                                                (2.5,)))
+    assert named(found) == {"rounded"}
+
+
+def test_pi_typed_far_too_short_is_no_slip_of_precision(made_up):
+    """The near miss: pi as 3 leaves the band of precision (5% off): on one input the tier names nothing."""
+    def student(n, w):
+        angle = w * (3.0 / n) * n
+        return np.array([angle, np.cos(angle), np.sin(angle)])
+
+    (shown,) = shown_alone(made_up, "turn", student, (40, 1.3))
+    assert not mutants._in_band(shown)
+    assert mutants.mutant_slips(scene("p97.turn"), [shown]) == []
+
+
+def test_on_one_input_only_slips_of_precision_are_tried(made_up, monkeypatch):
+    """On one input no slip of another kind is named, even one that reproduces the value in the band (``w``
+    left out of the angle, with ``w`` near 1)."""
+    def student(n, w):
+        angle = (np.pi / n) * n
+        return np.array([angle, np.cos(angle), np.sin(angle)])
+
+    evidences = one_input(made_up, "turn", student, (40, 1.0 + 2e-4))
+    assert mutants.mutant_slips(scene("p97.turn"), evidences) == []
+    tried = []
+    monkeypatch.setattr(mutants, "_evaluate", lambda package, made, *a, **k: tried.extend(made) or [])
+    mutants.mutant_slips(scene("p97.turn"), evidences)
+    assert tried and {m.slip for m in tried} <= mutants.PRECISION_SLIPS
