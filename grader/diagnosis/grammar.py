@@ -20,6 +20,7 @@ __all__ = [
     "equivalents",
     "ENTRYWISE",
     "FACTORS",
+    "UNIT_FACTORS",
     "ARGUMENT_FACTORS",
     "output_slips",
     "precision_slips",
@@ -52,6 +53,9 @@ FACTORS = (
     (1 / np.sqrt(3.0), "1/sqrt(3)"), (np.pi, "pi"), (1 / np.pi, "1/pi"), (2 * np.pi, "2 pi"),
     (1 / (2 * np.pi), "1/(2 pi)"),
 )
+#: the factors of a unit a whole value may be off by (a density in g/cm^3 for kg/m^3, a length in mm for m, a mass in
+#: g for kg): (factor, how it is written)
+UNIT_FACTORS = ((1000.0, "1000"), (1e-3, "1/1000"))
 #: the factors a number among the arguments may be off by (a full length for a half, a diameter for a radius)
 ARGUMENT_FACTORS = ((2.0, "twice"), (0.5, "half"))
 #: an array of more numbers than this among the arguments is data (a table, a time grid) that the general draw keeps
@@ -144,6 +148,9 @@ def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
     for factor, words in FACTORS:
         add((Hypothesis(f"scale:{words}", "wrong_factor", 2, f"your value is the expected one times {words}"),
              factor * E))
+    for factor, words in UNIT_FACTORS:
+        add((Hypothesis(f"scale:unit:{words}", "wrong_factor", 2, f"your value is the expected one times {words}: "
+                         "a quantity in other units (g/cm^3 for kg/m^3, mm for m, g for kg)"), factor * E))
     add((Hypothesis("scale:deg", "degrees", 1, "your value is the expected one converted to degrees (times "
                      "180/pi)"), E * 180.0 / np.pi))
     add((Hypothesis("scale:rad", "degrees", 1, "your value is the expected one times pi/180 (converted from "
