@@ -68,6 +68,7 @@ __all__ = [
     "reread_runs",
     "exchanged_events",
     "EVENT_AGREES",
+    "LAST_OUTPUT_SHARE",
 ]
 
 
@@ -270,6 +271,9 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
             if value.size > 1:
                 candidates.update({f"its {other}[{j}]": value.reshape(-1)[j] for j in range(value.size)})
     ran = run_of(source.root, motion)
+    last = _last_output(evidence, ran, at_events[key], te)
+    if last is not None:
+        return [last]
     if ran is not None and ran[0][0] <= te <= ran[0][-1]:
         t, R = ran
         for state, samples in R.items():
@@ -286,6 +290,40 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     return [Hypothesis(f"event:row:{key}", "state_row", 2,
                        f"your {key} is the reference's state at the event {event} = {te:.6g} s read from the wrong "
                        f"row: it is {wrong[0]} (expected {format_array(ours)})")]
+
+
+#: the state at an event read from the last output is told only where the student's value is that output up to this
+#: share of its difference from the expected value (a loose tolerance lets a value near it pass for it)
+LAST_OUTPUT_SHARE = 0.1
+
+
+def _last_output(evidence: Evidence, ran, spec: tuple, te: float) -> Hypothesis | None:
+    """The state at an event read from the run's last output before the event (``sol.y[:, -1]`` where
+    ``sol.y_events`` belongs): the student's value of the compared key is the reference's own output of that state
+    (``spec``: ``(event, state[, entry])``) at its last output time before ``te`` (within the tolerance, and up to
+    ``LAST_OUTPUT_SHARE`` of the difference), which is beyond the tolerance of the state at the event."""
+    if ran is None:
+        return None
+    t, R = ran
+    _, state, *entry = spec
+    before = np.flatnonzero(np.asarray(t) < te)
+    if state not in R or not before.size:
+        return None
+    k = int(before[-1])
+    row = np.asarray(R[state][k], dtype=float)
+    value = row[int(entry[0])] if entry else row
+    key = evidence.source.path[0]
+    mine, ours = array_of(at(evidence.student.root, (key,))), array_of(at(evidence.source.root, (key,)))
+    value = np.asarray(value, dtype=float)
+    if mine is None or ours is None or value.shape != ours.shape or mine.shape != ours.shape \
+            or within(value, ours, evidence.tol) or not within(mine, value, evidence.tol):
+        return None
+    if np.max(np.abs(mine - value)) > LAST_OUTPUT_SHARE * np.max(np.abs(mine - ours)):
+        return None  # near the last output, inside a loose tolerance, but not it
+    return Hypothesis(f"event:last:{key}", "event_early", 2,
+                      f"your {key} is the reference's {state} at its last output time t = {float(t[k]):.6g} s, before "
+                      f"the event at {te:.6g} s: read the state at the event (solve_ivp's y_events), not the last "
+                      "row of the output")
 
 
 def event_state(root, motion: dict, event: str, te: float):

@@ -5,40 +5,22 @@ precision given as single, an argument converted to float32 at a function's star
 Each is a mistake planted into a copy of the reference (or of a made-up problem) that the tier names, and a near
 miss it must not name: a value in the band of precision that no slip of precision reproduces, a constant typed so
 short that the value leaves the band.  A slip of precision is tried on one input too (a comparison the engine cannot
-draw a second input for), only where the student's value is in the band.
-
-Graded as ``grade batch`` grades (``tests/engine/precision_units.toml``), with the grammar's factors of a unit (a
-whole value 1000 or 1/1000 times the expected one: a mass in grams): live the check names the slip, the kit names
-the same or nothing, with the engine off no catalogue names it; the near misses (a factor 100, a value off by a
-relative 3e-7) name no cause of the family.
+draw a second input for), only where the student's value is in the band.  They are graded as ``grade batch`` grades in ``tests/engine/test_reach.py``.
 """
 
 import importlib
 import itertools
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from checks._diagnoses import DIAGNOSES, families_of
+from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
 from grader.private import drop_private, private_import
-from grader.results import Status
 
-from ..kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
-    assert_no_catalogue_names_it,
-    assert_same_verdicts,
-    engine_mistakes,
-    grade_live_and_kit,
-    warm_slot,
-)
-from ..submissions import Planted, build_planted
 from .test_mutants import BEARINGS, evidence, planted_package, scene
-
-ROOT = Path(__file__).resolve().parents[2]
 
 TIGHT = Tol("tight", 1e-9, 1e-9)
 _NUMBERS = itertools.count()
@@ -207,51 +189,3 @@ def test_on_one_input_only_slips_of_precision_are_tried(made_up, monkeypatch):
     monkeypatch.setattr(mutants, "_evaluate", lambda package, made, *a, **k: tried.extend(made) or [])
     mutants.mutant_slips(scene("p97.turn"), evidences)
     assert tried and {m.slip for m in tried} <= mutants.PRECISION_SLIPS
-
-
-# ------------------------------------------------------------------------------------------ graded
-
-
-TABLE = ROOT / "tests" / "engine" / "precision_units.toml"
-PLANTED, FAMILIES = engine_mistakes(TABLE)
-
-
-def near_misses() -> list:
-    import tomllib
-
-    entries = tomllib.loads(TABLE.read_text())["near"]
-    return [(Planted(name=e["name"], problem=e["problem"], file=e["file"], old=e["old"], new=e["new"], check=e["check"],
-                     diagnosis=e["diagnosis"], message=e["message"], also=tuple(e.get("also", ()))), e["family"])
-            for e in entries]
-
-
-NEAR = near_misses()
-
-
-@pytest.fixture(scope="module")
-def slot():
-    yield from warm_slot(sorted({m.problem for m in PLANTED} | {m.problem for m, _ in NEAR}))
-
-
-@pytest.mark.parametrize("mistake", PLANTED, ids=lambda m: m.name)
-def test_a_slip_of_precision_or_of_units_is_named_live_and_alike_in_the_kit(
-        mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_named_failure(mistake, live)
-    assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],)
-    theirs = {r.check_id: r for r in kit.results}[mistake.check]
-    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
-
-
-@pytest.mark.parametrize("near", NEAR, ids=lambda n: n[0].name)
-def test_a_near_miss_of_precision_or_of_units_is_not_named(near, tmp_path, kit_oracle, slot):
-    mistake, family = near
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    for report in (live, kit):
-        target = {r.check_id: r for r in report.results}[mistake.check]
-        assert target.status is Status.FAILED, target.message
-        assert family not in families_of(target.diagnosis), (target.diagnosis, target.hint)
