@@ -42,22 +42,24 @@ not an explanation: where it would take the families told past two, it is left o
 The grammar:
 
 * outputs (the expected value transformed): transpose, inverse, the sign of the whole value, of a row, a column
-  or an entry, rows, columns or entries swapped, a factor 2, 1/2, pi/180, 180/pi or a named constant of the
-  problem, float32 rounding, rounding to a few decimals, the output in the other frame (conjugation by the
-  problem's rotation);
+  or an entry, rows, columns or entries swapped, a factor 2, 1/2, pi/180, 180/pi, 1000 or 1/1000 (a unit) or a
+  named constant of the problem, float32 rounding, rounding to a few decimals, the output in the other frame
+  (conjugation by the problem's rotation);
 * inputs (the reference on transformed arguments): arguments swapped, angles as degrees, negated angles, a
   rotation argument transposed, a vector argument in the other frame, an argument ignored (the student's value
   does not change when it does, on the input shown and on one with every argument moved at once, while the
   reference's does: a value that does not follow an argument at all is the finding, not a guess);
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
-  terms), found by least squares over the inputs;
+  terms), found by least squares over the inputs; and ``mutants``' slips inside the reference's own code, among
+  them slips of precision (float32, a constant typed short), tried on one input too where the value is within
+  their band;
 * motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
   wrong row (of the run, or of the state at an event: another of its rows, or a slice of the whole state there
-  from another start, where the event itself is found where the reference's is), a wrong initial state, an event
-  found late or early, an error that grows with the step, the run's parameters exchanged, scaled or ignored, its
-  start's entries exchanged and solve_ivp at looser tolerances (the reference re-run so: a run clearly another than
-  the reference's, or one far nearer to the student's than the reference's is); a randomized comparison's second
-  failing run must show the same cause.
+  from another start, where the event itself is found where the reference's is), the state at an event read from
+  the run's last output before it, a wrong initial state, an event found late or early, an error that grows with
+  the step, the run's parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser
+  tolerances (the reference re-run so: a run clearly another than the reference's, or one far nearer to the
+  student's than the reference's is); a randomized comparison's second failing run must show the same cause.
 
 * models (``models``: a value of the student's MuJoCo model, which a check compares with the sheet's numbers or
   the reference's analytic values, so that no reference call stands behind it): the student's compiled model and

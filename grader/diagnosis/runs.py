@@ -1,10 +1,12 @@
 """Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
 constant offset, a state from the wrong row (of the run, or of the state at an event: another row, or a slice of the
-whole state there from another start), a wrong start, an event found late or early, and an error that grows with
-the step (against fixed-step runs of the reference's own right-hand side); and the reference re-run as a slip would
-run it (``parameter_variants``: its arguments exchanged, scaled or ignored, its start's entries exchanged, solve_ivp
-at looser tolerances), every such run a function of the run's arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose columns are read from the
-wrong rows of the solution, which looks like a wrong start or a drifting energy) and ``exchanged_events``.
+whole state there from another start), the state at an event read from the run's last output before it, a wrong
+start, an event found late or early, and an error that grows with the step (against fixed-step runs of the
+reference's own right-hand side); and the reference re-run as a slip would run it (``parameter_variants``: its
+arguments exchanged, scaled or ignored, its start's entries exchanged, solve_ivp at looser tolerances), every such
+run a function of the run's arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose
+columns are read from the wrong rows of the solution, which looks like a wrong start or a drifting energy) and
+``exchanged_events``.
 
 Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
 reference's at states along the reference's run (``model_evidences``): a run that leaves the reference's is not

@@ -5,7 +5,8 @@ precision given as single, an argument converted to float32 at a function's star
 Each is a mistake planted into a copy of the reference (or of a made-up problem) that the tier names, and a near
 miss it must not name: a value in the band of precision that no slip of precision reproduces, a constant typed so
 short that the value leaves the band.  A slip of precision is tried on one input too (a comparison the engine cannot
-draw a second input for), only where the student's value is in the band.  They are graded as ``grade batch`` grades in ``tests/engine/test_reach.py``.
+draw a second input for), only where the student's value is in the band.  They are graded as ``grade batch``
+grades in ``tests/engine/test_reach.py``.
 """
 
 import importlib
