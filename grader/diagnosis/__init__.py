@@ -38,6 +38,13 @@ Slips that are one value by mathematics (a rotation transposed and the rotation 
 matrix transposed and negated, a cross product with its operands exchanged and negated) are declared once with the
 grammar (``grammar.EQUIVALENCES``) and told together by whichever tier finds one of them; such a twin adds a name,
 not an explanation: where it would take the families told past two, it is left out rather than nothing named.
+So is one edit or one finding that reads as a slip of another family as truly (``mutants.rivals``,
+``engine._unturned``): a product with a quantity where the division by it belongs is a factor off and the quantity
+used as its reciprocal; an angle or a rotation found ignored, where the student's value is the reference's with it
+turning nothing, is a rotation left out as well; where no argument of the call could be tested, a parameter with a
+default that a slip of a formula leaves unused is an argument ignored.  A name more particular than another is
+told alone only where the evidence proves it: two names unpacked from a run's state and exchanged read the state
+from each other's rows (a state row, not entries swapped).
 
 The grammar:
 

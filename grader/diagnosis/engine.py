@@ -45,6 +45,7 @@ from .grammar import (
     replaced,
     rotation_of,
     second_args,
+    unturned,
 )
 from . import trace
 from .models import model_slips
@@ -387,7 +388,7 @@ def _ignored(scene: Scene, evidences: list) -> list:
     leaves = ignore_candidates(decl, first.source.args)
     budget = scene.student_calls + min(IGNORED_CALLS, MAX_STUDENT_CALLS - 1 - scene.student_calls)
     found, followed, complete, shifted = [], [], True, False
-    for path, _, value in leaves:
+    for path, role, value in leaves:
         if scene.student_calls + (2 if shifted else 3) > budget:  # an argument ignored is tested on both inputs
             complete = False
             break
@@ -405,12 +406,40 @@ def _ignored(scene: Scene, evidences: list) -> list:
                                     f"your value does not change when {_label(decl, path)} {changed_how(value)} "
                                     "(on the input shown and on one with every argument changed), while the "
                                     "expected one does: the function ignores it"))
+            found += _unturned(scene, [first, shifted], found[-1], decl, path, role)
     trace.note("ignored", arguments=len(leaves), followed=len(followed), found=[h.key for h in found],
                complete=complete)
-    if complete and len(followed) > 1 and len(found) == len(followed):  # nothing changes it: no use of the input
+    ignored = [h for h in found if not h.twin]  # a twin reads an argument ignored another way
+    if complete and len(followed) > 1 and len(ignored) == len(followed):  # nothing changes it: no use of the input
         return [Hypothesis("ignored:all", "constant_answer", 3, "your value does not change when any of the "
                            f"arguments ({', '.join(_label(decl, p) for p in followed)}) does")]
     return found
+
+
+def _unturned(scene: Scene, inputs: list, ignored: Hypothesis, decl: Declaration | None, path,
+              role: str) -> list:
+    """The rival of an angle or a rotation found ignored (``ignored``): where the student's value is the
+    reference's with that argument turning nothing (``grammar.unturned``: the angle zero, the rotation the identity)
+    on the input shown and on the moved one (``inputs``), a rotation by it is left out, a slip of the frame told
+    beside the argument ignored (a twin: one value, read two ways).  Two reference calls; none where the argument
+    is of another kind."""
+    for one in inputs:
+        args = tuple(one.source.args)
+        try:
+            still = unturned(role, at(list(args), path))
+        except (IndexError, KeyError, TypeError):
+            return []
+        if still is None:
+            return []
+        try:
+            value = scene.reference_at(one.source.probe, replaced(args, path, still), one.source.path)
+        except GraderFault:
+            return []
+        if value is None or value.shape != one.got.shape or not within(value, one.got, one.tol):
+            return []
+    return [Hypothesis(f"{ignored.key}=unturned", "wrong_frame", ignored.cost,
+                       f"your value is the expected one with {_label(decl, path)} turning nothing: a rotation by it "
+                       "is left out (the value stays in the coordinates of the frame not turned)", twin=True)]
 
 
 def _label(decl: Declaration | None, path) -> str:
@@ -508,8 +537,9 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     tiers.append(_heard(lambda: _ignored(scene, evidences), explained, "ignored"))
     if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
         told = {DIAGNOSES[h.name].family for tier in tiers for h in tier} if any(tiers) else None
+        untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
-                                               lambda: _second_input(scene, evidences[-1]), told),
+                                               lambda: _second_input(scene, evidences[-1]), told, untested),
                           any(tiers), "formulas")
         if not formulas and left_to_live(scene, evidences):
             tiers = _beside(tiers)

@@ -31,6 +31,7 @@ __all__ = [
     "input_slips",
     "perturbed",
     "changed_how",
+    "unturned",
     "moved",
     "IGNORED_ARGUMENTS",
     "IGNORED_ROLES",
@@ -422,6 +423,27 @@ def perturbed(value, change: int = 0, move: bool = False):
     return changed.tolist() if isinstance(value, (list, tuple)) else changed
 
 
+def unturned(role: str, value):
+    """The value of an angle (``role`` "angle" or "angles": zero) or of a rotation (the identity) that turns
+    nothing, in the value's own form; None for any other argument.  Where a function ignores such an argument and
+    gives the reference's value with it unturned, a rotation by it is left out: a slip of the frame as much as an
+    argument ignored."""
+    array = array_of(value)
+    if array is None or not np.all(np.isfinite(array)):
+        return None
+    if role in ("angle", "angles"):
+        zero = np.zeros_like(array, dtype=float)
+    elif _kind(array) == "rotation" and np.linalg.det(array) > 0:
+        zero = np.eye(array.shape[0])
+    else:
+        return None
+    if not np.any(np.abs(zero - array) > 1e-12):
+        return None
+    if array.ndim == 0:
+        return 0.0
+    return zero.tolist() if isinstance(value, (list, tuple)) else zero
+
+
 def changed_how(value) -> str:
     """How ``perturbed`` changes a value, for the hint: "does" (a number, a symmetric matrix), "turns" (a rotation,
     a direction) or "is scaled" (any other array)."""
@@ -459,21 +481,22 @@ def moved(decl: Declaration | None, args) -> tuple | None:
 
 def perturbations(decl: Declaration | None, args) -> list:
     """The arguments of the test of an ignored argument: each changed alone on ``args``, every one moved at once
-    (``moved``), and each changed again on the moved input."""
+    (``moved``), and each changed again on the moved input; and, on both, each angle or rotation turning nothing
+    (``unturned``: the rival of an angle ignored)."""
     if decl is not None and decl.motion:
         return []
     out = []
-    for path, _, value in ignore_candidates(decl, args):
-        changed = perturbed(value)
-        if changed is not None:
-            out.append(replaced(tuple(args), path, changed))
+    for path, role, value in ignore_candidates(decl, args):
+        for changed in (perturbed(value), unturned(role, value)):
+            if changed is not None:
+                out.append(replaced(tuple(args), path, changed))
     base = moved(decl, args)
     if base is not None:
         out.append(base)
-        for path, _, value in ignore_candidates(decl, base):
-            changed = perturbed(value)
-            if changed is not None:
-                out.append(replaced(base, path, changed))
+        for path, role, value in ignore_candidates(decl, base):
+            for changed in (perturbed(value), unturned(role, value)):
+                if changed is not None:
+                    out.append(replaced(base, path, changed))
     return out
 
 

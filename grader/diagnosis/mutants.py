@@ -19,14 +19,19 @@ another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied
 neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's
 state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a
 pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``), a
-position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``: an offset, not a
-term left out), an argument left out of every product it is a factor of), and the slips of precision
+position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or
+``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product it is a
+factor of), and the slips of precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8).  A slip of precision is told only where the student's value is in the band
 such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
 (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to draw) the slips
-of precision alone are tried there, where the value is in the band.
+of precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of another
+family is told with both names, as a twin (``rivals``): a product with a quantity where the division by it belongs
+(or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the other
+belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored, where the
+engine could test none of the call's arguments itself.
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
 matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
@@ -79,7 +84,8 @@ from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, wit
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE",
-           "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "Mutant", "mutants_of", "mutant_slips", "late", "left_to_live"]
+           "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "Mutant",
+           "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -121,7 +127,8 @@ _DEGREES = ("radians", "deg2rad")
 #: the guard of a loop's iterable: exchanges only (a permuted iterable runs the loop as often)
 ITERABLE = "iterable"
 #: the slips made inside a loop's iterable
-_EXCHANGES = frozenset({"entries", "arguments", "blocks", "rows", "names"})
+_EXCHANGES = frozenset({"entries", "entries_rates", "arguments", "arguments_rates", "blocks", "rows", "names",
+                        "names_rates"})
 #: a run's state by the course's notation (``y`` of ``fun(t, y)`` and of solve_ivp's result, ``y_event``)
 _STATE = re.compile(r"^(y|y_\w+|state)$")
 
@@ -140,6 +147,7 @@ class Mutant:
     path: tuple
     slip: str
     code: object
+    unused: tuple = ()  # the parameters with a default that the slip leaves unused (``anchor - I_r_E`` as ``I_r_E``)
 
     @property
     def function(self) -> str:
@@ -271,6 +279,8 @@ SLIPS = {
     # named by the reference's operation; the phrase says what the student's code does instead
     "multiplies": ("wrong_factor", "`{f}` divides where it should multiply"),
     "divides": ("wrong_factor", "`{f}` multiplies where it should divide"),
+    "multiplies_by": ("wrong_factor", "`{f}` divides where it should multiply"),
+    "divides_by": ("wrong_factor", "`{f}` multiplies where it should divide"),
     "square": ("wrong_factor", "a square is missing in `{f}`"),
     "root": ("wrong_factor", "a square root is missing in `{f}`"),
     "trig": ("sin_cos_swapped", "`{f}` takes sin where cos belongs, or the reverse"),
@@ -281,8 +291,12 @@ SLIPS = {
     "arguments": ("argument_order", "two arguments of a call in `{f}` are exchanged"),
     "names": ("argument_order", "two quantities are exchanged throughout `{f}`"),
     "parameters": ("argument_order", "two of the arguments of `{f}` are exchanged"),
+    "names_rates": ("argument_order", "two quantities are exchanged throughout `{f}`"),
+    "parameters_rates": ("argument_order", "two of the arguments of `{f}` are exchanged"),
     "factors": ("factor_order", "two factors of a product in `{f}` are multiplied the other way round"),
     "entries": ("swapped", "two entries that `{f}` builds are exchanged"),
+    "entries_rates": ("swapped", "two entries that `{f}` builds are exchanged"),
+    "arguments_rates": ("argument_order", "two arguments of a call in `{f}` are exchanged"),
     "blocks": ("argument_order", "two groups of arguments of a call in `{f}` are exchanged"),
     "sides": ("transpose", "a product in `{f}` transposes the wrong factor"),
     "trigs": ("sin_cos_swapped", "`{f}` takes sin where cos belongs and cos where sin belongs in one expression"),
@@ -426,7 +440,8 @@ def _slips(node, parent):
             and not any(isinstance(e, ast.Starred) for e in node.elts):
         reads = _reads(node, parent)
         for i, j in _pairs(len(node.elts)):
-            exchange = "rows" if _state_read(reads[i]) and _state_read(reads[j]) else "entries"
+            exchange = "rows" if _state_read(reads[i]) and _state_read(reads[j]) else \
+                "entries_rates" if _rate_exchange(node.elts[i], node.elts[j]) else "entries"
             yield exchange, lambda n, i=i, j=j: _exchanged(n, "elts", i, j)
         if all(_reciprocal(e) for e in node.elts):
             yield "inverse", lambda n: _with(n, elts=[e.right for e in n.elts])
@@ -562,10 +577,13 @@ def _state_read(node) -> bool:
 
 def _reads(node, parent) -> list:
     """What each entry of a tuple or list reads: its own value, or for the names a tuple assigns
-    (``q, qd = y[:3], y[3:]``) the values assigned to them."""
+    (``q, qd = y[:3], y[3:]``) the values assigned to them; the names a part of a run's state is unpacked into
+    (``x, h, phi = y[:3]``) each read an entry of the state."""
     if isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign) and isinstance(parent.value, ast.Tuple) \
             and len(parent.value.elts) == len(node.elts):
         return list(parent.value.elts)
+    if isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign) and _state_read(parent.value):
+        return [parent.value] * len(node.elts)
     return list(node.elts)
 
 
@@ -658,14 +676,15 @@ def _interleaved(node):
 
 
 def _state_parts(function: ast.FunctionDef) -> set:
-    """The names the function binds to parts of a run's state (``q, qd = y[:3], y[3:]``)."""
+    """The names the function binds to parts of a run's state (``q, qd = y[:3], y[3:]``, ``x, h = y[:2]``)."""
     found = set()
     for node in ast.walk(function):
         if not isinstance(node, ast.Assign) or len(node.targets) != 1:
             continue
         target, value = node.targets[0], node.value
         pairs = zip(target.elts, value.elts) if isinstance(target, ast.Tuple) and isinstance(value, ast.Tuple) \
-            and len(target.elts) == len(value.elts) else [(target, value)]
+            and len(target.elts) == len(value.elts) else \
+            [(t, value) for t in target.elts] if isinstance(target, ast.Tuple) else [(target, value)]
         found |= {t.id for t, v in pairs if isinstance(t, ast.Name) and _state_read(v)}
     return found
 
@@ -811,8 +830,13 @@ def _binop_slips(node: ast.BinOp):
         # ``I_r_E - anchor`` as ``I_r_E``: a position taken from the origin, not from the point subtracted
         yield "origin" if isinstance(op, ast.Sub) and _POSITION.match(_label(node.left) or "-") else "term", \
             lambda n: n.left
-        # ``a - b`` as ``b``: the first term left out, the second kept as it reads (``r r^T`` for ``r.r E - r r^T``)
-        yield "term" if isinstance(op, ast.Add) else "minuend", lambda n: n.right
+        # ``a - b`` as ``b``: the first term left out, the second kept as it reads (``r r^T`` for ``r.r E - r r^T``);
+        # ``anchor - I_r_E`` as ``I_r_E`` or ``-I_r_E``: the point taken at the origin, as for ``I_r_E - anchor``
+        if isinstance(op, ast.Sub) and _from_point(node):
+            yield "origin", lambda n: n.right
+            yield "origin", lambda n: _negated(n.right)
+        else:
+            yield "term" if isinstance(op, ast.Add) else "minuend", lambda n: n.right
     elif isinstance(op, ast.Mult):
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
@@ -820,9 +844,9 @@ def _binop_slips(node: ast.BinOp):
             if isinstance(operand, ast.UnaryOp) and isinstance(operand.op, ast.USub) and not _number(operand.operand):
                 # ``-m * theta``: the factor m left out keeps the minus
                 yield _dropped(operand.operand), lambda n, other=other: _negated(getattr(n, other))
-        yield "multiplies", lambda n: _with(n, op=ast.Div())
+        yield "multiplies" if _number(node.right) else "multiplies_by", lambda n: _with(n, op=ast.Div())
     elif isinstance(op, ast.Div):
-        yield "divides", lambda n: _with(n, op=ast.Mult())
+        yield "divides" if _number(node.right) else "divides_by", lambda n: _with(n, op=ast.Mult())
         yield _dropped(node.right), lambda n: n.left
         if not _reciprocal(node):  # ``12 / m`` as ``m / 12`` (``1 / x`` as ``x``: a reciprocal, the inputs' slip)
             yield "ratio", lambda n: _with(n, left=n.right, right=n.left)
@@ -850,6 +874,30 @@ def _binop_slips(node: ast.BinOp):
                         n, **{side: ast.Constant(getattr(n, side).value * factor)})
 
 
+def _from_point(node: ast.BinOp) -> bool:
+    """``p - X_r_Y``: a position subtracted from a point that is no position of the notation (an anchor, a centre):
+    the vector from the position to the point, which is the position itself, negated, where the point is at the
+    origin."""
+    return bool(_POSITION.match(_label(node.right) or "-")) and not _POSITION.match(_label(node.left) or "-")
+
+
+def _rate_exchange(a, b) -> bool:
+    """Two expressions alike but for one name, which names the other's rate (``R @ qd`` and ``R @ qdd``)."""
+    first = [n for n in ast.walk(a) if isinstance(n, ast.Name)]
+    second = [n for n in ast.walk(b) if isinstance(n, ast.Name)]
+    pairs = {(x.id, y.id) for x, y in zip(first, second) if x.id != y.id}
+    if len(first) != len(second) or len(pairs) != 1:
+        return False
+    old, new = next(iter(pairs))
+    if not _rates(old, new):
+        return False
+    renamed = copy.deepcopy(a)
+    for n in ast.walk(renamed):
+        if isinstance(n, ast.Name) and n.id == old:
+            n.id = new
+    return ast.dump(renamed) == ast.dump(b)
+
+
 def _call_slips(node: ast.Call):
     callee = _callee(node)
     args = node.args
@@ -875,8 +923,8 @@ def _call_slips(node: ast.Call):
         return
     positional = args[:4]
     for i, j in _pairs(len(args[:6])):
-        exchange = "rows" if _state_read(args[i]) and _state_read(args[j]) else \
-            "cross" if callee == "cross" else "arguments"
+        exchange = "rows" if _state_read(args[i]) and _state_read(args[j]) else "cross" if callee == "cross" \
+            else "arguments_rates" if _rate_exchange(args[i], args[j]) else "arguments"
         yield exchange, lambda n, i=i, j=j: _exchanged(n, "args", i, j)
     for size in range(2, len(args[:8]) // 2 + 1):  # ``f(q, qd, q_des, qd_des)`` as ``f(q_des, qd_des, q, qd)``
         for first in range(len(args[:8]) - 2 * size + 1):
@@ -998,13 +1046,15 @@ def _in(node, lines: tuple) -> bool:
 
 
 def _mutated(function: _Function, lines: tuple):
-    """``(slip, new definition)`` of every slip of the function's regions ``lines``, each once."""
+    """``(slip, new definition, parameters it leaves unused)`` of every slip of the function's regions ``lines``,
+    each once."""
     sites = [(index, node, parent, guarded, indexing)
              for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
              if _in(node, lines)]
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
-    names = _names(function.node)
+    names, defaulted = _names(function.node), _defaulted(function.node)
+    used = _used_parameters(function.node, defaulted)
     for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
         if index is None:
             slips = _parameter_slips(function.node, lines)
@@ -1019,6 +1069,9 @@ def _mutated(function: _Function, lines: tuple):
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
+            elif isinstance(edit, tuple) and len(edit) == 3 and slip in ("names", "parameters") \
+                    and _rates(edit[1], edit[2]):
+                slip = f"{slip}_rates"  # a quantity and its rate exchanged: each read where the other belongs
             if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
                 slip = "skew"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
             tree = copy.deepcopy(function.node)
@@ -1038,7 +1091,24 @@ def _mutated(function: _Function, lines: tuple):
             key = ast.dump(tree)
             if key not in seen:
                 seen.add(key)
-                yield slip, tree
+                yield slip, tree, tuple(sorted(used - _used_parameters(tree, defaulted)))
+
+
+def _defaulted(function: ast.FunctionDef) -> frozenset:
+    """The function's parameters that have a default (``anchor=ANCHOR``): a constant of the problem that a call
+    leaves as it is, which the test of an ignored argument does not change."""
+    positional = function.args.posonlyargs + function.args.args
+    named = positional[len(positional) - len(function.args.defaults):] if function.args.defaults else []
+    named += [a for a, d in zip(function.args.kwonlyargs, function.args.kw_defaults) if d is not None]
+    return frozenset(a.arg for a in named)
+
+
+def _used_parameters(function: ast.FunctionDef, parameters: frozenset) -> frozenset:
+    """The ``parameters`` that the function's body reads, in its own code or in a function it defines."""
+    if not parameters:
+        return frozenset()
+    return frozenset(n.id for n in ast.walk(function)
+                     if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and n.id in parameters)
 
 
 def _names(function: ast.FunctionDef) -> frozenset:
@@ -1205,8 +1275,8 @@ def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] |
         live = _live(package, function.module, function.path)
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
-        for slip, code in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
-            found.append(Mutant(function.module, function.path, slip, code))
+        for slip, code, unused in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
+            found.append(Mutant(function.module, function.path, slip, code, unused))
             if len(found) > MAX_MUTANTS:
                 return None
     return found
@@ -1217,13 +1287,13 @@ def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) ->
     """``(slip, code object)`` of the function's mutants, compiled once for the process (a mutant whose code does
     not fit the live function's closure is left out)."""
     found = []
-    for slip, tree in _mutated(function, lines):
+    for slip, tree, unused in _mutated(function, lines):
         try:
             code = _compiled(function, tree, filename)
         except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
             continue
         if code.co_freevars == freevars:
-            found.append((slip, code))
+            found.append((slip, code, unused))
     return tuple(found)
 
 
@@ -1396,7 +1466,7 @@ def _value(package, evidence: Evidence, call: tuple):
     return value
 
 
-def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = ()) -> list[Hypothesis]:
+def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bool = False) -> list[Hypothesis]:
     families = {DIAGNOSES[m.name].family for m in kept}
     if not kept or len(families) > MAX_FAMILIES:
         return []
@@ -1408,9 +1478,46 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = ()) -> list[Hypo
             name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
         key = f"mutant:{name}:{detail}"
         found.setdefault(key, Hypothesis(key, name, COST, detail))
-        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())):  # one value by mathematics: both told
-            found.setdefault(twin.key, twin)
+        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested):
+            found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told
     return list(found.values())
+
+
+#: the slips whose edit is as truly a slip of another family: a product with a quantity for a division by it uses
+#: the quantity where its reciprocal belongs (a number's factor is a scale: ``x * 2`` for ``x / 2``); two entries
+#: or arguments exchanged that are one expression of a quantity and of its rate (``R @ qd``, ``R @ qdd``) read each
+#: where the other belongs
+RIVALS = {
+    "multiplies_by": ("reciprocal_argument", "`{f}` divides by a quantity where it should multiply by it (the "
+                                             "quantity used as its reciprocal)"),
+    "divides_by": ("reciprocal_argument", "`{f}` multiplies by a quantity where it should divide by it (the "
+                                          "quantity used as its reciprocal)"),
+    "entries_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the quantity "
+                                   "belongs"),
+    "arguments_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the "
+                                     "quantity belongs"),
+    "names_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the quantity "
+                                 "belongs"),
+    "parameters_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the "
+                                      "quantity belongs"),
+}
+
+
+def rivals(mutant: Mutant, key: str, untested: bool = False) -> list[Hypothesis]:
+    """The other readings of one mutant's edit, told beside its own name as a twin is (never where they would take
+    the families told past two): a quantity used as its reciprocal (``RIVALS``), and, where the test of an ignored
+    argument could change none of the call's arguments (``untested``: a probe of an event function, say), an
+    argument with a default (a constant of the problem that a call leaves as it is) that the edit leaves unused
+    (``anchor - I_r_E`` as ``I_r_E``: the anchor ignored).  Where that test could change them it is the measure of
+    an argument ignored, heard as a tier of its own."""
+    found = []
+    if mutant.slip in RIVALS:
+        name, detail = RIVALS[mutant.slip]
+        found.append(Hypothesis(f"{key}={name}", name, COST, detail.format(f=mutant.function), twin=True))
+    for parameter in mutant.unused if untested else ():
+        found.append(Hypothesis(f"{key}=unused:{parameter}", "ignored_argument", COST,
+                                f"`{mutant.function}` leaves its argument `{parameter}` unused", twin=True))
+    return found
 
 
 #: what the expression of a slip is, for the grammar's equivalences (``grammar.EQUIVALENCES``)
@@ -1451,13 +1558,15 @@ def left_to_live(scene, evidences: list[Evidence]) -> bool:
     return problem is not None and importlib.util.find_spec(f"checks.problem_{problem:02d}") is not None
 
 
-def mutant_slips(scene, evidences: list[Evidence], another=None, told=None) -> list[Hypothesis]:
+def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, untested=False) -> list[Hypothesis]:
     """The slips of the reference's own code that reproduce the student's value on the input shown and on the
     second one (``evidences``: two, each with its reference call ``source``), and on a third one where
     ``another()`` gives it (an input the engine draws, the student's value there within the scene's budget): two
     inputs a shrunk failure shows may be simple enough for a slip to coincide with another.  None in the kit.
     ``told``: the families an earlier tier already explained the answer with (None: none did); the tier then
-    tries rivals within a budget of its own, those of other families first (``late``)."""
+    tries rivals within a budget of its own, those of other families first (``late``).  ``untested``: the test of
+    an ignored argument could change none of the call's arguments, and a parameter with a default that a slip
+    leaves unused is told beside it (``rivals``)."""
     if getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
     if not _tried(evidences):
@@ -1478,7 +1587,7 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None) -> l
                 trace.note("third", kept=None if kept is None else sorted({m.name for m in kept}))
     except GraderFault:
         return []
-    return _hypotheses(kept or [], inputs)
+    return _hypotheses(kept or [], inputs, untested)
 
 
 def _imprecise(scene, evidences: list[Evidence], another) -> list[Hypothesis]:

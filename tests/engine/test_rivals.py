@@ -1,0 +1,291 @@
+"""Rivals of another family that the same evidence holds: one slip read two ways is told "could be X or Y", and a
+name more particular than another is told only where the evidence proves it.
+
+* The formula tier (``mutants.rivals``): a product with a quantity where the division by it belongs uses the
+  quantity as its reciprocal (a scale and an inverse alike; a number's factor is a scale only); a point subtracted
+  from a position and left out (``p - X_r_Y`` as ``X_r_Y``) is a position taken from the origin, as ``X_r_Y - p``
+  is; where the test of an ignored argument could change none of the call's arguments, a parameter with a
+  default that the slip leaves unused is an argument ignored as well; two entries exchanged that are one
+  expression of a quantity and of its rate read each where the other belongs (a state row as well); two names
+  unpacked from a run's state exchanged read the state from each other's rows.
+* The test of an ignored argument (``engine._ignored``): an angle or a rotation ignored, where the student's value
+  is the reference's with it turning nothing, is a rotation left out as well (a frame slip).
+
+Each is shown on a mistake planted into a made-up problem, and each has its near miss.
+"""
+
+import importlib
+import itertools
+
+import numpy as np
+import pytest
+
+from grader.checking import Tol
+from grader.diagnosis import Declaration
+from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source, array_of, at
+from grader.diagnosis.grammar import unturned
+from grader.private import drop_private, private_import
+
+from tests.kit_support import (  # noqa: F401 (fixtures)
+    assert_told_alike,
+    warm_slot,
+)
+from tests.submissions import Planted
+
+from .test_ignored import _explain
+from .test_mutants import scene
+
+TIGHT = Tol("tight", 1e-9, 1e-9)
+_NUMBERS = itertools.count()
+
+SOURCE = '''"""A made-up problem whose slips have rivals of another family."""
+
+import numpy as np
+
+CENTRE = np.array([0.5, -0.25, 1.0])
+
+
+def rate(k, m):
+    """``(k / m, k / 2)``."""
+    # BEGIN SOLUTION problem 98
+    return np.array([k / m, k / 2.0])
+    # END SOLUTION
+
+
+def stretch(I_r_IE, centre=CENTRE, length=1.5):
+    """The stretch of a cord from ``centre`` to the point E, ``|centre - I_r_IE| - length``, and E's height."""
+    # BEGIN SOLUTION problem 98
+    return np.array([np.linalg.norm(centre - I_r_IE) - length, I_r_IE[2]])
+    # END SOLUTION
+
+
+def slip_speed(I_v_P, v_belt):
+    """The speed of P relative to a belt, ``|v_belt - I_v_P|``, and P's first component."""
+    # BEGIN SOLUTION problem 98
+    return np.array([np.linalg.norm(v_belt - I_v_P), I_v_P[0]])
+    # END SOLUTION
+
+
+def step_height(t, y, s=0.4):
+    """The height of a sliding point above a slope, ``h - s x + t / 10``, with ``x, h = y[:2]``."""
+    # BEGIN SOLUTION problem 98
+    x, h = y[:2]
+    return np.array([h - s * x + 0.1 * t])
+    # END SOLUTION
+
+
+def joint_rates(S, qd, qdd):
+    """A joint's ``(S qd, S qdd)``."""
+    # BEGIN SOLUTION problem 98
+    return np.concatenate([S @ qd, S @ qdd])
+    # END SOLUTION
+
+
+def two_loads(S, u, w):
+    """Two loads ``(S u, S w)`` mapped alike."""
+    # BEGIN SOLUTION problem 98
+    return np.concatenate([S @ u, S @ w])
+    # END SOLUTION
+
+
+def lean(v, s=0.4):
+    """``b - s a`` of a vector's first entries ``a, b = v[:2]`` (no run's state)."""
+    # BEGIN SOLUTION problem 98
+    a, b = v[:2]
+    return np.array([b - s * a])
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def made_up(tmp_path, monkeypatch):
+    """A package of one made-up problem (98) that the formula tier mutates in place of the reference."""
+    root = tmp_path / "made_up"
+    root.mkdir()
+    (root / "__init__.py").write_text('"""A made-up package."""\n')
+    (root / "problem_98.py").write_text(SOURCE)
+    package = private_import(f"_made_up_rivals_{next(_NUMBERS)}", root)
+    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
+    yield package
+    drop_private(package)
+
+
+def _found(package, name, student, inputs, untested=False):
+    """The formula tier's hypotheses for the student's ``student`` where the made-up ``name`` belongs."""
+    def probe(pkg, *args):
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_98"), name)(*args)
+
+    evidences = [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), TIGHT, "value",
+                          source=Source(probe, args, ())) for args in inputs]
+    assert all(not np.allclose(e.got, e.expected) for e in evidences)
+    found = mutants.mutant_slips(scene("p98.made_up"), evidences, untested=untested)
+    return {h.name for h in found}, found
+
+
+def V(*x):
+    return np.array(x, dtype=float)
+
+
+# ------------------------------------------------------------------------------------------ a reciprocal
+
+
+def test_a_product_with_a_quantity_for_the_division_is_also_its_reciprocal(made_up):
+    """``k m`` where ``k / m`` belongs: a factor off (scale) and ``m`` used as its reciprocal (inverse), both
+    told; the reciprocal is the same edit read another way (a twin, left out where it would take the families
+    past two)."""
+    names, found = _found(made_up, "rate", lambda k, m: np.array([k * m, k / 2.0]), [(3.0, 0.8), (1.7, 2.5)])
+    assert names == {"wrong_factor", "reciprocal_argument"}, [(h.name, h.detail) for h in found]
+    assert [h.name for h in found if h.twin] == ["reciprocal_argument"]
+    assert any("`rate` multiplies by a quantity where it should divide by it" in h.detail for h in found)
+
+
+def test_a_product_with_a_number_for_the_division_is_a_scale_only(made_up):
+    """The near miss: ``2 k`` where ``k / 2`` belongs is a constant factor (4): no quantity used as its
+    reciprocal."""
+    names, found = _found(made_up, "rate", lambda k, m: np.array([k / m, k * 2.0]), [(3.0, 0.8), (1.7, 2.5)])
+    assert names == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+
+
+# ------------------------------------------------------------------------------------------ a point at the origin
+
+STRETCHES = [(V(0.3, 1.2, -0.4),), (V(-1.1, 0.6, 0.9),)]
+
+
+def test_a_point_subtracted_from_a_position_and_left_out_is_a_position_from_the_origin(made_up):
+    """``|I_r_IE|`` where ``|centre - I_r_IE|`` belongs: the cord measured from the origin (an offset), as for
+    ``I_r_IE - centre``; no term of a sum left out."""
+    def from_origin(I_r_IE):
+        return np.array([np.linalg.norm(I_r_IE) - 1.5, I_r_IE[2]])
+
+    names, found = _found(made_up, "stretch", from_origin, STRETCHES)
+    assert names == {"from_origin"}, [(h.name, h.detail) for h in found]
+    assert any("`stretch` measures a position from the origin" in h.detail for h in found)
+
+
+def test_a_defaulted_argument_left_unused_is_told_where_no_argument_could_be_tested(made_up):
+    """Where the test of an ignored argument could change none of the call's arguments (``untested``), the
+    parameter with a default that the slip leaves unused (``centre``) is an argument ignored as well: told beside
+    the position from the origin, as its twin."""
+    def from_origin(I_r_IE):
+        return np.array([np.linalg.norm(I_r_IE) - 1.5, I_r_IE[2]])
+
+    names, found = _found(made_up, "stretch", from_origin, STRETCHES, untested=True)
+    assert names == {"from_origin", "ignored_argument"}, [(h.name, h.detail) for h in found]
+    assert [h.detail for h in found if h.twin] == ["`stretch` leaves its argument `centre` unused"]
+
+
+def test_a_velocity_left_out_of_a_difference_with_no_default_is_a_term_left_out(made_up):
+    """The near miss of both: ``|I_v_P|`` where ``|v_belt - I_v_P|`` belongs subtracts no position (no point at
+    the origin), and ``v_belt`` has no default (the test of an ignored argument measures it): a term left out,
+    nothing else, even where that test could change nothing."""
+    def absolute(I_v_P, v_belt):
+        return np.array([np.linalg.norm(I_v_P), I_v_P[0]])
+
+    inputs = [(V(0.3, 1.2, -0.4), V(1.0, 0.5, 0.2)), (V(-1.1, 0.6, 0.9), V(0.4, -0.8, 1.3))]
+    for untested in (False, True):
+        names, found = _found(made_up, "slip_speed", absolute, inputs, untested=untested)
+        assert names == {"missing_term"}, [(h.name, h.detail) for h in found]
+
+
+# ------------------------------------------------------------------------------------------ a state's entries
+
+JOINTS = [(np.array([[1.0, 0.2], [0.0, 1.0], [0.5, -0.3]]), V(0.4, -1.2), V(2.0, 0.7)),
+          (np.array([[0.3, 1.0], [-0.8, 0.1], [0.0, 0.6]]), V(-0.9, 0.5), V(0.2, -1.4))]
+
+
+def test_a_quantity_and_its_rate_exchanged_are_also_a_state_row_slip(made_up):
+    """``(S qdd, S qd)`` where ``(S qd, S qdd)`` belongs: two entries (or arguments) exchanged, and the rate read
+    where the quantity belongs and the reverse: both told, the state row as the twin of the exchange."""
+    names, found = _found(made_up, "joint_rates", lambda S, qd, qdd: np.concatenate([S @ qdd, S @ qd]), JOINTS)
+    assert {mutants.DIAGNOSES[n].family for n in names} == {"order", "state_row"}, [(h.name, h.detail) for h in found]
+    assert [h.name for h in found if h.twin] == ["state_row"]
+    assert any("`joint_rates` reads a quantity where its rate belongs" in h.detail for h in found)
+
+
+def test_two_quantities_that_are_no_rates_exchanged_are_of_the_order_only(made_up):
+    """The near miss: ``(S w, S u)`` where ``(S u, S w)`` belongs: no rate of the other, an exchange only."""
+    names, found = _found(made_up, "two_loads", lambda S, u, w: np.concatenate([S @ w, S @ u]), JOINTS)
+    assert names and {mutants.DIAGNOSES[n].family for n in names} == {"order"}, [(h.name, h.detail) for h in found]
+
+def test_names_unpacked_from_a_runs_state_exchanged_are_a_state_row_slip(made_up):
+    """``h, x = y[:2]`` where ``x, h = y[:2]`` belongs: each name reads the other's row of the state, a state
+    read from the wrong rows (the particular name the evidence proves), not two entries swapped."""
+    def exchanged(t, y, s=0.4):
+        h, x = y[:2]
+        return np.array([h - s * x + 0.1 * t])
+
+    names, found = _found(made_up, "step_height", exchanged, [(0.3, V(0.5, -1.0, 2.0)), (1.1, V(-0.2, 0.7, 0.6))])
+    assert names == {"state_row"}, [(h.name, h.detail) for h in found]
+
+
+def test_names_unpacked_from_a_vector_that_is_no_state_exchanged_are_swapped(made_up):
+    """The near miss: the same exchange of a vector that is no run's state is of the order family."""
+    def exchanged(v, s=0.4):
+        b, a = v[:2]
+        return np.array([b - s * a])
+
+    names, found = _found(made_up, "lean", exchanged, [(V(0.5, -1.0, 2.0),), (V(-0.2, 0.7, 0.6),)])
+    assert names and "state_row" not in names, [(h.name, h.detail) for h in found]
+    assert {mutants.DIAGNOSES[n].family for n in names} == {"order"}, [(h.name, h.detail) for h in found]
+
+
+# ------------------------------------------------------------------------------------------ an angle ignored
+
+
+def _R3(a):
+    c, s = np.cos(a), np.sin(a)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _tilted(alpha, I):
+    """A body's inertia turned by ``alpha`` about z."""
+    return _R3(alpha) @ np.asarray(I) @ _R3(alpha).T
+
+
+INERTIA = np.array([[2.0, 0.3, 0.0], [0.3, 1.0, 0.1], [0.0, 0.1, 3.0]])
+TILTED = Declaration(args=("angle", "inertia"), names=("alpha", "I"), draw=False)
+
+
+def test_an_angle_ignored_that_leaves_the_rotation_out_is_also_a_frame_slip(monkeypatch):
+    """The student's inertia not turned by ``alpha``: the value does not follow ``alpha`` (an argument ignored),
+    and it is the reference's with ``alpha = 0`` on both inputs (a rotation left out): both told."""
+    finding = _explain(monkeypatch, "stub.tilted", TILTED, _tilted, lambda alpha, I: np.asarray(I), (0.7, INERTIA))
+    assert finding is not None and set(finding.names) == {"ignored_argument", "wrong_frame"}, finding
+    assert "alpha turning nothing" in finding.hint
+
+
+def test_an_angle_ignored_at_another_angle_is_no_frame_slip(monkeypatch):
+    """The near miss: the student's inertia turned by a fixed 0.5 whatever ``alpha``: the angle ignored, but the
+    value is no reference's with the rotation left out; the argument ignored alone is told."""
+    finding = _explain(monkeypatch, "stub.tilted_fixed", TILTED, _tilted, lambda alpha, I: _tilted(0.5, I),
+                       (0.7, INERTIA))
+    assert finding is not None and finding.names == ("ignored_argument",), finding
+
+
+#: problem 26's seat position with the carousel's turn by beta left out: the seat in the arm's own frame, which
+#: does not follow beta and is the reference's at beta = 0
+SEAT_NOT_TURNED = Planted(
+    name="rivals-p26-seat-not-turned", problem=26, file="problem_26.py",
+    old="return np.array([radius * np.sin(beta), l1 - l3 * np.cos(phi), radius * np.cos(beta)])",
+    new="return np.array([0.0, l1 - l3 * np.cos(phi), radius])",
+    check="p26.position_values", diagnosis="ignored_argument or wrong_frame", message="beta turning nothing")
+
+
+@pytest.fixture(scope="module")
+def slot():
+    yield from warm_slot([26])
+
+
+def test_an_angle_ignored_graded_is_told_with_its_frame_rival(tmp_path, kit_oracle, deferred_ids, slot):
+    """Graded as ``grade batch`` grades, live and from the kit's key (which holds the reference's values with the
+    angle turning nothing): live both names, the kit the same or none."""
+    assert_told_alike(SEAT_NOT_TURNED, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+
+
+def test_what_turns_nothing():
+    assert unturned("angle", 0.7) == 0.0 and unturned("angles", [0.2, -0.4]) == [0.0, 0.0]
+    assert np.array_equal(unturned("rotation", _R3(0.3)), np.eye(3))
+    assert unturned("angle", 0.0) is None  # already turning nothing: no rival to try
+    assert unturned("scalar", 0.7) is None and unturned("vector", V(1.0, 0.0, 0.0)) is None
+    assert unturned("", np.diag([1.0, 1.0, -1.0])) is None  # a reflection is no rotation
