@@ -269,7 +269,8 @@ SEAT_NOT_TURNED = Planted(
     name="rivals-p26-seat-not-turned", problem=26, file="problem_26.py",
     old="return np.array([radius * np.sin(beta), l1 - l3 * np.cos(phi), radius * np.cos(beta)])",
     new="return np.array([0.0, l1 - l3 * np.cos(phi), radius])",
-    check="p26.position_values", diagnosis="ignored_argument or wrong_frame", message="beta turning nothing")
+    check="p26.position_values", diagnosis="ignored_argument or wrong_frame", message="beta turning nothing",
+    also=("p26.jacobian_derivative",))
 
 
 @pytest.fixture(scope="module")
