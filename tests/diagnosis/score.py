@@ -95,7 +95,7 @@ an empty string where the check named nothing).  Its check is the first of its p
 slip that repeats one of the six earlier sets, their named companions, the engine's own tests or the planted suite
 (the same file and replaced text, the same planted text, or the same slip written otherwise) was dropped;
 candidates that no check failed, or whose check errs instead of failing, are not in it.  Most of its entries
-(94 of 100) make another slip in a line that an earlier entry also edits; each replaces a text of that line that no
+(96 of 102) make another slip in a line that an earlier entry also edits; each replaces a text of that line that no
 earlier entry replaces.  Unlike the earlier sets it keeps the slips that are as truly of two families, with the
 second in an optional field ``also`` (6 of its entries; decided from the slip alone when the entry was written:
 two entries of a state exchanged are a state-row and an order slip, ``R(-q)`` for ``R(q)`` is a sign and a
