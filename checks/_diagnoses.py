@@ -156,7 +156,8 @@ TERMS = {
 
 
 def _terms() -> tuple:
-    """``missing_<term>`` (missing_term), ``<term>_sign`` (sign) and ``extra_<term>`` (extra_term) of each term."""
+    """``missing_<term>`` (missing_term), ``<term>_sign`` (sign), ``extra_<term>`` and ``<term>_twice`` (extra_term)
+    of each term."""
     rows = []
     for term, words in TERMS.items():
         rows.append(Diagnosis(f"missing_{term}", "missing_term", f"{words} missing", f"left out {words}"))
@@ -164,6 +165,7 @@ def _terms() -> tuple:
                               f"gave {words} the wrong sign"))
         rows.append(Diagnosis(f"extra_{term}", "extra_term", f"{words} added where it does not belong",
                               f"added {words} where it does not belong"))
+        rows.append(Diagnosis(f"{term}_twice", "extra_term", f"{words} counted twice", f"counted {words} twice"))
     return tuple(rows)
 
 

@@ -91,4 +91,6 @@ def term_slips(inputs: list) -> list:
                 name, detail = f"extra_{term}", f"{fit} adds it and reproduces them"
             if name in DIAGNOSES:
                 found.append(Hypothesis(f"term:{kind}:{term}:{c}", name, 1 + fewest, detail))
+            if kind == "term" and c == 1.0 and f"{term}_twice" in DIAGNOSES:  # a term at twice its value: counted twice
+                found.append(Hypothesis(f"term:{kind}:{term}:twice", f"{term}_twice", 1 + fewest, detail, twin=True))
     return found
