@@ -58,6 +58,11 @@ BANDS_NOTE = ("Any scipy.integrate.solve_ivp method at its default tolerances, w
 DIRECTION_HINT = ("The bar's lower edge falls onto the second support: its height above it decreases through zero, "
                   "which only direction = -1 (or 0) detects; with +1 the event never fires.")
 
+#: the run's checks come after make_contact_event's own (its residual, terminal and direction), which a failure blocks
+NO_EVENT_HINT = ("Where your make_contact_event(s, d) passes its own check, look at the event simulate builds from it: "
+                 "made for the support s and half-width d it is given (in that order), passed to "
+                 "solve_ivp(..., events=[...]), with direction -1 (or 0): the bar's lower edge falls onto the second "
+                 "support, its height above it decreasing through zero.")
 
 # ------------------------------------------------------------------------------------------ the event function
 
@@ -125,8 +130,7 @@ def _event(got, expected, what, bands):
     """The event is found, ends the run and lies within the bands of the reference's."""
     if got.get("t_event") is None:
         fail(f"{what}: no event, the bar never reached the second support (t_event is None); the reference's run "
-             f"hits it at t = {expected['t_event']:.4f} s.", DIRECTION_HINT + " The event must be passed to "
-             "solve_ivp(..., events=[...]).", "no_event")
+             f"hits it at t = {expected['t_event']:.4f} s.", NO_EVENT_HINT, "no_event")
     t = run_array(got, "t", None, what)
     if t.size and t[-1] > got["t_event"] + 1e-9:
         fail(f"{what}: the run goes on after the event at t = {got['t_event']:.4f} s, to t = {t[-1]:.4g} s.",
