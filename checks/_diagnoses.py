@@ -347,6 +347,8 @@ _TABLE = (
        "updated the velocity before the position"),
     _D("orientation_before", "time_shift", "an orientation updated before it is used",
        "updated an orientation before using it"),
+    _D("grid_off_by_one", "time_shift", "an output grid of one sample too many or too few (every sample after the "
+       "first at another time)", "built an output grid one sample off"),
     # ---------------------------------------------------------------- precision
     _D("float32", "precision", "values computed in single precision (float32)", "computed in single precision"),
     _D("rounded", "precision", "values rounded to a few decimals", "rounded the values"),

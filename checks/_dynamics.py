@@ -372,11 +372,39 @@ def first_departure(got, expected, tol):
     return int(rows[0]) if rows.size else None
 
 
-def run_array(run, key, shape, what):
-    """``run[key]`` as a finite array of the given shape."""
+def run_array(run, key, shape, what, times=None):
+    """``run[key]`` as a finite array of the given shape.  Given the expected output ``times``, a run whose own
+    times span them evenly in one sample more or fewer fails as a grid off by one (``grid_off_by_one``: every
+    sample after the first at another time) rather than as a value of the wrong shape."""
     if not isinstance(run, dict) or key not in run:
         fail(f"{what} returned no {key!r}.", "Return a dict with the keys named in the docstring.", "format")
+    if times is not None:
+        _assert_grid(run, key, np.asarray(times, dtype=float), what)
     return as_array(run[key], f"{key} of {what}", shape)
+
+
+def _assert_grid(run, key, times, what):
+    """Fail where ``run[key]`` has one row per output time ``run["t"]`` (so it fails a shape of one row per time
+    of ``times`` anyway) and those times run evenly from the first of ``times`` to the last in one more or one
+    fewer."""
+    try:
+        t = np.asarray(run.get("t"), dtype=float)
+        rows = np.shape(run[key])
+    except (TypeError, ValueError):
+        return
+    if times.ndim != 1 or t.ndim != 1 or abs(t.size - times.size) != 1 or t.size < 3 or not rows or rows[0] != t.size:
+        return
+    steps = np.diff(t)
+    span = times[-1] - times[0]
+    if not (np.all(np.isfinite(t)) and np.all(steps > 0) and span > 0 and np.ptp(steps) <= 1e-6 * steps.mean()
+            and abs(t[0] - times[0]) <= 1e-9 * span and abs(t[-1] - times[-1]) <= 1e-9 * span):
+        return
+    fewer = t.size < times.size
+    fail(f"{what} returned {t.size} output times from {t[0]:.6g} s to {t[-1]:.6g} s, one {'fewer' if fewer else 'more'} "
+         f"than the {times.size} expected: its samples lie {steps.mean():.6g} s apart, not {span / (times.size - 1):.6g} "
+         f"s, so every sample after the first comes {'late' if fewer else 'early'}.",
+         "np.linspace(t0, t_end, n) gives n points and n - 1 steps of (t_end - t0) / (n - 1): for a step dt from t0 to "
+         "t_end it takes round((t_end - t0) / dt) + 1 points.", "grid_off_by_one")
 
 
 def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", roots=None):
@@ -385,8 +413,8 @@ def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", 
     carries the whole run as evidence for the diagnosis engine (``roots``: the probes' whole results, the
     student's and the reference's, when ``got`` and ``expected`` are parts of them)."""
     t = np.asarray(expected["t"], dtype=float)
-    run_array(got, "t", t.shape, what)
-    mine = {key: run_array(got, key, np.shape(expected[key]), what) for key in keys}
+    run_array(got, "t", t.shape, what, times=t)
+    mine = {key: run_array(got, key, np.shape(expected[key]), what, times=t) for key in keys}
     departures = [(i, k, key) for k, key in enumerate(keys)
                   if (i := first_departure(mine[key], np.asarray(expected[key]), tols[key])) is not None]
     if not departures:

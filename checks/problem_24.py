@@ -149,7 +149,7 @@ def check_simulated_motion(ctx):
     got = ctx.student(probe_dynamics.pendulum_motion, SIMULATION_T_END, SIMULATION_GRAV, timeout=SIMULATION_TIMEOUT)
     what = f"problem_24.simulate({SIMULATION_T_END:g})"
     for key in ("t", "q", "qd"):
-        run_array(got, key, np.shape(expected[key]), what)
+        run_array(got, key, np.shape(expected[key]), what, times=expected["t"])
     ctx.add_figure(run_figure("Problem 24: the triple pendulum's joint angles", "q [rad]", got["t"], got["q"],
                               expected["t"], expected["q"], ["q1", "q2", "q3"]))
     ctx.add_figure(run_figure("Problem 24: the energy T + V (conserved)", "E [J]", got["t"],

@@ -397,7 +397,8 @@ def _simulation(ctx, controller):
     t = np.asarray(expected["t"])
     n = t.size
     for key in ("t", "q", "qd", "x", "xd"):
-        run_array(got, key, np.shape(expected[key]), f"simulate({controller!r}, trajectory, {t_end:g})")
+        run_array(got, key, np.shape(expected[key]), f"simulate({controller!r}, trajectory, {t_end:g})",
+                  times=expected["t"])
     desired = np.asarray(table["t"]) <= t_end
     name = NAMES[controller]
     for key, label, unit in (("x", "position", "m"), ("xd", "velocity", "m/s")):

@@ -112,7 +112,7 @@ def check_walker_run(ctx):
     got = ctx.student(p38.simulate, T_END, N_OUTPUT, I_GRAV, timeout=SIMULATION_TIMEOUT)
     what = f"simulate({T_END:g}, {N_OUTPUT})"
     for key in ("t", "q", "qd"):
-        run_array(got, key, np.shape(expected[key]), what)
+        run_array(got, key, np.shape(expected[key]), what, times=expected["t"])
     ctx.add_figure(run_figure("Problem 38: the walker's angles", "[rad]", got["t"], got["q"], expected["t"],
                               expected["q"], ["alpha (stance leg)", "gamma (between the legs)"]))
     ctx.add_figure(run_figure("Problem 38: the walker's energy T + V (conserved)", "E", got["t"],
@@ -181,7 +181,7 @@ def _assert_small_motion(ctx):
              f"n = {N_OUTPUT} is only the default; the checks also ask another n).",
              "ignored_argument" if typed else "shape")
     for key in ("t", "q", "qd"):
-        run_array(got, key, np.shape(expected[key]), what)
+        run_array(got, key, np.shape(expected[key]), what, times=expected["t"])
     ctx.add_figure(run_figure("Problem 38: a small motion near the equilibrium, q(t) - q(0)", "[rad]", got["t"],
                               np.asarray(got["q"]) - SMALL_START[0], expected["t"],
                               np.asarray(expected["q"]) - SMALL_START[0],
