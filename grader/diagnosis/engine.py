@@ -135,7 +135,8 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
     if evidence.student is None:  # a copy of the student's result, compared up to the tolerance
         evidence.student = counterpart(log, evidence.got, evidence.source, evidence.tol)
     if evidence.student is None:  # a value of the student's call at one of several points
-        evidence.student = evaluated(log, evidence.got, evidence.tol)
+        evidence.student = evaluated(log, evidence.got, evidence.tol,
+                                     evidence.source.path if evidence.source is not None else ())
     if evidence.source is None and evidence.student is not None:
         evidence.source = traced(scene, evidence.student, evidence.raw_expected, evidence.tol)
         if evidence.source is not None:  # the reference's own value, at full precision, stands for the printed one

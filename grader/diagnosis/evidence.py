@@ -302,10 +302,12 @@ def _alike(item, target, tol: Tol) -> bool:
             and within(candidate.reshape(target.shape), target, tol))
 
 
-def evaluated(log, got, tol: Tol) -> Source | None:
+def evaluated(log, got, tol: Tol, named: tuple = ()) -> Source | None:
     """The student's call whose result holds ``got`` within the comparison's tolerance ``tol``, up to axes of length
     one, at one path (a row of an array counts: a symbolic answer evaluated at several points), or None when no one
-    path of one call has it."""
+    path of one call has it.  ``named``: the path of the expected value in the reference's result; where several
+    paths hold ``got``, the one path whose names (its keys other than indices) end with those of ``named`` is taken (a
+    symbolic answer whose rate and acceleration came out alike: the entry compared is the one of the same name)."""
     target = array_of(got)
     if target is None or target.size == 0:
         return None
@@ -316,9 +318,20 @@ def evaluated(log, got, tol: Tol) -> Source | None:
         for path, item in _points_of(value):
             if not isinstance(item, (dict, str)) and _alike(item, target, tol):
                 found.append(Source(probe, tuple(args), path, value))
-    if len({(s.probe, repr(s.args)[:2000], s.path) for s in found}) == 1:
+    distinct_found = {(s.probe, repr(s.args)[:2000], s.path): s for s in found}
+    if len(distinct_found) == 1:
         return found[0]
+    names = _names(named)
+    if names:
+        alike = {key: s for key, s in distinct_found.items() if _names(s.path)[-len(names):] == names}
+        if len(alike) == 1:
+            return next(iter(alike.values()))
     return None
+
+
+def _names(path) -> tuple:
+    """The keys of ``path`` that are names (not indices)."""
+    return tuple(key for key in path if isinstance(key, str))
 
 
 def _numbers(args) -> np.ndarray | None:
@@ -363,8 +376,13 @@ def sibling(log, evidence: Evidence) -> Evidence | None:
     asked the reference at, where the student's value fails too (a second input, found in the log, never guessed),
     or None."""
     source, student = evidence.source, evidence.student
-    if source is None or student is None or (source.probe == student.probe and _args_key(source.args) is not None
-                                             and _args_key(source.args) == _args_key(student.args)):
+    if source is None or student is None:
+        return None
+    shared = _shared_points(source, student)
+    if shared is not None:
+        return _at_another_point(evidence, *shared)
+    if source.probe == student.probe and _args_key(source.args) is not None \
+            and _args_key(source.args) == _args_key(student.args):
         return None
     batch = _batch(student, source)
     if batch is None:
@@ -392,6 +410,55 @@ def sibling(log, evidence: Evidence) -> Evidence | None:
             return Evidence(got, expected, evidence.tol, evidence.name, None, None,
                             Source(probe, tuple(args), source.path, value),
                             Source(student.probe, tuple(student.args), path, student.root))
+    return None
+
+
+def _point_keys(path, count: int) -> list:
+    """The positions of ``path`` whose key is an integer that can index ``count`` points."""
+    return [position for position, key in enumerate(path)
+            if isinstance(key, int) and not isinstance(key, bool) and 0 <= key < count]
+
+
+def _shared_points(source: Source, student: Source):
+    """``(count, at_source, at_student)`` where the reference's and the student's calls (of two probes: the
+    reference's values and the student's answer evaluated) were asked at the very same points (one argument of each, a list of two points or more, equal: a symbolic answer and the reference's values
+    evaluated at the points the check drew) and each path indexes them at one position, with the same index: the
+    positions of that index in the two paths; or None."""
+    if source.root is None or student.root is None or source.probe == student.probe:
+        return None  # one probe on the same points: the engine draws its second input itself
+    keys = {_args_key((arg,)) for arg in student.args if isinstance(arg, (list, tuple)) and 1 < len(arg) <= MAX_POINTS}
+    for arg in source.args:
+        if not isinstance(arg, (list, tuple)) or not 1 < len(arg) <= MAX_POINTS:
+            continue
+        key = _args_key((arg,))
+        if key is None or key not in keys:
+            continue
+        at_source, at_student = _point_keys(source.path, len(arg)), _point_keys(student.path, len(arg))
+        if len(at_source) == 1 and len(at_student) == 1 \
+                and source.path[at_source[0]] == student.path[at_student[0]]:
+            return len(arg), at_source[0], at_student[0]
+    return None
+
+
+def _at_another_point(evidence: Evidence, count: int, at_source: int, at_student: int) -> Evidence | None:
+    """The same comparison at another of the points both calls were asked at (``_shared_points``), the first where
+    the student's value fails too, or None: the values are read from the two calls' results, no call is made."""
+    source, student = evidence.source, evidence.student
+    shown = source.path[at_source]
+    for index in range(count):
+        if index == shown:
+            continue
+        path = (*source.path[:at_source], index, *source.path[at_source + 1:])
+        theirs = (*student.path[:at_student], index, *student.path[at_student + 1:])
+        expected, got = array_of(at_point(source.root, path)), array_of(at_point(student.root, theirs))
+        if expected is None or got is None or got.size != expected.size:
+            continue
+        got = got.reshape(expected.shape)
+        if within(got, expected, evidence.tol):
+            continue  # the student's value holds at this point: another is looked for
+        return Evidence(got, expected, evidence.tol, evidence.name, None, None,
+                        Source(source.probe, tuple(source.args), path, source.root),
+                        Source(student.probe, tuple(student.args), theirs, student.root))
     return None
 
 
