@@ -10,7 +10,8 @@ holds them all, and the compared value is among them:
 
 * a body and the bodies it carries moved by one translation, nothing else changed: the body's ``pos`` (an offset;
   where the body sits along the lever from its parent's joint at a factor of the grammar of the reference's
-  distance, half the link's length for the whole, a scale as much);
+  distance, half the link's length for the whole, a scale as much; where its lever from the parent's joint has the
+  reference's coordinates along other axes, its position's coordinates in the wrong order as much);
 * a body and the bodies it carries turned about its joint by one angle (centres of mass, anchors, axes and
   inertias alike), nothing else changed but the joints' initial angles: where the reference's body starts
   unturned relative to its parent, the model built in another configuration (its ``euler`` or its keyframe);
@@ -251,7 +252,7 @@ def model_slips(scene, evidence: Evidence) -> list[Hypothesis] | None:
             told.append(Hypothesis(f"model:moved:{body}", "offset", 1,
                                    f"{_name(theirs, body)} and the bodies it carries sit {_vector(d)} m from where "
                                    "they belong: look at that body's pos"))
-            told += _lever_slips(mine, theirs, body)
+            told += _lever_slips(mine, theirs, body) + _axes_slips(mine, theirs, body)
             break
     for body in range(1, len(theirs["bodies"]) + 1):
         angle = _turned(mine, theirs, body, differing)
@@ -289,6 +290,38 @@ def _lever_slips(mine, theirs, body: int) -> list[Hypothesis]:
                                    f"joint, where the reference's sits at {_vector(r)}: "
                                    f"{hypothesis.detail.removeprefix('your value is ')}"))
     return kept
+
+
+def _axes_slips(mine, theirs, body: int) -> list[Hypothesis]:
+    """A body placed on its parent along other axes (``pos="0 L 0"`` where ``"L 0 0"`` belongs): the lever from its
+    parent's joint to its own has the reference's coordinates in the parent's frame, each where another belongs (a
+    sign may change with it), not the reference's lever moved or stretched: its coordinates in the wrong order as
+    much as an offset."""
+    parent = int(theirs["bodies"][body - 1]["parent"])
+    ends = [_pivot(desc, b) for desc in (theirs, mine) for b in (parent, body)]
+    if any(end is None for end in ends):
+        return []
+    frame = _frame(theirs, parent)  # the parent is where it belongs: the levers in its frame
+    r, s = frame.T @ (ends[1] - ends[0]), frame.T @ (ends[3] - ends[2])
+    if np.linalg.norm(r) < 1e-6 or not _permuted(np.abs(r), np.abs(s)):
+        return []
+    return [Hypothesis(f"model:axes:{body}", "coordinate_order", 1,
+                       f"{_name(theirs, body)} sits on its parent at {_vector(s)} m from the parent's joint (in "
+                       f"the parent's frame), where the reference's sits at {_vector(r)}: the same lengths along "
+                       "other axes (its position's coordinates in the wrong order)")]
+
+
+def _frame(desc, body: int) -> np.ndarray:
+    """The orientation of ``body`` in the world (the identity for the world, 0, and where the description holds
+    none)."""
+    frame = desc["bodies"][body - 1].get("frame") if body > 0 else None
+    return np.eye(3) if frame is None else np.asarray(frame, dtype=float)
+
+
+def _permuted(r: np.ndarray, s: np.ndarray) -> bool:
+    """``s`` holds the entries of ``r`` in another order: the same entries, not each in its own place."""
+    tol = Tol("", SAME.atol, SAME.rtol)
+    return within(np.sort(s), np.sort(r), tol) and not within(s, r, tol)
 
 
 def _angle(R, axis) -> float:

@@ -43,7 +43,16 @@ LINK_TURNED = Planted(
     new="    inner = link_body(2, density, pos=LENGTH, angle=np.pi / 2)\n    return _model(\"double_pendulum\"",
     check="p03.geometry_inertia", diagnosis="initial_pose", message="start turned by +90.0 degrees about its joint",
     also=("p03.traces_a",))
-MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED]
+#: problem 4's four-bar with its third link hung along the second's y-axis where its x-axis belongs: the same lever
+#: with its coordinates in the wrong order (told beside the offset it is as well)
+LINK3_ALONG_Y = Planted(
+    name="models-p04-link3-along-y", problem=4, file="problem_04.py",
+    old="link3 = link_body(3, density, pos=LENGTH, angle=q[2], children=tip)",
+    new="link3 = link_body(3, density, pos=LENGTH, angle=q[2], children=tip).replace(\n"
+        "        f'pos=\"{vector([LENGTH, 0.0, 0.0])}\"', f'pos=\"{vector([0.0, LENGTH, 0.0])}\"', 1)",
+    check="p04.model_structure", diagnosis="offset or coordinate_order", message="the same lengths along other axes",
+    also=("p04.model_at_rest",))
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y]
 
 #: a near miss: every hinge of problem 2's links placed off its body's origin (inside the link), the link itself
 #: where it belongs: the anchors move and the centres of mass do not, which no one story of a model holds
@@ -82,13 +91,13 @@ def _rotation(angle):
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
-def _chain(angles, lengths=(L, L), gravity=(0.0, -9.81, 0.0)):
+def _chain(angles, lengths=(L, L), gravity=(0.0, -9.81, 0.0), along=(1.0, 0.0, 0.0)):
     """A description of a planar chain of bricks (``probes._mjcf.describe``): body i turned by ``angles[i]``
-    relative to its parent, hung at ``lengths[i - 1]`` along its parent's x."""
+    relative to its parent, hung at ``lengths[i - 1]`` along its parent's ``along`` (x)."""
     bodies, joints, frame, origin = [], [], np.eye(3), np.zeros(3)
     for i, angle in enumerate(angles):
         if i:
-            origin = origin + frame @ np.array([lengths[i - 1], 0.0, 0.0])
+            origin = origin + frame @ (lengths[i - 1] * np.asarray(along, dtype=float))
         frame = frame @ _rotation(angle)
         bodies.append({"name": f"link{i + 1}", "parent": i, "mass": 0.5, "com": origin + frame @ [L / 2, 0.0, 0.0],
                        "inertia": frame @ np.diag([1e-5, 2e-3, 2e-3]) @ frame.T, "frame": frame})
@@ -155,6 +164,28 @@ def test_a_link_unturned_in_the_reference_is_a_model_built_in_another_configurat
 def test_a_link_hung_at_half_the_lever_is_an_offset_and_a_factor():
     theirs, mine = _chain([0.3, 0.5]), _chain([0.3, 0.5], lengths=(L / 2, L))
     assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["factor_half", "offset"]
+
+
+def test_a_link_hung_along_its_parent_s_y_is_an_offset_and_axes_exchanged():
+    """The second link hung at L along its parent's y where L along its x belongs (its parent turned, so the world's
+    coordinates are no permutation of each other): the lever's coordinates in the wrong order, told beside the
+    offset."""
+    theirs, mine = _chain([0.3, 0.5]), _chain([0.3, 0.5], along=(0.0, 1.0, 0.0))
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["coordinate_order", "offset"]
+
+
+def test_a_link_hung_along_its_parent_s_z_backwards_is_axes_exchanged_as_well():
+    theirs, mine = _chain([0.3, 0.5]), _chain([0.3, 0.5], along=(0.0, 0.0, -1.0))
+    assert "coordinate_order" in _told(mine, theirs, mine["joints"][1]["anchor"])
+
+
+def test_a_link_hung_at_a_slant_or_backwards_is_an_offset_only():
+    """The near misses: the lever turned by 45 degrees in the parent's frame (its lengths along other axes are not
+    the reference's), or pointing backwards along the same axis (each coordinate where it belongs): no order."""
+    theirs = _chain([0.3, 0.5])
+    for along in [(np.sqrt(0.5), np.sqrt(0.5), 0.0), (-1.0, 0.0, 0.0), (1.0, 0.5, 0.0)]:
+        mine = _chain([0.3, 0.5], along=along)
+        assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset"], along
 
 
 def test_gravity_alone_negated_is_a_sign():
