@@ -371,14 +371,15 @@ def _moved_input(scene: Scene, evidence: Evidence, decl: Declaration | None) -> 
 IGNORED_CALLS = 5
 
 
-def _ignored(scene: Scene, evidences: list) -> list:
+def _ignored(scene: Scene, evidences: list, unreached: list | None = None) -> list:
     """The arguments the student's function ignores: where the reference's value changes with an argument, the
     student's stays the same, on the input shown and again on an input where every argument is moved at once
     (``grammar.moved``, from the second input where there is one): a value unchanged by chance (a zero among the
     other arguments, an axis the input's inertia happens to keep) does not survive the move.  A value that does
     not follow an argument at all is the finding itself, not a guess.  Every declared angle, scalar, vector and
     rotation is changed, and every other argument of real numbers; where every argument the reference follows is
-    ignored, the answer is constant."""
+    ignored, the answer is constant.  ``unreached`` receives the positions of the call's arguments that the test
+    ran out of its budget before changing (the formula tier may tell one that its slip leaves unused)."""
     first = evidences[0]
     if not _testable(first):
         trace.note("ignored", reason="not testable")
@@ -389,9 +390,11 @@ def _ignored(scene: Scene, evidences: list) -> list:
     leaves = ignore_candidates(decl, first.source.args)
     budget = scene.student_calls + min(IGNORED_CALLS, MAX_STUDENT_CALLS - 1 - scene.student_calls)
     found, followed, complete, shifted = [], [], True, False
-    for path, role, value in leaves:
+    for k, (path, role, value) in enumerate(leaves):
         if scene.student_calls + (2 if shifted else 3) > budget:  # an argument ignored is tested on both inputs
             complete = False
+            if unreached is not None:
+                unreached += [p[0] for p, _, _ in leaves[k:] if len(p) == 1 and isinstance(p[0], int)]
             break
         unchanged = _unchanged(scene, first, path)
         if unchanged is None:
@@ -535,12 +538,14 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs), described]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
-    tiers.append(_heard(lambda: _ignored(scene, evidences), explained, "ignored"))
+    unreached = []
+    tiers.append(_heard(lambda: _ignored(scene, evidences, unreached), explained, "ignored"))
     if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
         told = {DIAGNOSES[h.name].family for tier in tiers for h in tier} if any(tiers) else None
         untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
-                                               lambda: _second_input(scene, evidences[-1]), told, untested),
+                                               lambda: _second_input(scene, evidences[-1]), told, untested,
+                                               tuple(unreached)),
                           any(tiers), "formulas")
         if not formulas and left_to_live(scene, evidences):
             tiers = _beside(tiers)

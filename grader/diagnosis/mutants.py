@@ -147,7 +147,8 @@ class Mutant:
     path: tuple
     slip: str
     code: object
-    unused: tuple = ()  # the parameters with a default that the slip leaves unused (``anchor - I_r_E`` as ``I_r_E``)
+    unused: tuple = ()  # the parameters that the slip leaves unused (``anchor - I_r_E`` as ``I_r_E``)
+    defaulted: frozenset = frozenset()  # its parameters with a default (``anchor=ANCHOR``)
 
     @property
     def function(self) -> str:
@@ -1053,8 +1054,8 @@ def _mutated(function: _Function, lines: tuple):
              if _in(node, lines)]
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
-    names, defaulted = _names(function.node), _defaulted(function.node)
-    used = _used_parameters(function.node, defaulted)
+    names, parameters = _names(function.node), _parameters(function.node)
+    used = _used_parameters(function.node, parameters)
     for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
         if index is None:
             slips = _parameter_slips(function.node, lines)
@@ -1091,7 +1092,13 @@ def _mutated(function: _Function, lines: tuple):
             key = ast.dump(tree)
             if key not in seen:
                 seen.add(key)
-                yield slip, tree, tuple(sorted(used - _used_parameters(tree, defaulted)))
+                yield slip, tree, tuple(sorted(used - _used_parameters(tree, parameters)))
+
+
+def _parameters(function: ast.FunctionDef) -> frozenset:
+    """The names of the function's parameters."""
+    arguments = function.args.posonlyargs + function.args.args + function.args.kwonlyargs
+    return frozenset(a.arg for a in arguments)
 
 
 def _defaulted(function: ast.FunctionDef) -> frozenset:
@@ -1275,8 +1282,9 @@ def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] |
         live = _live(package, function.module, function.path)
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
+        defaulted = _defaulted(function.node)
         for slip, code, unused in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
-            found.append(Mutant(function.module, function.path, slip, code, unused))
+            found.append(Mutant(function.module, function.path, slip, code, unused, defaulted))
             if len(found) > MAX_MUTANTS:
                 return None
     return found
@@ -1466,7 +1474,8 @@ def _value(package, evidence: Evidence, call: tuple):
     return value
 
 
-def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bool = False) -> list[Hypothesis]:
+def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bool = False,
+                unreached=()) -> list[Hypothesis]:
     families = {DIAGNOSES[m.name].family for m in kept}
     if not kept or len(families) > MAX_FAMILIES:
         return []
@@ -1478,7 +1487,8 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
             name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
         key = f"mutant:{name}:{detail}"
         found.setdefault(key, Hypothesis(key, name, COST, detail))
-        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested):
+        unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
+        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told
     return list(found.values())
 
@@ -1503,21 +1513,43 @@ RIVALS = {
 }
 
 
-def rivals(mutant: Mutant, key: str, untested: bool = False) -> list[Hypothesis]:
+def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozenset = frozenset()) -> list[Hypothesis]:
     """The other readings of one mutant's edit, told beside its own name as a twin is (never where they would take
-    the families told past two): a quantity used as its reciprocal (``RIVALS``), and, where the test of an ignored
+    the families told past two): a quantity used as its reciprocal (``RIVALS``); where the test of an ignored
     argument could change none of the call's arguments (``untested``: a probe of an event function, say), an
     argument with a default (a constant of the problem that a call leaves as it is) that the edit leaves unused
-    (``anchor - I_r_E`` as ``I_r_E``: the anchor ignored).  Where that test could change them it is the measure of
-    an argument ignored, heard as a tier of its own."""
+    (``anchor - I_r_E`` as ``I_r_E``: the anchor ignored); and an argument of the call that the edit leaves unused
+    where that test ran out of its budget before it came to it (``unreached``: the names of the compared call's
+    parameters it did not change; ``m = L W H`` for ``m = L W H rho``: a factor left out, and the density
+    ignored).  Where that test changed an argument it is the measure of an argument ignored, heard as a tier of its
+    own: an argument it found followed is no twin."""
     found = []
     if mutant.slip in RIVALS:
         name, detail = RIVALS[mutant.slip]
         found.append(Hypothesis(f"{key}={name}", name, COST, detail.format(f=mutant.function), twin=True))
-    for parameter in mutant.unused if untested else ():
-        found.append(Hypothesis(f"{key}=unused:{parameter}", "ignored_argument", COST,
-                                f"`{mutant.function}` leaves its argument `{parameter}` unused", twin=True))
+    for parameter in mutant.unused:
+        if (untested and parameter in mutant.defaulted) or parameter in unreached:
+            found.append(Hypothesis(f"{key}=unused:{parameter}", "ignored_argument", COST,
+                                    f"`{mutant.function}` leaves its argument `{parameter}` unused", twin=True))
     return found
+
+
+def _unreached(mutant: Mutant, probe, positions) -> frozenset:
+    """The names of the parameters at ``positions`` of the compared call (``probe``'s arguments after the package),
+    where the mutant is of the function of the probe's name (else none: the positions are of another function's
+    call)."""
+    import inspect
+
+    from probes import ProbeLookupError, lookup
+
+    try:
+        function = lookup(probe) if isinstance(probe, str) else probe
+        parameters = list(inspect.signature(function).parameters)[1:]
+    except (ProbeLookupError, TypeError, ValueError):
+        return frozenset()
+    if getattr(function, "__name__", None) != mutant.function:
+        return frozenset()
+    return frozenset(parameters[i] for i in positions if i < len(parameters))
 
 
 #: what the expression of a slip is, for the grammar's equivalences (``grammar.EQUIVALENCES``)
@@ -1558,7 +1590,8 @@ def left_to_live(scene, evidences: list[Evidence]) -> bool:
     return problem is not None and importlib.util.find_spec(f"checks.problem_{problem:02d}") is not None
 
 
-def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, untested=False) -> list[Hypothesis]:
+def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, untested=False,
+                 unreached=()) -> list[Hypothesis]:
     """The slips of the reference's own code that reproduce the student's value on the input shown and on the
     second one (``evidences``: two, each with its reference call ``source``), and on a third one where
     ``another()`` gives it (an input the engine draws, the student's value there within the scene's budget): two
@@ -1566,7 +1599,8 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     ``told``: the families an earlier tier already explained the answer with (None: none did); the tier then
     tries rivals within a budget of its own, those of other families first (``late``).  ``untested``: the test of
     an ignored argument could change none of the call's arguments, and a parameter with a default that a slip
-    leaves unused is told beside it (``rivals``)."""
+    leaves unused is told beside it (``rivals``); ``unreached``: the positions of the call's arguments that the
+    test ran out of its budget before changing, an argument of which a slip leaves unused told beside it."""
     if getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
     if not _tried(evidences):
@@ -1587,7 +1621,7 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
                 trace.note("third", kept=None if kept is None else sorted({m.name for m in kept}))
     except GraderFault:
         return []
-    return _hypotheses(kept or [], inputs, untested)
+    return _hypotheses(kept or [], inputs, untested, unreached)
 
 
 def _imprecise(scene, evidences: list[Evidence], another) -> list[Hypothesis]:

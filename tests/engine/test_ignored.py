@@ -121,8 +121,8 @@ def test_masses_ignored_are_told_beside_a_rival_never_alone(monkeypatch):
 
     heard = []
     ignored = explaining._ignored
-    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences: heard.append(ignored(scene, evidences))
-                        or heard[-1])
+    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences, *rest: heard.append(
+        ignored(scene, evidences, *rest)) or heard[-1])
     finding = _explain(monkeypatch, "stub.second_moment", None, weighted,
                        lambda masses, points: np.array([np.sum(np.asarray(points) ** 2)]), ([2.0, 0.5, 1.5], points))
     assert [h.name for h in heard[0]] == ["ignored_argument"] and "argument 1 is scaled" in heard[0][0].detail
@@ -130,6 +130,26 @@ def test_masses_ignored_are_told_beside_a_rival_never_alone(monkeypatch):
     finding = _explain(monkeypatch, "stub.scaled", None, lambda m, v: m * np.asarray(v),
                        lambda m, v: 2.0 * np.asarray(v), (1.5, [0.5, -1.0, 2.0]))
     assert finding is not None and finding.names == ("ignored_argument",), finding
+
+
+def test_the_arguments_the_test_had_no_budget_for_are_passed_on(monkeypatch):
+    """The test of an ignored argument changes one argument after another within its budget of the student's
+    calls; the positions of those it had no budget for are passed on to the formula tier (which may tell one that
+    its slip leaves unused), those it changed are not."""
+    from grader.diagnosis import engine as explaining
+
+    left = []
+    ignored = explaining._ignored
+    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences, unreached=None: ignored(
+        scene, evidences, left if unreached is not None else None))
+    args = (1.5, 0.7, 2.2, 0.9, 1.3, 0.4)
+    _explain(monkeypatch, "stub.product", None, lambda *x: np.array([np.prod(x)]),
+             lambda *x: np.array([np.prod(x[:-1])]), args)
+    assert left and left == sorted(left) and left[-1] == len(args) - 1, left
+    assert 0 not in left, left  # the first argument is always changed
+    left.clear()
+    _explain(monkeypatch, "stub.pair", None, lambda a, b: np.array([a * b]), lambda a, b: np.array([a]), (1.5, 0.7))
+    assert left == [], left  # both changed (the second found ignored): none left over
 
 
 def test_a_value_unchanged_by_a_special_input_is_no_ignored_argument(monkeypatch):

@@ -89,6 +89,13 @@ def two_loads(S, u, w):
     # END SOLUTION
 
 
+def heat(m, c, dT, t):
+    """The heat ``m c dT`` that warms a body by ``dT``, and the time ``t`` over which it flows."""
+    # BEGIN SOLUTION problem 98
+    return np.array([m * c * dT, t])
+    # END SOLUTION
+
+
 def lean(v, s=0.4):
     """``b - s a`` of a vector's first entries ``a, b = v[:2]`` (no run's state)."""
     # BEGIN SOLUTION problem 98
@@ -111,15 +118,18 @@ def made_up(tmp_path, monkeypatch):
     drop_private(package)
 
 
-def _found(package, name, student, inputs, untested=False):
-    """The formula tier's hypotheses for the student's ``student`` where the made-up ``name`` belongs."""
-    def probe(pkg, *args):
+def _found(package, name, student, inputs, untested=False, unreached=(), probe=None):
+    """The formula tier's hypotheses for the student's ``student`` where the made-up ``name`` belongs (``probe``:
+    the probe of the call, where not one that passes its arguments on as they come)."""
+    def passing(pkg, *args):
         return getattr(importlib.import_module(f"{pkg.__name__}.problem_98"), name)(*args)
+
+    probe = passing if probe is None else probe
 
     evidences = [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), TIGHT, "value",
                           source=Source(probe, args, ())) for args in inputs]
     assert all(not np.allclose(e.got, e.expected) for e in evidences)
-    found = mutants.mutant_slips(scene("p98.made_up"), evidences, untested=untested)
+    found = mutants.mutant_slips(scene("p98.made_up"), evidences, untested=untested, unreached=unreached)
     return {h.name for h in found}, found
 
 
@@ -186,6 +196,32 @@ def test_a_velocity_left_out_of_a_difference_with_no_default_is_a_term_left_out(
     for untested in (False, True):
         names, found = _found(made_up, "slip_speed", absolute, inputs, untested=untested)
         assert names == {"missing_term"}, [(h.name, h.detail) for h in found]
+
+
+HEATS = [(2.0, 450.0, 3.0, 10.0), (0.7, 900.0, -1.5, 4.0)]
+
+
+def heat(pkg, m, c, dT, t):
+    """The probe of the made-up ``heat``: its arguments, named as its parameters, passed on."""
+    return importlib.import_module(f"{pkg.__name__}.problem_98").heat(m, c, dT, t)
+
+
+def test_a_factor_left_out_that_is_an_argument_the_test_did_not_reach_is_also_an_argument_ignored(made_up):
+    """``m dT`` where ``m c dT`` belongs, the test of an ignored argument having run out of its budget before it
+    changed ``c`` (position 1, ``unreached``): a factor left out, and ``c`` ignored, both told."""
+    names, found = _found(made_up, "heat", lambda m, c, dT, t: np.array([m * dT, t]), HEATS, unreached=(1, 3),
+                          probe=heat)
+    assert names == {"missing_factor", "ignored_argument"}, [(h.name, h.detail) for h in found]
+    assert [h.detail for h in found if h.twin] == ["`heat` leaves its argument `c` unused"]
+
+
+def test_a_factor_left_out_that_the_test_reached_is_a_factor_left_out_only(made_up):
+    """The near misses: where the test of an ignored argument changed ``c`` (it found it followed, or ignored and
+    told it itself), or did not reach only arguments the slip uses, the factor left out alone is told."""
+    for unreached in ((), (3,), (0, 2)):
+        names, found = _found(made_up, "heat", lambda m, c, dT, t: np.array([m * dT, t]), HEATS, unreached=unreached,
+                              probe=heat)
+        assert names == {"missing_factor"}, (unreached, [(h.name, h.detail) for h in found])
 
 
 # ------------------------------------------------------------------------------------------ a state's entries
