@@ -547,11 +547,30 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
                                                lambda: _second_input(scene, evidences[-1]), told, untested,
                                                tuple(unreached)),
                           any(tiers), "formulas")
+        formulas = _told_apart(formulas)
         if not formulas and left_to_live(scene, evidences):
             tiers = _beside(tiers)
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)
     return _told(_beside(tiers), _where(evidences))
+
+
+#: the unlike slips of the formula tier that may reproduce one answer on every input and still be told: more say
+#: that the inputs cannot tell causes apart
+MAX_UNLIKE = 2
+
+
+def _told_apart(formulas: list) -> list:
+    """The formula tier's hypotheses, or none where more than ``MAX_UNLIKE`` unlike slips (names, twins aside) of
+    more than one family reproduce the answer on every input: many unlike edits giving one value is a sign that
+    the inputs cannot tell causes apart (a term whose size dwarfs the tolerance on none of them, that a factor left
+    out, a ratio upside down and a product for a division all make vanish alike), not that each is a reading of
+    the slip.  Unlike names of one family (entries, arguments or names exchanged) tell one family still."""
+    names = {h.name for h in formulas if not h.twin}
+    if len(names) > MAX_UNLIKE and len({DIAGNOSES[name].family for name in names}) > 1:
+        trace.note("unlike", names=sorted(names))
+        return []
+    return formulas
 
 
 def _described(scene: Scene, evidence: Evidence) -> list | None:

@@ -96,6 +96,18 @@ def heat(m, c, dT, t):
     # END SOLUTION
 
 
+LEVER = 2.0
+
+
+def ropes(W, T):
+    """Two ropes' pulls ``W/2 + (0, 2 T / LEVER)`` and ``W/2 - (0, 2 T / LEVER)``: the weight ``W`` shared, a
+    torque ``T`` about the middle taken up at the ropes' lever."""
+    # BEGIN SOLUTION problem 98
+    spread = np.array([0.0, 2.0 * T / LEVER])
+    return np.concatenate([0.5 * (W + spread), 0.5 * (W - spread)])
+    # END SOLUTION
+
+
 def lean(v, s=0.4):
     """``b - s a`` of a vector's first entries ``a, b = v[:2]`` (no run's state)."""
     # BEGIN SOLUTION problem 98
@@ -118,7 +130,7 @@ def made_up(tmp_path, monkeypatch):
     drop_private(package)
 
 
-def _found(package, name, student, inputs, untested=False, unreached=(), probe=None):
+def _found(package, name, student, inputs, untested=False, unreached=(), probe=None, tol=TIGHT):
     """The formula tier's hypotheses for the student's ``student`` where the made-up ``name`` belongs (``probe``:
     the probe of the call, where not one that passes its arguments on as they come)."""
     def passing(pkg, *args):
@@ -126,7 +138,7 @@ def _found(package, name, student, inputs, untested=False, unreached=(), probe=N
 
     probe = passing if probe is None else probe
 
-    evidences = [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), TIGHT, "value",
+    evidences = [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), tol, "value",
                           source=Source(probe, args, ())) for args in inputs]
     assert all(not np.allclose(e.got, e.expected) for e in evidences)
     found = mutants.mutant_slips(scene("p98.made_up"), evidences, untested=untested, unreached=unreached)
@@ -155,6 +167,38 @@ def test_a_product_with_a_number_for_the_division_is_a_scale_only(made_up):
     reciprocal."""
     names, found = _found(made_up, "rate", lambda k, m: np.array([k / m, k * 2.0]), [(3.0, 0.8), (1.7, 2.5)])
     assert names == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+
+
+# ------------------------------------------------------------------------------------------ unlike slips alike
+
+#: a tolerance of a few newtons on pulls of tens of kilonewtons: the torque's share, which the student leaves out,
+#: is far outside it, and a factor of it left out (``2 / LEVER``), or it upside down (``LEVER / 2T``), far inside
+NEWTONS = Tol("pulls", 2.0, 1e-9)
+LOADS = [(V(0.0, 3e4), 2e4), (V(0.0, 5e4), 4.5e4)]
+
+
+def test_unlike_slips_that_all_make_a_term_vanish_tell_nothing(made_up):
+    """The torque's share left out of the ropes' pulls: a factor left out of it (``2 / LEVER``), the ratio upside
+    down (``LEVER / 2T``) and a division for a product (``2 / T / LEVER``) each leave a share far inside the
+    tolerance, on every input: three unlike slips of two families reproduce the answer alike, which says that the
+    inputs cannot tell causes apart, and the engine tells none of them."""
+    from grader.diagnosis.engine import _told_apart
+
+    def without_torque(W, T):
+        return np.concatenate([0.5 * W, 0.5 * W])
+
+    names, found = _found(made_up, "ropes", without_torque, LOADS, tol=NEWTONS)
+    assert len({h.name for h in found if not h.twin}) > 2, [(h.name, h.detail) for h in found]
+    assert _told_apart(found) == [], [(h.name, h.detail) for h in found]
+
+
+def test_one_slip_read_two_ways_is_told_still(made_up):
+    """The near miss: ``k m`` where ``k / m`` belongs, a factor off and its twin the reciprocal (two names, one
+    edit), is no sign of inputs that cannot tell causes apart: both told."""
+    from grader.diagnosis.engine import _told_apart
+
+    names, found = _found(made_up, "rate", lambda k, m: np.array([k * m, k / 2.0]), [(3.0, 0.8), (1.7, 2.5)])
+    assert {h.name for h in _told_apart(found)} == {"wrong_factor", "reciprocal_argument"}, found
 
 
 # ------------------------------------------------------------------------------------------ a point at the origin
