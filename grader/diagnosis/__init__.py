@@ -22,7 +22,10 @@ gives the transpose of the rotation: a transpose to the output tier, a sign to t
   one tier's simplest slips did: a gravity's sign beside a term's sign, which no tier can tell the more particular);
 * nor for reproducing on more inputs: every tier is held to the inputs of the comparison (the formula tier to a
   third one as well, where it can draw one), and a hypothesis that fails one of them is not kept at all;
-* where the hypotheses told span more than two families (``engine.MAX_FAMILIES``), nothing is named;
+* where the hypotheses told span more than two families (``engine.MAX_FAMILIES``), nothing is named; nor where
+  more than two unlike slips of the formula tier (``engine.MAX_UNLIKE``), of more than one family, reproduce the
+  answer on every input: many unlike edits giving one value say that the inputs cannot tell causes apart (a term
+  that a factor left out, a ratio upside down and a division for a product all make vanish within the tolerance);
 * a later tier heard after an earlier one explained the answer that runs out of its budget (calls, the formula
   tier's time) leaves the earlier finding standing, as it stood before the later tier was heard; the formula tier
   so heard tries rivals of the families not told yet first, then those of the families told as time allows,
@@ -42,7 +45,9 @@ So is one edit or one finding that reads as a slip of another family as truly (`
 ``engine._unturned``): a product with a quantity where the division by it belongs is a factor off and the quantity
 used as its reciprocal; an angle or a rotation found ignored, where the student's value is the reference's with it
 turning nothing, is a rotation left out as well; where no argument of the call could be tested, a parameter with a
-default that a slip of a formula leaves unused is an argument ignored.  A name more particular than another is
+default that a slip of a formula leaves unused is an argument ignored, and so is an argument of the call that the
+test of an ignored argument had no budget to change (a mass computed without its density: a factor left out, and
+the density ignored).  A name more particular than another is
 told alone only where the evidence proves it: two names unpacked from a run's state and exchanged read the state
 from each other's rows (a state row, not entries swapped).
 

@@ -31,7 +31,8 @@ of precision alone are tried there, where the value is in the band.  An edit tha
 family is told with both names, as a twin (``rivals``): a product with a quantity where the division by it belongs
 (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the other
 belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored, where the
-engine could test none of the call's arguments itself.
+engine could test none of the call's arguments itself, and so is an argument of the call that the engine's test had
+no budget to change.
 A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an
 exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
 matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a
