@@ -9,9 +9,12 @@ runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake o
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
 missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
-``*``, a square or a square root missing or added, sin for cos (in one call, or throughout one expression),
-degrees, a transpose or one on the wrong factor, a neighbouring index, two names exchanged (throughout, or two of a
-kind in one expression), a solve or an inverse left out, a sum that keeps only its last term, a count for a sum,
+``*``, a square or a square root missing or added, sin for cos (in one call, throughout one expression, or in one
+read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a
+transpose or one on the wrong factor, a neighbouring index, two names exchanged (throughout, or two of a kind in one
+expression), a solve or an inverse left out or made with the matrix's diagonal alone
+(``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside an offset
+where it is the same on every input), a sum that keeps only its last term, a count for a sum,
 a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a
 name of the function or an attribute of the reference, related by the course's notation), a quantity read in
 another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied to one term only (``A @ x + y`` for
@@ -305,6 +308,8 @@ SLIPS = {
     "rows": ("state_row", "`{f}` reads a part of the state from the wrong rows"),
     "solved": ("multiplied_not_solved", "`{f}` multiplies by a matrix where it should solve with it"),
     "inverse": ("no_inverse", "`{f}` uses a matrix where its inverse belongs"),
+    "diagonal": ("principal_axes_only", "`{f}` divides by the diagonal of a matrix where it should solve with the "
+                                        "whole matrix (or invert it)"),
     "accumulated": ("missing_term", "a sum that `{f}` accumulates keeps only its last term"),
     "components": ("swapped", "two quantities of one kind (two components of a vector, two gains, ...) are "
                               "exchanged in one expression of `{f}`"),
@@ -316,6 +321,7 @@ SLIPS = {
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
     "rotated": ("wrong_frame", "a rotation in `{f}` is applied to one term of a sum only, not the whole sum"),
     "entry_sign": ("sign_flip", "one entry that `{f}` builds has the wrong sign"),
+    "zeroed": ("missing_term", "one entry of a matrix or vector that `{f}` builds is left out (written 0)"),
     "ratio": ("ratio_inverted", "a ratio in `{f}` is upside down"),
     "neighbours": ("factor_order", "two neighbouring factors of a product in `{f}` are multiplied in the wrong "
                                    "order"),
@@ -558,10 +564,65 @@ def _summed_operand(node) -> bool:
 
 
 def _entry_slips(node, parent):
-    """An entry of a list or tuple (a name, an attribute, an entry, a call's value) with the wrong sign."""
+    """An entry of a list or tuple (a name, an attribute, an entry, a call's value) with the wrong sign; an entry of
+    a list (a matrix's or a vector's, not a row of it) that is not zero written 0."""
     if isinstance(parent, (ast.Tuple, ast.List)) and isinstance(parent.ctx, ast.Load) \
             and isinstance(node, (ast.Name, ast.Attribute, ast.Subscript, ast.Call)):
         yield "entry_sign", _negated
+    if isinstance(parent, ast.List) and isinstance(parent.ctx, ast.Load) \
+            and not isinstance(node, (ast.List, ast.Tuple, ast.Starred)) and not _zero(node):
+        yield "zeroed", lambda n: ast.Constant(0.0)
+
+
+def _zero(node) -> bool:
+    """A number that is zero (``0``, ``0.0``, ``-0.0``)."""
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        node = node.operand
+    return _number(node) and node.value == 0
+
+
+def _np(name: str):
+    return ast.Attribute(ast.Name("np", ast.Load()), name, ast.Load())
+
+
+def _diagonal_inverse(matrix):
+    """``np.diag(1.0 / np.diag(matrix))``: the inverse of a matrix's diagonal alone (``b / np.diag(M)`` of a vector
+    ``b`` is its product with ``b``)."""
+    diagonal = ast.Call(_np("diag"), [matrix], [])
+    return ast.Call(_np("diag"), [ast.BinOp(ast.Constant(1.0), ast.Div(), diagonal)], [])
+
+
+def _trig_names(function: ast.FunctionDef) -> dict:
+    """The names the function binds once to a sine or a cosine of one argument (``s2 = np.sin(q2)``), each with
+    the call of the other (``np.cos(q2)``), or the name bound to it where the function has one (``c2``)."""
+    bound: dict = {}
+    for node in ast.walk(function):
+        for target in node.targets if isinstance(node, ast.Assign) else ():
+            if isinstance(target, ast.Name):
+                bound.setdefault(target.id, []).append(node.value)
+            elif isinstance(target, ast.Tuple) and isinstance(node.value, ast.Tuple) \
+                    and len(target.elts) == len(node.value.elts):  # ``c2, s2 = np.cos(q2), np.sin(q2)``
+                for name, value in zip(target.elts, node.value.elts):
+                    bound.setdefault(name.id if isinstance(name, ast.Name) else "", []).append(value)
+            elif isinstance(target, ast.Tuple):
+                for name in target.elts:
+                    bound.setdefault(name.id if isinstance(name, ast.Name) else "", []).append(None)
+    calls = {name: values[0] for name, values in bound.items() if len(values) == 1
+             and isinstance(values[0], ast.Call) and _callee(values[0]) in _TRIG and len(values[0].args) == 1
+             and not values[0].keywords}
+    by_call = {(_callee(call), ast.dump(call.args[0])): name for name, call in calls.items()}
+    others = {}
+    for name, call in calls.items():
+        sibling = by_call.get((_TRIG[_callee(call)], ast.dump(call.args[0])))
+        others[name] = ast.Name(sibling, ast.Load()) if sibling is not None else _with(call, func=_renamed(call.func))
+    return others
+
+
+def _trig_read_slips(node, parent, others: dict):
+    """A read of a name bound to a sine (a cosine) read as the cosine (the sine) of the same argument, one read at
+    a time (``-q3 * c2`` for ``-q3 * s2``)."""
+    if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in others:
+        yield "trig", lambda n, other=others[node.id]: copy.deepcopy(other)
 
 
 def _assigned(node: ast.AugAssign):
@@ -916,8 +977,11 @@ def _call_slips(node: ast.Call):
         yield "count", lambda n: ast.Call(ast.Name("len", ast.Load()), [_summed(n)], [])
     if callee == "solve" and len(args) == 2 and not node.keywords:
         yield "solved", lambda n: ast.BinOp(n.args[0], ast.MatMult(), n.args[1])
+    if callee == "solve" and len(args) == 2 and not node.keywords:  # ``b / np.diag(M)``
+        yield "diagonal", lambda n: ast.BinOp(_diagonal_inverse(n.args[0]), ast.MatMult(), n.args[1])
     if callee == "inv" and len(args) == 1:
         yield "inverse", lambda n: n.args[0]
+        yield "diagonal", lambda n: _diagonal_inverse(n.args[0])
     if callee == "inv" and not args and isinstance(node.func, ast.Attribute):  # sympy's ``M.inv()``
         yield "inverse", lambda n: n.func.value
     yield from _single_slips(node)
@@ -1056,6 +1120,7 @@ def _mutated(function: _Function, lines: tuple):
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
     names, parameters = _names(function.node), _parameters(function.node)
+    others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
     for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
         if index is None:
@@ -1064,7 +1129,8 @@ def _mutated(function: _Function, lines: tuple):
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
             slips = itertools.chain(_slips(node, parent), _entry_slips(node, parent),
-                                    _read_slips(node, names, function.attributes))
+                                    _read_slips(node, names, function.attributes),
+                                    _trig_read_slips(node, parent, others))
         for slip, edit in slips:
             if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
                 continue
@@ -1484,10 +1550,13 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
     found = {}
     for mutant in kept:
         name, detail = mutant.name, mutant.detail
-        if constant:  # a term that is the same on every input: the values are all off by it
+        if constant and mutant.slip not in _ENTRIES:  # a term that is the same on every input: an offset
             name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
         key = f"mutant:{name}:{detail}"
         found.setdefault(key, Hypothesis(key, name, COST, detail))
+        if constant and mutant.slip in _ENTRIES:  # an entry left out, and every value off by the same amount
+            found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
+                f"{detail}; it is the same on every input: your values are all off by it"), twin=True))
         unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
         for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told
@@ -1559,6 +1628,9 @@ KINDS = {"skew": ("skew",), "cross": ("cross",)}
 
 #: the families of a term left out or added: where the term is the same on every input, the slip is an offset
 _TERMS = {"missing_term", "extra_term"}
+#: the slips of an entry of a matrix or vector left out: where it is the same on every input, the slip is told as
+#: an entry left out and, beside it, as an offset (an entry of a Jacobian is no point moved, a height may be)
+_ENTRIES = {"zeroed"}
 
 
 def _constant_difference(evidences: list[Evidence]) -> bool:
