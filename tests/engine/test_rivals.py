@@ -97,13 +97,15 @@ def heat(m, c, dT, t):
 
 
 LEVER = 2.0
+#: the ropes' direction, outside the solution (no entry of it is the formula tier's to leave out)
+UP = np.array([0.0, 1.0])
 
 
 def ropes(W, T):
     """Two ropes' pulls ``W/2 + (0, 2 T / LEVER)`` and ``W/2 - (0, 2 T / LEVER)``: the weight ``W`` shared, a
     torque ``T`` about the middle taken up at the ropes' lever."""
     # BEGIN SOLUTION problem 98
-    spread = np.array([0.0, 2.0 * T / LEVER])
+    spread = 2.0 * T / LEVER * UP
     return np.concatenate([0.5 * (W + spread), 0.5 * (W - spread)])
     # END SOLUTION
 

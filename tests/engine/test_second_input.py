@@ -197,7 +197,7 @@ def draws_only(monkeypatch):
     beside every other tier, changes the arguments as well, and is not heard here (``test_ignored`` tests it)."""
     from grader.diagnosis import engine as explaining
 
-    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences: [])
+    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences, *rest: [])
 
 
 def test_a_draw_on_which_the_reference_raises_is_not_used(draws_only):
