@@ -20,7 +20,8 @@ __all__ = ["reasons", "main"]
 def _verdicts(score_output: str) -> dict:
     verdicts = {}
     for line in score_output.splitlines():
-        match = re.match(r"^  (right|wrong|none|not caught)\s+(\S+)", line)
+        # a set with second families prints the strict verdict, then the lenient one, before the name
+        match = re.match(r"^  (right|wrong|none|not caught)\s+(?:(?:right|wrong|none|not caught)\s+)?(\S+)", line)
         if match:
             verdicts[match.group(2)] = match.group(1)
     return verdicts
