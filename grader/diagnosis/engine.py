@@ -852,6 +852,7 @@ def _told(tiers: list, where: str) -> Finding | None:
             told += [h for h in tier if h.cost == cost and h not in told]
     if not told:
         return None
+    told = _specific(told)
     seen = [h for h in told if not h.twin]
     families = {DIAGNOSES[h.name].family for h in seen}
     if len(families) > MAX_FAMILIES:
@@ -861,6 +862,13 @@ def _told(tiers: list, where: str) -> Finding | None:
         trace.note("twins", dropped=[h.name for h in told if h.twin])
         told = seen
     return _finding(told, where)
+
+
+def _specific(told: list) -> list:
+    """``told`` without a hypothesis of a family's own name (``missing_term``) beside one of a name of that family
+    that says more (``missing_f``: which term): the second is the first, told more closely."""
+    named = {DIAGNOSES[h.name].family for h in told if h.name != DIAGNOSES[h.name].family}
+    return [h for h in told if h.name != DIAGNOSES[h.name].family or h.name not in named]
 
 
 def _finding(found: list, where: str) -> Finding | None:

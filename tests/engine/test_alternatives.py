@@ -111,6 +111,17 @@ def test_a_rival_of_the_same_family_adds_its_name_not_a_family():
     assert {DIAGNOSES[n].family for n in finding.names} == {"sign"}
 
 
+def test_a_familys_own_name_beside_a_name_of_that_family_that_says_more_is_left_out():
+    """The terms tier's velocity terms left out and the formula tier's "a term left out": one slip, told once, by
+    the name that says which term; the family's own name alone, or beside another family's, is still told."""
+    finding = explaining._told([[], [], [], [H("missing_f", 2)], [], [H("missing_term", 4)]], "here")
+    assert finding.names == ("missing_f",) and finding.hint.startswith("Looks like ")
+    alone = explaining._told([[], [], [], [], [], [H("missing_term", 4)]], "here")
+    assert alone.names == ("missing_term",)
+    beside = explaining._told([[], [H("sign_flip", 1)], [], [], [], [H("missing_term", 4)]], "here")
+    assert set(beside.names) == {"sign_flip", "missing_term"}
+
+
 def test_more_than_two_families_name_nothing():
     assert explaining._told([[H("transpose", 1)], [H("argument_order", 2)], [H("missing_term", 4)]], "here") is None
 
