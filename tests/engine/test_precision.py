@@ -6,7 +6,7 @@ Each is a mistake planted into a copy of the reference (or of a made-up problem)
 miss it must not name: a value in the band of precision that no slip of precision reproduces, a constant typed so
 short that the value leaves the band.  A slip of precision is tried on one input too (a comparison the engine cannot
 draw a second input for), only where the student's value is in the band.  They are graded as ``grade batch``
-grades in ``tests/engine/test_reach.py``.
+grades in ``tests/engine/test_reached.py``.
 """
 
 import importlib

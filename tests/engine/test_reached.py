@@ -1,9 +1,15 @@
-"""Slips the engine reaches beyond the grammar's first ones, graded as ``grade batch`` grades
-(``tests/engine/reach.toml``): a slip of precision inside a formula (``grader.diagnosis.mutants``), a whole value in
-other units (1000 or 1/1000 times the expected one: a mass in grams; ``grader.diagnosis.grammar``), the state at an
-event read from the run's last output before it (``grader.diagnosis.runs``).  Live the check names the slip, the kit
-names the same or nothing, with the engine off no catalogue names it; each has a near miss that names no cause of its
-family (a factor 100, a value off by a relative 3e-7, the state two outputs before the event).
+"""Slips the engine reaches beyond the grammar's first ones, graded as ``grade batch`` grades.
+
+* ``tests/engine/reach.toml``: a slip of precision inside a formula (``grader.diagnosis.mutants``), a whole value in
+  other units (1000 or 1/1000 times the expected one: a mass in grams; ``grader.diagnosis.grammar``), the state at an
+  event read from the run's last output before it (``grader.diagnosis.runs``); near misses: a factor 100, a value off
+  by a relative 3e-7, the state two outputs before the event.
+* ``tests/engine/operators.toml``: the formula tier's operators (``grader.diagnosis.mutants``): a name bound to a sine
+  read as the cosine of its angle, an entry of a matrix written 0, a solve that divides by the matrix's diagonal alone;
+  near misses: the sine of twice the angle, the entry a tenth of its value, a division by the trace.
+
+Live the check names the slip, the kit names the same or nothing, with the engine off no catalogue names it; each
+near miss names no cause of its family.
 """
 
 from pathlib import Path
@@ -24,20 +30,25 @@ from ..kit_support import (  # noqa: F401 (fixtures)
 from ..submissions import Planted, build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
-TABLE = ROOT / "tests" / "engine" / "reach.toml"
-PLANTED, FAMILIES = engine_mistakes(TABLE)
+#: the tables of slips and their near misses
+TABLES = [ROOT / "tests" / "engine" / name for name in ("reach.toml", "operators.toml")]
+PLANTED, FAMILIES = [], {}
+for _table in TABLES:
+    _planted, _families = engine_mistakes(_table)
+    PLANTED += _planted
+    FAMILIES.update(_families)
 
 
-def near_misses() -> list:
+def near_misses(table) -> list:
     import tomllib
 
-    entries = tomllib.loads(TABLE.read_text())["near"]
+    entries = tomllib.loads(table.read_text())["near"]
     return [(Planted(name=e["name"], problem=e["problem"], file=e["file"], old=e["old"], new=e["new"], check=e["check"],
                      diagnosis=e["diagnosis"], message=e["message"], also=tuple(e.get("also", ()))), e["family"])
             for e in entries]
 
 
-NEAR = near_misses()
+NEAR = [near for table in TABLES for near in near_misses(table)]
 
 
 @pytest.fixture(scope="module")
