@@ -402,14 +402,11 @@ def sibling(log, evidence: Evidence) -> Evidence | None:
             expected = array_of(at(value, source.path))
             path = (*student.path[:position], index, *student.path[position + 1:])
             got = array_of(at_point(student.root, path))
-            if expected is None or got is None or got.size != expected.size:
-                break
-            got = got.reshape(expected.shape)
-            if within(got, expected, evidence.tol):
-                break  # the student's value holds at this point: another is looked for
-            return Evidence(got, expected, evidence.tol, evidence.name, None, None,
-                            Source(probe, tuple(args), source.path, value),
-                            Source(student.probe, tuple(student.args), path, student.root))
+            failing = _failing(evidence, got, expected, Source(probe, tuple(args), source.path, value),
+                               Source(student.probe, tuple(student.args), path, student.root))
+            if failing is None:
+                break  # no value, or the student's value holds at this point: another is looked for
+            return failing
     return None
 
 
@@ -451,15 +448,22 @@ def _at_another_point(evidence: Evidence, count: int, at_source: int, at_student
         path = (*source.path[:at_source], index, *source.path[at_source + 1:])
         theirs = (*student.path[:at_student], index, *student.path[at_student + 1:])
         expected, got = array_of(at_point(source.root, path)), array_of(at_point(student.root, theirs))
-        if expected is None or got is None or got.size != expected.size:
-            continue
-        got = got.reshape(expected.shape)
-        if within(got, expected, evidence.tol):
-            continue  # the student's value holds at this point: another is looked for
-        return Evidence(got, expected, evidence.tol, evidence.name, None, None,
-                        Source(source.probe, tuple(source.args), path, source.root),
-                        Source(student.probe, tuple(student.args), theirs, student.root))
+        failing = _failing(evidence, got, expected, Source(source.probe, tuple(source.args), path, source.root),
+                           Source(student.probe, tuple(student.args), theirs, student.root))
+        if failing is not None:  # else no value, or the student's value holds here: another is looked for
+            return failing
     return None
+
+
+def _failing(evidence: Evidence, got, expected, source: Source, student: Source) -> Evidence | None:
+    """``evidence`` at another input: the student's value ``got`` beside the expected one, where both are there, of
+    one size, and the student's fails (None where it holds: that input shows nothing)."""
+    if expected is None or got is None or got.size != expected.size:
+        return None
+    got = got.reshape(expected.shape)
+    if within(got, expected, evidence.tol):
+        return None
+    return Evidence(got, expected, evidence.tol, evidence.name, None, None, source, student)
 
 
 def _args_key(args) -> str | None:
