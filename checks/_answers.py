@@ -1,13 +1,15 @@
-"""Written answers: the chosen option of a multiple-choice question, predicted program output (problems 28, 36)
-and class diagrams (problems 30, 36)."""
+"""Written answers: the chosen option of a multiple-choice question, predicted program output (problems 28, 36),
+class diagrams (problems 30, 36) and numbers typed in (``typed_failure``: problem 10's matrix read off a figure,
+problem 19's multiple of m/120)."""
 
 import difflib
 import math
 
-from grader.checking import fail
+from grader.checking import CheckFailure, fail
 
 __all__ = ["option_number", "choice", "text_lines", "answer_text", "assert_same_text", "EXAMPLE", "diagram_pairs",
-           "assert_same_diagram"]
+           "assert_same_diagram",
+           "typed_failure"]
 
 
 def option_number(value):
@@ -171,3 +173,24 @@ def assert_same_diagram(got, expected, name, mistakes=()):
             fail(message, f"List only DIRECT base classes: {sub} inherits from {base} only through another class.",
                  "indirect")
     fail(message)
+
+
+def typed_failure(ctx, message, hint, diagnosis, got, expected, tol, name):
+    """The failure of a number or an array typed into answers.toml and compared with its key ``expected`` within
+    ``tol`` (entry by entry: the precision the answer is written or read to), with the cause the diagnosis engine
+    names from the output grammar (``grader.diagnosis.grammar.typed_slips``: a matrix whose axes were written as
+    rows is the key transposed; one axis reversed is a column's sign).  Every check of a typed numeric answer fails
+    through here, whatever stage found it: where the engine names a cause, it is the failure's diagnosis and its
+    hint follows the check's own (``hint``: what the answer is); where it names none, the check's ``diagnosis``
+    (a symptom, a verdict or none) stands."""
+    import numpy as np
+
+    from grader.context import explained
+    from grader.diagnosis import Evidence
+
+    evidence = Evidence(np.asarray(got, dtype=float), np.asarray(expected, dtype=float), tol, name, typed=True)
+    found = explained(ctx, CheckFailure(message, "", "", evidence=evidence))
+    if found.diagnosis:
+        return CheckFailure(message, "\n".join(part for part in (hint, found.hint) if part), found.diagnosis,
+                            evidence=evidence, explained=True)
+    return CheckFailure(message, hint, diagnosis, evidence=evidence, explained=True)

@@ -6,8 +6,8 @@ them to the graded submission).
 
 import numpy as np
 
-from checks._answers import choice as _choice
-from grader.checking import STAGE_VALUES, as_array, check, fail, format_array
+from checks._answers import choice as _choice, typed_failure
+from grader.checking import STAGE_VALUES, Tol, as_array, check, fail, format_array
 from probes import problem_10 as p10
 
 TITLE = "Understanding rotation matrices"
@@ -15,6 +15,9 @@ MANUAL = {"why": ("10(a)/(b): why is your choice (not) orthonormal / a rotation?
 
 #: a matrix written with one or two decimals is orthonormal to about this
 READ_OFF = 0.1
+#: an entry of A_IC read off the figure is the course's orientation's to about this: the precision the diagnosis
+#: engine holds a slip of the answer to (a slip moves an entry by ten times as much, as an axis reversed does)
+READ_OFF_ENTRY = Tol("an entry read off the figure", READ_OFF)
 #: how far (in degrees) an answer to (c) may be from the course's orientation
 C_ANGLE_DEG = 25.0
 
@@ -55,21 +58,25 @@ def nearest_rotation(A):
 def check_c(ctx):
     target = nearest_rotation(ctx.reference(p10.course_c))
     A = as_array(ctx.answer("c"), "[problem_10] c", (3, 3))
+
+    def failure(message, hint, diagnosis):  # the key stands beside every stage: a slip of the answer is told
+        return typed_failure(ctx, message, hint, diagnosis, A, target, READ_OFF_ENTRY, "A_IC")
+
     defect = float(np.max(np.abs(A.T @ A - np.eye(3))))
     if defect > READ_OFF:
-        fail(f"your A_IC is not orthonormal: max |A.T A - E| = {defect:.2f} > {READ_OFF} (allowed for values read "
-             f"off a figure).\ngot:\n{format_array(A, 2)}",
-             "Each column is an axis of C in I-coordinates: unit length and mutually perpendicular.",
-             "not_orthonormal")
+        raise failure(f"your A_IC is not orthonormal: max |A.T A - E| = {defect:.2f} > {READ_OFF} (allowed for "
+                      f"values read off a figure).\ngot:\n{format_array(A, 2)}",
+                      "Each column is an axis of C in I-coordinates: unit length and mutually perpendicular.",
+                      "not_orthonormal")
     if np.linalg.det(A) < 0:
-        fail(f"your A_IC is a reflection (det = {np.linalg.det(A):+.2f}), not a rotation.",
-             "C is a right-handed frame: one axis of yours points the wrong way, or two axes are in each other's "
-             "place.", "reflection")
+        raise failure(f"your A_IC is a reflection (det = {np.linalg.det(A):+.2f}), not a rotation.",
+                      "C is a right-handed frame: one axis of yours points the wrong way, or two axes are in each "
+                      "other's place.", "reflection")
     R = nearest_rotation(A)
     angle = np.degrees(np.arccos(np.clip((np.trace(target.T @ R) - 1) / 2, -1, 1)))
     if angle > C_ANGLE_DEG:
-        fail(f"your A_IC is {angle:.0f}° away from the course's orientation (allowed {C_ANGLE_DEG:g}°).\n"
-             f"got:\n{format_array(A, 2)}\nthe course's orientation (the nearest rotation to its printed "
-             f"matrix, which itself is not orthonormal):\n{format_array(target, 2)}",
-             "Read each axis of C (purple) in the coordinates of I (green): it is a column of A_IC.",
-             "far_from_figure")
+        raise failure(f"your A_IC is {angle:.0f}° away from the course's orientation (allowed {C_ANGLE_DEG:g}°).\n"
+                      f"got:\n{format_array(A, 2)}\nthe course's orientation (the nearest rotation to its printed "
+                      f"matrix, which itself is not orthonormal):\n{format_array(target, 2)}",
+                      "Read each axis of C (purple) in the coordinates of I (green): it is a column of A_IC.",
+                      "far_from_figure")

@@ -3,6 +3,7 @@
 
 import numpy as np
 
+from checks._answers import typed_failure
 from checks._effects import assert_no_side_effects
 from checks._rigid import FINITE, ROTATIONS, compact, vectors
 from grader import strategies as st
@@ -110,7 +111,7 @@ def check_answer(ctx):
     ):
         if abs(value - mistaken) <= INTEGER.atol:
             fail(message, f"{hint} (That gives {mistaken:g}.)", name)
-    fail(message)
+    raise typed_failure(ctx, message, "", "", value, expected, INTEGER, "I3 / (m/120)")
 
 
 # ------------------------------------------------------------------------------------ side effects

@@ -54,9 +54,13 @@ from each other's rows (a state row, not entries swapped).
 The grammar:
 
 * outputs (the expected value transformed): transpose, inverse, the sign of the whole value, of a row, a column
-  or an entry, rows, columns or entries swapped, a factor 2, 1/2, pi/180, 180/pi, 1000 or 1/1000 (a unit) or a
+  or an entry, rows, columns or entries swapped, three rows or columns permuted cyclically, a tensor's axes in
+  another order (rows and columns alike: an inertia's moments exchanged), a vector's entries in any other order the
+  student's value holds (its halves exchanged, say), a factor 2, 1/2, pi/180, 180/pi, 1000 or 1/1000 (a unit) or a
   named constant of the problem, float32 rounding, rounding to a few decimals, the output in the other frame
-  (conjugation by the problem's rotation);
+  (conjugation by the problem's rotation); a value typed into answers.toml and compared with its key
+  (``checks._answers.typed_failure``) hears these alone, on its one input, and only where it holds many numbers
+  (``grammar.typed_slips``: a 3 x 3 matrix read off a figure, not a scalar);
 * inputs (the reference on transformed arguments): arguments swapped, angles as degrees, negated angles, a
   rotation argument transposed, a vector argument in the other frame, an argument ignored (the student's value
   does not change when it does, on the input shown and on one with every argument moved at once, while the

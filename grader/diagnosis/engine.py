@@ -45,6 +45,7 @@ from .grammar import (
     replaced,
     rotation_of,
     second_args,
+    typed_slips,
     unturned,
 )
 from . import trace
@@ -102,7 +103,7 @@ def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: boo
     source = evidence.source
     decl = declaration(source.probe) if source is not None else None
     rotation = rotation_of(decl, source.args) if decl is not None else None
-    for hypothesis, value in output_slips(evidence.expected, constants, rotation):
+    for hypothesis, value in output_slips(evidence.expected, constants, rotation, evidence.got):
         one.hypotheses[hypothesis.key] = hypothesis
         one.predicted[hypothesis.key] = value
     if decl is None or not with_inputs:
@@ -482,6 +483,10 @@ def _at_sheet_digits(scene: Scene, first: Evidence) -> bool:
 def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     """The cause of a failing comparison (``evidences``: the input shown first); ``runs``: the run behind it is
     explained too (False for the engine's own comparisons of a run's right-hand side)."""
+    if evidences[0].typed:  # a value typed into answers.toml: the output grammar alone, on its one input
+        found = typed_slips(evidences[0])
+        trace.note("typed", shape=list(evidences[0].expected.shape), found=[h.name for h in found])
+        return _told([found], "here")
     for evidence in evidences:
         _sources(scene, evidence)
     first = evidences[0]
@@ -761,6 +766,8 @@ def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
     as a failing comparison of its own (on the input shown and the engine's own second input), and a cause named
     where the results explained agree on it; None otherwise.  ``evidence``: the failure's comparison, if any (the
     value it holds tells the call; its tolerance is the comparison's)."""
+    if evidence is not None and evidence.typed:  # a typed answer judged by a property: its key stands beside it
+        return find(scene, [evidence])
     log = getattr(scene.ctx, "calls", ())
     call = judged_call(log, evidence)
     if call is None:

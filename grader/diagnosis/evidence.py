@@ -134,6 +134,9 @@ class Evidence:
     #: ``(probe, args, got, expected)``: the call whose results a randomized comparison's own ``compare`` judged
     #: (by a property of the student's result, say), when the values compared were derived from them
     call: tuple | None = None
+    #: a value typed into answers.toml compared with its key (``typed_slips``): no call stands behind either side,
+    #: and the one input there is tells a slip only where the answer holds many numbers
+    typed: bool = False
 
 
 @dataclass(frozen=True)

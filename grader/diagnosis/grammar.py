@@ -1,7 +1,8 @@
 """The grammar of slips on values and arguments: the expected value transformed (transpose, inverse, signs, swaps,
-factors, the other frame, rounding) and the arguments transformed (swapped, as degrees, negated, transposed, in the
-other frame), the arguments changed one at a time (an argument ignored) and a second input drawn from the declared
-roles."""
+orders of rows, columns, axes and entries, factors, the other frame, rounding) and the arguments transformed
+(swapped, as degrees, negated, transposed, in the other frame), the arguments changed one at a time (an argument
+ignored) and a second input drawn from the declared roles.  A value typed into answers.toml has one input and
+nothing behind it to vary: the output slips alone explain it, where it holds many numbers (``typed_slips``)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..values import Tol
-from .evidence import array_of, at, Declaration, equal, Hypothesis, within
+from .evidence import array_of, at, Declaration, distinct, equal, Evidence, Hypothesis, within
 
 __all__ = [
     "Equivalence",
@@ -24,6 +25,8 @@ __all__ = [
     "ARGUMENT_FACTORS",
     "output_slips",
     "precision_slips",
+    "TYPED_NUMBERS",
+    "typed_slips",
     "leaves_of",
     "replaced",
     "label_of",
@@ -125,8 +128,9 @@ def _ordinal(i: int) -> str:
     return f"{i + 1}"
 
 
-def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
-    """``(hypothesis, value)`` of the output slips of an expected value ``E``."""
+def output_slips(E: np.ndarray, constants: dict, rotation, got=None) -> list:
+    """``(hypothesis, value)`` of the output slips of an expected value ``E``; ``got``: the student's value, where
+    it may tell a vector's entries in another order than two exchanged (``_reordered``)."""
     out = []
     kinds = kinds_of(E)
 
@@ -189,6 +193,24 @@ def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
             value[index] *= -1
             add((Hypothesis(f"sign:entry:{index}", "sign_flip", 3,
                              f"the entry [{','.join(map(str, index))}] has the opposite sign"), value))
+        for shift in (1, 2) if rows == 3 else ():
+            add((Hypothesis(f"swap:row:cyclic:{shift}", "swapped", 3, "the rows are permuted cyclically"),
+                 np.roll(E, shift, axis=0)))
+        for shift in (1, 2) if cols == 3 else ():
+            add((Hypothesis(f"swap:col:cyclic:{shift}", "swapped", 3, "the columns are permuted cyclically (the "
+                             "axes in another order)"), np.roll(E, shift, axis=1)))
+        if rows == cols:  # a tensor's axes in another order: its rows and its columns alike (P E P.T)
+            for i, j in itertools.combinations(range(rows), 2):
+                order = list(range(rows))
+                order[i], order[j] = j, i
+                add((Hypothesis(f"swap:axes:{i}:{j}", "axis_order", 2, f"axes {_ordinal(i)} and {_ordinal(j)} are "
+                                 "exchanged (rows and columns alike: the moments and products of another order)"),
+                     E[np.ix_(order, order)]))
+            if rows == 3:
+                for shift in (1, 2):
+                    order = list(np.roll(np.arange(3), shift))
+                    add((Hypothesis(f"swap:axes:cyclic:{shift}", "axis_order", 3, "the axes are permuted cyclically "
+                                     "(rows and columns alike)"), E[np.ix_(order, order)]))
     if E.ndim == 1 and 1 < E.size <= ENTRYWISE:
         for i in range(E.size):
             value = E.copy()
@@ -206,6 +228,11 @@ def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
             for shift in (1, 2):
                 add((Hypothesis(f"swap:cyclic:{shift}", "swapped", 3, "the axes are permuted cyclically"),
                      np.roll(E, shift)))
+        order = _reordered(got, E) if got is not None and E.size > 3 else None
+        if order is not None:
+            moved = ", ".join(f"{_ordinal(k)} holds the expected {_ordinal(j)}" for k, j in enumerate(order) if k != j)
+            add((Hypothesis(f"swap:order:{','.join(map(str, order))}", "swapped", 3,
+                             f"the entries are in another order (entry {moved})"), E[list(order)].copy()))
     if rotation is not None:
         A = rotation
         if E.shape == (3,):
@@ -219,6 +246,40 @@ def output_slips(E: np.ndarray, constants: dict, rotation) -> list:
             add((Hypothesis("frame:AT", "wrong_frame", 2, "your matrix is the expected one in the other frame "
                              "(A.T X A)"), A.T @ E @ A))
     return out
+
+
+#: how far apart (relative to the largest entry) a vector's entries must be for ``_reordered`` to tell which went
+#: where
+REORDER_GAP = 1e-3
+
+
+def _reordered(got, E: np.ndarray):
+    """The order of ``E``'s entries that the student's vector ``got`` holds (``got[k] = E[order[k]]`` to
+    ``REORDER_GAP``), where three entries or more moved and no exchange of two or reversal gives it (those are
+    slips of their own); None otherwise.  Each moved entry must be told apart from every other entry of ``E``, so
+    that the order is the only one: entries of equal size stay where they are."""
+    got = array_of(got)
+    if got is None or got.shape != E.shape or E.ndim != 1:
+        return None
+    scale = float(np.max(np.abs(E))) if E.size else 0.0
+    if scale == 0.0:
+        return None
+    gap = REORDER_GAP * scale
+    order = []
+    for k in range(E.size):
+        if abs(got[k] - E[k]) <= gap:
+            order.append(k)
+            continue
+        near = np.flatnonzero(np.abs(E - got[k]) <= gap)
+        if near.size != 1 or np.sum(np.abs(E - E[near[0]]) <= 10 * gap) != 1:
+            return None
+        order.append(int(near[0]))
+    if sorted(order) != list(range(E.size)):
+        return None
+    moved = [k for k, j in enumerate(order) if k != j]
+    if len(moved) < 3 or order == list(range(E.size))[::-1]:
+        return None
+    return tuple(order)
 
 
 def precision_slips(got, E, tol: Tol) -> list:
@@ -240,6 +301,30 @@ def precision_slips(got, E, tol: Tol) -> list:
                                      "them unrounded"))
             break
     return found
+
+
+#: the numbers a typed answer must hold, each clearly other than zero, for the output grammar to explain it
+TYPED_NUMBERS = 4
+
+
+def typed_slips(evidence: Evidence) -> list:
+    """The output slips (``output_slips``) that explain a value typed into answers.toml (``Evidence.typed``): no
+    call stands behind it, so there is one input and no argument, term or formula to vary.  One input tells a slip
+    only where the answer holds many numbers: the key and the slip's value must each have ``TYPED_NUMBERS``
+    entries or more beyond the tolerance from zero (a 3 x 3 matrix read off a figure), and the slip must reproduce
+    every number of the answer within the tolerance while it moves the key clearly (``evidence.DISTINCT``
+    tolerances somewhere).  A scalar or a short vector is explained by nothing here: one number matched by one of
+    the grammar's many factors says little, where many slips of the work behind it give a number too."""
+    E, got, tol = evidence.expected, evidence.got, evidence.tol
+    if E is None or got is None or got.shape != E.shape or not _many(E, tol):
+        return []
+    return [hypothesis for hypothesis, value in output_slips(E, {}, None)
+            if value.shape == got.shape and within(got, value, tol) and distinct(value, E, tol) and _many(value, tol)]
+
+
+def _many(value: np.ndarray, tol: Tol) -> bool:
+    """``value`` holds ``TYPED_NUMBERS`` entries or more beyond the tolerance from zero."""
+    return int(np.count_nonzero(np.abs(value) > tol.atol + tol.rtol * np.abs(value))) >= TYPED_NUMBERS
 
 
 def leaves_of(roles, args, path=()):
