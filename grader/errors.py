@@ -11,6 +11,7 @@ __all__ = [
     "SubmissionError",
     "StudentCodeError",
     "StudentTimeout",
+    "MachineBusy",
     "WorkerCrash",
     "GraderFault",
     "SandboxError",
@@ -70,6 +71,19 @@ class WorkerCrash(StudentFault):
 
 class GraderFault(GradingError):
     """A defect of the grader itself: never reported as the student's fault."""
+
+
+class MachineBusy(GraderFault):
+    """A call ran out of time after its worker had waited for a processor longer than the grace its deadline
+    allows (``grader.sandbox.child.LOAD_GRACE``): the machine was too busy to give the code its time limit, which
+    is no fault of the student's."""
+
+    def __init__(self, seconds, waited, phase="call"):
+        super().__init__(f"the machine grading was too busy: the code waited {waited:.1f} s for a processor "
+                         f"during a call limited to {seconds:g} s; grade again when the machine is less loaded")
+        self.seconds = seconds
+        self.waited = waited
+        self.phase = phase
 
 
 class SandboxError(GraderFault):

@@ -22,8 +22,9 @@ from pathlib import Path
 
 import probes
 
-from ..errors import ProbeFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
+from ..errors import MachineBusy, ProbeFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from . import protocol
+from .queueing import Queueing, waited
 from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
 from .portable import PORTABLE, PortableProcess, prepare_portable
 from .zygote import ForkedProcess
@@ -32,6 +33,11 @@ __all__ = ["Child", "canary", "probe_name"]
 
 #: how much of the child's stdout/stderr is kept for the report
 OUTPUT_TAIL = 4000
+#: a call's deadline moves on by the time its worker waited for a processor (``grader.sandbox.queueing``), by at
+#: most this many times the call's limit: a call of limit T ends by (1 + LOAD_GRACE) T of wall time at the latest
+LOAD_GRACE = 4.0
+#: a wait for a processor shorter than this [s] does not move a deadline (the counters' and the reads' own noise)
+LEAST_WAIT = 0.05
 
 
 def probe_name(probe) -> str:
@@ -455,21 +461,61 @@ class Child:
             self._next_id += 1
             self._send(dict(message, id=self._next_id), timeout, phase, deadline)
             expected = self._next_id
-        else:
-            expected = self._import_id
-        return message, expected, deadline, timeout, phase, self._proc
+            start = (time.monotonic(), self._waited())
+        else:  # the import's counts run from the worker's start, when they were 0
+            expected, start = self._import_id, (self._spawned_at, Queueing(0.0, 0.0))
+        return message, expected, deadline, timeout, phase, self._proc, start
+
+    def _waited(self) -> Queueing | None:
+        """The scheduler's counts for the worker's tree (``queueing.waited``), read from outside the sandbox;
+        None where they cannot be read."""
+        proc = self._proc
+        if proc is None:
+            return None
+        if isinstance(proc, ForkedProcess):  # its pid as this process sees it (the zygote's may be another
+            try:  # namespace's): the pidfd's
+                info = Path(f"/proc/self/fdinfo/{proc.pidfd}").read_text()
+            except OSError:
+                return None
+            pids = [line.split()[1] for line in info.splitlines() if line.startswith("Pid:")]
+            return waited(int(pids[0])) if pids and pids[0].lstrip("-").isdigit() else None
+        return waited(getattr(proc, "pid", None))
+
+    def _late(self, start: tuple | None, granted: float) -> float | None:
+        """How much more than ``granted`` the machine has kept the worker waiting since ``start`` (the time and
+        the counts then): the smaller of its longest task's wait and the wall time its tree spent off a processor
+        (``grader.sandbox.queueing``).  None: it cannot be told, or it is no more than the counters' noise."""
+        if start is None or start[1] is None:
+            return None
+        now = self._waited()
+        if now is None:
+            return None
+        idle = (time.monotonic() - start[0]) - (now.cpu - start[1].cpu)
+        late = min(now.wait - start[1].wait, idle) - granted
+        return late if late >= LEAST_WAIT else None
 
     def _reply(self, message: dict | None, expected: int, deadline: float, timeout: float, phase: str,
-               proc=None) -> dict:
+               proc=None, start: tuple | None = None) -> dict:
         """The reply with id ``expected``, read before ``deadline`` (replies to abandoned requests are skipped)
-        from the worker ``proc`` the request went to."""
+        from the worker ``proc`` the request went to.  The deadline moves on by the time the worker waited for a
+        processor since the request (``start``: its wait then), up to ``LOAD_GRACE`` times the limit.  At the last
+        deadline, a worker that had its whole limit to run is the student's time-out; one that waited longer than
+        the grace, and so had less than its limit, is the machine's fault (``MachineBusy``), graded again later."""
         if self._reader is None or self._proc is not proc:  # that worker was stopped since
             raise WorkerCrash("the process running your code was stopped before it replied", phase)
+        granted = 0.0
         while True:
             try:
                 reply = self._reader.read(deadline)
             except protocol.Deadline:
+                late = self._late(start, granted)
+                if late is not None and granted < LOAD_GRACE * timeout:
+                    grant = min(late, LOAD_GRACE * timeout - granted)
+                    granted, deadline = granted + grant, deadline + grant
+                    continue
                 self._kill()
+                if late is not None:  # the grace is spent and the code still had less than its limit to run
+                    raise MachineBusy(timeout, granted + late, phase) from None
                 raise StudentTimeout(timeout, phase) from None
             except (ValueError, RecursionError) as exc:
                 self._kill()

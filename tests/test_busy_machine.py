@@ -1,0 +1,116 @@
+"""A call's time limit on a busy machine: the time the student's code waited for a processor is the machine's, not
+the student's (``grader.sandbox.queueing``).
+
+Each case runs in a process of its own pinned to one processor, beside processes that keep that processor busy,
+and calls problem 6's ``frames`` of a submission through a ``Child``.  Outcomes only, never durations."""
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+from grader.sandbox import refusal, sandbox_mode
+from grader.sandbox.queueing import Queueing, waited
+
+from .submissions import ROOT, build_hostile, copy_reference
+
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the scheduler's counts are Linux's")
+
+#: the case's process: pinned to one processor with ``hogs`` busy processes, it calls ``frames`` once the worker
+#: answered a first call, and prints what came of it
+CASE = textwrap.dedent("""
+    import json, os, subprocess, sys
+    sys.path.insert(0, {root!r})
+    from grader.errors import MachineBusy, StudentTimeout
+    from grader.loader import materialize
+    from grader.sandbox import Child, Limits, sandbox_mode
+    os.sched_setaffinity(0, {{{cpu}}})
+    hogs = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range({hogs})]
+    submission = materialize({path!r})
+    try:
+        with Child(submission.path, Limits(call_timeout={limit}), sandbox_mode()) as child:
+            child.call("problem_06.elementary", 1, 0.5)
+            try:
+                child.call("problem_06.frames")
+                outcome = "answered"
+            except StudentTimeout:
+                outcome = "timeout"
+            except MachineBusy as exc:
+                outcome = "busy: " + str(exc)
+    finally:
+        for hog in hogs:
+            hog.kill()
+    print(json.dumps(outcome))
+""")
+
+#: problem 6's frames after 0.5 s of the processor's time: honest work that needs half its limit of 1 s
+SLOW = '''
+def _spend(seconds):
+    import time
+    end = time.process_time() + seconds
+    while time.process_time() < end:
+        pass
+
+
+def frames():
+    _spend(0.5)
+    return _frames()
+'''
+
+#: problem 6's frames that keeps the processor busy with processes of its own and never answers
+CROWD = '''
+def frames():
+    import os
+    for _ in range(4):
+        if os.fork() == 0:
+            while True:
+                pass
+    while True:
+        pass
+'''
+
+
+def _submission(tmp_path, text):
+    folder = copy_reference(tmp_path / "pkg")
+    source = folder / "problem_06.py"
+    source.write_text(source.read_text().replace("def frames():", "def _frames():", 1) + text)
+    return folder
+
+
+def _outcome(path, hogs, limit=1.0):
+    if not sandbox_mode().isolated and refusal() is not None:
+        pytest.skip("covered by the refusal: no child runs here without bubblewrap")
+    cpu = min(os.sched_getaffinity(0))
+    script = CASE.format(root=str(ROOT), cpu=cpu, hogs=hogs, path=str(path), limit=limit)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def test_the_counts_of_a_process_tree_are_read_and_of_no_process_none():
+    here = waited(os.getpid())
+    assert isinstance(here, Queueing) and here.cpu > 0 and here.wait >= 0
+    assert waited(None) is None and waited(0) is None
+    gone = subprocess.Popen([sys.executable, "-c", "pass"])
+    gone.wait()
+    assert waited(gone.pid) is None
+
+
+def test_honest_work_that_waits_for_a_busy_processor_is_answered_not_timed_out(tmp_path):
+    """Half a second of work under a limit of one second, on a processor shared with two busy processes: about 1.5 s
+    of wall time, most of it waiting.  Before the wait was counted the machine's, this was the student's time-out."""
+    outcome = _outcome(_submission(tmp_path, SLOW), hogs=2)
+    assert outcome == "answered" or outcome.startswith("busy"), outcome
+
+
+def test_code_that_never_answers_is_still_the_students_time_out_on_a_busy_processor(tmp_path):
+    assert _outcome(build_hostile("infinite_loop_call", tmp_path / "pkg"), hogs=2) == "timeout"
+
+
+def test_code_that_crowds_the_processor_with_its_own_processes_gets_no_more_time(tmp_path):
+    """Its main process waits for its own busy children: it used that time, so it is granted none, and its time-out
+    is the student's, not the machine's."""
+    assert _outcome(_submission(tmp_path, CROWD), hogs=0) == "timeout"
