@@ -1,12 +1,12 @@
-"""Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, a
-constant offset, a state from the wrong row (of the run, or of the state at an event: another row, or a slice of the
-whole state there from another start), the state at an event read from the run's last output before it, a wrong
-start, an event found late or early, and an error that grows with the step (against fixed-step runs of the
-reference's own right-hand side); and the reference re-run as a slip would run it (``parameter_variants``: its
-arguments exchanged, scaled or ignored, its start's entries exchanged, solve_ivp at looser tolerances), every such
-run a function of the run's arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose
-columns are read from the wrong rows of the solution, which looks like a wrong start or a drifting energy) and
-``exchanged_events``.
+"""Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, an
+output grid one sample off (as many times as asked, spaced as a grid of one more or one fewer), a constant offset, a
+state from the wrong row (of the run, or of the state at an event: another row, or a slice of the whole state there
+from another start), the state at an event read from the run's last output before it, a wrong start, an event found
+late or early, and an error that grows with the step (against fixed-step runs of the reference's own right-hand
+side); and the reference re-run as a slip would run it (``parameter_variants``: its arguments exchanged, scaled or
+ignored, its start's entries exchanged, solve_ivp at looser tolerances), every such run a function of the run's
+arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose columns are read from the wrong
+rows of the solution, which looks like a wrong start or a drifting energy) and ``exchanged_events``.
 
 Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
 reference's at states along the reference's run (``model_evidences``): a run that leaves the reference's is not
@@ -43,6 +43,7 @@ __all__ = [
     "run_of",
     "aligned_runs",
     "motion_slips",
+    "grid_slips",
     "event_slips",
     "event_times",
     "step_slips",
@@ -146,6 +147,8 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
     motion = decl.motion
     tol = evidence.tol
     found = event_slips(evidence, decl) + event_state_slips(evidence, decl)
+    if tuple(evidence.source.path) == (motion.get("time", "t"),):  # the output times compared: their grid
+        found += grid_slips(evidence, decl)
     aligned = aligned_runs(evidence, decl)
     if aligned is None:
         return found
@@ -153,7 +156,7 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
     keys = list(G)
     wrong = [k for k in keys if not within(G[k], R[k], tol)]
     if not wrong:
-        return found
+        return found if any(h.key == "motion:grid" for h in found) else found + grid_slips(evidence, decl)
     # a constant offset
     offsets = {k: np.mean(G[k] - R[k], axis=0) for k in keys}
     if all(within(G[k] - offsets[k], R[k], tol) for k in keys):
@@ -180,6 +183,41 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
         words = "; ".join(f"{k}(t0) = {format_array(G[k][0])}, expected {format_array(R[k][0])}" for k in start)
         found.append(Hypothesis("motion:start", "initial_state", 3, f"your run starts from another state: {words}"))
     return found
+
+
+#: how evenly a grid's samples must lie, and how closely its spacing must be a grid's of one sample more or fewer
+#: over the reference's span (relative)
+GRID_EVEN = 1e-6
+
+
+def grid_slips(evidence: Evidence, decl: Declaration) -> list:
+    """An output grid one sample off, cut to the asked count: the student's output times, as many as the
+    reference's, run evenly from the reference's first time with the spacing of a grid of one sample more or fewer
+    over the reference's span (``np.linspace(t0, t_end, n, endpoint=False)``; a step of ``(t_end - t0) / (n - 2)``).
+    Heard where the output times are the value compared, or where the states at the student's times are the
+    reference's run there (the motion is right, only sampled at other times, and ``motion_slips`` finds nothing
+    else in it).  Every sample after the first then lies at another time than asked."""
+    motion = decl.motion
+    mine = run_of(evidence.student.root if evidence.student else None, motion)
+    ours = run_of(evidence.source.root, motion)
+    if mine is None or ours is None:
+        return []
+    t, t_r = mine[0], ours[0]
+    n = t_r.size
+    if t.size != n or n < 4 or not (np.all(np.isfinite(t)) and np.all(np.isfinite(t_r))):
+        return []
+    span, steps, theirs = t_r[-1] - t_r[0], np.diff(t), np.diff(t_r)
+    if span <= 0 or np.any(steps <= 0) or np.ptp(steps) > GRID_EVEN * steps.mean() \
+            or np.ptp(theirs) > GRID_EVEN * theirs.mean() or abs(t[0] - t_r[0]) > GRID_EVEN * span:
+        return []
+    for count, words in ((n + 1, "one more"), (n - 1, "one fewer")):
+        if abs(steps.mean() * (count - 1) - span) <= GRID_EVEN * span:
+            return [Hypothesis("motion:grid", "grid_off_by_one", 2, f"your {n} output times lie {steps.mean():.6g} s "
+                               f"apart, the spacing of a grid of {words} sample ({count}) from {t_r[0]:.6g} s to "
+                               f"{t_r[-1]:.6g} s, not {theirs.mean():.6g} s: every sample after the first comes at "
+                               "another time than asked, while the motion at your times is the reference's "
+                               "(np.linspace(t0, t_end, n) holds both ends)")]
+    return []
 
 
 def reread(G: dict, R: dict, keys, tol: Tol) -> Hypothesis | None:

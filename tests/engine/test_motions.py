@@ -139,7 +139,16 @@ STRONGER_GRAVITY = Planted(
     new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, 1.05 * g),",
     check="p44.event", diagnosis="", message="")
 
-RUN_SLIPS = [LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED, EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS,
+#: the output step taken as the span over the count of samples, not of steps: as many times as asked, evenly from 0,
+#: each after the first early by a growing share of the step (the grid of one sample more, cut to the count); the
+#: states at those times are the reference's run there
+SPAN_OVER_SAMPLES = Planted(
+    name="motions-p24-span-over-the-samples", problem=24, file="problem_24.py",
+    old="t_eval = np.linspace(0.0, t_end, int(round(t_end / dt)) + 1)",
+    new="t_eval = np.arange(int(round(t_end / dt)) + 1) * t_end / (int(round(t_end / dt)) + 1)",
+    check="p24.simulated_motion", diagnosis="grid_off_by_one", message="a grid of one more sample")
+
+RUN_SLIPS = [SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED, EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS,
              RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT, RATES_NEGATED_AT_THE_START]
 NEAR_MISSES = [STRONGER_GRAVITY]
 
@@ -161,8 +170,8 @@ def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, sl
 
 @pytest.mark.parametrize("mistake", RUN_SLIPS, ids=lambda m: m.name)
 def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferred_ids, slot):
-    """Slips of the run, not of its model: the run's arguments exchanged or ignored, solve_ivp's tolerances
-    loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
+    """Slips of the run, not of its model: its output grid one sample off, the run's arguments exchanged or
+    ignored, solve_ivp's tolerances loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
     the other row; and a wrong start, which a state read from the wrong rows must not be mistaken for."""
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert_told(mistake, target)
@@ -364,3 +373,28 @@ def test_a_state_at_an_event_is_read_from_its_rows_only_where_the_event_agrees()
     assert event_state_slips(evidence, decl) == []
     evidence, decl = _event_evidence(1.0, [1.0, 3.0])  # no row of the state at the event
     assert event_state_slips(evidence, decl) == []
+
+
+def _grid_evidence(times):
+    """A run compared by its output times: the student's at ``times``, the reference's every 0.1 s over 1 s, both
+    the same motion (sin t) at their own times."""
+    ours = np.linspace(0.0, 1.0, 11)
+    source = {"t": ours, "q": np.sin(ours)[:, None]}
+    mine = {"t": np.asarray(times, dtype=float), "q": np.sin(times)[:, None]}
+    return Evidence(mine["t"], ours, Tol("t", 1e-9, 1e-9), "t", source=engine.Source("p.run", (), ("t",), source),
+                    student=engine.Source("p.run", (), ("t",), mine))
+
+
+@pytest.mark.parametrize("times, told", [
+    (np.linspace(0.0, 1.0, 11, endpoint=False), True),  # the span over the samples: a grid of one more, cut
+    (np.arange(11) * 0.1 * 10 / 9, True),  # the span over one step fewer: a grid of one fewer, run past the end
+    (np.linspace(0.0, 0.95, 11), False),  # another end: no grid of one sample more or fewer
+    (np.linspace(0.0, 1.0, 11) + 0.1, False),  # shifted: it starts elsewhere
+    (np.linspace(0.0, 1.0, 11) ** 2, False),  # not even
+])
+def test_an_output_grid_one_sample_off_is_told_only_for_that_spacing(times, told):
+    from grader.diagnosis.evidence import Declaration
+    from grader.diagnosis.runs import grid_slips
+
+    found = grid_slips(_grid_evidence(times), Declaration(motion={"time": "t", "states": ("q",)}))
+    assert [h.name for h in found] == (["grid_off_by_one"] if told else [])
