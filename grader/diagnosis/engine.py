@@ -557,6 +557,11 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         except GraderFault:  # the kit's key does not hold the reference's call: the graded submission may say more
             trace.note("standard", left_to_live=True)
             return _left_to_live(None)
+    if first.source is None and first.student is None and first.call is None and not (found or described):
+        # a value the check derived from the student's results (a centre of gravity of their points, an anchor's
+        # first two coordinates): the call it judges, against the reference's call on the same arguments
+        trace.note("derived")
+        return judged(scene, first)
     if first.source is None:  # a value derived from the student's own: explain the results it came from
         if found or described or first.call is None:
             return _told([found, described], "in your model" if described else "here")
