@@ -69,13 +69,14 @@ The grammar:
   terms), found by least squares over the inputs; and ``mutants``' slips inside the reference's own code, among
   them slips of precision (float32, a constant typed short), tried on one input too where the value is within
   their band;
-* motions (``motion``: a run's times, states and events): a time shift, a constant offset, a state read from the
-  wrong row (of the run, or of the state at an event: another of its rows, or a slice of the whole state there
-  from another start, where the event itself is found where the reference's is), the state at an event read from
-  the run's last output before it, a wrong initial state, an event found late or early, an error that grows with
-  the step, the run's parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser
-  tolerances (the reference re-run so: a run clearly another than the reference's, or one far nearer to the
-  student's than the reference's is); a randomized comparison's second failing run must show the same cause.
+* motions (``motion``: a run's times, states and events): a time shift, an output grid one sample off (as many times
+  as asked, spaced as a grid of one more or one fewer), a constant offset, a state read from the wrong row (of the
+  run, or of the state at an event: another of its rows, or a slice of the whole state there from another start,
+  where the event itself is found where the reference's is), the state at an event read from the run's last output
+  before it, a wrong initial state, an event found late or early, an error that grows with the step, the run's
+  parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the
+  reference re-run so: a run clearly another than the reference's, or one far nearer to the student's than the
+  reference's is); a randomized comparison's second failing run must show the same cause.
 
 * models (``models``: a value of the student's MuJoCo model, which a check compares with the sheet's numbers or
   the reference's analytic values, so that no reference call stands behind it): the student's compiled model and
@@ -96,6 +97,11 @@ probe call behind the value is compared with the reference's call on the same ar
 is explained as a failing comparison (on the input shown and the engine's own second input), and a cause found is
 told beside the symptom, whose message stays.  A randomized comparison whose shown input has no comparison (the
 student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
+A value the check derives from the student's reply itself (the centre of gravity of their points, an anchor's first
+coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; and
+a value of theirs that the check holds to their own other results (their ``omega_rel`` to their ``R @ qd``), which
+no reference call gives, is explained against the reference's value at their call where the two differ.  The kit's
+key may hold neither reference call: there the kit leaves the cause to the graded submission.
 
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
