@@ -49,7 +49,7 @@ from .grammar import (
     unturned,
 )
 from . import trace
-from .models import model_slips
+from .models import is_model, model_slips
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -187,8 +187,10 @@ def _standard(scene: Scene, evidence: Evidence) -> Source | None:
     that one of the two is wrong, and where the student's value is clearly other than the reference's at the same
     call, that value is the one to explain, against the reference's (which becomes the expected value).  None
     where the probe is no named one, the reference raises, or its value there is the student's (the other side of
-    the consistency is then the wrong one, which this comparison does not show); in the student kit, whose key
-    may not hold that call, the grader fault of a call it lacks."""
+    the consistency is then the wrong one, which this comparison does not show), and where the reply is a MuJoCo
+    model's (the model tier's: a connect's two points, one of them held to the other, are told by the differences
+    of the whole model, and a formula's slip read from one of them told a wrong cause); in the student kit, whose
+    key may not hold that call, the grader fault of a call it lacks."""
     student = evidence.student
     if not isinstance(student.probe, str) or evidence.got is None or evidence.motion:
         return None
@@ -199,6 +201,8 @@ def _standard(scene: Scene, evidence: Evidence) -> Source | None:
     except GraderFault:
         if getattr(scene.ctx.oracle, "mode", "") == "kit":  # the key does not hold that call: live may tell more
             raise
+        return None
+    if is_model(root):  # a value of a MuJoCo model: the model tier's, which holds every difference of the model
         return None
     value = array_of(at_point(root, student.path))
     theirs = array_of(at_point(student.root, student.path)) if student.root is not None else None
