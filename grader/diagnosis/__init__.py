@@ -98,10 +98,8 @@ is explained as a failing comparison (on the input shown and the engine's own se
 told beside the symptom, whose message stays.  A randomized comparison whose shown input has no comparison (the
 student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
 A value the check derives from the student's reply itself (the centre of gravity of their points, an anchor's first
-coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; and
-a value of theirs that the check holds to their own other results (their ``omega_rel`` to their ``R @ qd``), which
-no reference call gives, is explained against the reference's value at their call where the two differ.  The kit's
-key may hold neither reference call: there the kit leaves the cause to the graded submission.
+coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; the
+kit's key may not hold the reference's call: there the kit leaves the cause to the graded submission.
 
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the

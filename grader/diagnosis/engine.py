@@ -49,7 +49,7 @@ from .grammar import (
     unturned,
 )
 from . import trace
-from .models import is_model, model_slips
+from .models import model_slips
 from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -178,40 +178,6 @@ def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
     value = array_of(at_point(root, student.path))
     if value is None or value.shape != target.shape or not within(value, target, tol):
         return None
-    return Source(student.probe, tuple(student.args), student.path, root)
-
-
-def _standard(scene: Scene, evidence: Evidence) -> Source | None:
-    """The reference's call with the arguments of the student's call, where the check held the student's value to
-    one derived from their own other results (``omega_rel`` to their ``R @ qd``): a consistency that fails says
-    that one of the two is wrong, and where the student's value is clearly other than the reference's at the same
-    call, that value is the one to explain, against the reference's (which becomes the expected value).  None
-    where the probe is no named one, the reference raises, or its value there is the student's (the other side of
-    the consistency is then the wrong one, which this comparison does not show), and where the reply is a MuJoCo
-    model's (the model tier's: a connect's two points, one of them held to the other, are told by the differences
-    of the whole model, and a formula's slip read from one of them told a wrong cause); in the student kit, whose
-    key may not hold that call, the grader fault of a call it lacks."""
-    student = evidence.student
-    if not isinstance(student.probe, str) or evidence.got is None or evidence.motion:
-        return None
-    try:
-        root = scene.reference(student.probe, student.args)
-    except Budget:
-        return None
-    except GraderFault:
-        if getattr(scene.ctx.oracle, "mode", "") == "kit":  # the key does not hold that call: live may tell more
-            raise
-        return None
-    if is_model(root):  # a value of a MuJoCo model: the model tier's, which holds every difference of the model
-        return None
-    value = array_of(at_point(root, student.path))
-    theirs = array_of(at_point(student.root, student.path)) if student.root is not None else None
-    if value is not None and theirs is not None and value.shape == theirs.shape and value.size == evidence.got.size:
-        value = value.reshape(evidence.got.shape)  # the check's own reshaping of the student's value, alike
-    if value is None or value.shape != evidence.got.shape or not distinct(value, evidence.got, evidence.tol):
-        return None
-    trace.note("standard", probe=student.probe)
-    evidence.expected = value
     return Source(student.probe, tuple(student.args), student.path, root)
 
 
@@ -555,12 +521,6 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         return _left_to_live(_told([found], "here") if found else None)
     if described:  # a value of the student's MuJoCo model: its differences from the reference's model
         trace.note("model_slips", found=[h.name for h in described])
-    if first.source is None and first.student is not None and first.call is None and not (found or described):
-        try:  # held to the student's own results: their value, against the reference's at their call
-            first.source = _standard(scene, first)
-        except GraderFault:  # the kit's key does not hold the reference's call: the graded submission may say more
-            trace.note("standard", left_to_live=True)
-            return _left_to_live(None)
     if first.source is None and first.student is None and first.call is None and not (found or described):
         # a value the check derived from the student's results (a centre of gravity of their points, an anchor's
         # first two coordinates): the call it judges, against the reference's call on the same arguments
