@@ -221,6 +221,8 @@ _TABLE = (
     _D("factor_order", "order", "the factors of a product in the wrong order", "multiplied factors in the wrong order"),
     _D("sibling_matrix", "order", "a matrix where its sibling belongs (J_R for J_S)",
        "used a matrix where its sibling belongs"),
+    _D("wrong_angle", "order", "one angle read where another belongs (cos(beta) for cos(phi))",
+       "read one angle where another belongs"),
     _D("sin_cos_swapped", "order", "sin and cos swapped", "swapped sin and cos"),
     _D("beta_sin_cos", "order", "sin and cos of beta swapped", "swapped sin and cos of beta"),
     _D("phi_sin_cos", "order", "sin and cos of phi swapped", "swapped sin and cos of phi"),

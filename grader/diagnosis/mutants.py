@@ -182,6 +182,8 @@ class _Function:
     node: ast.FunctionDef
     regions: tuple  # ((problem, first line, last line), ...)
     attributes: frozenset = frozenset()  # the attributes the reference reads or sets (``B_omega_B``)
+    constants: frozenset = frozenset()  # the constants its module binds at its top level (``WIRE_LENGTH``)
+    angled: frozenset = frozenset()  # ``(function, position)`` of the reference's parameters that are angles
 
 
 @lru_cache(maxsize=4)
@@ -194,13 +196,45 @@ def _functions(root: str) -> tuple[_Function, ...]:
             source = path.read_text(encoding="utf-8")
             modules.append((path, _regions(source.splitlines()), ast.parse(source, filename=str(path))))
     attributes = frozenset(n.attr for _, _, tree in modules for n in ast.walk(tree) if isinstance(n, ast.Attribute))
+    angled = frozenset(pair for _, _, tree in modules for pair in _angled(tree))
     found = []
     for path, regions, tree in modules:
+        constants = _constants(tree)
         for node, names in _definitions(tree) if regions else ():
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
-                found.append(_Function(path.stem, names, node, inside, attributes))
+                found.append(_Function(path.stem, names, node, inside, attributes, constants, angled))
     return tuple(found)
+
+
+def _constants(tree: ast.Module) -> frozenset:
+    """The names a module binds at its top level in capitals (``WIRE_LENGTH``, ``GRAVITY_39``): its constants."""
+    return frozenset(t.id for node in tree.body if isinstance(node, (ast.Assign, ast.AnnAssign))
+                     for t in (node.targets if isinstance(node, ast.Assign) else [node.target])
+                     if isinstance(t, ast.Name) and t.id.isupper())
+
+
+def _angled(tree: ast.Module):
+    """``(function, position)`` and ``(function, name)`` of the parameters that a function of the module (at any
+    depth: ``rot(axis, x)`` defined inside another) reads as the argument of a sine or a cosine: the angles it
+    takes (a method's positions counted without ``self``)."""
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            positional = [a.arg for a in node.args.posonlyargs + node.args.args]
+            if positional[:1] in (["self"], ["cls"]):
+                positional = positional[1:]
+            parameters = set(positional) | {a.arg for a in node.args.kwonlyargs}
+            angles = _trig_arguments(node) & parameters
+            for name in angles:
+                yield node.name, name
+                if name in positional:
+                    yield node.name, positional.index(name)
+
+
+def _trig_arguments(node) -> set:
+    """The names read as the one argument of a sine or a cosine under ``node`` (``phi`` of ``np.cos(phi)``)."""
+    return {n.args[0].id for n in ast.walk(node) if isinstance(n, ast.Call) and _callee(n) in _TRIG
+            and len(n.args) == 1 and not n.keywords and isinstance(n.args[0], ast.Name)}
 
 
 def _regions(lines: list[str]) -> list[tuple[int, int, int]]:
@@ -315,7 +349,8 @@ SLIPS = {
                               "exchanged in one expression of `{f}`"),
     "returned_degrees": ("degrees", "`{f}` returns an angle in degrees"),
     "count": ("wrong_factor", "`{f}` divides by the number of entries where their sum belongs"),
-    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
+    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares (a length) where the sum (its square) "
+                             "belongs"),
     "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
@@ -338,6 +373,11 @@ SLIPS = {
     "single": ("float32", "`{f}` computes in single precision (float32) where numpy's float64 belongs"),
     "single_argument": ("float32", "`{f}` converts an argument to single precision (float32) before it uses it"),
     "short": ("rounded", "`{f}` uses a constant typed short (pi as 3.14, g as 9.8)"),
+    "angle": ("wrong_angle", "`{f}` reads one angle where another belongs"),
+    "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
+                                    "where its argument belongs: the argument is ignored"),
+    "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
+    "axes": ("transpose", "`{f}` takes a row of a matrix where its column belongs, or the reverse"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
 PRECISION_SLIPS = frozenset({"single", "single_argument", "short"})
@@ -889,7 +929,7 @@ def _binop_slips(node: ast.BinOp):
         other = ast.Sub() if isinstance(op, ast.Add) else ast.Add()
         yield "sign", lambda n: _with(n, op=other)
         if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):  # |r| for |r|^2
-            yield "norm", lambda n: ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "sqrt", ast.Load()), [n], [])
+            yield "norm", _root_of
         # ``I_r_E - anchor`` as ``I_r_E``: a position taken from the origin, not from the point subtracted
         yield "origin" if isinstance(op, ast.Sub) and _POSITION.match(_label(node.left) or "-") else "term", \
             lambda n: n.left
@@ -914,6 +954,8 @@ def _binop_slips(node: ast.BinOp):
         if not _reciprocal(node):  # ``12 / m`` as ``m / 12`` (``1 / x`` as ``x``: a reciprocal, the inputs' slip)
             yield "ratio", lambda n: _with(n, left=n.right, right=n.left)
     elif isinstance(op, ast.MatMult):
+        if ast.dump(node.left) == ast.dump(node.right) and not isinstance(node.left, (ast.Attribute, ast.Call)):
+            yield "norm", _root_of  # ``np.sqrt(r @ r)`` for ``r @ r``: the length where its square belongs
         if _movable(node):
             yield "sides", _moved
         if _own_transpose(node, _ends(node)):  # ``J.T @ I @ J`` as ``J @ I @ J.T``
@@ -935,6 +977,11 @@ def _binop_slips(node: ast.BinOp):
                 for slip, factor in (("doubled", 2.0), ("halved", 0.5)):
                     yield slip, lambda n, side=side, factor=factor: _with(
                         n, **{side: ast.Constant(getattr(n, side).value * factor)})
+
+
+def _root_of(node):
+    """``np.sqrt(node)``."""
+    return ast.Call(_np("sqrt"), [node], [])
 
 
 def _from_point(node: ast.BinOp) -> bool:
@@ -972,6 +1019,8 @@ def _call_slips(node: ast.Call):
         yield "radians", lambda n: n.args[0]
     if callee == "sqrt" and len(args) == 1:
         yield "root", lambda n: n.args[0]
+    if callee == "dot" and len(args) == 2 and ast.dump(args[0]) == ast.dump(args[1]):
+        yield "norm", _root_of  # ``np.sqrt(np.dot(r, r))`` for ``np.dot(r, r)``
     summed = _summed(node)
     if summed is not None:  # ``masses.sum()`` as ``len(masses)``
         yield "count", lambda n: ast.Call(ast.Name("len", ast.Load()), [_summed(n)], [])
@@ -1093,6 +1142,117 @@ def _unit(function: ast.FunctionDef, lines: tuple, name: str) -> None:
                         setattr(node, field, one)
 
 
+def _read_as(function: ast.FunctionDef, lines: tuple, name: str, value) -> None:
+    """Every read of ``name`` in the region as ``value`` (the function changed in place)."""
+    for node in ast.walk(function):
+        for field, held in ast.iter_fields(node):
+            for k, item in enumerate(held if isinstance(held, list) else [held]):
+                if isinstance(item, ast.Name) and item.id == name and isinstance(item.ctx, ast.Load) \
+                        and _in(item, lines):
+                    read = ast.copy_location(copy.deepcopy(value), item)
+                    if isinstance(held, list):
+                        held[k] = read
+                    else:
+                        setattr(node, field, read)
+
+
+#: a parameter that names the gravity (``g``, ``gravity``), which a student may read as the Earth's
+_GRAVITY = re.compile(r"^(g|g_\w+|grav\w*)$", re.IGNORECASE)
+#: the Earth's gravity as a student types it [m/s^2]
+EARTH_GRAVITY = 9.81
+
+
+def _defaults(function: _Function) -> dict:
+    """``{parameter: [(slip, value), ...]}``: what a read of each of the function's parameters may be read as
+    instead, the argument then ignored: the constant or the number of its default (``WIRE_LENGTH`` of
+    ``wire_length=WIRE_LENGTH``), the module's constant of its name in capitals (``WIRE_LENGTH`` of
+    ``wire_length``), and for a gravity the Earth's (``9.81`` of ``g``)."""
+    node = function.node
+    positional = node.args.posonlyargs + node.args.args
+    given = dict(zip([a.arg for a in positional[len(positional) - len(node.args.defaults):]], node.args.defaults)) \
+        if node.args.defaults else {}
+    given.update({a.arg: d for a, d in zip(node.args.kwonlyargs, node.args.kw_defaults) if d is not None})
+    found: dict = {}
+    for parameter in positional + node.args.kwonlyargs:
+        name = parameter.arg
+        if name in ("self", "cls"):
+            continue
+        reads, default = [], given.get(name)
+        if default is not None and ((isinstance(default, ast.Name) and default.id in function.constants)
+                                    or _number(default)):
+            reads.append(("default", default))
+        for constant in sorted(function.constants):
+            if constant.lower() == name.lower() and not (isinstance(default, ast.Name) and default.id == constant):
+                reads.append(("default", ast.Name(constant, ast.Load())))
+        if _GRAVITY.match(name):
+            reads.append(("earth", ast.Constant(EARTH_GRAVITY)))
+        if reads:
+            found[name] = reads
+    return found
+
+
+def _default_slips(function: ast.FunctionDef, lines: tuple, defaults: dict):
+    """Every read of a parameter in the region read as its default, its module's constant or the Earth's gravity
+    (``_defaults``): the argument ignored throughout."""
+    for name, reads in defaults.items():
+        for slip, value in reads:
+            yield slip, ("read_as", name, value)
+
+
+def _angles(function: _Function) -> frozenset:
+    """The names the function reads as angles: the argument of a sine or a cosine (``phi`` of ``np.cos(phi)``),
+    and an argument passed where a function of the reference takes an angle (``a`` of ``rot(1, a)`` where
+    ``rot(axis, x)`` takes ``np.cos(x)``)."""
+    found = set(_trig_arguments(function.node))
+    for call in ast.walk(function.node):
+        if isinstance(call, ast.Call):
+            callee = _callee(call)
+            found |= {a.id for k, a in enumerate(call.args) if isinstance(a, ast.Name)
+                      and (callee, k) in function.angled}
+            found |= {w.value.id for w in call.keywords if w.arg is not None and isinstance(w.value, ast.Name)
+                      and (callee, w.arg) in function.angled}
+    return frozenset(found)
+
+
+def _name_slips(node, parent, angles: frozenset, defaults: dict):
+    """One read of a name for another of its kind: an angle for another angle that the function reads
+    (``np.cos(beta)`` for ``np.cos(phi)``), a parameter read as its default, its module's constant or the Earth's
+    gravity (``_defaults``: the argument ignored); and a slice's axes exchanged in one statement (``V[2, :]`` for
+    ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``)."""
+    if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+        if node.id in angles:
+            for other in sorted(angles - {node.id}):
+                yield "angle", lambda n, other=other: ast.Name(other, ast.Load())
+        for slip, value in defaults.get(node.id, ()):
+            yield slip, lambda n, value=value: copy.deepcopy(value)
+    if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
+        for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
+            yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
+
+
+def _full(index) -> bool:
+    return isinstance(index, ast.Slice) and index.lower is None and index.upper is None and index.step is None
+
+
+def _axes(node) -> str | None:
+    """What a read of a matrix's row or column is (``V[:, 2]``: the matrix and the index), or None."""
+    if not isinstance(node, ast.Subscript) or not isinstance(node.slice, ast.Tuple) or len(node.slice.elts) != 2:
+        return None
+    first, second = node.slice.elts
+    if _full(first) == _full(second) or isinstance(first if _full(second) else second, ast.Slice):
+        return None
+    return ast.dump(node.value) + ast.dump(node.slice)
+
+
+def _axes_exchanged(statement, pattern: str):
+    """Every read or write of the row or column ``pattern`` in a statement made of the other axis (the copy is
+    changed in place)."""
+    for node in ast.walk(statement):
+        if _axes(node) == pattern:
+            node.slice = ast.Tuple(list(reversed(node.slice.elts)), ast.Load())
+    return statement
+
+
 def _single(function: ast.FunctionDef, name: str) -> None:
     """The argument ``name`` converted to single precision at the function's start (changed in place)."""
     cast = ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "asarray", ast.Load()), [ast.Name(name, ast.Load())],
@@ -1122,9 +1282,16 @@ def _mutated(function: _Function, lines: tuple):
     names, parameters = _names(function.node), _parameters(function.node)
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
-    for index, node, parent, guarded, indexing in [(None, function.node, None, False, False)] + sites:
+    angles, defaults = _angles(function), _defaults(function)
+    # the reads of one name for another come after every other slip: the tier tries them last, within its budget
+    places = [(None, function.node, None, False, False, False)] + [site + (False,) for site in sites] + \
+        [(None, function.node, None, False, False, True)] + [site + (True,) for site in sites]
+    for index, node, parent, guarded, indexing, late_pass in places:
         if index is None:
-            slips = _parameter_slips(function.node, lines)
+            slips = _default_slips(function.node, lines, defaults) if late_pass else \
+                _parameter_slips(function.node, lines)
+        elif late_pass:
+            slips = () if guarded or indexing else _name_slips(node, parent, angles, defaults)
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
@@ -1145,6 +1312,8 @@ def _mutated(function: _Function, lines: tuple):
             tree = copy.deepcopy(function.node)
             if isinstance(edit, tuple) and edit[0] == "unit":
                 _unit(tree, lines, edit[1])
+            elif isinstance(edit, tuple) and edit[0] == "read_as":
+                _read_as(tree, lines, edit[1], edit[2])
             elif isinstance(edit, tuple) and edit[0] == "single":
                 _single(tree, edit[1])
             elif isinstance(edit, tuple):

@@ -7,6 +7,9 @@
 * ``tests/engine/operators.toml``: the formula tier's operators (``grader.diagnosis.mutants``): a name bound to a sine
   read as the cosine of its angle, an entry of a matrix written 0, a solve that divides by the matrix's diagonal alone;
   near misses: the sine of twice the angle, the entry a tenth of its value, a division by the trace.
+* ``tests/engine/names.toml``: one read of a name for another of its kind (``grader.diagnosis.mutants``): an angle
+  for another angle of the function, a parameter read as its default's constant, a gravity read as the Earth's; near
+  misses: the sine of the sum of both angles, a division by the mean of the argument and the constant.
 
 Live the check names the slip, the kit names the same or nothing, with the engine off no catalogue names it; each
 near miss names no cause of its family.
@@ -31,7 +34,7 @@ from ..submissions import Planted, build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 #: the tables of slips and their near misses
-TABLES = [ROOT / "tests" / "engine" / name for name in ("reach.toml", "operators.toml")]
+TABLES = [ROOT / "tests" / "engine" / name for name in ("reach.toml", "operators.toml", "names.toml")]
 PLANTED, FAMILIES = [], {}
 for _table in TABLES:
     _planted, _families = engine_mistakes(_table)

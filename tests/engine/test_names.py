@@ -1,0 +1,220 @@
+"""The formula tier's reads of one name for another of its kind (``grader.diagnosis.mutants``), on a made-up problem:
+an angle read where another angle belongs (told as ``wrong_angle``), a parameter read as its default's constant or
+as its module's constant of that name (the argument ignored), a gravity read as the Earth's, a slice's axes
+exchanged (a transpose) and a length taken where its square belongs.  Each slip is named; a near miss of each
+(a value that no single read reproduces) is not told in the slip's family.  The graded mistakes on the reference
+are in ``tests/engine/names.toml``.
+"""
+
+import ast
+import importlib
+import itertools
+
+import numpy as np
+import pytest
+
+from checks._diagnoses import families_of
+from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source, array_of
+from grader.private import drop_private, private_import
+
+from .test_mutants import TIGHT, scene
+
+_NUMBERS = itertools.count()
+
+SOURCE = '''"""A made-up problem of names read for one another."""
+
+import numpy as np
+
+GRAVITY = 3.7
+SPAN = 2.0
+
+
+def R1(x):
+    """(given)"""
+    return np.array([[1.0, 0.0, 0.0], [0.0, np.cos(x), -np.sin(x)], [0.0, np.sin(x), np.cos(x)]])
+
+
+def R3(x):
+    """(given)"""
+    return np.array([[np.cos(x), -np.sin(x), 0.0], [np.sin(x), np.cos(x), 0.0], [0.0, 0.0, 1.0]])
+
+
+def tilt(phi, theta, v):
+    """``R3(theta) R1(phi) v``: angles passed to rotations only."""
+    # BEGIN SOLUTION problem 97
+    return R3(theta) @ R1(phi) @ v
+    # END SOLUTION
+
+
+def seat(alpha, gamma, r):
+    """A point at radius ``r``, turned by ``alpha`` and lifted by ``gamma``."""
+    # BEGIN SOLUTION problem 97
+    return np.array([r * np.cos(alpha), r * np.sin(alpha), r * np.sin(gamma)])
+    # END SOLUTION
+
+
+def weight(m, g=GRAVITY):
+    """The weight of ``m`` along ``-y``."""
+    # BEGIN SOLUTION problem 97
+    return np.array([0.0, -m * g, 0.0])
+    # END SOLUTION
+
+
+def sag(load, span):
+    """The sag of a beam under a load at its middle, and the load per length."""
+    # BEGIN SOLUTION problem 97
+    return np.array([load * span**3 / 48.0, load / span])
+    # END SOLUTION
+
+
+def spread(m, r):
+    """``m |r|^2``."""
+    # BEGIN SOLUTION problem 97
+    return np.array([m * (r @ r)])
+    # END SOLUTION
+
+
+def handed(V):
+    """``V`` with its third column negated."""
+    # BEGIN SOLUTION problem 97
+    V = np.array(V, dtype=float)
+    V[:, 2] = -V[:, 2]
+    return V
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def made_up(tmp_path, monkeypatch):
+    """A package of one made-up problem (97) that the tier mutates in place of the reference."""
+    root = tmp_path / "made_up_names"
+    root.mkdir()
+    (root / "__init__.py").write_text('"""A made-up package."""\n')
+    (root / "problem_97.py").write_text(SOURCE)
+    package = private_import(f"_made_up_names_{next(_NUMBERS)}", root)
+    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
+    yield package
+    drop_private(package)
+
+
+def R1(x):
+    return np.array([[1.0, 0.0, 0.0], [0.0, np.cos(x), -np.sin(x)], [0.0, np.sin(x), np.cos(x)]])
+
+
+def R3(x):
+    return np.array([[np.cos(x), -np.sin(x), 0.0], [np.sin(x), np.cos(x), 0.0], [0.0, 0.0, 1.0]])
+
+
+def V(*x):
+    return np.array(x, dtype=float)
+
+
+def made_up_probe(name):
+    def probe(pkg, *args):
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_97"), name)(*args)
+
+    return probe
+
+
+def told(package, name, student, inputs):
+    """The names and details the tier tells of ``student``'s values of the made-up ``name``."""
+    probe = made_up_probe(name)
+    evidences = [Evidence(array_of(student(*args)), array_of(probe(package, *args)), TIGHT, "value",
+                          source=Source(probe, args, ())) for args in inputs]
+    found = mutants.mutant_slips(scene(f"p97.{name}"), evidences)
+    return {h.name for h in found}, [h.detail for h in found]
+
+
+TILTS = [(0.4, -1.1, V(0.3, 0.8, -0.5)), (1.3, 0.6, V(-0.7, 0.2, 0.9))]
+SEATS = [(0.4, -1.1, 2.0), (1.3, 0.6, 0.7)]
+WEIGHTS = [(2.0, 9.0), (0.7, 1.6)]
+SAGS = [(3.0, 1.5), (0.8, 2.6)]
+SPREADS = [(2.0, V(0.3, -0.2, 0.5)), (0.7, V(-0.6, 0.1, 1.4))]
+BASES = [(np.array([[0.3, 0.5, -0.2], [0.9, -0.1, 0.4], [0.2, 0.7, 0.8]]),),
+         (np.array([[-0.6, 0.1, 0.3], [0.4, 0.2, -0.9], [0.5, -0.8, 0.1]]),)]
+
+
+def _families(names) -> set:
+    return {family for name in names for family in families_of(name)}
+
+
+def test_an_angle_read_where_another_belongs_is_a_wrong_angle(made_up):
+    """An angle passed to a rotation where another belongs (``R1(theta)`` for ``R1(phi)``: an angle by the rotation's
+    own use of it), and one read in a sine where another belongs, are told as one angle for another, an order slip;
+    a sine of the sum of both angles, which no single read gives, is not."""
+    names, details = told(made_up, "tilt", lambda phi, theta, v: R3(theta) @ R1(theta) @ v, TILTS)
+    assert names == {"wrong_angle"}, details
+    assert any("`tilt` reads one angle where another belongs" in d for d in details)
+    names, details = told(made_up, "seat", lambda a, g, r: V(r * np.cos(a), r * np.sin(g), r * np.sin(g)), SEATS)
+    assert names == {"wrong_angle"}, details
+    names, details = told(made_up, "seat", lambda a, g, r: V(r * np.cos(a), r * np.sin(a + g), r * np.sin(g)),
+                          SEATS)
+    assert "order" not in _families(names), details
+
+
+def test_a_parameter_read_as_its_default_or_its_modules_constant_is_ignored(made_up):
+    """A parameter read as the constant of its default (``GRAVITY`` for ``g``) or as the module's constant of its
+    name in capitals (``SPAN`` for ``span``, at one read) ignores the argument there; a value between the two is
+    not told as an argument ignored."""
+    names, details = told(made_up, "weight", lambda m, g: V(0.0, -m * 3.7, 0.0), WEIGHTS)
+    assert names == {"ignored_argument"}, details
+    assert any("where its argument belongs" in d for d in details)
+    names, details = told(made_up, "sag", lambda load, span: V(load * 2.0**3 / 48.0, load / span), SAGS)
+    assert names == {"ignored_argument"}, details
+    names, details = told(made_up, "sag", lambda load, span: V(load * (span * 2.0)**1.5 / 48.0, load / span),
+                          SAGS)
+    assert "ignored_argument" not in _families(names), details
+
+
+def test_a_gravity_read_as_the_earths_is_told(made_up):
+    """A gravity argument read as 9.81 is the Earth's gravity where another is given (an argument ignored); 9.0 is
+    no read of either."""
+    names, details = told(made_up, "weight", lambda m, g: V(0.0, -m * 9.81, 0.0), WEIGHTS)
+    assert names == {"earth_gravity"}, details
+    names, details = told(made_up, "weight", lambda m, g: V(0.0, -m * 9.0, 0.0), WEIGHTS)
+    assert "ignored_argument" not in _families(names), details
+
+
+def test_a_slices_axes_exchanged_is_a_transpose(made_up):
+    """``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]`` (a row where the column belongs, on both sides) is a
+    transpose; the neighbouring column negated is not."""
+    def row(V):
+        V = np.array(V, dtype=float)
+        V[2, :] = -V[2, :]
+        return V
+
+    def column(V):
+        V = np.array(V, dtype=float)
+        V[:, 1] = -V[:, 1]
+        return V
+
+    names, details = told(made_up, "handed", row, BASES)
+    assert names == {"transpose"}, details
+    assert any("a row of a matrix where its column belongs" in d for d in details)
+    names, details = told(made_up, "handed", column, BASES)
+    assert "transpose" not in _families(names), details
+
+
+def test_a_length_where_its_square_belongs_is_a_scale(made_up):
+    """``np.sqrt(r @ r)`` for ``r @ r`` is a wrong factor; the cube of the length is not."""
+    names, details = told(made_up, "spread", lambda m, r: V(m * np.sqrt(r @ r)), SPREADS)
+    assert names == {"wrong_factor"}, details
+    names, details = told(made_up, "spread", lambda m, r: V(m * (r @ r) ** 1.5), SPREADS)
+    assert "scale" not in _families(names), details
+
+
+def test_the_reads_of_names_are_bounded_and_come_last(made_up):
+    """The angles are the names a function reads in a sine or a cosine or passes where a function of the module
+    takes one; the reads of names for others are made after every other slip of the function, so that the tier's
+    budget reaches the older slips first."""
+    functions = {f.path[-1]: f for f in mutants._functions(str(mutants._package()[0]))}
+    assert mutants._angles(functions["tilt"]) == {"phi", "theta"}
+    assert mutants._angles(functions["seat"]) == {"alpha", "gamma"}
+    assert set(mutants._defaults(functions["weight"])) == {"g"}
+    assert {ast.unparse(v) for _, v in mutants._defaults(functions["sag"])["span"]} == {"SPAN"}
+    for function in functions.values():
+        lines = tuple((first, last) for _, first, last in function.regions)
+        slips = [slip for slip, _, _ in mutants._mutated(function, lines)]
+        late = [k for k, slip in enumerate(slips) if slip in ("angle", "default", "earth", "axes")]
+        assert not late or late == list(range(late[0], len(slips))), (function.path, slips)
