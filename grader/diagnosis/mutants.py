@@ -24,7 +24,15 @@ state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]`
 pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``), a
 position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or
 ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product it is a
-factor of), and the slips of precision
+factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a slice's axes exchanged in one
+statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), and one read of a name for another of
+its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
+``R1(alpha)``: an order slip, ``wrong_angle``; the angles of a function are the names it reads in a sine or a cosine
+or passes where a function of the reference reads its parameter so), and a parameter read as the constant or the
+number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``) or, a
+gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of them: the argument ignored.  The reads
+of names come after every other slip of a function, so that the budget reaches the older slips first), and the
+slips of precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8).  A slip of precision is told only where the student's value is in the band
