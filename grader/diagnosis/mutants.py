@@ -25,8 +25,9 @@ pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T
 position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or
 ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product it is a
 factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a slice's axes exchanged in one
-statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), and one read of a name for another of
-its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
+statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
+with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for
+another of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
 ``R1(alpha)``: an order slip, ``wrong_angle``; the angles of a function are the names it reads in a sine or a cosine
 or passes where a function of the reference reads its parameter so), and a parameter read as the constant or the
 number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``) or, a
@@ -386,6 +387,7 @@ SLIPS = {
                                     "where its argument belongs: the argument is ignored"),
     "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
     "axes": ("transpose", "`{f}` takes a row of a matrix where its column belongs, or the reverse"),
+    "cycled": ("swapped", "`{f}` lists quantities in another order (the last first, or the first last)"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
 PRECISION_SLIPS = frozenset({"single", "single_argument", "short"})
@@ -1225,8 +1227,9 @@ def _angles(function: _Function) -> frozenset:
 def _name_slips(node, parent, angles: frozenset, defaults: dict):
     """One read of a name for another of its kind: an angle for another angle that the function reads
     (``np.cos(beta)`` for ``np.cos(phi)``), a parameter read as its default, its module's constant or the Earth's
-    gravity (``_defaults``: the argument ignored); and a slice's axes exchanged in one statement (``V[2, :]`` for
-    ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``)."""
+    gravity (``_defaults``: the argument ignored); a slice's axes exchanged in one statement (``V[2, :]`` for
+    ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates, say) in the order of
+    another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
@@ -1236,6 +1239,10 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict):
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
+    if isinstance(node, (ast.Tuple, ast.List)) and isinstance(node.ctx, ast.Load) and 3 <= len(node.elts) <= 6 \
+            and all(isinstance(e, ast.Name) for e in node.elts):  # ``[phi, x, y]`` for ``[x, y, phi]``
+        yield "cycled", lambda n: _with(n, elts=n.elts[-1:] + n.elts[:-1])
+        yield "cycled", lambda n: _with(n, elts=n.elts[1:] + n.elts[:1])
 
 
 def _full(index) -> bool:

@@ -1,7 +1,8 @@
 """The formula tier's reads of one name for another of its kind (``grader.diagnosis.mutants``), on a made-up problem:
 an angle read where another angle belongs (told as ``wrong_angle``), a parameter read as its default's constant or
 as its module's constant of that name (the argument ignored), a gravity read as the Earth's, a slice's axes
-exchanged (a transpose) and a length taken where its square belongs.  Each slip is named; a near miss of each
+exchanged (a transpose), a list of names that starts with its last (entries in the wrong order) and a length
+taken where its square belongs.  Each slip is named; a near miss of each
 (a value that no single read reproduces) is not told in the slip's family.  The graded mistakes on the reference
 are in ``tests/engine/names.toml``.
 """
@@ -72,6 +73,13 @@ def spread(m, r):
     """``m |r|^2``."""
     # BEGIN SOLUTION problem 97
     return np.array([m * (r @ r)])
+    # END SOLUTION
+
+
+def weighted(x, y, phi):
+    """The coordinates ``(x, y, phi)`` weighted by 1, 2 and 3."""
+    # BEGIN SOLUTION problem 97
+    return np.diag([1.0, 2.0, 3.0]) @ np.array([x, y, phi])
     # END SOLUTION
 
 
@@ -204,6 +212,16 @@ def test_a_length_where_its_square_belongs_is_a_scale(made_up):
     assert "scale" not in _families(names), details
 
 
+def test_a_list_of_names_that_starts_with_its_last_is_in_the_wrong_order(made_up):
+    """``[phi, x, y]`` for ``[x, y, phi]`` is told as entries in the wrong order; ``[phi, y, y]`` is not."""
+    weights = np.diag([1.0, 2.0, 3.0])
+    names, details = told(made_up, "weighted", lambda x, y, phi: weights @ V(phi, x, y), SEATS)
+    assert names == {"swapped"}, details
+    assert any("lists quantities in another order" in d for d in details)
+    names, details = told(made_up, "weighted", lambda x, y, phi: weights @ V(phi, y, y), SEATS)
+    assert "order" not in _families(names), details
+
+
 def test_the_reads_of_names_are_bounded_and_come_last(made_up):
     """The angles are the names a function reads in a sine or a cosine or passes where a function of the module
     takes one; the reads of names for others are made after every other slip of the function, so that the tier's
@@ -216,5 +234,5 @@ def test_the_reads_of_names_are_bounded_and_come_last(made_up):
     for function in functions.values():
         lines = tuple((first, last) for _, first, last in function.regions)
         slips = [slip for slip, _, _ in mutants._mutated(function, lines)]
-        late = [k for k, slip in enumerate(slips) if slip in ("angle", "default", "earth", "axes")]
+        late = [k for k, slip in enumerate(slips) if slip in ("angle", "default", "earth", "axes", "cycled")]
         assert not late or late == list(range(late[0], len(slips))), (function.path, slips)
