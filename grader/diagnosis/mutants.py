@@ -30,10 +30,10 @@ with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swappe
 another of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
 ``R1(alpha)``: an order slip, ``wrong_angle``; the angles of a function are the names it reads in a sine or a cosine
 or passes where a function of the reference reads its parameter so), and a parameter read as the constant or the
-number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``) or, a
-gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of them: the argument ignored.  The reads
-of names come after every other slip of a function, so that the budget reaches the older slips first), and the
-slips of precision
+number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
+``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at
+one read or at all of them: the argument ignored.  The reads of names come after every other slip of a function, so
+that the budget reaches the older slips first), and the slips of precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8).  A slip of precision is told only where the student's value is in the band
@@ -1175,8 +1175,9 @@ EARTH_GRAVITY = 9.81
 def _defaults(function: _Function) -> dict:
     """``{parameter: [(slip, value), ...]}``: what a read of each of the function's parameters may be read as
     instead, the argument then ignored: the constant or the number of its default (``WIRE_LENGTH`` of
-    ``wire_length=WIRE_LENGTH``), the module's constant of its name in capitals (``WIRE_LENGTH`` of
-    ``wire_length``), and for a gravity the Earth's (``9.81`` of ``g``)."""
+    ``wire_length=WIRE_LENGTH``), the module's constant of its name in capitals, or of its name and a number (its
+    value at the start: ``WIRE_LENGTH`` of ``wire_length``, ``ANGLES0`` of ``angles``), and for a gravity the
+    Earth's (``9.81`` of ``g``)."""
     node = function.node
     positional = node.args.posonlyargs + node.args.args
     given = dict(zip([a.arg for a in positional[len(positional) - len(node.args.defaults):]], node.args.defaults)) \
@@ -1192,7 +1193,8 @@ def _defaults(function: _Function) -> dict:
                                     or _number(default)):
             reads.append(("default", default))
         for constant in sorted(function.constants):
-            if constant.lower() == name.lower() and not (isinstance(default, ast.Name) and default.id == constant):
+            if re.fullmatch(rf"{re.escape(name)}_?\d*", constant, re.IGNORECASE) \
+                    and not (isinstance(default, ast.Name) and default.id == constant):
                 reads.append(("default", ast.Name(constant, ast.Load())))
         if _GRAVITY.match(name):
             reads.append(("earth", ast.Constant(EARTH_GRAVITY)))

@@ -29,6 +29,7 @@ import numpy as np
 
 GRAVITY = 3.7
 SPAN = 2.0
+START0 = np.array([0.5, -0.25])
 
 
 def R1(x):
@@ -66,6 +67,14 @@ def sag(load, span):
     """The sag of a beam under a load at its middle, and the load per length."""
     # BEGIN SOLUTION problem 97
     return np.array([load * span**3 / 48.0, load / span])
+    # END SOLUTION
+
+
+def advanced(start, rate, dt):
+    """One explicit Euler step from ``start``."""
+    # BEGIN SOLUTION problem 97
+    start = np.asarray(start, dtype=float)
+    return start + dt * rate * start
     # END SOLUTION
 
 
@@ -163,8 +172,9 @@ def test_an_angle_read_where_another_belongs_is_a_wrong_angle(made_up):
 
 def test_a_parameter_read_as_its_default_or_its_modules_constant_is_ignored(made_up):
     """A parameter read as the constant of its default (``GRAVITY`` for ``g``) or as the module's constant of its
-    name in capitals (``SPAN`` for ``span``, at one read) ignores the argument there; a value between the two is
-    not told as an argument ignored."""
+    name in capitals (``SPAN`` for ``span``, at one read), or of its name and a number (``START0`` for ``start``)
+    ignores the argument there; a value between the argument and the constant is not told as an argument
+    ignored."""
     names, details = told(made_up, "weight", lambda m, g: V(0.0, -m * 3.7, 0.0), WEIGHTS)
     assert names == {"ignored_argument"}, details
     assert any("where its argument belongs" in d for d in details)
@@ -173,6 +183,10 @@ def test_a_parameter_read_as_its_default_or_its_modules_constant_is_ignored(made
     names, details = told(made_up, "sag", lambda load, span: V(load * (span * 2.0)**1.5 / 48.0, load / span),
                           SAGS)
     assert "ignored_argument" not in _families(names), details
+    steps = [(V(1.0, 2.0), 0.3, 0.1), (V(-0.4, 0.9), 1.2, 0.05)]
+    start = V(0.5, -0.25)  # the module's START0: the value at the start, of the argument's name and a number
+    names, details = told(made_up, "advanced", lambda s, rate, dt: s + dt * rate * start, steps)
+    assert names == {"ignored_argument"}, details
 
 
 def test_a_gravity_read_as_the_earths_is_told(made_up):
