@@ -32,8 +32,9 @@ another of its kind: an angle where another angle belongs (``np.cos(beta)`` for 
 or passes where a function of the reference reads its parameter so), and a parameter read as the constant or the
 number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
 ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at
-one read or at all of them: the argument ignored.  The reads of names come after every other slip of a function, so
-that the budget reaches the older slips first), and the slips of precision
+one read or at all of them: the argument ignored.  The reads of names come after every other slip of every function,
+as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the slips of
+precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8).  A slip of precision is told only where the student's value is in the band
@@ -1525,11 +1526,18 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
     return owner is not None and owner[0] < problem
 
 
+#: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
+#: of every function, as many as ``MAX_MUTANTS`` leaves room for
+LATE_SLIPS = frozenset({"angle", "default", "earth", "axes", "cycled"})
+
+
 def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
-    there are more than ``MAX_MUTANTS`` (the slips cannot all be tried)."""
+    there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
+    the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for."""
     ran = _traced(package, root, probe, args)
     found: list[Mutant] = []
+    reads: list[Mutant] = []
     for function in _functions(str(root)):
         lines = tuple((first, last) for label, first, last in function.regions if abs(label - problem) <= NEIGHBOURS)
         live = _live(package, function.module, function.path)
@@ -1537,10 +1545,11 @@ def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] |
             continue
         defaulted = _defaulted(function.node)
         for slip, code, unused in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
-            found.append(Mutant(function.module, function.path, slip, code, unused, defaulted))
+            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted)
+            (reads if slip in LATE_SLIPS else found).append(mutant)
             if len(found) > MAX_MUTANTS:
                 return None
-    return found
+    return found + reads[:MAX_MUTANTS - len(found)]
 
 
 @lru_cache(maxsize=512)

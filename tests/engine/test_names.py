@@ -250,3 +250,17 @@ def test_the_reads_of_names_are_bounded_and_come_last(made_up):
         slips = [slip for slip, _, _ in mutants._mutated(function, lines)]
         late = [k for k, slip in enumerate(slips) if slip in ("angle", "default", "earth", "axes", "cycled")]
         assert not late or late == list(range(late[0], len(slips))), (function.path, slips)
+
+
+def test_the_reads_of_names_take_only_the_room_the_bound_leaves(made_up, monkeypatch):
+    """Where the other slips fill ``MAX_MUTANTS``, the reads of names are left out and the others are all tried
+    (not nothing, as where the other slips alone are past the bound)."""
+    root, package = mutants._package()
+    probe, args = made_up_probe("seat"), SEATS[0]
+    every = mutants.mutants_of(package, root, 97, probe, args)
+    others = [m for m in every if m.slip not in mutants.LATE_SLIPS]
+    assert others and len(others) < len(every)
+    monkeypatch.setattr(mutants, "MAX_MUTANTS", len(others))
+    assert [m.slip for m in mutants.mutants_of(package, root, 97, probe, args)] == [m.slip for m in others]
+    monkeypatch.setattr(mutants, "MAX_MUTANTS", len(others) - 1)
+    assert mutants.mutants_of(package, root, 97, probe, args) is None
