@@ -290,6 +290,7 @@ _TABLE = (
     _D("no_rotation", "missing_term", "the rotation of a revolute joint missing", "left out a joint's rotation"),
     _D("absolute_position", "missing_term", "an absolute position where a lever arm belongs",
        "used an absolute position instead of a lever arm"),
+    _D("extra_term", "extra_term", "a term added where it does not belong", "added a term that does not belong"),
     _D("rotation", "extra_term", "a rotation where a prismatic joint has none", "added a prismatic joint's rotation"),
     _D("acceleration_not_reset", "extra_term", "an acceleration left where none acts",
        "left an acceleration where none acts"),

@@ -28,7 +28,8 @@ factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``),
 statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
 with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for
 another of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
-``R1(alpha)``: an order slip, ``wrong_angle``; the angles of a function are the names it reads in a sine or a cosine
+``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum of the other and more,
+``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it reads in a sine or a cosine
 or passes where a function of the reference reads its parameter so), and a parameter read as the constant or the
 number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
 ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at
@@ -384,6 +385,8 @@ SLIPS = {
     "single_argument": ("float32", "`{f}` converts an argument to single precision (float32) before it uses it"),
     "short": ("rounded", "`{f}` uses a constant typed short (pi as 3.14, g as 9.8)"),
     "angle": ("wrong_angle", "`{f}` reads one angle where another belongs"),
+    "angle_sum": ("wrong_angle", "`{f}` reads one angle where another belongs"),
+    "angle_part": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
                                     "where its argument belongs: the argument is ignored"),
     "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
@@ -1227,16 +1230,36 @@ def _angles(function: _Function) -> frozenset:
     return frozenset(found)
 
 
-def _name_slips(node, parent, angles: frozenset, defaults: dict):
+def _sums(function: ast.FunctionDef) -> dict:
+    """``{name: the names it sums}`` of the names the function binds once to a sum or a difference of names
+    (``g_e = q2 + q4``)."""
+    bound: dict = {}
+    for node in ast.walk(function):
+        for target in node.targets if isinstance(node, ast.Assign) else ():
+            for name in ast.walk(target):
+                if isinstance(name, ast.Name):
+                    bound.setdefault(name.id, []).append(node.value if target is name else None)
+    found = {}
+    for name, values in bound.items():
+        value = values[0] if len(values) == 1 else None
+        if isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Add, ast.Sub)):
+            found[name] = frozenset(n.id for n in ast.walk(value) if isinstance(n, ast.Name))
+    return found
+
+
+def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict):
     """One read of a name for another of its kind: an angle for another angle that the function reads
-    (``np.cos(beta)`` for ``np.cos(phi)``), a parameter read as its default, its module's constant or the Earth's
+    (``np.cos(beta)`` for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the
+    read of the sum for its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its module's constant or the Earth's
     gravity (``_defaults``: the argument ignored); a slice's axes exchanged in one statement (``V[2, :]`` for
     ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates, say) in the order of
     another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
-                yield "angle", lambda n, other=other: ast.Name(other, ast.Load())
+                slip = "angle_sum" if node.id in sums.get(other, ()) else \
+                    "angle_part" if other in sums.get(node.id, ()) else "angle"
+                yield slip, lambda n, other=other: ast.Name(other, ast.Load())
         for slip, value in defaults.get(node.id, ()):
             yield slip, lambda n, value=value: copy.deepcopy(value)
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
@@ -1300,7 +1323,7 @@ def _mutated(function: _Function, lines: tuple):
     names, parameters = _names(function.node), _parameters(function.node)
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
-    angles, defaults = _angles(function), _defaults(function)
+    angles, defaults, sums = _angles(function), _defaults(function), _sums(function.node)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget
     places = [(None, function.node, None, False, False, False)] + [site + (False,) for site in sites] + \
         [(None, function.node, None, False, False, True)] + [site + (True,) for site in sites]
@@ -1309,7 +1332,7 @@ def _mutated(function: _Function, lines: tuple):
             slips = _default_slips(function.node, lines, defaults) if late_pass else \
                 _parameter_slips(function.node, lines)
         elif late_pass:
-            slips = () if guarded or indexing else _name_slips(node, parent, angles, defaults)
+            slips = () if guarded or indexing else _name_slips(node, parent, angles, defaults, sums)
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
@@ -1528,7 +1551,7 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
-LATE_SLIPS = frozenset({"angle", "default", "earth", "axes", "cycled"})
+LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] | None:
@@ -1775,6 +1798,9 @@ RIVALS = {
                                  "belongs"),
     "parameters_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the "
                                       "quantity belongs"),
+    "angle_sum": ("extra_term", "`{f}` reads a sum of angles where one of its terms belongs (a term added)"),
+    "angle_part": ("missing_term", "`{f}` reads one term of a sum of angles where the sum belongs (a term left "
+                                   "out)"),
 }
 
 

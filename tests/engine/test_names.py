@@ -49,6 +49,14 @@ def tilt(phi, theta, v):
     # END SOLUTION
 
 
+def end(q1, q2, d):
+    """The end of a link at ``q1 + q2``, and the orientation ``q1`` of the link before it."""
+    # BEGIN SOLUTION problem 97
+    g_e = q1 + q2
+    return np.array([d * np.cos(g_e) + np.cos(q1), d * np.sin(g_e), q1])
+    # END SOLUTION
+
+
 def seat(alpha, gamma, r):
     """A point at radius ``r``, turned by ``alpha`` and lifted by ``gamma``."""
     # BEGIN SOLUTION problem 97
@@ -170,6 +178,18 @@ def test_an_angle_read_where_another_belongs_is_a_wrong_angle(made_up):
     assert "order" not in _families(names), details
 
 
+def test_an_angle_read_as_a_sum_of_it_and_more_is_also_a_term_added(made_up):
+    """``g_e = q1 + q2`` read where ``q1`` belongs adds ``q2``: told as one angle for another and, beside it, as a
+    term added; ``q1`` read where ``g_e`` belongs leaves ``q2`` out: one angle for another and a term left out."""
+    ends = [(0.4, -1.1, 2.0), (1.3, 0.6, 0.7)]
+    names, details = told(made_up, "end", lambda a, b, d: V(d * np.cos(a + b) + np.cos(a), d * np.sin(a + b), a + b),
+                          ends)
+    assert names == {"wrong_angle", "extra_term"}, details
+    assert any("reads a sum of angles where one of its terms belongs" in d for d in details)
+    names, details = told(made_up, "end", lambda a, b, d: V(d * np.cos(a + b) + np.cos(a), d * np.sin(a), a), ends)
+    assert names == {"wrong_angle", "missing_term"}, details
+
+
 def test_a_parameter_read_as_its_default_or_its_modules_constant_is_ignored(made_up):
     """A parameter read as the constant of its default (``GRAVITY`` for ``g``) or as the module's constant of its
     name in capitals (``SPAN`` for ``span``, at one read), or of its name and a number (``START0`` for ``start``)
@@ -243,12 +263,13 @@ def test_the_reads_of_names_are_bounded_and_come_last(made_up):
     functions = {f.path[-1]: f for f in mutants._functions(str(mutants._package()[0]))}
     assert mutants._angles(functions["tilt"]) == {"phi", "theta"}
     assert mutants._angles(functions["seat"]) == {"alpha", "gamma"}
+    assert mutants._angles(functions["end"]) == {"g_e", "q1"}
     assert set(mutants._defaults(functions["weight"])) == {"g"}
     assert {ast.unparse(v) for _, v in mutants._defaults(functions["sag"])["span"]} == {"SPAN"}
     for function in functions.values():
         lines = tuple((first, last) for _, first, last in function.regions)
         slips = [slip for slip, _, _ in mutants._mutated(function, lines)]
-        late = [k for k, slip in enumerate(slips) if slip in ("angle", "default", "earth", "axes", "cycled")]
+        late = [k for k, slip in enumerate(slips) if slip in mutants.LATE_SLIPS]
         assert not late or late == list(range(late[0], len(slips))), (function.path, slips)
 
 
