@@ -360,8 +360,7 @@ SLIPS = {
                               "exchanged in one expression of `{f}`"),
     "returned_degrees": ("degrees", "`{f}` returns an angle in degrees"),
     "count": ("wrong_factor", "`{f}` divides by the number of entries where their sum belongs"),
-    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares (a length) where the sum (its square) "
-                             "belongs"),
+    "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
     "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
