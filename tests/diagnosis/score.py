@@ -85,8 +85,8 @@ or message tells it) and is left out of the measure, and the target is read on t
 on.  On the first three held-out sets that measure is the set's own (nothing in them was named when they were
 written); on a pool (one of them with its ``named`` companion) it is the issue's measure on all the realistic
 mistakes that were written; on the fourth, fifth and sixth sets it is the issue's measure itself (``--set fresh4
---unlisted``, ``--set fresh5 --unlisted``, ``--set fresh6 --unlisted``); so it is on the seventh
-(``--set fresh7 --unlisted``).
+--unlisted``, ``--set fresh5 --unlisted``, ``--set fresh6 --unlisted``); so it is on the seventh and the eighth
+(``--set fresh7 --unlisted``, ``--set fresh8 --unlisted``).
 
 ``--set fresh7`` is a seventh held-out set (``tests/diagnosis/fresh7/``), written like the sixth and kept from the
 engine's builders until they were done: from the sheet, the problem data and the reference alone, every realistic
@@ -141,6 +141,7 @@ __all__ = [
     "FRESH5",
     "FRESH6",
     "FRESH7",
+    "FRESH8",
     "SETS",
     "HELD_OUT",
     "SYMPTOMS",
@@ -182,15 +183,18 @@ FRESH6 = ROOT / "tests" / "diagnosis" / "fresh6"
 #: the seventh held-out set, written like the sixth apart from the engine, with a second family (``also``) where a
 #: slip is as truly of two
 FRESH7 = ROOT / "tests" / "diagnosis" / "fresh7"
+#: the eighth held-out set, written like the seventh apart from the engine
+FRESH8 = ROOT / "tests" / "diagnosis" / "fresh8"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
         "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
-        "fresh4": (FRESH4,), "fresh5": (FRESH5,), "fresh6": (FRESH6,), "fresh7": (FRESH7,)}
+        "fresh4": (FRESH4,), "fresh5": (FRESH5,), "fresh6": (FRESH6,), "fresh7": (FRESH7,),
+        "fresh8": (FRESH8,)}
 #: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
-#: when they were written, the fourth to the seventh every realistic mistake whose check fails
-HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7")
+#: when they were written, the fourth to the eighth every realistic mistake whose check fails
+HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7", "fresh8")
 #: the held-out sets that sample every realistic mistake whose check fails (the issue's measure: ``--unlisted``)
-SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7")
+SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7", "fresh8")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
@@ -680,7 +684,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--set", choices=sorted(SETS), default="fresh", help="fresh (default): the mistakes today's "
                         "catalogues do not name rightly; named: those they do; pool: both; fresh2, named2, pool2 and "
-                        "fresh3, named3, pool3: the same of the second and third held-out sets; fresh4 ... fresh7: "
+                        "fresh3, named3, pool3: the same of the second and third held-out sets; fresh4 ... fresh8: "
                         "the held-out sets of every realistic mistake whose check fails")
     parser.add_argument("--exercises", help="only these exercises, e.g. VI,VII")
     parser.add_argument("--problems", help="only these problems, e.g. 42,44")
