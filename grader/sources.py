@@ -113,13 +113,27 @@ def parsed(path: Path) -> ast.Module:
 
 def strings(tree: ast.Module) -> set[str]:
     """The string constants of ``tree`` short enough to name a module."""
-    return {node.value for node in ast.walk(tree)
-            if isinstance(node, ast.Constant) and isinstance(node.value, str) and len(node.value) < _NAME_LENGTH}
+    return set(_strings(tree))
+
+
+@lru_cache(maxsize=None)
+def _strings(tree: ast.Module) -> frozenset[str]:
+    """``strings`` of a tree, walked once per tree (``parsed`` gives one tree per content)."""
+    return frozenset(node.value for node in ast.walk(tree)
+                     if isinstance(node, ast.Constant) and isinstance(node.value, str)
+                     and len(node.value) < _NAME_LENGTH)
 
 
 def project_imports(tree: ast.Module, package: str) -> set[str]:
     """The modules of the project's packages that ``tree`` (a module of ``package``) imports, anywhere in the file:
     relative imports resolved, and for ``from X import y`` both ``X`` and ``X.y`` (``y`` may be a module)."""
+    return set(_project_imports(tree, package))
+
+
+@lru_cache(maxsize=None)
+def _project_imports(tree: ast.Module, package: str) -> frozenset[str]:
+    """``project_imports`` of a tree, walked once per tree and package: every problem's ``verdict_sources`` walks
+    the same machinery's modules."""
     names = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Import):
@@ -133,18 +147,24 @@ def project_imports(tree: ast.Module, package: str) -> set[str]:
                 module = node.module or ""
             names.add(module)
             names.update(f"{module}.{alias.name}" for alias in node.names)
-    return {n for n in names if n.split(".")[0] in PROJECT_PACKAGES}
+    return frozenset(n for n in names if n.split(".")[0] in PROJECT_PACKAGES)
 
 
 def absolute_imports(tree: ast.Module) -> set[str]:
     """The absolute imports anywhere in ``tree`` (function bodies included)."""
+    return set(_absolute_imports(tree))
+
+
+@lru_cache(maxsize=None)
+def _absolute_imports(tree: ast.Module) -> frozenset[str]:
+    """``absolute_imports`` of a tree, walked once per tree."""
     names = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Import):
             names.update(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom) and not node.level and node.module:
             names.add(node.module)
-    return names
+    return frozenset(names)
 
 
 def relative_imports(tree: ast.Module) -> set[str]:
