@@ -58,8 +58,8 @@ DEGENERATE_INPUT_HINT = (
     "with itself and earns nothing: fix {what} first (its own check says how)."
 )
 DEGENERATE_HINT = (
-    "An answer that does nothing (all zeros, one constant everywhere) earns nothing, even with the right shape: "
-    "compute the value from the arguments."
+    "An answer that does nothing (all zeros, one constant everywhere) earns nothing, even with the right shape. If "
+    "your code computes it, look for what leaves it constant: an argument, a starting value or a term it never uses."
 )
 
 
@@ -185,5 +185,6 @@ def assert_real(value, name: str, shape=None, reference=None) -> np.ndarray:
     a = as_array(value, name, shape if shape is not None else (None if reference is None else np.shape(reference)))
     found = flaw(a, a.shape, reference)
     if found:
-        fail(f"{name} {found}: not a computed value.\ngot:\n{format_array(a)}", DEGENERATE_HINT, DEGENERATE)
+        fail(f"{name} {found}, where the expected value is not: it earns nothing.\ngot:\n{format_array(a)}",
+             DEGENERATE_HINT, DEGENERATE)
     return a
