@@ -1,11 +1,19 @@
 """Stand-ins for a grading context's oracle and worker in the diagnosis engine's unit tests: the reference's and the
-student's functions given by probe name, called in this process."""
+student's functions given by probe name, called in this process; and a made-up package of one problem that the
+formula tier mutates in place of the reference."""
+
+import contextlib
+import itertools
 
 import numpy as np
 
+from grader.diagnosis import mutants
 from grader.errors import StudentFault
+from grader.private import drop_private, private_import
 
-__all__ = ["StandInOracle", "StandInChild"]
+__all__ = ["StandInOracle", "StandInChild", "made_up_package"]
+
+_NUMBERS = itertools.count()
 
 
 class StandInOracle:
@@ -34,3 +42,19 @@ class StandInChild:
         if probe not in self.functions:
             raise StudentFault(f"your code has no {probe}")
         return self.functions[probe](*args)
+
+
+@contextlib.contextmanager
+def made_up_package(tmp_path, monkeypatch, source: str, number: int, label: str):
+    """A package of one made-up problem (``problem_<number>.py`` holding ``source``), imported privately under a
+    name of its own, that the formula tier mutates in place of the reference while the context lasts."""
+    root = tmp_path / f"made_up_{label}"
+    root.mkdir()
+    (root / "__init__.py").write_text('"""A made-up package."""\n')
+    (root / f"problem_{number}.py").write_text(source)
+    package = private_import(f"_made_up_{label}_{next(_NUMBERS)}", root)
+    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
+    try:
+        yield package
+    finally:
+        drop_private(package)

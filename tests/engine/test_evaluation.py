@@ -15,7 +15,6 @@ how cheaply it is found.
 from __future__ import annotations
 
 import importlib
-import itertools
 import math
 from pathlib import Path
 from types import SimpleNamespace
@@ -28,11 +27,11 @@ from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at, declaration
-from grader.private import drop_private, private_import
 from probes._codec import decode, encode
 
+from .stand_ins import made_up_package
+
 TIGHT = Tol("tight", 1e-9, 1e-9)
-_NUMBERS = itertools.count()
 
 SOURCE = '''"""A made-up problem for the tests of the tier's evaluation."""
 
@@ -58,14 +57,8 @@ def grow(items, x):
 @pytest.fixture
 def made_up(tmp_path, monkeypatch):
     """A package of one made-up problem (97) that the tier mutates in place of the reference."""
-    root = tmp_path / "made_up"
-    root.mkdir()
-    (root / "__init__.py").write_text('"""A made-up package."""\n')
-    (root / "problem_97.py").write_text(SOURCE)
-    package = private_import(f"_made_up_evaluation_{next(_NUMBERS)}", root)
-    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
-    yield package
-    drop_private(package)
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 97, "evaluation") as package:
+        yield package
 
 
 def scene(check_id: str):

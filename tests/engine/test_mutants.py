@@ -32,6 +32,7 @@ from grader.private import drop_private, private_import
 from grader.results import Status
 from probes._codec import decode, encode
 
+from .stand_ins import made_up_package
 from ..kit_support import (  # noqa: F401 (fixtures)
     assert_named_failure,
     assert_no_catalogue_names_it,
@@ -542,14 +543,8 @@ def arm_reach(q, d):
 @pytest.fixture
 def made_up(tmp_path, monkeypatch):
     """A package of one made-up problem (98) that the tier mutates in place of the reference."""
-    root = tmp_path / "made_up"
-    root.mkdir()
-    (root / "__init__.py").write_text('"""A made-up package."""\n')
-    (root / "problem_98.py").write_text(SOURCE)
-    package = private_import(f"_made_up_{next(_NUMBERS)}", root)
-    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
-    yield package
-    drop_private(package)
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 98, "mutants") as package:
+        yield package
 
 
 def made_up_probe(name):

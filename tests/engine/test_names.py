@@ -9,7 +9,6 @@ are in ``tests/engine/names.toml``.
 
 import ast
 import importlib
-import itertools
 
 import numpy as np
 import pytest
@@ -17,11 +16,10 @@ import pytest
 from checks._diagnoses import families_of
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of
-from grader.private import drop_private, private_import
 
+from .stand_ins import made_up_package
 from .test_mutants import TIGHT, scene
 
-_NUMBERS = itertools.count()
 
 SOURCE = '''"""A made-up problem of names read for one another."""
 
@@ -113,14 +111,8 @@ def handed(V):
 @pytest.fixture
 def made_up(tmp_path, monkeypatch):
     """A package of one made-up problem (97) that the tier mutates in place of the reference."""
-    root = tmp_path / "made_up_names"
-    root.mkdir()
-    (root / "__init__.py").write_text('"""A made-up package."""\n')
-    (root / "problem_97.py").write_text(SOURCE)
-    package = private_import(f"_made_up_names_{next(_NUMBERS)}", root)
-    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
-    yield package
-    drop_private(package)
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 97, "names") as package:
+        yield package
 
 
 def R1(x):

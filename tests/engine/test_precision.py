@@ -10,7 +10,6 @@ grades in ``tests/engine/test_reached.py``.
 """
 
 import importlib
-import itertools
 
 import numpy as np
 import pytest
@@ -19,12 +18,12 @@ from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
-from grader.private import drop_private, private_import
+from grader.private import drop_private
 
+from .stand_ins import made_up_package
 from .test_mutants import BEARINGS, evidence, planted_package, scene
 
 TIGHT = Tol("tight", 1e-9, 1e-9)
-_NUMBERS = itertools.count()
 
 
 def named(found) -> set:
@@ -125,14 +124,8 @@ def weight(m):
 @pytest.fixture
 def made_up(tmp_path, monkeypatch):
     """A package of one made-up problem (97) that the tier mutates in place of the reference."""
-    root = tmp_path / "made_up"
-    root.mkdir()
-    (root / "__init__.py").write_text('"""A made-up package."""\n')
-    (root / "problem_97.py").write_text(SOURCE)
-    package = private_import(f"_made_up_precision_{next(_NUMBERS)}", root)
-    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
-    yield package
-    drop_private(package)
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 97, "precision") as package:
+        yield package
 
 
 def shown_alone(package, name, student, args):

@@ -15,7 +15,6 @@ Each is shown on a mistake planted into a made-up problem, and each has its near
 """
 
 import importlib
-import itertools
 
 import numpy as np
 import pytest
@@ -25,7 +24,6 @@ from grader.diagnosis import Declaration
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
 from grader.diagnosis.grammar import unturned
-from grader.private import drop_private, private_import
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
     assert_told_alike,
@@ -33,11 +31,11 @@ from tests.kit_support import (  # noqa: F401 (fixtures)
 )
 from tests.submissions import Planted
 
+from .stand_ins import made_up_package
 from .test_ignored import _explain
 from .test_mutants import scene
 
 TIGHT = Tol("tight", 1e-9, 1e-9)
-_NUMBERS = itertools.count()
 
 SOURCE = '''"""A made-up problem whose slips have rivals of another family."""
 
@@ -122,14 +120,8 @@ def lean(v, s=0.4):
 @pytest.fixture
 def made_up(tmp_path, monkeypatch):
     """A package of one made-up problem (98) that the formula tier mutates in place of the reference."""
-    root = tmp_path / "made_up"
-    root.mkdir()
-    (root / "__init__.py").write_text('"""A made-up package."""\n')
-    (root / "problem_98.py").write_text(SOURCE)
-    package = private_import(f"_made_up_rivals_{next(_NUMBERS)}", root)
-    monkeypatch.setattr(mutants, "_package", lambda: (root, package))
-    yield package
-    drop_private(package)
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 98, "rivals") as package:
+        yield package
 
 
 def _found(package, name, student, inputs, untested=False, unreached=(), probe=None, tol=TIGHT):
