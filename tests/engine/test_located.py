@@ -93,26 +93,38 @@ def _explain_points(monkeypatch, rows, asked=(0, 1, 2)):
     return explain(Ctx(), [evidence])
 
 
-def _entry_sign(i, value):
+def entry_sign(i, value):
+    """The value at the ``i``-th point with its second entry's sign slipped."""
     return value * np.array([1.0, -1.0])
 
 
-def test_a_value_at_one_of_several_points_is_compared_at_a_second_point(monkeypatch):
-    finding = _explain_points(monkeypatch, _entry_sign)
+def assert_told_on_a_second_point(explain_points, monkeypatch):
+    """A slip at every point (``explain_points(monkeypatch, rows)``: the engine's finding where the student's value
+    at point ``i`` is ``rows(i, expected)``) is told, on the point shown and a second one."""
+    finding = explain_points(monkeypatch, entry_sign)
     assert finding is not None and finding.names == ("sign_flip",), finding
     assert "on the input shown and on a second one" in finding.hint, finding.hint
+
+
+def assert_ruled_out_by_a_second_point(explain_points, monkeypatch):
+    """A slip at the first point only (the others' values are twice the expected ones) is no cause."""
+    finding = explain_points(monkeypatch, lambda i, value: entry_sign(i, value) if i == 0 else 2 * value)
+    assert finding is None or not finding.names, finding
+
+
+def test_a_value_at_one_of_several_points_is_compared_at_a_second_point(monkeypatch):
+    assert_told_on_a_second_point(_explain_points, monkeypatch)
 
 
 def test_a_slip_that_the_second_point_does_not_show_is_no_cause(monkeypatch):
     """The first point's value is the expected one with an entry's sign slipped, the second point's is not: one
     point alone would tell the slip, the second rules it out."""
-    finding = _explain_points(monkeypatch, lambda i, value: _entry_sign(i, value) if i == 0 else 2 * value)
-    assert finding is None or not finding.names, finding
+    assert_ruled_out_by_a_second_point(_explain_points, monkeypatch)
 
 
 def test_a_point_the_check_never_asked_the_reference_at_is_no_second_input(monkeypatch):
     monkeypatch.setitem(engine.DECLARATIONS, "stub.value", Declaration(args=("scalar", "scalar"), names=("m", "a")))
-    batch = np.array([_entry_sign(i, _value(*p)) for i, p in enumerate(POINTS)])
+    batch = np.array([entry_sign(i, _value(*p)) for i, p in enumerate(POINTS)])
     log = [("reference", "stub.value", tuple(POINTS[0]), _value(*POINTS[0])),
            ("student", "stub.symbolic", (POINTS,), batch)]
     student = evaluated(log, batch[0].copy(), TIGHT)

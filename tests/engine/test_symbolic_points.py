@@ -21,6 +21,8 @@ from grader.checking import Tol
 from grader.diagnosis import Evidence, explain
 from grader.diagnosis.evidence import Source, evaluated, sibling
 from tests.engine.stand_ins import StandInChild, StandInOracle
+from tests.engine.test_located import (assert_ruled_out_by_a_second_point, assert_told_on_a_second_point,
+                                       entry_sign)
 
 from tests.kit_support import (  # noqa: F401 (fixtures)
     assert_told_alike,
@@ -88,26 +90,19 @@ def _explain_points(monkeypatch, rows, points=POINTS):
     return explain(Ctx(), [Evidence(np.array(got), expected, TIGHT, "x", np.array(got), expected)])
 
 
-def _entry_sign(i, value):
-    return value * np.array([1.0, -1.0])
-
-
 def test_a_slip_at_every_point_is_told_on_two_of_them(monkeypatch):
-    finding = _explain_points(monkeypatch, _entry_sign)
-    assert finding is not None and finding.names == ("sign_flip",), finding
-    assert "on the input shown and on a second one" in finding.hint, finding.hint
+    assert_told_on_a_second_point(_explain_points, monkeypatch)
 
 
 def test_a_slip_that_the_second_point_does_not_show_is_no_cause(monkeypatch):
     """The first point's value is the expected one with an entry's sign slipped, the others' are not: the first
     point alone would tell the slip, the second rules it out."""
-    finding = _explain_points(monkeypatch, lambda i, value: _entry_sign(i, value) if i == 0 else 2 * value)
-    assert finding is None or not finding.names, finding
+    assert_ruled_out_by_a_second_point(_explain_points, monkeypatch)
 
 
 def test_a_point_where_the_answer_holds_is_passed_over():
-    answer = {"values": [{"x": _entry_sign(0, _value(POINTS[0]))}, {"x": _value(POINTS[1])},
-                         {"x": _entry_sign(2, _value(POINTS[2]))}]}
+    answer = {"values": [{"x": entry_sign(0, _value(POINTS[0]))}, {"x": _value(POINTS[1])},
+                         {"x": entry_sign(2, _value(POINTS[2]))}]}
     expected_root = _values(POINTS)
     evidence = Evidence(answer["values"][0]["x"], expected_root["x"][0], TIGHT, "x",
                         source=Source("stub.values", (POINTS,), ("x", 0), expected_root),
@@ -122,7 +117,7 @@ def test_calls_at_other_points_give_no_second_point():
     """The student's answer evaluated at points other than the reference's (or one probe on both sides, which the
     engine draws a second input for itself) is no second point."""
     elsewhere = [dict(p, a=p["a"] + 1.0) for p in POINTS]
-    answer = {"values": [{"x": _entry_sign(i, _value(p))} for i, p in enumerate(POINTS)]}
+    answer = {"values": [{"x": entry_sign(i, _value(p))} for i, p in enumerate(POINTS)]}
     expected_root = _values(POINTS)
 
     def second(student_points, student_probe="stub.answer"):
