@@ -4,6 +4,8 @@ the comparison of a live report with a kit report."""
 from __future__ import annotations
 
 import copy
+import fcntl
+import pickle
 import re
 from pathlib import Path
 
@@ -47,11 +49,24 @@ def strict(monkeypatch):
 
 
 @pytest.fixture(scope="session")
-def answer_key():
+def answer_key(request, tmp_path_factory):
+    """The kit's key, recorded once per run: the first test process of a parallel run (pytest-xdist) to need it
+    records it and leaves a copy in the run's shared temporary folder, which the other processes load; the other
+    processes wait for it (a lock) rather than record it again."""
     from grader.kit import record_key
 
-    key, _ = record_key(seed=KIT_SEED)
-    return key
+    if not hasattr(request.config, "workerinput"):  # a run in one process
+        return record_key(seed=KIT_SEED)[0]
+    shared = tmp_path_factory.getbasetemp().parent / f"kit-answer-key-{KIT_SEED}.pickle"
+    with open(shared.with_suffix(".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if shared.exists():
+            return pickle.loads(shared.read_bytes())
+        key, _ = record_key(seed=KIT_SEED)
+        partial = shared.with_suffix(".partial")
+        partial.write_bytes(pickle.dumps(key, protocol=pickle.HIGHEST_PROTOCOL))
+        partial.replace(shared)
+        return key
 
 
 @pytest.fixture(scope="session")
