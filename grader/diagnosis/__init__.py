@@ -73,7 +73,10 @@ The grammar:
   as asked, spaced as a grid of one more or one fewer), a constant offset, a state read from the wrong row (of the
   run, or of the state at an event: another of its rows, or a slice of the whole state there from another start,
   where the event itself is found where the reference's is), the state at an event read from the run's last output
-  before it, a wrong initial state, an event found late or early, an error that grows with the step, the run's
+  before it, a wrong initial state (and, beside it, the slip of a value that gives the student's start from the
+  given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start typed
+  rounded, its entries exchanged),
+  an event found late or early, an error that grows with the step, the run's
   parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the
   reference re-run so: a run clearly another than the reference's, or one far nearer to the student's than the
   reference's is); a randomized comparison's second failing run must show the same cause.

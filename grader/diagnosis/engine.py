@@ -21,6 +21,8 @@ from .evidence import (
     counterpart,
     evaluated,
     at_point,
+    numbers_told,
+    ONE_INPUT_NUMBERS,
     sibling,
     Declaration,
     declaration,
@@ -54,6 +56,7 @@ from .mutants import KIT_NOTE, left_to_live, mutant_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
 from .runs import (
+    aligned_runs,
     FIXED_STEPS,
     INTEGRATION,
     is_run,
@@ -513,6 +516,9 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         if found and second is not None:  # a randomized comparison's second failing run: the causes of both
             again = {h.key for h in run_slips(scene, second, decl, integration)}
             found = [h for h in found if h.key in again]
+        start = next((h for h in found if h.key == START_KEY), None)
+        if start is not None:
+            found += _start_slips(run, decl, start.cost)
     if run is not None:
         trace.note("run", found=[h.name for h in found])
     described = [] if run is not None else _described(scene, first)
@@ -568,6 +574,36 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)
     return _told(_beside(tiers), _where(evidences))
+
+
+
+#: the key of the run tier's start that differs from the given one (``runs.motion_slips``)
+START_KEY = "motion:start"
+
+
+def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
+    """What made a run start from another state than the given one: a start that differs (``START_KEY``) is what
+    the answer shows, and the grammar's slips of a value (``output_slips``: entries exchanged, a sign, a factor,
+    degrees; ``precision_slips``: the start rounded) that give the student's start from the given one say what
+    produced it.  Each is told beside the start that differs, at its ``cost``: the start is wrong, and so made.  The
+    start is one value, so it must say enough of its slip (``numbers_told``, ``ONE_INPUT_NUMBERS``)."""
+    aligned = aligned_runs(run, decl)
+    if aligned is None:
+        return []
+    t, G, R, t_r, _ = aligned
+    keys = [k for k in decl.motion.get("states", ()) if k in G and abs(t[0] - t_r[0]) < 1e-9]
+    if not keys:
+        return []
+    got = np.concatenate([np.ravel(G[k][0]) for k in keys])
+    E = np.concatenate([np.ravel(R[k][0]) for k in keys])
+    if not np.all(np.isfinite(got)) or numbers_told(got, E, run.tol) < ONE_INPUT_NUMBERS:
+        return []
+    slips = precision_slips(got, E, run.tol) + [
+        h for h, value in output_slips(E, {}, None, got)
+        if not h.twin and value.shape == got.shape and within(got, value, run.tol) and distinct(value, E, run.tol)]
+    trace.note("start", found=[h.name for h in slips])
+    return [Hypothesis(f"{START_KEY}:{h.key}", h.name, cost, f"your run's start is the given one changed so: "
+                       f"{h.detail}") for h in slips]
 
 
 #: the unlike slips of the formula tier that may reproduce one answer on every input and still be told: more say

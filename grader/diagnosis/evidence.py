@@ -35,6 +35,8 @@ __all__ = [
     "array_of",
     "within",
     "distinct",
+    "ONE_INPUT_NUMBERS",
+    "numbers_told",
 ]
 
 
@@ -506,3 +508,28 @@ def distinct(value, expected, tol: Tol) -> bool:
     if value.shape != expected.shape:
         return True
     return bool(np.any(np.abs(value - expected) > DISTINCT * (tol.atol + tol.rtol * np.abs(expected))))
+
+
+#: the numbers a value the engine has one of (a run's start) must differ in, each another value, for a slip of the
+#: grammar found on it to be told
+ONE_INPUT_NUMBERS = 3
+
+
+def numbers_told(got, expected, tol: Tol) -> int:
+    """How many numbers one value says of its slip: the distinct values among its entries that differ from the
+    expected value beyond the tolerance (a value of another shape: the distinct values of all its entries).  A
+    slip that reproduces the value reproduces these numbers and no others, so every slip found on it stands on
+    them alike.  One number (one entry) or two (a pair exchanged) are matched by some of the grammar's many slips
+    by chance (two entries exchanged are two entries of a 90 degree rotation's other sense), and entries that
+    repeat one value say it once."""
+    got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    if got.shape == expected.shape:
+        off = np.abs(got - expected) > tol.atol + tol.rtol * np.abs(expected)
+        values = got[off]
+    else:
+        values = got.ravel()
+    values = np.sort(values[np.isfinite(values)])
+    if values.size == 0:
+        return 0
+    gaps = np.diff(values) > tol.atol + tol.rtol * np.abs(values[1:])
+    return 1 + int(np.count_nonzero(gaps))

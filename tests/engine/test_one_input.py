@@ -1,0 +1,86 @@
+"""A run that starts from another state than the given one.
+
+A start that differs is what the answer shows, not what made it so: where the grammar of a value gives the
+student's start from the given one (rounded, entries exchanged, negated), that slip is told beside the wrong start
+(``engine._start_slips``).  The start is one value, so it must say enough of its slip: the entries that differ from
+the given start must be ``evidence.ONE_INPUT_NUMBERS`` distinct values or more (``evidence.numbers_told``); one
+number (one entry rounded) or two (a pair exchanged) are matched by some of the grammar's many slips by chance, and
+entries that repeat one value say it once.
+
+The runs below are made up, each a slip none of the fresh sets holds; the near misses are a start no slip gives and
+the same slip on too few numbers.
+"""
+
+import numpy as np
+
+import grader.diagnosis as engine
+from grader.checking import Tol
+from grader.diagnosis import Declaration, Evidence, explain
+from grader.diagnosis.evidence import ONE_INPUT_NUMBERS, numbers_told
+from tests.engine.stand_ins import StandInChild, StandInOracle
+
+TIGHT = Tol("tight", 1e-9, 1e-9)
+
+
+class _Ctx:
+    check_id = "p99.one"
+    oracle = StandInOracle({})
+    child = StandInChild({})
+    seed = 1
+
+
+def _names(finding):
+    return () if finding is None else finding.names
+
+
+def test_the_numbers_a_value_says_are_its_distinct_values_off_the_expected_ones():
+    expected = np.array([0.3, -1.2, 0.7, 2.5])
+    assert numbers_told(-expected, expected, TIGHT) == 4
+    assert numbers_told(expected[[0, 2, 1, 3]], expected, TIGHT) == 2  # a pair exchanged
+    assert numbers_told(np.array([0.3, -1.2, -0.7, 2.5]), expected, TIGHT) == 1
+    assert numbers_told(np.array([0.3, 5.0, 5.0, 5.0]), expected, TIGHT) == 1  # one value, repeated
+    assert numbers_told(np.array(0.87), np.array(0.8734), TIGHT) == 1
+    assert numbers_told(expected, expected, TIGHT) == 0
+    assert numbers_told(np.zeros((2, 2)), expected, TIGHT) == 1  # another shape: its own values
+    assert ONE_INPUT_NUMBERS == 3
+
+
+# ------------------------------------------------------------------------------------------ a run's start
+
+T = np.linspace(0.0, 1.0, 51)
+#: the given start of three angles, and their start rates
+START, RATES = np.array([np.pi / 5, -np.pi / 7, np.pi / 3]), np.array([0.4, -0.2, 0.9])
+
+
+def _run(q0):
+    """Three angles that swing (a start off keeps no constant offset)."""
+    return {"t": T, "q": np.outer(np.cos(3 * T), q0) + np.outer(np.sin(3 * T), RATES / 3)}
+
+
+def _explain_start(monkeypatch, start):
+    """A run ``turn()`` of three angles from the module's start, the student's from ``start``."""
+    monkeypatch.setitem(engine.DECLARATIONS, "stub.turn", Declaration(motion={"time": "t", "states": ("q",)}))
+    expected, got = _run(START), _run(start)
+
+    class Ctx(_Ctx):
+        calls = [("reference", "stub.turn", (), expected), ("student", "stub.turn", (), got)]
+        oracle = StandInOracle({"stub.turn": lambda: expected})
+        child = StandInChild({"stub.turn": lambda: got})
+
+    return explain(Ctx(), [Evidence(got["q"], expected["q"], Tol("band", 1e-3), "q", got, expected)])
+
+
+def test_a_start_typed_short_is_told_as_rounded_beside_the_wrong_start(monkeypatch):
+    finding = _explain_start(monkeypatch, np.round(START, 2))
+    assert set(_names(finding)) == {"initial_state", "rounded"}, finding
+    assert "rounded to 2 decimals" in finding.hint, finding.hint
+
+
+def test_a_start_that_no_slip_gives_is_told_as_a_wrong_start_alone(monkeypatch):
+    """The near misses: a start off by amounts no slip of a value gives, and a start with one angle rounded (one
+    number says nothing of a rounding)."""
+    finding = _explain_start(monkeypatch, START + np.array([0.013, -0.021, 0.008]))
+    assert _names(finding) == ("initial_state",), finding
+    one = START.copy()
+    one[1] = round(one[1], 2)
+    assert _names(_explain_start(monkeypatch, one)) == ("initial_state",)
