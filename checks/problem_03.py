@@ -66,6 +66,8 @@ ANGLE = Tol("angle, MuJoCo vs the reference's ODE", 0.05)
 RATE_TOL = Tol("rate, MuJoCo vs the reference's ODE", 0.5)
 #: 3(c): joint 1 follows q1 = t (a servo of kp = 1000 stays within 1e-4 rad)
 DRIVEN = Tol("joint 1 on its prescribed motion", 0.01)
+#: the sheet's integration of every model: RK4 at 1 ms
+SHEET_INTEGRATOR, SHEET_TIMESTEP = "rk4", 0.001
 FINITE = dict(allow_nan=False, allow_infinity=False)
 BRICKS = st.tuples(st.floats(0.05, 1.0, **FINITE), st.floats(0.005, 0.1, **FINITE), st.floats(0.005, 0.1, **FINITE),
                    st.floats(100.0, 10000.0, **FINITE))
@@ -281,6 +283,18 @@ def check_driven_model(ctx):
     _density(ctx, "driven")
 
 
+def _stepped_otherwise(run) -> str:
+    """How a run of the student's model is integrated otherwise than the sheet's (RK4 at 1 ms), in words ("" where
+    it is integrated as the sheet's, or the run does not say)."""
+    integrator, timestep = run.get("integrator"), run.get("timestep")
+    found = []
+    if timestep is not None and not np.isclose(float(timestep), SHEET_TIMESTEP, rtol=1e-6, atol=0.0):
+        found.append(f"steps at {float(timestep) * 1000:g} ms")
+    if integrator is not None and str(integrator).lower() != SHEET_INTEGRATOR:
+        found.append(f"integrates with {integrator}")
+    return " and ".join(found)
+
+
 def _other_rate(ctx):
     """Joint 1 turns at the rate given: the model built for ``OTHER_RATE`` follows q1 = OTHER_RATE t (a model with
     the sheet's rate typed in would pass the run at the sheet's rate)."""
@@ -318,6 +332,13 @@ def check_driven_rate(ctx):
         fail(message, "The rate is in rad/s: you converted it as if it were in degrees (or converted degrees "
              "twice).", "rate_degrees")
     if np.isclose(slope, RATE, rtol=0.02):
+        stepped = _stepped_otherwise(got)
+        if stepped:  # a servo that lags and a model stepped otherwise both stray from q1 = t on the right average
+            fail(f"{message}\nYour model {stepped}; the sheet's models integrate with RK4 at 1 ms.",
+                 "On average the rate is right but the joint strays from q1 = t. Your model is not integrated as the "
+                 "sheet's (<option integrator=\"RK4\" timestep=\"0.001\"/>): with another step or integrator the "
+                 "servo holds the joint otherwise. If it still strays with the sheet's, look at the servo (kp = 1000, "
+                 "no damping kv).", "")
         fail(message, "On average the rate is right but the joint strays from q1 = t: stiffen the servo (kp = 1000) "
              "and drop its damping kv, which lags the joint behind a moving setpoint.", "soft_servo")
     if np.isclose(slope, -RATE, rtol=0.05):

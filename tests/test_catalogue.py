@@ -48,3 +48,16 @@ def test_passing_tree_comparisons_compute_no_mistaken_recursion_but_the_key_hold
     recorded = [entry["checks"] for call, entry in key.calls.items() if call.startswith(MISTAKEN + "[")]
     pooled = len(key.pools["p31.random_trees#0"])
     assert sum("p31.random_trees" in checks for checks in recorded) >= pooled  # one catalogue per recorded input
+
+
+def test_a_servo_too_soft_is_told_only_where_the_model_is_integrated_as_the_sheets():
+    """Problem 3(c)'s joint 1 strays from q1 = t at the right average rate: a servo too soft does that, and so does
+    a model stepped otherwise than the sheet's (RK4 at 1 ms).  The check names the servo only where the run says
+    the model is integrated as the sheet's; otherwise it says what differs."""
+    from checks.problem_03 import _stepped_otherwise
+
+    assert _stepped_otherwise({"integrator": "rk4", "timestep": 0.001}) == ""
+    assert _stepped_otherwise({"integrator": "rk4", "timestep": 0.002}) == "steps at 2 ms"
+    assert _stepped_otherwise({"integrator": "euler", "timestep": 0.001}) == "integrates with euler"
+    assert _stepped_otherwise({"integrator": "implicitfast", "timestep": 0.005}) == \
+        "steps at 5 ms and integrates with implicitfast"
