@@ -219,8 +219,11 @@ FAMILIES = (
 )
 
 #: the vocabulary's families that say what an answer shows rather than what the slip did (a reflection, a run that
-#: diverges): a name of one names no cause, whatever ``FALLBACK`` read it as when the first set was written
-SYMPTOMS = ("handedness", "orientation", "diverged")
+#: diverges) and its verdicts on an answer that does nothing (zeros or one constant, the identity, nothing returned,
+#: credit resting on such results): a name of one names no cause, whatever ``FALLBACK`` read it as when the first
+#: set was written.  A slip of any family may leave an answer constant (a body started at rest, an argument or a
+#: term never used), so saying that it is constant says what the answer is, not what made it so
+SYMPTOMS = ("handedness", "orientation", "diverged", "constant", "identity", "stub", "degenerate_input")
 
 #: the course's exercises and their problems
 EXERCISES = {"I": range(1, 6), "II": range(6, 11), "III": range(11, 21), "IV": range(21, 29),

@@ -546,3 +546,14 @@ def test_a_name_that_states_a_symptom_of_several_families_names_no_cause():
         assert family_of(name) is None, name
         assert classify(name, true, family_of) == "none", (name, true)
     assert classify("reflection or transpose", "transpose", family_of) == "right"
+
+
+def test_a_verdict_on_an_answer_that_does_nothing_names_no_cause():
+    """An answer that does nothing (zeros or one constant, the identity, nothing returned, credit resting on such
+    results) may come from a slip of any family (a body started at rest, an argument or a term never used): told,
+    its verdict names no cause, neither a wrong one nor one of unknown family."""
+    family_of = naming().family_of
+    for name in ("degenerate", "degenerate_input", "constant_answer", "always_zero", "identity", "none"):
+        assert family_of(name) is None, name
+        assert classify(name, "initial_state", family_of) == "none", name
+    assert classify("degenerate or initial_state", "initial_state", family_of) == "right"
