@@ -2,6 +2,7 @@
 
 from . import module, probe
 from ._forms import Arr, Dict, Items, Seq
+from ._symbolic import lambdify
 
 NAMES = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
 
@@ -45,7 +46,7 @@ def symbolic(pkg, points):
                 f"{unknown or sorted(map(str, expr.atoms(sp.Function)))}"
             )
         symbols = [known.get(n, sp.Symbol(n)) for n in NAMES]
-        func = sp.lambdify(symbols, expr, modules="numpy")
+        func = lambdify(symbols, expr, modules="numpy")
         out[key] = [func(*(p[n] for n in NAMES)) for p in points]
     return out
 

@@ -4,6 +4,7 @@ import numpy as np
 
 from . import module, probe
 from ._forms import Arr, Dict, Either, Text
+from ._symbolic import lambdify
 
 BODIES = ("cuboid", "ellipsoid", "particles")
 SYMBOLS = ("m", "a", "b", "c")
@@ -37,7 +38,7 @@ def symbolic(pkg, name, points):
     unknown = sorted(set(symbols) - set(SYMBOLS))
     if unknown:
         return f"uses the symbols {unknown}; only m, a, b, c are allowed"
-    f = sp.lambdify([symbols.get(n, sp.Symbol(n)) for n in SYMBOLS], matrix, "numpy")
+    f = lambdify([symbols.get(n, sp.Symbol(n)) for n in SYMBOLS], matrix, "numpy")
     values = [np.array(f(*p), dtype=float) for p in points]
     return np.array(values)
 

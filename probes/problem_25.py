@@ -5,6 +5,7 @@ import numpy as np
 
 from . import _trees, module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
+from ._symbolic import lambdify
 from ._trees import OUTLINE, POSES
 
 _SYMBOLIC = {}
@@ -39,7 +40,7 @@ def _symbolic(pkg):
         symbols = list(sp.Matrix(q))
         x, J = sp.Matrix(x), sp.Matrix(J)
         free = sorted(str(s) for s in (x.free_symbols | J.free_symbols) - set(symbols))
-        functions = None if free else (sp.lambdify(symbols, x, "numpy"), sp.lambdify(symbols, J, "numpy"))
+        functions = None if free else (lambdify(symbols, x, "numpy"), lambdify(symbols, J, "numpy"))
         return functions, free, [str(s) for s in symbols]
 
     return remembered(_SYMBOLIC, pkg.__name__, make)

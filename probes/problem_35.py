@@ -4,6 +4,7 @@ import numpy as np
 
 from . import module, probe, remembered
 from ._forms import Arr, Dict, Items, Seq, Text
+from ._symbolic import lambdify
 
 #: the entries of a joint-function dict, vectors as 3 x 1 and S, R as 3 x nq
 KEYS = ("A_DpDs", "Dp_r_DpDs", "r_rel_dot", "r_rel_ddot", "omega_rel", "omega_rel_dot", "S", "R")
@@ -25,7 +26,7 @@ def _lambdified(result, symbols):
         if free:
             problems[name] = "contains the symbols " + ", ".join(sorted(map(str, free)))
             continue
-        functions[name] = sp.lambdify(symbols, expr, "numpy")
+        functions[name] = lambdify(symbols, expr, "numpy")
     return functions, problems
 
 

@@ -5,6 +5,7 @@ import numpy as np
 
 from . import module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
+from ._symbolic import lambdify
 
 #: the symbols the answer may use
 NAMES = ("q1", "q2", "dq1", "dq2", "l1", "l2", "m1", "m2", "g")
@@ -44,7 +45,7 @@ def _functions(pkg):
         if unknown:
             return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
     return remembered(_ANSWERS, ("functions", id(answer)), lambda: {
-        key: sp.lambdify([sp.Symbol(name) for name in NAMES],
+        key: lambdify([sp.Symbol(name) for name in NAMES],
                          matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
         for key, matrix in answer.items()})
 

@@ -5,6 +5,7 @@ import numpy as np
 
 from . import module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
+from ._symbolic import lambdify
 
 #: the symbols the answers may use
 NAMES = ("s", "l", "d", "m", "theta", "phid")
@@ -54,7 +55,7 @@ def evaluate(pkg, key, points):
     problem = _problem(key, matrix)
     if problem:
         return {"problem": problem}
-    function = remembered(_ANSWERS, ("function", pkg.__name__, id(matrix)), lambda: sp.lambdify(
+    function = remembered(_ANSWERS, ("function", pkg.__name__, id(matrix)), lambda: lambdify(
         [sp.Symbol(name) for name in NAMES], matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}),
         "numpy"))
     return [np.array(function(*(float(point[name]) for name in NAMES)), dtype=float).reshape(SHAPES[key])
