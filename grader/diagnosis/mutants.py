@@ -76,6 +76,7 @@ from __future__ import annotations
 
 import __future__
 import ast
+import contextlib
 import copy
 import ctypes
 import itertools
@@ -164,6 +165,7 @@ class Mutant:
     code: object
     unused: tuple = ()  # the parameters that the slip leaves unused (``anchor - I_r_E`` as ``I_r_E``)
     defaulted: frozenset = frozenset()  # its parameters with a default (``anchor=ANCHOR``)
+    quick: object = None  # the code without sympy's simplifications (``_unsimplified``), where it has any
 
     @property
     def function(self) -> str:
@@ -195,6 +197,7 @@ class _Function:
     attributes: frozenset = frozenset()  # the attributes the reference reads or sets (``B_omega_B``)
     constants: frozenset = frozenset()  # the constants its module binds at its top level (``WIRE_LENGTH``)
     angled: frozenset = frozenset()  # ``(function, position)`` of the reference's parameters that are angles
+    sympy: frozenset = frozenset()  # the names its module's top level binds to sympy (``sp``) or its simplifiers
 
 
 @lru_cache(maxsize=4)
@@ -210,11 +213,11 @@ def _functions(root: str) -> tuple[_Function, ...]:
     angled = frozenset(pair for _, _, tree in modules for pair in _angled(tree))
     found = []
     for path, regions, tree in modules:
-        constants = _constants(tree)
+        constants, sympy = _constants(tree), _sympy_names(tree.body)
         for node, names in _definitions(tree) if regions else ():
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
-                found.append(_Function(path.stem, names, node, inside, attributes, constants, angled))
+                found.append(_Function(path.stem, names, node, inside, attributes, constants, angled, sympy))
     return tuple(found)
 
 
@@ -1438,6 +1441,148 @@ def _compiled(function: _Function, tree: ast.FunctionDef, filename: str):
     return _code_holder(made).__code__
 
 
+# ---------------------------------------------------------------------------------------------- symbolic answers
+
+#: the functions of sympy that change an expression's form and not its value: the mutants are screened without
+#: them (``_unsimplified``), where the reference's own value is the same so (``_twins``)
+SIMPLIFIERS = frozenset({"simplify", "trigsimp", "expand", "factor_terms", "factor", "cancel", "ratsimp", "radsimp",
+                         "powsimp", "expand_trig", "fu", "signsimp", "combsimp", "gammasimp"})
+#: what a simplifier passed as a value (``M.applyfunc(sp.simplify)``) becomes
+_IDENTITY = "(lambda _expression, *_arguments, **_keywords: _expression)"
+
+
+def _sympy_names(nodes) -> frozenset:
+    """The names that the imports among ``nodes`` (at any depth) bind to sympy (``sp`` of ``import sympy as sp``)
+    and to its simplifiers (``from sympy import simplify``), the latter marked ``from:``."""
+    found = set()
+    for node in (n for top in nodes for n in ast.walk(top)):
+        if isinstance(node, ast.Import):
+            found |= {a.asname or a.name.split(".")[0] for a in node.names if a.name.split(".")[0] == "sympy"}
+        elif isinstance(node, ast.ImportFrom) and not node.level and (node.module or "").split(".")[0] == "sympy":
+            found |= {f"from:{a.asname or a.name}" for a in node.names if a.name in SIMPLIFIERS}
+    return frozenset(found)
+
+
+class _Unsimplified(ast.NodeTransformer):
+    """Every call of a simplifier of sympy replaced by the expression it simplifies (``sp.trigsimp(e, method="fu")``
+    by ``e``, ``M.simplify()`` by ``M``), and a simplifier passed as a value by the identity."""
+
+    def __init__(self, names: frozenset):
+        self.modules = {n for n in names if not n.startswith("from:")}
+        self.functions = {n[5:] for n in names if n.startswith("from:")}
+        self.changed = False
+
+    def _kind(self, func) -> str | None:
+        if isinstance(func, ast.Attribute) and func.attr in SIMPLIFIERS:
+            return "function" if isinstance(func.value, ast.Name) and func.value.id in self.modules else "method"
+        if isinstance(func, ast.Name) and func.id in self.functions:
+            return "function"
+        return None
+
+    def visit_Call(self, node):
+        kind = self._kind(node.func)
+        if kind is None:
+            return self.generic_visit(node)
+        node.args = [self.visit(a) for a in node.args]
+        node.keywords = [self.visit(k) for k in node.keywords]
+        if isinstance(node.func, ast.Attribute):
+            node.func.value = self.visit(node.func.value)
+        if kind == "function" and node.args and not isinstance(node.args[0], ast.Starred):
+            self.changed = True
+            return node.args[0]
+        if kind == "method" and not node.args:  # ``e.factor(x)`` may be no sympy's: left as it is
+            self.changed = True
+            return node.func.value
+        return node
+
+    def _value(self, node):
+        self.changed = True
+        return ast.parse(_IDENTITY, mode="eval").body
+
+    def visit_Attribute(self, node):
+        if isinstance(node.ctx, ast.Load) and self._kind(node) == "function":
+            return self._value(node)
+        return self.generic_visit(node)
+
+    def visit_Name(self, node):
+        if isinstance(node.ctx, ast.Load) and node.id in self.functions:
+            return self._value(node)
+        return node
+
+
+def _simplifies(function: _Function) -> bool:
+    """The function reads sympy (its own import, or its module's) and names one of its simplifiers."""
+    names = function.sympy | _sympy_names([function.node])
+    return bool(names) and any(isinstance(n, ast.Attribute) and n.attr in SIMPLIFIERS or isinstance(n, ast.Name)
+                               and f"from:{n.id}" in names for n in ast.walk(function.node))
+
+
+def _unsimplified(function: _Function, tree: ast.FunctionDef, filename: str, freevars: tuple):
+    """The code of ``tree`` (the function's definition, mutated or not) without sympy's simplifications, or None
+    where it has none (or its code would not fit the live function's closure)."""
+    quick = _Unsimplified(function.sympy | _sympy_names([function.node]))
+    tree = ast.fix_missing_locations(quick.visit(copy.deepcopy(tree)))
+    if not quick.changed:
+        return None
+    try:
+        code = _compiled(function, tree, filename)
+    except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
+        return None
+    return code if code.co_freevars == freevars else None
+
+
+@lru_cache(maxsize=64)
+def _simplifying(root: str, problem: int) -> tuple:
+    """The functions of ``problem``'s solution regions (and its neighbours', as ``mutants_of`` takes them) that
+    simplify."""
+    return tuple(f for f in _functions(root)
+                 if any(abs(label - problem) <= NEIGHBOURS for label, _, _ in f.regions) and _simplifies(f))
+
+
+#: the code without simplifications of a function of the reference, by its live code: made once for the process
+_TWINS: dict = {}
+
+
+def _twins(package, root: Path, problem: int) -> tuple:
+    """``(live function, its code without simplifications)`` of the problem's functions that simplify."""
+    import importlib
+
+    found = []
+    for function in _simplifying(str(root), problem):
+        try:
+            importlib.import_module(f"{package.__name__}.{function.module}")  # as the probe's call would
+        except Exception:  # noqa: BLE001 - a module that does not import has no function to screen with
+            continue
+        live = _live(package, function.module, function.path)
+        if live is None:
+            continue
+        key = (function, live.__code__)
+        if key not in _TWINS:
+            _TWINS[key] = _unsimplified(function, function.node, live.__code__.co_filename, live.__code__.co_freevars)
+        if _TWINS[key] is not None:
+            found.append((live, _TWINS[key]))
+    return tuple(found)
+
+
+def _holds(package, twins: tuple, inputs: list[Evidence]) -> bool:
+    """The reference's value without its simplifications, read quickly, is the expected value on every input
+    (within the comparison's tolerance): the mutants may be screened so."""
+    own = [(holder, holder.__code__) for holder, _ in twins]
+    try:
+        for holder, twin in twins:
+            holder.__code__ = twin
+        for evidence in inputs:
+            if evidence.expected is None:
+                return False
+            value = _value(package, evidence, (evidence.source.probe, evidence.source.args), quick=True)
+            if value is None or not within(value, evidence.expected, evidence.tol):
+                return False
+        return True
+    finally:
+        for holder, code in own:
+            holder.__code__ = code
+
+
 # ---------------------------------------------------------------------------------------------- the package
 
 
@@ -1483,14 +1628,16 @@ def _probe(probe):
     return getattr(importlib.import_module(f"probes.{module_name}"), name)
 
 
-def _call(package, probe, args, path):
+def _call(package, probe, args, path, quick: bool = False):
     """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the bytes of
     ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per
-    package would give the reference's value for every mutant)."""
+    package would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by
+    reading its expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``."""
     from probes import fresh
     from probes._codec import decode, encode
+    from probes._symbolic import quick as reading
 
-    with fresh():
+    with fresh(), (reading() if quick else contextlib.nullcontext()):
         value = decode(encode(_probe(probe)(package, *_copied(args))))
     return array_of(at(value, path))
 
@@ -1509,8 +1656,10 @@ def _copied(args) -> tuple:
     return pickle.loads(args) if isinstance(args, bytes) else copy.deepcopy(tuple(args))
 
 
-def _traced(package, root: Path, probe, args) -> set:
-    """The code objects of the reference's folder that ``probe(*args)`` runs on the private package."""
+def _traced(package, root: Path, probe, args, quick: tuple = ()) -> set:
+    """The code objects of the reference's folder that ``probe(*args)`` runs on the private package; with
+    ``quick`` (``_twins``), run with those codes without simplifications in their functions' place (a profiler
+    slows sympy's simplifications tenfold), each counted as its function's own code."""
     seen: set = set()
     prefix = str(root)
 
@@ -1518,15 +1667,20 @@ def _traced(package, root: Path, probe, args) -> set:
         if event == "call" and frame.f_code.co_filename.startswith(prefix):
             seen.add(frame.f_code)
 
+    own = {twin: holder.__code__ for holder, twin in quick}
     previous = sys.getprofile()
-    sys.setprofile(profile)
     try:
-        _call(package, probe, args, ())
+        for holder, twin in quick:
+            holder.__code__ = twin
+        sys.setprofile(profile)
+        _call(package, probe, args, (), quick=bool(quick))
     except Exception:  # noqa: BLE001 - the oracle computed this call: a failure here leaves nothing to mutate
         return set()
     finally:
         sys.setprofile(previous)
-    return seen
+        for holder, twin in quick:
+            holder.__code__ = own[twin]
+    return {own.get(code, code) for code in seen}
 
 
 # ---------------------------------------------------------------------------------------------- the mutants
@@ -1553,11 +1707,12 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled"})
 
 
-def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] | None:
+def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
     there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
-    the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for."""
-    ran = _traced(package, root, probe, args)
+    the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for.  ``quick``
+    (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs."""
+    ran = _traced(package, root, probe, args, quick)
     found: list[Mutant] = []
     reads: list[Mutant] = []
     for function in _functions(str(root)):
@@ -1566,8 +1721,9 @@ def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] |
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
         defaulted = _defaulted(function.node)
-        for slip, code, unused in _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars):
-            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted)
+        for slip, code, unused, twin in _codes(function, lines, live.__code__.co_filename,
+                                               live.__code__.co_freevars):
+            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted, twin)
             (reads if slip in LATE_SLIPS else found).append(mutant)
             if len(found) > MAX_MUTANTS:
                 return None
@@ -1576,16 +1732,19 @@ def mutants_of(package, root: Path, problem: int, probe, args) -> list[Mutant] |
 
 @lru_cache(maxsize=512)
 def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) -> tuple:
-    """``(slip, code object)`` of the function's mutants, compiled once for the process (a mutant whose code does
-    not fit the live function's closure is left out)."""
+    """``(slip, code object, parameters left unused, code without simplifications or None)`` of the function's
+    mutants, compiled once for the process (a mutant whose code does not fit the live function's closure is left
+    out)."""
     found = []
+    simplifies = _simplifies(function)
     for slip, tree, unused in _mutated(function, lines):
         try:
             code = _compiled(function, tree, filename)
         except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
             continue
         if code.co_freevars == freevars:
-            found.append((slip, code, unused))
+            found.append((slip, code, unused, _unsimplified(function, tree, filename, freevars) if simplifies
+                          else None))
     return tuple(found)
 
 
@@ -1687,28 +1846,43 @@ class _Deadline:
 
 def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: _Deadline,
               originals: dict, judged: bool = True, kept: list | None = None,
-              progress: dict | None = None) -> list[Mutant] | None:
+              progress: dict | None = None, twins: tuple = ()) -> list[Mutant] | None:
     """The mutants that reproduce the student's value on every input (and, ``judged``, differ from the expected
     value on one, and from zero), or None when the time ran out first.  ``originals`` keeps the code of every
     function changed (``_restore`` puts it back); ``kept`` (given) gathers the mutants kept as they are found and
-    ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out."""
+    ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out.
+    ``twins`` (``_twins``, where the reference's value holds without them): the codes without simplifications of
+    the functions that simplify, with which each mutant is screened, its symbolic answers read quickly; a mutant
+    that reproduces the student's value so is evaluated again as it is, and that value decides."""
     kept = [] if kept is None else kept
     progress = {} if progress is None else progress
     calls = [(e.source.probe, _kept_once(e.source.args)) for e in inputs]
     parts = [part_of(e.source) for e in inputs]
     parts = [None if part is None else (part[0], _kept_once(part[1])) for part in parts]
+    screened = bool(twins)
+    for holder, twin in twins:
+        originals.setdefault(id(holder), (holder, holder.__code__))
     for tried, mutant in enumerate(mutants):
         progress["tried"] = tried
         if deadline.fired:
             return None
         holder = _live(package, mutant.module, mutant.path)
         originals.setdefault(id(holder), (holder, holder.__code__))
-        holder.__code__ = mutant.code
         try:
-            values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)])
+            for other, twin in twins:
+                other.__code__ = twin
+            holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
+            values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened)
             if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
+                values = _reproduced(package, inputs, calls, screened)
+            if values is not None and screened:  # the mutant's own value decides
+                for other, _ in twins:
+                    other.__code__ = originals[id(other)][1]
+                holder.__code__ = mutant.code
                 values = _reproduced(package, inputs, calls)
         finally:
+            for other, _ in twins:
+                other.__code__ = originals[id(other)][1]
             holder.__code__ = originals[id(holder)][1]
         if values is None:
             continue
@@ -1733,24 +1907,24 @@ def _restore(originals: dict) -> None:
         holder.__code__ = code
 
 
-def _reproduced(package, inputs: list[Evidence], calls: list) -> list | None:
+def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = False) -> list | None:
     """The mutated package's values of ``calls`` (``(probe, arguments)``: each input's call, or its declared part),
-    or None at the first that does not reproduce the student's value."""
+    or None at the first that does not reproduce the student's value (``quick``: see ``_call``)."""
     values = []
     for evidence, call in zip(inputs, calls):
-        value = _value(package, evidence, call)
+        value = _value(package, evidence, call, quick)
         if value is None or not within(evidence.got, value, evidence.tol):
             return None
         values.append(value)
     return values
 
 
-def _value(package, evidence: Evidence, call: tuple):
+def _value(package, evidence: Evidence, call: tuple, quick: bool = False):
     """The mutated package's value of ``call`` (``(probe, arguments)``: the comparison's call, or its declared
-    part) at the comparison's path (None when the mutant raises or gives another shape)."""
+    part) at the comparison's path (None when the mutant raises or gives another shape; ``quick``: see ``_call``)."""
     probe, args = call
     try:
-        value = _call(package, probe, args, evidence.source.path)
+        value = _call(package, probe, args, evidence.source.path, quick)
     except (Exception, RecursionError):  # noqa: BLE001 - a mutant that raises reproduces nothing
         return None
     if value is None or value.shape != evidence.got.shape:
@@ -1998,12 +2172,19 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
     started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
-        kept, originals, found, progress, rivals = None, {}, [], {}, None
+        kept, originals, found, progress, rivals, twins = None, {}, [], {}, None, ()
         try:
             root, package = _package()
             with _Deadline(TIME_BUDGET) as deadline:
+                twins = _twins(package, root, problem)
+                for holder, _ in twins:  # put back by ``_restore`` wherever the time runs out
+                    originals.setdefault(id(holder), (holder, holder.__code__))
+                if twins:
+                    holds = _holds(package, twins, evidences)
+                    trace.note("screened", functions=sorted(h.__name__ for h, _ in twins), holds=holds)
+                    twins = twins if holds else ()
                 if mutants is None:
-                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args)
+                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins)
                     if mutants and only is not None:
                         mutants = [m for m in mutants if m.slip in only]
                     trace.note("mutated", count=None if mutants is None else len(mutants),
@@ -2013,11 +2194,11 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                         mutants, rivals = late(mutants, told)
                         trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
                 if mutants and rivals is None:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged)
+                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins)
             if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
                 with _Deadline(LATE_TIME_BUDGET) as deadline:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                                     kept=found, progress=progress)
+                                     kept=found, progress=progress, twins=twins)
             if kept:
                 trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
                                                               if any(m is x for x in kept)])
