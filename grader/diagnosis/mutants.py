@@ -70,6 +70,15 @@ not an explanation), warnings are
 silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the
 scene's budget of the student's calls.  The student kit holds no reference code: the tier runs with the live
 reference only (``left_to_live``: the kit then says that the graded submission may say more).
+
+A symbolic answer costs most in its simplification (``trigsimp`` of problem 40's matrices: a quarter of a second)
+and in sympy's ``lambdify``, neither of which changes its value.  Where a function of the problem simplifies
+(``SIMPLIFIERS``), its mutants are screened on a copy of their code without the simplifications, the answers read
+by ``probes._symbolic.quick`` (a walk of the expression, not generated code), and so is the call that finds the
+functions run; this holds only where the reference's own value, so computed, is the expected one on every input
+(``_holds``), else every mutant is evaluated as it is.  A mutant that reproduces the student's value when screened
+is evaluated again as it is, and that value decides: the screen can only leave out a mutant whose value depends on
+an expression's form.
 """
 
 from __future__ import annotations
