@@ -1716,12 +1716,14 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled"})
 
 
-def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()) -> list[Mutant] | None:
+def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
+               ran: set | None = None) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
     there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
     the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for.  ``quick``
-    (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs."""
-    ran = _traced(package, root, probe, args, quick)
+    (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs;
+    ``ran``: the codes that call runs, where the caller traced it."""
+    ran = _traced(package, root, probe, args, quick) if ran is None else ran
     found: list[Mutant] = []
     reads: list[Mutant] = []
     for function in _functions(str(root)):
@@ -2185,15 +2187,21 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
         try:
             root, package = _package()
             with _Deadline(TIME_BUDGET) as deadline:
-                twins = _twins(package, root, problem)
+                twins, ran = _twins(package, root, problem), None
                 for holder, _ in twins:  # put back by ``_restore`` wherever the time runs out
                     originals.setdefault(id(holder), (holder, holder.__code__))
+                if twins and mutants is None:  # only the functions that the call runs
+                    ran = _traced(package, root, first.source.probe, first.source.args, twins)
+                    twins = tuple((holder, twin) for holder, twin in twins if holder.__code__ in ran)
+                elif twins:  # the functions of the mutants given
+                    holders = {id(_live(package, m.module, m.path)) for m in mutants}
+                    twins = tuple((holder, twin) for holder, twin in twins if id(holder) in holders)
                 if twins:
                     holds = _holds(package, twins, evidences)
                     trace.note("screened", functions=sorted(h.__name__ for h, _ in twins), holds=holds)
-                    twins = twins if holds else ()
+                    twins, ran = (twins, ran) if holds else ((), None)  # traced without them, then
                 if mutants is None:
-                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins)
+                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, ran)
                     if mutants and only is not None:
                         mutants = [m for m in mutants if m.slip in only]
                     trace.note("mutated", count=None if mutants is None else len(mutants),
