@@ -6,6 +6,10 @@ reference's code with one such slip on the very inputs of the failing comparison
 student writes: the functions that hold a solution region (``# BEGIN SOLUTION problem N``) of the problem of the
 check (or of a neighbouring problem: one region may serve two of the sheet's problems), that the probe's call
 runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6).
+The student's file of problem N (``problem_NN.py``) also holds code that the template gives whole (a function with
+no region: problem 34's gait, problem 24's pendulum): a slip there is the student's too, but less likely than one in
+the code they wrote, so its functions' slips (``given``) are tried only where no slip of a region reproduced the
+student's value, and no earlier tier explained it, within a budget of their own (``GIVEN_TIME_BUDGET``).
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
 missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
@@ -127,6 +131,9 @@ LATE_MUTANTS = MAX_MUTANTS
 #: the CPU time of the evaluation of the mutants heard after an earlier tier explained the answer [s] (their making,
 #: which the process caches, is bounded by ``TIME_BUDGET``: problem 31's 477 took more than this the first time)
 LATE_TIME_BUDGET = 0.4
+#: the CPU time of the slips of the code a problem's module gives whole (``_given``), tried where no slip of the
+#: solution regions reproduced the student's value [s]
+GIVEN_TIME_BUDGET = 2.0
 #: a solution region of problem N +- this many counts as the check's problem's own (the screw axis of problem 13
 #: is the region of problem 14)
 NEIGHBOURS = 1
@@ -142,6 +149,8 @@ KIT_NOTE = ("The graded submission may say more about the cause: it also tries s
 NAMES_A_FUNCTION = re.compile(r"`[A-Za-z_][A-Za-z_0-9]*`")
 
 _REGION = re.compile(r"#\s*BEGIN SOLUTION problem (\d+)")
+#: a problem's own module, the file of the student's submission that the sheet's problem NN is graded from
+_OWN_MODULE = re.compile(r"problem_(\d+)")
 _END = re.compile(r"#\s*END SOLUTION")
 #: a rotation matrix by the course's notation (``A_IB``, ``R3(...)``): dropping it leaves a vector in another frame
 _ROTATION = re.compile(r"^(A_\w+|A|R[123]?|R_\w+|rotation\w*|expm_skew)$")
@@ -207,12 +216,15 @@ class _Function:
     constants: frozenset = frozenset()  # the constants its module binds at its top level (``WIRE_LENGTH``)
     angled: frozenset = frozenset()  # ``(function, position)`` of the reference's parameters that are angles
     sympy: frozenset = frozenset()  # the names its module's top level binds to sympy (``sp``) or its simplifiers
+    given: bool = False  # a function of a problem's own module that holds no region: the template gives it whole
 
 
 @lru_cache(maxsize=4)
 def _functions(root: str) -> tuple[_Function, ...]:
     """Every function of the reference's modules (top level, or a method of a top-level class) that holds a
-    solution region; the parsed modules are kept for the process."""
+    solution region, and every function of a problem's own module (``problem_NN.py``) that holds none (``given``,
+    its whole body counted as a region of problem NN: the student's file holds it too); the parsed modules are
+    kept for the process."""
     modules = []
     for path in sorted(Path(root).glob("*.py")):
         if path.name != "__init__.py":
@@ -223,10 +235,15 @@ def _functions(root: str) -> tuple[_Function, ...]:
     found = []
     for path, regions, tree in modules:
         constants, sympy = _constants(tree), _sympy_names(tree.body)
-        for node, names in _definitions(tree) if regions else ():
+        own = _OWN_MODULE.fullmatch(path.stem)
+        for node, names in _definitions(tree) if regions or own else ():
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
                 found.append(_Function(path.stem, names, node, inside, attributes, constants, angled, sympy))
+            elif own:
+                whole = ((int(own.group(1)), node.lineno, node.end_lineno + 1),)
+                found.append(_Function(path.stem, names, node, whole, attributes, constants, angled, sympy,
+                                       given=True))
     return tuple(found)
 
 
@@ -1717,17 +1734,22 @@ LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", 
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
-               ran: set | None = None) -> list[Mutant] | None:
+               ran: set | None = None, given: bool = False) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
     there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
     the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for.  ``quick``
     (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs;
-    ``ran``: the codes that call runs, where the caller traced it."""
+    ``ran``: the codes that call runs, where the caller traced it.  ``given``: the mutants of the functions of the
+    problem's own module that hold no region instead (those of problem N's module for problem N alone), in the
+    same order."""
     ran = _traced(package, root, probe, args, quick) if ran is None else ran
     found: list[Mutant] = []
     reads: list[Mutant] = []
     for function in _functions(str(root)):
-        lines = tuple((first, last) for label, first, last in function.regions if abs(label - problem) <= NEIGHBOURS)
+        if function.given != given:
+            continue
+        lines = tuple((first, last) for label, first, last in function.regions
+                      if (label == problem if given else abs(label - problem) <= NEIGHBOURS))
         live = _live(package, function.module, function.path)
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
@@ -2173,12 +2195,32 @@ def late(mutants: list[Mutant], told) -> tuple[list[Mutant], int]:
     return order, min(len(others), len(order))
 
 
+def _given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
+           progress: dict) -> tuple:
+    """``(kept, mutants)`` of the slips of the functions that the problem's own module gives whole (``given``),
+    tried where no slip of a solution region reproduced the student's value: the student's file holds them too,
+    and a slip there is less likely than in the code the student wrote, so they come after all of it, within a
+    budget of their own (``GIVEN_TIME_BUDGET``; kept None when it runs out)."""
+    started = time.thread_time()
+    first = evidences[0]
+    with _Deadline(GIVEN_TIME_BUDGET) as deadline:
+        mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, given=True)
+        trace.note("given", count=None if mutants is None else len(mutants),
+                   functions=sorted({m.function for m in mutants or ()}),
+                   seconds=round(time.thread_time() - started, 3))
+        kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
+                         progress=progress) if mutants else []
+    return kept, mutants
+
+
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
           told=None, only=None) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
     the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``; ``only``:
-    the slips tried, where not all."""
+    the slips tried, where not all; where none of a solution region's slips reproduces it (and no earlier tier
+    explained the answer), the slips of the code the problem's module gives whole (``_given``)."""
     first = evidences[0]
+    made = mutants is None
     judged = len(evidences) > 1 or only is not None  # one input of its own: a slip of precision, judged there
     started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
@@ -2212,6 +2254,10 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                         trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
                 if mutants and rivals is None:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins)
+            if made and mutants == []:
+                kept = []  # no function of a region runs: none of their slips reproduces the value
+            if kept == [] and made and told is None and only is None:
+                kept, mutants = _given(package, root, problem, evidences, originals, judged, progress)
             if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
                 with _Deadline(LATE_TIME_BUDGET) as deadline:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
