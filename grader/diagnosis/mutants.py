@@ -42,7 +42,9 @@ as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older
 precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
-short, pi as 3.14 or 3.1416, 9.81 as 9.8).  A slip of precision is told only where the student's value is in the band
+short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to
+two or three decimals, ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with
+the reads of names, after the other slips).  A slip of precision is told only where the student's value is in the band
 such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
 (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to draw) the slips
 of precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of another
@@ -412,6 +414,7 @@ SLIPS = {
     "single": ("float32", "`{f}` computes in single precision (float32) where numpy's float64 belongs"),
     "single_argument": ("float32", "`{f}` converts an argument to single precision (float32) before it uses it"),
     "short": ("rounded", "`{f}` uses a constant typed short (pi as 3.14, g as 9.8)"),
+    "typed": ("rounded", "`{f}` uses a constant typed short (pi / 6 as 0.52, sqrt(1/3) as 0.577)"),
     "angle": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "angle_sum": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "angle_part": ("wrong_angle", "`{f}` reads one angle where another belongs"),
@@ -422,7 +425,7 @@ SLIPS = {
     "cycled": ("swapped", "`{f}` lists quantities in another order (the last first, or the first last)"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
-PRECISION_SLIPS = frozenset({"single", "single_argument", "short"})
+PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed"})
 #: the largest difference between the student's value and the expected one, relative to the expected value's size,
 #: that a slip of precision makes (a constant typed to two decimals, float32 accumulated over a run: pi as 3.14 is
 #: 5e-4, g as 9.8 is 1e-3, float32 alone about 1e-7); past it a slip of precision is not told
@@ -434,8 +437,64 @@ PRECISION_SHARE = 0.1
 SHORT_PI = (3.14, 3.1416)
 #: the decimals a number of the code is typed short to
 SHORT_DECIMALS = (1, 2)
+#: the decimals a constant of the code that is not one number (``np.pi / 6``, ``np.sqrt(1.0 / 3.0)``, a module's
+#: constant ``GAMMA``) is typed short to, as its value rounded (``round(np.pi / 6, 2)``: 0.52); not one decimal,
+#: which writes a small entry 0 (a slope's ``sin`` of 0.017 left out is a term left out, not a value typed short)
+TYPED_DECIMALS = (2, 3)
+#: the names a constant expression may read besides numbers: its modules and pi
+_CONSTANT_NAMES = frozenset({"np", "numpy", "math", "sp", "sympy", "pi"})
+#: the functions a constant expression may call (``np.sqrt(3)``, ``np.deg2rad(30.0)``)
+_CONSTANT_CALLS = frozenset({"sqrt", "deg2rad", "radians", "Rational", "cos", "sin", "tan", "exp"})
 #: the names of a function's arguments that a slip of precision converts at its start (a run's state, coordinates)
 _SINGLE = re.compile(r"^(y|y_\w+|state|q|qd|x)$")
+
+
+def _constant_expression(node) -> bool:
+    """An expression of numbers that is not one number (``np.pi / 6``, ``np.sqrt(1.0 / 3.0)``, ``sp.pi / 6``):
+    operations and calls (``_CONSTANT_CALLS``) of numbers and pi, no other name read."""
+    if not isinstance(node, (ast.BinOp, ast.UnaryOp, ast.Call)) and not _pi(node):
+        return False
+    for inner in ast.walk(node):
+        if isinstance(inner, ast.Name) and inner.id not in _CONSTANT_NAMES:
+            return False
+        if isinstance(inner, ast.Call) and (_callee(inner) not in _CONSTANT_CALLS or inner.keywords):
+            return False
+        if isinstance(inner, ast.Attribute) and not (_pi(inner) or isinstance(inner.value, ast.Name)):
+            return False
+        if not isinstance(inner, (ast.BinOp, ast.UnaryOp, ast.Call, ast.Name, ast.Attribute, ast.Constant,
+                                  ast.Load, ast.operator, ast.unaryop)):
+            return False
+        if isinstance(inner, ast.Constant) and not _number(inner):
+            return False
+    return not (isinstance(node, ast.UnaryOp) and _number(node.operand))
+
+
+def _typed_slips(node, parent, constants: frozenset):
+    """A constant typed short, to ``TYPED_DECIMALS`` decimals: an expression of numbers (``np.pi / 6`` as 0.52),
+    the largest one there (not a part of another), or a read of a module's constant (``GAMMA``), in its place
+    the value rounded (a slip of precision: the value it gives is held to the band of precision): an expression,
+    a number, as ``round(float(expression), decimals)``; a constant, a number or an array, with numpy's round."""
+    if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in constants:
+        rounded = _np_round
+    elif _constant_expression(node) and not _pi(node) and not _constant_expression(parent):
+        rounded = _float_round
+    else:
+        return
+    for decimals in TYPED_DECIMALS:
+        yield "typed", lambda n, decimals=decimals: rounded(n, decimals)
+
+
+def _float_round(node, decimals: int):
+    """``round(float(node), decimals)``: a number typed to ``decimals`` decimals (a float, whatever ``node`` is:
+    sympy's own rounding keeps only the digits typed as its precision)."""
+    value = ast.Call(ast.Name("float", ast.Load()), [node], [])
+    return ast.Call(ast.Name("round", ast.Load()), [value, ast.Constant(decimals)], [])
+
+
+def _np_round(node, decimals: int):
+    """numpy's ``round(node, decimals)``, read without a name of the module (the function may bind none)."""
+    numpy = ast.Call(ast.Name("__import__", ast.Load()), [ast.Constant("numpy")], [])
+    return ast.Call(ast.Attribute(numpy, "round", ast.Load()), [node, ast.Constant(decimals)], [])
 
 
 def _dropped(operand) -> str:
@@ -1366,7 +1425,8 @@ def _mutated(function: _Function, lines: tuple):
         else:
             slips = itertools.chain(_slips(node, parent), _entry_slips(node, parent),
                                     _read_slips(node, names, function.attributes),
-                                    _trig_read_slips(node, parent, others))
+                                    _trig_read_slips(node, parent, others),
+                                    _typed_slips(node, parent, function.constants))
         for slip, edit in slips:
             if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
                 continue
@@ -1730,7 +1790,7 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
-LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled"})
+LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled", "typed"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

@@ -1,6 +1,6 @@
 """The formula tier's slips of precision (``grader.diagnosis.mutants``: ``PRECISION_SLIPS``): a dtype of double
 precision given as single, an argument converted to float32 at a function's start, a constant typed short (pi as
-3.14, 9.81 as 9.8).
+3.14, 9.81 as 9.8), and an expression of numbers or a module's constant typed short (``TYPED_DECIMALS``).
 
 Each is a mistake planted into a copy of the reference (or of a made-up problem) that the tier names, and a near
 miss it must not name: a value in the band of precision that no slip of precision reproduces, a constant typed so
@@ -183,3 +183,42 @@ def test_on_one_input_only_slips_of_precision_are_tried(made_up, monkeypatch):
     monkeypatch.setattr(mutants, "_evaluate", lambda package, made, *a, **k: tried.extend(made) or [])
     mutants.mutant_slips(scene("p97.turn"), evidences)
     assert tried and {m.slip for m in tried} <= mutants.PRECISION_SLIPS
+
+
+# ------------------------------------------------------------------------------------------ a constant typed short
+
+
+WALKER_STATES = [([(0.0, [0.2, -0.3, 0.5, -0.4])],), ([(0.3, [-0.1, 0.25, -0.6, 0.8])],)]
+
+
+def test_a_module_constant_typed_short_is_named_rounded(tmp_path):
+    """Problem 38's slope gravity typed to three decimals, (0.017, -1.0, 0), where the sheet's 1 degree belongs: the
+    right-hand side reads the module's constant, and its value rounded reproduces the student's on both states."""
+    found = planted_slips(tmp_path, "p38.walker_ode", "problem_38.py",
+                          "I_GRAV = np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0])",
+                          "I_GRAV = np.array([0.017, -1.0, 0.0])", "problem_38.walker_ode", WALKER_STATES, (0,))
+    assert named(found) == {"rounded"}, [(h.name, h.detail) for h in found]
+    assert any("`walker_ode` uses a constant typed short" in h.detail for h in found)
+
+
+def test_a_slope_left_out_of_a_module_constant_is_no_constant_typed_short(tmp_path):
+    """The near miss: the slope's component written 0 (gravity straight down) is what the same constant rounded to
+    one decimal gives, but a term left out, not a value typed short: no slip of precision is told."""
+    student = planted_package(tmp_path, "problem_38.py", "I_GRAV = np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0])",
+                              "I_GRAV = np.array([0.0, -1.0, 0.0])")
+    try:
+        evidences = [evidence("problem_38.walker_ode", args, (0,), student) for args in WALKER_STATES]
+        found = mutants.mutant_slips(scene("p38.walker_ode"), evidences)
+    finally:
+        drop_private(student)
+    assert "rounded" not in named(found), [(h.name, h.detail) for h in found]
+
+
+def test_the_largest_expression_of_numbers_is_typed_short_and_pi_alone_is_not():
+    """An expression of numbers is typed short as a whole (``np.sqrt(3.0) * np.pi`` as 5.441, not its parts); a
+    read of a name other than a module's constant, or pi alone (``short``: 3.14), is no such expression."""
+    statement = mutants.ast.parse("x = w * (np.pi / 40) * n + np.sqrt(3.0) * np.pi + np.pi + GAMMA + alpha").body[0]
+    sites = [mutants.ast.unparse(node) for node, parent, _, _ in mutants._parented(statement)
+             for slip, _ in mutants._typed_slips(node, parent, frozenset({"GAMMA"}))]
+    assert sites == [site for site in ("np.pi / 40", "np.sqrt(3.0) * np.pi", "GAMMA")
+                     for _ in mutants.TYPED_DECIMALS], sites
