@@ -9,7 +9,8 @@ runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake o
 The student's file of problem N (``problem_NN.py``) also holds code that the template gives whole (a function with
 no region: problem 34's gait, problem 24's pendulum): a slip there is the student's too, but less likely than one in
 the code they wrote, so its functions' slips (``given``) are tried only where no slip of a region reproduced the
-student's value, and no earlier tier explained it, within a budget of their own (``GIVEN_TIME_BUDGET``).
+student's value, and no earlier tier explained it, within a budget of their own (``GIVEN_TIME_BUDGET``); a list's
+entry written 0 there is data left out, told as a term left out and as an offset (``_ENTRIES``).
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
 missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
@@ -186,6 +187,7 @@ class Mutant:
     unused: tuple = ()  # the parameters that the slip leaves unused (``anchor - I_r_E`` as ``I_r_E``)
     defaulted: frozenset = frozenset()  # its parameters with a default (``anchor=ANCHOR``)
     quick: object = None  # the code without sympy's simplifications (``_unsimplified``), where it has any
+    given: bool = False  # a slip of a function that the problem's module gives whole (``_Function.given``)
 
     @property
     def function(self) -> str:
@@ -1816,7 +1818,7 @@ def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()
         defaulted = _defaulted(function.node)
         for slip, code, unused, twin in _codes(function, lines, live.__code__.co_filename,
                                                live.__code__.co_freevars):
-            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted, twin)
+            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted, twin, function.given)
             (reads if slip in LATE_SLIPS else found).append(mutant)
             if len(found) > MAX_MUTANTS:
                 return None
@@ -2041,6 +2043,10 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
         if constant and mutant.slip in _ENTRIES:  # an entry left out, and every value off by the same amount
             found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
                 f"{detail}; it is the same on every input: your values are all off by it"), twin=True))
+        elif mutant.given and mutant.slip in _ENTRIES:  # a number of data the template gives: where a value starts
+            found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
+                f"{detail}; it is a number of the data `{mutant.function}` sets, so it may be where a value starts "
+                "or sits: an offset"), twin=True))
         unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
         for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told
@@ -2116,7 +2122,9 @@ KINDS = {"skew": ("skew",), "cross": ("cross",)}
 #: the families of a term left out or added: where the term is the same on every input, the slip is an offset
 _TERMS = {"missing_term", "extra_term"}
 #: the slips of an entry of a matrix or vector left out: where it is the same on every input, the slip is told as
-#: an entry left out and, beside it, as an offset (an entry of a Jacobian is no point moved, a height may be)
+#: an entry left out and, beside it, as an offset (an entry of a Jacobian is no point moved, a height may be); so
+#: is one in the code a problem's module gives whole (``given``), where a list's numbers are data (a gait's mean,
+#: a hip's height): a number of it written 0 is as truly a value off by it as a term left out
 _ENTRIES = {"zeroed"}
 
 

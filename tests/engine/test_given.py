@@ -2,20 +2,20 @@
 a function of ``problem_NN.py`` that holds no solution region is the student's file too, and its slips are tried
 where no slip of a region reproduces the student's value.
 
-Problem 34's biped and gait are such functions (its module has no region).  Each test plants a mistake into a copy
+Problem 34's biped and gait are such functions (its module has no region).  The test plants a mistake into a copy
 of the reference and asks the tier on two inputs, as ``tests/engine/test_mutants.py`` does; the near miss is the
 same mistake seen from a check of another problem, whose tier does not try problem 34's given code.
 """
 
 from grader.diagnosis import mutants
+from grader.private import drop_private
 
 from .test_mutants import evidence, planted_package, scene
-from grader.private import drop_private
 
 #: the biped at two times of its gait, and the body whose position is compared (the first thigh)
 TIMES = [(0.37,), (1.13,)]
 THIGH = ("bodies", 2, "B_r_IB")
-LEFT, LEFT_EXCHANGED = '("left", 0.2, 3, 5)', '("left", 0.2, 5, 3)'
+BOBBING, BOBBING_LEFT_OUT = "[HIP_HEIGHT, 0.0, BOB]", "[HIP_HEIGHT, 0.0, 0.0]"
 
 
 def biped_slips(tmp_path, check_id, old, new):
@@ -32,14 +32,15 @@ def named(found) -> set:
 
 
 def test_a_slip_in_a_given_function_of_the_problems_module_is_named(tmp_path):
-    """The left leg's hip and extension coordinates exchanged, (5, 3) for (3, 5): two entries of a tuple in
-    ``build_biped``, which the template gives whole."""
-    found = biped_slips(tmp_path, "p34.biped", LEFT, LEFT_EXCHANGED)
-    assert named(found) == {"swapped"}, [(h.name, h.detail) for h in found]
-    assert any("`build_biped`" in h.detail for h in found), [h.detail for h in found]
+    """The hip's bobbing left out of the gait, ``[HIP_HEIGHT, 0.0, 0.0]``: an entry of a list in
+    ``gait_coefficients``, which the template gives whole, written 0.  A number of data left out is told as a term
+    left out and as an offset (``_ENTRIES``)."""
+    found = biped_slips(tmp_path, "p34.biped", BOBBING, BOBBING_LEFT_OUT)
+    assert named(found) == {"missing_term", "offset"}, [(h.name, h.detail) for h in found]
+    assert all("`gait_coefficients`" in h.detail for h in found), [h.detail for h in found]
 
 
 def test_the_given_code_of_another_problems_module_is_not_tried(tmp_path):
     """The near miss: the same slip seen from a check of problem 35 (a neighbour, whose regions problem 34 may
     share) names nothing: the code a module gives whole is tried for its own problem alone."""
-    assert biped_slips(tmp_path, "p35.biped", LEFT, LEFT_EXCHANGED) == []
+    assert biped_slips(tmp_path, "p35.biped", BOBBING, BOBBING_LEFT_OUT) == []
