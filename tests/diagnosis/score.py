@@ -156,6 +156,7 @@ __all__ = [
     "FRESH6",
     "FRESH7",
     "FRESH8",
+    "FRESH9",
     "SETS",
     "HELD_OUT",
     "SYMPTOMS",
@@ -199,16 +200,18 @@ FRESH6 = ROOT / "tests" / "diagnosis" / "fresh6"
 FRESH7 = ROOT / "tests" / "diagnosis" / "fresh7"
 #: the eighth held-out set, written like the seventh apart from the engine
 FRESH8 = ROOT / "tests" / "diagnosis" / "fresh8"
+#: the ninth held-out set, written like the eighth apart from the engine
+FRESH9 = ROOT / "tests" / "diagnosis" / "fresh9"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
         "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
         "fresh4": (FRESH4,), "fresh5": (FRESH5,), "fresh6": (FRESH6,), "fresh7": (FRESH7,),
-        "fresh8": (FRESH8,)}
+        "fresh8": (FRESH8,), "fresh9": (FRESH9,)}
 #: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
-#: when they were written, the fourth to the eighth every realistic mistake whose check fails
-HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7", "fresh8")
+#: when they were written, the fourth to the ninth every realistic mistake whose check fails
+HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9")
 #: the held-out sets that sample every realistic mistake whose check fails (the issue's measure: ``--unlisted``)
-SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7", "fresh8")
+SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
@@ -701,7 +704,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--set", choices=sorted(SETS), default="fresh", help="fresh (default): the mistakes today's "
                         "catalogues do not name rightly; named: those they do; pool: both; fresh2, named2, pool2 and "
-                        "fresh3, named3, pool3: the same of the second and third held-out sets; fresh4 ... fresh8: "
+                        "fresh3, named3, pool3: the same of the second and third held-out sets; fresh4 ... fresh9: "
                         "the held-out sets of every realistic mistake whose check fails")
     parser.add_argument("--exercises", help="only these exercises, e.g. VI,VII")
     parser.add_argument("--problems", help="only these problems, e.g. 42,44")

@@ -1,7 +1,7 @@
 """The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second
-to the eighth held-out sets written apart from the engine (``fresh2`` ... ``fresh8``), and the script that grades
+to the ninth held-out sets written apart from the engine (``fresh2`` ... ``fresh9``), and the script that grades
 them and classifies each diagnosis (``tests/diagnosis/score.py``), strictly and leniently (where an entry of the
-seventh or eighth set names a second family, ``also``).
+seventh, eighth or ninth set names a second family, ``also``).
 
 The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
 into the reference, and the diagnosis recorded with it (``today``) is not the right cause, which is what put it in
@@ -33,6 +33,7 @@ from .score import (
     FRESH6,
     FRESH7,
     FRESH8,
+    FRESH9,
     NAMED,
     NAMED2,
     NAMED3,
@@ -56,6 +57,7 @@ FRESH5_SET = fresh_mistakes(FRESH5)
 FRESH6_SET = fresh_mistakes(FRESH6)
 FRESH7_SET = fresh_mistakes(FRESH7)
 FRESH8_SET = fresh_mistakes(FRESH8)
+FRESH9_SET = fresh_mistakes(FRESH9)
 
 
 def _fallback(name):
@@ -76,8 +78,8 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
 
 @pytest.mark.parametrize("sets", [(FRESH_SET, NAMED_SET), (FRESH2_SET, NAMED2_SET), (FRESH3_SET, NAMED3_SET),
                                   (FRESH4_SET, []), (FRESH5_SET, []), (FRESH6_SET, []), (FRESH7_SET, []),
-                                  (FRESH8_SET, [])],
-                         ids=["first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth"])
+                                  (FRESH8_SET, []), (FRESH9_SET, [])],
+                         ids=["first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth"])
 def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
     for mistakes in sets:
         assert defects(mistakes) == []
@@ -308,14 +310,16 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
     _assert_repeats_none(FRESH4_SET, earlier)
 
 
-# ------------------------------------------------------------------------------------ the fifth to eighth sets
+# ------------------------------------------------------------------------------------- the fifth to ninth sets
 
 #: the sets written like the fourth (every realistic mistake whose check fails, whatever its diagnosis), each with
 #: the sets written before it beyond the first three (whose entries ``_earlier_entries`` reads itself)
 LATER_SETS = {"fifth": (FRESH5_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET),
               "sixth": (FRESH6_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET),
               "seventh": (FRESH7_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET),
-              "eighth": (FRESH8_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET)}
+              "eighth": (FRESH8_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET),
+              "ninth": (FRESH9_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
+                        + FRESH8_SET)}
 
 
 @pytest.mark.parametrize("which", sorted(LATER_SETS))
@@ -394,12 +398,12 @@ def test_a_set_without_a_second_family_reads_alike_strictly_and_leniently(which)
     assert g.lenient_verdict == g.verdict
 
 
-@pytest.mark.parametrize("which", ["seventh", "eighth"])
+@pytest.mark.parametrize("which", ["seventh", "eighth", "ninth"])
 def test_a_set_with_second_families_reads_them_leniently_only(which):
     """The sets that name a second family (``also``) on some entries: an entry without one is classified alike
     strictly and leniently, whatever is told; an entry with one is right leniently and wrong strictly when only its
     second family is told, and right both ways when its family is."""
-    chosen = {"seventh": FRESH7_SET, "eighth": FRESH8_SET}[which]
+    chosen = {"seventh": FRESH7_SET, "eighth": FRESH8_SET, "ninth": FRESH9_SET}[which]
     named = {}
     for name, family in FALLBACK.items():
         named.setdefault(family, name)
