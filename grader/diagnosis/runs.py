@@ -1,12 +1,13 @@
-"""Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, an
-output grid one sample off (as many times as asked, spaced as a grid of one more or one fewer), a constant offset, a
-state from the wrong row (of the run, or of the state at an event: another row, or a slice of the whole state there
-from another start), the state at an event read from the run's last output before it, a wrong start, an event found
-late or early, and an error that grows with the step (against fixed-step runs of the reference's own right-hand
-side); and the reference re-run as a slip would run it (``parameter_variants``: its arguments exchanged, scaled or
-ignored, its start's entries exchanged, solve_ivp at looser tolerances), every such run a function of the run's
-arguments alone.  The checks use some pieces themselves: ``reread_runs`` (a run whose columns are read from the wrong
-rows of the solution, which looks like a wrong start or a drifting energy) and ``exchanged_events``.
+"""Slips of runs (probes that declare ``motion``, or runs a check compares with its own code): a time shift, an output
+grid one sample off (as many times as asked, spaced as a grid of one more or one fewer), a constant offset, a state
+from the wrong row (of the run, or of the state at an event: another row, or a slice of the whole state there from
+another start), the state at an event read from the run's last output before it, the run returned rounded (in
+float32), a wrong start, an event found late or early, and an error that grows with the step (against fixed-step
+runs of the reference's own right-hand side); and the reference re-run as a slip would run it
+(``parameter_variants``: its arguments exchanged, scaled or ignored, its start's entries exchanged, solve_ivp at
+looser tolerances), every such run a function of the run's arguments alone.  The checks use some pieces themselves:
+``reread_runs`` (a run whose columns are read from the wrong rows of the solution, which looks like a wrong start or
+a drifting energy) and ``exchanged_events``.
 
 Where the run's probe declares its right-hand side (``motion["rhs"]``), the student's is first compared with the
 reference's at states along the reference's run (``model_evidences``): a run that leaves the reference's is not
@@ -33,6 +34,7 @@ from .evidence import (
     Source,
     within,
 )
+from .grammar import precision_slips
 from .scene import Scene
 
 __all__ = [
@@ -142,8 +144,9 @@ def aligned_runs(evidence: Evidence, decl: Declaration):
 
 
 def motion_slips(evidence: Evidence, decl: Declaration) -> list:
-    """The motion slips that reproduce the student's run: an event found late or early, a constant offset, a state
-    read from the wrong row, a time shift, a wrong initial state."""
+    """The motion slips that reproduce the student's run: an event found late or early, the run returned rounded
+    (in single precision or to a few decimals: then no other, since the rounding makes every difference, the
+    start's too), a constant offset, a state read from the wrong row, a time shift, a wrong initial state."""
     motion = decl.motion
     tol = evidence.tol
     found = event_slips(evidence, decl) + event_state_slips(evidence, decl)
@@ -157,6 +160,12 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
     wrong = [k for k in keys if not within(G[k], R[k], tol)]
     if not wrong:
         return found if any(h.key == "motion:grid" for h in found) else found + grid_slips(evidence, decl)
+    # the reference's run returned rounded (float32, a few decimals), in the states that differ: every other
+    # difference, the start's too, is that rounding's, so none of the slips below is heard beside it
+    rounded = precision_slips(np.concatenate([np.ravel(G[k]) for k in wrong]),
+                              np.concatenate([np.ravel(R[k]) for k in wrong]), tol)
+    if rounded:
+        return found + rounded
     # a constant offset
     offsets = {k: np.mean(G[k] - R[k], axis=0) for k in keys}
     if all(within(G[k] - offsets[k], R[k], tol) for k in keys):

@@ -148,8 +148,24 @@ SPAN_OVER_SAMPLES = Planted(
     new="t_eval = np.arange(int(round(t_end / dt)) + 1) * t_end / (int(round(t_end / dt)) + 1)",
     check="p24.simulated_motion", diagnosis="grid_off_by_one", message="a grid of one more sample")
 
-RUN_SLIPS = [SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED, EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS,
-             RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT, RATES_NEGATED_AT_THE_START]
+#: the pendulum's rates returned in single precision: its start is the given one in float32, a rounding, not a start
+#: of its own
+RATES_IN_SINGLE = Planted(
+    name="motions-p24-rates-in-single-precision", problem=24, file="problem_24.py",
+    old='"qd": result.y[3:].T}', new='"qd": result.y[3:].T.astype(np.float32)}',
+    check="p24.simulated_motion", diagnosis="float32", message="single precision")
+
+#: the arm's whole solution cast to single precision: its start is no start of its own for the check's catalogue
+#: either
+ARM_IN_SINGLE = Planted(
+    name="motions-p37-solution-in-single-precision", problem=37, file="problem_37.py",
+    old='return {"t": run["t"], "q": run["y"][:, :3], "qd": run["y"][:, 3:]}',
+    new='y = run["y"].astype(np.float32)\n    return {"t": run["t"], "q": y[:, :3], "qd": y[:, 3:]}',
+    check="p37.computed_torques_run", diagnosis="float32", message="single precision")
+
+RUN_SLIPS = [RATES_IN_SINGLE, ARM_IN_SINGLE, SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED,
+             EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS, RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT,
+             RATES_NEGATED_AT_THE_START]
 NEAR_MISSES = [STRONGER_GRAVITY]
 
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
@@ -172,7 +188,8 @@ def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, sl
 def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferred_ids, slot):
     """Slips of the run, not of its model: its output grid one sample off, the run's arguments exchanged or
     ignored, solve_ivp's tolerances loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
-    the other row; and a wrong start, which a state read from the wrong rows must not be mistaken for."""
+    the other row, the run returned in single precision; and a wrong start, which a state read from the wrong rows
+    must not be mistaken for."""
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert_told(mistake, target)
 
