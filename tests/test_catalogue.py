@@ -61,3 +61,19 @@ def test_a_servo_too_soft_is_told_only_where_the_model_is_integrated_as_the_shee
     assert _stepped_otherwise({"integrator": "euler", "timestep": 0.001}) == "integrates with euler"
     assert _stepped_otherwise({"integrator": "implicitfast", "timestep": 0.005}) == \
         "steps at 5 ms and integrates with implicitfast"
+
+
+def test_a_start_in_single_precision_is_no_start_of_its_own_for_problem_37():
+    """Problem 37's checks call a run's start that differs from the table's first row a wrong initial state, but not
+    where its entries are that row's or their float32 roundings (a run returned in single precision, some of its
+    states or all): there the diagnosis engine tells the rounding."""
+    import numpy as np
+
+    from checks.problem_37 import _single
+
+    start = np.array([np.pi / 6, -np.pi / 4, np.pi / 3, 1e-17, 0.0, 0.0])
+    angles_single = np.concatenate([start[:3].astype(np.float32), start[3:]])
+    assert _single(angles_single, start)
+    assert _single(start.astype(np.float32), start)
+    assert not _single(np.round(start, 4), start)  # typed to four decimals: another start
+    assert not _single(np.concatenate([start[:3], -start[3:4], start[4:]]) + [0, 0, 0.01, 0, 0, 0], start)
