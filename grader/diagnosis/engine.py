@@ -57,6 +57,7 @@ from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
 from .runs import (
     aligned_runs,
+    START_KEY,
     FIXED_STEPS,
     INTEGRATION,
     is_run,
@@ -574,11 +575,6 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)
     return _told(_beside(tiers), _where(evidences))
-
-
-
-#: the key of the run tier's start that differs from the given one (``runs.motion_slips``)
-START_KEY = "motion:start"
 
 
 def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:

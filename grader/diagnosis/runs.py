@@ -38,6 +38,7 @@ from .grammar import precision_slips
 from .scene import Scene
 
 __all__ = [
+    "START_KEY",
     "FIXED_STEPS",
     "STEP_WINDOW",
     "STEP_SHAPE",
@@ -77,6 +78,9 @@ __all__ = [
 ]
 
 
+#: the key of a run's start that differs from the given one (``motion_slips``), and the prefix of the keys of the
+#: slips of a value that made it (``engine``)
+START_KEY = "motion:start"
 #: the steps of the reference's fixed-step runs that a run's error is compared with [s]
 FIXED_STEPS = (0.005, 0.01, 0.02, 0.05)
 #: the states along the reference's run at which the student's right-hand side is compared with the reference's,
@@ -190,7 +194,7 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
              and not within(G[k][0], R[k][0], tol)]
     if start:
         words = "; ".join(f"{k}(t0) = {format_array(G[k][0])}, expected {format_array(R[k][0])}" for k in start)
-        found.append(Hypothesis("motion:start", "initial_state", 3, f"your run starts from another state: {words}"))
+        found.append(Hypothesis(START_KEY, "initial_state", 3, f"your run starts from another state: {words}"))
     return found
 
 
