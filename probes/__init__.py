@@ -77,13 +77,28 @@ def probe(func=None, *, returns=None, says="", reference_only=False, **declared)
     return mark(func) if func is not None else mark
 
 
-_FRESH = threading.local()
+class Flag(threading.local):
+    """A flag of the running thread, off until ``within()`` sets it for the duration of a ``with`` block."""
+
+    on = False
+
+    @contextlib.contextmanager
+    def within(self):
+        before = self.on
+        self.on = True
+        try:
+            yield
+        finally:
+            self.on = before
+
+
+_FRESH = Flag()
 
 
 def remembered(store: dict, key, make):
     """``store[key]``, made by ``make()`` the first time: what a probe computes once per package and process (a
     symbolic answer simplified and lambdified).  Within ``fresh()`` it is made anew and not kept."""
-    if getattr(_FRESH, "on", False):
+    if _FRESH.on:
         return make()
     if key not in store:
         store[key] = make()
@@ -94,12 +109,8 @@ def remembered(store: dict, key, make):
 def fresh():
     """Within: the probes of this thread remember nothing (``remembered``), for a package whose functions' code
     changes between calls (the diagnosis engine's mutants of the reference)."""
-    before = getattr(_FRESH, "on", False)
-    _FRESH.on = True
-    try:
+    with _FRESH.within():
         yield
-    finally:
-        _FRESH.on = before
 
 
 def module(package, name):

@@ -13,11 +13,12 @@ else than numbers, the arguments' symbols, sums, products, powers and the common
 nor a matrix, is given to sympy's ``lambdify``."""
 
 import contextlib
-import threading
+
+from . import Flag
 
 __all__ = ["lambdify", "quick"]
 
-_QUICK = threading.local()
+_QUICK = Flag()
 
 #: the functions read by name (sympy's class name: numpy's function)
 _FUNCTIONS = {
@@ -30,12 +31,8 @@ _FUNCTIONS = {
 @contextlib.contextmanager
 def quick():
     """Within: ``lambdify`` of this thread reads the expression's tree (see the module's docstring)."""
-    before = getattr(_QUICK, "on", False)
-    _QUICK.on = True
-    try:
+    with _QUICK.within():
         yield
-    finally:
-        _QUICK.on = before
 
 
 def lambdify(args, expr, modules="numpy"):
@@ -43,7 +40,7 @@ def lambdify(args, expr, modules="numpy"):
     expression's tree, where it holds only what that reading knows."""
     import sympy as sp
 
-    if getattr(_QUICK, "on", False):
+    if _QUICK.on:
         try:
             return _read(list(args), expr)
         except _Unknown:
