@@ -81,6 +81,8 @@ def flaw(mine, reference) -> str:
             return next((f"[{i}] {found}" for i, (a, b) in enumerate(zip(mine, reference)) if (found := flaw(a, b))),
                         "")
         return ""
+    if mine is None:
+        return "is None"
     ours = _numeric(mine)
     if ours is None or ours.dtype == object:
         return "is not numeric"

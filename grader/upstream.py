@@ -84,7 +84,7 @@ def same(mine, reference) -> bool:
         return (isinstance(mine, dict) and isinstance(reference, dict) and mine.keys() == reference.keys()
                 and all(same(mine[k], reference[k]) for k in reference))
     if isinstance(reference, str) or isinstance(mine, str) or reference is None or mine is None:
-        return mine == reference
+        return type(mine) is type(reference) and mine == reference  # never ``None == array``: an array
     if isinstance(reference, bool) or isinstance(mine, bool):
         return type(mine) is type(reference) and mine == reference
     try:

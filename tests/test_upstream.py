@@ -128,6 +128,24 @@ def test_nothing_is_carried_on_an_R3_that_does_nothing(tmp_path):
     assert not any("Judged on your own" in r.hint for r in report.results)
 
 
+@pytest.mark.parametrize("returned, says", [("None", "is None"), ('"R3"', "is not numeric")])
+def test_an_R3_that_returns_no_matrix_is_the_students_fault_where_a_later_answer_is_judged_on_it(tmp_path, returned,
+                                                                                                 says):
+    """An R3 left returning None (or text), with problem 8's own matrix typed in and its Euler step wrong: part (a)
+    fails, and judging it on the student's R3 finds nothing to carry forward.  The comparison of that R3's value with
+    the reference's must not be the grader's error (``None == array`` is an array, not a truth value)."""
+    typed = ("problem_08.py", "A_IC0 = R3(np.pi / 2)",
+             "A_IC0 = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])")
+    euler = ("problem_08.py", "return A_IC + dt * skew(I_omega) @ A_IC", "return A_IC - dt * skew(I_omega) @ A_IC")
+    stub = ("rotations.py", "return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])", f"return {returned}")
+    report = grade_submission(_with(tmp_path, [stub, typed, euler]), [8], seed=SEED)[0]
+    assert not [r.check_id for r in report.results if r.status is Status.GRADER_ERROR], [
+        (r.check_id, r.message[:300]) for r in report.results if r.status is Status.GRADER_ERROR]
+    part_a = next(r for r in report.results if r.check_id == "p08.part_a")
+    assert part_a.status is Status.FAILED, part_a.message
+    assert f"{says}: nothing is carried forward" in part_a.message, part_a.message
+
+
 def test_the_kit_leaves_the_judgement_to_the_submission_and_names_the_function(transposed, kit_oracle,
                                                                              deferred_ids):
     """The kit cannot compose the reference's code with the student's R3: problems 7 and 8's checks built on it are
@@ -201,6 +219,7 @@ def test_every_shared_function_a_later_problem_uses_is_listed():
     ([1.0, float("nan"), 0.0], [1.0, 2.0, 3.0], "has NaN or infinite entries"),
     ([1.0, 2.0], [1.0, 2.0, 3.0], "has shape (2,), not (3,)"),
     ("x", [1.0, 2.0, 3.0], "is not numeric"),
+    (None, [1.0, 2.0, 3.0], "is None"),
     ([[1.0, 2.0], 3.0], [[1.0, 2.0], 4.0], ""),
     ({"q": [0.0, 0.0]}, {"q": [1.0, 2.0]}, "['q'] is all zeros"),
 ])
