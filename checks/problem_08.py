@@ -47,12 +47,18 @@ def _step_mistakes(ctx, which):
             body = x + dt * np.linalg.solve(B, w)
             return [Mistake("wrong_frame", body, "You used I_omega as if it were C_omega: the rates are "
                             "(A_IC @ B)^-1 @ I_omega, with A_IC from the current angles.")]
+        backwards = x - dt * skew(w) @ x if which == "euler" else expm_skew(-dt * skew(w)) @ x
         found = [
             Mistake("wrong_frame", x + dt * x @ skew(w) if which == "euler" else x @ expm_skew(dt * skew(w)),
                     "The angular velocity is given in inertial coordinates: dA_IC/dt = skew(I_omega) @ A_IC; "
                     "A_IC @ skew(w) would treat w as body coordinates."),
-            Mistake("sign_flip", x - dt * skew(w) @ x if which == "euler" else expm_skew(-dt * skew(w)) @ x,
+            Mistake("sign_flip", backwards,
                     "The rotation runs backwards: check the sign of skew(w) (skew(w) @ x == cross(w, x))."),
+            # the same value: skew(w).T == -skew(w), and expm(dt skew(w)).T == expm(-dt skew(w))
+            Mistake("transpose", backwards,
+                    "The step's matrix is transposed: skew(w).T == -skew(w)"
+                    + ("." if which == "euler" else ", so expm(dt skew(w)).T == expm(-dt skew(w)).")
+                    + " A transpose there runs the rotation backwards."),
         ]
         if which == "exp":
             found.insert(0, Mistake("euler_not_exponential", x + dt * skew(w) @ x, EULER_HINT))

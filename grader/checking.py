@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from checks._diagnoses import DIAGNOSES, student_phrase, unknown_names
+from checks._diagnoses import DIAGNOSES, families_of, student_phrase, unknown_names
 
 from .errors import GraderFault
 from .results import Figure, Series
@@ -377,7 +377,8 @@ def assert_close(got, expected, name: str, tol: Tol, mistakes=(), context: str =
         lines.append(f"(the values are shown to {SHEET_DIGITS} decimals, the sheet's precision; they are compared "
                      "with the tolerance above)")
     mistakes = list(mistakes or ())
-    matches = tuple(mistake for mistake in mistakes if _matches(got, mistake, tol))
+    matches = rotation_twins(got, expected, tol,
+                             tuple(mistake for mistake in mistakes if _matches(got, mistake, tol)))
     hint, diagnosis = diagnose(matches)
     from .diagnosis import Evidence
 
@@ -442,6 +443,42 @@ def _transposed(got, expected, name: str, tol: Tol) -> None:
              f"Your {array.shape[0]} x {array.shape[1]} array is the transpose of the expected {expected.shape[0]} x "
              f"{expected.shape[1]} one: swap its rows and columns (build it the other way round, or return its .T).",
              "transpose")
+
+
+#: what is told beside a known mistake of one family where the answer is a rotation's transpose (``rotation_twins``)
+TWIN_HINTS = {
+    "angle_sign": "A rotation's transpose is the rotation by the negated angle (R(a).T == R(-a)): your matrix is "
+                  "the expected one turned the other way.",
+    "transpose": "A rotation by the negated angle is the transposed rotation (R(-a) == R(a).T): your matrix is the "
+                 "transpose of the expected one.",
+}
+
+
+def rotation_twins(got, expected, tol: Tol, matches: tuple) -> tuple:
+    """The known mistakes that match, with the twin a rotation cannot tell apart: where the expected value is a
+    proper rotation and the student's is its transpose, that is also the rotation by the negated angle, so a
+    catalogue's ``transpose`` is told with ``angle_sign`` and a sign slip with ``transpose`` ("could be X or Y"):
+    the answer shows both alike, and naming one would pick a family it does not show."""
+    if not matches:
+        return matches
+    try:
+        answer, turn = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    except (TypeError, ValueError):
+        return matches
+    if turn.shape != (3, 3) or answer.shape != (3, 3) or not _proper_rotation(turn) or close(turn, turn.T, tol):
+        return matches
+    if not close(answer, turn.T, tol):
+        return matches
+    families = {family for mistake in matches for family in families_of(mistake.name)}
+    twins = [Mistake(name, turn.T, TWIN_HINTS[name]) for name, family, other in
+             (("angle_sign", "sign", "transpose"), ("transpose", "transpose", "sign"))
+             if other in families and family not in families]
+    return matches + tuple(twins)
+
+
+def _proper_rotation(A) -> bool:
+    return bool(np.all(np.isfinite(A)) and np.max(np.abs(A.T @ A - np.eye(3))) < 1e-6
+                and abs(np.linalg.det(A) - 1.0) < 1e-6)
 
 
 def _matches(got, mistake: Mistake, tol: Tol) -> bool:

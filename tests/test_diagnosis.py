@@ -185,3 +185,25 @@ def test_a_child_without_call_later_is_called_at_once_and_its_failure_raised_whe
     later = ctx.student_later(double, -1)
     with pytest.raises(StudentCodeError, match="negative"):
         later()
+
+
+def _turn(angle):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+@pytest.mark.parametrize("got, expected, catalogue, told", [
+    # a rotation's transpose is the rotation by the negated angle: a catalogue of one of them is told with both
+    (_turn(0.4).T, _turn(0.4), ["transpose"], "transpose or angle_sign"),
+    (_turn(0.4).T, _turn(0.4), ["sign_flip"], "sign_flip or transpose"),
+    (_turn(0.4).T, _turn(0.4), ["transpose", "angle_sign"], "transpose or angle_sign"),
+    # near misses: the whole matrix negated is no rotation's transpose; a matrix that is not a rotation has no twin
+    (-_turn(0.4), _turn(0.4), ["sign_flip"], "sign_flip"),
+    (np.diag([1.0, 2.0, 3.0]) + np.triu(np.ones((3, 3)), 1).T, np.diag([1.0, 2.0, 3.0]) + np.triu(np.ones((3, 3)), 1),
+     ["transpose"], "transpose"),
+])
+def test_a_rotation_transposed_is_told_as_the_rotation_the_other_way_too(got, expected, catalogue, told):
+    with pytest.raises(CheckFailure) as caught:
+        assert_close(got, expected, "A", EXACT, [Mistake(name, got, "the catalogue's hint") for name in catalogue])
+    assert caught.value.diagnosis == told
+    assert caught.value.hint.count("the catalogue's hint") == len(catalogue)

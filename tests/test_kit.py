@@ -251,7 +251,7 @@ def _kit_installed_grades_problem_6(kit, tmp_path):
     results = {r["check_id"]: r for r in json.loads((work / "report.json").read_text())["reports"][0]["results"]}
     assert results["p06.elementary_shape"]["status"] == "passed"
     assert results["p06.elementary_values"]["status"] == "failed"
-    assert results["p06.elementary_values"]["diagnosis"] == "transpose"
+    assert results["p06.elementary_values"]["diagnosis"] == "transpose or angle_sign"
     assert "recorded random inputs" in results["p06.elementary_values"]["message"]
     assert results["p06.frames"]["status"] == "not_implemented"
     assert "grader_error" not in {r["status"] for r in results.values()}
