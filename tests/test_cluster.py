@@ -2,6 +2,7 @@
 student; every student is graded exactly once, with the right grade, and the killed worker's sandbox goes with it.
 Also the snapshot that carries a student's files to a worker that does not see them."""
 
+import json
 import os
 import re
 import signal
@@ -256,20 +257,43 @@ def _verdicts(reports):
     return {(r.problem, c.check_id): (c.status, c.score, c.diagnosis) for r in reports for c in r.results}
 
 
+#: The problems the three ways grade each student on (every student the same ones, as a batch grades its class):
+#: each planted student's own mistakes of every kind of work the course has, so that every kind of probe module
+#: and library a slot's warm process preloads is used (the test holds it): a MuJoCo model simulated in the sandbox
+#: (2 even, 5 odd); rotations, frames and bound vectors in modules that later problems import (6 even; 9, 11 odd);
+#: inertia, symbolic in part (16 even, 17 odd); planar chains and Jacobians (21 odd; 22, 26 even); the answers file
+#: (10 even; 27, 41 odd); kinematic trees and gravity compensation in the tree.py that both students break (31 odd;
+#: 32, 34 even); symbolic answers (45 odd); equations of motion and simulations with events (38, 42, 44 even; 43, 47
+#: odd).  A student graded after another on the same slot is graded on the same problems, where anything left
+#: behind in the slot (its warm process killed, state of the grading process) would change a verdict; and in each
+#: student's worker, later problems follow the earlier ones.  All 45 problems took four minutes (a third of it the
+#: diagnosis of problem 37 and the simulations of 15, 24 and 46): more problems, but no other kind of work and no
+#: other way for a verdict to leak.
+VERDICT_PROBLEMS = (2, 5, 6, 9, 10, 11, 16, 17, 21, 22, 26, 27, 31, 32, 34, 38, 41, 42, 43, 44, 45, 47)
+
+
 @pytest.mark.slow
 def test_planted_and_hostile_submissions_get_the_verdicts_of_a_fresh_worker_on_warm_slots_and_a_cluster(tmp_path):
     """The warm path (a batch slot's zygote forks each student's worker) and the cluster path (the same slots in
     Dask workers) grade as a fresh worker does: two students carrying a planted mistake in every other problem
-    each, a reference, and two attacks, graded by --jobs 2 and by a two-worker LocalCluster, against each
-    student graded alone by grade_submission with the seed the batch gave them."""
+    each, a reference, and two attacks (one kills every process it can see, one leaves a daemon and files behind),
+    graded by --jobs 2 and by a two-worker LocalCluster, against each student graded alone by grade_submission with
+    the seed the batch gave them.  Graded on ``VERDICT_PROBLEMS``: each planted student's own mistakes of every kind
+    of work, and the same problems for the students graded after them on a slot (see there)."""
     from grader.batch import run_batch
     from grader.batch.gradebook import Gradebook
     from grader.runner import grade_submission
     from grader.problems import problems as all_problems
+    from grader.sandbox.zygote import warm_modules
 
-    from .submissions import build_hostile, build_with_mistakes
+    from .submissions import build_hostile, build_with_mistakes, hostile_expectation
+    from .test_warm import nonce
 
-    numbers = [p.number for p in all_problems()]
+    numbers = list(VERDICT_PROBLEMS)
+    every = [p.number for p in all_problems()]
+    assert set(numbers) <= set(every)
+    preloaded = {m for m in warm_modules(every) if not m.startswith("probes.problem_")}
+    assert preloaded <= set(warm_modules(numbers)), preloaded - set(warm_modules(numbers))  # every kind is used
     first = {}
     for mistake in planted_mistakes():
         first.setdefault(mistake.problem, mistake)
@@ -278,9 +302,13 @@ def test_planted_and_hostile_submissions_get_the_verdicts_of_a_fresh_worker_on_w
                                          strict=False)
                for name, parity in (("odd", 1), ("even", 0))}
     assert all(len(names) >= 15 for names in applied.values()), applied
+    graded_mistakes = {name: [m for m in first.values() if m.name in names and m.problem in numbers]
+                       for name, names in applied.items()}
+    assert all(len(mistakes) >= 8 for mistakes in graded_mistakes.values()), graded_mistakes
     copy_reference(subs / "reference")
     build_hostile("kill_everything", subs / "killer")
     build_hostile("leftovers", subs / "leaver")
+    (subs / "leaver" / "target.txt").write_text(json.dumps({"nonce": nonce()}))  # what names its leftovers
     paths = {"--jobs 2": dict(jobs=2), "LocalCluster 2": dict(cluster="local:2", force=True)}
     graded = {}
     out = tmp_path / "results"  # one results folder, one secret: each student has one seed on both paths
@@ -292,6 +320,7 @@ def test_planted_and_hostile_submissions_get_the_verdicts_of_a_fresh_worker_on_w
         graded[label] = {name: [g.report for g in rows if g.student == name] for name in applied.keys()
                          | {"reference", "killer", "leaver"}}
     for name, reports in graded["--jobs 2"].items():
+        assert sorted(r.problem for r in reports) == numbers, (name, [r.problem for r in reports])
         seeds = {r.seed for r in reports}
         assert len(seeds) == 1 and {r.seed for r in graded["LocalCluster 2"][name]} == seeds, (name, seeds)
         alone = _verdicts(grade_submission(subs / name, numbers, seed=seeds.pop()))
@@ -299,8 +328,13 @@ def test_planted_and_hostile_submissions_get_the_verdicts_of_a_fresh_worker_on_w
             assert _verdicts(graded[label][name]) == alone, (label, name)
     failed = {name: {c.check_id for r in graded["--jobs 2"][name] for c in r.results if not c.passed}
               for name in applied}
-    for name, names in applied.items():  # every planted mistake still costs its intended check
-        for mistake in (m for m in first.values() if m.name in names):
+    for name, mistakes in graded_mistakes.items():  # every planted mistake graded still costs its intended check
+        for mistake in mistakes:
             assert mistake.check in failed[name], (name, mistake.name)
-    reference = graded["LocalCluster 2"]["reference"]
-    assert sum(r.score for r in reference) == sum(r.auto_max_score for r in reference)
+    for name, attack in (("reference", None), ("killer", "kill_everything"), ("leaver", "leftovers")):
+        for label in paths:  # the attacks ran, and cost nothing
+            reports = graded[label][name]
+            assert sum(r.score for r in reports) == sum(r.auto_max_score for r in reports) > 0, (label, name)
+            if attack is not None:
+                said = hostile_expectation(attack)["stdout"]
+                assert any(said in r.stdout for r in reports), (label, name, reports[0].stdout[-2000:])
