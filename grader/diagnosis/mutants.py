@@ -1440,7 +1440,8 @@ def _mutated(function: _Function, lines: tuple):
                 slip = f"{slip}_rates"  # a quantity and its rate exchanged: each read where the other belongs
             if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
                 slip = "skew"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
-            tree = copy.deepcopy(function.node)
+            copies: dict = {}
+            tree = _tree_copy(function.node, copies)
             if isinstance(edit, tuple) and edit[0] == "unit":
                 _unit(tree, lines, edit[1])
             elif isinstance(edit, tuple) and edit[0] == "read_as":
@@ -1450,16 +1451,38 @@ def _mutated(function: _Function, lines: tuple):
             elif isinstance(edit, tuple):
                 _swap_names(tree, lines, edit[1], edit[2])
             else:
-                nodes = list(_parented(tree))
-                target, holder, _, _ = nodes[index]
+                target, holder = copies[id(node)], copies.get(id(parent))
                 replacement = edit(target)
                 if replacement is None or not _replace(holder, target, replacement):
                     continue
-            ast.fix_missing_locations(tree)
-            key = ast.dump(tree)
+            key = ast.dump(tree)  # the new nodes' places are filled in where the tree is compiled (``_compiled``)
             if key not in seen:
                 seen.add(key)
-                yield slip, tree, tuple(sorted(used - _used_parameters(tree, parameters)))
+                yield slip, tree, tuple(sorted(p for p in used if not _read_in(key, p)))
+
+
+def _read_in(dumped: str, name: str) -> bool:
+    """The tree whose ``ast.dump`` is ``dumped`` reads the name (as ``_used_parameters`` finds it, without another
+    walk of the tree)."""
+    return f"Name(id={name!r}, ctx=Load())" in dumped
+
+
+def _tree_copy(node, copies: dict):
+    """A deep copy of the syntax tree ``node``, as ``copy.deepcopy`` makes it (a node met twice, such as the
+    parser's shared ``Load``, copied once), at a fraction of its cost; ``copies`` maps the ``id`` of each node of
+    the original to its copy, so that a place found in the original is found in the copy without another walk."""
+    made = copies.get(id(node))
+    if made is not None:
+        return made
+    made = copies[id(node)] = type(node).__new__(type(node))
+    fields = made.__dict__
+    for key, value in node.__dict__.items():
+        if isinstance(value, ast.AST):
+            value = _tree_copy(value, copies)
+        elif isinstance(value, list):
+            value = [_tree_copy(item, copies) if isinstance(item, ast.AST) else item for item in value]
+        fields[key] = value
+    return made
 
 
 def _parameters(function: ast.FunctionDef) -> frozenset:
