@@ -69,8 +69,14 @@ is named only when the mutants kept are of one family of the vocabulary, or of t
 the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
-mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and take at most ``TIME_BUDGET`` seconds of
-the thread's CPU time (a mutant that is still running then is interrupted, and nothing is named); where an earlier
+mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
+the answer's inputs) takes at most ``TIME_BUDGET`` seconds of the thread's CPU time (a mutant that is still running
+then is interrupted, and nothing is named).  Their making (the reference's code mutated and compiled) is the same
+for every answer and kept for the process, so it is counted apart, within ``MAKING_TIME_BUDGET``: what the tier
+names does not depend on whether an earlier explanation of the process made the mutants, nor on how much a loaded
+machine slows their making.  The worst an explanation's formula tier may spend is so ``MAKING_TIME_BUDGET`` +
+``TIME_BUDGET`` + ``GIVEN_TIME_BUDGET`` of CPU time (or ``LATE_TIME_BUDGET`` in place of the last), the first
+only where the process has not made those mutants yet; where an earlier
 tier already explained the answer, the tier is heard for rivals within a budget of its own, ``LATE_MUTANTS`` mutants
 and ``LATE_TIME_BUDGET``, those of the families not told yet first (``late``: a rival of a family told adds a name,
 not an explanation), warnings are
@@ -115,16 +121,22 @@ from . import trace
 from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, within
 from .grammar import equivalents
 
-__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE",
-           "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "Mutant",
-           "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
+__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "MAKING_TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS",
+           "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE",
+           "RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
 MAX_MUTANTS = 600
-#: the CPU time one explanation's mutants may take [s] (the thread's own, so that a loaded machine names what an
-#: idle one names); a mutant still running then is interrupted
+#: the CPU time the measuring of one explanation's mutants may take [s] (the thread's own, so that a loaded machine
+#: names what an idle one names): the reference's runs on the answer's inputs; a mutant still running then is
+#: interrupted.  Their making (``MAKING_TIME_BUDGET``) is not counted here
 TIME_BUDGET = 2.0
+#: the CPU time the making of one explanation's mutants may take [s]: the reference's code parsed, mutated and
+#: compiled, which is the same for every answer and kept for the process (``_codes``: an explanation of a problem
+#: whose mutants an earlier one made spends next to nothing on it).  It depends on the reference alone, not on the
+#: student: the most, every function of problem 26 and its neighbours, take about 2 s on an idle machine
+MAKING_TIME_BUDGET = 8.0
 #: where an earlier tier already explained the answer, the formula tier's mutants tried at most, those of the
 #: families not told yet first, then those of the families told (a rival of a family told adds a name, not an
 #: explanation), within ``LATE_TIME_BUDGET``: where the time runs out before the rivals of other families were all
@@ -132,10 +144,12 @@ TIME_BUDGET = 2.0
 #: them (problem 43's solve left out, 157th of 159: the first 40 lost it), so all of them, as many as the tier makes
 LATE_MUTANTS = MAX_MUTANTS
 #: the CPU time of the evaluation of the mutants heard after an earlier tier explained the answer [s] (their making,
-#: which the process caches, is bounded by ``TIME_BUDGET``: problem 31's 477 took more than this the first time)
+#: which the process caches, is bounded by ``MAKING_TIME_BUDGET``: problem 31's 477 took more than this the first
+#: time)
 LATE_TIME_BUDGET = 0.4
-#: the CPU time of the slips of the code a problem's module gives whole (``_given``), tried where no slip of the
-#: solution regions reproduced the student's value [s]
+#: the CPU time of the measuring of the slips of the code a problem's module gives whole (``_given``), tried where
+#: no slip of the solution regions reproduced the student's value [s] (their making, as the regions', is bounded by
+#: ``MAKING_TIME_BUDGET``)
 GIVEN_TIME_BUDGET = 2.0
 #: a solution region of problem N +- this many counts as the check's problem's own (the screw axis of problem 13
 #: is the region of problem 14)
@@ -1819,14 +1833,15 @@ LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", 
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
-               ran: set | None = None, given: bool = False) -> list[Mutant] | None:
+               ran: set | None = None, given: bool = False, deadline: _Deadline | None = None) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
     there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
     the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for.  ``quick``
     (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs;
     ``ran``: the codes that call runs, where the caller traced it.  ``given``: the mutants of the functions of the
     problem's own module that hold no region instead (those of problem N's module for problem N alone), in the
-    same order."""
+    same order.  ``deadline``: the explanation's, against whose budget of making (``_Deadline.making``) the
+    compiling of the mutants is counted."""
     ran = _traced(package, root, probe, args, quick) if ran is None else ran
     found: list[Mutant] = []
     reads: list[Mutant] = []
@@ -1839,8 +1854,9 @@ def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
         defaulted = _defaulted(function.node)
-        for slip, code, unused, twin in _codes(function, lines, live.__code__.co_filename,
-                                               live.__code__.co_freevars):
+        with deadline.making() if deadline is not None else contextlib.nullcontext():
+            codes = _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars)
+        for slip, code, unused, twin in codes:
             mutant = Mutant(function.module, function.path, slip, code, unused, defaulted, twin, function.given)
             (reads if slip in LATE_SLIPS else found).append(mutant)
             if len(found) > MAX_MUTANTS:
@@ -1907,34 +1923,75 @@ class _Deadline:
     not the work).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``: not on macOS or
     Windows) it counts wall time; and a thread that waits without working (for a lock, say) is interrupted after
     ``WAIT_FACTOR`` times ``seconds`` of wall time in any case, less the time it was ready to run and waited for a
-    core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the work early."""
+    core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the work early.
 
-    def __init__(self, seconds: float):
+    The work inside ``making()`` (the making of mutants: the same for every answer, and kept for the process) is
+    counted apart, against ``making`` seconds (``MAKING_TIME_BUDGET``), so that ``seconds`` bounds the measuring of
+    one answer alone, whether or not an earlier explanation of the process made its mutants already."""
+
+    def __init__(self, seconds: float, making: float | None = None):
         self.thread = threading.get_ident()
         self.seconds = seconds
+        self.making_seconds = MAKING_TIME_BUDGET if making is None else making
         self.lock = threading.Lock()
         self.armed = True
         self.fired = False
         self.done = threading.Event()
         self.clock = _cpu_clock(self.thread)
         self.schedstat = _schedstat(threading.get_native_id())
+        self.queued = 0.0  # the last time ready to run and waiting for a core that the scheduler told
+        self.start = (0.0, 0.0)
+        self.made = (0.0, 0.0)  # the CPU and wall time spent making, in the periods closed
+        self.making_since = None  # where the period of making now open began
         self.timer = threading.Thread(target=self._watch, daemon=True)
 
-    def _spent(self, start_cpu: float, start_wall: float, start_queued: float | None) -> bool:
-        wall = time.monotonic() - start_wall
-        if self.clock is None:
-            return wall >= self.seconds
+    def _now(self) -> tuple[float, float]:
+        """The thread's CPU time (wall time where it has no clock) and the wall time less the time it waited for a
+        core."""
+        wall = time.monotonic()
         queued = _queued(self.schedstat)
-        if queued is not None and start_queued is not None:
-            wall -= queued - start_queued  # ready to run, but no core was free: the machine's load, not waiting
-        return time.clock_gettime(self.clock) - start_cpu >= self.seconds or wall >= WAIT_FACTOR * self.seconds
+        if queued is not None:
+            self.queued = queued
+        return (time.clock_gettime(self.clock) if self.clock is not None else wall), wall - self.queued
+
+    def _accounts(self, now: tuple[float, float]) -> tuple[tuple[float, float], tuple[float, float]]:
+        """``((cpu, wall) measuring, (cpu, wall) making)`` spent until ``now``."""
+        with self.lock:
+            made, since = self.made, self.making_since
+        if since is not None:
+            made = (made[0] + now[0] - since[0], made[1] + now[1] - since[1])
+        return (now[0] - self.start[0] - made[0], now[1] - self.start[1] - made[1]), made
+
+    def spent(self) -> tuple[float, float]:
+        """The CPU time spent so far measuring, and making [s]."""
+        measuring, making = self._accounts(self._now())
+        return measuring[0], making[0]
+
+    def _spent(self) -> bool:
+        measuring, making = self._accounts(self._now())
+        return (measuring[0] >= self.seconds or measuring[1] >= WAIT_FACTOR * self.seconds
+                or making[0] >= self.making_seconds or making[1] >= WAIT_FACTOR * self.making_seconds)
+
+    @contextlib.contextmanager
+    def making(self):
+        """The work inside is the making of mutants, counted against its own budget (nested, the outer counts)."""
+        if self.making_since is not None:
+            yield self
+            return
+        since = self._now()
+        with self.lock:
+            self.making_since = since
+        try:
+            yield self
+        finally:
+            now = self._now()
+            with self.lock:
+                self.made = (self.made[0] + now[0] - since[0], self.made[1] + now[1] - since[1])
+                self.making_since = None
 
     def _watch(self) -> None:
-        start_cpu = time.clock_gettime(self.clock) if self.clock is not None else 0.0
-        start_wall = time.monotonic()
-        start_queued = _queued(self.schedstat)
-        while not self.done.wait(min(_POLL, self.seconds)):
-            if self._spent(start_cpu, start_wall, start_queued):
+        while not self.done.wait(min(_POLL, self.seconds, self.making_seconds)):
+            if self._spent():
                 self._fire()
                 return
 
@@ -1945,6 +2002,7 @@ class _Deadline:
                 ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(self.thread), ctypes.py_object(_Timeout))
 
     def __enter__(self):
+        self.start = self._now()
         self.timer.start()
         return self
 
@@ -2295,10 +2353,11 @@ def _given(package, root: Path, problem: int, evidences: list[Evidence], origina
     started = time.thread_time()
     first = evidences[0]
     with _Deadline(GIVEN_TIME_BUDGET) as deadline:
-        mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, given=True)
+        mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, given=True,
+                             deadline=deadline)
         trace.note("given", count=None if mutants is None else len(mutants),
                    functions=sorted({m.function for m in mutants or ()}),
-                   seconds=round(time.thread_time() - started, 3))
+                   seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
                          progress=progress) if mutants else []
     return kept, mutants
@@ -2316,11 +2375,12 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
     started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
-        kept, originals, found, progress, rivals, twins = None, {}, [], {}, None, ()
+        kept, originals, found, progress, rivals, twins, making = None, {}, [], {}, None, (), 0.0
         try:
             root, package = _package()
             with _Deadline(TIME_BUDGET) as deadline:
-                twins, ran = _twins(package, root, problem), None
+                with deadline.making():
+                    twins, ran = _twins(package, root, problem), None
                 for holder, _ in twins:  # put back by ``_restore`` wherever the time runs out
                     originals.setdefault(id(holder), (holder, holder.__code__))
                 if twins and mutants is None:  # only the functions that the call runs
@@ -2334,12 +2394,14 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                     trace.note("screened", functions=sorted(h.__name__ for h, _ in twins), holds=holds)
                     twins, ran = (twins, ran) if holds else ((), None)  # traced without them, then
                 if mutants is None:
-                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, ran)
+                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, ran,
+                                         deadline=deadline)
                     if mutants and only is not None:
                         mutants = [m for m in mutants if m.slip in only]
+                    making = deadline.spent()[1]
                     trace.note("mutated", count=None if mutants is None else len(mutants),
                                functions=sorted({m.function for m in mutants or ()}),
-                               seconds=round(time.thread_time() - started, 3))
+                               seconds=round(time.thread_time() - started, 3), making=round(making, 3))
                     if mutants and told is not None:
                         mutants, rivals = late(mutants, told)
                         trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
@@ -2364,5 +2426,5 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
             trace.note("timeout", tried=progress.get("tried"))
             if rivals is not None and progress.get("tried", 0) >= rivals:
                 kept = found  # every rival of another family was tried: the time ran out on names of a family told
-    trace.note("spent", seconds=round(time.thread_time() - started, 3))
+    trace.note("spent", seconds=round(time.thread_time() - started, 3), making=round(making, 3))
     return kept
