@@ -10,7 +10,14 @@ The student's file of problem N (``problem_NN.py``) also holds code that the tem
 no region: problem 34's gait, problem 24's pendulum): a slip there is the student's too, but less likely than one in
 the code they wrote, so its functions' slips (``given``) are tried only where no slip of a region reproduced the
 student's value, and no earlier tier explained it, within a budget of their own (``GIVEN_TIME_BUDGET``); a list's
-entry written 0 there is data left out, told as a term left out and as an offset (``_ENTRIES``).
+entry written 0 there is data left out, told as a term left out and as an offset (``_ENTRIES``).  Last, where
+nothing else reproduced it, the module constants that the call reads, of the problem's own module and of the library
+(the modules of no problem), directly, through a function's default or a constant computed from them, are typed
+otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
+or a tenth or a thousandth of itself (a decimal point misplaced, another unit), in degrees where radians belong or
+the reverse, its square root or its square; an entry of one of its lists written 0, two entries exchanged; two
+constants of one module exchanged), each measured with the constants, defaults and imported names its module
+computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
 missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
@@ -202,6 +209,7 @@ class Mutant:
     defaulted: frozenset = frozenset()  # its parameters with a default (``anchor=ANCHOR``)
     quick: object = None  # the code without sympy's simplifications (``_unsimplified``), where it has any
     given: bool = False  # a slip of a function that the problem's module gives whole (``_Function.given``)
+    bindings: tuple = ()  # a slip of a module's constant: ``(holder, attribute, value)`` set while it is measured
 
     @property
     def function(self) -> str:
@@ -439,6 +447,25 @@ SLIPS = {
     "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
     "axes": ("transpose", "`{f}` takes a row of a matrix where its column belongs, or the reverse"),
     "cycled": ("swapped", "`{f}` lists quantities in another order (the last first, or the first last)"),
+    # the slips of a module's constant (``_constant_slips``): ``{f}`` is the constant's name
+    "constant_sign": ("sign_flip", "a number of the constant `{f}` has the wrong sign"),
+    "constant_doubled": ("factor_two", "a number of the constant `{f}` is twice the one that belongs"),
+    "constant_halved": ("factor_half", "a number of the constant `{f}` is half the one that belongs"),
+    "constant_tenfold": ("wrong_factor", "a number of the constant `{f}` is ten times the one that belongs (its "
+                                         "decimal point misplaced)"),
+    "constant_tenth": ("wrong_factor", "a number of the constant `{f}` is a tenth of the one that belongs (its "
+                                       "decimal point misplaced)"),
+    "constant_thousandfold": ("wrong_factor", "a number of the constant `{f}` is a thousand times the one that "
+                                              "belongs (in another unit: mm for m, g for kg)"),
+    "constant_thousandth": ("wrong_factor", "a number of the constant `{f}` is a thousandth of the one that belongs "
+                                            "(in another unit: m for mm, kg for g)"),
+    "constant_degrees": ("degrees", "a number of the constant `{f}` is an angle in degrees where radians belong"),
+    "constant_radians": ("degrees", "a number of the constant `{f}` is an angle in radians where degrees belong"),
+    "constant_root": ("wrong_factor", "a number of the constant `{f}` is the square root of the one that belongs"),
+    "constant_square": ("wrong_factor", "a number of the constant `{f}` is the square of the one that belongs"),
+    "constant_entries": ("swapped", "two entries of the constant `{f}` are exchanged"),
+    "constant_zeroed": ("missing_term", "an entry of the constant `{f}` is left out (written 0)"),
+    "constants": ("swapped", "the constants `{f}` are exchanged"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
 PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed"})
@@ -2042,24 +2069,16 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         progress["tried"] = tried
         if deadline.fired:
             return None
-        holder = _live(package, mutant.module, mutant.path)
-        originals.setdefault(id(holder), (holder, holder.__code__))
-        try:
-            for other, twin in twins:
-                other.__code__ = twin
-            holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
-            values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened)
-            if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
-                values = _reproduced(package, inputs, calls, screened)
-            if values is not None and screened:  # the mutant's own value decides
-                for other, _ in twins:
-                    other.__code__ = originals[id(other)][1]
-                holder.__code__ = mutant.code
-                values = _reproduced(package, inputs, calls)
-        finally:
-            for other, _ in twins:
-                other.__code__ = originals[id(other)][1]
-            holder.__code__ = originals[id(holder)][1]
+        if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound
+            try:
+                _bind(mutant.bindings, originals)
+                values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)])
+                if values is not None and any(parts):
+                    values = _reproduced(package, inputs, calls)
+            finally:
+                _unbind(mutant.bindings, originals)
+        else:
+            values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened)
         if values is None:
             continue
         if mutant.slip in PRECISION_SLIPS and not all(_closely(v, e) for v, e in zip(values, inputs)):
@@ -2078,9 +2097,48 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     return kept
 
 
+def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, parts: list, originals: dict,
+                    twins: tuple, screened: bool) -> list | None:
+    """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None."""
+    holder = _live(package, mutant.module, mutant.path)
+    originals.setdefault(id(holder), (holder, holder.__code__))
+    try:
+        for other, twin in twins:
+            other.__code__ = twin
+        holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
+        values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened)
+        if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
+            values = _reproduced(package, inputs, calls, screened)
+        if values is not None and screened:  # the mutant's own value decides
+            for other, _ in twins:
+                other.__code__ = originals[id(other)][1]
+            holder.__code__ = mutant.code
+            values = _reproduced(package, inputs, calls)
+    finally:
+        for other, _ in twins:
+            other.__code__ = originals[id(other)][1]
+        holder.__code__ = originals[id(holder)][1]
+    return values
+
+
 def _restore(originals: dict) -> None:
-    for holder, code in originals.values():
-        holder.__code__ = code
+    for kept in originals.values():
+        if len(kept) == 3:  # a binding of a constant's slip: ``(holder, attribute, value)``
+            setattr(*kept)
+        else:
+            kept[0].__code__ = kept[1]
+
+
+def _bind(bindings: tuple, originals: dict) -> None:
+    """Sets the bindings of a constant's slip, each one's value before it kept in ``originals``."""
+    for holder, attribute, value in bindings:
+        originals.setdefault((id(holder), attribute), (holder, attribute, getattr(holder, attribute)))
+        setattr(holder, attribute, value)
+
+
+def _unbind(bindings: tuple, originals: dict) -> None:
+    for holder, attribute, _ in bindings:
+        setattr(holder, attribute, originals[(id(holder), attribute)][2])
 
 
 def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = False) -> list | None:
@@ -2206,7 +2264,7 @@ _TERMS = {"missing_term", "extra_term"}
 #: an entry left out and, beside it, as an offset (an entry of a Jacobian is no point moved, a height may be); so
 #: is one in the code a problem's module gives whole (``given``), where a list's numbers are data (a gait's mean,
 #: a hip's height): a number of it written 0 is as truly a value off by it as a term left out
-_ENTRIES = {"zeroed"}
+_ENTRIES = {"zeroed", "constant_zeroed"}
 
 
 def _constant_difference(evidences: list[Evidence]) -> bool:
@@ -2363,6 +2421,236 @@ def _given(package, root: Path, problem: int, evidences: list[Evidence], origina
     return kept, mutants
 
 
+# ---------------------------------------------------------------------------------------------- the constants
+
+#: the CPU time of the measuring of the slips of module constants (``_constant_stage``), tried where no slip of the
+#: code reproduced the student's value [s] (their making is bounded by ``MAKING_TIME_BUDGET``)
+CONSTANT_TIME_BUDGET = 1.0
+#: the slips of module constants one explanation tries at most (past it, the first so many)
+CONSTANT_MUTANTS = 300
+#: a number of a constant typed otherwise: as a factor of it (``None``: its square root, or its square)
+_NUMBER_SLIPS = (("constant_sign", -1.0), ("constant_doubled", 2.0), ("constant_halved", 0.5),
+                 ("constant_degrees", 180.0 / np.pi), ("constant_radians", np.pi / 180.0),
+                 ("constant_tenfold", 10.0), ("constant_tenth", 0.1), ("constant_thousandfold", 1000.0),
+                 ("constant_thousandth", 1e-3), ("constant_root", None), ("constant_square", None))
+#: the entries of a list or tuple of a constant, at most, whose pairs are exchanged
+_TABLE = 6
+
+
+@lru_cache(maxsize=4)
+def _modules(root: str) -> dict:
+    """The parsed top level of every module of the reference, by its name."""
+    return {path.stem: ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+            for path in sorted(Path(root).glob("*.py")) if path.name != "__init__.py"}
+
+
+def _assigned_constants(tree: ast.Module) -> dict:
+    """``{name: expression}`` of the module's constants: its top-level ``NAME = expression`` in capitals."""
+    return {node.targets[0].id: node.value for node in tree.body
+            if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name)
+            and node.targets[0].id.isupper()}
+
+
+def _read(node) -> set:
+    return {n.id for n in ast.walk(node) if isinstance(n, ast.Name)}
+
+
+def _numeric(value) -> bool:
+    try:
+        array = np.asarray(value)
+    except Exception:  # noqa: BLE001 - a value numpy cannot read is no number
+        return False
+    return array.dtype.kind in "fiu" and 0 < array.size <= 64
+
+
+def _owned_constants(package, root: str, problem: int, ran: set) -> list:
+    """``(module name, constant name)`` of the constants of the problem's own module and of the library (the modules
+    of no problem) that the run reads: in the code it ran, in the defaults of the functions it ran, through a
+    constant computed from them or a name imported from their module; the problem's own first."""
+    trees = _modules(root)
+    reads: dict = {}
+    for code in ran:
+        stem = Path(code.co_filename).stem
+        names = reads.setdefault(stem, set())
+        stack = [code]
+        while stack:
+            one = stack.pop()
+            names.update(one.co_names)
+            stack.extend(c for c in one.co_consts if hasattr(c, "co_names"))
+        for node in ast.walk(trees.get(stem, ast.Module([], []))):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name == code.co_name:
+                for default in node.args.defaults + [d for d in node.args.kw_defaults if d is not None]:
+                    names.update(_read(default))
+    found, queue = set(), [(stem, name) for stem, names in reads.items() for name in names]
+    while queue:
+        stem, name = queue.pop()
+        tree = trees.get(stem)
+        if tree is None or (stem, name) in found:
+            continue
+        constants = _assigned_constants(tree)
+        if name in constants:
+            found.add((stem, name))
+            queue.extend((stem, other) for other in _read(constants[name]))
+        for node in tree.body:  # a name the module imports from another module of the reference
+            if isinstance(node, ast.ImportFrom) and node.level == 1 and node.module:
+                queue.extend((node.module, a.name) for a in node.names if (a.asname or a.name) == name)
+    own = f"problem_{problem:02d}"
+    return sorted((key for key in found if key[0] == own or not _OWN_MODULE.fullmatch(key[0])),
+                  key=lambda key: (key[0] != own, key[0], key[1]))
+
+
+def _module(package, stem: str):
+    return sys.modules.get(f"{package.__name__}.{stem}")
+
+
+def _bindings(package, root: str, changed: dict) -> tuple | None:
+    """The bindings that a module's constants given other values (``changed``: ``{(module, name): value}``) make
+    of the reference as loaded: those values, the constants its modules computed from them and the names they
+    imported of them (in the order of each module's code), and the defaults of the functions that read them; None
+    where one of those cannot be computed again."""
+    trees, bound = _modules(root), dict(changed)
+    for _ in range(3):  # a constant imported, then computed from in another module: passes until nothing changes
+        before = len(bound)
+        for stem, tree in trees.items():
+            module = _module(package, stem)
+            if module is None:
+                continue
+            mine = {name for (m, name) in bound if m == stem}
+            for node in tree.body:
+                if isinstance(node, ast.ImportFrom) and node.level == 1 and node.module:
+                    for alias in node.names:
+                        if (node.module, alias.name) in bound and (stem, alias.asname or alias.name) not in bound:
+                            bound[(stem, alias.asname or alias.name)] = bound[(node.module, alias.name)]
+                            mine.add(alias.asname or alias.name)
+                elif isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name) \
+                        and (stem, node.targets[0].id) not in changed and _read(node.value) & mine:
+                    space = dict(vars(module), **{name: bound[(stem, name)] for name in mine})
+                    try:
+                        bound[(stem, node.targets[0].id)] = eval(compile(ast.Expression(node.value), "<constant>",
+                                                                         "eval"), space)
+                    except Exception:  # noqa: BLE001 - a constant that cannot be computed again: no slip
+                        return None
+                    mine.add(node.targets[0].id)
+        if len(bound) == before:
+            break
+    found = [(_module(package, stem), name, value) for (stem, name), value in bound.items()]
+    for stem, tree in trees.items():
+        module = _module(package, stem)
+        mine = {name for (m, name) in bound if m == stem}
+        if module is None or not mine:
+            continue
+        space = dict(vars(module), **{name: bound[(stem, name)] for name in mine})
+        for node in tree.body:  # the module's own functions (a method's defaults are left as they are)
+            if not isinstance(node, ast.FunctionDef) or not any(_read(d) & mine for d in node.args.defaults):
+                continue
+            live = vars(module).get(node.name)
+            if live is None or not hasattr(live, "__defaults__") or live.__defaults__ is None \
+                    or len(live.__defaults__) != len(node.args.defaults):
+                continue
+            try:
+                defaults = tuple(eval(compile(ast.Expression(d), "<default>", "eval"), space)
+                                 for d in node.args.defaults)
+            except Exception:  # noqa: BLE001 - a default that cannot be computed again is left as it is
+                continue
+            found.append((live, "__defaults__", defaults))
+    return tuple(found)
+
+
+def _value_of(expression, module):
+    return eval(compile(ast.fix_missing_locations(ast.Expression(expression)), "<constant>", "eval"),
+                dict(vars(module)))
+
+
+def _number_slips(expression):
+    """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``), each entry of
+    a list or tuple of it written 0, and each two entries of one exchanged."""
+    for index, node in enumerate(ast.walk(expression)):
+        if isinstance(node, ast.Constant) and type(node.value) in (int, float) and node.value != 0:
+            for slip, factor in _NUMBER_SLIPS:
+                number = float(node.value)
+                value = number * factor if factor is not None else (
+                    np.sqrt(abs(number)) if slip == "constant_root" else number * number)
+                yield slip, index, ast.Constant(float(value))
+    for index, node in enumerate(ast.walk(expression)):
+        if isinstance(node, (ast.List, ast.Tuple)) and 1 < len(node.elts) <= _TABLE:
+            for k, entry in enumerate(node.elts):
+                if not (isinstance(entry, ast.Constant) and entry.value == 0):
+                    yield "constant_zeroed", index, _with(node, elts=node.elts[:k] + [ast.Constant(0.0)]
+                                                          + node.elts[k + 1:])
+            for i, j in _pairs(len(node.elts)):
+                elts = list(node.elts)
+                elts[i], elts[j] = elts[j], elts[i]
+                yield "constant_entries", index, _with(node, elts=elts)
+
+
+def _replaced(expression, index: int, replacement):
+    """A copy of the expression with its ``index``-th node (in the order of ``ast.walk``) replaced."""
+    if index == 0:
+        return ast.copy_location(replacement, expression)
+    copies: dict = {}
+    tree = _tree_copy(expression, copies)
+    nodes = list(ast.walk(expression))
+    target = copies[id(nodes[index])]
+    for parent in ast.walk(tree):
+        if _replace(parent, target, replacement):
+            break
+    return ast.fix_missing_locations(tree)
+
+
+def constant_mutants(package, root: str, problem: int, ran: set) -> list[Mutant]:
+    """The slips of the module constants the run reads (``_owned_constants``): a number of one typed otherwise, an
+    entry of a table written 0 or two of its entries exchanged, and two numeric constants of one module of one
+    shape exchanged; each with the bindings it makes (``_bindings``), where its value differs; at most
+    ``CONSTANT_MUTANTS``."""
+    trees, found = _modules(root), []
+    values: dict = {}
+    for stem, name in _owned_constants(package, root, problem, ran):
+        module = _module(package, stem)
+        expression = _assigned_constants(trees[stem]).get(name)
+        if module is None or expression is None or not _numeric(vars(module).get(name)):
+            continue
+        values[(stem, name)] = vars(module)[name]
+        for slip, index, replacement in _number_slips(expression):
+            try:
+                value = _value_of(_replaced(expression, index, replacement), module)
+            except Exception:  # noqa: BLE001 - a slip whose value cannot be computed is no slip
+                continue
+            if not _numeric(value) or np.shape(value) != np.shape(values[(stem, name)]) \
+                    or np.array_equal(np.asarray(value), np.asarray(values[(stem, name)])):
+                continue
+            bindings = _bindings(package, root, {(stem, name): value})
+            if bindings is not None:
+                found.append(Mutant(stem, (name,), slip, None, bindings=bindings))
+            if len(found) >= CONSTANT_MUTANTS:
+                return found
+    for (a, b) in itertools.combinations(list(values), 2):
+        if a[0] == b[0] and np.shape(values[a]) == np.shape(values[b]) \
+                and not np.array_equal(np.asarray(values[a]), np.asarray(values[b])):
+            bindings = _bindings(package, root, {a: values[b], b: values[a]})
+            if bindings is not None:
+                found.append(Mutant(a[0], (f"{a[1]}` and `{b[1]}",), "constants", None, bindings=bindings))
+    return found[:CONSTANT_MUTANTS]
+
+
+def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
+                    progress: dict) -> tuple:
+    """``(kept, mutants)`` of the slips of the module constants the first input's call reads, tried where no slip
+    of the code reproduced the student's value: the constants of the problem's own module and of the library hold
+    the problem's data (lengths, masses, gains, tables), which a student types from the sheet; within a budget of
+    their own (``CONSTANT_TIME_BUDGET``; kept None when it runs out)."""
+    started = time.thread_time()
+    first = evidences[0]
+    with _Deadline(CONSTANT_TIME_BUDGET) as deadline:
+        ran = _traced(package, root, first.source.probe, first.source.args)
+        with deadline.making():
+            mutants = constant_mutants(package, str(root), problem, ran)
+        trace.note("constants", count=len(mutants), constants=sorted({m.function for m in mutants}),
+                   seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
+        kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
+                         progress=progress) if mutants else []
+    return kept, mutants
+
+
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
           told=None, only=None) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
@@ -2411,6 +2699,8 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                 kept = []  # no function of a region runs: none of their slips reproduces the value
             if kept == [] and made and told is None and only is None:
                 kept, mutants = _given(package, root, problem, evidences, originals, judged, progress)
+            if kept == [] and made and told is None and only is None:
+                kept, mutants = _constant_stage(package, root, problem, evidences, originals, judged, progress)
             if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
                 with _Deadline(LATE_TIME_BUDGET) as deadline:
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,

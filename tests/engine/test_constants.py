@@ -1,0 +1,41 @@
+"""The formula tier on module constants (``grader.diagnosis.mutants``: ``constant_mutants``): the data a student
+types from the sheet into the constants of a problem's module or of the library (lengths, masses, gains, gravity)
+may be typed otherwise (a number's sign, a factor 2, ten or a thousand, degrees for radians, a square root, an
+entry of a table exchanged or written 0, two constants exchanged); those slips are tried after every slip of the
+code, where none reproduced the student's value.
+
+The test plants a mistake into a copy of the reference and asks the tier on two inputs, as
+``tests/engine/test_mutants.py`` does: the library's gravity typed a tenth of itself reaches problem 24's triple
+pendulum through the name its module imports and the constant it computes from it (``I_GRAV``).  The near miss is
+the gravity three times itself, which no slip of typing gives: nothing is named.
+"""
+
+import numpy as np
+
+from grader.diagnosis import mutants
+from grader.private import drop_private
+
+from .test_mutants import evidence, planted_package, scene
+
+#: two states of the triple pendulum (angles, rates) at which its right-hand side is compared
+STATES = [[(0.0, [0.3, -0.5, 0.8, 0.2, -0.1, 0.4])], [(0.0, [-0.7, 0.4, 0.1, -0.3, 0.6, 0.0])]]
+
+
+def pendulum_slips(tmp_path, new: str):
+    student = planted_package(tmp_path, "conventions.py", "GRAVITY = 9.81", new)
+    try:
+        evidences = [evidence("problem_24.pendulum_ode", (cases,), (0,), student) for cases in STATES]
+        assert all(not np.allclose(e.got, e.expected) for e in evidences)
+        return mutants.mutant_slips(scene("p24.pendulum_ode"), evidences)
+    finally:
+        drop_private(student)
+
+
+def test_a_library_constant_typed_otherwise_is_named(tmp_path):
+    found = pendulum_slips(tmp_path, "GRAVITY = 0.981")
+    assert {h.name for h in found} == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+    assert any("`GRAVITY` is a tenth" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_constant_off_by_a_factor_no_typing_gives_names_nothing(tmp_path):
+    assert pendulum_slips(tmp_path, "GRAVITY = 3.0 * 9.81") == []
