@@ -282,8 +282,14 @@ def _reordered(got, E: np.ndarray):
     return tuple(order)
 
 
+#: the significant digits a rounding keeps of the answer's largest value for a student to have written it: values of
+#: order 1 rounded to 0 decimals keep one digit or none, and many wrong answers (an offset, a factor) land on them
+ROUNDED_DIGITS = 2
+
+
 def precision_slips(got, E, tol: Tol) -> list:
-    """Rounding slips: the student's value is the expected one in float32, or rounded to a few decimals."""
+    """Rounding slips: the student's value is the expected one in float32, or rounded to a few decimals that keep at
+    least ``ROUNDED_DIGITS`` significant digits of the largest value."""
     found = []
     single = E.astype(np.float32).astype(float)
     if (np.all(got == got.astype(np.float32).astype(float)) and not np.all(E == single)
@@ -291,10 +297,13 @@ def precision_slips(got, E, tol: Tol) -> list:
             and not within(got, E, tol)):
         found.append(Hypothesis("float32", "float32", 1, "your values are the expected ones in single precision "
                                  "(float32): compute in float64 (numpy's default)"))
+    largest = float(np.max(np.abs(E))) if E.size else 0.0
     for decimals in range(0, 7):
         rounded = np.round(E, decimals)
         if not np.any(rounded):
             continue  # rounded to nothing: an answer of zeros has not rounded anything
+        if largest * 10.0 ** decimals < 10.0 ** (ROUNDED_DIGITS - 1):
+            continue  # a rounding that keeps fewer digits than a student writes is a coincidence, not a slip
         if np.all(np.abs(got - rounded) <= 1e-12 * np.maximum(1.0, np.abs(E))) and not within(rounded, E, tol):
             found.append(Hypothesis(f"rounded:{decimals}", "rounded", 1,
                                      f"your values are the expected ones rounded to {decimals} decimals: return "

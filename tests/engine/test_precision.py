@@ -16,7 +16,7 @@ import pytest
 
 from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
-from grader.diagnosis import mutants
+from grader.diagnosis import grammar, mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
 from grader.private import drop_private
 
@@ -222,3 +222,23 @@ def test_the_largest_expression_of_numbers_is_typed_short_and_pi_alone_is_not():
              for slip, _ in mutants._typed_slips(node, parent, frozenset({"GAMMA"}))]
     assert sites == [site for site in ("np.pi / 40", "np.sqrt(3.0) * np.pi", "GAMMA")
                      for _ in mutants.TYPED_DECIMALS], sites
+
+
+# ------------------------------------------------------------------------------- a rounding that keeps digits
+
+
+def test_an_answer_rounded_to_whole_numbers_is_named_where_it_keeps_two_digits():
+    """Forces of order ten returned as whole numbers (``int()`` or ``round()`` of each): two significant digits are
+    kept of the largest, a rounding a student writes."""
+    E = np.array([12.3418, -7.8106, 31.0552])
+    found = grammar.precision_slips(np.round(E), E, TIGHT)
+    assert [h.key for h in found] == ["rounded:0"], found
+    assert "rounded to 0 decimals" in found[0].detail
+
+
+def test_values_of_order_one_rounded_to_whole_numbers_are_no_slip_of_precision():
+    """The near miss: the same rounding of values of order one keeps one digit or none, a coincidence an offset or a
+    factor lands on; the same values to one decimal keep two digits and are named."""
+    E = np.array([1.3418, -0.7811, 0.3055])
+    assert grammar.precision_slips(np.round(E), E, TIGHT) == []
+    assert [h.key for h in grammar.precision_slips(np.round(E, 1), E, TIGHT)] == ["rounded:1"]
