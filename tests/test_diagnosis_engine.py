@@ -203,12 +203,12 @@ def test_precision_slips_need_the_exact_rounded_value(monkeypatch):
 def test_zeros_are_not_a_rounding_of_small_values():
     """Small expected values round to zeros at a few decimals, but an answer of zeros has not rounded anything: the
     rounding hypothesis, as every other, must be clearly other than zero to be named (a damping torque left out
-    was told "rounded to 3 decimals")."""
+    was told "rounded to 3 decimals"); a rounding that keeps two digits of them is named."""
     from grader.diagnosis.grammar import precision_slips
 
-    small = np.array([8e-5, -2.4e-4, 3e-5])
+    small = np.array([8.3e-5, -2.46e-4, 3.1e-5])
     assert precision_slips(np.zeros(3), small, Tol("tight", 1e-9)) == []
-    assert [h.name for h in precision_slips(np.round(small, 4), small, Tol("tight", 1e-9))] == ["rounded"]
+    assert [h.name for h in precision_slips(np.round(small, 5), small, Tol("tight", 1e-9))] == ["rounded"]
 
 
 def test_an_ignored_argument_is_found_by_changing_it_for_the_student(monkeypatch):
