@@ -620,12 +620,13 @@ def _narrowed(shown, other):
     """The failure to report on the input ``shown`` was raised for, its diagnosis checked on a second failing
     input ``other`` (the failure a shrunk, often degenerate input, gives): a known mistake is named when it
     matches on both; when several still match, all of them are ("could be X or Y").  Failures of different
-    properties, or without a catalogue, are reported as they are."""
+    properties (their first lines without the numbers and spaces in them: a comparison's name may show its input), or
+    without a catalogue, are reported as they are."""
     if other is shown or not isinstance(shown, CheckFailure) or not isinstance(other, CheckFailure):
         return shown
     if shown.candidates is None or other.candidates is None:
         return shown
-    if shown.message.partition("\n")[0] != other.message.partition("\n")[0]:
+    if "".join(_property(shown).split()) != "".join(_property(other).split()):
         return shown
     names = {mistake.name for mistake in other.candidates}
     common = tuple(mistake for mistake in shown.candidates if mistake.name in names)
