@@ -2632,6 +2632,13 @@ def constant_mutants(package, root: str, problem: int, ran: set) -> list[Mutant]
     return found[:CONSTANT_MUTANTS]
 
 
+@lru_cache(maxsize=64)
+def _made_constants(package, root: str, problem: int, ran: frozenset) -> tuple:
+    """``constant_mutants`` of the codes one call runs, kept for the process: they depend on the reference alone,
+    the same for every answer, as the code's mutants are (``_codes``)."""
+    return tuple(constant_mutants(package, root, problem, ran))
+
+
 def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
                     progress: dict) -> tuple:
     """``(kept, mutants)`` of the slips of the module constants the first input's call reads, tried where no slip
@@ -2643,7 +2650,7 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
     with _Deadline(CONSTANT_TIME_BUDGET) as deadline:
         ran = _traced(package, root, first.source.probe, first.source.args)
         with deadline.making():
-            mutants = constant_mutants(package, str(root), problem, ran)
+            mutants = list(_made_constants(package, str(root), problem, frozenset(ran)))
         trace.note("constants", count=len(mutants), constants=sorted({m.function for m in mutants}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
