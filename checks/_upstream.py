@@ -20,7 +20,7 @@ submission, naming the function and its check.
 
 import numpy as np
 
-from grader.checking import STRUCTURE, CheckFailure, Tol, assert_close, close
+from grader.checking import CheckFailure, Tol, assert_close, close, is_rotation
 from grader.problems import check_title
 
 from ._real import flaw as real_flaw
@@ -57,10 +57,6 @@ def _numeric(value):
     return array
 
 
-def _is_rotation(A) -> bool:
-    return A.shape == (3, 3) and close(A.T @ A, np.eye(3), STRUCTURE) and abs(np.linalg.det(A) - 1.0) < 1e-6
-
-
 def flaw(mine, reference) -> str:
     """Why the student's value ``mine`` of a shared function is not a real result to carry forward, judged against
     the reference's value of the same call ("" when it is real), by the one rule of ``checks._real``: not numeric
@@ -86,7 +82,7 @@ def flaw(mine, reference) -> str:
     ours = _numeric(mine)
     if ours is None or ours.dtype == object:
         return "is not numeric"
-    if _is_rotation(theirs):
+    if is_rotation(theirs):
         return rotation_flaw(ours, theirs)
     return real_flaw(ours, reference=theirs)
 

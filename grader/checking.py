@@ -47,6 +47,8 @@ __all__ = [
     "assert_close",
     "assert_close_each",
     "assert_rotation",
+    "is_rotation",
+    "rotation_twins",
     "close",
     "format_array",
     "mismatch_table",
@@ -465,7 +467,7 @@ def rotation_twins(got, expected, tol: Tol, matches: tuple) -> tuple:
         answer, turn = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
     except (TypeError, ValueError):
         return matches
-    if turn.shape != (3, 3) or answer.shape != (3, 3) or not _proper_rotation(turn) or close(turn, turn.T, tol):
+    if answer.shape != (3, 3) or not is_rotation(turn) or close(turn, turn.T, tol):
         return matches
     if not close(answer, turn.T, tol):
         return matches
@@ -476,9 +478,9 @@ def rotation_twins(got, expected, tol: Tol, matches: tuple) -> tuple:
     return matches + tuple(twins)
 
 
-def _proper_rotation(A) -> bool:
-    return bool(np.all(np.isfinite(A)) and np.max(np.abs(A.T @ A - np.eye(3))) < 1e-6
-                and abs(np.linalg.det(A) - 1.0) < 1e-6)
+def is_rotation(A: np.ndarray) -> bool:
+    """True when the array ``A`` is a proper rotation: 3 x 3, orthonormal to ``STRUCTURE`` and of determinant +1."""
+    return bool(A.shape == (3, 3) and close(A.T @ A, np.eye(3), STRUCTURE) and abs(np.linalg.det(A) - 1.0) < 1e-6)
 
 
 def _matches(got, mistake: Mistake, tol: Tol) -> bool:
