@@ -102,17 +102,20 @@ class Fresh(Workers):
 @dataclass(frozen=True)
 class Forked(Workers):
     """One child forked from ``zygote``, a batch slot's warm process (``grader.sandbox.zygote.Zygote``), in its
-    mode, the submission copied into its staging folder; ``limits`` bound each call."""
+    mode, the submission copied into its staging folder; ``limits`` bound each call.  ``on_grace`` (if given) is
+    told every second a call was granted because its worker waited for a processor (``grader.sandbox.queueing``):
+    the batch's bound of a student's time moves on by as much."""
 
     zygote: object
     limits: Limits | None = None
+    on_grace: object = None
 
     def sandbox(self) -> SandboxMode:
         return self.zygote.mode
 
     def _make(self, source) -> Worker:
         submission = materialize(source, self.zygote.staging)
-        return Worker(submission, Child(submission.path, self.limits, zygote=self.zygote))
+        return Worker(submission, Child(submission.path, self.limits, zygote=self.zygote, on_grace=self.on_grace))
 
 
 @dataclass(frozen=True)

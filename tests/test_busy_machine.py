@@ -114,3 +114,73 @@ def test_code_that_crowds_the_processor_with_its_own_processes_gets_no_more_time
     """Its main process waits for its own busy children: it used that time, so it is granted none, and its time-out
     is the student's, not the machine's."""
     assert _outcome(_submission(tmp_path, CROWD), hogs=0) == "timeout"
+
+
+#: the batch's case: pinned to one processor with ``hogs`` busy processes, a batch slot grades problem 6 of a
+#: submission within a per-student bound of ``bound`` seconds, and prints what came of it
+BATCH_CASE = textwrap.dedent("""
+    import json, multiprocessing, os, subprocess, sys
+    from pathlib import Path
+    sys.path.insert(0, {root!r})
+    from grader.batch.discover import Entry, submission_hash
+    from grader.batch.pool import Slot, Task
+    from grader.sandbox import Limits, sandbox_mode
+    os.sched_setaffinity(0, {{{cpu}}})
+    limits = Limits(call_timeout=2.0, import_timeout=2.0)
+    slot = Slot(multiprocessing.get_context("spawn"), 1, limits, sandbox_mode(), (6,))
+    slot.wait_ready()  # its start is not the student's time
+    hogs = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range({hogs})]
+    path = Path({path!r})
+    try:
+        kind, payload, seconds = slot.outcome(Task(Entry("student", path, submission_hash(path), seed=1), (6,)),
+                                              {bound})
+    finally:
+        for hog in hogs:
+            hog.kill()
+        slot.stop()
+    if kind == "ok":
+        kind = "graded " + " ".join(sorted({{r.status.value for rep in payload for r in rep.results}}))
+    print(json.dumps(kind))
+""")
+
+#: problem 6 whose import takes 0.6 s of the processor's time: honest, within its import limit of 2 s when it has
+#: a processor, about three times that on a processor shared with two busy processes
+SLOW_IMPORT = '''
+import time as _time
+_end = _time.process_time() + 0.6
+while _time.process_time() < _end:
+    pass
+'''
+
+
+def _batch_outcome(path, hogs, bound):
+    if not sandbox_mode().isolated and refusal() is not None:
+        pytest.skip("covered by the refusal: no child runs here without bubblewrap")
+    cpu = min(os.sched_getaffinity(0))
+    script = BATCH_CASE.format(root=str(ROOT), cpu=cpu, hogs=hogs, path=str(path), bound=bound)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+@pytest.mark.slow
+def test_a_batch_bound_of_a_students_time_moves_on_by_the_machines_load(tmp_path):
+    """The bound of 1.5 s per student holds an import of 0.6 s with room to spare, and not the same import on a
+    processor shared with two busy processes: before the bound moved on by the time the student's code and the
+    worker waited for the processor, this honest work was stopped and filed as the student's time-out."""
+    folder = copy_reference(tmp_path / "pkg")
+    source = folder / "problem_06.py"
+    source.write_text(SLOW_IMPORT + source.read_text())
+    outcome = _batch_outcome(folder, hogs=2, bound=1.5)
+    assert outcome == "graded passed" or outcome == "busy", outcome
+
+
+@pytest.mark.slow
+def test_a_batch_bound_still_stops_code_that_sleeps_on_a_busy_machine(tmp_path):
+    """Half a second of sleep in every rotation: no wait for a processor, so no grace — the student's time-out."""
+    folder = copy_reference(tmp_path / "pkg")
+    rotations = folder / "rotations.py"
+    rotations.write_text(rotations.read_text().replace(
+        "    c, s = np.cos(alpha), np.sin(alpha)\n",
+        "    import time\n    time.sleep(0.5)\n    c, s = np.cos(alpha), np.sin(alpha)\n", 1))
+    assert _batch_outcome(folder, hogs=2, bound=1.5) == "timeout"

@@ -4,7 +4,13 @@ A worker is a spawned process that imports the checks once, starts a warm sandbo
 ``grader.sandbox.zygote``) from which every student's child is forked, and grades the students the parent sends
 with ``grade_submission``.  It sends back plain reports.  The parent bounds each student's total time: a worker
 that does not answer in time, or dies, is replaced by a fresh one, and its student is reported as stopped or not
-graded.  The same worker serves a Dask task (``grader.batch.cluster``): one slot per Dask worker process.
+graded.
+
+The bound is wall time, and a busy machine is not the student's fault: it moves on by the time the machine took,
+as a call's limit does (``grader.sandbox.queueing``) — the time the worker granted the student's calls because
+their code waited for a processor (it tells the parent each grant), and the time the worker itself waited for one
+(read by the parent) — by at most ``LOAD_GRACE`` times the bound.  A student still running when that grace is
+spent is the machine's fault: not graded, graded again on the next run.  The same worker serves a Dask task (``grader.batch.cluster``): one slot per Dask worker process.
 """
 
 from __future__ import annotations
@@ -22,6 +28,8 @@ from multiprocessing.connection import wait
 from ..errors import GraderFault
 from ..results import ProblemReport, Status
 from ..sandbox import Limits, SandboxMode
+from ..sandbox.child import LEAST_WAIT, LOAD_GRACE
+from ..sandbox.queueing import waited
 from .discover import Entry
 
 __all__ = ["Task", "Slot", "run_pool", "stopped_reports", "STOP_GRACE"]
@@ -103,8 +111,9 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
             if task is None:
                 return
             try:
+                workers = Forked(zygote, limits, on_grace=lambda seconds: conn.send(("grace", seconds)))
                 reports = grade_submission(task.entry.path, list(task.problems), seed=task.entry.seed,
-                                           workers=Forked(zygote, limits), record_answers=True)
+                                           workers=workers, record_answers=True)
                 conn.send(("ok", reports))
             except GraderFault as exc:  # this student is not recorded and is retried next run
                 conn.send(("fault", str(exc).strip().splitlines()[0]))
@@ -172,7 +181,10 @@ class Slot:
         """``context``: a ``multiprocessing`` context to start the worker with, or None for a subprocess."""
         self.context, self.index, self.args = context, index, (limits, mode, problems)
         self.task: Task | None = None
-        self.deadline = self.started = 0.0
+        self.deadline = self.started = self.bound = 0.0
+        self.granted = 0.0  # seconds the bound of the current task moved on for the machine's load
+        self._counts = None  # the scheduler's counts of the worker itself when the task was sent
+        self._own = 0.0  # seconds of the worker's own wait for a processor granted so far
         self.killed = False  # the last worker ended by a signal (the OOM killer, an operator), not by itself
         self.kills_while_starting = 0
         self._start()
@@ -231,8 +243,29 @@ class Slot:
 
     def submit(self, task: Task, seconds: float) -> None:
         self.conn.send(task)
-        self.task, self.started = task, time.monotonic()
+        self.task, self.started, self.bound, self.granted = task, time.monotonic(), seconds, 0.0
         self.deadline = self.started + seconds
+        self._counts, self._own = waited(self.process.pid, tree=False), 0.0
+
+    def _grant(self, seconds: float) -> None:
+        """Move the task's deadline on by ``seconds`` of the machine's load, within the grace."""
+        grant = max(0.0, min(seconds, LOAD_GRACE * self.bound - self.granted))
+        self.granted += grant
+        self.deadline += grant
+
+    def _own_wait(self) -> float:
+        """How long the worker itself waited for a processor since the task was sent, beyond what was granted for
+        that already: the smaller of its threads' longest wait and its wall time off a processor (as ``Child``
+        reads a call's); 0 where it cannot be read or is within the counters' noise."""
+        now = waited(self.process.pid, tree=False)
+        if now is None or self._counts is None:
+            return 0.0
+        idle = (time.monotonic() - self.started) - (now.cpu - self._counts.cpu)
+        late = min(now.wait - self._counts.wait, idle) - self._own
+        if late < LEAST_WAIT:
+            return 0.0
+        self._own += late
+        return late
 
     def waitables(self) -> list:
         return [self.conn, self.process.sentinel]
@@ -241,14 +274,27 @@ class Slot:
         """``(kind, payload)`` once the worker answered, died or ran out of time; None while it works."""
         if self.conn.poll():
             try:
-                return self.conn.recv()
+                message = self.conn.recv()
             except (EOFError, OSError):
                 pass
+            else:
+                if message[0] != "grace":
+                    return message
+                self._grant(message[1])
+                return None
         elif self.process.is_alive():
             if self.task is None or time.monotonic() < self.deadline:
                 return None
+            if self.granted < LOAD_GRACE * self.bound:
+                self._grant(self._own_wait())
+                if time.monotonic() < self.deadline:
+                    return None
+            spent = self.granted >= LOAD_GRACE * self.bound
             self.restart()
-            return "timeout", None
+            if spent:
+                return "busy", (f"the machine was too busy to grade this submission within {self.bound:g} s per "
+                                f"student and {self.granted:.0f} s more for its load")
+            return "timeout", self.granted
         self.process.join(1)
         code = self.process.exitcode
         self.killed = code is not None and code < 0

@@ -346,8 +346,9 @@ class _Recorder:
         if kind == "ok":
             reports, outcome = payload, "graded"
         elif kind == "timeout":
+            load = f" (and {payload:.0f} s more for the machine's load)" if payload and payload >= 0.5 else ""
             message = (f"grading this submission took longer than the batch's limit of {self.student_timeout:g} s "
-                       "per student and was stopped: look for very slow or endless loops.")
+                       f"per student{load} and was stopped: look for very slow or endless loops.")
             reports, outcome = stopped_reports(task, Status.TIMEOUT, message, seconds), "timeout"
             self.report.timed_out.append(name)
         else:

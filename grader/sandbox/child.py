@@ -71,8 +71,9 @@ class Child:
     the next call starts a fresh one (unless importing the submission itself failed: that failure is final)."""
 
     def __init__(self, submission: Path, limits: Limits | None = None, mode: SandboxMode | None = None,
-                 python: str | None = None, zygote=None):
+                 python: str | None = None, zygote=None, on_grace=None):
         self.submission = Path(submission)
+        self.on_grace = on_grace  # told each grant of time for a wait for a processor, in seconds (or None)
         self.limits = limits or Limits()
         self.zygote = zygote  # a warm process to fork workers from (``grader.sandbox.zygote``), or a fresh one each
         self.mode = zygote.mode if zygote is not None else (mode or sandbox_mode())
@@ -512,6 +513,8 @@ class Child:
                 if late is not None and granted < LOAD_GRACE * timeout:
                     grant = min(late, LOAD_GRACE * timeout - granted)
                     granted, deadline = granted + grant, deadline + grant
+                    if self.on_grace is not None:
+                        self.on_grace(grant)
                     continue
                 self._kill()
                 if late is not None:  # the grace is spent and the code still had less than its limit to run

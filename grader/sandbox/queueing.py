@@ -58,9 +58,10 @@ def _reaped(process: int) -> float:
         return 0.0
 
 
-def waited(pid: int | None) -> Queueing | None:
-    """The scheduler's counts for the process tree rooted at ``pid`` over the tasks alive now; ``None`` where they
-    cannot be read (not Linux, no such process, no scheduler statistics)."""
+def waited(pid: int | None, tree: bool = True) -> Queueing | None:
+    """The scheduler's counts for the process tree rooted at ``pid`` over the tasks alive now (``tree`` false: for
+    the process ``pid`` alone, its threads); ``None`` where they cannot be read (not Linux, no such process, no
+    scheduler statistics)."""
     if pid is None or pid <= 0 or os.name != "posix":
         return None
     longest, cpu, seen, stack, found = 0.0, 0.0, 0, [pid], False
@@ -81,7 +82,7 @@ def waited(pid: int | None) -> Queueing | None:
                 found = True
                 cpu += int(fields[0]) / 1e9
                 longest = max(longest, int(fields[1]) / 1e9)
-            children = _read(f"/proc/{process}/task/{tid}/children")
+            children = _read(f"/proc/{process}/task/{tid}/children") if tree else None
             if children:
                 stack.extend(int(child) for child in children.split() if child.isdigit())
     return Queueing(longest, cpu) if found else None
