@@ -142,6 +142,10 @@ class _Subprocess:
     def start(self) -> None:
         pass
 
+    @property
+    def pid(self) -> int:
+        return self._proc.pid
+
     def is_alive(self) -> bool:
         return self._proc.poll() is None
 
