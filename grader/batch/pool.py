@@ -8,9 +8,10 @@ graded.
 
 The bound is wall time, and a busy machine is not the student's fault: it moves on by the time the machine took,
 as a call's limit does (``grader.sandbox.queueing``) — the time the worker granted the student's calls because
-their code waited for a processor (it tells the parent each grant), and the time the worker itself waited for one
-(read by the parent) — by at most ``LOAD_GRACE`` times the bound.  A student still running when that grace is
-spent is the machine's fault: not graded, graded again on the next run.  The same worker serves a Dask task (``grader.batch.cluster``): one slot per Dask worker process.
+their code waited for a processor (it tells the parent each grant), and the time the tasks of the worker's tree
+(the worker, its warm process, the student's process) waited for one, which the parent reads — by at most
+``LOAD_GRACE`` times the bound.  A student still running when that grace is spent is the machine's fault: not
+graded, graded again on the next run.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from ..errors import GraderFault
 from ..results import ProblemReport, Status
 from ..sandbox import Limits, SandboxMode
 from ..sandbox.child import LEAST_WAIT, LOAD_GRACE
-from ..sandbox.queueing import waited
+from ..sandbox.queueing import task_counts
 from .discover import Entry
 
 __all__ = ["Task", "Slot", "run_pool", "stopped_reports", "STOP_GRACE"]
@@ -187,7 +188,7 @@ class Slot:
         self.task: Task | None = None
         self.deadline = self.started = self.bound = 0.0
         self.granted = 0.0  # seconds the bound of the current task moved on for the machine's load
-        self._counts = None  # the scheduler's counts of the worker itself when the task was sent
+        self._counts = None  # the scheduler's counts of the worker's tree when the task was sent
         self._own = 0.0  # seconds of the worker's own wait for a processor granted so far
         self.killed = False  # the last worker ended by a signal (the OOM killer, an operator), not by itself
         self.kills_while_starting = 0
@@ -249,7 +250,7 @@ class Slot:
         self.conn.send(task)
         self.task, self.started, self.bound, self.granted = task, time.monotonic(), seconds, 0.0
         self.deadline = self.started + seconds
-        self._counts, self._own = waited(self.process.pid, tree=False), 0.0
+        self._counts, self._own = task_counts(self.process.pid), 0.0
 
     def _grant(self, seconds: float) -> None:
         """Move the task's deadline on by ``seconds`` of the machine's load, within the grace."""
@@ -258,14 +259,18 @@ class Slot:
         self.deadline += grant
 
     def _own_wait(self) -> float:
-        """How long the worker itself waited for a processor since the task was sent, beyond what was granted for
-        that already: the smaller of its threads' longest wait and its wall time off a processor (as ``Child``
-        reads a call's); 0 where it cannot be read or is within the counters' noise."""
-        now = waited(self.process.pid, tree=False)
+        """How long the worker's tree (the worker, its warm process, the student's process) waited for a processor
+        since the task was sent, beyond what was granted for that already: the smaller of one task's longest wait
+        and the tree's wall time off a processor (as ``Child`` reads a call's), 0 where it cannot be read or is
+        within the counters' noise.  A student's process that ended before is not counted: the grants its calls
+        had are (``_grant``)."""
+        now = task_counts(self.process.pid)
         if now is None or self._counts is None:
             return 0.0
-        idle = (time.monotonic() - self.started) - (now.cpu - self._counts.cpu)
-        late = min(now.wait - self._counts.wait, idle) - self._own
+        (waits, cpu), (before, cpu_before) = now, self._counts
+        longest = max(wait - before.get(tid, 0.0) for tid, wait in waits.items())
+        idle = (time.monotonic() - self.started) - (cpu - cpu_before)
+        late = min(longest, idle) - self._own
         if late < LEAST_WAIT:
             return 0.0
         self._own += late

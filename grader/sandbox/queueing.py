@@ -23,7 +23,7 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Queueing", "waited", "MAX_TASKS"]
+__all__ = ["Queueing", "waited", "task_counts", "MAX_TASKS"]
 
 #: the most tasks (processes and threads) of a tree read for one figure: a tree larger than this (a fork bomb) is
 #: read in part
@@ -58,13 +58,24 @@ def _reaped(process: int) -> float:
         return 0.0
 
 
-def waited(pid: int | None, tree: bool = True) -> Queueing | None:
-    """The scheduler's counts for the process tree rooted at ``pid`` over the tasks alive now (``tree`` false: for
-    the process ``pid`` alone, its threads); ``None`` where they cannot be read (not Linux, no such process, no
-    scheduler statistics)."""
+def waited(pid: int | None) -> Queueing | None:
+    """The scheduler's counts for the process tree rooted at ``pid`` over the tasks alive now; ``None`` where they
+    cannot be read (not Linux, no such process, no scheduler statistics)."""
+    counts = task_counts(pid)
+    if counts is None:
+        return None
+    waits, cpu = counts
+    return Queueing(max(waits.values()), cpu)
+
+
+def task_counts(pid: int | None) -> tuple[dict[int, float], float] | None:
+    """The wait for a processor of each task of the process tree rooted at ``pid`` alive now, by its thread id,
+    and the processor time of the whole tree (as ``Queueing.cpu``); ``None`` where they cannot be read.  A wait
+    over some time is then a task's own difference, which a task born in between counts from 0."""
     if pid is None or pid <= 0 or os.name != "posix":
         return None
-    longest, cpu, seen, stack, found = 0.0, 0.0, 0, [pid], False
+    waits: dict[int, float] = {}
+    cpu, seen, stack = 0.0, 0, [pid]
     while stack and seen < MAX_TASKS:
         process = stack.pop()
         try:
@@ -78,11 +89,10 @@ def waited(pid: int | None, tree: bool = True) -> Queueing | None:
                 break
             stat = _read(f"/proc/{process}/task/{tid}/schedstat")
             fields = stat.split() if stat else []
-            if len(fields) >= 2 and fields[0].isdigit() and fields[1].isdigit():
-                found = True
+            if len(fields) >= 2 and fields[0].isdigit() and fields[1].isdigit() and tid.isdigit():
                 cpu += int(fields[0]) / 1e9
-                longest = max(longest, int(fields[1]) / 1e9)
-            children = _read(f"/proc/{process}/task/{tid}/children") if tree else None
+                waits[int(tid)] = int(fields[1]) / 1e9
+            children = _read(f"/proc/{process}/task/{tid}/children")
             if children:
                 stack.extend(int(child) for child in children.split() if child.isdigit())
-    return Queueing(longest, cpu) if found else None
+    return (waits, cpu) if waits else None
