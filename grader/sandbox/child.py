@@ -38,6 +38,12 @@ OUTPUT_TAIL = 4000
 LOAD_GRACE = 4.0
 #: a wait for a processor shorter than this [s] does not move a deadline (the counters' and the reads' own noise)
 LEAST_WAIT = 0.05
+#: a call's scheduler counts are read once it has lasted this long [s], not when it is sent: most calls answer
+#: sooner, and a read walks the worker's tree in /proc; the wait it misses is below ``LEAST_WAIT``, which no grant
+#: would count anyway
+COUNTS_AFTER = LEAST_WAIT
+#: a call's counts not read yet
+UNREAD = object()
 
 
 def probe_name(probe) -> str:
@@ -452,9 +458,9 @@ class Child:
     def _request(self, message: dict | None, timeout: float, phase: str = "call") -> dict:
         """Send ``message`` (None: only wait for the reply to the import request) and return the reply, all
         before one deadline, ``timeout`` seconds from now."""
-        return self._reply(*self._post(message, timeout, phase))
+        return self._reply(*self._post(message, timeout, phase, waited_now=True))
 
-    def _post(self, message: dict | None, timeout: float, phase: str = "call") -> tuple:
+    def _post(self, message: dict | None, timeout: float, phase: str = "call", waited_now: bool = False) -> tuple:
         """Send ``message`` (None: nothing, the reply awaited is the import's): what ``_reply`` needs to read its
         reply before one deadline, ``timeout`` seconds from now."""
         deadline = time.monotonic() + timeout
@@ -462,7 +468,9 @@ class Child:
             self._next_id += 1
             self._send(dict(message, id=self._next_id), timeout, phase, deadline)
             expected = self._next_id
-            start = (time.monotonic(), self._waited())
+            # ``waited_now``: the reply is awaited at once, and its counts are read once the call has lasted
+            # COUNTS_AFTER (``_reply``); a reply awaited later (``call_later``) needs them now
+            start = (time.monotonic(), UNREAD if waited_now else self._waited())
         else:  # the import's counts run from the worker's start, when they were 0
             expected, start = self._import_id, (self._spawned_at, Queueing(0.0, 0.0))
         return message, expected, deadline, timeout, phase, self._proc, start
@@ -506,9 +514,15 @@ class Child:
             raise WorkerCrash("the process running your code was stopped before it replied", phase)
         granted = 0.0
         while True:
+            unread = start is not None and start[1] is UNREAD
+            until = min(deadline, start[0] + COUNTS_AFTER) if unread else deadline
             try:
-                reply = self._reader.read(deadline)
+                reply = self._reader.read(until)
             except protocol.Deadline:
+                if unread:  # the call has lasted COUNTS_AFTER: the counts it is measured from
+                    start = (time.monotonic(), self._waited())
+                    if until < deadline:
+                        continue
                 late = self._late(start, granted)
                 if late is not None and granted < LOAD_GRACE * timeout:
                     grant = min(late, LOAD_GRACE * timeout - granted)
@@ -569,19 +583,20 @@ class Child:
 
     def call(self, probe, *args, timeout: float | None = None):
         """Run ``probe`` (e.g. ``"problem_06.vectors"``) on the submission; return its decoded value."""
-        return self.call_later(probe, *args, timeout=timeout)()
+        return self.call_later(probe, *args, timeout=timeout, waited_now=True)()
 
-    def call_later(self, probe, *args, timeout: float | None = None):
+    def call_later(self, probe, *args, timeout: float | None = None, waited_now: bool = False):
         """Send the call of ``probe`` now; returns a function that waits for its value (or raises what ``call``
         raises), so that the grader's own work in between overlaps the student's code.  The call's deadline runs
-        from now; the next call is sent after this one's value was asked for (or the value abandoned)."""
+        from now; the next call is sent after this one's value was asked for (or the value abandoned).
+        ``waited_now``: the caller asks for the value at once (``call``)."""
         from probes._codec import encode
 
         name = probe_name(probe)
         self._ensure_imported()
         self.calls += 1
         pending = self._post({"op": "call", "probe": name, "args": encode(list(args))},
-                             timeout or self.limits.call_timeout)
+                             timeout or self.limits.call_timeout, waited_now=waited_now)
         return lambda: self._value(self._reply(*pending))
 
     @staticmethod
