@@ -36,3 +36,39 @@ def public_tmp_dir(prefix: str):
         yield base
     finally:
         shutil.rmtree(base, ignore_errors=True)
+
+
+#: the mark of the tests that install the student kit into virtual environments: they run in one test process
+#: (``--dist loadgroup``), which installs the kit's dependencies once for all of them (``kit_site``)
+KIT_SITE_GROUP = "kit-site"
+
+
+def purelib(python: Path, env: dict | None = None) -> Path:
+    """The folder of pure-Python packages of the environment of the interpreter ``python``."""
+    done = subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_path('purelib'))"],
+                          capture_output=True, text=True, timeout=120, env=env)
+    assert done.returncode == 0, done.stderr
+    return Path(done.stdout.strip())
+
+
+@contextlib.contextmanager
+def dependency_site(requirements: list[str], env: dict):
+    """A virtual environment of ``base_python()`` with ``requirements`` installed, in a folder every user can read:
+    yields its folder of packages, for ``venv_on_site``."""
+    with public_tmp_dir("grader-site-") as base:
+        venv = base / "venv"
+        for argv in ([base_python(), "-m", "venv", str(venv)],
+                     [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", *requirements]):
+            done = subprocess.run(argv, cwd=base, env=env, capture_output=True, text=True, timeout=1200)
+            assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+        yield purelib(venv / "bin" / "python", env)
+
+
+def venv_on_site(venv: Path, site: Path, env: dict) -> None:
+    """A fresh virtual environment at ``venv`` that sees the packages of ``site`` (a ``.pth`` file of its own
+    site): what a package installed there requires and ``site`` holds is found installed, and only the rest is
+    installed."""
+    done = subprocess.run([base_python(), "-m", "venv", str(venv)], capture_output=True, text=True, timeout=600,
+                          env=env)
+    assert done.returncode == 0, done.stderr
+    (purelib(venv / "bin" / "python", env) / "shared-site.pth").write_text(f"{site}\n")

@@ -26,7 +26,7 @@ from grader.kit import KIT_DEPENDENCIES, KIT_NAME, build_kit, kit_dependencies, 
 from grader.oracle import KEY_FILE, LiveOracle
 from grader.results import Status
 
-from .environments import base_python, public_tmp_dir
+from .environments import KIT_SITE_GROUP, public_tmp_dir, venv_on_site
 from .kit_support import KIT_SEED, SEED
 from .submissions import ROOT, copy_reference
 
@@ -215,18 +215,18 @@ def _run(argv, cwd, env, timeout=600):
 
 
 @pytest.mark.slow
-def test_the_kit_installs_and_grades_problem_6(kit):
+@pytest.mark.xdist_group(KIT_SITE_GROUP)
+def test_the_kit_installs_and_grades_problem_6(kit, kit_site):
     with public_tmp_dir("grader-kit-") as tmp_path:
-        _kit_installed_grades_problem_6(kit, tmp_path)
+        _kit_installed_grades_problem_6(kit, kit_site, tmp_path)
 
 
-def _kit_installed_grades_problem_6(kit, tmp_path):
+def _kit_installed_grades_problem_6(kit, site, tmp_path):
     """The kit in a fresh virtual environment (of a Python the sandbox's unprivileged uid can read, in a folder it can
-    enter), graded in whatever sandbox this machine has."""
+    enter) that sees the kit's dependencies installed in ``site``, graded in whatever sandbox this machine has."""
     venv = tmp_path / "venv"
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
-    done = _run([base_python(), "-m", "venv", str(venv)], tmp_path, env)
-    assert done.returncode == 0, done.stderr
+    venv_on_site(venv, site, env)
     python, grade = venv / "bin" / "python", venv / "bin" / "grade"
     done = _run([str(python), "-m", "pip", "install", "-q", str(kit.wheel)], tmp_path, env, timeout=1200)
     assert done.returncode == 0, done.stdout + done.stderr

@@ -21,12 +21,12 @@ import pytest
 
 from grader.kit import KIT_DEPENDENCIES, build_kit, record_key
 
-from .environments import base_python, public_tmp_dir
+from .environments import KIT_SITE_GROUP, public_tmp_dir, venv_on_site
 from .kit_support import KIT_SEED
 from .notebooks import problem_06_cells, r3_transposed, write_notebook
 from .submissions import ROOT, copy_reference
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.xdist_group(KIT_SITE_GROUP)]
 
 #: what the simulated platform lacks
 MISSING_MODULES = ("resource", "fcntl", "pwd", "grp", "termios")
@@ -90,7 +90,7 @@ def _run(argv, cwd, env, timeout=600):
 
 
 @pytest.fixture(scope="module")
-def laptop():
+def laptop(kit_site):
     """(the virtual environment, a home folder of the student's): the kit of problem 6 installed, the platform
     simulated."""
     with public_tmp_dir("grader-laptop-") as base:
@@ -98,8 +98,7 @@ def laptop():
         kit = build_kit(base / "dist", key=key)
         venv = base / "venv"
         env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
-        done = _run([base_python(), "-m", "venv", str(venv)], base, env)
-        assert done.returncode == 0, done.stderr
+        venv_on_site(venv, kit_site, env)
         done = _run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", str(kit.wheel)], base, env,
                     timeout=1200)
         assert done.returncode == 0, done.stdout + done.stderr
