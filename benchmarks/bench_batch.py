@@ -213,9 +213,9 @@ def recorded_calls():
     calls: list[tuple[str, object]] = []
     original = Child.call_later
 
-    def call_later(self, probe, *args, timeout=None):
+    def call_later(self, probe, *args, **options):
         calls.append((probe_name(probe), encode(list(args))))
-        return original(self, probe, *args, timeout=timeout)
+        return original(self, probe, *args, **options)
 
     Child.call_later = call_later
     try:
