@@ -4,6 +4,12 @@ that refusal; the header says so once, with the fix, before the failures."""
 
 from __future__ import annotations
 
+import fcntl
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
 import pytest
 
 
@@ -30,18 +36,44 @@ def pytest_report_header(config):
 from .kit_support import answer_key, deferred_ids, kit_oracle  # noqa: E402,F401
 
 
-@pytest.fixture(scope="session")
-def kit_site():
-    """The student kit's dependencies installed once, in a folder every user can read, for the tests that install
-    the kit (``environments.KIT_SITE_GROUP``): each installs the kit's wheel with pip into a fresh environment that
-    sees this site, and pip installs what the kit requires that the site lacks.  tests/test_install.py installs
-    the grader and all it requires from the package index into an environment of its own."""
-    import os
+def _run_owner(config) -> int:
+    """The process of the whole test run: the controller of a parallel run (pytest-xdist), whose test processes are
+    its children, else this one."""
+    return os.getppid() if hasattr(config, "workerinput") else os.getpid()
 
+
+def _kit_site_folder(owner: int) -> Path:
+    return Path(tempfile.gettempdir(), f"grader-kit-site-{owner}")
+
+
+@pytest.fixture(scope="session")
+def kit_site(request):
+    """The student kit's dependencies installed once per test run, in a folder every user can read, for the tests
+    that install the kit: each installs the kit's wheel with pip into a fresh environment that sees this site
+    (``environments.venv_on_site``), and pip installs what the kit requires that the site lacks.  The first test
+    process to need it installs it; the others wait for it (a lock); the run's end removes it.
+    tests/test_install.py installs the grader and all it requires from the package index into an empty
+    environment of its own."""
     from grader.kit import kit_dependencies
 
-    from .environments import dependency_site
+    from .environments import install_site
 
+    folder = _kit_site_folder(_run_owner(request.config))
+    ready = folder.with_name(folder.name + ".ready")
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
-    with dependency_site(kit_dependencies(), env) as site:
-        yield site
+    with open(folder.with_name(folder.name + ".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not ready.exists():
+            shutil.rmtree(folder, ignore_errors=True)  # what a process that failed to install it left
+            ready.write_text(str(install_site(folder, kit_dependencies(), env)))
+    return Path(ready.read_text())
+
+
+def pytest_sessionfinish(session):
+    """The run's end (in the controller of a parallel run, after its test processes): the kit's site removed."""
+    if hasattr(session.config, "workerinput"):
+        return
+    folder = _kit_site_folder(os.getpid())
+    shutil.rmtree(folder, ignore_errors=True)
+    for suffix in (".ready", ".lock"):
+        folder.with_name(folder.name + suffix).unlink(missing_ok=True)

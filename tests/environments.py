@@ -11,7 +11,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-__all__ = ["SYSTEM_PYTHON", "base_python", "public_tmp_dir"]
+__all__ = ["SYSTEM_PYTHON", "base_python", "public_tmp_dir", "purelib", "install_site", "venv_on_site"]
 
 #: the interpreter of the environment: a system Python every user can read, when it is recent enough
 SYSTEM_PYTHON = "/usr/bin/python3"
@@ -38,11 +38,6 @@ def public_tmp_dir(prefix: str):
         shutil.rmtree(base, ignore_errors=True)
 
 
-#: the mark of the tests that install the student kit into virtual environments: they run in one test process
-#: (``--dist loadgroup``), which installs the kit's dependencies once for all of them (``kit_site``)
-KIT_SITE_GROUP = "kit-site"
-
-
 def purelib(python: Path, env: dict | None = None) -> Path:
     """The folder of pure-Python packages of the environment of the interpreter ``python``."""
     done = subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_path('purelib'))"],
@@ -51,17 +46,17 @@ def purelib(python: Path, env: dict | None = None) -> Path:
     return Path(done.stdout.strip())
 
 
-@contextlib.contextmanager
-def dependency_site(requirements: list[str], env: dict):
-    """A virtual environment of ``base_python()`` with ``requirements`` installed, in a folder every user can read:
-    yields its folder of packages, for ``venv_on_site``."""
-    with public_tmp_dir("grader-site-") as base:
-        venv = base / "venv"
-        for argv in ([base_python(), "-m", "venv", str(venv)],
-                     [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", *requirements]):
-            done = subprocess.run(argv, cwd=base, env=env, capture_output=True, text=True, timeout=1200)
-            assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
-        yield purelib(venv / "bin" / "python", env)
+def install_site(folder: Path, requirements: list[str], env: dict) -> Path:
+    """A virtual environment of ``base_python()`` made in the new folder ``folder`` (which every user can read) with
+    ``requirements`` installed: returns its folder of packages, for ``venv_on_site``."""
+    folder.mkdir()
+    os.chmod(folder, 0o755)
+    venv = folder / "venv"
+    for argv in ([base_python(), "-m", "venv", str(venv)],
+                 [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", *requirements]):
+        done = subprocess.run(argv, cwd=folder, env=env, capture_output=True, text=True, timeout=1200)
+        assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+    return purelib(venv / "bin" / "python", env)
 
 
 def venv_on_site(venv: Path, site: Path, env: dict) -> None:

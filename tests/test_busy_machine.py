@@ -80,12 +80,13 @@ def _submission(tmp_path, text):
     return folder
 
 
-def _outcome(path, hogs, limit=1.0):
+def _outcome(path, hogs, limit=1.0, case=CASE, **values):
+    """What the ``case`` script printed, run for the submission ``path`` beside ``hogs`` busy processes."""
     if not sandbox_mode().isolated and refusal() is not None:
         pytest.skip("covered by the refusal: no child runs here without bubblewrap")
     cpu = min(os.sched_getaffinity(0))
-    script = CASE.format(root=str(ROOT), cpu=cpu, hogs=hogs, path=str(path), limit=limit)
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    script = case.format(root=str(ROOT), cpu=cpu, hogs=hogs, path=str(path), limit=limit, **values)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr[-3000:]
     return json.loads(done.stdout.strip().splitlines()[-1])
 
@@ -154,13 +155,7 @@ while _time.process_time() < _end:
 
 
 def _batch_outcome(path, hogs, bound):
-    if not sandbox_mode().isolated and refusal() is not None:
-        pytest.skip("covered by the refusal: no child runs here without bubblewrap")
-    cpu = min(os.sched_getaffinity(0))
-    script = BATCH_CASE.format(root=str(ROOT), cpu=cpu, hogs=hogs, path=str(path), bound=bound)
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
-    assert done.returncode == 0, done.stderr[-3000:]
-    return json.loads(done.stdout.strip().splitlines()[-1])
+    return _outcome(path, hogs, case=BATCH_CASE, bound=bound)
 
 
 @pytest.mark.slow

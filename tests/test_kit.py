@@ -26,7 +26,7 @@ from grader.kit import KIT_DEPENDENCIES, KIT_NAME, build_kit, kit_dependencies, 
 from grader.oracle import KEY_FILE, LiveOracle
 from grader.results import Status
 
-from .environments import KIT_SITE_GROUP, public_tmp_dir, venv_on_site
+from .environments import public_tmp_dir, venv_on_site
 from .kit_support import KIT_SEED, SEED
 from .submissions import ROOT, copy_reference
 
@@ -215,7 +215,6 @@ def _run(argv, cwd, env, timeout=600):
 
 
 @pytest.mark.slow
-@pytest.mark.xdist_group(KIT_SITE_GROUP)
 def test_the_kit_installs_and_grades_problem_6(kit, kit_site):
     with public_tmp_dir("grader-kit-") as tmp_path:
         _kit_installed_grades_problem_6(kit, kit_site, tmp_path)

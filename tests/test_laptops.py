@@ -21,12 +21,12 @@ import pytest
 
 from grader.kit import KIT_DEPENDENCIES, build_kit, record_key
 
-from .environments import KIT_SITE_GROUP, public_tmp_dir, venv_on_site
+from .environments import public_tmp_dir, venv_on_site
 from .kit_support import KIT_SEED
 from .notebooks import problem_06_cells, r3_transposed, write_notebook
 from .submissions import ROOT, copy_reference
 
-pytestmark = [pytest.mark.slow, pytest.mark.xdist_group(KIT_SITE_GROUP)]
+pytestmark = pytest.mark.slow
 
 #: what the simulated platform lacks
 MISSING_MODULES = ("resource", "fcntl", "pwd", "grp", "termios")
