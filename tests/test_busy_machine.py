@@ -179,3 +179,69 @@ def test_a_batch_bound_still_stops_code_that_sleeps_on_a_busy_machine(tmp_path):
         "    c, s = np.cos(alpha), np.sin(alpha)\n",
         "    import time\n    time.sleep(0.5)\n    c, s = np.cos(alpha), np.sin(alpha)\n", 1))
     assert _batch_outcome(folder, hogs=2, bound=1.5) == "timeout"
+
+
+class _Line:
+    """The parent's end of a worker's pipe, holding the messages the worker sent."""
+
+    def __init__(self, *messages):
+        self.messages = list(messages)
+
+    def poll(self):
+        return bool(self.messages)
+
+    def recv(self):
+        return self.messages.pop(0)
+
+    def send(self, task):
+        pass
+
+
+class _Working:
+    """A worker process that is alive and never answers (this process, for its scheduler counts)."""
+
+    pid = os.getpid()
+
+    def is_alive(self):
+        return True
+
+
+def _slot(*messages):
+    """A batch slot over a worker that sent ``messages``, with no process of its own started or stopped."""
+    from grader.batch.pool import Slot
+
+    class Held(Slot):
+        def _start(self):
+            self.conn, self.process, self.ready = _Line(*messages), _Working(), True
+
+        def restart(self):
+            self.restarted = True
+
+    return Held(None, 1, None, None, (6,))
+
+
+def test_a_grant_the_worker_tells_moves_the_bound_of_the_student_on_within_its_grace():
+    from grader.batch.pool import LOAD_GRACE
+
+    slot = _slot(("grace", 0.5), ("grace", 100.0))
+    slot.submit("task", 2.0)
+    first = slot.deadline
+    assert slot.poll() is None and slot.deadline == pytest.approx(first + 0.5)
+    assert slot.poll() is None and slot.deadline == pytest.approx(first + LOAD_GRACE * 2.0)  # at most the grace
+
+
+def test_a_student_still_running_when_the_grace_is_spent_is_the_machines_fault_not_a_time_out():
+    slot = _slot(("grace", 100.0))
+    slot.submit("task", 1.0)
+    assert slot.poll() is None
+    slot.deadline = 0.0  # the moved-on bound passed too
+    kind, message = slot.poll()
+    assert kind == "busy" and "too busy" in message and slot.restarted
+
+
+def test_a_student_past_the_bound_with_no_grant_is_stopped_as_a_time_out():
+    slot = _slot()
+    slot.submit("task", 1.0)
+    slot.deadline = slot.started = 0.0  # sent long ago: this process's counts since then, not a wait
+    slot._counts = None  # and nothing read of them when it was sent: no grant can be computed
+    assert slot.poll() == ("timeout", 0.0) and slot.restarted
