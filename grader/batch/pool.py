@@ -29,8 +29,8 @@ from multiprocessing.connection import wait
 from ..errors import GraderFault
 from ..results import ProblemReport, Status
 from ..sandbox import Limits, SandboxMode
-from ..sandbox.child import LEAST_WAIT, LOAD_GRACE
-from ..sandbox.queueing import task_counts
+from ..sandbox.child import LOAD_GRACE
+from ..sandbox.queueing import excess_wait, task_counts
 from .discover import Entry
 
 __all__ = ["Task", "Slot", "run_pool", "stopped_reports", "STOP_GRACE"]
@@ -269,12 +269,9 @@ class Slot:
             return 0.0
         (waits, cpu), (before, cpu_before) = now, self._counts
         longest = max(wait - before.get(tid, 0.0) for tid, wait in waits.items())
-        idle = (time.monotonic() - self.started) - (cpu - cpu_before)
-        late = min(longest, idle) - self._own
-        if late < LEAST_WAIT:
-            return 0.0
-        self._own += late
-        return late
+        excess = excess_wait(time.monotonic() - self.started, cpu - cpu_before, longest, self._own) or 0.0
+        self._own += excess
+        return excess
 
     def waitables(self) -> list:
         return [self.conn, self.process.sentinel]

@@ -24,7 +24,7 @@ import probes
 
 from ..errors import MachineBusy, ProbeFault, SandboxError, StudentCodeError, StudentTimeout, WorkerCrash
 from . import protocol
-from .queueing import Queueing, waited
+from .queueing import LEAST_WAIT, Queueing, excess_wait, waited
 from .launch import Launch, Limits, SandboxMode, prepare, sandbox_mode
 from .portable import PORTABLE, PortableProcess, prepare_portable
 from .zygote import ForkedProcess
@@ -36,8 +36,6 @@ OUTPUT_TAIL = 4000
 #: a call's deadline moves on by the time its worker waited for a processor (``grader.sandbox.queueing``), by at
 #: most this many times the call's limit: a call of limit T ends by (1 + LOAD_GRACE) T of wall time at the latest
 LOAD_GRACE = 4.0
-#: a wait for a processor shorter than this [s] does not move a deadline (the counters' and the reads' own noise)
-LEAST_WAIT = 0.05
 #: a call's scheduler counts are read once it has lasted this long [s], not when it is sent: most calls answer
 #: sooner, and a read walks the worker's tree in /proc; the wait it misses is below ``LEAST_WAIT``, which no grant
 #: would count anyway
@@ -499,9 +497,7 @@ class Child:
         now = self._waited()
         if now is None:
             return None
-        idle = (time.monotonic() - start[0]) - (now.cpu - start[1].cpu)
-        late = min(now.wait - start[1].wait, idle) - granted
-        return late if late >= LEAST_WAIT else None
+        return excess_wait(time.monotonic() - start[0], now.cpu - start[1].cpu, now.wait - start[1].wait, granted)
 
     def _reply(self, message: dict | None, expected: int, deadline: float, timeout: float, phase: str,
                proc=None, start: tuple | None = None) -> dict:

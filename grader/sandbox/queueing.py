@@ -23,12 +23,14 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Queueing", "waited", "task_counts", "MAX_TASKS"]
+__all__ = ["Queueing", "waited", "task_counts", "excess_wait", "LEAST_WAIT", "MAX_TASKS"]
 
 #: the most tasks (processes and threads) of a tree read for one figure: a tree larger than this (a fork bomb) is
 #: read in part
 MAX_TASKS = 512
 _TICKS = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+#: a wait for a processor shorter than this [s] does not move a deadline (the counters' and the reads' own noise)
+LEAST_WAIT = 0.05
 
 
 @dataclass(frozen=True)
@@ -56,6 +58,14 @@ def _reaped(process: int) -> float:
         return (int(fields[13]) + int(fields[14])) / _TICKS
     except (IndexError, ValueError):
         return 0.0
+
+
+def excess_wait(wall: float, cpu: float, wait: float, granted: float) -> float | None:
+    """How much more than ``granted`` the machine kept a tree waiting over ``wall`` seconds in which its tasks used
+    ``cpu`` seconds of a processor and the longest wait of one of them was ``wait``: the smaller of that wait and the
+    wall time off a processor.  None when it is no more than the counters' noise (``LEAST_WAIT``)."""
+    excess = min(wait, wall - cpu) - granted
+    return excess if excess >= LEAST_WAIT else None
 
 
 def waited(pid: int | None) -> Queueing | None:
