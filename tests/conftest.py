@@ -56,11 +56,11 @@ def kit_site(request):
     environment of its own."""
     from grader.kit import kit_dependencies
 
-    from .environments import install_site
+    from .environments import install_site, outside_env
 
     folder = _kit_site_folder(_run_owner(request.config))
     ready = folder.with_name(folder.name + ".ready")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
+    env = outside_env()
     with open(folder.with_name(folder.name + ".lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not ready.exists():

@@ -11,7 +11,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-__all__ = ["SYSTEM_PYTHON", "base_python", "public_tmp_dir", "purelib", "install_site", "venv_on_site"]
+__all__ = ["SYSTEM_PYTHON", "base_python", "public_tmp_dir", "purelib", "install_site", "venv_on_site",
+           "outside_env"]
 
 #: the interpreter of the environment: a system Python every user can read, when it is recent enough
 SYSTEM_PYTHON = "/usr/bin/python3"
@@ -36,6 +37,12 @@ def public_tmp_dir(prefix: str):
         yield base
     finally:
         shutil.rmtree(base, ignore_errors=True)
+
+
+def outside_env() -> dict:
+    """This process's environment without what ties a program to this tree and this interpreter (``PYTHONPATH``,
+    ``GRADER_ORACLE``, ``VIRTUAL_ENV``): for a program of another environment, as a user runs it."""
+    return {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
 
 
 def purelib(python: Path, env: dict | None = None) -> Path:

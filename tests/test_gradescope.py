@@ -33,6 +33,7 @@ from grader.gradescope import CONFIG, FAULT, RUN, SETUP, WHEEL_PACKAGES, build_a
 from grader.report.gradescope_results import WITHHELD, fault_results, results_json
 from grader.results import CheckResult, ManualItem, ProblemReport, Status
 
+from .environments import outside_env
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
 
 # ---------------------------------------------------------------------------------------------- the schema
@@ -270,7 +271,7 @@ def test_grade_gradescope_command(tmp_path, capsys, monkeypatch):
 
 
 def _env(base: Path) -> dict:
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
+    env = outside_env()
     env.update(AUTOGRADER_ROOT=str(base / "autograder"), GRADER_HOME=str(base / "opt"),
                GRADER_CACHE=str(base / "cache"), GRADER_OFFLINE="1", GRADER_PYTHON=sys.executable)
     return env

@@ -12,7 +12,6 @@ import gzip
 import hashlib
 import io
 import json
-import os
 import subprocess
 import tomllib
 import zipfile
@@ -26,7 +25,7 @@ from grader.kit import KIT_DEPENDENCIES, KIT_NAME, build_kit, kit_dependencies, 
 from grader.oracle import KEY_FILE, LiveOracle
 from grader.results import Status
 
-from .environments import public_tmp_dir, venv_on_site
+from .environments import outside_env, public_tmp_dir, venv_on_site
 from .kit_support import KIT_SEED, SEED
 from .submissions import ROOT, copy_reference
 
@@ -224,7 +223,7 @@ def _kit_installed_grades_problem_6(kit, site, tmp_path):
     """The kit in a fresh virtual environment (of a Python the sandbox's unprivileged uid can read, in a folder it can
     enter) that sees the kit's dependencies installed in ``site``, graded in whatever sandbox this machine has."""
     venv = tmp_path / "venv"
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
+    env = outside_env()
     venv_on_site(venv, site, env)
     python, grade = venv / "bin" / "python", venv / "bin" / "grade"
     done = _run([str(python), "-m", "pip", "install", "-q", str(kit.wheel)], tmp_path, env, timeout=1200)

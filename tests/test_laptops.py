@@ -21,7 +21,7 @@ import pytest
 
 from grader.kit import KIT_DEPENDENCIES, build_kit, record_key
 
-from .environments import public_tmp_dir, venv_on_site
+from .environments import outside_env, public_tmp_dir, purelib, venv_on_site
 from .kit_support import KIT_SEED
 from .notebooks import problem_06_cells, r3_transposed, write_notebook
 from .submissions import ROOT, copy_reference
@@ -97,17 +97,16 @@ def laptop(kit_site):
         key, _ = record_key([6], seed=KIT_SEED)
         kit = build_kit(base / "dist", key=key)
         venv = base / "venv"
-        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
+        env = outside_env()
         venv_on_site(venv, kit_site, env)
         done = _run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", str(kit.wheel)], base, env,
                     timeout=1200)
         assert done.returncode == 0, done.stdout + done.stderr
-        purelib = _run([str(venv / "bin" / "python"), "-c", "import sysconfig; print(sysconfig.get_path('purelib'))"],
-                       base, env).stdout.strip()
+        site = purelib(venv / "bin" / "python", env)
         # Imported by a .pth file of the environment (read at every start, -I included): a Debian Python's own
         # sitecustomize, in its standard library, would come first on sys.path and hide one of that name
-        Path(purelib, "simulated_platform.py").write_text(SITECUSTOMIZE)
-        Path(purelib, "simulated_platform.pth").write_text("import simulated_platform\n")
+        (site / "simulated_platform.py").write_text(SITECUSTOMIZE)
+        (site / "simulated_platform.pth").write_text("import simulated_platform\n")
         home = base / "home"
         home.mkdir()
         if os.geteuid() == 0:

@@ -17,7 +17,6 @@ this interpreter's packages stands for the image's (``GRADER_HOME``), and the jo
 from __future__ import annotations
 
 import json
-import os
 import shutil
 import stat
 import subprocess
@@ -35,7 +34,7 @@ from grader.prairielearn import (ENTRYPOINT, FAULT_FILE, IMAGE_DIR, PROBLEM_FILE
 from grader.report.prairielearn_results import RESULTS_BYTES, fault_results, results_json, unloadable_results
 from grader.results import CheckResult, Figure, ManualItem, ProblemReport, Series, Status
 
-from .environments import public_tmp_dir
+from .environments import outside_env, public_tmp_dir
 from .submissions import ROOT, build_planted, copy_reference, copy_template, planted_mistakes
 
 # ---------------------------------------------------------------------------------------------- the schemas
@@ -350,7 +349,7 @@ def image(fragment):
 
 
 def _env(image, **changes) -> dict:
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "GRADER_ORACLE", "VIRTUAL_ENV")}
+    env = outside_env()
     env.update(GRADER_HOME=str(image["home"]), GRADER_CACHE=str(image["base"] / "cache"))
     env.update(changes)
     return env
