@@ -30,7 +30,7 @@ from .checking import (
 from .diagnosis import doubt, explain, judge, symptom, prepare_call, prepared, recording, remember_run, trace
 from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
 from .gate import admit, form_of
-from .oracle import Oracle, current, draw_pool, private_hypothesis_home
+from .oracle import Oracle, current, draw_pool, hypothesis_run
 
 #: hypothesis's engine is not meant to run in two threads at once
 _HYPOTHESIS = threading.Lock()
@@ -441,7 +441,6 @@ class Context:
 
         from .strategies import to_hypothesis
 
-        private_hypothesis_home()
         state: dict = {"last": None, "fatal": None}
 
         @settings(
@@ -470,7 +469,8 @@ class Context:
                 raise
 
         try:
-            run()
+            with hypothesis_run():
+                run()
         except (CheckFailure, StudentFault):
             pass
         except Exception as exc:  # noqa: BLE001

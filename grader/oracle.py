@@ -51,6 +51,7 @@ __all__ = [
     "KEY_FILE",
     "call_key",
     "draw_pool",
+    "hypothesis_run",
     "private_hypothesis_home",
 ]
 
@@ -98,6 +99,58 @@ def private_hypothesis_home() -> Path:
     return _HYPOTHESIS_HOME
 
 
+#: the grader's own runs of hypothesis in this process (``hypothesis_run``), and the lock that counts them
+_RUNS = {"count": 0, "saved": None}
+_RUNS_LOCK = threading.Lock()
+
+
+@contextmanager
+def hypothesis_run():
+    """A run of hypothesis by the grader (a shrink, a pool of draws): its storage private (``private_hypothesis_home``)
+    and its draws independent of the source files of the process.
+
+    hypothesis (since 6.131) now and then draws a literal that it found in the source of the process's "local"
+    modules, those outside site-packages: the grader itself when installed editable, the reference, whatever a
+    caller imported before.  An input drawn from a seed, and the minimal failing input shrunk from it, would then
+    depend on how the grader was installed and on which modules were imported first (a batch slot imports every
+    problem's, ``grade problem-N`` one problem's), and the first draw of each process would parse every such file
+    (seconds, in a grading of a second).  Within the grader's runs hypothesis sees no local constants (its own
+    built-in ones stay); other code of the process (a notebook's own use of hypothesis) keeps its behaviour."""
+    private_hypothesis_home()
+    with _RUNS_LOCK:
+        if _RUNS["count"] == 0:
+            _RUNS["saved"] = _blind_to_local_constants()
+        _RUNS["count"] += 1
+    try:
+        yield
+    finally:
+        with _RUNS_LOCK:
+            _RUNS["count"] -= 1
+            if _RUNS["count"] == 0 and _RUNS["saved"] is not None:
+                _RUNS["saved"]()
+                _RUNS["saved"] = None
+
+
+def _blind_to_local_constants():
+    """Make hypothesis's providers see no local constants, with a cache of permitted constants of their own; returns
+    the undoing, or None where this hypothesis collects none (before 6.131) or keeps them elsewhere."""
+    try:
+        from hypothesis.internal.conjecture import providers
+
+        collect, cache = providers._get_local_constants, providers.CONSTANTS_CACHE
+        none, blind_cache = providers.Constants(), type(cache)(1024)
+    except (ImportError, AttributeError, TypeError):
+        return None
+
+    providers._get_local_constants = lambda: none
+    providers.CONSTANTS_CACHE = blind_cache
+
+    def undo():
+        providers._get_local_constants, providers.CONSTANTS_CACHE = collect, cache
+
+    return undo
+
+
 def draw_pool(strategy, examples: int, seed: int) -> list:
     """``examples`` argument tuples drawn from ``strategy`` with ``seed``.  A strategy of ``grader.strategies``
     draws them itself (no hypothesis); a hypothesis strategy runs hypothesis's generation only (no test runs,
@@ -109,7 +162,6 @@ def draw_pool(strategy, examples: int, seed: int) -> list:
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hyp_seed
 
-    private_hypothesis_home()
     drawn: list = []
 
     @settings(
@@ -128,7 +180,8 @@ def draw_pool(strategy, examples: int, seed: int) -> list:
     def collect(args):
         drawn.append(args)
 
-    collect()
+    with hypothesis_run():
+        collect()
     return drawn[:examples]
 
 

@@ -10,6 +10,8 @@ a stub oracle (the reference), so that the inputs and the mistakes are fully kno
   mistakes give the student's value, and only a drawn input with ``a != 0`` tells them apart.
 """
 
+import importlib
+
 import numpy as np
 import pytest
 
@@ -100,6 +102,40 @@ def compare(oracle, twin=False, seed=7):
         ctx.compare_random(f, INPUTS, name="f(a, b)", tol=EXACT, examples=10, describe=describe,
                            mistakes=lambda args, expected: catalogue(args, expected, twin))
     return caught.value, shown[-1]
+
+
+def inputs_tried(seed: int) -> list:
+    """Every input the randomized comparison of ``student_f`` asked the student, live, in order."""
+    child = StubChild(student_f)
+    ctx = Context(99, child, {}, None, seed, StubOracle())
+    ctx.begin("p99.f_values")
+    with pytest.raises(CheckFailure):
+        ctx.compare_random(f, INPUTS, name="f(a, b)", tol=EXACT, examples=10,
+                           mistakes=lambda args, expected: catalogue(args, expected))
+    return child.calls
+
+
+def test_the_inputs_a_seed_gives_do_not_depend_on_the_modules_imported_before(tmp_path, monkeypatch):
+    """hypothesis draws now and then a literal it found in the source of the process's local modules; the grader's
+    runs see none, so the inputs a seed makes the student's code run on are the same whatever the process imported
+    before (a batch slot imports every problem's modules, ``grade problem-N`` one problem's, an editable install the
+    grader's own), and no grading parses the process's source files."""
+    from hypothesis import strategies as hs
+
+    from grader.oracle import draw_pool
+
+    pairs = hs.tuples(hs.floats(-2.0, 2.0), hs.floats(-2.0, 2.0))
+    seeds = range(4)
+    before = [inputs_tried(seed) for seed in seeds]
+    drawn = draw_pool(pairs, 300, seed=5)
+    (tmp_path / "sheet_values.py").write_text(
+        "VALUES = [" + ", ".join(f"{x:.7f}" for x in np.linspace(-1.93, 1.97, 400)) + "]\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.delitem(__import__("sys").modules, "sheet_values", raising=False)
+    importlib.import_module("sheet_values")
+    assert all(len(tried) > 5 for tried in before) and len(drawn) == 300
+    assert draw_pool(pairs, 300, seed=5) == drawn
+    assert [inputs_tried(seed) for seed in seeds] == before
 
 
 def test_diagnose_names_one_mistake_or_all_that_match():
