@@ -61,14 +61,19 @@ def module_file(name: str) -> Path | None:
     import sys
 
     loaded = sys.modules.get(name)
-    origin = getattr(loaded, "__file__", None) if loaded is not None else None
-    if origin is None:
-        try:
-            spec = importlib.util.find_spec(name)
-        except (ImportError, ValueError):
-            return None
-        origin = spec.origin if spec else None
+    origin = getattr(loaded, "__file__", None) if loaded is not None else _found_origin(name)
     return Path(origin) if origin and origin.endswith(".py") else None
+
+
+@lru_cache(maxsize=None)
+def _found_origin(name: str) -> str | None:
+    """Where the import system finds the module ``name`` that is not imported (asked once per process: every
+    problem's ``verdict_sources`` asks for the same machinery)."""
+    try:
+        spec = importlib.util.find_spec(name)
+    except (ImportError, ValueError):
+        return None
+    return spec.origin if spec else None
 
 
 def package_files(*packages: str) -> list[Path]:

@@ -75,18 +75,22 @@ def _cleanup_only() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
 
 
-def _serve(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...], parent: int) -> None:
+def _serve(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...],
+           warm: tuple[str, ...] | None, parent: int) -> None:
     """A worker process: grade the tasks the parent sends, one at a time, and send back the reports."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     signal.signal(signal.SIGTERM, _stop)
     try:
         _die_with_parent(parent)
-        _work(conn, slot, limits, mode, problems)
+        _work(conn, slot, limits, mode, problems, warm)
     except _Stopped:
         pass
 
 
-def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...]) -> None:
+def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...],
+          warm: tuple[str, ...] | None = None) -> None:
+    """Start the slot's warm process (importing ``warm``, the modules ``warm_modules`` names, found here when None)
+    and grade the tasks that come through ``conn`` until it closes."""
     from ..sandbox.zygote import Zygote, warm_modules
 
     zygote = None
@@ -98,7 +102,8 @@ def _work(conn, slot: int, limits: Limits, mode: SandboxMode, problems: tuple[in
 
             for number in problems:
                 problem_module(number)
-            zygote = Zygote(limits, mode, warm_modules(problems))  # its folder is made by start, removed by close
+            modules = list(warm) if warm is not None else warm_modules(problems)
+            zygote = Zygote(limits, mode, modules)  # its folder is made by start, removed by close
             zygote.start()
         except Exception as exc:  # noqa: BLE001 - reported to the parent, which stops the batch
             conn.send(("fault", str(exc) if isinstance(exc, GraderFault) else traceback.format_exc()))
@@ -179,12 +184,24 @@ class _Subprocess:
 START_KILLS = 3
 
 
+def _warm(problems: tuple[int, ...]) -> tuple[str, ...] | None:
+    """The modules a slot's warm process imports for ``problems``, found once here rather than in every worker
+    that starts (finding them parses the sources of every problem's verdicts: seconds per worker); None when they
+    cannot be found here, and the worker finds them and reports why not."""
+    from ..sandbox.zygote import warm_modules
+
+    try:
+        return tuple(warm_modules(problems))
+    except Exception:  # noqa: BLE001 - the worker meets the same fault and reports it as the batch's
+        return None
+
+
 class Slot:
     """One worker process and the task it grades."""
 
     def __init__(self, context, index: int, limits: Limits, mode: SandboxMode, problems: tuple[int, ...]):
         """``context``: a ``multiprocessing`` context to start the worker with, or None for a subprocess."""
-        self.context, self.index, self.args = context, index, (limits, mode, problems)
+        self.context, self.index, self.args = context, index, (limits, mode, problems, _warm(problems))
         self.task: Task | None = None
         self.deadline = self.started = self.bound = 0.0
         self.granted = 0.0  # seconds the bound of the current task moved on for the machine's load
