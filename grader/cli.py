@@ -226,7 +226,8 @@ def cmd_kit(args) -> int:
         print(f"  recorded problem {number} in {seconds:.1f} s", file=sys.stderr)
 
     try:
-        kit = build_kit(args.out_dir, seed=args.seed, problems=args.problems, progress=progress)
+        kit = build_kit(args.out_dir, seed=args.seed, problems=args.problems, progress=progress,
+                        jobs=args.jobs or os.cpu_count() or 1)
     except KitError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_USAGE
@@ -344,6 +345,8 @@ def build_parser(kit: bool = False) -> argparse.ArgumentParser:
     p_kit.add_argument("--seed", type=int, default=None, help="the kit's seed (pools of random inputs)")
     p_kit.add_argument("--problems", type=problem_number, nargs="+", default=None,
                        help="problems whose public checks the key covers (default: all)")
+    p_kit.add_argument("--jobs", "-j", type=positive_int, default=None, metavar="N",
+                       help="problems recorded side by side (default: the number of CPUs); the key is the same")
     p_kit.set_defaults(func=cmd_kit)
 
     p_gs = sub.add_parser("gradescope", help="build Gradescope's autograder zip (it holds the reference)")

@@ -89,11 +89,12 @@ def _reference_answers() -> dict:
 
 
 def record_key(problems: list[int] | None = None, seed: int | None = None,
-               progress=None) -> tuple[AnswerKey, list[ProblemReport]]:
+               progress=None, jobs: int = 1) -> tuple[AnswerKey, list[ProblemReport]]:
     """Grade the reference on ``problems`` (default: every problem) while recording the answer key.  Every public
-    check must pass: a key recorded from a failing reference would grade students wrongly."""
-    from .runner import _run_checks
-    from .problems import problem_module, problems as all_problems
+    check must pass: a key recorded from a failing reference would grade students wrongly.  With ``jobs`` > 1 the
+    problems are recorded side by side in that many processes and their recordings joined in the problems' order:
+    the key is the one a single process records."""
+    from .problems import problems as all_problems
 
     if not reference_available():
         raise KitError("grade kit needs the full project: the reference solution is not installed here")
@@ -103,17 +104,21 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
     shadow = RecordingOracle(seed, secret=True)  # the secret and hidden checks: what the key must not hold
     answers = _reference_answers()
     reports, failures = [], []
-    for number in numbers:
-        start = time.perf_counter()
-        module = problem_module(number)
-        results = _run_checks(module, Context(number, ReferenceChild(oracle), answers, None, seed, oracle), number)
-        secret = _run_checks(module, Context(number, ReferenceChild(shadow), answers, None, seed, shadow), number)
-        failures += [f"{r.check_id} ({r.status.value}): {r.message.splitlines()[0] if r.message else ''}"
-                     for r in (*results, *secret) if r.status not in (Status.PASSED, Status.DEFERRED)]
-        reports.append(ProblemReport(number, module.TITLE, tuple(results), sandbox="the reference, in process",
-                                     seed=seed, duration=time.perf_counter() - start, grader_version=__version__))
-        if progress:
-            progress(number, time.perf_counter() - start)
+    if jobs > 1 and len(numbers) > 1:
+        recorded = _recorded_side_by_side(numbers, seed, jobs, progress)
+        for number in numbers:
+            public, secret, report, failed = recorded[number]
+            oracle.absorb(public)
+            shadow.absorb(secret)
+            reports.append(report)
+            failures += failed
+    else:
+        for number in numbers:
+            report, failed = _record_problem(number, oracle, shadow, answers, seed)
+            reports.append(report)
+            failures += failed
+            if progress:
+                progress(number, report.duration)
     if failures:
         raise KitError("the reference does not pass every check, so no key is recorded:\n  "
                        + "\n  ".join(failures))
@@ -128,6 +133,49 @@ def record_key(problems: list[int] | None = None, seed: int | None = None,
         del key.calls[call]
     _hold_at_sheet_digits(key, oracle, numbers, answers, seed)
     return key, reports
+
+
+def _record_problem(number: int, oracle: RecordingOracle, shadow: RecordingOracle, answers: dict,
+                    seed: int) -> tuple[ProblemReport, list[str]]:
+    """Grade the reference on one problem into ``oracle`` (public checks) and ``shadow`` (secret and hidden ones):
+    its report and the checks it did not pass."""
+    from .problems import problem_module
+    from .runner import _run_checks
+
+    start = time.perf_counter()
+    module = problem_module(number)
+    results = _run_checks(module, Context(number, ReferenceChild(oracle), answers, None, seed, oracle), number)
+    secret = _run_checks(module, Context(number, ReferenceChild(shadow), answers, None, seed, shadow), number)
+    failures = [f"{r.check_id} ({r.status.value}): {r.message.splitlines()[0] if r.message else ''}"
+                for r in (*results, *secret) if r.status not in (Status.PASSED, Status.DEFERRED)]
+    report = ProblemReport(number, module.TITLE, tuple(results), sandbox="the reference, in process", seed=seed,
+                           duration=time.perf_counter() - start, grader_version=__version__)
+    return report, failures
+
+
+def _record_alone(task: tuple[int, int]):
+    """One problem recorded in a process of its own (``record_key`` with jobs): what its two oracles recorded, its
+    report and the checks it did not pass."""
+    number, seed = task
+    oracle, shadow = RecordingOracle(seed), RecordingOracle(seed, secret=True)
+    report, failures = _record_problem(number, oracle, shadow, _reference_answers(), seed)
+    return number, oracle.recorded(), shadow.recorded(), report, failures
+
+
+def _recorded_side_by_side(numbers: list[int], seed: int, jobs: int, progress) -> dict:
+    """Every problem of ``numbers`` recorded in ``jobs`` fresh processes (the later, longer problems first):
+    number → (public recording, secret recording, report, failures)."""
+    import multiprocessing
+
+    recorded = {}
+    context = multiprocessing.get_context("spawn")  # never a fork of a process that may hold threads
+    with context.Pool(min(jobs, len(numbers))) as pool:
+        for number, public, secret, report, failures in pool.imap_unordered(
+                _record_alone, [(n, seed) for n in sorted(numbers, reverse=True)]):
+            recorded[number] = (public, secret, report, failures)
+            if progress:
+                progress(number, report.duration)
+    return recorded
 
 
 def _answers_to_the_student(oracle: RecordingOracle) -> set[str]:
@@ -341,12 +389,12 @@ class Kit:
 
 
 def build_kit(out_dir: str | Path, *, seed: int | None = None, problems: list[int] | None = None,
-              progress=None, key: AnswerKey | None = None) -> Kit:
-    """Record the answer key (unless ``key`` is given, recorded already) and write the kit's wheel into
-    ``out_dir``."""
+              progress=None, key: AnswerKey | None = None, jobs: int = 1) -> Kit:
+    """Record the answer key (unless ``key`` is given, recorded already; in ``jobs`` processes) and write the kit's
+    wheel into ``out_dir``."""
     reports: list = []
     if key is None:
-        key, reports = record_key(problems, seed, progress)
+        key, reports = record_key(problems, seed, progress, jobs=jobs)
     data = key.dumps()
     files = kit_files()
     leaked = sorted(name for name in files if name.split("/")[0] == "reference")

@@ -614,6 +614,25 @@ class RecordingOracle(LiveOracle):
 
         self.key.upstream.setdefault(key, [[function, encode(list(args)), parent] for function, args, parent in calls])
 
+    def recorded(self) -> dict:
+        """What this oracle recorded, without its caches: for ``absorb`` in another process."""
+        return {"calls": self.key.calls, "pools": self.key.pools, "draws": self.key.draws,
+                "upstream": self.key.upstream, "fixed": self.fixed_keys, "student_fixed": self.student_fixed_keys,
+                "diagnosis": self.diagnosis_keys}
+
+    def absorb(self, recorded: dict) -> None:
+        """Join another oracle's recording (``recorded``) of later problems as if this oracle had recorded them
+        after its own: a call already held keeps its value and gains the other's checks, in order."""
+        for call, entry in recorded["calls"].items():
+            held = self.key.calls.setdefault(call, {"value": entry["value"], "checks": []})
+            held["checks"] += [check for check in entry["checks"] if check not in held["checks"]]
+        for mine, theirs in ((self.key.pools, "pools"), (self.key.draws, "draws"), (self.key.upstream, "upstream")):
+            for name, value in recorded[theirs].items():
+                mine.setdefault(name, value)
+        self.fixed_keys |= recorded["fixed"]
+        self.student_fixed_keys |= recorded["student_fixed"]
+        self.diagnosis_keys |= recorded["diagnosis"]
+
 
 class KeyOracle(Oracle):
     """The recorded answer key of the student kit."""

@@ -206,6 +206,20 @@ def test_a_public_check_sharing_a_secret_value_is_withheld(monkeypatch):
     assert not [entry for entry in key.calls.values() if set(entry["checks"]) & {"p28.port", "p28.prediction"}]
 
 
+def test_a_key_recorded_side_by_side_is_the_key_one_process_records():
+    """``grade kit --jobs``: problems recorded in processes of their own and joined in order give, byte for byte, the
+    key one process records (here problems 6, 8 and 9, which ask the reference some of the same calls; 8's checks
+    are judged on the student's functions of earlier problems)."""
+    alone, reports = record_key([6, 8, 9], seed=KIT_SEED)
+    side_by_side, parallel_reports = record_key([6, 8, 9], seed=KIT_SEED, jobs=2)
+    assert alone.upstream and any(len({check.split(".")[0] for check in entry["checks"]}) > 1
+                                  for entry in alone.calls.values())
+    assert side_by_side.dumps() == alone.dumps()
+    assert [r.problem for r in parallel_reports] == [r.problem for r in reports] == [6, 8, 9]
+    assert [[(r.check_id, r.status) for r in report.results] for report in parallel_reports] == [
+        [(r.check_id, r.status) for r in report.results] for report in reports]
+
+
 # ---------------------------------------------------------------------------------------------- installed
 
 
