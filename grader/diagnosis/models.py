@@ -10,8 +10,9 @@ holds them all, and the compared value is among them:
 
 * a body and the bodies it carries moved by one translation, nothing else changed: the body's ``pos`` (an offset;
   where the body sits along the lever from its parent's joint at a factor of the grammar of the reference's
-  distance, half the link's length for the whole, a scale as much; where its lever from the parent's joint has the
-  reference's coordinates along other axes, its position's coordinates in the wrong order as much);
+  distance, half the link's length for the whole, a scale as much; where it sits at the lever's opposite, behind
+  its parent's joint, a sign as much; where its lever from the parent's joint has the reference's coordinates
+  along other axes, its position's coordinates in the wrong order as much);
 * a body and the bodies it carries turned about its joint by one angle (centres of mass, anchors, axes and
   inertias alike), nothing else changed but the joints' initial angles: where the reference's body starts
   unturned relative to its parent, the model built in another configuration (its ``euler`` or its keyframe);
@@ -274,7 +275,9 @@ def _pivot(desc, body: int):
 
 def _lever_slips(mine, theirs, body: int) -> list[Hypothesis]:
     """A body moved along the lever from its parent's joint to its own, by a factor of the grammar (half the link's
-    length where the whole belongs): a scale as much as an offset."""
+    length where the whole belongs): a scale as much as an offset; or to the lever's opposite (the length typed
+    with a minus, the body hung behind its parent's joint): a sign as much as an offset.  The body's offset is
+    what the answer shows, the lever's slip where it was made: both are told."""
     parent = int(theirs["bodies"][body - 1]["parent"])
     ends = [_pivot(desc, b) for desc in (theirs, mine) for b in (parent, body)]
     if any(end is None for end in ends):
@@ -284,7 +287,8 @@ def _lever_slips(mine, theirs, body: int) -> list[Hypothesis]:
         return []
     kept = []
     for hypothesis, value in output_slips(r, {}, None):
-        if hypothesis.key.startswith("scale") and within(s, np.asarray(value, dtype=float), SAME):
+        if (hypothesis.key.startswith("scale") or hypothesis.key == "sign") \
+                and within(s, np.asarray(value, dtype=float), SAME):
             kept.append(Hypothesis(f"model:lever:{body}:{hypothesis.key}", hypothesis.name, hypothesis.cost,
                                    f"{_name(theirs, body)} sits on its parent at {_vector(s)} m from the parent's "
                                    f"joint, where the reference's sits at {_vector(r)}: "

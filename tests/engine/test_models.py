@@ -2,9 +2,10 @@
 
 * A MuJoCo model (``grader.diagnosis.models``): the student's compiled model is compared with the reference's on
   the same arguments, element by element; a body moved with what it carries is an offset (and a scale where it
-  sits at a factor of the lever from its parent's joint), a body turned about its joint where the reference's
-  starts unturned is the model built in another configuration, where it starts turned by an angle given the slip
-  of that angle (degrees, a sign), and one attribute alone differing is told by the grammar of values.
+  sits at a factor of the lever from its parent's joint, a sign where it sits at the lever's opposite), a body
+  turned about its joint where the reference's starts unturned is the model built in another configuration, where
+  it starts turned by an angle given the slip of that angle (degrees, a sign), and one attribute alone differing is
+  told by the grammar of values.
   Differences that no one story holds name nothing.
 
 The planted mistakes are in no set of ``tests/diagnosis/``, no table of ``tests/engine/`` and no planted suite;
@@ -179,13 +180,25 @@ def test_a_link_hung_along_its_parent_s_z_backwards_is_axes_exchanged_as_well():
     assert "coordinate_order" in _told(mine, theirs, mine["joints"][1]["anchor"])
 
 
-def test_a_link_hung_at_a_slant_or_backwards_is_an_offset_only():
+def test_a_link_hung_at_a_slant_is_an_offset_only():
     """The near misses: the lever turned by 45 degrees in the parent's frame (its lengths along other axes are not
-    the reference's), or pointing backwards along the same axis (each coordinate where it belongs): no order."""
+    the reference's), or stretched along another axis as well: no order, no sign, no factor."""
     theirs = _chain([0.3, 0.5])
-    for along in [(np.sqrt(0.5), np.sqrt(0.5), 0.0), (-1.0, 0.0, 0.0), (1.0, 0.5, 0.0)]:
+    for along in [(np.sqrt(0.5), np.sqrt(0.5), 0.0), (1.0, 0.5, 0.0), (-1.0, 0.5, 0.0)]:
         mine = _chain([0.3, 0.5], along=along)
         assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset"], along
+
+
+def test_a_link_hung_behind_its_parent_s_joint_is_an_offset_and_a_sign():
+    """The second link hung at -L along its parent's x where +L belongs (the length typed with a minus): the body's
+    offset is what the answer shows, the lever's sign where the slip was made; both are told (each coordinate where
+    it belongs: no order).  Hung at -L/2, it is a sign and a factor at once, which the lever's slips of one edit do
+    not tell: an offset alone."""
+    theirs = _chain([0.3, 0.5])
+    mine = _chain([0.3, 0.5], along=(-1.0, 0.0, 0.0))
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset", "sign_flip"]
+    mine = _chain([0.3, 0.5], along=(-0.5, 0.0, 0.0))
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset"]
 
 
 def test_gravity_alone_negated_is_a_sign():
