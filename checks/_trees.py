@@ -466,9 +466,10 @@ def assert_visited(bodies, expected_bodies, names, motion=True):
              f"the bodies in recursion order: {', '.join(names)}", UNVISITED_HINT, "unvisited_branch")
 
 
-def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from=None):
+def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from=None, known=True):
     """Fail at the first body (recursion order) and quantity where ``got`` departs from ``expected``; ``mistakes``
-    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with.
+    are the mistaken states ``[(name, hint, bodies)]`` of ``candidates`` to diagnose with, beside a position stored
+    in inertial coordinates (``known``: False names no known mistake at all).
 
     ``poses_from = (ctx, check id, what)`` says that the positions and orientations are an earlier problem's work,
     graded by that check: they are not compared here (error carried forward), only the motion is; when the poses
@@ -497,7 +498,7 @@ def compare_states(got, expected, tol=EXACT, mistakes=(), context="", poses_from
                      for m_name, m_hint, state in mistakes
                      if _agrees_before(state, expected, k, quantity, tol)
                      and (not _vanishes(state[k][quantity], tol) or _reproduces(state, bodies, quantity, tol))]
-            if quantity == "B_r_IB":
+            if quantity == "B_r_IB" and known:
                 found.append(Mistake("wrong_frame", ref["A_IB"] @ ref["B_r_IB"], INERTIAL_HINT))
             _with_hint(value, ref[quantity], f"{quantity} of {name}", tol, found, _GENERIC_HINTS[quantity],
                        context=context, note=_where(expected, k, quantity))

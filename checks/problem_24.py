@@ -1,7 +1,7 @@
 """Checks of problem 24: the rotational joint and the recursive forward kinematics of positions and orientations
 (``Body.forward_kinematics``, ``Joint.successor_pose``, ``RotationalJoint.joint_pose``)."""
 
-from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, STRUCTURE, assert_rotation, check
+from grader.checking import STAGE_RANDOM, STAGE_STRUCTURE, STAGE_VALUES, STRUCTURE, assert_rotation, check, confirmed
 from probes import problem_24 as p24
 
 from ._trees import (
@@ -22,6 +22,10 @@ TITLE = "Rotational Joint and Recursive Forward Kinematics"
 
 #: rotational joints and the probe's test joint (a relative translation for the generic pass)
 KINDS = ("rotational", "test")
+
+
+#: the configuration in which a known mistake named in the sheet's must hold as well: no angle a multiple of pi/4
+SECOND_Q = (0.7, 0.4, -1.1)
 
 
 def _pendulum(ctx):
@@ -53,7 +57,18 @@ def check_pendulum(ctx):
     drawing = configuration_figure("Problem 24: the triple pendulum at q = (pi/6, -pi/4, pi/3)", got, expected)
     if drawing is not None:
         ctx.add_figure(drawing)
-    held(ctx, own, lambda: compare_states(got, expected, mistakes=mistakes, context="(the sheet's configuration)"),
+    # a known mistake is named where it holds in a second configuration too (its reference calls are in the key)
+    other = ctx.catalogue(lambda: [ctx.reference(p24.pendulum, SECOND_Q), candidates(ctx, description, SECOND_Q)])
+
+    def again():
+        compare_states(ctx.student(p24.pendulum, SECOND_Q), other[0], mistakes=other[1],
+                       context="(the sheet's configuration)")
+
+    def shown(known):
+        compare_states(got, expected, mistakes=mistakes if known else (), context="(the sheet's configuration)",
+                       known=known)
+
+    held(ctx, own, lambda: confirmed(shown, again),
          lambda value: compare_states(got, value, context="(the sheet's configuration)"))
 
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from checks._diagnoses import DIAGNOSES, families_of, student_phrase, unknown_names
 
-from .errors import GraderFault
+from .errors import GraderFault, StudentFault, StudentTimeout, WorkerCrash
 from .results import Figure, Series
 from .values import Tol, format_array
 
@@ -46,6 +46,8 @@ __all__ = [
     "as_array",
     "assert_close",
     "assert_close_each",
+    "confirmed",
+    "property_of",
     "assert_rotation",
     "is_rotation",
     "rotation_twins",
@@ -413,6 +415,47 @@ def assert_close_each(cases) -> None:
         raise first
     hint, diagnosis = diagnose(kept)
     raise CheckFailure(first.message, hint, diagnosis, kept, first.evidence)
+
+
+def confirmed(compare, again) -> None:
+    """``compare(True)``, a comparison of the input shown with its catalogue of known mistakes; where it fails
+    naming one, ``again()`` makes the same comparison, with that input's catalogue, on a second input the check
+    chooses, and a known mistake is named only where one of its name reproduces the student's value there as well:
+    a mistake that reproduces the value on one input may do so by that input's chance (a body's position in its
+    own frame that equals its inertial position at the sheet's angles), which a second input does not repeat.
+    Where the second input fails another property (the first line of its message, numbers aside), passes, or the
+    student's code raises on it, no name holds, and ``compare(False)`` (the comparison without its catalogue) gives
+    the failure, unnamed, for the diagnosis engine; a time-out or a crash there stops the grading, as anywhere."""
+    try:
+        compare(True)
+    except CheckFailure as shown:
+        if not shown.diagnosis or not shown.candidates:
+            raise
+        names: set = set()
+        try:
+            again()
+        except CheckFailure as other:
+            if property_of(other) == property_of(shown):
+                names = {mistake.name for mistake in other.candidates or ()}
+        except StudentFault as exc:
+            if isinstance(exc, (StudentTimeout, WorkerCrash)) or getattr(exc, "not_implemented", False):
+                raise  # fatal, as everywhere: the grading of the submission stops there
+        kept = tuple(mistake for mistake in shown.candidates if mistake.name in names)
+        if len(kept) == len(shown.candidates):
+            raise
+        if not kept:
+            compare(False)
+            raise  # the comparison without its catalogue passed: the failure shown stands as it was
+        hint, diagnosis = diagnose(kept)
+        raise CheckFailure(shown.message, hint, diagnosis, kept, shown.evidence) from None
+
+
+def property_of(failure: CheckFailure) -> str:
+    """What a failure is about: the first line of its message without the numbers and spaces in it (a comparison's
+    name often shows its input, as in ``walker_ode at y = [...]``)."""
+    import re
+
+    return "".join(re.sub(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?", "#", failure.message.partition("\n")[0]).split())
 
 
 def _holds(name: str, failure, mistakes: list, expected, tol: Tol) -> bool:

@@ -25,6 +25,7 @@ from .checking import (
     assert_close,
     at_sheet_digits,
     diagnose,
+    property_of,
     random_input,
 )
 from .diagnosis import doubt, explain, judge, symptom, prepare_call, prepared, recording, remember_run, trace
@@ -390,10 +391,10 @@ class Context:
             return failure
         if failure.evidence is None:
             return self._told_beside(failure, failures)
-        first = _property(shown)
+        first = property_of(shown)
         others = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
                   if exc is not shown and isinstance(exc, CheckFailure) and exc.evidence is not None
-                  and _property(exc) == first]
+                  and property_of(exc) == first]
         if failure.evidence is None or not others:
             return CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates,
                                 failure.evidence, explained=True)
@@ -407,7 +408,7 @@ class Context:
         compared = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
                     if exc is not failure and isinstance(exc, CheckFailure) and exc.evidence is not None
                     and not exc.diagnosis]
-        alike = [exc for exc in compared if compared and _property(exc) == _property(compared[0])]
+        alike = [exc for exc in compared if compared and property_of(exc) == property_of(compared[0])]
         finding = None
         if len(alike) > 1:
             finding = explained(self, alike[0], [alike[0].evidence, alike[1].evidence])
@@ -626,20 +627,12 @@ def _narrowed(shown, other):
         return shown
     if shown.candidates is None or other.candidates is None:
         return shown
-    if "".join(_property(shown).split()) != "".join(_property(other).split()):
+    if property_of(shown) != property_of(other):
         return shown
     names = {mistake.name for mistake in other.candidates}
     common = tuple(mistake for mistake in shown.candidates if mistake.name in names)
     hint, diagnosis = diagnose(common)
     return CheckFailure(shown.message, hint, diagnosis, common, shown.evidence)
-
-
-def _property(failure: CheckFailure) -> str:
-    """The property a failure is about: the first line of its message without the numbers in it (a comparison's
-    name often shows its input, as in ``walker_ode at y = [...]``)."""
-    import re
-
-    return re.sub(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?", "#", failure.message.partition("\n")[0])
 
 
 def explained(ctx, failure: CheckFailure, evidences=None) -> CheckFailure:
