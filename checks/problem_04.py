@@ -12,21 +12,26 @@ ground), and its acceleration at rest along that motion must be the reference's 
 independent of MuJoCo) and vanish in the student's balanced configuration.
 """
 
+import itertools
+
 import numpy as np
 
 from grader import strategies as st
 from grader.strategies import assume
+from grader.errors import StudentFault
 from grader.checking import (
     STAGE_DEFINED,
     STAGE_RANDOM,
     STAGE_STRUCTURE,
     STAGE_VALUES,
     EXACT,
+    CheckFailure,
     Mistake,
     Tol,
     as_array,
     assert_close,
     check,
+    close,
     fail,
     figure,
 )
@@ -347,19 +352,30 @@ def check_model_structure(ctx):
         _assert_structure(ctx, point)
 
 
+STRAIGHT_HINT = ("Build the model in the configuration q: rotate each link's body by its joint angle (euler=\"0 0 q_i\" "
+                 "with <compiler angle=\"radian\"/>).")
+#: the links a model built straight leaves unturned (their joint angles left out of their bodies' orientations):
+#: any one of them, or several
+UNTURNED = [links for n in (1, 2, 3) for links in itertools.combinations(range(3), n)]
+
+
+def _configuration(ctx, point):
+    """``(q, what)``: the configuration the reference assembles at ``point``, and the model's call in words."""
+    q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, point)["q"]
+    return q, f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()}, fixed_point = ({point[0]:g}, {point[1]:g}, 0))"
+
+
 def _assert_structure(ctx, point):
     """The model of a configuration the reference assembles at ``point``: its hinges where the joints of q are,
     and one connect that holds the end of link 3 at ``point``."""
-    q = ctx.reference(p04.assemble, DYNAMICS_TARGETS, point)["q"]
-    what = f"four_bar(950, 9.81, q = {np.round(q, 6).tolist()}, fixed_point = ({point[0]:g}, {point[1]:g}, 0))"
+    q, what = _configuration(ctx, point)
     desc = _model(ctx, q, what, point)
     joints = hinges(desc, 3, what)
     points = loop_points(q)
     for k, joint in enumerate(joints):
+        straight = None if close(joint["anchor"][:2], points[k], POSITION) else _straight(ctx, desc, q, point)
         assert_close(joint["anchor"][:2], points[k], f"the position of joint {k + 1} in {what}", POSITION,
-                     mistakes=[Mistake("built_straight", [k * LENGTH, 0.0], "Build the model in the configuration q: "
-                                       "rotate each link's body by its joint angle (euler=\"0 0 q_i\" with "
-                                       "<compiler angle=\"radian\"/>).")])
+                     mistakes=[] if straight is None else [Mistake("built_straight", straight[k], STRAIGHT_HINT)])
         assert_close(joint["axis"], [0.0, 0.0, 1.0], f"the axis of joint {k + 1} in {what}", DIRECTION)
     connects = [e for e in desc["equalities"] if e["type"] == "connect" and e["active"]]
     if len(connects) != 1 or not connects[0]["to_world"]:
@@ -377,6 +393,40 @@ def _assert_structure(ctx, point):
                       "in the assembled configuration, or join two sites.")
     assert_close(p1, p2, f"the two points the connect joins in {what}", POSITION,
                  context="(the loop closes in the model as written)")
+
+
+def _unturned(desc, q, links=UNTURNED):
+    """``(links, points)``: the first of ``links`` (each a tuple of links) whose model built unturned in the
+    configuration ``q`` gives the student's model ``desc``: every joint where it is, and the point where the connect
+    holds the moving body where the end of link 3 is (``loop_points``); None where none does."""
+    connects = [e for e in desc["equalities"] if e["type"] == "connect" and e["active"] and e.get("to_world")]
+    joints = desc["joints"]
+    if len(connects) != 1 or connects[0].get("point1") is None or len(joints) != 3:
+        return None
+    mine = np.vstack([np.asarray(p, dtype=float)[:2] for p in [j["anchor"] for j in joints] + [connects[0]["point1"]]])
+    for unturned in links:
+        points = loop_points([0.0 if i in unturned else angle for i, angle in enumerate(np.asarray(q)[:3])])
+        if close(mine, points, POSITION):
+            return unturned, points
+    return None
+
+
+def _straight(ctx, desc, q, point):
+    """The joints and the end of link 3 of the model built with some links unturned, where that model is the
+    student's (``_unturned``) in the configuration ``q`` shown and, with the same links unturned, in the other
+    configuration the check asks (a fixed point on the ground for the sheet's, the sheet's for the other); None
+    otherwise: a model that is nearly straight, or straight in one configuration by its angles' chance (angles
+    cast to whole numbers), is no model built straight."""
+    found = _unturned(desc, q)
+    if found is None:
+        return None
+    other = GROUND_POINT if tuple(point) == FIXED_POINT else FIXED_POINT
+    q_other, what = _configuration(ctx, other)
+    try:
+        again = _unturned(_model(ctx, q_other, what, other), q_other, [found[0]])
+    except (CheckFailure, StudentFault):
+        return None
+    return found[1] if again is not None else None
 
 
 @check(2, title="four_bar(...): released at rest in an unbalanced configuration, MuJoCo's acceleration along the "

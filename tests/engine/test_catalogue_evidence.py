@@ -6,13 +6,22 @@ student's answer, not where a property of the answer that the slip would give ha
   configuration).  Planted: a value in body coordinates that equals the inertial one at the angle shown only; near
   misses: the inertial value on both inputs keeps its name; a second input that passes, or fails another property,
   or raises, names nothing.
+* On the whole answer (problem 4's model built straight, ``checks.problem_04._straight``): a model whose joints sit
+  where a straight model's would is told ``built_straight`` only where the model built with some links unturned is
+  the student's in every joint and in the point where the loop closes, in the configuration shown and in the
+  other one the check asks.  Planted: link 2 built without its angle (live, and in the kit); near misses: links 1
+  and 2 straight and link 3 turned by another angle (a model nearly straight), and a model straight in one
+  configuration only.
 """
 
 import numpy as np
 import pytest
 
+from checks import problem_04 as c04
 from grader.checking import EXACT, CheckFailure, Mistake, assert_close, confirmed
 from grader.errors import StudentCodeError
+from tests.kit_support import assert_told_alike, warm_slot  # noqa: F401 (fixtures)
+from tests.submissions import Planted
 
 R = np.array([0.5, 0.0, 0.0])
 
@@ -77,3 +86,79 @@ def test_a_second_input_that_passes_fails_another_property_or_raises_names_nothi
     with pytest.raises(CheckFailure) as raised:
         confirmed(_comparison(lambda a: _turn(a) @ R, np.pi / 6), crashes)
     assert raised.value.diagnosis == ""
+
+
+# ------------------------------------------------------------------------------------------ problem 4's model
+
+def _model(q):
+    """The description of a four-bar model with link i turned by ``q[i]`` (what ``_unturned`` reads of it)."""
+    points = c04.loop_points(q)
+    return {"joints": [{"anchor": np.r_[p, 0.0]} for p in points[:3]],
+            "equalities": [{"type": "connect", "active": True, "to_world": True, "point1": np.r_[points[3], 0.0],
+                            "point2": np.r_[points[3], 0.0]}]}
+
+
+class _Child:
+    """A sandboxed child's stand-in (``student_once`` keeps its calls by child)."""
+
+
+class _Ctx:
+    """The reference's assemblies and the student's models, by fixed point (``student(q)``: the student's angles
+    in the configuration ``q``), as ``_straight`` asks them."""
+
+    def __init__(self, student):
+        from reference import problem_04 as ref
+
+        self.ref, self.student_angles, self.calls, self.child = ref, student, [], _Child()
+
+    def reference(self, probe, *args, **kwargs):
+        return {"q": self.ref.assemble(*args)}
+
+    def student(self, probe, density, gravity, q, point, timeout=None):
+        return {"gravity": gravity, **_model(self.student_angles(np.asarray(q, dtype=float), point))}
+
+
+def _straight(student):
+    q = _q()
+    return c04._straight(_Ctx(student), _model(student(q, c04.FIXED_POINT)), q, c04.FIXED_POINT)
+
+
+def _unturned(links, q):
+    return [0.0 if i in links else angle for i, angle in enumerate(q[:3])]
+
+
+def _q():
+    from reference import problem_04 as ref
+
+    return np.asarray(ref.assemble(c04.DYNAMICS_TARGETS, c04.FIXED_POINT))
+
+
+def test_a_link_built_without_its_angle_is_a_model_built_straight():
+    points = _straight(lambda q, point: _unturned((1,), q))
+    assert points is not None and np.allclose(points, c04.loop_points(_unturned((1,), _q())))
+
+
+def test_a_model_nearly_straight_or_straight_in_one_configuration_is_not():
+    """Links 1 and 2 unturned and link 3 turned by its angle rounded to a tenth: every joint where a straight model
+    has it, the end of link 3 not; link 2 unturned at the sheet's fixed point only."""
+    assert _straight(lambda q, point: [0.0, 0.0, np.round(q[2], 1)]) is None
+    assert _straight(lambda q, point: _unturned((1,), q) if point == c04.FIXED_POINT else q[:3]) is None
+
+
+#: problem 4's model with link 2 built without its joint angle: a model built straight in part, told so live and in
+#: the kit (the second configuration's calls are in the key)
+LINK2_UNTURNED = Planted(
+    name="evidence-p04-link2-unturned", problem=4, file="problem_04.py",
+    old="link2 = link_body(2, density, pos=LENGTH, angle=q[1], children=link3)",
+    new="link2 = link_body(2, density, pos=LENGTH, children=link3)",
+    check="p04.model_structure", diagnosis="built_straight", message="rotate each link's body by its joint angle",
+    also=("p04.model_dynamics", "p04.model_at_rest"))
+
+
+@pytest.fixture(scope="module")
+def slot():
+    yield from warm_slot([4])
+
+
+def test_a_link_built_without_its_angle_is_told_live_and_in_the_kit(tmp_path, kit_oracle, deferred_ids, slot):
+    assert_told_alike(LINK2_UNTURNED, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
