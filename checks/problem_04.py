@@ -444,14 +444,32 @@ def check_model_dynamics(ctx):
 OTHER_DENSITY, OTHER_GRAVITY = ALUMINIUM, MOON
 
 
+def _gravity_slips(desc, gravity):
+    """The known mistakes of the model's gravity that leave nothing to accelerate the linkage, each where the model's
+    gravity is the slip's (a linkage at rest is no evidence of which): none at all, or the given one along z, out of
+    the plane of the motion (MuJoCo's default axis)."""
+    try:
+        mine = np.asarray(desc["gravity"], dtype=float)
+    except (KeyError, TypeError, ValueError):
+        return []
+    if mine.shape != (3,):
+        return []
+    if close(mine, np.zeros(3), EXACT):
+        return [Mistake("missing_gravity", 0.0, "Nothing accelerates the linkage: the model has no gravity; it must "
+                        "be (0, -g, 0), in the plane of the motion.")]
+    if close(np.abs(mine), [0.0, 0.0, gravity], EXACT):
+        return [Mistake("gravity_axis", 0.0, "Nothing accelerates the linkage: your gravity points along z, out of "
+                        "the plane of the motion (MuJoCo's default axis); it must be (0, -g, 0).")]
+    return []
+
+
 def _assert_alpha(ctx, q, density, gravity):
     """The acceleration along the linkage's motion of the model of ``density`` under ``gravity`` is the
     reference's; returns the student's model description and what it is called."""
     expected = ctx.reference(p04.tangent_acceleration, q, density, gravity)
     what = f"four_bar({density:g}, {gravity:g}, q = {np.round(q, 6).tolist()})"
     desc = _model(ctx, q, what, density=density, gravity=gravity)
-    mistakes = [Mistake("missing_gravity", 0.0, "Nothing accelerates the linkage: gravity must be (0, -g, 0), in "
-                        "the plane of the motion.")]
+    mistakes = _gravity_slips(desc, gravity)
     if gravity != EARTH:
         sheet = ctx.reference(p04.tangent_acceleration, q, density, EARTH)["alpha"]
         mistakes.append(Mistake("ignored_argument", sheet, "The model's gravity is the Earth's 9.81 whatever gravity "

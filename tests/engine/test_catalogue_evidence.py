@@ -12,6 +12,10 @@ student's answer, not where a property of the answer that the slip would give ha
   other one the check asks.  Planted: link 2 built without its angle (live, and in the kit); near misses: links 1
   and 2 straight and link 3 turned by another angle (a model nearly straight), and a model straight in one
   configuration only.
+* A linkage at rest is no evidence of which gravity is missing (problem 4's ``_gravity_slips``): its acceleration
+  vanishes with no gravity and with gravity out of the plane alike, so each is told only where the model's gravity
+  is the slip's.  Planted: gravity along z (``gravity_axis``, ``tests/planted/problem_04.toml`` grades it live);
+  near misses: gravity along x, or of another size, names neither.
 """
 
 import numpy as np
@@ -143,6 +147,15 @@ def test_a_model_nearly_straight_or_straight_in_one_configuration_is_not():
     has it, the end of link 3 not; link 2 unturned at the sheet's fixed point only."""
     assert _straight(lambda q, point: [0.0, 0.0, np.round(q[2], 1)]) is None
     assert _straight(lambda q, point: _unturned((1,), q) if point == c04.FIXED_POINT else q[:3]) is None
+
+
+def test_a_linkage_at_rest_is_told_the_gravity_its_model_has():
+    def told(gravity):
+        return [m.name for m in c04._gravity_slips({"gravity": np.asarray(gravity, dtype=float)}, 9.81)]
+
+    assert told([0.0, 0.0, 0.0]) == ["missing_gravity"]
+    assert told([0.0, 0.0, -9.81]) == ["gravity_axis"]
+    assert told([-9.81, 0.0, 0.0]) == [] and told([0.0, 0.0, -1.62]) == [] and told([0.0, -9.81, 0.0]) == []
 
 
 #: problem 4's model with link 2 built without its joint angle: a model built straight in part, told so live and in
