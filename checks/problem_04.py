@@ -352,8 +352,8 @@ def check_model_structure(ctx):
         _assert_structure(ctx, point)
 
 
-STRAIGHT_HINT = ("Build the model in the configuration q: rotate each link's body by its joint angle (euler=\"0 0 q_i\" "
-                 "with <compiler angle=\"radian\"/>).")
+STRAIGHT_HINT = ("Build the model in the configuration q: rotate each link's body by its joint angle "
+                 "(euler=\"0 0 q_i\" with <compiler angle=\"radian\"/>).")
 #: the links a model built straight leaves unturned (their joint angles left out of their bodies' orientations):
 #: any one of them, or several
 UNTURNED = [links for n in (1, 2, 3) for links in itertools.combinations(range(3), n)]
