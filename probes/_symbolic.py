@@ -10,13 +10,18 @@ order where each comes after its operands, evaluated by numpy's functions on the
 are those of sympy's function up to the rounding of the order of sums and products.  An expression with anything
 else than numbers, the arguments' symbols, sums, products, powers and the common functions of one or two arguments
 (a piecewise expression, an unknown symbol, a matrix inside a product), or a result that is neither an expression
-nor a matrix, is given to sympy's ``lambdify``."""
+nor a matrix, is given to sympy's ``lambdify``.
+
+An answer whose symbols may carry assumptions (``real=True``, ``positive=True``) is read by the names of its symbols
+(``named``): sympy's ``lambdify`` of the expression with every symbol replaced by the plain symbol of its name.  The
+replacing (``subs``) walks and rebuilds every subexpression, and of an unsimplified answer costs more than the
+reading itself; within ``quick()`` the reading matches the symbols by name instead, which gives the same values."""
 
 import contextlib
 
 from . import Flag
 
-__all__ = ["lambdify", "quick"]
+__all__ = ["lambdify", "named", "quick"]
 
 _QUICK = Flag()
 
@@ -48,17 +53,36 @@ def lambdify(args, expr, modules="numpy"):
     return sp.lambdify(args, expr, modules)
 
 
+def named(names, expr, modules="numpy"):
+    """A function of the values of the symbols named ``names`` (in that order) that evaluates ``expr``, each of
+    whose symbols is read as the plain symbol of its name: ``lambdify`` of ``expr.subs({s: Symbol(str(s))})`` in
+    the plain symbols of ``names``; within ``quick()``, a reading of ``expr`` itself that matches its symbols by
+    name (see the module's docstring)."""
+    import sympy as sp
+
+    names = [str(n) for n in names]
+    if _QUICK.on:
+        try:
+            return _read(names, expr)
+        except _Unknown:
+            pass
+    plain = expr.subs({s: sp.Symbol(str(s)) for s in expr.free_symbols})
+    return sp.lambdify([sp.Symbol(n) for n in names], plain, modules)
+
+
 class _Unknown(Exception):
     """Something the quick reading does not evaluate."""
 
 
 def _read(args, expr):
     """A function of ``args``' values that evaluates ``expr`` (an expression or a matrix) as sympy's ``lambdify``
-    does, by one pass over a program of its distinct subexpressions."""
+    does, by one pass over a program of its distinct subexpressions; ``args`` given as names (strings): every
+    symbol of ``expr`` is the argument of its name, whatever its assumptions."""
     import numpy as np
     import sympy as sp
 
-    if not all(isinstance(a, sp.Symbol) for a in args):
+    by_name = all(isinstance(a, str) for a in args)
+    if not by_name and not all(isinstance(a, sp.Symbol) for a in args):
         raise _Unknown
     if isinstance(expr, sp.MatrixBase):
         shape, entries = expr.shape, list(expr)
@@ -72,8 +96,9 @@ def _read(args, expr):
     def visit(node):
         if node in index:
             return index[node]
-        if node in positions:
-            step = ("arg", positions[node], ())
+        key = node.name if by_name and node.is_Symbol else node
+        if key in positions:
+            step = ("arg", positions[key], ())
         elif node.is_Number or node.is_NumberSymbol:
             try:
                 step = ("const", float(node), ())

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
-from ._symbolic import lambdify
+from ._symbolic import named
 
 #: the symbols the answer may use
 NAMES = ("q1", "q2", "dq1", "dq2", "l1", "l2", "m1", "m2", "g")
@@ -34,8 +34,6 @@ def _answer(pkg):
 def _functions(pkg):
     """``{"M", "f", "g"}`` as numeric functions of ``NAMES``, or ``{"problem": text}`` (lambdified once per answer:
     a call of ``evaluate`` is then only the arithmetic)."""
-    import sympy as sp
-
     answer = _answer(pkg)
     for key, matrix in answer.items():
         if matrix.shape not in (SHAPES[key], (SHAPES[key][0], 1), (1, SHAPES[key][0])) or (
@@ -44,10 +42,8 @@ def _functions(pkg):
         unknown = sorted({str(s) for s in matrix.free_symbols} - set(NAMES))
         if unknown:
             return {"problem": f"{key} uses the symbols {unknown}, which are not among {list(NAMES)}"}
-    return remembered(_ANSWERS, ("functions", id(answer)), lambda: {
-        key: lambdify([sp.Symbol(name) for name in NAMES],
-                         matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}), "numpy")
-        for key, matrix in answer.items()})
+    return remembered(_ANSWERS, ("functions", id(answer)),
+                      lambda: {key: named(NAMES, matrix, "numpy") for key, matrix in answer.items()})
 
 
 @probe(

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import module, probe, remembered
 from ._forms import Arr, Dict, Either, Seq, Text
-from ._symbolic import lambdify
+from ._symbolic import named
 
 #: the symbols the answers may use
 NAMES = ("s", "l", "d", "m", "theta", "phid")
@@ -49,14 +49,10 @@ def evaluate(pkg, key, points):
     """``[value at every point {symbol name: value}]`` of the answer ``key`` (``"J"``: ``impact_jacobian()``,
     ``"Lam"``: ``impulses()``, ``"s_limit"``: ``opening_limit()``); or ``{"problem": text}`` if it has the wrong
     shape or uses symbols outside ``NAMES``."""
-    import sympy as sp
-
     matrix = _answer(pkg, key)
     problem = _problem(key, matrix)
     if problem:
         return {"problem": problem}
-    function = remembered(_ANSWERS, ("function", pkg.__name__, id(matrix)), lambda: lambdify(
-        [sp.Symbol(name) for name in NAMES], matrix.subs({s: sp.Symbol(str(s)) for s in matrix.free_symbols}),
-        "numpy"))
+    function = remembered(_ANSWERS, ("function", pkg.__name__, id(matrix)), lambda: named(NAMES, matrix, "numpy"))
     return [np.array(function(*(float(point[name]) for name in NAMES)), dtype=float).reshape(SHAPES[key])
             for point in points]

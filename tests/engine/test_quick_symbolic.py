@@ -1,7 +1,8 @@
 """The formula tier screens a symbolic answer's mutants cheaply: without sympy's simplifications, and with the
 expressions read by ``probes._symbolic.quick`` rather than compiled by sympy's ``lambdify``.
 
-* The quick reading gives sympy's values (up to rounding) and hands what it does not know to sympy.
+* The quick reading gives sympy's values (up to rounding) and hands what it does not know to sympy; an answer read
+  by its symbols' names gives the values of its symbols replaced by plain ones, without the replacing.
 * A simplifier's call is replaced by what it simplifies, a simplifier passed as a value by the identity; a call
   that may be no sympy's is left as it is.
 * Problem 40's mutants, screened so, give the values they give as they are.
@@ -15,7 +16,7 @@ import pytest
 import sympy as sp
 
 from grader.diagnosis import mutants
-from probes._symbolic import lambdify, quick
+from probes._symbolic import lambdify, named, quick
 
 x, y = sp.symbols("x y", real=True)
 
@@ -38,6 +39,25 @@ def test_what_the_quick_reading_does_not_know_is_sympys():
         function = lambdify([x, y], piecewise, "numpy")
     assert "lambdifygenerated" in function.__code__.co_filename
     assert function(-1.0, 2.0) == -2.0
+
+
+def test_an_answer_read_by_its_symbols_names_is_the_plain_answers():
+    plain_x = sp.Symbol("x")
+    length = sp.Symbol("l", positive=True)
+    matrix = sp.Matrix([x * plain_x + length * sp.sin(y), sp.cos(x) - plain_x ** 2 / length])
+    expected = named(("x", "y", "l"), matrix)
+    assert "lambdifygenerated" in expected.__code__.co_filename
+    with quick():
+        read = named(("x", "y", "l"), matrix)
+        unknown = named(("x", "l"), matrix)  # y is no argument: sympy's lambdify, whose function cannot use it
+    assert "lambdifygenerated" not in read.__code__.co_filename
+    for point in ((0.7, -1.3, 2.0), (2.5, 0.4, 0.3)):
+        assert np.allclose(read(*point), expected(*point), rtol=1e-13, atol=1e-13)
+        a, b, c = point
+        assert np.allclose(np.ravel(read(*point)), [a * a + c * np.sin(b), np.cos(a) - a * a / c], rtol=1e-13)
+    assert "lambdifygenerated" in unknown.__code__.co_filename
+    with pytest.raises(TypeError):
+        unknown(0.7, 2.0)
 
 
 SOURCE = textwrap.dedent('''
