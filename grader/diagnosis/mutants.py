@@ -30,8 +30,11 @@ where it is the same on every input), a sum that keeps only its last term, a cou
 a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a
 name of the function or an attribute of the reference, related by the course's notation), a quantity read in
 another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied to one term only (``A @ x + y`` for
-``A @ (x + y)``), one entry of a list with the wrong sign, a ratio upside down (``m / 12`` for ``12 / m``), two
-neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's
+``A @ (x + y)``), one entry of a list with the wrong sign (a term written with a plus given a minus: ``-C / 2`` for
+``+C / 2``), a value that the object keeps added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``,
+outside a constructor: a term added), one factor of a product inverted where the product's inverse belongs
+(``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no inverse), a ratio upside down (``m / 12``
+for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's
 state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a
 pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``), a
 position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or
@@ -45,9 +48,10 @@ another of its kind: an angle where another angle belongs (``np.cos(beta)`` for 
 or passes where a function of the reference reads its parameter so), and a parameter read as the constant or the
 number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
 ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at
-one read or at all of them: the argument ignored.  The reads of names come after every other slip of every function,
-as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the slips of
-precision
+one read or at all of them: the argument ignored; and an entry written into a neighbouring index (``a[0] = ...`` for
+``a[1] = ...``: a wrong index).  The reads of names and the indices written come after every other slip of every
+function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
+slips of precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to
@@ -421,6 +425,10 @@ SLIPS = {
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
     "rotated": ("wrong_frame", "a rotation in `{f}` is applied to one term of a sum only, not the whole sum"),
     "entry_sign": ("sign_flip", "one entry that `{f}` builds has the wrong sign"),
+    "written_index": ("wrong_index", "`{f}` writes an entry into a neighbouring index (row or column)"),
+    "kept_adding": ("extra_term", "`{f}` adds a new value to the one its object keeps where it should replace it"),
+    "one_inverted": ("no_inverse", "`{f}` inverts one factor of a product where the whole product's inverse "
+                                   "belongs ((A B)^-1 is B^-1 A^-1)"),
     "zeroed": ("missing_term", "one entry of a matrix or vector that `{f}` builds is left out (written 0)"),
     "ratio": ("ratio_inverted", "a ratio in `{f}` is upside down"),
     "neighbours": ("factor_order", "two neighbouring factors of a product in `{f}` are multiplied in the wrong "
@@ -618,6 +626,8 @@ def _slips(node, parent):
             yield "accumulated", _assigned
     elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
         yield "sign", lambda n: n.operand
+    elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.UAdd):  # ``+C / 2`` written ``-C / 2``
+        yield "sign", lambda n: _with(n, op=ast.USub())
     elif isinstance(node, ast.Call):
         yield from _call_slips(node)
     elif isinstance(node, ast.Attribute) and node.attr == "T" and isinstance(node.ctx, ast.Load):
@@ -643,6 +653,11 @@ def _slips(node, parent):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
+    elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Store):  # ``a[0] = ...`` for ``a[1] = ...``
+        for _, edit in _index_slips(node):
+            yield "written_index", edit
+    if isinstance(node, ast.Assign) and _stored(node):  # ``self.r = r`` as ``self.r = self.r + r``
+        yield "kept_adding", lambda n: _with(n, value=ast.BinOp(_loaded(n.targets[0]), ast.Add(), n.value))
     if isinstance(node, ast.Return):
         for k in _returned_names(node):  # ``np.array([x, y, gamma])`` with gamma in degrees
             yield "returned_degrees", lambda n, k=k: _in_degrees(n, k)
@@ -807,6 +822,23 @@ def _trig_read_slips(node, parent, others: dict):
     a time (``-q3 * c2`` for ``-q3 * s2``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in others:
         yield "trig", lambda n, other=others[node.id]: copy.deepcopy(other)
+
+
+def _product(node) -> bool:
+    """A product of two matrices (``A @ B``)."""
+    return isinstance(node, ast.BinOp) and isinstance(node.op, ast.MatMult)
+
+
+def _stored(node: ast.Assign) -> bool:
+    """An attribute of the object a method is called on set (``self.r = ...``), outside its constructor: a value
+    the object keeps from call to call, replaced."""
+    target = node.targets[0]
+    return len(node.targets) == 1 and isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) \
+        and target.value.id == "self"
+
+
+def _loaded(target: ast.Attribute):
+    return ast.Attribute(ast.Name(target.value.id, ast.Load()), target.attr, ast.Load())
 
 
 def _assigned(node: ast.AugAssign):
@@ -1170,6 +1202,12 @@ def _call_slips(node: ast.Call):
         yield "count", lambda n: ast.Call(ast.Name("len", ast.Load()), [_summed(n)], [])
     if callee == "solve" and len(args) == 2 and not node.keywords:
         yield "solved", lambda n: ast.BinOp(n.args[0], ast.MatMult(), n.args[1])
+    if callee == "solve" and len(args) == 2 and not node.keywords and _product(args[0]):
+        # ``inv(A) @ B @ b`` (or ``inv(B) @ A @ b``) for ``solve(A @ B, b)``: one factor of the product inverted
+        yield "one_inverted", lambda n: _with(n, args=[n.args[0].left, ast.BinOp(n.args[0].right, ast.MatMult(),
+                                                                                   n.args[1])])
+        yield "one_inverted", lambda n: _with(n, args=[n.args[0].right, ast.BinOp(n.args[0].left, ast.MatMult(),
+                                                                                    n.args[1])])
     if callee == "solve" and len(args) == 2 and not node.keywords:  # ``b / np.diag(M)``
         yield "diagonal", lambda n: ast.BinOp(_diagonal_inverse(n.args[0]), ast.MatMult(), n.args[1])
     if callee == "inv" and len(args) == 1:
@@ -1473,6 +1511,8 @@ def _mutated(function: _Function, lines: tuple):
         for slip, edit in slips:
             if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
                 continue
+            if slip == "kept_adding" and function.node.name == "__init__":
+                continue  # a constructor sets what its object keeps for the first time
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
@@ -1856,7 +1896,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
-LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled", "typed"})
+LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled", "typed",
+                        "written_index"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

@@ -537,6 +537,42 @@ def arm_reach(q, d):
     # BEGIN SOLUTION problem 98
     return np.array([-d * np.sin(q), d * np.cos(q), q + d])
     # END SOLUTION
+
+
+def harmonics(c):
+    """The coefficients of two harmonics (columns) of three coordinates (rows), two of them moving."""
+    # BEGIN SOLUTION problem 98
+    table = np.zeros((3, 2))
+    table[1] = [c, 0.5 * c]
+    table[2] = [-c / 4, +c / 2]
+    return table
+    # END SOLUTION
+
+
+class Offset:
+    """An offset that its owner sets anew."""
+
+    def __init__(self, r):
+        self.r = np.asarray(r, dtype=float)
+
+    def set(self, r):
+        # BEGIN SOLUTION problem 98
+        self.r = np.asarray(r, dtype=float)
+        # END SOLUTION
+
+
+def moved(a, b):
+    """An offset made at ``a``, then set to ``b``."""
+    offset = Offset(a)
+    offset.set(b)
+    return offset.r
+
+
+def step_rates(A, B, w):
+    """The rates ``x`` of ``A B x = w``."""
+    # BEGIN SOLUTION problem 98
+    return np.linalg.solve(A @ B, w)
+    # END SOLUTION
 '''
 
 
@@ -1232,3 +1268,52 @@ def test_the_second_term_of_a_difference_alone_with_its_minus_is_not_the_first_l
                      "return as_matrix(I_G) + m * ((r @ r) * np.eye(3) - np.outer(r, r))",
                      "return as_matrix(I_G) - m * np.outer(r, r)", "problem_19.parallel_axis", STEINER)
     assert not any("the first term of a difference" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_a_term_written_with_a_plus_given_a_minus_is_a_sign_slip(made_up):
+    """``-c / 2`` where ``+c / 2`` is written: a sign slip; ``-c`` there (a sign and a factor) names no sign."""
+    inputs = [(0.8,), (-1.3,)]
+
+    def minus(c):
+        return np.array([[0.0, 0.0], [c, 0.5 * c], [-c / 4, -c / 2]])
+
+    names, found = names_of(made_up, "harmonics", minus, inputs)
+    assert names == {"sign_flip"}, [(h.name, h.detail) for h in found]
+    near = names_of(made_up, "harmonics", lambda c: np.array([[0.0, 0.0], [c, 0.5 * c], [-c / 4, -c]]), inputs)
+    assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_an_entry_written_into_a_neighbouring_row_is_a_wrong_index(made_up):
+    """A row of a table written into the row before its own: an entry at a neighbouring index (a state read from
+    the wrong row's family); the row written into its neighbour with one entry changed as well names nothing."""
+    inputs = [(0.8,), (-1.3,)]
+    names, found = names_of(made_up, "harmonics", lambda c: np.array([[c, 0.5 * c], [0.0, 0.0], [-c / 4, c / 2]]),
+                            inputs)
+    assert names == {"wrong_index"}, [(h.name, h.detail) for h in found]
+    assert any("`harmonics` writes an entry into a neighbouring index" in h.detail for h in found)
+    near = names_of(made_up, "harmonics", lambda c: np.array([[c, c], [0.0, 0.0], [-c / 4, c / 2]]), inputs)
+    assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_a_value_an_object_keeps_added_to_where_it_is_replaced_is_an_extra_term(made_up):
+    """``self.r = self.r + r`` where ``self.r = r`` belongs: the old offset kept and the new one added (an extra
+    term); the new one subtracted from the old (two slips) names nothing."""
+    inputs = [(V(0.3, -0.2, 0.5), V(1.0, 0.4, -0.7)), (V(-0.6, 0.1, 0.4), V(0.2, 0.9, 0.3))]
+    names, found = names_of(made_up, "moved", lambda a, b: a + b, inputs)
+    assert names == {"extra_term"}, [(h.name, h.detail) for h in found]
+    assert any("`set` adds a new value to the one its object keeps" in h.detail for h in found)
+    near = names_of(made_up, "moved", lambda a, b: a - b, inputs)
+    assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_one_factor_of_a_product_inverted_where_the_products_inverse_belongs(made_up):
+    """``inv(A) @ B @ w`` where ``solve(A @ B, w)`` belongs: one factor inverted, the other multiplied (a matrix
+    used where its inverse belongs); with ``B`` transposed as well (two slips) nothing is named."""
+    lopsided = SPD + np.array([[0.0, 0.6, 0.0], [0.0, 0.0, 0.0], [-0.3, 0.0, 0.0]])
+    inputs = [(ROTATIONS[0], lopsided, V(0.3, -1.0, 0.5)), (ROTATIONS[1], 1.5 * lopsided, V(1.0, 0.4, -0.7))]
+    names, found = names_of(made_up, "step_rates", lambda A, B, w: np.linalg.inv(A) @ B @ w, inputs)
+    assert names == {"no_inverse"}, [(h.name, h.detail) for h in found]
+    assert any("inverts one factor of a product where the whole product's inverse belongs" in h.detail
+               for h in found)
+    near = names_of(made_up, "step_rates", lambda A, B, w: np.linalg.inv(A) @ B.T @ w, inputs)
+    assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
