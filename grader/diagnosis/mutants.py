@@ -15,7 +15,8 @@ nothing else reproduced it, the module constants that the call reads, of the pro
 (the modules of no problem), directly, through a function's default or a constant computed from them, are typed
 otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
 or a tenth or a thousandth of itself (a decimal point misplaced, another unit), in degrees where radians belong or
-the reverse, its square root or its square; an entry of one of its lists written 0, two entries exchanged; two
+the reverse, its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
+matrix written out row by row transposed; two
 constants of one module exchanged), each measured with the constants, defaults and imported names its module
 computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
@@ -23,8 +24,9 @@ Each mutant changes one place of one function's solution region (``SLIPS``: a te
 missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
 ``*``, a square or a square root missing or added, sin for cos (in one call, throughout one expression, or in one
 read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a
-transpose or one on the wrong factor, a neighbouring index, two names exchanged (throughout, or two of a kind in one
-expression), a solve or an inverse left out or made with the matrix's diagonal alone
+transpose or one on the wrong factor (or a matrix written out row by row, transposed), a neighbouring index, two
+names exchanged (throughout, or two of a kind in one expression), a solve or an inverse left out or made with the
+matrix's diagonal alone
 (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside an offset
 where it is the same on every input), a sum that keeps only its last term, a count for a sum,
 a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a
@@ -34,7 +36,8 @@ another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied
 ``+C / 2``), a value that the object keeps added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``,
 outside a constructor: a term added), one factor of a product inverted where the product's inverse belongs
 (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no inverse), a ratio upside down (``m / 12``
-for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's
+for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the
+halves of a run's
 state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a
 pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``), a
 position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or
@@ -473,6 +476,8 @@ SLIPS = {
     "constant_square": ("wrong_factor", "a number of the constant `{f}` is the square of the one that belongs"),
     "constant_entries": ("swapped", "two entries of the constant `{f}` are exchanged"),
     "constant_zeroed": ("missing_term", "an entry of the constant `{f}` is left out (written 0)"),
+    "constant_transposed": ("transpose", "a matrix of the constant `{f}` is written transposed (its rows as "
+                                         "columns)"),
     "constants": ("swapped", "the constants `{f}` are exchanged"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
@@ -649,6 +654,8 @@ def _slips(node, parent):
             yield "inverse", lambda n: _with(n, elts=[e.right for e in n.elts])
         if isinstance(node.ctx, ast.Load) and _halves(node.elts):  # ``y[:3], y[3:]`` as ``y[::2], y[1::2]``
             yield "interleaved", _interleaved
+        if isinstance(node.ctx, ast.Load) and _written_out(node):  # ``[[c, s], [-s, c]]`` for [[c, -s], [s, c]]
+            yield "transpose", _literal_transposed
     elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
@@ -822,6 +829,20 @@ def _trig_read_slips(node, parent, others: dict):
     a time (``-q3 * c2`` for ``-q3 * s2``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in others:
         yield "trig", lambda n, other=others[node.id]: copy.deepcopy(other)
+
+
+def _written_out(node) -> bool:
+    """A matrix written out row by row: a list or tuple of two to four lists or tuples of as many entries."""
+    return isinstance(node, (ast.List, ast.Tuple)) and 2 <= len(node.elts) <= 4 and all(
+        isinstance(row, (ast.List, ast.Tuple)) and len(row.elts) == len(node.elts)
+        and not any(isinstance(e, ast.Starred) for e in row.elts) for row in node.elts)
+
+
+def _literal_transposed(node):
+    """The matrix written out (``_written_out``) with its rows as columns."""
+    rows = [row.elts for row in node.elts]
+    return _with(node, elts=[_with(node.elts[j], elts=[rows[i][j] for i in range(len(rows))])
+                             for j in range(len(rows))])
 
 
 def _product(node) -> bool:
@@ -2604,7 +2625,8 @@ def _value_of(expression, module):
 
 def _number_slips(expression):
     """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``), each entry of
-    a list or tuple of it written 0, and each two entries of one exchanged."""
+    a list or tuple of it written 0, each two entries of one exchanged, and a matrix of it written out row by row
+    (``_written_out``) transposed."""
     for index, node in enumerate(ast.walk(expression)):
         if isinstance(node, ast.Constant) and type(node.value) in (int, float) and node.value != 0:
             for slip, factor in _NUMBER_SLIPS:
@@ -2622,6 +2644,8 @@ def _number_slips(expression):
                 elts = list(node.elts)
                 elts[i], elts[j] = elts[j], elts[i]
                 yield "constant_entries", index, _with(node, elts=elts)
+            if _written_out(node):
+                yield "constant_transposed", index, _literal_transposed(node)
 
 
 def _replaced(expression, index: int, replacement):

@@ -568,6 +568,13 @@ def moved(a, b):
     return offset.r
 
 
+def shear(k, d):
+    """The shear of the plane by ``k`` along its first axis, and by ``d`` of the third along the second."""
+    # BEGIN SOLUTION problem 98
+    return np.array([[1.0, k, 0.0], [0.0, 1.0, d], [0.0, 0.0, 1.0]])
+    # END SOLUTION
+
+
 def step_rates(A, B, w):
     """The rates ``x`` of ``A B x = w``."""
     # BEGIN SOLUTION problem 98
@@ -1316,4 +1323,15 @@ def test_one_factor_of_a_product_inverted_where_the_products_inverse_belongs(mad
     assert any("inverts one factor of a product where the whole product's inverse belongs" in h.detail
                for h in found)
     near = names_of(made_up, "step_rates", lambda A, B, w: np.linalg.inv(A) @ B.T @ w, inputs)
+    assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_a_matrix_written_out_transposed_is_a_transpose(made_up):
+    """A matrix written out row by row with its rows as columns: a transpose (a product with it exchanged or
+    transposed gives the same, but this one is returned); its rows exchanged as well names nothing."""
+    inputs = [(0.4, -1.5), (-1.2, 0.7)]
+    names, found = names_of(made_up, "shear", lambda k, d: np.array([[1.0, 0.0, 0.0], [k, 1.0, 0.0], [0.0, d, 1.0]]),
+                            inputs)
+    assert names == {"transpose"}, [(h.name, h.detail) for h in found]
+    near = names_of(made_up, "shear", lambda k, d: np.array([[k, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, d, 1.0]]), inputs)
     assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
