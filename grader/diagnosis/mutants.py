@@ -101,8 +101,8 @@ reference only (``left_to_live``: the kit then says that the graded submission m
 A symbolic answer costs most in its simplification (``trigsimp`` of problem 40's matrices: a quarter of a second)
 and in sympy's ``lambdify``, neither of which changes its value.  Where a function of the problem simplifies
 (``SIMPLIFIERS``), its mutants are screened on a copy of their code without the simplifications, the answers read
-by ``probes._symbolic.quick`` (a walk of the expression, not generated code), and so is the call that finds the
-functions run; this holds only where the reference's own value, so computed, is the expected one on every input
+by ``probes._symbolic.quick`` (a walk of the expression, not generated code), and so are the call that finds the
+functions run and the slips of the functions the module gives whole (``_given``) that the call reaches; this holds only where the reference's own value, so computed, is the expected one on every input
 (``_holds``), else every mutant is evaluated as it is.  A mutant that reproduces the student's value when screened
 is evaluated again as it is, and that value decides: the screen can only leave out a mutant whose value depends on
 an expression's form.
@@ -2465,21 +2465,24 @@ def late(mutants: list[Mutant], told) -> tuple[list[Mutant], int]:
 
 
 def _given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
-           progress: dict) -> tuple:
+           progress: dict, twins: tuple = ()) -> tuple:
     """``(kept, mutants)`` of the slips of the functions that the problem's own module gives whole (``given``),
     tried where no slip of a solution region reproduced the student's value: the student's file holds them too,
     and a slip there is less likely than in the code the student wrote, so they come after all of it, within a
-    budget of their own (``GIVEN_TIME_BUDGET``; kept None when it runs out)."""
+    budget of their own (``GIVEN_TIME_BUDGET``; kept None when it runs out).  ``twins``: those the regions' slips
+    were screened with (``_twins``, where they hold), with which the call is traced and each of these mutants
+    screened too (a slip of a given function that a simplifying function of a region reads, problem 40's
+    ``particle_positions``, would else pay the simplification for every mutant)."""
     started = time.thread_time()
     first = evidences[0]
     with _Deadline(GIVEN_TIME_BUDGET) as deadline:
-        mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, given=True,
+        mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, given=True,
                              deadline=deadline)
         trace.note("given", count=None if mutants is None else len(mutants),
                    functions=sorted({m.function for m in mutants or ()}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                         progress=progress) if mutants else []
+                         progress=progress, twins=twins) if mutants else []
     return kept, mutants
 
 
@@ -2770,7 +2773,7 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
             if made and mutants == []:
                 kept = []  # no function of a region runs: none of their slips reproduces the value
             if kept == [] and made and told is None and only is None:
-                kept, mutants = _given(package, root, problem, evidences, originals, judged, progress)
+                kept, mutants = _given(package, root, problem, evidences, originals, judged, progress, twins)
             if kept == [] and made and told is None and only is None:
                 kept, mutants = _constant_stage(package, root, problem, evidences, originals, judged, progress)
             if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)

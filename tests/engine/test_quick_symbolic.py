@@ -5,7 +5,8 @@ expressions read by ``probes._symbolic.quick`` rather than compiled by sympy's `
   by its symbols' names gives the values of its symbols replaced by plain ones, without the replacing.
 * A simplifier's call is replaced by what it simplifies, a simplifier passed as a value by the identity; a call
   that may be no sympy's is left as it is.
-* Problem 40's mutants, screened so, give the values they give as they are.
+* Problem 40's mutants, screened so, give the values they give as they are; the slips of the functions its module
+  gives whole (``particle_positions``) are screened as the regions' are.
 """
 
 import ast
@@ -15,7 +16,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from grader.checking import Tol
 from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source, array_of
 from probes._symbolic import lambdify, named, quick
 
 x, y = sp.symbols("x y", real=True)
@@ -112,3 +115,28 @@ def test_problem_40s_mutants_screened_give_their_own_values(problem_40):
     finally:
         holder.__code__ = own
     assert compared >= 3
+
+
+def test_problem_40s_given_functions_are_screened_too(problem_40, monkeypatch):
+    """A value no slip gives (the mass matrix a third larger) runs through the regions' slips and then the given
+    functions' (``particle_positions``, ``symbols``): both screened with the simplifications left out, and nothing
+    is named."""
+    root, package, twins = problem_40
+    names = ("q1", "q2", "dq1", "dq2", "l1", "l2", "m1", "m2", "g")
+    screened, evaluate = [], mutants._evaluate
+
+    def spy(package, found, *args, **keywords):
+        screened.append(({m.function for m in found}, bool(keywords.get("twins"))))
+        return evaluate(package, found, *args, **keywords)
+
+    monkeypatch.setattr(mutants, "_evaluate", spy)
+    evidences = []
+    for values in ((0.3, 0.7, 1.1, -0.4, 1.0, 0.8, 1.5, 0.9, 9.81), (-0.5, 1.2, 0.2, 0.6, 1.3, 0.6, 0.7, 2.0, 9.81)):
+        args = ([dict(zip(names, values))],)
+        expected = array_of(mutants._call(package, "problem_40.evaluate", args, ("M", 0)))
+        evidences.append(Evidence(1.3 * expected, expected, Tol("tight", 1e-9, 1e-9), "M",
+                                  source=Source("problem_40.evaluate", args, ("M", 0))))
+    kept = mutants._kept(40, evidences)
+    assert not kept
+    assert ({"equations_of_motion_symbolic"}, True) in screened, screened
+    assert ({"particle_positions", "symbols"}, True) in screened, screened
