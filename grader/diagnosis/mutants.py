@@ -660,9 +660,6 @@ def _slips(node, parent):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
-    elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Store):  # ``a[0] = ...`` for ``a[1] = ...``
-        for _, edit in _index_slips(node):
-            yield "written_index", edit
     if isinstance(node, ast.Assign) and _stored(node):  # ``self.r = r`` as ``self.r = self.r + r``
         yield "kept_adding", lambda n: _with(n, value=ast.BinOp(_loaded(n.targets[0]), ast.Add(), n.value))
     if isinstance(node, ast.Return):
@@ -1501,6 +1498,14 @@ def _in(node, lines: tuple) -> bool:
     return line is not None and any(first < line < last for first, last in lines)
 
 
+def _written_index_slips(node):
+    """An entry written into a neighbouring index, ``a[0] = ...`` for ``a[1] = ...``: tried with the reads of names,
+    after every other slip (``LATE_SLIPS``)."""
+    if isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Store):
+        for _, edit in _index_slips(node):
+            yield "written_index", edit
+
+
 def _mutated(function: _Function, lines: tuple):
     """``(slip, new definition, parameters it leaves unused)`` of every slip of the function's regions ``lines``,
     each once."""
@@ -1521,7 +1526,8 @@ def _mutated(function: _Function, lines: tuple):
             slips = _default_slips(function.node, lines, defaults) if late_pass else \
                 _parameter_slips(function.node, lines)
         elif late_pass:
-            slips = () if guarded or indexing else _name_slips(node, parent, angles, defaults, sums)
+            slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums),
+                                                                   _written_index_slips(node))
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
