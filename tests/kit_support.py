@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import copy
 import fcntl
-import os
 import pickle
 import re
 from pathlib import Path
@@ -56,15 +55,14 @@ def answer_key(request, tmp_path_factory):
     processes wait for it (a lock) rather than record it again."""
     from grader.kit import record_key
 
-    jobs = os.cpu_count() or 1  # the other test processes wait for it
     if not hasattr(request.config, "workerinput"):  # a run in one process
-        return record_key(seed=KIT_SEED, jobs=jobs)[0]
+        return record_key(seed=KIT_SEED)[0]
     shared = tmp_path_factory.getbasetemp().parent / f"kit-answer-key-{KIT_SEED}.pickle"
     with open(shared.with_suffix(".lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if shared.exists():
             return pickle.loads(shared.read_bytes())
-        key, _ = record_key(seed=KIT_SEED, jobs=jobs)
+        key, _ = record_key(seed=KIT_SEED)
         partial = shared.with_suffix(".partial")
         partial.write_bytes(pickle.dumps(key, protocol=pickle.HIGHEST_PROTOCOL))
         partial.replace(shared)
