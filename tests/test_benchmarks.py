@@ -16,7 +16,7 @@ def _bench(*args, timeout=300):
 
 
 def test_bench_batch_prints_rates_cpu_and_the_bound_of_the_speed_up():
-    done = _bench("--students", "6", "--jobs", "1", "2", "--cluster", "0", "--problems", "6", "--profile")
+    done = _bench("--students", "4", "--jobs", "1", "2", "--cluster", "0", "--problems", "6", "--profile")
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     rows = {m.group(1): m for m in re.finditer(
         r"^(--jobs \d)\s+([\d.]+) s\s+([\d.]+)/min\s+[\d.]+ s\s+[\d.]+ s\s+[\d.]+ s\s+([\d.]+) s\s+([\d.]+)$",
