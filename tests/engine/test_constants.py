@@ -22,14 +22,21 @@ from .test_mutants import evidence, planted_package, scene
 STATES = [[(0.0, [0.3, -0.5, 0.8, 0.2, -0.1, 0.4])], [(0.0, [-0.7, 0.4, 0.1, -0.3, 0.6, 0.0])]]
 
 
-def pendulum_slips(tmp_path, new: str):
-    student = planted_package(tmp_path, "conventions.py", "GRAVITY = 9.81", new)
+def planted_slips(tmp_path, file: str, old: str, new: str, probe: str, inputs, parts, check: str):
+    """The formula tier's slips for a package with ``old`` written as ``new`` in ``file``, on two inputs of
+    ``probe`` (each a tuple of its arguments) that the slip changes."""
+    student = planted_package(tmp_path, file, old, new)
     try:
-        evidences = [evidence("problem_24.pendulum_ode", (cases,), (0,), student) for cases in STATES]
+        evidences = [evidence(probe, args, parts, student) for args in inputs]
         assert all(not np.allclose(e.got, e.expected) for e in evidences)
-        return mutants.mutant_slips(scene("p24.pendulum_ode"), evidences)
+        return mutants.mutant_slips(scene(check), evidences)
     finally:
         drop_private(student)
+
+
+def pendulum_slips(tmp_path, new: str):
+    return planted_slips(tmp_path, "conventions.py", "GRAVITY = 9.81", new, "problem_24.pendulum_ode",
+                         [(cases,) for cases in STATES], (0,), "p24.pendulum_ode")
 
 
 def test_a_library_constant_typed_otherwise_is_named(tmp_path):
@@ -45,14 +52,8 @@ def test_a_constant_off_by_a_factor_no_typing_gives_names_nothing(tmp_path):
 def arm_slips(tmp_path, new: str):
     """The tier on problem 32's arm with its second joint frame's constant matrix written as ``new``."""
     old = "np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]),"
-    student = planted_package(tmp_path, "problem_32.py", old, new)
-    try:
-        evidences = [evidence("problem_32.robot", (q,), ("end_effector",), student)
-                     for q in ([0.3, -0.6, 0.9], [-0.8, 0.4, 1.3])]
-        assert all(not np.allclose(e.got, e.expected) for e in evidences)
-        return mutants.mutant_slips(scene("p32.end_effector"), evidences)
-    finally:
-        drop_private(student)
+    return planted_slips(tmp_path, "problem_32.py", old, new, "problem_32.robot",
+                         [([0.3, -0.6, 0.9],), ([-0.8, 0.4, 1.3],)], ("end_effector",), "p32.end_effector")
 
 
 def test_a_constant_matrix_written_transposed_is_a_transpose(tmp_path):
