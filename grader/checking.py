@@ -18,7 +18,7 @@ import numpy as np
 
 from checks._diagnoses import DIAGNOSES, families_of, student_phrase, unknown_names
 
-from .errors import GraderFault, StudentFault, StudentTimeout, WorkerCrash
+from .errors import GraderFault, StudentFault, ends_grading
 from .results import Figure, Series
 from .values import Tol, format_array
 
@@ -438,8 +438,8 @@ def confirmed(compare, again) -> None:
             if property_of(other) == property_of(shown):
                 names = {mistake.name for mistake in other.candidates or ()}
         except StudentFault as exc:
-            if isinstance(exc, (StudentTimeout, WorkerCrash)) or getattr(exc, "not_implemented", False):
-                raise  # fatal, as everywhere: the grading of the submission stops there
+            if ends_grading(exc):
+                raise  # as everywhere: the grading of the submission stops there
         kept = tuple(mistake for mistake in shown.candidates if mistake.name in names)
         if len(kept) == len(shown.candidates):
             raise

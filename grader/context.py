@@ -29,7 +29,7 @@ from .checking import (
     random_input,
 )
 from .diagnosis import doubt, explain, judge, symptom, prepare_call, prepared, recording, remember_run, trace
-from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, StudentTimeout, WorkerCrash
+from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, ends_grading
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, hypothesis_run
 
@@ -463,7 +463,7 @@ class Context:
             try:
                 evaluate(args)
             except (CheckFailure, StudentFault) as exc:
-                if _fatal(exc):
+                if ends_grading(exc):
                     state["fatal"] = exc
                 else:
                     state["last"] = (args, exc)
@@ -575,17 +575,13 @@ SHRINK_SEARCH = 2
 COMMON_SEED = 0x5EED_C0DE
 
 
-def _fatal(exc) -> bool:
-    return isinstance(exc, (StudentTimeout, WorkerCrash)) or getattr(exc, "not_implemented", False)
-
-
 def _attempt(evaluate, args):
     """The failure of ``evaluate(args)`` (a ``CheckFailure`` or the student's fault), or None; fatal failures
     (time-outs, crashes, stubs) are raised at once."""
     try:
         evaluate(args)
     except (CheckFailure, StudentFault) as exc:
-        if _fatal(exc):
+        if ends_grading(exc):
             raise
         return exc
     return None

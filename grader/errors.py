@@ -7,6 +7,7 @@ __all__ = [
     "EXIT_USAGE",
     "EXIT_GRADER",
     "GradingError",
+    "ends_grading",
     "StudentFault",
     "SubmissionError",
     "StudentCodeError",
@@ -67,6 +68,12 @@ class WorkerCrash(StudentFault):
         super().__init__(detail)
         self.detail = detail
         self.phase = phase
+
+
+def ends_grading(exc: BaseException) -> bool:
+    """Whether a fault of the student's code stops the grading of the submission wherever it happens: a time-out, a
+    crashed worker, or a function left unimplemented (the others fail one comparison)."""
+    return isinstance(exc, (StudentTimeout, WorkerCrash)) or getattr(exc, "not_implemented", False)
 
 
 class GraderFault(GradingError):

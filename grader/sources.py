@@ -61,7 +61,9 @@ def module_file(name: str) -> Path | None:
     import sys
 
     loaded = sys.modules.get(name)
-    origin = getattr(loaded, "__file__", None) if loaded is not None else _found_origin(name)
+    origin = getattr(loaded, "__file__", None) if loaded is not None else None
+    if origin is None:
+        origin = _found_origin(name)
     return Path(origin) if origin and origin.endswith(".py") else None
 
 
