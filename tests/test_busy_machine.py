@@ -9,6 +9,7 @@ import os
 import subprocess
 import sys
 import textwrap
+import time
 
 import pytest
 
@@ -245,3 +246,30 @@ def test_a_student_past_the_bound_with_no_grant_is_stopped_as_a_time_out():
     slot.deadline = slot.started = 0.0  # sent long ago: this process's counts since then, not a wait
     slot._counts = None  # and nothing read of them when it was sent: no grant can be computed
     assert slot.poll() == ("timeout", 0.0) and slot.restarted
+
+
+def test_the_wait_of_a_students_process_that_ended_before_the_bound_still_moves_it_on(monkeypatch):
+    """The student's process waits for a processor, answers and ends; the worker then writes its reports when the
+    bound comes.  Read only at the bound, the tree has no process that waited and the honest student was stopped
+    as a time-out; read while it works, the ended process keeps its wait."""
+    from grader.batch import pool
+
+    worker, student = 1, 2
+    reads = iter([({worker: 0.0}, 0.0),  # when the task is sent
+                  ({worker: 0.01, student: 1.2}, 0.4),  # while the student's process waits for a processor
+                  ({worker: 0.02}, 0.6)])  # at the bound: the student's process ended
+    monkeypatch.setattr(pool, "task_counts", lambda pid: next(reads))
+    slot = _slot()
+    slot.submit("task", 1.0)
+    slot.read_counts()
+    slot.started = time.monotonic() - 1.5  # sent 1.5 s ago: the bound of 1 s passed
+    slot.deadline = slot.started + 1.0
+    assert slot.poll() is None and slot.granted == pytest.approx(0.9, abs=0.05)  # min(1.2 waited, 1.5 - 0.6 off a processor)
+
+
+def test_a_slot_reads_its_trees_counts_while_it_works_not_only_at_its_bound():
+    slot = _slot()
+    slot.submit("task", 60.0)
+    assert slot.wakeup() <= slot.started + 1.0 and not slot.read_due()
+    slot.read_at -= 1.0
+    assert slot.read_due()

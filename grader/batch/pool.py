@@ -9,8 +9,9 @@ graded.
 The bound is wall time, and a busy machine is not the student's fault: it moves on by the time the machine took,
 as a call's limit does (``grader.sandbox.queueing``) — the time the worker granted the student's calls because
 their code waited for a processor (it tells the parent each grant), and the time the tasks of the worker's tree
-(the worker, its warm process, the student's process) waited for one, which the parent reads — by at most
-``LOAD_GRACE`` times the bound.  A student still running when that grace is spent is the machine's fault: not
+(the worker, its warm process, the student's process) waited for one, which the parent reads every
+``READ_EVERY`` seconds so that the student's process keeps its wait once it ended — by at most ``LOAD_GRACE``
+times the bound.  A student still running when that grace is spent is the machine's fault: not
 graded, graded again on the next run.
 """
 
@@ -37,6 +38,9 @@ __all__ = ["Task", "Slot", "run_pool", "stopped_reports", "STOP_GRACE"]
 
 #: seconds a worker has to stop after SIGTERM before it is killed
 STOP_GRACE = 3.0
+#: seconds between two reads of the scheduler's counts of a grading worker's tree: a task that ends in between (the
+#: student's process, once it answered) keeps the wait it had at its last read
+READ_EVERY = 0.25
 
 
 @dataclass(frozen=True)
@@ -206,6 +210,8 @@ class Slot:
         self.deadline = self.started = self.bound = 0.0
         self.granted = 0.0  # seconds the bound of the current task moved on for the machine's load
         self._counts = None  # the scheduler's counts of the worker's tree when the task was sent
+        self._waits: dict[int, float] = {}  # each task's wait since then, at its last read, ended tasks included
+        self.read_at = 0.0  # when they were last read
         self._own = 0.0  # seconds of the worker's own wait for a processor granted so far
         self.killed = False  # the last worker ended by a signal (the OOM killer, an operator), not by itself
         self.kills_while_starting = 0
@@ -244,7 +250,9 @@ class Slot:
             self.wait_ready()
         self.submit(task, seconds)
         while True:
-            wait(self.waitables(), max(0.0, self.deadline - time.monotonic()))
+            wait(self.waitables(), max(0.0, self.wakeup() - time.monotonic()))
+            if self.read_due():
+                self.read_counts()
             outcome = self.poll()
             if outcome is not None:
                 self.task = None
@@ -267,7 +275,28 @@ class Slot:
         self.conn.send(task)
         self.task, self.started, self.bound, self.granted = task, time.monotonic(), seconds, 0.0
         self.deadline = self.started + seconds
-        self._counts, self._own = task_counts(self.process.pid), 0.0
+        self._counts, self._own, self._waits = task_counts(self.process.pid), 0.0, {}
+        self.read_at = self.started
+
+    def wakeup(self) -> float:
+        """When the parent must look at this slot again: its deadline, or the next read of its tree's counts."""
+        return min(self.deadline, self.read_at + READ_EVERY)
+
+    def read_due(self) -> bool:
+        return self.task is not None and time.monotonic() - self.read_at >= READ_EVERY
+
+    def read_counts(self) -> float | None:
+        """Read the scheduler's counts of the worker's tree now and keep each task's wait since the task was sent:
+        the student's process waits for a processor and then ends, before the worker answers, and what it waited
+        must still count.  The tree's processor time since the task was sent, or None where it cannot be read."""
+        self.read_at = time.monotonic()
+        now = task_counts(self.process.pid)
+        if now is None or self._counts is None:
+            return None
+        (waits, cpu), (before, cpu_before) = now, self._counts
+        for tid, wait in waits.items():
+            self._waits[tid] = max(self._waits.get(tid, 0.0), wait - before.get(tid, 0.0))
+        return cpu - cpu_before
 
     def _grant(self, seconds: float) -> None:
         """Move the task's deadline on by ``seconds`` of the machine's load, within the grace."""
@@ -279,14 +308,11 @@ class Slot:
         """How long the worker's tree (the worker, its warm process, the student's process) waited for a processor
         since the task was sent, beyond what was granted for that already: the smaller of one task's longest wait
         and the tree's wall time off a processor (as ``Child`` reads a call's), 0 where it cannot be read or is
-        within the counters' noise.  A student's process that ended before is not counted: the grants its calls
-        had are (``_grant``)."""
-        now = task_counts(self.process.pid)
-        if now is None or self._counts is None:
+        within the counters' noise.  A task that ended counts with its wait at the last read (``read_counts``)."""
+        cpu = self.read_counts()
+        if cpu is None or not self._waits:
             return 0.0
-        (waits, cpu), (before, cpu_before) = now, self._counts
-        longest = max(wait - before.get(tid, 0.0) for tid, wait in waits.items())
-        excess = excess_wait(time.monotonic() - self.started, cpu - cpu_before, longest, self._own) or 0.0
+        excess = excess_wait(time.monotonic() - self.started, cpu, max(self._waits.values()), self._own) or 0.0
         self._own += excess
         return excess
 
@@ -341,8 +367,11 @@ def run_pool(tasks: list[Task], jobs: int, limits: Limits, mode: SandboxMode, pr
                     except OSError:  # the idle worker died: start another
                         slot.restart()
             busy = [s for s in slots if s.task is not None]
-            timeout = max(0.0, min(s.deadline for s in busy) - time.monotonic()) if busy else None
+            timeout = max(0.0, min(s.wakeup() for s in busy) - time.monotonic()) if busy else None
             wait([w for s in slots if s.task is not None or not s.ready for w in s.waitables()], timeout)
+            for slot in busy:
+                if slot.read_due():
+                    slot.read_counts()
             for slot in slots:
                 if not slot.ready:
                     if slot.conn.poll() or not slot.process.is_alive():
