@@ -1981,6 +1981,9 @@ def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) ->
 _ABSORB = 100_000
 #: how often the deadline looks at the clock [s]
 _POLL = 0.02
+#: how long a thread may stay inside a deadline that interrupted it before it is interrupted again [s]: an
+#: interruption that lands in a garbage collector's callback or in a finalizer (``__del__``) is lost there
+_REFIRE = 0.5
 #: a thread that waits rather than works is interrupted after this many times the budget of wall time (not counting
 #: the time it was ready to run and waited for a core, where the system tells it)
 WAIT_FACTOR = 5.0
@@ -2031,6 +2034,7 @@ class _Deadline:
         self.lock = threading.Lock()
         self.armed = True
         self.fired = False
+        self.fires = 0  # interruptions sent: more than one where the first was lost, or the thread is slow to leave
         self.done = threading.Event()
         self.clock = _cpu_clock(self.thread)
         self.schedstat = _schedstat(threading.get_native_id())
@@ -2087,13 +2091,18 @@ class _Deadline:
     def _watch(self) -> None:
         while not self.done.wait(min(_POLL, self.seconds, self.making_seconds)):
             if self._spent():
-                self._fire()
-                return
+                break
+        else:
+            return
+        self._fire()
+        while not self.done.wait(_REFIRE):  # still inside: the interruption was lost (or is still to be met)
+            self._fire()
 
     def _fire(self) -> None:
         with self.lock:
             if self.armed:
                 self.fired = True
+                self.fires += 1
                 ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(self.thread), ctypes.py_object(_Timeout))
 
     def __enter__(self):
@@ -2105,8 +2114,10 @@ class _Deadline:
         self.done.set()
         with self.lock:
             self.armed = False
-            pending = self.fired and not (kind is not None and issubclass(kind, _Timeout))
-        if pending:  # fired, but not met yet: met here (withdrawing it, SetAsyncExc(NULL), upsets a later profiler)
+            # fired, but not met yet (or sent again while the first was on its way out): met here, where it can
+            # interrupt nothing (withdrawing it, SetAsyncExc(NULL), upsets a later profiler)
+            pending = self.fired and (self.fires > 1 or not (kind is not None and issubclass(kind, _Timeout)))
+        if pending:
             try:
                 for _ in range(_ABSORB):
                     pass

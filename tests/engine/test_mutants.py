@@ -11,10 +11,12 @@ code of the check's problem, kept when it reproduces the student's value on the 
   the engine off no catalogue names a cause of that family.
 """
 
+import gc
 import os
 import importlib
 import itertools
 import shutil
+import sys
 import time
 from pathlib import Path
 from types import SimpleNamespace
@@ -1038,6 +1040,37 @@ def test_the_deadline_counts_work_not_waiting():
         with mutants._Deadline(0.2):
             while True:
                 pass
+
+
+def test_a_deadline_interrupts_again_where_its_interruption_was_lost_in_a_garbage_collectors_callback():
+    """An interruption that lands in a callback of the garbage collector (hypothesis keeps one for its own
+    accounting) is lost there, as an exception of a finalizer is: the deadline interrupts again while the thread is
+    still inside, and the work does not run on past its budget."""
+    lost = []
+
+    def slow_callback(phase, info):
+        if phase == "start" and not lost:
+            end = time.monotonic() + 0.4
+            while time.monotonic() < end:  # the deadline's budget runs out in here
+                pass
+
+    hook = sys.unraisablehook
+    sys.unraisablehook = lambda raised: lost.append(raised.exc_type)
+    gc.callbacks.append(slow_callback)
+    interrupted = False
+    try:
+        with mutants._Deadline(0.1):
+            gc.collect()
+            end = time.monotonic() + 5.0
+            while time.monotonic() < end:
+                pass
+    except mutants._Timeout:
+        interrupted = True
+    finally:
+        gc.callbacks.remove(slow_callback)
+        sys.unraisablehook = hook
+    assert lost and set(lost) == {mutants._Timeout}  # an interruption was lost in the callback
+    assert interrupted
 
 
 def test_a_constant_term_left_out_is_an_offset(made_up):
