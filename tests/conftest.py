@@ -7,6 +7,8 @@ from __future__ import annotations
 import fcntl
 import os
 import shutil
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
@@ -33,7 +35,33 @@ def pytest_report_header(config):
 # The kit's answer key, recorded once per test process: defined here, once, rather than imported into each test
 # module (a fixture imported into a module is that module's own, and a session fixture of several modules is
 # recorded once for each of them).
-from .kit_support import answer_key, deferred_ids, kit_oracle  # noqa: E402,F401
+from .kit_support import answer_key, deferred_ids, kit_oracle, shared_key_path  # noqa: E402,F401
+
+#: the process that records the kit's key beside the test processes of a parallel run of the whole suite
+_KEY_RECORDER: list[subprocess.Popen] = []
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_configure(config):
+    """A parallel run of the whole suite (its controller, before the test processes start) records the kit's key in
+    a process of its own, beside the tests that do not need it (``pytest_collection_modifyitems`` runs them first):
+    the first test process to need the key used to record it while the other waited for it, idle.  Where that
+    process fails, the first test process to need the key records it, as before."""
+    if hasattr(config, "workerinput") or not getattr(config.option, "numprocesses", None):
+        return
+    if config.args_source is not pytest.Config.ArgsSource.TESTPATHS:  # some tests chosen: they may need no key
+        return
+    path = shared_key_path(config._tmp_path_factory.getbasetemp())
+    _KEY_RECORDER.append(subprocess.Popen([sys.executable, "-m", "tests.kit_support", str(path)],
+                                          cwd=Path(__file__).resolve().parents[1], stdout=subprocess.DEVNULL,
+                                          stderr=subprocess.DEVNULL))
+
+
+def pytest_collection_modifyitems(config, items):
+    """The test modules that need the kit's key after those that do not, each whole and in its order (a module's
+    fixtures are made once)."""
+    keyed = {item.path for item in items if "answer_key" in getattr(item, "fixturenames", ())}
+    items.sort(key=lambda item: item.path in keyed)
 
 
 def _run_owner(config) -> int:
@@ -73,6 +101,9 @@ def pytest_sessionfinish(session):
     """The run's end (in the controller of a parallel run, after its test processes): the kit's site removed."""
     if hasattr(session.config, "workerinput"):
         return
+    for recorder in _KEY_RECORDER:
+        recorder.kill()
+        recorder.wait()
     folder = _kit_site_folder(os.getpid())
     shutil.rmtree(folder, ignore_errors=True)
     for suffix in (".ready", ".lock"):

@@ -48,25 +48,35 @@ def strict(monkeypatch):
     monkeypatch.setattr(engine, "STRICT", True)
 
 
+def shared_key_path(folder: Path) -> Path:
+    """Where a parallel run keeps its one recording of the key: ``folder`` is the run's shared temporary folder."""
+    return folder / f"kit-answer-key-{KIT_SEED}.pickle"
+
+
+def shared_key(path: Path):
+    """The key kept at ``path``: recorded there by the first process to take its lock (the run's controller starts
+    one for it, ``tests/conftest.py``), loaded by the others, which wait for it rather than record it again."""
+    from grader.kit import record_key
+
+    with open(path.with_suffix(".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if path.exists():
+            return pickle.loads(path.read_bytes())
+        key, _ = record_key(seed=KIT_SEED)
+        partial = path.with_suffix(".partial")
+        partial.write_bytes(pickle.dumps(key, protocol=pickle.HIGHEST_PROTOCOL))
+        partial.replace(path)
+        return key
+
+
 @pytest.fixture(scope="session")
 def answer_key(request, tmp_path_factory):
-    """The kit's key, recorded once per run: the first test process of a parallel run (pytest-xdist) to need it
-    records it and leaves a copy in the run's shared temporary folder, which the other processes load; the other
-    processes wait for it (a lock) rather than record it again."""
+    """The kit's key, recorded once per run (``shared_key`` in a parallel run, pytest-xdist)."""
     from grader.kit import record_key
 
     if not hasattr(request.config, "workerinput"):  # a run in one process
         return record_key(seed=KIT_SEED)[0]
-    shared = tmp_path_factory.getbasetemp().parent / f"kit-answer-key-{KIT_SEED}.pickle"
-    with open(shared.with_suffix(".lock"), "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        if shared.exists():
-            return pickle.loads(shared.read_bytes())
-        key, _ = record_key(seed=KIT_SEED)
-        partial = shared.with_suffix(".partial")
-        partial.write_bytes(pickle.dumps(key, protocol=pickle.HIGHEST_PROTOCOL))
-        partial.replace(shared)
-        return key
+    return shared_key(shared_key_path(tmp_path_factory.getbasetemp().parent))
 
 
 @pytest.fixture(scope="session")
@@ -354,3 +364,9 @@ def assert_no_catalogue_names_it(mistake, submission, zygote, monkeypatch) -> No
     unexplained = {r.check_id: r for r in off.results}[mistake.check]
     assert unexplained.status is Status.FAILED, unexplained.message
     assert not set(families_of(unexplained.diagnosis)) & set(families_of(mistake.diagnosis)), unexplained.diagnosis
+
+
+if __name__ == "__main__":  # python -m tests.kit_support PATH: record the key at PATH, unless a process did
+    import sys
+
+    shared_key(Path(sys.argv[1]))
