@@ -122,6 +122,7 @@ import sys
 import threading
 import time
 import warnings
+import weakref
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -1875,10 +1876,26 @@ def _copied(args) -> tuple:
     return pickle.loads(args) if isinstance(args, bytes) else copy.deepcopy(tuple(args))
 
 
+#: the codes each call ran (``_traced``), by the call, while ``_kept`` measures one explanation (None outside it):
+#: its stages (the regions', the given code's, the constants') trace the same call
+_TRACES: dict = {"calls": None}
+
+
 def _traced(package, root: Path, probe, args, quick: tuple = ()) -> set:
     """The code objects of the reference's folder that ``probe(*args)`` runs on the private package; with
     ``quick`` (``_twins``), run with those codes without simplifications in their functions' place (a profiler
-    slows sympy's simplifications tenfold), each counted as its function's own code."""
+    slows sympy's simplifications tenfold), each counted as its function's own code.  Traced once for each
+    explanation (``_TRACES``)."""
+    calls = _TRACES["calls"]
+    if calls is None:
+        return _traced_once(package, root, probe, args, quick)
+    key = (id(package), str(root), probe, id(args), tuple((id(holder), id(twin)) for holder, twin in quick))
+    if key not in calls:
+        calls[key] = (args, _traced_once(package, root, probe, args, quick))  # the arguments kept: their id holds
+    return calls[key][1]
+
+
+def _traced_once(package, root: Path, probe, args, quick: tuple = ()) -> set:
     seen: set = set()
     prefix = str(root)
 
@@ -2396,7 +2413,15 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
         return []
     inputs = list(evidences)
     try:
-        kept = _kept(problem, evidences, told=told)
+        key = _measure_key(problem, evidences, told)
+        kept = _MEASURED.get(scene.ctx.oracle, key)
+        if kept is None:
+            outcome = {}
+            kept = _kept(problem, evidences, told=told, outcome=outcome)
+            if not outcome.get("timeout"):
+                _MEASURED.put(scene.ctx.oracle, key, kept)
+        else:
+            trace.note("measured", count=len(kept))
         kept = None if kept is None else [m for m in kept if _precise(m, inputs)]
         trace.note("mutants", problem=problem, kept=None if kept is None else sorted({m.name for m in kept}))
         if kept and another is not None:
@@ -2408,6 +2433,64 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     except GraderFault:
         return []
     return _hypotheses(kept or [], inputs, untested, unreached)
+
+
+class _Measured:
+    """The mutants kept on a comparison's inputs (``_kept``), by what decides them, for the grading (the oracle) in
+    which they were measured: a run's failure that several checks explain (a right-hand side behind a run's state
+    and its event) asks the formula tier the same question on the same inputs, and the reference's code mutated
+    gives the same answer to it.  Measures that ran out of their time are not kept (the next may finish); one
+    grading's measures are never another's (the cost of one grading does not depend on an earlier one)."""
+
+    def __init__(self):
+        self._owner = None  # a weak reference to the oracle of the grading the measures belong to
+        self._kept: dict = {}
+
+    def get(self, owner, key):
+        if key is None or self._owner is None or self._owner() is not owner:
+            return None
+        kept = self._kept.get(key)
+        return None if kept is None else list(kept)
+
+    def put(self, owner, key, kept) -> None:
+        if key is None or kept is None:
+            return
+        if self._owner is None or self._owner() is not owner:
+            try:
+                self._owner = weakref.ref(owner)
+            except TypeError:  # an oracle that cannot be referred to weakly keeps nothing
+                self._owner = None
+                return
+            self._kept = {}
+        self._kept[key] = tuple(kept)
+
+
+_MEASURED = _Measured()
+
+
+def _measure_key(problem: int, evidences: list[Evidence], told) -> tuple | None:
+    """What the mutants kept on ``evidences`` depend on: the problem, the families told and each input's call, the
+    student's and the expected value and the tolerance; None where an input's arguments cannot be pickled."""
+    key = [problem, None if told is None else frozenset(told)]
+    for e in evidences:
+        source = e.source
+        try:
+            args = pickle.dumps(tuple(source.args), protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # noqa: BLE001 - arguments that cannot be pickled are measured each time
+            return None
+        key.append((source.probe, args, tuple(source.path), e.tol, _bytes_of(e.got), _bytes_of(e.expected)))
+    try:
+        hash(tuple(key))
+    except TypeError:
+        return None
+    return tuple(key)
+
+
+def _bytes_of(value):
+    if value is None:
+        return None
+    value = np.asarray(value)
+    return value.dtype.str, value.shape, value.tobytes()
 
 
 def _imprecise(scene, evidences: list[Evidence], another) -> list[Hypothesis]:
@@ -2744,17 +2827,19 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
 
 
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
-          told=None, only=None) -> list[Mutant] | None:
+          told=None, only=None, outcome: dict | None = None) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
     the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``; ``only``:
     the slips tried, where not all; where none of a solution region's slips reproduces it (and no earlier tier
-    explained the answer), the slips of the code the problem's module gives whole (``_given``)."""
+    explained the answer), the slips of the code the problem's module gives whole (``_given``); ``outcome``
+    (given) gets ``"timeout"`` where the time ran out on a stage."""
     first = evidences[0]
     made = mutants is None
     judged = len(evidences) > 1 or only is not None  # one input of its own: a slip of precision, judged there
     started = time.thread_time()
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
+        _TRACES["calls"] = {}
         kept, originals, found, progress, rivals, twins, making = None, {}, [], {}, None, (), 0.0
         try:
             root, package = _package()
@@ -2804,8 +2889,11 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
             kept = None
         finally:
             _restore(originals)  # once the deadline can interrupt nothing more
+            _TRACES["calls"] = None
         if kept is None and mutants:
             trace.note("timeout", tried=progress.get("tried"))
+            if outcome is not None:
+                outcome["timeout"] = True
             if rivals is not None and progress.get("tried", 0) >= rivals:
                 kept = found  # every rival of another family was tried: the time ran out on names of a family told
     trace.note("spent", seconds=round(time.thread_time() - started, 3), making=round(making, 3))
