@@ -90,7 +90,10 @@ for every answer and kept for the process, so it is counted apart, within ``MAKI
 names does not depend on whether an earlier explanation of the process made the mutants, nor on how much a loaded
 machine slows their making.  The worst an explanation's formula tier may spend is so ``MAKING_TIME_BUDGET`` +
 ``TIME_BUDGET`` + ``GIVEN_TIME_BUDGET`` of CPU time (or ``LATE_TIME_BUDGET`` in place of the last), the first
-only where the process has not made those mutants yet; where an earlier
+only where the process has not made those mutants yet.  The codes the compared call runs are traced once for an
+explanation's stages (``_TRACES``), and a grading whose explanations ask the tier the same question (the same
+inputs, student's values and families told: a run's right-hand side behind its state and its event) measures the
+mutants once (``_Measured``; a measure that ran out of its time is made again); where an earlier
 tier already explained the answer, the tier is heard for rivals within a budget of its own, ``LATE_MUTANTS`` mutants
 and ``LATE_TIME_BUDGET``, those of the families not told yet first (``late``: a rival of a family told adds a name,
 not an explanation), warnings are
@@ -122,7 +125,6 @@ import sys
 import threading
 import time
 import warnings
-import weakref
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -2440,28 +2442,24 @@ class _Measured:
     which they were measured: a run's failure that several checks explain (a right-hand side behind a run's state
     and its event) asks the formula tier the same question on the same inputs, and the reference's code mutated
     gives the same answer to it.  Measures that ran out of their time are not kept (the next may finish); one
-    grading's measures are never another's (the cost of one grading does not depend on an earlier one)."""
+    grading's measures are never another's (the cost of one grading does not depend on an earlier one), and only
+    the latest grading's are kept."""
 
     def __init__(self):
-        self._owner = None  # a weak reference to the oracle of the grading the measures belong to
+        self._owner = None  # the oracle of the grading the measures belong to
         self._kept: dict = {}
 
     def get(self, owner, key):
-        if key is None or self._owner is None or self._owner() is not owner:
+        if key is None or owner is None or self._owner is not owner:
             return None
         kept = self._kept.get(key)
         return None if kept is None else list(kept)
 
     def put(self, owner, key, kept) -> None:
-        if key is None or kept is None:
+        if key is None or kept is None or owner is None:
             return
-        if self._owner is None or self._owner() is not owner:
-            try:
-                self._owner = weakref.ref(owner)
-            except TypeError:  # an oracle that cannot be referred to weakly keeps nothing
-                self._owner = None
-                return
-            self._kept = {}
+        if self._owner is not owner:
+            self._owner, self._kept = owner, {}
         self._kept[key] = tuple(kept)
 
 
@@ -2469,9 +2467,10 @@ _MEASURED = _Measured()
 
 
 def _measure_key(problem: int, evidences: list[Evidence], told) -> tuple | None:
-    """What the mutants kept on ``evidences`` depend on: the problem, the families told and each input's call, the
-    student's and the expected value and the tolerance; None where an input's arguments cannot be pickled."""
-    key = [problem, None if told is None else frozenset(told)]
+    """What the mutants kept on ``evidences`` depend on: the reference, the problem, the families told and each
+    input's call, the student's and the expected value and the tolerance; None where an input's arguments cannot be
+    pickled."""
+    key = [_package()[0], problem, None if told is None else frozenset(told)]
     for e in evidences:
         source = e.source
         try:

@@ -6,6 +6,8 @@ code of the check's problem, kept when it reproduces the student's value on the 
   reference's code.
 * The rules: an equivalent mutant is no cause; a value that slips of two families give is "could be", of more
   nothing; a mutant that hangs is interrupted within the tier's time and names nothing, one that raises is dropped.
+* The cost: an explanation traces the compared call once for all its stages, and a grading that asks the same
+  question twice measures it once (a measure that ran out of its time is made again).
 * Graded as ``grade batch`` grades (``tests/engine/formulas.toml``): live the check names the slip, the kit (which
   holds no reference code) names the same or nothing and says that the graded submission may say more, and with
   the engine off no catalogue names a cause of that family.
@@ -689,6 +691,57 @@ def test_a_mutant_that_hangs_is_interrupted_and_names_nothing(made_up, monkeypat
     assert fired == [True]
     settle = importlib.import_module(f"{made_up.__name__}.problem_98").settle
     assert list(settle(1.0, 0.3)) == pytest.approx([1.2, 0.3])
+
+
+def test_a_grading_measures_the_same_question_once(made_up, monkeypatch):
+    """Two explanations of one grading (one oracle) that ask the tier the same question (the same inputs, student's
+    values and families told) measure the mutants once and hear the same slips; another grading, or another
+    student's value, measures them anew; a measure that ran out of its time is measured again."""
+    measured = []
+    evaluate = mutants._evaluate
+
+    def counted(*args, **kwargs):
+        measured.append(1)
+        return evaluate(*args, **kwargs)
+
+    monkeypatch.setattr(mutants, "_evaluate", counted)
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    grading = scene("p98.difference")
+    first = mutants.mutant_slips(grading, evidences)
+    assert first and measured
+    count = len(measured)
+    assert mutants.mutant_slips(grading, evidences) == first and len(measured) == count
+    assert mutants.mutant_slips(scene("p98.difference"), evidences) == first and len(measured) > count
+    count = len(measured)
+    other = made_up_evidences(made_up, "difference", lambda a, b: [a - b, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    assert mutants.mutant_slips(grading, other) == [] and len(measured) > count
+
+    monkeypatch.setattr(mutants, "TIME_BUDGET", 0.15)
+    hanging = made_up_evidences(made_up, "settle", lambda a, b: [a + 1.0, 0.5 * a * b], [(1.0, 0.3), (2.0, 0.7)])
+    grading = scene("p98.settle")
+    assert mutants.mutant_slips(grading, hanging) == []
+    count = len(measured)
+    assert mutants.mutant_slips(grading, hanging) == [] and len(measured) > count
+
+
+def test_an_explanation_traces_its_call_once(made_up, monkeypatch):
+    """A value that no slip of a region reproduces is heard by the stages of the given code and of the constants,
+    each of which reads the codes the compared call runs: the call is traced once for the explanation, and anew
+    for the next one."""
+    traced = []
+    once = mutants._traced_once
+
+    def counted(*args, **kwargs):
+        traced.append(1)
+        return once(*args, **kwargs)
+
+    monkeypatch.setattr(mutants, "_traced_once", counted)
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [7.0, -7.0], [(1.0, 3.0), (2.5, -0.5)])
+    stages = []
+    monkeypatch.setattr(mutants.trace, "note", lambda what, **details: stages.append(what))
+    assert mutants.mutant_slips(scene("p98.difference"), evidences) == []
+    assert {"mutated", "given", "constants"} <= set(stages) and len(traced) == 1
+    assert mutants.mutant_slips(scene("p98.difference"), evidences) == [] and len(traced) == 2
 
 
 def test_a_deadline_that_fires_leaves_nothing_behind():
