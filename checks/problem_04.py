@@ -18,7 +18,7 @@ import numpy as np
 
 from grader import strategies as st
 from grader.strategies import assume
-from grader.errors import StudentFault
+from grader.errors import ends_grading, StudentFault
 from grader.checking import (
     STAGE_DEFINED,
     STAGE_RANDOM,
@@ -424,7 +424,11 @@ def _straight(ctx, desc, q, point):
     q_other, what = _configuration(ctx, other)
     try:
         again = _unturned(_model(ctx, q_other, what, other), q_other, [found[0]])
-    except (CheckFailure, StudentFault):
+    except CheckFailure:
+        return None
+    except StudentFault as exc:
+        if ends_grading(exc):
+            raise
         return None
     return found[1] if again is not None else None
 

@@ -11,7 +11,8 @@ student's answer, not where a property of the answer that the slip would give ha
   the student's in every joint and in the point where the loop closes, in the configuration shown and in the
   other one the check asks.  Planted: link 2 built without its angle (live, and in the kit); near misses: links 1
   and 2 straight and link 3 turned by another angle (a model nearly straight), and a model straight in one
-  configuration only.
+  configuration only.  A time-out or a crashed worker while the second model is built ends the grading, as in
+  ``confirmed``; an error of the student's code there only leaves the model unnamed.
 * A linkage at rest is no evidence of which gravity is missing (problem 4's ``_gravity_slips``): its acceleration
   vanishes with no gravity and with gravity out of the plane alike, so each is told only where the model's gravity
   is the slip's.  Planted: gravity along z (``gravity_axis``, ``tests/planted/problem_04.toml`` grades it live);
@@ -147,6 +148,25 @@ def test_a_model_nearly_straight_or_straight_in_one_configuration_is_not():
     has it, the end of link 3 not; link 2 unturned at the sheet's fixed point only."""
     assert _straight(lambda q, point: [0.0, 0.0, np.round(q[2], 1)]) is None
     assert _straight(lambda q, point: _unturned((1,), q) if point == c04.FIXED_POINT else q[:3]) is None
+
+
+def test_a_second_model_that_times_out_ends_the_grading():
+    """The second configuration's model is the student's code run again: a time-out or a crashed worker there stops
+    the grading (as ``grader.checking.confirmed`` lets it), while an error of their code only leaves the model
+    unnamed."""
+    from grader.errors import StudentFault, StudentTimeout, WorkerCrash
+
+    def failing(fault):
+        def student(q, point):
+            if point != c04.FIXED_POINT:
+                raise fault
+            return _unturned((1,), q)
+        return student
+
+    for fault in (StudentTimeout(2.0), WorkerCrash("killed")):
+        with pytest.raises(type(fault)):
+            _straight(failing(fault))
+    assert _straight(failing(StudentFault("ValueError: no model"))) is None
 
 
 def test_a_linkage_at_rest_is_told_the_gravity_its_model_has():
