@@ -7,7 +7,9 @@ randomized comparison's second failing input, or an input the engine draws itsel
 drawn anew, or else every float of its arguments varied but kept what it is, a rotation a rotation, a symmetric
 matrix symmetric, a positive mass positive; a draw on which the reference raises or gives a degenerate value is
 not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
-(none, or more than two).  It never names a default cause.
+(none, or more than two).  It never names a default cause.  Where it has one input only (nothing to draw), a slip
+of the grammar is told only where that value differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more:
+one or two numbers are matched by some of the grammar's many slips by chance, whatever made them.
 
 Every tier is heard (the run's, the outputs', the inputs', the declared terms', the test of an argument ignored,
 the formulas'), even where an earlier one explained the answer: a slip that two tiers reproduce alike, with two

@@ -555,8 +555,8 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
         inputs[0] = _single(inputs[0])
     keys = list(inputs[0].predicted)
     outputs = _keep(inputs, [k for k in keys if not k.startswith(INPUT_KEYS)])
-    if all(_same_shape(e) for e in evidences):  # a run's value as well: it equals a rounded one only if rounded
-        outputs += precision_slips(first.got, first.expected, first.tol)
+    if all(_same_shape(e) for e in evidences) and (len(inputs) > 1 or _told_enough(first)):
+        outputs += precision_slips(first.got, first.expected, first.tol)  # a run's value as well: rounded only if so
     tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs), described]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
@@ -874,12 +874,25 @@ def _same_shape(evidence: Evidence) -> bool:
 
 def _single(one: _Input) -> _Input:
     """With a single input (nothing to draw), only hypotheses whose value is clearly another than the expected one
-    are kept: a near-degenerate input tells little."""
+    are kept: a near-degenerate input tells little.  Nor any where the value says too few numbers of its slip
+    (``_told_enough``)."""
     ev = one.evidence
+    enough = _told_enough(ev)
     for key in list(one.predicted):
-        if not distinct(one.predicted[key], ev.expected, ev.tol):
+        if not enough or not distinct(one.predicted[key], ev.expected, ev.tol):
             del one.predicted[key]
     return one
+
+
+def _told_enough(evidence: Evidence) -> bool:
+    """Whether a comparison the engine has on one input only says enough numbers of its slip for a slip of the
+    grammar found on it to be told (``numbers_told``, ``ONE_INPUT_NUMBERS``, as for a run's start): one or two
+    numbers off (a joint's one offset twice its length, an end time on the grid) are matched by some of the
+    grammar's many slips by chance, whatever made them."""
+    told = numbers_told(evidence.got, evidence.expected, evidence.tol)
+    if told < ONE_INPUT_NUMBERS:
+        trace.note("single", numbers=told)
+    return told >= ONE_INPUT_NUMBERS
 
 
 #: the families a finding may span, at most: past them, that many causes fit the answer alike and none is told

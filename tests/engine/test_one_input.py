@@ -1,4 +1,4 @@
-"""A run that starts from another state than the given one.
+"""A value the engine has on one input only: a run's start, and any value no second input can be drawn for.
 
 A start that differs is what the answer shows, not what made it so: where the grammar of a value gives the
 student's start from the given one (rounded, entries exchanged, negated), that slip is told beside the wrong start
@@ -7,8 +7,15 @@ the given start must be ``evidence.ONE_INPUT_NUMBERS`` distinct values or more (
 number (one entry rounded) or two (a pair exchanged) are matched by some of the grammar's many slips by chance, and
 entries that repeat one value say it once.
 
-The runs below are made up, each a slip none of the fresh sets holds; the near misses are a start no slip gives and
-the same slip on too few numbers.
+Any other value the engine has on one input (nothing to draw: a constant of the model, a value whose arguments do
+not change it) is held to the same rule: the grammar's slips of a value and of its arguments, and the slips of
+precision, are told on it only where it says ``ONE_INPUT_NUMBERS`` distinct numbers of its slip
+(``engine._told_enough``).  A joint placed a whole link along an axis where half a link belongs is twice the
+expected offset in its one number, and a time read off a grid is that time rounded: what made the number is not
+what its shape says.
+
+The runs and values below are made up, each a slip none of the fresh sets holds; the near misses are a start no
+slip gives, the same slip on too few numbers, and a value of three numbers on one input, which keeps its slip.
 """
 
 import numpy as np
@@ -84,3 +91,37 @@ def test_a_start_that_no_slip_gives_is_told_as_a_wrong_start_alone(monkeypatch):
     one = START.copy()
     one[1] = round(one[1], 2)
     assert _names(_explain_start(monkeypatch, one)) == ("initial_state",)
+
+
+# ------------------------------------------------------------------------------------------ any value on one input
+
+
+def _explain_one(monkeypatch, expected, got):
+    """A value ``place()`` that no second input can be drawn for (its declaration draws nothing): the reference's
+    ``expected``, the student's ``got``."""
+    monkeypatch.setitem(engine.DECLARATIONS, "stub.place", Declaration(draw=False))
+    expected, got = np.asarray(expected, dtype=float), np.asarray(got, dtype=float)
+
+    class Ctx(_Ctx):
+        calls = [("reference", "stub.place", (), expected), ("student", "stub.place", (), got)]
+        oracle = StandInOracle({"stub.place": lambda: expected})
+        child = StandInChild({"stub.place": lambda: got})
+
+    return explain(Ctx(), [Evidence(got, expected, TIGHT, "place", got, expected)])
+
+
+def test_a_slip_of_the_grammar_on_one_input_is_told_where_the_value_says_enough(monkeypatch):
+    """The near miss: a point of three distinct coordinates, all doubled, on the one input there is."""
+    point = np.array([0.31, -0.52, 0.17])
+    assert _names(_explain_one(monkeypatch, point, 2 * point)) == ("factor_two",)
+    assert _names(_explain_one(monkeypatch, point, -point)) == ("sign_flip",)
+
+
+def test_one_or_two_numbers_off_on_one_input_name_no_slip_of_the_grammar(monkeypatch):
+    """Planted: a joint placed one link length along y, where the expected offset is half a link (one number, twice
+    the expected one, by what the offset is and not by a factor); an end time that is a grid's last sample (one
+    number, rounded to the grid); two coordinates of a point typed negated (two numbers, which also read as a
+    sign of the whole, of a row, of entries)."""
+    assert _names(_explain_one(monkeypatch, [0.0, -0.25, 0.0], [0.0, -0.5, 0.0])) == ()
+    assert _names(_explain_one(monkeypatch, 1.2346, 1.23)) == ()
+    assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [-0.31, 0.52, 0.17])) == ()
