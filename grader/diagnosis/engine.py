@@ -569,7 +569,7 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
                                                lambda: _second_input(scene, evidences[-1]), told, untested,
                                                tuple(unreached)),
                           any(tiers), "formulas")
-        formulas = _told_apart(formulas)
+        formulas = _unscaled(_told_apart(formulas), evidences)
         if not formulas and left_to_live(scene, evidences):
             tiers = _beside(tiers)
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
@@ -618,6 +618,33 @@ def _told_apart(formulas: list) -> list:
         trace.note("unlike", names=sorted(names))
         return []
     return formulas
+
+
+def _unscaled(formulas: list, evidences: list) -> list:
+    """The formula tier's hypotheses, with a term left out told beside a factor left out of a product
+    (``missing_factor``, a slip of scale) where the student's value is no multiple of the expected one on some input
+    (``_multiple``): a factor that is a number (a step, a density) scales the answer, while one that is a quantity of
+    the formula of its own (the cosine of an angle in some entries, an inverse mass matrix) leaves a part of the
+    formula out, which is a term missing as truly.  A twin, told only where the families stay within
+    ``MAX_FAMILIES``."""
+    factors = [h for h in formulas if h.name == "missing_factor" and not h.twin]
+    if not factors or all(_multiple(e) for e in evidences):
+        return formulas
+    return formulas + [Hypothesis(f"{h.key}=unscaled", "missing_term", h.cost,
+                                  f"{h.detail}, and your value is no multiple of the expected one: the factor is a "
+                                  "quantity of the formula, a part of it missing", twin=True) for h in factors]
+
+
+def _multiple(evidence: Evidence) -> bool:
+    """Whether the student's value is a multiple of the expected one (within the tolerance), or cannot tell: a
+    number, another shape, or an expected value of zeros."""
+    got, expected = evidence.got, evidence.expected
+    if got is None or expected is None or got.shape != expected.shape or got.size < 2:
+        return True
+    e, g = np.ravel(expected).astype(float), np.ravel(got).astype(float)
+    if not (np.all(np.isfinite(e)) and np.all(np.isfinite(g))) or not np.any(e):
+        return True
+    return within(got, (g @ e) / (e @ e) * expected, evidence.tol)
 
 
 def _described(scene: Scene, evidence: Evidence) -> list | None:

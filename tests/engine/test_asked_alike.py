@@ -31,7 +31,8 @@ from ..submissions import Planted
 FACTOR_LEFT_OUT = Planted(
     name="asked-alike-p26-jacobian-factor-left-out", problem=26, file="problem_26.py",
     old="[-radius * sb, l3 * cp * cb],", new="[-radius * sb, l3 * cb],",
-    check="p26.jacobian_derivative", diagnosis="missing_factor", message="one factor of a product in `jacobian`")
+    check="p26.jacobian_derivative", diagnosis="missing_factor or missing_term",
+    message="one factor of a product in `jacobian`")
 
 
 @pytest.fixture(scope="module")
