@@ -17,6 +17,9 @@ student's answer, not where a property of the answer that the slip would give ha
   vanishes with no gravity and with gravity out of the plane alike, so each is told only where the model's gravity
   is the slip's.  Planted: gravity along z (``gravity_axis``, ``tests/planted/problem_04.toml`` grades it live);
   near misses: gravity along x, or of another size, names neither.
+* A run that stops where its t_max says follows its t_max (problem 42's ball thrown with a t_max before its
+  landing): ``ignored_argument`` is told only where the run goes past it, not where it ends there and reports a
+  landing it did not find.
 """
 
 import numpy as np
@@ -195,3 +198,42 @@ def slot():
 
 def test_a_link_built_without_its_angle_is_told_live_and_in_the_kit(tmp_path, kit_oracle, deferred_ids, slot):
     assert_told_alike(LINK2_UNTURNED, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+
+
+# ------------------------------------------------------------------------------------------ problem 42's t_max
+
+
+def _cut_short(t_land, t_end):
+    """Problem 42's ball thrown with a t_max before its landing, the student's run landing at ``t_land`` and ending
+    at ``t_end``: the failure of ``_assert_cut_short`` (None where it passes)."""
+    from checks import problem_42 as c42
+
+    class Ctx:
+        def reference(self, probe, *args):
+            return {"t_land": None, "t_end": c42.CUT}
+
+        def student(self, probe, *args, timeout=None):
+            return {"t_land": t_land, "t_end": t_end}
+
+    try:
+        c42._assert_cut_short(Ctx())
+    except CheckFailure as failure:
+        return failure
+    return None
+
+
+def test_a_run_that_goes_past_t_max_is_told_t_max_ignored():
+    from checks import problem_42 as c42
+
+    failure = _cut_short(c42.CUT + 1.7, c42.CUT + 1.7)
+    assert failure is not None and failure.diagnosis == "ignored_argument", failure
+
+
+def test_a_landing_reported_at_the_end_of_a_run_that_stops_at_t_max_is_no_t_max_ignored():
+    """Planted: the run's last time reported as its landing (it ends at t_max, in the air); the near miss above."""
+    from checks import problem_42 as c42
+
+    failure = _cut_short(c42.CUT, c42.CUT)
+    assert failure is not None and not failure.diagnosis, failure
+    assert "t_land is None" in failure.hint
+    assert _cut_short(None, c42.CUT) is None
