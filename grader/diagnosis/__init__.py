@@ -9,7 +9,8 @@ matrix symmetric, a positive mass positive; a draw on which the reference raises
 not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
 (none, or more than two).  It never names a default cause.  Where it has one input only (nothing to draw), a slip
 of the grammar is told only where that value differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more:
-one or two numbers are matched by some of the grammar's many slips by chance, whatever made them.
+one or two numbers are matched by some of the grammar's many slips by chance, whatever made them (beside a run's
+wrong start, which the answer proves, such a slip is told as a twin: "could be" either).
 
 Every tier is heard (the run's, the outputs', the inputs', the declared terms', the test of an argument ignored,
 the formulas'), even where an earlier one explained the answer: a slip that two tiers reproduce alike, with two
@@ -80,7 +81,8 @@ The grammar:
   where the event itself is found where the reference's is), the state at an event read from the run's last output
   before it, a wrong initial state (and, beside it, the slip of a value that gives the student's start from the
   given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start typed
-  rounded, its entries exchanged),
+  rounded, its entries exchanged; on fewer numbers as a twin of the wrong start, "could be" either: one angle
+  typed with the wrong sign),
   an event found late or early, an error that grows with the step, the run's
   parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the
   reference re-run so: a run clearly another than the reference's, or one far nearer to the student's than the

@@ -582,7 +582,10 @@ def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
     the answer shows, and the grammar's slips of a value (``output_slips``: entries exchanged, a sign, a factor,
     degrees; ``precision_slips``: the start rounded) that give the student's start from the given one say what
     produced it.  Each is told beside the start that differs, at its ``cost``: the start is wrong, and so made.  The
-    start is one value, so it must say enough of its slip (``numbers_told``, ``ONE_INPUT_NUMBERS``)."""
+    start is one value, so it must say enough of its slip (``numbers_told``, ``ONE_INPUT_NUMBERS``) to be told as
+    what made it; where it says fewer numbers (one angle typed with the wrong sign, two rates exchanged) the slip
+    is told as a twin of the wrong start, "could be" either: a start wrong in a number or two is as truly that
+    number's slip, and a twin is left out where it would take the families told past ``MAX_FAMILIES``."""
     aligned = aligned_runs(run, decl)
     if aligned is None:
         return []
@@ -592,14 +595,16 @@ def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
         return []
     got = np.concatenate([np.ravel(G[k][0]) for k in keys])
     E = np.concatenate([np.ravel(R[k][0]) for k in keys])
-    if not np.all(np.isfinite(got)) or numbers_told(got, E, run.tol) < ONE_INPUT_NUMBERS:
+    told = numbers_told(got, E, run.tol) if np.all(np.isfinite(got)) else 0
+    if not told:
         return []
+    few = told < ONE_INPUT_NUMBERS
     slips = precision_slips(got, E, run.tol) + [
         h for h, value in output_slips(E, {}, None, got)
         if not h.twin and value.shape == got.shape and within(got, value, run.tol) and distinct(value, E, run.tol)]
-    trace.note("start", found=[h.name for h in slips])
+    trace.note("start", found=[h.name for h in slips], numbers=told)
     return [Hypothesis(f"{START_KEY}:{h.key}", h.name, cost, f"your run's start is the given one changed so: "
-                       f"{h.detail}") for h in slips]
+                       f"{h.detail}", twin=few) for h in slips]
 
 
 #: the unlike slips of the formula tier that may reproduce one answer on every input and still be told: more say

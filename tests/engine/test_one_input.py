@@ -2,10 +2,11 @@
 
 A start that differs is what the answer shows, not what made it so: where the grammar of a value gives the
 student's start from the given one (rounded, entries exchanged, negated), that slip is told beside the wrong start
-(``engine._start_slips``).  The start is one value, so it must say enough of its slip: the entries that differ from
-the given start must be ``evidence.ONE_INPUT_NUMBERS`` distinct values or more (``evidence.numbers_told``); one
-number (one entry rounded) or two (a pair exchanged) are matched by some of the grammar's many slips by chance, and
-entries that repeat one value say it once.
+(``engine._start_slips``).  The start is one value, so it must say enough of its slip to be told as what made it: the
+entries that differ from the given start must be ``evidence.ONE_INPUT_NUMBERS`` distinct values or more
+(``evidence.numbers_told``); one number or two (a pair exchanged) are matched by some of the grammar's many slips by
+chance, and entries that repeat one value say it once.  On fewer numbers the slip is told as a twin of the wrong
+start ("could be" either): one angle typed with the wrong sign is as truly a sign slip as a wrong start.
 
 Any other value the engine has on one input (nothing to draw: a constant of the model, a value whose arguments do
 not change it) is held to the same rule: the grammar's slips of a value and of its arguments, and the slips of
@@ -81,6 +82,15 @@ def test_a_start_typed_short_is_told_as_rounded_beside_the_wrong_start(monkeypat
     finding = _explain_start(monkeypatch, np.round(START, 2))
     assert set(_names(finding)) == {"initial_state", "rounded"}, finding
     assert "rounded to 2 decimals" in finding.hint, finding.hint
+
+
+def test_a_start_wrong_in_a_number_or_two_by_a_slip_is_told_could_be_that_slip(monkeypatch):
+    """One angle typed with the wrong sign, two angles exchanged: too few numbers to tell the slip as what made
+    the start, so it is told as a twin of the wrong start ("could be" either)."""
+    finding = _explain_start(monkeypatch, START * np.array([1.0, -1.0, 1.0]))
+    assert set(_names(finding)) == {"initial_state", "sign_flip"}, finding
+    assert "entry 2 has the opposite sign" in finding.hint and finding.hint.startswith("Could be"), finding.hint
+    assert set(_names(_explain_start(monkeypatch, START[[1, 0, 2]]))) == {"initial_state", "swapped"}
 
 
 def test_a_start_that_no_slip_gives_is_told_as_a_wrong_start_alone(monkeypatch):
