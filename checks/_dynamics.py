@@ -10,7 +10,8 @@
   reply at the same case only says whether the student's model is real (``checks._real``): a model that does
   nothing is consistent with itself and earns nothing.
 * ``compare_mfg``: ``M``, ``f``, ``g`` against the reference with the mistake catalogue of ``_dynamics.mfg_mistakes``.
-* Runs (simulations): the first departure from a reference run, and figures.
+* Runs (simulations): the first departure from a reference run, and figures; a start that is not the given one
+  told with the slip of a typed value that makes it (``wrong_start``).
 * Right-hand sides along a run: called at several states in turn on one tree, as an integrator calls them, they
   give what they give on a fresh tree (``assert_fresh_along_a_run``): a mass matrix computed once and reused is
   ``stale_mass_matrix``.
@@ -27,6 +28,7 @@ from grader.checking import (
     as_array,
     assert_close,
     close,
+    diagnose,
     fail,
     figure,
     format_array,
@@ -50,6 +52,7 @@ from ._real import mass_matrix_flaw, rank_flaw, real, require_real
 from ._shapes import as_list
 
 __all__ = [
+    "wrong_start",
     "H",
     "LAGRANGE_DIFFERENCES",
     "KINDS",
@@ -370,6 +373,22 @@ def first_departure(got, expected, tol):
     bad = np.abs(got - expected) > tol.atol + tol.rtol * np.abs(expected)
     rows = np.flatnonzero(bad.reshape(bad.shape[0], -1).any(axis=1))
     return int(rows[0]) if rows.size else None
+
+
+def wrong_start(got, given, hint: str, tol: Tol = EXACT) -> tuple[str, str]:
+    """``(hint, diagnosis)`` of a run that starts from ``got`` where the ``given`` start belongs: a wrong start
+    (``initial_state``), and, "could be" beside it, a slip of a value that gives ``got`` from ``given`` (an angle
+    typed with the wrong sign, two rates exchanged, rates in degrees: ``grader.diagnosis.engine.value_slips``), as
+    the engine tells a run's start; the wrong start alone where no slip gives it or its slips take the families
+    past two."""
+    from checks._diagnoses import DIAGNOSES
+    from grader.diagnosis.engine import value_slips
+
+    slips = {h.name: h.detail for h in value_slips(got, given, tol)}
+    if not slips or len({DIAGNOSES[name].family for name in ["initial_state", *slips]}) > 2:
+        return hint, "initial_state"
+    return diagnose([Mistake("initial_state", None, hint)] + [
+        Mistake(name, None, f"Your start is the given one changed so: {detail}.") for name, detail in slips.items()])
 
 
 def run_array(run, key, shape, what, times=None):

@@ -46,6 +46,7 @@ from ._dynamics import (
     run_array,
     run_figure,
     tree_cases,
+    wrong_start,
 )
 from ._real import is_real, mass_matrix_flaw, real, require_real
 from ._upstream import judging
@@ -456,8 +457,8 @@ def _assert_starts_on_the_table(ctx, controller):
         reread = None if typed else _reread(got, ours, REREAD)
         if reread is not None:
             raise CheckFailure(exc.message, *reread, evidence=exc.evidence) from None
-        raise CheckFailure(exc.message, TYPED_START_HINT if typed else INITIAL_HINT,
-                           "typed_numbers" if typed else "initial_state", evidence=exc.evidence) from None
+        raise CheckFailure(exc.message, *(TYPED_START_HINT, "typed_numbers") if typed else
+                           wrong_start(mine, start, INITIAL_HINT), evidence=exc.evidence) from None
 
 
 def _reread(got, expected, tol=BAND["q"]):

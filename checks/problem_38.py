@@ -28,7 +28,15 @@ from grader.checking import (
 )
 from probes import _dynamics as probe_dynamics, problem_38 as p38
 
-from ._dynamics import WALKER, assert_energy_conserved, assert_fresh_along_a_run, assert_run, run_array, run_figure
+from ._dynamics import (
+    WALKER,
+    assert_energy_conserved,
+    assert_fresh_along_a_run,
+    assert_run,
+    run_array,
+    run_figure,
+    wrong_start,
+)
 from ._upstream import judging
 
 TITLE = "Passive Dynamic Walker"
@@ -136,9 +144,9 @@ def check_walker_run(ctx):
         assert_run(got, expected, ("q", "qd"), BAND, "the walker's run",
                    note="Any solve_ivp method at its default tolerances stays within the band.")
     except CheckFailure as exc:
-        start = np.concatenate([expected["q"][0], expected["qd"][0]])
-        if not close(np.concatenate([got["q"][0], got["qd"][0]]), start, EXACT):
-            raise CheckFailure(exc.message, "The run starts at q0 = (0, 0), qd0 = (-0.1, +1).", "initial_state",
+        start, mine = np.concatenate([expected["q"][0], expected["qd"][0]]), np.concatenate([got["q"][0], got["qd"][0]])
+        if not close(mine, start, EXACT):
+            raise CheckFailure(exc.message, *wrong_start(mine, start, "The run starts at q0 = (0, 0), qd0 = (-0.1, +1)."),
                                evidence=exc.evidence) from None
         raise
     _assert_small_motion(ctx)
@@ -192,8 +200,8 @@ def _assert_small_motion(ctx):
                      context="(the start passed to simulate)")
     except CheckFailure as exc:
         typed = close(start, SHEET_START, EXACT)
-        raise CheckFailure(exc.message, START_HINT, "typed_numbers" if typed else "initial_state",
-                           evidence=exc.evidence) from None
+        raise CheckFailure(exc.message, *(START_HINT, "typed_numbers") if typed else
+                           wrong_start(start, np.concatenate(SMALL_START), START_HINT), evidence=exc.evidence) from None
     assert_run(got, expected, ("q", "qd"), SMALL_BAND, f"the small motion of {what}", hint=SMALL_HINT,
                diagnosis="integration",
                note="Any solve_ivp method at its default tolerances stays within the band; the motion itself is a "

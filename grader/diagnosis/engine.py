@@ -72,6 +72,7 @@ from .runs import (
 
 __all__ = [
     "RECORDING",
+    "value_slips",
     "find",
     "doubted",
     "recording",
@@ -599,12 +600,23 @@ def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
     if not told:
         return []
     few = told < ONE_INPUT_NUMBERS
-    slips = precision_slips(got, E, run.tol) + [
-        h for h, value in output_slips(E, {}, None, got)
-        if not h.twin and value.shape == got.shape and within(got, value, run.tol) and distinct(value, E, run.tol)]
+    slips = value_slips(got, E, run.tol)
     trace.note("start", found=[h.name for h in slips], numbers=told)
     return [Hypothesis(f"{START_KEY}:{h.key}", h.name, cost, f"your run's start is the given one changed so: "
                        f"{h.detail}", twin=few) for h in slips]
+
+
+def value_slips(got, given, tol: Tol) -> list:
+    """The grammar's slips of one value (``output_slips``: entries exchanged, a sign, a factor, degrees;
+    ``precision_slips``: rounded) that give the student's ``got`` from the ``given`` one, each a hypothesis: what
+    made a start typed wrongly, say.  Told beside the wrong value, never as its only cause where it says fewer
+    than ``ONE_INPUT_NUMBERS`` numbers."""
+    got, given = np.asarray(got, dtype=float), np.asarray(given, dtype=float)
+    if got.shape != given.shape or not np.all(np.isfinite(got)):
+        return []
+    return precision_slips(got, given, tol) + [
+        h for h, value in output_slips(given, {}, None, got)
+        if not h.twin and value.shape == got.shape and within(got, value, tol) and distinct(value, given, tol)]
 
 
 #: the unlike slips of the formula tier that may reproduce one answer on every input and still be told: more say

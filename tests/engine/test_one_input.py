@@ -135,3 +135,17 @@ def test_one_or_two_numbers_off_on_one_input_name_no_slip_of_the_grammar(monkeyp
     assert _names(_explain_one(monkeypatch, [0.0, -0.25, 0.0], [0.0, -0.5, 0.0])) == ()
     assert _names(_explain_one(monkeypatch, 1.2346, 1.23)) == ()
     assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [-0.31, 0.52, 0.17])) == ()
+
+
+def test_a_checks_wrong_start_is_told_with_the_slip_that_makes_it():
+    """A check that names a run's wrong start itself (``checks._dynamics.wrong_start``) tells the slip of a value
+    beside it as the engine does: a start at rest in the middle position with its rates typed as half of them; the
+    near miss, a start no slip gives, is a wrong start alone."""
+    from checks._dynamics import wrong_start
+
+    given = np.concatenate([np.zeros(3), RATES])
+    hint, diagnosis = wrong_start(np.concatenate([np.zeros(3), RATES / 2]), given, "Start at the given state.")
+    assert diagnosis == "initial_state or factor_half" and "Start at the given state." in hint, (diagnosis, hint)
+    assert "your value is half the expected one" in hint, hint
+    assert wrong_start(given + 0.013, given, "Start at the given state.") == ("Start at the given state.",
+                                                                            "initial_state")
