@@ -918,21 +918,27 @@ def _same_shape(evidence: Evidence) -> bool:
 
 def _single(one: _Input) -> _Input:
     """With a single input (nothing to draw), only hypotheses whose value is clearly another than the expected one
-    are kept: a near-degenerate input tells little.  Nor any where the value says too few numbers of its slip
-    (``_told_enough``)."""
+    are kept: a near-degenerate input tells little.  Nor a slip of a number's size (``BY_CHANCE``) where the value
+    says too few numbers of its slip (``_told_enough``)."""
     ev = one.evidence
     enough = _told_enough(ev)
     for key in list(one.predicted):
-        if not enough or not distinct(one.predicted[key], ev.expected, ev.tol):
+        chance = not enough and DIAGNOSES[one.hypotheses[key].name].family in BY_CHANCE
+        if chance or not distinct(one.predicted[key], ev.expected, ev.tol):
             del one.predicted[key]
     return one
 
 
+#: the families of the slips that a number or two match by chance: a factor (quantities of a problem stand in
+#: simple ratios, a full length and a half) and a rounding (times sit on grids)
+BY_CHANCE = ("scale", "precision")
+
+
 def _told_enough(evidence: Evidence) -> bool:
-    """Whether a comparison the engine has on one input only says enough numbers of its slip for a slip of the
-    grammar found on it to be told (``numbers_told``, ``ONE_INPUT_NUMBERS``, as for a run's start): one or two
-    numbers off (a joint's one offset twice its length, an end time on the grid) are matched by some of the
-    grammar's many slips by chance, whatever made them."""
+    """Whether a comparison the engine has on one input only says enough numbers of its slip for a slip of a
+    number's size (``BY_CHANCE``) found on it to be told (``numbers_told``, ``ONE_INPUT_NUMBERS``, as for a run's
+    start): one or two numbers off (a joint's one offset twice its length, an end time on the output grid) are
+    matched by a factor or a rounding by chance, whatever made them."""
     told = numbers_told(evidence.got, evidence.expected, evidence.tol)
     if told < ONE_INPUT_NUMBERS:
         trace.note("single", numbers=told)

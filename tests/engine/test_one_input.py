@@ -9,11 +9,11 @@ chance, and entries that repeat one value say it once.  On fewer numbers the sli
 start ("could be" either): one angle typed with the wrong sign is as truly a sign slip as a wrong start.
 
 Any other value the engine has on one input (nothing to draw: a constant of the model, a value whose arguments do
-not change it) is held to the same rule: the grammar's slips of a value and of its arguments, and the slips of
-precision, are told on it only where it says ``ONE_INPUT_NUMBERS`` distinct numbers of its slip
+not change it) is held to the same rule for the slips of a number's size (``engine.BY_CHANCE``: a factor, a unit,
+a rounding): they are told on it only where it says ``ONE_INPUT_NUMBERS`` distinct numbers of its slip
 (``engine._told_enough``).  A joint placed a whole link along an axis where half a link belongs is twice the
 expected offset in its one number, and a time read off a grid is that time rounded: what made the number is not
-what its shape says.
+what its shape says.  A sign or an exchange of entries relates entries of the value itself and keeps its name.
 
 The runs and values below are made up, each a slip none of the fresh sets holds; the near misses are a start no
 slip gives, the same slip on too few numbers, and a value of three numbers on one input, which keeps its slip.
@@ -127,14 +127,16 @@ def test_a_slip_of_the_grammar_on_one_input_is_told_where_the_value_says_enough(
     assert _names(_explain_one(monkeypatch, point, -point)) == ("sign_flip",)
 
 
-def test_one_or_two_numbers_off_on_one_input_name_no_slip_of_the_grammar(monkeypatch):
+def test_one_or_two_numbers_off_on_one_input_name_no_factor_or_rounding(monkeypatch):
     """Planted: a joint placed one link length along y, where the expected offset is half a link (one number, twice
     the expected one, by what the offset is and not by a factor); an end time that is a grid's last sample (one
-    number, rounded to the grid); two coordinates of a point typed negated (two numbers, which also read as a
-    sign of the whole, of a row, of entries)."""
+    number, rounded to the grid); a point's two coordinates at a tenth of their size (a unit, on two numbers).  The
+    near misses: a coordinate typed negated, or two exchanged, keep their slips (entries of the value itself)."""
     assert _names(_explain_one(monkeypatch, [0.0, -0.25, 0.0], [0.0, -0.5, 0.0])) == ()
     assert _names(_explain_one(monkeypatch, 1.2346, 1.23)) == ()
-    assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [-0.31, 0.52, 0.17])) == ()
+    assert _names(_explain_one(monkeypatch, [0.31, 0.0, -0.52], [0.031, 0.0, -0.052])) == ()
+    assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [0.31, 0.52, 0.17])) == ("sign_flip",)
+    assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [-0.52, 0.31, 0.17])) == ("swapped",)
 
 
 def test_a_checks_wrong_start_is_told_with_the_slip_that_makes_it():
