@@ -7,11 +7,11 @@ randomized comparison's second failing input, or an input the engine draws itsel
 drawn anew, or else every float of its arguments varied but kept what it is, a rotation a rotation, a symmetric
 matrix symmetric, a positive mass positive; a draw on which the reference raises or gives a degenerate value is
 not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
-(none, or more than two).  It never names a default cause.  Where it has one input only (nothing to draw), a slip
-of a number's size (a factor, a unit, a rounding) is told only where that value differs in
-``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: one or two numbers are matched by a factor or a rounding
-by chance, whatever made them (a full length for a half, a time on a grid); beside a run's wrong start, which the
-answer proves, the slips of a value found on fewer numbers are told as twins: "could be" either.
+(none, or more than two).  It never names a default cause.  Where it has one array on one input only (nothing to
+draw), a slip of a number's size (a factor, a unit, a rounding) is told only where the array differs in
+``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: one or two numbers among zeros are matched by a factor by
+chance, whatever made them (a full length for a half); beside a run's wrong start, which the answer proves, the
+slips of a value found on fewer numbers are told as twins: "could be" either.
 
 Every tier is heard (the run's, the outputs', the inputs', the declared terms', the test of an argument ignored,
 the formulas'), even where an earlier one explained the answer: a slip that two tiers reproduce alike, with two

@@ -929,16 +929,19 @@ def _single(one: _Input) -> _Input:
     return one
 
 
-#: the families of the slips that a number or two match by chance: a factor (quantities of a problem stand in
-#: simple ratios, a full length and a half) and a rounding (times sit on grids)
+#: the families of the slips that a number or two of an array match by chance: a factor (quantities of a problem
+#: stand in simple ratios, a full length and a half) and a rounding
 BY_CHANCE = ("scale", "precision")
 
 
 def _told_enough(evidence: Evidence) -> bool:
-    """Whether a comparison the engine has on one input only says enough numbers of its slip for a slip of a
-    number's size (``BY_CHANCE``) found on it to be told (``numbers_told``, ``ONE_INPUT_NUMBERS``, as for a run's
-    start): one or two numbers off (a joint's one offset twice its length, an end time on the output grid) are
-    matched by a factor or a rounding by chance, whatever made them."""
+    """Whether an array the engine has on one input only says enough numbers of its slip for a slip of a number's
+    size (``BY_CHANCE``) found on it to be told (``numbers_told``, ``ONE_INPUT_NUMBERS``, as for a run's start):
+    an array whose difference lies in one or two numbers among zeros (a joint's one offset twice its length) has
+    its shape right and those numbers wrong, which a factor matches by chance whatever made them.  A single number
+    is the whole answer, and a factor or a rounding of it is told as before."""
+    if evidence.expected is None or np.size(evidence.expected) < 2:
+        return True
     told = numbers_told(evidence.got, evidence.expected, evidence.tol)
     if told < ONE_INPUT_NUMBERS:
         trace.note("single", numbers=told)
