@@ -17,6 +17,9 @@ student's answer, not where a property of the answer that the slip would give ha
   vanishes with no gravity and with gravity out of the plane alike, so each is told only where the model's gravity
   is the slip's.  Planted: gravity along z (``gravity_axis``, ``tests/planted/problem_04.toml`` grades it live);
   near misses: gravity along x, or of another size, names neither.
+* A term that vanishes is not told left out where what it is made of is lost (problem 15's gyroscopic term,
+  omega x (B_I_B omega), vanishes with an inertia that is a multiple of the identity): ``missing_gyroscopic`` is
+  told only where the body's angular momentum is the inertia it is given times omega.
 * A run that stops where its t_max says follows its t_max (problem 42's ball thrown with a t_max before its
   landing): ``ignored_argument`` is told only where the run goes past it, not where it ends there and reports a
   landing it did not find.
@@ -237,3 +240,33 @@ def test_a_landing_reported_at_the_end_of_a_run_that_stops_at_t_max_is_no_t_max_
     assert failure is not None and not failure.diagnosis, failure
     assert "t_land is None" in failure.hint
     assert _cut_short(None, c42.CUT) is None
+
+
+# ------------------------------------------------------------------------------------------ problem 15's gyroscopic term
+
+
+def _natural(omega_dot, inertia):
+    """Problem 15's comparison of the natural dynamics at its generic state, the student's omegaDot ``omega_dot``
+    and their body's inertia ``inertia`` (what its angular momentum is made of): the failure's diagnosis."""
+    from checks import problem_15 as c15
+
+    state = c15.GENERIC_STATE
+
+    class Ctx:
+        def student(self, probe, state):
+            return np.asarray(inertia, dtype=float) @ np.asarray(state["B_omega_B"], dtype=float)
+
+    expected = {key: value for key, value in zip(("B_a_B", "B_omegaDot_B"), c15.natural_dynamics(state))}
+    got = {"B_a_B": np.zeros(3), "B_omegaDot_B": np.asarray(omega_dot, dtype=float)}
+    with pytest.raises(CheckFailure) as failure:
+        c15._compare_accelerations(got, expected, state, lambda: c15._keeps_inertia(Ctx(), state))
+    return failure.value.diagnosis
+
+
+def test_a_gyroscopic_term_that_vanishes_with_an_inertia_lost_is_no_term_left_out():
+    """Planted: a body that keeps twice the identity for its inertia (omega x (I omega) vanishes, written right);
+    the near miss: the inertia kept and the term left out is named."""
+    from checks import problem_15 as c15
+
+    assert _natural(np.zeros(3), 2.0 * np.eye(3)) == ""
+    assert _natural(np.zeros(3), c15.GENERIC_STATE["B_I_B"]) == "missing_gyroscopic"
