@@ -146,8 +146,8 @@ def check_walker_run(ctx):
     except CheckFailure as exc:
         start, mine = np.concatenate([expected["q"][0], expected["qd"][0]]), np.concatenate([got["q"][0], got["qd"][0]])
         if not close(mine, start, EXACT):
-            raise CheckFailure(exc.message, *wrong_start(mine, start, "The run starts at q0 = (0, 0), qd0 = (-0.1, +1)."),
-                               evidence=exc.evidence) from None
+            hint = "The run starts at q0 = (0, 0), qd0 = (-0.1, +1)."
+            raise CheckFailure(exc.message, *wrong_start(mine, start, hint), evidence=exc.evidence) from None
         raise
     _assert_small_motion(ctx)
 

@@ -9,9 +9,9 @@ matrix symmetric, a positive mass positive; a draw on which the reference raises
 not used); it ranks them by simplicity and says "looks like X" (one family), "could be X or Y" (two) or nothing
 (none, or more than two).  It never names a default cause.  Where it has one array on one input only (nothing to
 draw), a slip of a number's size (a factor, a unit, a rounding) is told only where the array differs in
-``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: one or two numbers among zeros are matched by a factor by
-chance, whatever made them (a full length for a half); beside a run's wrong start, which the answer proves, the
-slips of a value found on fewer numbers are told as twins: "could be" either.
+``evidence.ONE_INPUT_NUMBERS`` entries or more: one or two entries among zeros are matched by a factor by chance,
+whatever made them (a full length for a half); beside a run's wrong start, which the answer proves, the slips of a
+value found on fewer numbers are told as twins: "could be" either.
 
 Every tier is heard (the run's, the outputs', the inputs', the declared terms', the test of an argument ignored,
 the formulas'), even where an earlier one explained the answer: a slip that two tiers reproduce alike, with two

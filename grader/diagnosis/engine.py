@@ -935,17 +935,18 @@ BY_CHANCE = ("scale", "precision")
 
 
 def _told_enough(evidence: Evidence) -> bool:
-    """Whether an array the engine has on one input only says enough numbers of its slip for a slip of a number's
-    size (``BY_CHANCE``) found on it to be told (``numbers_told``, ``ONE_INPUT_NUMBERS``, as for a run's start):
-    an array whose difference lies in one or two numbers among zeros (a joint's one offset twice its length) has
-    its shape right and those numbers wrong, which a factor matches by chance whatever made them.  A single number
-    is the whole answer, and a factor or a rounding of it is told as before."""
-    if evidence.expected is None or np.size(evidence.expected) < 2:
+    """Whether an array the engine has on one input only differs in enough entries for a slip of a number's size
+    (``BY_CHANCE``) found on it to be told (``ONE_INPUT_NUMBERS`` entries, as many as a run's start must say): an
+    array whose difference lies in one or two entries among zeros (a joint's one offset twice its length) has its
+    shape right and those entries wrong, which a factor matches by chance whatever made them.  A single number is
+    the whole answer, and a factor or a rounding of it is told as before."""
+    got, expected = evidence.got, evidence.expected
+    if expected is None or got is None or np.size(expected) < 2 or np.shape(got) != np.shape(expected):
         return True
-    told = numbers_told(evidence.got, evidence.expected, evidence.tol)
-    if told < ONE_INPUT_NUMBERS:
-        trace.note("single", numbers=told)
-    return told >= ONE_INPUT_NUMBERS
+    off = int(np.count_nonzero(np.abs(got - expected) > evidence.tol.atol + evidence.tol.rtol * np.abs(expected)))
+    if off < ONE_INPUT_NUMBERS:
+        trace.note("single", entries=off)
+    return off >= ONE_INPUT_NUMBERS
 
 
 #: the families a finding may span, at most: past them, that many causes fit the answer alike and none is told

@@ -242,7 +242,7 @@ def test_a_landing_reported_at_the_end_of_a_run_that_stops_at_t_max_is_no_t_max_
     assert _cut_short(None, c42.CUT) is None
 
 
-# ------------------------------------------------------------------------------------------ problem 15's gyroscopic term
+# ---------------------------------------------------------------------------------- problem 15's gyroscopic term
 
 
 def _natural(omega_dot, inertia):

@@ -10,11 +10,11 @@ start ("could be" either): one angle typed with the wrong sign is as truly a sig
 
 Any other value the engine has on one input (nothing to draw: a constant of the model, a value whose arguments do
 not change it) is held to the same rule for the slips of a number's size (``engine.BY_CHANCE``: a factor, a unit,
-a rounding) where it is an array: they are told on it only where it says ``ONE_INPUT_NUMBERS`` distinct numbers of
-its slip (``engine._told_enough``).  A joint placed a whole link along an axis where half a link belongs is twice
-the expected offset in its one number: what made the number is not what the array's shape says.  A single number
-is the whole answer and keeps its factor; a sign or an exchange of entries relates entries of the value itself and
-keeps its name.
+a rounding) where it is an array: they are told on it only where it differs in ``ONE_INPUT_NUMBERS`` entries or
+more (``engine._told_enough``).  A joint placed a whole link along an axis where half a link belongs is twice the
+expected offset in its one entry: what made the number is not what the array's shape says.  A single number is the
+whole answer and keeps its factor, and so does an array off in three entries that repeat one value (a diagonal
+matrix halved); a sign or an exchange of entries relates entries of the value itself and keeps its name.
 
 The runs and values below are made up, each a slip none of the fresh sets holds; the near misses are a start no
 slip gives, the same slip on too few numbers, and a value of three numbers on one input, which keeps its slip.
@@ -131,11 +131,13 @@ def test_a_slip_of_the_grammar_on_one_input_is_told_where_the_value_says_enough(
 def test_one_or_two_numbers_off_on_one_input_name_no_factor_or_rounding(monkeypatch):
     """Planted: a joint placed one link length along y, where the expected offset is half a link (one number, twice
     the expected one, by what the offset is and not by a factor); a point's two coordinates at a tenth of their
-    size (a unit, on two numbers).  The near misses: a single number rounded keeps its rounding (it is the whole
-    answer); a coordinate typed negated, or two exchanged, keep their slips (entries of the value itself)."""
+    size (a unit, on two entries).  The near misses: a single number rounded keeps its rounding (it is the whole
+    answer), a diagonal matrix halved its factor (three entries); a coordinate typed negated, or two exchanged,
+    keep their slips (entries of the value itself)."""
     assert _names(_explain_one(monkeypatch, [0.0, -0.25, 0.0], [0.0, -0.5, 0.0])) == ()
     assert _names(_explain_one(monkeypatch, [0.31, 0.0, -0.52], [0.031, 0.0, -0.052])) == ()
     assert _names(_explain_one(monkeypatch, 1.2346, 1.23)) == ("rounded",)
+    assert _names(_explain_one(monkeypatch, 0.7 * np.eye(3), 0.35 * np.eye(3))) == ("factor_half",)
     assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [0.31, 0.52, 0.17])) == ("sign_flip",)
     assert _names(_explain_one(monkeypatch, [0.31, -0.52, 0.17], [-0.52, 0.31, 0.17])) == ("swapped",)
 
