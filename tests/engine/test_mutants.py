@@ -594,15 +594,17 @@ def made_up(tmp_path, monkeypatch):
         yield package
 
 
-def made_up_probe(name):
+def made_up_probe(name, number=98):
+    """The probe of ``name`` in the made-up problem ``number`` of the package it is given."""
     def probe(pkg, *args):
-        return getattr(importlib.import_module(f"{pkg.__name__}.problem_98"), name)(*args)
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_{number}"), name)(*args)
 
     return probe
 
 
-def made_up_evidences(package, name, student, inputs, path=()):
-    probe = made_up_probe(name)
+def made_up_evidences(package, name, student, inputs, path=(), number=98):
+    """The comparisons of ``student`` with ``name`` of the made-up problem ``number`` on each of ``inputs``."""
+    probe = made_up_probe(name, number)
     return [Evidence(array_of(at(student(*args), path)), array_of(at(probe(package, *args), path)), TIGHT,
                      "value", source=Source(probe, args, path)) for args in inputs]
 

@@ -9,19 +9,17 @@ draw a second input for), only where the student's value is in the band.  They a
 grades in ``tests/engine/test_reached.py``.
 """
 
-import importlib
-
 import numpy as np
 import pytest
 
 from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
 from grader.diagnosis import grammar, mutants
-from grader.diagnosis.evidence import Evidence, Source, array_of, at
+from grader.diagnosis.evidence import Evidence
 from grader.private import drop_private
 
 from .stand_ins import made_up_package
-from .test_mutants import BEARINGS, evidence, planted_package, scene
+from .test_mutants import BEARINGS, evidence, made_up_evidences, planted_package, scene
 
 TIGHT = Tol("tight", 1e-9, 1e-9)
 
@@ -130,11 +128,7 @@ def made_up(tmp_path, monkeypatch):
 
 def shown_alone(package, name, student, args):
     """The one comparison of ``name(*args)``: the engine has no second input of it."""
-    def probe(pkg, *a):
-        return getattr(importlib.import_module(f"{pkg.__name__}.problem_97"), name)(*a)
-
-    return [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), TIGHT, "value",
-                     source=Source(probe, args, ()))]
+    return made_up_evidences(package, name, student, [args], number=97)
 
 
 def one_input(package, name, student, args):

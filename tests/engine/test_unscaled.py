@@ -10,20 +10,14 @@ expected force); near misses: a weight without its mass (a multiple of the expec
 factor alone, and so does a number, which is a multiple of any other.
 """
 
-import importlib
-
 import numpy as np
 import pytest
 
-from grader.checking import Tol
 from grader.diagnosis import mutants
 from grader.diagnosis.engine import _told, _unscaled
-from grader.diagnosis.evidence import Evidence, Source, array_of, at
 
 from .stand_ins import made_up_package
-from .test_mutants import scene
-
-TIGHT = Tol("tight", 1e-9, 1e-9)
+from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem of a block on a slope."""
 
@@ -57,11 +51,7 @@ def made_up(tmp_path, monkeypatch):
 
 def _finding(package, name, student, inputs):
     """The formula tier's hypotheses for ``student`` where the made-up ``name`` belongs, as the engine tells them."""
-    def probe(pkg, *args):
-        return getattr(importlib.import_module(f"{pkg.__name__}.problem_96"), name)(*args)
-
-    evidences = [Evidence(array_of(student(*args)), array_of(at(probe(package, *args), ())), TIGHT, "value",
-                          source=Source(probe, args, ())) for args in inputs]
+    evidences = made_up_evidences(package, name, student, inputs, number=96)
     found = mutants.mutant_slips(scene("p96.made_up"), evidences)
     assert {h.name for h in found} == {"missing_factor"}, [(h.name, h.detail) for h in found]
     return _told([_unscaled(found, evidences)], "here")
