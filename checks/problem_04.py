@@ -17,8 +17,8 @@ import itertools
 import numpy as np
 
 from grader import strategies as st
+from grader.errors import StudentFault, ends_grading
 from grader.strategies import assume
-from grader.errors import ends_grading, StudentFault
 from grader.checking import (
     STAGE_DEFINED,
     STAGE_RANDOM,

@@ -251,8 +251,6 @@ class Slot:
         self.submit(task, seconds)
         while True:
             wait(self.waitables(), max(0.0, self.wakeup() - time.monotonic()))
-            if self.read_due():
-                self.read_counts()
             outcome = self.poll()
             if outcome is not None:
                 self.task = None
@@ -294,8 +292,8 @@ class Slot:
         if now is None or self._counts is None:
             return None
         (waits, cpu), (before, cpu_before) = now, self._counts
-        for tid, wait in waits.items():
-            self._waits[tid] = max(self._waits.get(tid, 0.0), wait - before.get(tid, 0.0))
+        for tid, seconds in waits.items():
+            self._waits[tid] = max(self._waits.get(tid, 0.0), seconds - before.get(tid, 0.0))
         return cpu - cpu_before
 
     def _grant(self, seconds: float) -> None:
@@ -310,7 +308,7 @@ class Slot:
         and the tree's wall time off a processor (as ``Child`` reads a call's), 0 where it cannot be read or is
         within the counters' noise.  A task that ended counts with its wait at the last read (``read_counts``)."""
         cpu = self.read_counts()
-        if cpu is None or not self._waits:
+        if cpu is None:  # else the tree had tasks to read, and their waits are kept
             return 0.0
         excess = excess_wait(time.monotonic() - self.started, cpu, max(self._waits.values()), self._own) or 0.0
         self._own += excess
@@ -320,7 +318,10 @@ class Slot:
         return [self.conn, self.process.sentinel]
 
     def poll(self) -> tuple[str, object] | None:
-        """``(kind, payload)`` once the worker answered, died or ran out of time; None while it works."""
+        """``(kind, payload)`` once the worker answered, died or ran out of time; None while it works (its tree's
+        counts read when a read is due, ``read_counts``)."""
+        if self.read_due():
+            self.read_counts()
         if self.conn.poll():
             try:
                 message = self.conn.recv()
@@ -369,9 +370,6 @@ def run_pool(tasks: list[Task], jobs: int, limits: Limits, mode: SandboxMode, pr
             busy = [s for s in slots if s.task is not None]
             timeout = max(0.0, min(s.wakeup() for s in busy) - time.monotonic()) if busy else None
             wait([w for s in slots if s.task is not None or not s.ready for w in s.waitables()], timeout)
-            for slot in busy:
-                if slot.read_due():
-                    slot.read_counts()
             for slot in slots:
                 if not slot.ready:
                     if slot.conn.poll() or not slot.process.is_alive():
