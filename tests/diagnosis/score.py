@@ -242,6 +242,7 @@ __all__ = [
     "FRESH10",
     "FRESH11",
     "FRESH12",
+    "FRESH13",
     "SETS",
     "HELD_OUT",
     "SYMPTOMS",
@@ -293,18 +294,21 @@ FRESH10 = ROOT / "tests" / "diagnosis" / "fresh10"
 FRESH11 = ROOT / "tests" / "diagnosis" / "fresh11"
 #: the twelfth held-out set, written like the eleventh apart from the engine
 FRESH12 = ROOT / "tests" / "diagnosis" / "fresh12"
+#: the thirteenth held-out set, written like the twelfth apart from the engine
+FRESH13 = ROOT / "tests" / "diagnosis" / "fresh13"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
         "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
         "fresh4": (FRESH4,), "fresh5": (FRESH5,), "fresh6": (FRESH6,), "fresh7": (FRESH7,),
         "fresh8": (FRESH8,), "fresh9": (FRESH9,), "fresh10": (FRESH10,),
-        "fresh11": (FRESH11,), "fresh12": (FRESH12,)}
+        "fresh11": (FRESH11,), "fresh12": (FRESH12,), "fresh13": (FRESH13,)}
 #: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
-#: when they were written, the fourth to the twelfth every realistic mistake whose check fails
+#: when they were written, the fourth to the thirteenth every realistic mistake whose check fails
 HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9", "fresh10",
-            "fresh11", "fresh12")
+            "fresh11", "fresh12", "fresh13")
 #: the held-out sets that sample every realistic mistake whose check fails (the issue's measure: ``--unlisted``)
-SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9", "fresh10", "fresh11", "fresh12")
+SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9", "fresh10", "fresh11", "fresh12",
+           "fresh13")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 
