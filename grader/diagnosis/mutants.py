@@ -118,6 +118,7 @@ import ast
 import contextlib
 import copy
 import ctypes
+import gc
 import itertools
 import pickle
 import re
@@ -2008,6 +2009,42 @@ _REFIRE = 0.5
 WAIT_FACTOR = 5.0
 
 
+#: the time each thread has spent in the garbage collector, ``[cpu, wall]`` [s] by thread ident, and where the
+#: collection under way in a thread began (``_collecting``)
+_COLLECTED: dict[int, list[float]] = {}
+_COLLECTING: dict[int, tuple[float, float]] = {}
+
+
+def _collecting(phase: str, info: dict) -> None:
+    """The garbage collector's callback that counts the time of each collection for the thread it runs in.  A
+    collection's cost is the process's: it walks every object the process holds (a batch's worker, a test run's,
+    holds many, from every grading before), and a full one may take a good part of a tier's budget, whichever
+    answer is being explained; the deadline does not count it (``_Deadline``)."""
+    thread = threading.get_ident()
+    if phase == "start":
+        _COLLECTING[thread] = (time.thread_time(), time.monotonic())
+        return
+    began = _COLLECTING.pop(thread, None)
+    if began is not None:
+        spent = _COLLECTED.setdefault(thread, [0.0, 0.0])
+        spent[0] += time.thread_time() - began[0]
+        spent[1] += time.monotonic() - began[1]
+
+
+if _collecting not in gc.callbacks:
+    gc.callbacks.append(_collecting)
+
+
+def _collected(thread: int, clock) -> float:
+    """The time ``thread`` has spent in the garbage collector so far, the one under way included: its CPU time where
+    ``clock`` (its CPU clock) is given, else wall time [s]."""
+    spent = _COLLECTED.get(thread, (0.0, 0.0))
+    began = _COLLECTING.get(thread)
+    if clock is not None:
+        return spent[0] + (time.clock_gettime(clock) - began[0] if began is not None else 0.0)
+    return spent[1] + (time.monotonic() - began[1] if began is not None else 0.0)
+
+
 def _cpu_clock(thread: int):
     """The CPU-time clock of ``thread`` (an ident of ``threading``), or None where it cannot be read."""
     try:
@@ -2037,7 +2074,8 @@ def _queued(path: str | None) -> float | None:
 class _Deadline:
     """Interrupts the running thread with ``_Timeout`` once it has spent ``seconds`` of CPU time, unless left
     before: what the tier may try does not depend on how loaded the machine is (a busy machine slows the wall clock,
-    not the work).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``: not on macOS or
+    not the work), nor on how much the process holds (the time of the garbage collector's collections in the thread
+    is not counted: ``_collecting``).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``: not on macOS or
     Windows) it counts wall time; and a thread that waits without working (for a lock, say) is interrupted after
     ``WAIT_FACTOR`` times ``seconds`` of wall time in any case, less the time it was ready to run and waited for a
     core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the work early.
@@ -2064,13 +2102,14 @@ class _Deadline:
         self.timer = threading.Thread(target=self._watch, daemon=True)
 
     def _now(self) -> tuple[float, float]:
-        """The thread's CPU time (wall time where it has no clock) and the wall time less the time it waited for a
-        core."""
+        """The thread's CPU time (wall time where it has no clock) less the time it spent collecting garbage, and
+        the wall time less the time it waited for a core."""
         wall = time.monotonic()
         queued = _queued(self.schedstat)
         if queued is not None:
             self.queued = queued
-        return (time.clock_gettime(self.clock) if self.clock is not None else wall), wall - self.queued
+        collected = _collected(self.thread, self.clock)
+        return (time.clock_gettime(self.clock) if self.clock is not None else wall) - collected, wall - self.queued
 
     def _accounts(self, now: tuple[float, float]) -> tuple[tuple[float, float], tuple[float, float]]:
         """``((cpu, wall) measuring, (cpu, wall) making)`` spent until ``now``."""
