@@ -10,7 +10,11 @@ The student's file of problem N (``problem_NN.py``) also holds code that the tem
 no region: problem 34's gait, problem 24's pendulum): a slip there is the student's too, but less likely than one in
 the code they wrote, so its functions' slips (``given``) are tried only where no slip of a region reproduced the
 student's value, and no earlier tier explained it, within a budget of their own (``GIVEN_TIME_BUDGET``); a list's
-entry written 0 there is data left out, told as a term left out and as an offset (``_ENTRIES``).  Last, where
+entry written 0 there is data left out, told as a term left out and as an offset (``_ENTRIES``).  Where the slips of
+the regions that reproduce it are all exchanges, or all signs, the given code's slips of the other of the two
+families are heard as well, within the same budget (``OPPOSITES``): two arguments exchanged in a call of a given
+function that takes their difference (``pd(q, qd_des, q_des, qd)``) are as truly that difference's sign, and the
+value cannot tell the edit from its effect.  Last, where
 nothing else reproduced it, the module constants that the call reads, of the problem's own module and of the library
 (the modules of no problem), directly, through a function's default or a constant computed from them, are typed
 otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
@@ -141,7 +145,7 @@ from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "MAKING_TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS",
            "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE",
-           "RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
+           "RIVALS", "OPPOSITES", "Mutant", "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -2624,6 +2628,34 @@ def _given(package, root: Path, problem: int, evidences: list[Evidence], origina
     return kept, mutants
 
 
+#: the families whose edits may each have the other's effect: two operands exchanged that enter as a difference
+#: (``qd - qd_des`` for ``qd_des - qd``, or the arguments of a call that takes that difference) negate it, a sign
+#: slip; the one reproduces the student's value wherever the other does, and the value cannot tell them apart
+OPPOSITES = {"order": "sign", "sign": "order"}
+
+
+def _opposite(kept: list[Mutant]) -> str | None:
+    """The family of ``OPPOSITES`` that the mutants kept are not of, where they are all of the other; else None."""
+    families = {DIAGNOSES[m.name].family for m in kept}
+    return OPPOSITES.get(next(iter(families))) if len(families) == 1 else None
+
+
+def _heard_in_given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
+                    twins: tuple, family: str) -> list[Mutant]:
+    """The slips of ``family`` (``OPPOSITES``) in the code the problem's module gives whole (``_given``) that
+    reproduce the student's value where the slips of a solution region that did are all of the opposite family: a
+    region's call that passes two arguments exchanged to a given function that takes their difference is as truly
+    that difference's sign, which lives in the given code, so the region's finding would else be told alone.  Within
+    ``GIVEN_TIME_BUDGET``: where it runs out, none (the region's finding stands)."""
+    try:
+        heard, _ = _given(package, root, problem, evidences, originals, judged, {}, twins)
+    except _Timeout:
+        heard = None
+    heard = [m for m in heard or () if DIAGNOSES[m.name].family == family]
+    trace.note("opposite", family=family, kept=sorted({m.name for m in heard}))
+    return heard
+
+
 # ---------------------------------------------------------------------------------------------- the constants
 
 #: the CPU time of the measuring of the slips of module constants (``_constant_stage``), tried where no slip of the
@@ -2912,6 +2944,9 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                     kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins)
             if made and mutants == []:
                 kept = []  # no function of a region runs: none of their slips reproduces the value
+            if kept and made and told is None and only is None and _opposite(kept) is not None:
+                kept = kept + _heard_in_given(package, root, problem, evidences, originals, judged, twins,
+                                              _opposite(kept))
             if kept == [] and made and told is None and only is None:
                 kept, mutants = _given(package, root, problem, evidences, originals, judged, progress, twins)
             if kept == [] and made and told is None and only is None:

@@ -1442,3 +1442,31 @@ def test_a_matrix_written_out_transposed_is_a_transpose(made_up):
     assert names == {"transpose"}, [(h.name, h.detail) for h in found]
     near = names_of(made_up, "shear", lambda k, d: np.array([[k, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, d, 1.0]]), inputs)
     assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_two_arguments_exchanged_into_a_given_difference_could_be_order_or_sign(made_up):
+    """``feedback(q, qd_des, q_des, qd)``: the measured and the desired rate exchanged in the region's call of the
+    given PD law negate its derivative part, a sign slip that lives in the given code (``OPPOSITES``): the region's
+    exchange is not told alone where the given code's sign reproduces the value as well."""
+    def exchanged(q, qd, q_des, qd_des):
+        return q * qd + 4.0 * (q_des - q) + 1.5 * (qd - qd_des)
+
+    names, found = names_of(made_up, "control", exchanged, CONTROLS)
+    assert {DIAGNOSES[n].family for n in names} == {"order", "sign"}, [(h.name, h.detail) for h in found]
+    assert any("`feedback`" in h.detail for h in found if DIAGNOSES[h.name].family == "sign"), \
+        [(h.name, h.detail) for h in found]
+
+
+def test_two_arguments_exchanged_into_a_given_function_that_is_no_sign_stay_an_exchange(made_up):
+    """The near miss: ``feedback(qd_des, qd, q_des, q)`` exchanges the measured position and the desired rate,
+    which no sign of the given code reproduces: the exchange alone."""
+    def exchanged(q, qd, q_des, qd_des):
+        return q * qd + 4.0 * (q_des - qd_des) + 1.5 * (q - qd)
+
+    names, found = names_of(made_up, "control", exchanged, CONTROLS)
+    assert names and {DIAGNOSES[n].family for n in names} == {"order"}, [(h.name, h.detail) for h in found]
+
+
+#: two inputs of the made-up PD law's caller ``control``
+CONTROLS = [(V(0.5, -1.0), V(2.0, 0.4), V(0.1, 0.2), V(-0.3, 0.9)),
+            (V(1.2, 0.3), V(-0.5, 0.8), V(0.7, -1.1), V(0.4, 0.6))]
