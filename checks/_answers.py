@@ -1,15 +1,15 @@
 """Written answers: the chosen option of a multiple-choice question, predicted program output (problems 28, 36),
 class diagrams (problems 30, 36) and numbers typed in (``typed_failure``: problem 10's matrix read off a figure,
-problem 19's multiple of m/120)."""
+problem 19's multiple of m/120; ``typed_or_ignored``: the sheet's answer whatever an argument is)."""
 
 import difflib
 import math
 
-from grader.checking import CheckFailure, fail
+from grader.checking import CheckFailure, fail, Mistake
 
 __all__ = ["option_number", "choice", "text_lines", "answer_text", "assert_same_text", "EXAMPLE", "diagram_pairs",
            "assert_same_diagram",
-           "typed_failure"]
+           "typed_failure", "typed_or_ignored"]
 
 
 def option_number(value):
@@ -194,3 +194,15 @@ def typed_failure(ctx, message, hint, diagnosis, got, expected, tol, name):
         return CheckFailure(message, "\n".join(part for part in (hint, found.hint) if part), found.diagnosis,
                             evidence=evidence, explained=True)
     return CheckFailure(message, hint, diagnosis, evidence=evidence, explained=True)
+
+
+def typed_or_ignored(value, hint: str, argument: str) -> list:
+    """The known mistakes of ``value``, the sheet's answer (its numbers, or the reference's value for the sheet's
+    arguments) where the check passes another ``argument``: the sheet's numbers typed in, and the argument ignored
+    (a module's constant or a function's default read in its place, which computes the sheet's answer as well).
+    The value cannot tell the two apart, so both are told ("could be"), as problem 4 tells the sheet's configuration
+    whatever fixed point is asked."""
+    return [Mistake("typed_numbers", value, hint),
+            Mistake("ignored_argument", value, f"Or your code computes it, but ignores the {argument} it is given and "
+                                               "reads a module's constant or a default in its place: pass the "
+                                               f"{argument} on.")]

@@ -20,6 +20,7 @@ from grader.checking import (
 )
 from probes import problem_02 as p02, problem_03 as p03
 
+from ._answers import typed_or_ignored
 from ._mujoco import (
     ALUMINIUM,
     DIRECTION,
@@ -162,10 +163,10 @@ def _assert_inputs(ctx, args, tutorial=None):
     damping, expected = ref["joints"][0]["damping"], _unit_torque(ref)
     typed_damping, typed_torque = [], []
     if tutorial is not None:
-        typed_damping = [Mistake("typed_numbers", tutorial["joints"][0]["damping"],
-                                 TYPED_HINT.format(what="damping (8e-5 N m/(deg/s), converted)", argument="damping"))]
-        typed_torque = [Mistake("typed_numbers", _unit_torque(tutorial),
-                                TYPED_HINT.format(what="torque amplitude 0.06", argument="torque"))]
+        typed_damping = typed_or_ignored(tutorial["joints"][0]["damping"], TYPED_HINT.format(
+            what="damping (8e-5 N m/(deg/s), converted)", argument="damping"), "damping")
+        typed_torque = typed_or_ignored(_unit_torque(tutorial), TYPED_HINT.format(
+            what="torque amplitude 0.06", argument="torque"), "torque")
     assert_close(joint["damping"], damping, f"the joint's damping [N m s/rad] in {what}", DAMPING, mistakes=[
         Mistake("damping_per_degree", damping * np.pi / 180, "The tutorial's 8e-5 is per DEGREE per second; MuJoCo's "
                 "damping is per RADIAN per second: multiply by 180/pi (1 rad/s = 57.3 deg/s)."),

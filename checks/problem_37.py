@@ -457,7 +457,7 @@ def _assert_starts_on_the_table(ctx, controller):
         reread = None if typed else _reread(got, ours, REREAD)
         if reread is not None:
             raise CheckFailure(exc.message, *reread, evidence=exc.evidence) from None
-        raise CheckFailure(exc.message, *(TYPED_START_HINT, "typed_numbers") if typed else
+        raise CheckFailure(exc.message, *(TYPED_START_HINT, "typed_numbers or ignored_argument") if typed else
                            wrong_start(mine, start, INITIAL_HINT), evidence=exc.evidence) from None
 
 

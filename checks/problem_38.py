@@ -200,7 +200,7 @@ def _assert_small_motion(ctx):
                      context="(the start passed to simulate)")
     except CheckFailure as exc:
         typed = close(start, SHEET_START, EXACT)
-        raise CheckFailure(exc.message, *(START_HINT, "typed_numbers") if typed else
+        raise CheckFailure(exc.message, *(START_HINT, "typed_numbers or ignored_argument") if typed else
                            wrong_start(start, np.concatenate(SMALL_START), START_HINT), evidence=exc.evidence) from None
     assert_run(got, expected, ("q", "qd"), SMALL_BAND, f"the small motion of {what}", hint=SMALL_HINT,
                diagnosis="integration",

@@ -29,6 +29,7 @@ from grader.checking import (
 )
 from probes import problem_44 as p44
 
+from ._answers import typed_or_ignored
 from ._dynamics import assert_run, run_array, same_crossings, subsample
 
 TITLE = "Implementing Event Detection"
@@ -176,10 +177,11 @@ def _assert_other_bar(ctx, sheet):
     m, theta, g = OTHER_BAR
     what = f"simulate(q0, {T_END:g}, {S:g}, m = {m:g}, theta = {theta:g}, g = {g:g})"
     got = ctx.student(p44.simulate, Q0, T_END, S, OTHER_BAR, timeout=SIMULATION_TIMEOUT)
-    typed = [Mistake("typed_numbers", run["t_event"], f"Your run keeps the sheet's {part} whatever bar it is given: "
-                     f"pass simulate's m, theta, g on to bar_ode (solve_ivp(..., args=(m, theta, g))) and bar_ode's "
-                     f"on to the accelerations of problem 43.")
-             for part, run in kept.items() if run.get("t_event") is not None]
+    typed = [mistake for part, run in kept.items() if run.get("t_event") is not None
+             for mistake in typed_or_ignored(run["t_event"], f"Your run keeps the sheet's {part} whatever bar it is "
+                                             f"given: pass simulate's m, theta, g on to bar_ode (solve_ivp(..., "
+                                             f"args=(m, theta, g))) and bar_ode's on to the accelerations of problem "
+                                             f"43.", f"bar's {part}")]
     if got.get("t_event") is not None and any(close(got["t_event"], mistake.value, EVENT_TIME) for mistake in typed):
         assert_close(got["t_event"], expected["t_event"], f"t_event of {what}", EVENT_TIME, typed,
                      context="(a bar the sheet does not print, against a tight reference run)")
