@@ -59,6 +59,8 @@ BANDS_NOTE = ("Any scipy.integrate.solve_ivp method at its default tolerances, w
 APEX_HINT = ("Your apex is the highest of your run's own rows (at t = {t:.4f} s): the solver's steps fall where "
              "its step size puts them, and the apex lies between two of them. Read it from the apex event, "
              "t_events[0] and y_events[0], which solve_ivp locates on its dense output.")
+NEAREST_HINT = ("Your apex is your run's row nearest it (at t = {t:.4f} s), a value of another time: the apex lies "
+                "between two rows, where the apex event locates it on the solver's dense output.")
 DIRECTION_HINT = ("The ball starts on the ground, where the height is zero: with direction 0 or +1 that zero "
                   "counts as a landing and the integration stops at once. direction = -1 counts only a fall "
                   "through zero (from + to -).")
@@ -166,10 +168,13 @@ def _highest_step(t, y):
 
 
 def _apex_mistakes(key, at_step):
-    """The apex read from the highest of the run's own rows (the solver's steps) rather than its event."""
+    """The apex read from the highest of the run's own rows (the solver's steps) rather than its event: an extremum
+    from the steps, and as truly the row nearest the apex read where the apex itself, which lies between two rows,
+    belongs (a value of another time); the value cannot tell the two readings apart, so both are told."""
     if at_step is None or key not in at_step:
         return []
-    return [Mistake("extremum_from_steps", at_step[key], APEX_HINT.format(t=at_step["t_apex"]))]
+    return [Mistake("extremum_from_steps", at_step[key], APEX_HINT.format(t=at_step["t_apex"])),
+            Mistake("nearest_sample", at_step[key], NEAREST_HINT.format(t=at_step["t_apex"]))]
 
 
 @check(3, title="throw(): the sheet's ball (v0 = 10 m/s, k = 0.1 1/m) peaks and lands at the reference's times "
