@@ -28,7 +28,7 @@ from .checking import (
     property_of,
     random_input,
 )
-from .diagnosis import doubt, explain, judge, symptom, prepare_call, prepared, recording, remember_run, trace
+from .diagnosis import doubt, explain, judge, rival, symptom, prepare_call, prepared, recording, remember_run, trace
 from .errors import GraderFault, ProbeFault, StudentCodeError, StudentFault, ends_grading
 from .gate import admit, form_of
 from .oracle import Oracle, current, draw_pool, hypothesis_run
@@ -662,9 +662,16 @@ def _beside_symptom(ctx, failure: CheckFailure) -> CheckFailure:
     """A failure whose diagnosis names only a symptom (``diagnosis.SYMPTOMS``), with the cause the diagnosis engine
     finds by comparing the student's call behind the judged value with the reference's (``diagnosis.judge``): the
     message (the symptom) stays, the hint tells the symptom's and then the cause's, and the diagnosis names the
-    cause.  Where the engine finds none, the failure as it was."""
+    cause.  A failure whose diagnosis names an effect its value shows (``diagnosis.EFFECTS``: entries with the wrong
+    sign), with the rival of another family the engine finds (``diagnosis.rival``: two arguments exchanged), told
+    beside it.  Where the engine finds none, the failure as it was."""
     if not symptom(failure.diagnosis):
-        return failure
+        found = rival(ctx, failure.evidence, failure.diagnosis)
+        if found is None:
+            return failure
+        hint = "\n".join(part for part in (failure.hint, found.hint) if part)
+        return CheckFailure(failure.message, hint, found.diagnosis, failure.candidates, failure.evidence,
+                            explained=True)
     finding = judge(ctx, failure.evidence)
     if finding is None or not finding.names:
         return failure

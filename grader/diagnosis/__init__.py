@@ -106,7 +106,12 @@ A check that judges the student's value by a property and names only its symptom
 not orthonormal, a reflection, a body in the wrong orientation) asks the engine too (``judge``): the student's
 probe call behind the value is compared with the reference's call on the same arguments, each result that differs
 is explained as a failing comparison (on the input shown and the engine's own second input), and a cause found is
-told beside the symptom, whose message stays.  A randomized comparison whose shown input has no comparison (the
+told beside the symptom, whose message stays.  A check that names an effect its value shows (``EFFECTS``: some
+entries with the wrong sign, found by comparing the value with the expected one) asks the formula tier for the
+exchanges of two operands whose effect that sign is (``rival``, ``mutants.opposite_slips``: a call's two points
+exchanged negate the lever arm between them), on the input shown alone where there is no second one: a rival found
+is told beside the check's name, "could be" either; the kit, which holds no reference code, tells the check's name
+alone.  A randomized comparison whose shown input has no comparison (the
 student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
 A value the check derives from the student's reply itself (the centre of gravity of their points, an anchor's first
 coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; the
@@ -126,7 +131,8 @@ arguments), ``terms``, ``runs``, ``models``, ``scene`` (the reference and the st
 from __future__ import annotations
 
 from ..errors import GraderFault
-from .engine import RECORDING, doubted, find, judged, note_comparison, prepare, prepare_call, prepared, recording
+from .engine import (RECORDING, doubted, find, judged, note_comparison, prepare, prepare_call, prepared, recording,
+                     rivalled)
 from .evidence import DECLARATIONS, Declaration, Evidence, Finding, Source, declaration, locate
 from .runs import remember_run
 from .scene import MAX_REFERENCE_CALLS, Budget, Scene
@@ -144,6 +150,8 @@ __all__ = [
     "judge",
     "symptom",
     "SYMPTOMS",
+    "rival",
+    "EFFECTS",
     "prepare",
     "prepare_call",
     "prepared",
@@ -205,6 +213,27 @@ def judge(ctx, evidence) -> Finding | None:
     finding = _guarded(judged, Scene(ctx), evidence)
     trace.end(finding)
     return finding
+
+
+#: the names a check tells from what its value shows (some entries with the wrong sign, found by comparing the
+#: student's value with the expected one), which a slip of another family has as its effect: an exchange of two
+#: operands that enter as a difference (``mutants.OPPOSITES``)
+EFFECTS = ("sign_flip",)
+
+
+def rival(ctx, evidence, diagnosis: str) -> Finding | None:
+    """A check's ``diagnosis`` that names an effect its value shows (``EFFECTS``), with the rival of the other
+    family of ``mutants.OPPOSITES`` that the engine finds on the failing comparison ``evidence`` (two arguments
+    exchanged whose effect is that sign: the exchange is the edit, the sign its effect): the check's name and the
+    rival's, "could be" either, and the engine's hint; None where the engine finds no such rival, or finds causes
+    of a third family (the check's name stands)."""
+    if not ENABLED or evidence is None or diagnosis not in EFFECTS \
+            or getattr(getattr(ctx, "oracle", None), "mode", "") != "live":  # the kit holds no reference code
+        return None
+    trace.begin(getattr(ctx, "check_id", ""), "rival")
+    finding = _guarded(lambda scene, e: rivalled(scene, e, diagnosis), Scene(ctx), evidence)
+    trace.end(finding)
+    return finding if finding is not None and diagnosis in finding.names and len(finding.names) > 1 else None
 
 
 def symptom(diagnosis: str) -> bool:

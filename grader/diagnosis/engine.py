@@ -52,7 +52,7 @@ from .grammar import (
 )
 from . import trace
 from .models import model_slips
-from .mutants import KIT_NOTE, left_to_live, mutant_slips
+from .mutants import KIT_NOTE, left_to_live, mutant_slips, opposite_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
 from .runs import (
@@ -83,6 +83,7 @@ __all__ = [
     "RESULT_LEAVES",
     "JUDGED_TOL",
     "judged",
+    "rivalled",
 ]
 
 
@@ -763,6 +764,30 @@ def _model(scene: Scene, run: Evidence, decl: Declaration) -> _Model:
     if finding is None:
         return _Model("differs", Finding((), where))
     return _Model("differs", Finding(finding.names, f"{where} {finding.hint}"))
+
+
+def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None:
+    """The rivals of another family of a check's ``diagnosis`` told from what its value shows (a sign), on the
+    failing comparison ``evidence`` and a second input where the engine draws one (``mutants.opposite_slips``):
+    the check's name and theirs, "could be" either; None where none reproduces the student's value."""
+    _sources(scene, evidence)
+    if evidence.source is None or evidence.got is None:
+        return None
+    evidences = [evidence]
+    second = _second_input(scene, evidence)
+    if second is not None:
+        evidences.append(second)
+    trace.note("inputs", count=len(evidences), declared=declaration(evidence.source.probe) is not None,
+               motion=False, found_so_far=[diagnosis])
+    found = opposite_slips(scene, evidences, DIAGNOSES[diagnosis].family)
+    if not found:
+        return None
+    cost = min(h.cost for h in found)
+    rivals = _finding([h for h in found if h.cost == cost], _where(evidences))
+    names = " or ".join(DIAGNOSES[n].student for n in rivals.names)
+    return Finding((diagnosis, *rivals.names), rivals.hint.replace(
+        "Looks like ", f"Could be {DIAGNOSES[diagnosis].student} or, as well, ", 1) if len(rivals.names) == 1 else (
+        f"Could be {DIAGNOSES[diagnosis].student} or, as well, {names}.\n{rivals.hint}"))
 
 
 def doubted(scene: Scene, evidence: Evidence) -> Finding | None:

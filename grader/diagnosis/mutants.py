@@ -14,7 +14,9 @@ entry written 0 there is data left out, told as a term left out and as an offset
 the regions that reproduce it are all exchanges, or all signs, the given code's slips of the other of the two
 families are heard as well, within the same budget (``OPPOSITES``): two arguments exchanged in a call of a given
 function that takes their difference (``pd(q, qd_des, q_des, qd)``) are as truly that difference's sign, and the
-value cannot tell the edit from its effect.  Last, where
+value cannot tell the edit from its effect; for the same reason a check that tells a sign from what the value
+shows hears the exchanges of two operands of the regions (``opposite_slips``, asked by ``diagnosis.rival``).  Last,
+where
 nothing else reproduced it, the module constants that the call reads, of the problem's own module and of the library
 (the modules of no problem), directly, through a function's default or a constant computed from them, are typed
 otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
@@ -145,7 +147,7 @@ from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "MAKING_TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS",
            "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE",
-           "RIVALS", "OPPOSITES", "Mutant", "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
+           "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED", "opposite_slips", "Mutant", "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -2638,6 +2640,33 @@ def _opposite(kept: list[Mutant]) -> str | None:
     """The family of ``OPPOSITES`` that the mutants kept are not of, where they are all of the other; else None."""
     families = {DIAGNOSES[m.name].family for m in kept}
     return OPPOSITES.get(next(iter(families))) if len(families) == 1 else None
+
+
+#: the slips that exchange two operands of one expression (two arguments of a call, two names, two parameters, two
+#: groups of arguments, two entries, two components, two factors): their effect may be a sign (``OPPOSITES``)
+OPERANDS_EXCHANGED = frozenset({"arguments", "names", "parameters", "blocks", "entries", "components", "factors"})
+
+
+def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypothesis]:
+    """The slips of ``family``'s opposite (``OPPOSITES``) that reproduce the student's value on ``evidences``, for a
+    check that told ``family`` from what the value shows (``diagnosis.rival``): where the check named a sign, the
+    exchanges of two operands (``OPERANDS_EXCHANGED``), whose effect may be that sign.  On the input shown alone
+    where the engine has no second one (a call of no arguments): a rival adds a name to the check's, which the value
+    proves already, and explains nothing by itself.  None in the kit."""
+    opposite = OPPOSITES.get(family)
+    first = evidences[0] if evidences else None
+    if getattr(scene.ctx.oracle, "mode", "") != "live" or opposite != "order" or first is None \
+            or first.source is None or first.got is None or any(e.source is None or e.got is None for e in evidences):
+        return []
+    problem = _problem(getattr(scene.ctx, "check_id", ""), first.source.probe)
+    if problem is None:
+        return []
+    try:
+        kept = _kept(problem, list(evidences), only=OPERANDS_EXCHANGED)
+    except GraderFault:
+        return []
+    trace.note("opposite", family=opposite, kept=None if kept is None else sorted({m.name for m in kept}))
+    return [h for h in _hypotheses(kept or [], list(evidences)) if DIAGNOSES[h.name].family == opposite]
 
 
 def _heard_in_given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,

@@ -1470,3 +1470,21 @@ def test_two_arguments_exchanged_into_a_given_function_that_is_no_sign_stay_an_e
 #: two inputs of the made-up PD law's caller ``control``
 CONTROLS = [(V(0.5, -1.0), V(2.0, 0.4), V(0.1, 0.2), V(-0.3, 0.9)),
             (V(1.2, 0.3), V(-0.5, 0.8), V(0.7, -1.1), V(0.4, 0.6))]
+
+
+def test_a_sign_a_check_told_has_the_exchange_that_makes_it_as_a_rival(made_up):
+    """A check that tells a sign from what the value shows (``diagnosis.rival``) hears the exchanges of two operands
+    whose effect that sign is (``opposite_slips``), on the input shown alone where there is no second one:
+    ``np.subtract(b, a)`` for ``np.subtract(a, b)``."""
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0)])
+    found = mutants.opposite_slips(scene("p98.difference"), evidences, "sign")
+    assert {h.name for h in found} == {"argument_order"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_sign_no_exchange_makes_has_no_rival(made_up):
+    """The near miss: the product's sign, ``-a b``, which no exchange of two operands gives, has none; nor has a
+    check's name of another family than a sign."""
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [a - b, -a * b], [(1.0, 3.0)])
+    assert mutants.opposite_slips(scene("p98.difference"), evidences, "sign") == []
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0)])
+    assert mutants.opposite_slips(scene("p98.difference"), evidences, "scale") == []
