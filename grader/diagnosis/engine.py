@@ -784,10 +784,9 @@ def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None
         return None
     cost = min(h.cost for h in found)
     rivals = _finding([h for h in found if h.cost == cost], _where(evidences))
-    names = " or ".join(DIAGNOSES[n].student for n in rivals.names)
-    return Finding((diagnosis, *rivals.names), rivals.hint.replace(
-        "Looks like ", f"Could be {DIAGNOSES[diagnosis].student} or, as well, ", 1) if len(rivals.names) == 1 else (
-        f"Could be {DIAGNOSES[diagnosis].student} or, as well, {names}.\n{rivals.hint}"))
+    said = " or ".join(DIAGNOSES[n].student for n in rivals.names)
+    return Finding((diagnosis, *rivals.names),
+                   f"Could be {DIAGNOSES[diagnosis].student} or, as well, {said}, whose effect it is.\n{rivals.hint}")
 
 
 def doubted(scene: Scene, evidence: Evidence) -> Finding | None:

@@ -147,7 +147,8 @@ from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "MAKING_TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS",
            "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE",
-           "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED", "opposite_slips", "Mutant", "rivals", "mutants_of", "mutant_slips", "late", "left_to_live"]
+           "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED", "Mutant", "rivals", "mutants_of", "mutant_slips",
+           "opposite_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)

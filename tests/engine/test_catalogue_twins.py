@@ -1,12 +1,12 @@
 """A catalogue's known mistake whose value is as truly another family's slip is told with both names.
 
 * A value that is the sheet's answer whatever an argument is: typed in, or the argument ignored
-  (``checks._answers.typed_or_ignored``).  Where a check passes another argument than the sheet's and the student's value is the sheet's answer (the reference's
-run for the sheet's bar), the value cannot tell the sheet's numbers typed in from the argument ignored (a module's
-constant or a default read in its place computes the same): both are told, as problem 4 tells its sheet's
-  configuration whatever fixed point is asked.  Planted: problem 44's run that keeps the sheet's m and theta whatever
-  bar it is given (a bar_ode that reads the module's mass and inertia); near miss: a run that keeps the sheet's theta
-  alone, which no entry of the catalogue runs, names neither.
+  (``checks._answers.typed_or_ignored``).  Where a check passes another argument than the sheet's and the student's
+  value is the sheet's answer (the reference's run for the sheet's bar), the value cannot tell the sheet's numbers
+  typed in from the argument ignored (a module's constant or a default read in its place computes the same): both
+  are told, as problem 4 tells its sheet's configuration whatever fixed point is asked.  Planted: problem 44's run
+  that keeps the sheet's m and theta whatever bar it is given (a bar_ode that reads the module's mass and inertia);
+  near miss: a run that keeps the sheet's theta alone, which no entry of the catalogue runs, names neither.
 * An apex read from the highest of a run's rows (problem 42's ``_apex_mistakes``): an extremum from the solver's
   steps, and the row nearest the apex read in its place, a value of another time (``nearest_sample``).  Planted: the
   apex time read from the highest row; near miss: the row after it names neither.
