@@ -24,7 +24,10 @@ from .submissions import ROOT, build_hostile, copy_reference, hostile_expectatio
 pytestmark = pytest.mark.slow
 
 def _run(argv, **kwargs):
+    """Runs ``argv`` to its end, which must be a success; it sees none of the checkout through ``PYTHONPATH`` (a
+    developer's run of the tests from a working tree may set it)."""
     kwargs.setdefault("timeout", 900)
+    kwargs.setdefault("env", {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")})
     done = subprocess.run(argv, capture_output=True, text=True, **kwargs)
     assert done.returncode == 0, f"{argv}\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}"
     return done
