@@ -2016,24 +2016,27 @@ _REFIRE = 0.5
 WAIT_FACTOR = 5.0
 
 
-#: the time each thread has spent in the garbage collector, ``[cpu, wall]`` [s] by thread ident, and where the
-#: collection under way in a thread began (``_collecting``)
-_COLLECTED: dict[int, list[float]] = {}
+#: the time each thread inside a deadline has spent in the garbage collector, ``[cpu, wall, deadlines]`` [s] by
+#: thread ident (the thread's deadlines open now: its entry goes with the last), and where the collection under way
+#: in such a thread began (``_collecting``)
+_COLLECTED: dict[int, list] = {}
 _COLLECTING: dict[int, tuple[float, float]] = {}
 
 
 def _collecting(phase: str, info: dict) -> None:
-    """The garbage collector's callback that counts the time of each collection for the thread it runs in.  A
-    collection's cost is the process's: it walks every object the process holds (a batch's worker, a test run's,
-    holds many, from every grading before), and a full one may take a good part of a tier's budget, whichever
-    answer is being explained; the deadline does not count it (``_Deadline``)."""
+    """The garbage collector's callback that counts the time of each collection for the thread it runs in, where a
+    deadline watches that thread.  A collection's cost is the process's: it walks every object the process holds (a
+    batch's worker, a test run's, holds many, from every grading before), and a full one may take a good part of a
+    tier's budget, whichever answer is being explained; the deadline does not count it (``_Deadline``)."""
     thread = threading.get_ident()
+    spent = _COLLECTED.get(thread)
+    if spent is None:
+        return
     if phase == "start":
         _COLLECTING[thread] = (time.thread_time(), time.monotonic())
         return
     began = _COLLECTING.pop(thread, None)
     if began is not None:
-        spent = _COLLECTED.setdefault(thread, [0.0, 0.0])
         spent[0] += time.thread_time() - began[0]
         spent[1] += time.monotonic() - began[1]
 
@@ -2045,7 +2048,7 @@ if _collecting not in gc.callbacks:
 def _collected(thread: int, clock) -> float:
     """The time ``thread`` has spent in the garbage collector so far, the one under way included: its CPU time where
     ``clock`` (its CPU clock) is given, else wall time [s]."""
-    spent = _COLLECTED.get(thread, (0.0, 0.0))
+    spent = _COLLECTED.get(thread, (0.0, 0.0, 0))
     began = _COLLECTING.get(thread)
     if clock is not None:
         return spent[0] + (time.clock_gettime(clock) - began[0] if began is not None else 0.0)
@@ -2171,6 +2174,7 @@ class _Deadline:
                 ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(self.thread), ctypes.py_object(_Timeout))
 
     def __enter__(self):
+        _COLLECTED.setdefault(self.thread, [0.0, 0.0, 0])[2] += 1
         self.start = self._now()
         self.timer.start()
         return self
@@ -2188,6 +2192,11 @@ class _Deadline:
                     pass
             except _Timeout:
                 pass
+        spent = _COLLECTED[self.thread]
+        spent[2] -= 1
+        if not spent[2]:
+            del _COLLECTED[self.thread]
+            _COLLECTING.pop(self.thread, None)
         return False
 
 
