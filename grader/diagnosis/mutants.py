@@ -2085,10 +2085,11 @@ class _Deadline:
     """Interrupts the running thread with ``_Timeout`` once it has spent ``seconds`` of CPU time, unless left
     before: what the tier may try does not depend on how loaded the machine is (a busy machine slows the wall clock,
     not the work), nor on how much the process holds (the time of the garbage collector's collections in the thread
-    is not counted: ``_collecting``).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``: not on macOS or
-    Windows) it counts wall time; and a thread that waits without working (for a lock, say) is interrupted after
-    ``WAIT_FACTOR`` times ``seconds`` of wall time in any case, less the time it was ready to run and waited for a
-    core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the work early.
+    is not counted: ``_collecting``).  Where a thread's CPU clock cannot be read (``time.pthread_getcpuclockid``:
+    not on macOS or Windows) it counts wall time; and a thread that waits without working (for a lock, say) is
+    interrupted after ``WAIT_FACTOR`` times ``seconds`` of wall time in any case, less the time it was ready to run
+    and waited for a core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the
+    work early.  That bound counts the collections too: work that does nothing but collect garbage is stopped.
 
     The work inside ``making()`` (the making of mutants: the same for every answer, and kept for the process) is
     counted apart, against ``making`` seconds (``MAKING_TIME_BUDGET``), so that ``seconds`` bounds the measuring of
