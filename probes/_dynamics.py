@@ -245,7 +245,8 @@ def trace(run, n, what):
     says="problem_24.simulate({0})",
     motion={"time": "t", "states": ("q", "qd"), "fixed_step": "_dynamics.pendulum_motion_fixed",
                "schemes": ("euler", "symplectic"), "steps": (0.002, 0.005, 0.01, 0.02),
-               "rhs": "problem_24.pendulum_ode", "rhs_args": ()},
+               "rhs": "problem_24.pendulum_ode", "rhs_args": (),
+               "start": {"arg": 2, "name": "q0", "sheet": "_dynamics.pendulum_start"}},
 )
 def pendulum_motion(pkg, t_end, I_grav, q0=None, qd0=None, dt=None):
     """Problem 24: the package's ``problem_24.simulate(t_end)`` (released at ``q0`` with the speeds ``qd0``, output
@@ -336,6 +337,13 @@ def fixed_step(fun, y0, t_end, h, scheme, event=None, direction=-1.0):
         times.append(t)
         rows.append(y)
     return {"t": np.array(times), "y": np.array(rows), "t_event": t_event}
+
+
+@probe(reference_only=True)
+def pendulum_start(pkg):
+    """Problem 24's start ``Q``: the angles ``simulate`` releases the pendulum at where it is given no ``q0`` (the
+    diagnosis engine calls it on the reference)."""
+    return [float(x) for x in module(pkg, "problem_24").Q]
 
 
 @probe(reference_only=True)

@@ -100,6 +100,19 @@ V0_IGNORED = Planted(
     old="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, v0], args=(drag, g),",
     new="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, V0], args=(drag, g),",
     check="p42.flight_random", diagnosis="ignored_argument", message="the argument is ignored")
+#: the pendulum released at the module's start whatever q0 is given: the run from the sheet's start (the probe
+#: declares it) reproduces it, told beside the start that differs
+Q0_IGNORED = Planted(
+    name="motions-p24-q0-ignored", problem=24, file="problem_24.py",
+    old="tree = build_triple_pendulum(DynamicBody)\n    t_eval",
+    new="tree, q0 = build_triple_pendulum(DynamicBody), Q\n    t_eval",
+    check="p24.simulated_motion", diagnosis="ignored_argument or initial_state", message="the argument is ignored")
+#: its near miss: the pendulum released at the given angles negated, a start that is not the module's
+START_NEGATED = Planted(
+    name="motions-p24-start-negated", problem=24, file="problem_24.py",
+    old="result = solve_ivp(pendulum_ode, (0.0, t_end), y0,",
+    new="result = solve_ivp(pendulum_ode, (0.0, t_end), y0 * np.array([-1, -1, -1, 1, 1, 1]),",
+    check="p24.simulated_motion", diagnosis="", message="")
 #: the rates at the event read from the position rows of the event's state
 EVENT_RATES_FROM_POSITIONS = Planted(
     name="motions-p44-event-rates-from-positions", problem=44, file="problem_44.py",
@@ -166,7 +179,7 @@ ARM_IN_SINGLE = Planted(
 
 RUN_SLIPS = [RATES_IN_SINGLE, ARM_IN_SINGLE, SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED,
              EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS, RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT,
-             RATES_NEGATED_AT_THE_START]
+             RATES_NEGATED_AT_THE_START, Q0_IGNORED]
 NEAR_MISSES = [STRONGER_GRAVITY]
 
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
@@ -193,6 +206,15 @@ def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferre
     must not be mistaken for."""
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert_told(mistake, target)
+
+
+def test_a_start_that_is_not_the_modules_is_not_told_as_the_argument_ignored(tmp_path, kit_oracle, deferred_ids,
+                                                                             slot):
+    """The near miss of ``Q0_IGNORED``: a run released at the given angles negated starts from another state, which
+    is not the module's start: the start is told, not the argument ignored."""
+    target = failed_alike(START_NEGATED, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+    told = set(families_of(target.diagnosis))
+    assert "initial_state" in told and "ignored_argument" not in told, (target.diagnosis, target.hint)
 
 
 @pytest.mark.parametrize("mistake", NEAR_MISSES, ids=lambda m: m.name)
