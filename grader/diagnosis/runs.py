@@ -189,10 +189,11 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
     if shift is not None:
         found.append(Hypothesis("motion:shift", "time_shift", 2, f"your run is the reference's shifted in time: "
                                  f"yours at t is the reference's at t {shift:+.4g}"))
-    # a wrong initial state: the start differs from the given one
+    # a wrong initial state: the start differs from the given one (not where states read from other rows give the
+    # whole run, its start too)
     start = [k for k in motion.get("states", ()) if k in G and abs(t[0] - t_r[0]) < 1e-9
              and not within(G[k][0], R[k][0], tol)]
-    if start:
+    if start and rows is None:
         words = "; ".join(f"{k}(t0) = {format_array(G[k][0])}, expected {format_array(R[k][0])}" for k in start)
         found.append(Hypothesis(START_KEY, "initial_state", 3, f"your run starts from another state: {words}"))
     return found
@@ -237,7 +238,11 @@ def reread(G: dict, R: dict, keys, tol: Tol) -> Hypothesis | None:
     """The student's run ``G`` is the reference's ``R`` (both ``{key: samples x components}`` at the same times) with
     columns read from other rows of the solution (the rates for the angles, the halves exchanged): every column of
     the student's that is not the reference's own is, within ``tol``, another column of the reference's that
-    differs clearly from its own; None where some column is neither (or none is wrong)."""
+    differs clearly from its own; None where some column is neither (or none is wrong).  A whole state read from
+    another (``"qd": y[:, :3]``, the angles' rows for the rates) is one slip, told by the block as a whole: every
+    wrong state is then, within ``tol``, all of another state of its shape, which differs clearly from its own
+    somewhere (``_blocks_reread``), though a column of it may lie close to its own column: heard where the columns
+    alone tell nothing."""
     columns = [(k, j) for k in keys if k in R for j in range(R[k].shape[1])]
     mapping = {}
     for k in keys:
@@ -249,12 +254,39 @@ def reread(G: dict, R: dict, keys, tol: Tol) -> Hypothesis | None:
             rows = [(k2, j) for k2, j in columns if (k2, j) != (k, i) and within(G[k][:, i], R[k2][:, j], tol)
                     and distinct(R[k2][:, j], R[k][:, i], tol) and distinct(R[k2][:, j], 0.0 * R[k2][:, j], tol)]
             if not rows:
-                return None
+                return _blocks_hypothesis(G, R, keys, tol)
             mapping[(k, i)] = rows[0]
     if not mapping:
         return None
     words = ", ".join(f"{k}[{i}] is the reference's {k2}[{j}]" for (k, i), (k2, j) in mapping.items())
     return Hypothesis("motion:row", "state_row", 2, f"your run has a state from the wrong row: {words}")
+
+
+def _blocks_hypothesis(G: dict, R: dict, keys, tol: Tol) -> Hypothesis | None:
+    """``reread``'s hypothesis of whole states read from others (``_blocks_reread``), or None."""
+    blocks = _blocks_reread(G, R, keys, tol)
+    if not blocks:
+        return None
+    words = ", ".join(f"{k} is the reference's {k2}" for k, k2 in blocks.items())
+    return Hypothesis("motion:row", "state_row", 2, f"your run has a state from the wrong rows: {words}")
+
+
+def _blocks_reread(G: dict, R: dict, keys, tol: Tol) -> dict:
+    """``{key: other key}``: every state of the student's run ``G`` that is not the reference's own is, as a whole
+    and within ``tol``, another state of the reference's ``R`` of the same shape that differs clearly from the own
+    one and from zero; empty where some wrong state is not (or none is wrong)."""
+    found = {}
+    for k in keys:
+        if k not in G or k not in R or G[k].shape != R[k].shape:
+            return {}
+        if within(G[k], R[k], tol):
+            continue
+        others = [k2 for k2 in keys if k2 != k and k2 in R and R[k2].shape == G[k].shape and within(G[k], R[k2], tol)
+                  and distinct(R[k2], R[k], tol) and distinct(R[k2], 0.0 * R[k2], tol)]
+        if not others:
+            return {}
+        found[k] = others[0]
+    return found
 
 
 def reread_runs(got, expected, keys, tol: Tol) -> Hypothesis | None:

@@ -388,6 +388,29 @@ def test_a_row_read_from_a_column_that_is_zero_is_not_told():
     assert reread(R, R, ("q", "qd"), tol) is None
 
 
+def test_a_whole_state_read_from_another_is_told_where_a_column_of_it_lies_close_to_its_own():
+    """Rates returned from the angles' rows, where one angle and its rate stay within a few tolerances of each
+    other: no column alone tells the row, the whole state does; the start that then differs is not told beside it."""
+    from grader.diagnosis import Declaration, Source
+    from grader.diagnosis.runs import motion_slips, reread
+
+    t = np.linspace(0.0, 1.0, 21)
+    R = {"q": np.column_stack([np.sin(3 * t) + 1.0, 0.1 + 0.5 * t]), "qd": np.column_stack([3 * np.cos(3 * t),
+                                                                                            0.5 + 0 * t])}
+    tol = Tol("band", 5e-2)  # q[1] and qd[1] differ by at most 0.4 < 10 tolerances: not told apart column by column
+    mine = {"q": R["q"], "qd": R["q"].copy()}
+    found = reread(mine, R, ("q", "qd"), tol)
+    assert found is not None and found.name == "state_row" and "qd is the reference's q" in found.detail, found
+    # near misses: the rates off the angles by more than the tolerance, and rates that are the reference's own
+    assert reread({"q": R["q"], "qd": R["q"] + 0.2}, R, ("q", "qd"), tol) is None
+    assert reread(R, R, ("q", "qd"), tol) is None
+    decl = Declaration(motion={"time": "t", "states": ("q", "qd")})
+    ours, got = dict(R, t=t), dict(mine, t=t)
+    evidence = Evidence(got["qd"], ours["qd"], tol, "qd", source=Source("stub.run", (), ("qd",), ours),
+                        student=Source("stub.run", (), ("qd",), got))
+    assert [h.name for h in motion_slips(evidence, decl)] == ["state_row"]
+
+
 def _event_evidence(student_event, student_value):
     """The rates at an event of a stand-in run: the student's event time and rates, against the reference's."""
     from grader.diagnosis import Declaration, Source
