@@ -11,7 +11,8 @@
   nothing is consistent with itself and earns nothing.
 * ``compare_mfg``: ``M``, ``f``, ``g`` against the reference with the mistake catalogue of ``_dynamics.mfg_mistakes``.
 * Runs (simulations): the first departure from a reference run, and figures; a start that is not the given one
-  told with the slip of a typed value that makes it (``wrong_start``).
+  told with the slip of a typed value that makes it (``wrong_start``), or, where some of its parts are the sheet's
+  whatever is passed, as those arguments ignored (``defaulted_blocks``).
 * Right-hand sides along a run: called at several states in turn on one tree, as an integrator calls them, they
   give what they give on a fresh tree (``assert_fresh_along_a_run``): a mass matrix computed once and reused is
   ``stale_mass_matrix``.
@@ -52,6 +53,7 @@ from ._real import mass_matrix_flaw, rank_flaw, real, require_real
 from ._shapes import as_list
 
 __all__ = [
+    "defaulted_blocks",
     "wrong_start",
     "H",
     "LAGRANGE_DIFFERENCES",
@@ -389,6 +391,28 @@ def wrong_start(got, given, hint: str, tol: Tol = EXACT) -> tuple[str, str]:
         return hint, "initial_state"
     return diagnose([Mistake("initial_state", None, hint)] + [
         Mistake(name, None, f"Your start is the given one changed so: {detail}.") for name, detail in slips.items()])
+
+
+def defaulted_blocks(mine, given, defaults, tol: Tol = EXACT) -> list:
+    """The names of the parts of a run's start ``mine`` that are the sheet's where another was given: ``defaults``
+    is ``((name, the sheet's value), ...)`` in the order the start holds them (``given`` is as long).  Each part of
+    ``mine`` must be the given one or, where that differs from the sheet's, the sheet's (the argument ignored, the
+    module's default or the sheet's numbers used instead); empty where some part is neither, or none is the sheet's
+    in place of another."""
+    mine, given = np.ravel(np.asarray(mine, dtype=float)), np.ravel(np.asarray(given, dtype=float))
+    sizes = [np.size(value) for _, value in defaults]
+    if mine.shape != given.shape or sum(sizes) != mine.size:
+        return []
+    names, at = [], 0
+    for (name, value), size in zip(defaults, sizes):
+        part, passed, sheet = mine[at:at + size], given[at:at + size], np.ravel(np.asarray(value, dtype=float))
+        at += size
+        if close(part, passed, tol):
+            continue
+        if not close(part, sheet, tol):
+            return []
+        names.append(name)
+    return names
 
 
 def run_array(run, key, shape, what, times=None):

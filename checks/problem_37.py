@@ -40,6 +40,7 @@ from ._dynamics import (
     check_lagrange,
     check_spd,
     compare_mfg,
+    defaulted_blocks,
     describe_case,
     rich_case,
     robot_cases,
@@ -453,11 +454,12 @@ def _assert_starts_on_the_table(ctx, controller):
     except CheckFailure as exc:
         if _single(mine, start):  # the table's first row in single precision: a run returned so, no start of its own
             raise
-        typed = close(mine, np.concatenate([table["q"][0], table["qd"][0]]), PRINTED)
+        typed = defaulted_blocks(mine, start, (("q_des(0)", table["q"][0]), ("qd_des(0)", table["qd"][0])), PRINTED)
         reread = None if typed else _reread(got, ours, REREAD)
         if reread is not None:
             raise CheckFailure(exc.message, *reread, evidence=exc.evidence) from None
-        raise CheckFailure(exc.message, *(TYPED_START_HINT, "typed_numbers or ignored_argument") if typed else
+        hint = TYPED_START_HINT if len(typed) != 1 else TYPED_START_HINT.replace("q_des(0)", typed[0], 1)
+        raise CheckFailure(exc.message, *(hint, "typed_numbers or ignored_argument") if typed else
                            wrong_start(mine, start, INITIAL_HINT), evidence=exc.evidence) from None
 
 

@@ -33,6 +33,7 @@ from ._dynamics import (
     assert_energy_conserved,
     assert_fresh_along_a_run,
     assert_run,
+    defaulted_blocks,
     run_array,
     run_figure,
     wrong_start,
@@ -199,9 +200,15 @@ def _assert_small_motion(ctx):
         assert_close(start, np.concatenate(SMALL_START), f"the state (q, qd) at t = 0 of {what}", EXACT,
                      context="(the start passed to simulate)")
     except CheckFailure as exc:
-        typed = close(start, SHEET_START, EXACT)
-        raise CheckFailure(exc.message, *(START_HINT, "typed_numbers or ignored_argument") if typed else
-                           wrong_start(start, np.concatenate(SMALL_START), START_HINT), evidence=exc.evidence) from None
+        sheet = defaulted_blocks(start, np.concatenate(SMALL_START),
+                                 (("q0", SHEET_START[:2]), ("qd0", SHEET_START[2:])))
+        if sheet:
+            passed = " and ".join(sheet)
+            hint = (f"Your run starts from the sheet's {passed} whatever {passed} simulate is given. {START_HINT}"
+                    if len(sheet) < 2 else START_HINT)
+            raise CheckFailure(exc.message, hint, "typed_numbers or ignored_argument", evidence=exc.evidence) from None
+        raise CheckFailure(exc.message, *wrong_start(start, np.concatenate(SMALL_START), START_HINT),
+                           evidence=exc.evidence) from None
     assert_run(got, expected, ("q", "qd"), SMALL_BAND, f"the small motion of {what}", hint=SMALL_HINT,
                diagnosis="integration",
                note="Any solve_ivp method at its default tolerances stays within the band; the motion itself is a "
