@@ -13,6 +13,7 @@ from functools import lru_cache
 
 import probes
 
+from . import diagnosis
 from .checking import CheckFailure
 from .errors import GraderFault
 
@@ -89,4 +90,10 @@ def admit(probe, args: tuple, value):
         return value
     where = describe_call(probe, args, says)
     subject = f"{where}{fault.path}" if fault.path else where
+    if fault.transposed and diagnosis.ENABLED:  # the transposed shape: one of the diagnosis engine's slips
+        rows, columns = fault.transposed
+        raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}: the transposed shape.",
+                           f"Your {columns} x {rows} array looks like the transpose of the {rows} x {columns} one "
+                           "asked for: swap its rows and columns (build it the other way round, or return its .T).",
+                           "transpose", None)
     raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}.", fault.hint, fault.diagnosis, None)

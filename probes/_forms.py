@@ -22,15 +22,17 @@ __all__ = ["Fault", "Form", "Num", "Arr", "Text", "Flag", "Dict", "Items", "Seq"
 @dataclass(frozen=True)
 class Fault:
     """What is wrong with a reply: ``path`` into it ("" for the whole reply), ``text`` (completes "... must be"
-    or "... is"), the ``diagnosis`` ("shape", "none", "not_finite" or "") and a ``hint``."""
+    or "... is"), the ``diagnosis`` ("shape", "none", "not_finite" or "") and a ``hint``; ``transposed``: a
+    matrix of the transposed shape of a fixed one that is not square (the gate may tell it as a transpose)."""
 
     path: str
     text: str
     diagnosis: str = ""
     hint: str = ""
+    transposed: tuple = ()
 
     def within(self, step: str) -> "Fault":
-        return Fault(step + self.path, self.text, self.diagnosis, self.hint)
+        return Fault(step + self.path, self.text, self.diagnosis, self.hint, self.transposed)
 
 
 def _shown(value) -> str:
@@ -136,7 +138,9 @@ class Arr(Form):
                     hint = ""
                     if None not in expected and array.size == math.prod(expected):
                         hint = f"Reshape it, e.g. np.reshape(x, {expected})."
-                    return Fault("", f"must have shape {shown}, got shape {array.shape}", "shape", hint)
+                    transposed = (expected if len(expected) == 2 and None not in expected
+                                  and expected[0] != expected[1] and array.shape == expected[::-1] else ())
+                    return Fault("", f"must have shape {shown}, got shape {array.shape}", "shape", hint, transposed)
             elif array.ndim != self.ndim:
                 return Fault("", f"must be an array of {self.ndim} dimensions, got shape {array.shape}", "shape")
         if self.finite and not bool(np.all(np.isfinite(array))):

@@ -99,6 +99,28 @@ def test_the_gate_says_where_in_the_reply_and_that_it_cannot_be_graded():
     with pytest.raises(CheckFailure, match=r"cannot be graded: R1\(0.3\) must be numeric"):
         admit("problem_06.elementary", (1, 0.3), bodies)
 
+def test_a_matrix_of_the_transposed_shape_is_told_as_a_transpose_where_the_engine_is_on(monkeypatch):
+    """Six points returned one per column where one per row is asked: the transposed shape names its cause, and the
+    hint says to swap rows and columns, never to reshape (which would scramble them)."""
+    import grader.diagnosis
+
+    reply = {name: {"masses": np.ones(n), "points": np.zeros((3, n))} for name, n in (("six_points", 6),
+                                                                                   ("four_points", 4))}
+    reply.update(ellipsoid={"mass": 1.0, "axes": np.ones(3), "V": np.eye(3)},
+                 cuboid={"mass": 1.0, "edges": np.ones(3), "V": np.eye(3)})
+    with pytest.raises(CheckFailure) as failure:
+        admit("problem_17.representations", (np.eye(3), 1.0), reply)
+    assert failure.value.diagnosis == "transpose" and "transposed shape" in failure.value.message
+    assert ".T" in failure.value.hint and "reshape" not in failure.value.hint.lower()
+    # near misses: another shape of as many entries, and the engine switched off, are a shape alone
+    assert Arr(6, 3).fault(np.zeros((2, 9)), ()).transposed == ()
+    assert Arr(3, 3).fault(np.zeros(9), ()).transposed == ()
+    monkeypatch.setattr(grader.diagnosis, "ENABLED", False)
+    with pytest.raises(CheckFailure) as failure:
+        admit("problem_17.representations", (np.eye(3), 1.0), reply)
+    assert failure.value.diagnosis == "shape"
+
+
 # ---------------------------------------------------------------------------------------------- choices
 
 
