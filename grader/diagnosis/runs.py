@@ -710,8 +710,8 @@ def parameter_variants(motion: dict, args: tuple, sheet, start=None) -> list:
 
     ``motion["parameters"]``, the run's parameters (``sheet``: their values where an argument is not given):
 
-    * ``{"arg": index, "names": (...)}``, one argument holding them all: exchanged in pairs or scaled by the
-      ``PARAMETER_FACTORS``;
+    * ``{"arg": index, "names": (...)}``, one argument holding them all: exchanged in pairs, scaled by the
+      ``PARAMETER_FACTORS``, and, where the argument is given, each at the sheet's value (that parameter ignored);
     * ``{"args": (indices), "names": (...)}``, one argument each: exchanged in pairs (any two, where one at least is
       not given: the grammar's input slips exchange the given ones), and each given one at the sheet's value (the
       argument ignored, the module's constant used instead).
@@ -798,6 +798,17 @@ def _vector_variants(spec: dict, args: tuple, sheet) -> list:
             found.append((Hypothesis(f"run:scale:{factor:g}:{i}", "scaled_argument", 2,
                                      f"{name} enters at {words} its value: the reference's run with {name} = "
                                      f"{changed[i]:g} is yours"), run_with(changed)))
+    # each parameter given at its sheet value (the module's constant used where the argument belongs)
+    defaults = array_of(sheet)
+    if given is not sheet and defaults is not None and defaults.shape == values.shape:
+        for i, name in enumerate(names):
+            if np.isclose(values[i], defaults[i], rtol=1e-9, atol=0.0):
+                continue
+            changed = values.copy()
+            changed[i] = defaults[i]
+            found.append((Hypothesis(f"run:sheet:{i}", "ignored_argument", 2,
+                                     f"{name} = {values[i]:g} is given, but your run is the reference's with the "
+                                     f"sheet's {name} = {defaults[i]:g}: the argument is ignored"), run_with(changed)))
     return found
 
 

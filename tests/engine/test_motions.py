@@ -107,6 +107,12 @@ Q0_IGNORED = Planted(
     old="tree = build_triple_pendulum(DynamicBody)\n    t_eval",
     new="tree, q0 = build_triple_pendulum(DynamicBody), Q\n    t_eval",
     check="p24.simulated_motion", diagnosis="ignored_argument or initial_state", message="the argument is ignored")
+#: the bar's run integrated with the module's inertia whatever bar = (m, theta, g) is given: the reference's run
+#: with that one parameter at its sheet value reproduces it (the check's catalogue knows g typed in, not theta)
+THETA_IGNORED = Planted(
+    name="motions-p44-theta-ignored", problem=44, file="problem_44.py",
+    old="args=(m, theta, g),", new="args=(m, THETA, g),",
+    check="p44.event", diagnosis="ignored_argument", message="sheet's theta = 1: the argument is ignored")
 #: its near miss: the pendulum released at the given angles negated, a start that is not the module's
 START_NEGATED = Planted(
     name="motions-p24-start-negated", problem=24, file="problem_24.py",
@@ -179,7 +185,7 @@ ARM_IN_SINGLE = Planted(
 
 RUN_SLIPS = [RATES_IN_SINGLE, ARM_IN_SINGLE, SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED,
              EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS, RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT,
-             RATES_NEGATED_AT_THE_START, Q0_IGNORED]
+             RATES_NEGATED_AT_THE_START, Q0_IGNORED, THETA_IGNORED]
 NEAR_MISSES = [STRONGER_GRAVITY]
 
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
@@ -330,6 +336,19 @@ def test_parameters_of_equal_value_are_never_exchanged():
     assert {"run:swap:0:2", "run:swap:1:2"} <= keys
     keys = {h.key for h, _ in parameter_variants(motion, (None,), (1.5, 2.5, 9.81))}
     assert "run:swap:0:1" in keys
+
+
+def test_parameters_given_in_one_argument_are_each_tried_at_the_sheets_value_only_where_given():
+    """Parameters held in one argument: each given one that differs from the sheet's is tried at the sheet's value
+    (that parameter ignored, the module's constant used); none where the argument is not given (the run is the
+    sheet's already)."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"parameters": {"arg": 0, "names": ("m", "theta", "g")}}
+    variants = dict((h.key, args) for h, args in parameter_variants(motion, ((0.8, 0.6, 9.81),), (0.5, 1.0, 9.81)))
+    assert variants["run:sheet:0"] == ([0.5, 0.6, 9.81],) and variants["run:sheet:1"] == ([0.8, 1.0, 9.81],)
+    assert "run:sheet:2" not in variants
+    assert not {k for k, _ in parameter_variants(motion, (None,), (0.5, 1.0, 9.81)) if k.key.startswith("run:sheet")}
 
 
 def test_parameters_given_one_argument_each_are_exchanged_only_where_one_is_the_sheets():
