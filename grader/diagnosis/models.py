@@ -18,6 +18,9 @@ holds them all, and the compared value is among them:
   unturned relative to its parent, the model built in another configuration (its ``euler`` or its keyframe);
   where it starts turned by an angle (a configuration the model is given), the slip of that angle's value that
   gives the student's turn (its sign, degrees, a factor), else nothing;
+* joints placed elsewhere in their bodies, nothing else changed: every difference is a joint's anchor, each off by
+  one vector in its body's frame (a joint's ``pos`` typed wrongly, or written so for every joint by one loop): an
+  offset;
 * one attribute alone differs (gravity, an axis, a damping, a gear, a site's position in its body): the grammar of
   values on it (a sign, entries exchanged, a factor).
 
@@ -260,9 +263,30 @@ def model_slips(scene, evidence: Evidence) -> list[Hypothesis] | None:
         if angle is not None:
             told += _angle_slips(theirs, body, angle)
             break
+    told += _joints_moved(mine, theirs, differing)
     if len(differing) == 1:
         told += _attribute_slips(mine, theirs, differing[0])
     return told
+
+
+def _joints_moved(mine, theirs, differing: list) -> list[Hypothesis]:
+    """Joints placed elsewhere in their bodies: every difference is a joint's anchor (no body moved, no centre of
+    mass), each off by one vector in the frame of the joint's body (a ``pos`` typed wrongly on one joint, or on every
+    joint a loop writes): an offset.  Anchors moved each by another vector hold no one story: nothing."""
+    if not differing or any(path[0] != "joints" or path[-1] != "anchor" for path in differing):
+        return []
+    offsets = []
+    for _, j, _ in differing:
+        frame = _frame(theirs, int(theirs["joints"][j]["body"]))
+        offsets.append(frame.T @ (np.asarray(at(mine, ("joints", j, "anchor")), dtype=float)
+                                  - np.asarray(at(theirs, ("joints", j, "anchor")), dtype=float)))
+    d = offsets[0]
+    if not all(within(o, d, Tol("", 1e-9, 1e-7)) for o in offsets):
+        return []
+    names = [str(theirs["joints"][j].get("name") or f"joint {j + 1}") for _, j, _ in differing]
+    which = f'the joint "{names[0]}" sits' if len(names) == 1 else f"the joints {', '.join(names)} each sit"
+    return [Hypothesis("model:joints-moved", "offset", 1, f"{which} {_vector(d)} m (in its body's frame) from where "
+                       "it belongs in its body, the body itself where it belongs: look at the joint's pos")]
 
 
 def _pivot(desc, body: int):

@@ -5,7 +5,8 @@
   sits at a factor of the lever from its parent's joint, a sign where it sits at the lever's opposite), a body
   turned about its joint where the reference's starts unturned is the model built in another configuration, where
   it starts turned by an angle given the slip of that angle (degrees, a sign), and one attribute alone differing is
-  told by the grammar of values.
+  told by the grammar of values; joints placed elsewhere in their bodies by one vector, nothing else changed, are
+  an offset (the joint's pos).
   Differences that no one story holds name nothing.
 
 The planted mistakes are in no set of ``tests/diagnosis/``, no table of ``tests/engine/`` and no planted suite;
@@ -53,20 +54,28 @@ LINK3_ALONG_Y = Planted(
         "        f'pos=\"{vector([LENGTH, 0.0, 0.0])}\"', f'pos=\"{vector([0.0, LENGTH, 0.0])}\"', 1)",
     check="p04.model_structure", diagnosis="offset or coordinate_order", message="the same lengths along other axes",
     also=("p04.model_at_rest",))
-MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y]
-
-#: a near miss: every hinge of problem 2's links placed off its body's origin (inside the link), the link itself
-#: where it belongs: the anchors move and the centres of mass do not, which no one story of a model holds
+#: every hinge of problem 2's links placed off its body's origin (inside the link), the link itself where it belongs:
+#: the anchors move by one vector in their bodies' frames and nothing else does (the joint's pos)
 JOINT_INSIDE_LINK = Planted(
     name="models-p02-joint-inside-link", problem=2, file="problem_02.py",
     old='<joint name="joint{i}" type="hinge" axis="0 0 1"',
     new='<joint name="joint{i}" type="hinge" pos="0.01 0 0" axis="0 0 1"',
+    check="p02.joint", diagnosis="offset", message="from where it belongs in its body",
+    also=("p02.period", "p02.traces_2a", "p02.traces_2b", "p02.traces_2c"))
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y, JOINT_INSIDE_LINK]
+
+#: a near miss: the hinges placed off their bodies' origins and turned upside down as well: the anchors move and
+#: the axes turn, which no one story of a model holds (joints moved alone are an offset, an axis alone a sign)
+JOINTS_MOVED_AND_TURNED = Planted(
+    name="models-p02-joints-moved-and-turned", problem=2, file="problem_02.py",
+    old='<joint name="joint{i}" type="hinge" axis="0 0 1"',
+    new='<joint name="joint{i}" type="hinge" pos="0.01 0 0" axis="0 0 -1"',
     check="p02.joint", diagnosis="", message="")
 
 
 @pytest.fixture(scope="module")
 def slot():
-    yield from warm_slot(sorted({m.problem for m in MISTAKES + [JOINT_INSIDE_LINK]}))
+    yield from warm_slot(sorted({m.problem for m in MISTAKES + [JOINTS_MOVED_AND_TURNED]}))
 
 
 @pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
@@ -75,9 +84,9 @@ def test_a_value_without_a_reference_call_is_told_its_cause(mistake, tmp_path, k
 
 
 def test_a_model_whose_differences_no_story_holds_names_nothing(tmp_path, kit_oracle, slot):
-    submission = build_planted(JOINT_INSIDE_LINK, tmp_path / "pkg")
-    live, _ = grade_live_and_kit(JOINT_INSIDE_LINK.problem, submission, kit_oracle, zygote=slot)
-    target = {r.check_id: r for r in live.results}[JOINT_INSIDE_LINK.check]
+    submission = build_planted(JOINTS_MOVED_AND_TURNED, tmp_path / "pkg")
+    live, _ = grade_live_and_kit(JOINTS_MOVED_AND_TURNED.problem, submission, kit_oracle, zygote=slot)
+    target = {r.check_id: r for r in live.results}[JOINTS_MOVED_AND_TURNED.check]
     assert target.status is Status.FAILED, target.message
     assert target.diagnosis == "", (target.diagnosis, target.hint)
 
@@ -199,6 +208,18 @@ def test_a_link_hung_behind_its_parent_s_joint_is_an_offset_and_a_sign():
     assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset", "sign_flip"]
     mine = _chain([0.3, 0.5], along=(-0.5, 0.0, 0.0))
     assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset"]
+
+
+def test_a_joint_moved_in_its_body_is_an_offset_and_joints_moved_apart_name_nothing():
+    """The second joint placed 0.03 m along its body's x (the body where it belongs): an offset, its joint's pos;
+    the first and second moved by different vectors in their bodies' frames: no one story."""
+    theirs = _chain([0.3, 0.5])
+    mine = _chain([0.3, 0.5])
+    frame = mine["bodies"][1]["frame"]
+    mine["joints"][1] = {**mine["joints"][1], "anchor": mine["joints"][1]["anchor"] + frame @ [0.03, 0.0, 0.0]}
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["offset"]
+    mine["joints"][0] = {**mine["joints"][0], "anchor": mine["joints"][0]["anchor"] + [0.0, 0.02, 0.0]}
+    assert _told(mine, theirs, mine["joints"][1]["anchor"]) == []
 
 
 def test_gravity_alone_negated_is_a_sign():
