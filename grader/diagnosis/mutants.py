@@ -58,9 +58,18 @@ or passes where a function of the reference reads its parameter so), and a param
 number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
 ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at
 one read or at all of them: the argument ignored; and an entry written into a neighbouring index (``a[0] = ...`` for
-``a[1] = ...``: a wrong index).  The reads of names and the indices written come after every other slip of every
-function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
-slips of precision
+``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or a comprehension's first loop) over
+one item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of
+its sum left out), a keyword argument left out of a call of a function or a class of the reference whose parameter
+of that name has a default (the callee then uses the default: a term left out, a joint built without its
+``A_PDp``), every inverse and solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no
+inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to
+every entry, a term added, told as an offset as well where it is the same on every input); last of all, after the
+reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units
+into the ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s,
+``phi * np.pi / 180`` of an angle already in radians: a scale).  The reads of names and the indices written come
+after every other slip of every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches
+the older slips first), and the slips of precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
 loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to
@@ -261,6 +270,7 @@ class _Function:
     angled: frozenset = frozenset()  # ``(function, position)`` of the reference's parameters that are angles
     sympy: frozenset = frozenset()  # the names its module's top level binds to sympy (``sp``) or its simplifiers
     given: bool = False  # a function of a problem's own module that holds no region: the template gives it whole
+    keywords: frozenset = frozenset()  # ``(callee, keyword)`` of the reference's parameters that have a default
 
 
 @lru_cache(maxsize=4)
@@ -276,6 +286,7 @@ def _functions(root: str) -> tuple[_Function, ...]:
             modules.append((path, _regions(source.splitlines()), ast.parse(source, filename=str(path))))
     attributes = frozenset(n.attr for _, _, tree in modules for n in ast.walk(tree) if isinstance(n, ast.Attribute))
     angled = frozenset(pair for _, _, tree in modules for pair in _angled(tree))
+    keywords = _keyword_defaults([tree for _, _, tree in modules])
     found = []
     for path, regions, tree in modules:
         constants, sympy = _constants(tree), _sympy_names(tree.body)
@@ -283,11 +294,12 @@ def _functions(root: str) -> tuple[_Function, ...]:
         for node, names in _definitions(tree) if regions or own else ():
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
-                found.append(_Function(path.stem, names, node, inside, attributes, constants, angled, sympy))
+                found.append(_Function(path.stem, names, node, inside, attributes, constants, angled, sympy,
+                                       keywords=keywords))
             elif own:
                 whole = ((int(own.group(1)), node.lineno, node.end_lineno + 1),)
                 found.append(_Function(path.stem, names, node, whole, attributes, constants, angled, sympy,
-                                       given=True))
+                                       given=True, keywords=keywords))
     return tuple(found)
 
 
@@ -313,6 +325,33 @@ def _angled(tree: ast.Module):
                 yield node.name, name
                 if name in positional:
                     yield node.name, positional.index(name)
+
+
+def _keyword_defaults(trees: list) -> frozenset:
+    """``(callee, keyword)`` of every parameter with a default of the reference's functions (at any depth, by their
+    names) and of its classes' constructors (by the class's name: a class without its own ``__init__``, or whose
+    ``__init__`` takes ``**kwargs``, also takes the keywords of its bases' constructors): the keywords a call may
+    leave out, its callee then using the default."""
+    found, classes = set(), {}
+    for tree in trees:
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                found |= {(node.name, name) for name in _defaulted(node)}
+            elif isinstance(node, ast.ClassDef):
+                init = next((item for item in node.body if isinstance(item, ast.FunctionDef)
+                             and item.name == "__init__"), None)
+                own = _defaulted(init) if init is not None else frozenset()
+                inherits = init is None or init.args.kwarg is not None
+                bases = [b.id if isinstance(b, ast.Name) else b.attr if isinstance(b, ast.Attribute) else ""
+                         for b in node.bases] if inherits else []
+                classes[node.name] = (own, bases)
+
+    def of(name, seen=()):
+        own, bases = classes.get(name, (frozenset(), []))
+        return set(own).union(*(of(b, seen + (name,)) for b in bases if b not in seen and b in classes))
+
+    found |= {(name, keyword) for name in classes for keyword in of(name)}
+    return frozenset(found)
 
 
 def _trig_arguments(node) -> set:
@@ -490,6 +529,15 @@ SLIPS = {
     "constant_transposed": ("transpose", "a matrix of the constant `{f}` is written transposed (its rows as "
                                          "columns)"),
     "constants": ("swapped", "the constants `{f}` are exchanged"),
+    "loop_short": ("missing_term", "a loop in `{f}` stops one short: its last item is left out"),
+    "loop_late": ("missing_term", "a loop in `{f}` starts one late: its first item is left out"),
+    "keyword": ("missing_term", "a call in `{f}` leaves out one of its keyword arguments, so that the callee's "
+                                "default is used"),
+    "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
+    "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
+                               "to the diagonal alone)"),
+    "converted_radians": ("degrees", "`{f}` converts an argument to radians that already is in radians"),
+    "converted_rpm": ("wrong_factor", "`{f}` converts an argument from rpm to rad/s that already is in rad/s"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
 PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed"})
@@ -676,6 +724,11 @@ def _slips(node, parent):
     if isinstance(node, ast.Return):
         for k in _returned_names(node):  # ``np.array([x, y, gamma])`` with gamma in degrees
             yield "returned_degrees", lambda n, k=k: _in_degrees(n, k)
+    if isinstance(node, (ast.For, ast.ListComp, ast.GeneratorExp, ast.SetComp, ast.DictComp)):
+        yield "loop_short", lambda n: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None))
+        yield "loop_late", lambda n: _loop_cut(n, ast.Slice(ast.Constant(1), None, None))
+    if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign, ast.Expr)) and _inverses(node) >= 2:
+        yield "inverses", lambda n: _Uninverted().visit(n)
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):
         if _trigs(node) >= {"sin", "cos"}:
             yield "trigs", _all_trigs_exchanged
@@ -686,6 +739,70 @@ def _slips(node, parent):
         yield "sign", _negated
         if isinstance(parent.op, ast.MatMult) and not (isinstance(node, ast.Attribute) and node.attr == "T"):
             yield "transpose", _transposed
+
+
+def _loop_cut(node, cut: ast.Slice):
+    """The loop (or the comprehension's first loop) over its items ``cut``: ``[*items][:-1]`` (one short) or
+    ``[*items][1:]`` (one late), whatever the items are (a list, a range, an ``enumerate``)."""
+    def cut_of(items):
+        return ast.Subscript(ast.List([ast.Starred(items, ast.Load())], ast.Load()), cut, ast.Load())
+
+    if isinstance(node, ast.For):
+        return _with(node, iter=cut_of(node.iter))
+    first = _with(node.generators[0], iter=cut_of(node.generators[0].iter))
+    return _with(node, generators=[first] + node.generators[1:])
+
+
+def _inverse_call(node) -> bool:
+    """``np.linalg.inv(A)``, sympy's ``A.inv()`` or ``np.linalg.solve(A, b)``."""
+    if not isinstance(node, ast.Call) or node.keywords:
+        return False
+    callee = _callee(node)
+    return (callee == "inv" and (len(node.args) == 1 or (not node.args and isinstance(node.func, ast.Attribute)))
+            or callee == "solve" and len(node.args) == 2)
+
+
+def _inverses(statement) -> int:
+    return sum(_inverse_call(n) for n in ast.walk(statement))
+
+
+class _Uninverted(ast.NodeTransformer):
+    """Every inverse of a statement left out: ``inv(A)`` and ``A.inv()`` as ``A``, ``solve(A, b)`` as ``A @ b``."""
+
+    def visit_Call(self, node):
+        self.generic_visit(node)
+        if not _inverse_call(node):
+            return node
+        if _callee(node) == "solve":
+            return ast.BinOp(node.args[0], ast.MatMult(), node.args[1])
+        return node.args[0] if node.args else node.func.value
+
+
+def _keyword_slips(node, keywords: frozenset):
+    """A keyword argument left out of a call of a function (or a class) of the reference whose parameter of that
+    name has a default (``keywords``: ``_keyword_defaults``): the callee then uses the default."""
+    if isinstance(node, ast.Call):
+        callee = _callee(node)
+        for k, keyword in enumerate(node.keywords):
+            if keyword.arg is not None and (callee, keyword.arg) in keywords:
+                yield "keyword", lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
+
+
+#: the conversions of units a course applies to an argument (``_conversion_slips``), into the units a function
+#: computes in: degrees to radians, rpm to rad/s, each by its factor
+CONVERSIONS = (("converted_radians", np.pi / 180.0), ("converted_rpm", np.pi / 30.0))
+
+
+def _conversion_slips(function: ast.FunctionDef, lines: tuple):
+    """Every read of one of the function's arguments in the region multiplied by the factor of a conversion of
+    units (``CONVERSIONS``): an argument converted that already is in the unit the function computes in (``omega *
+    np.pi / 30`` of a rate given in rad/s), or converted the wrong way."""
+    used = {node.id for node in ast.walk(function) if isinstance(node, ast.Name) and _in(node, lines)}
+    for a in function.args.posonlyargs + function.args.args + function.args.kwonlyargs:
+        if a.arg in used and a.arg not in ("self", "cls"):
+            for slip, factor in CONVERSIONS:
+                yield slip, ("read_as", a.arg, ast.BinOp(ast.Name(a.arg, ast.Load()), ast.Mult(),
+                                                         ast.Constant(factor)))
 
 
 #: the marks of a rate in the course's notation: ``qd`` of ``q``, ``qdd`` of ``qd``, ``omegaDot`` of ``omega``,
@@ -1244,6 +1361,8 @@ def _call_slips(node: ast.Call):
         yield "diagonal", lambda n: _diagonal_inverse(n.args[0])
     if callee == "inv" and not args and isinstance(node.func, ast.Attribute):  # sympy's ``M.inv()``
         yield "inverse", lambda n: n.func.value
+    if callee == "eye" and len(args) == 1 and not node.keywords:  # ``np.eye(3) + W`` as ``1.0 + W``
+        yield "identity", lambda n: ast.Constant(1.0)
     yield from _single_slips(node)
     if callee in ("inv", "solve") or any(isinstance(a, ast.Starred) for a in args):
         return
@@ -1529,13 +1648,15 @@ def _mutated(function: _Function, lines: tuple):
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
     angles, defaults, sums = _angles(function), _defaults(function), _sums(function.node)
-    # the reads of one name for another come after every other slip: the tier tries them last, within its budget
+    # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
+    # the arguments converted to other units come last of all
     places = [(None, function.node, None, False, False, False)] + [site + (False,) for site in sites] + \
-        [(None, function.node, None, False, False, True)] + [site + (True,) for site in sites]
+        [(None, function.node, None, False, False, True)] + [site + (True,) for site in sites] + \
+        [(None, function.node, None, False, False, CONVERSIONS)]
     for index, node, parent, guarded, indexing, late_pass in places:
         if index is None:
-            slips = _default_slips(function.node, lines, defaults) if late_pass else \
-                _parameter_slips(function.node, lines)
+            slips = _conversion_slips(function.node, lines) if late_pass is CONVERSIONS else \
+                _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
             slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums),
                                                                    _written_index_slips(node))
@@ -1545,7 +1666,8 @@ def _mutated(function: _Function, lines: tuple):
             slips = itertools.chain(_slips(node, parent), _entry_slips(node, parent),
                                     _read_slips(node, names, function.attributes),
                                     _trig_read_slips(node, parent, others),
-                                    _typed_slips(node, parent, function.constants))
+                                    _typed_slips(node, parent, function.constants),
+                                    _keyword_slips(node, function.keywords))
         for slip, edit in slips:
             if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
                 continue
@@ -1951,7 +2073,7 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled", "typed",
-                        "written_index"})
+                        "written_index", "converted_radians", "converted_rpm"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
@@ -2329,11 +2451,12 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
     found = {}
     for mutant in kept:
         name, detail = mutant.name, mutant.detail
-        if constant and mutant.slip not in _ENTRIES:  # a term that is the same on every input: an offset
+        if constant and mutant.slip not in _ENTRIES | _ADDED:  # a term that is the same on every input: an offset
             name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
         key = f"mutant:{name}:{detail}"
         found.setdefault(key, Hypothesis(key, name, COST, detail))
-        if constant and mutant.slip in _ENTRIES:  # an entry left out, and every value off by the same amount
+        if constant and mutant.slip in _ENTRIES | _ADDED:  # an entry left out (or the identity's 1 added to every
+            # entry), and every value off by the same amount
             found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
                 f"{detail}; it is the same on every input: your values are all off by it"), twin=True))
         elif mutant.given and mutant.slip in _ENTRIES:  # a number of data the template gives: where a value starts
@@ -2419,6 +2542,9 @@ _TERMS = {"missing_term", "extra_term"}
 #: is one in the code a problem's module gives whole (``given``), where a list's numbers are data (a gait's mean,
 #: a hip's height): a number of it written 0 is as truly a value off by it as a term left out
 _ENTRIES = {"zeroed", "constant_zeroed"}
+#: the slips that add a term of their own kind, told as themselves and, where the term is the same on every input,
+#: as an offset as well: the identity written 1 adds 1 to every entry (a term added, and the same one on every input)
+_ADDED = {"identity"}
 
 
 def _constant_difference(evidences: list[Evidence]) -> bool:

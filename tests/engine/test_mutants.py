@@ -113,6 +113,7 @@ SPD = np.array([[2.0, 0.3, -0.1], [0.3, 1.5, 0.2], [-0.1, 0.2, 1.0]])
 DYNAMICS = [(SPD, V(0.3, -1.0, 0.5), V(0.0, -2.0, 0.1), V(1.0, 0.4, -0.7)),
             (1.5 * SPD + np.eye(3), V(-0.8, 0.2, 1.1), V(0.5, 0.3, -1.2), V(-0.4, 0.9, 0.6))]
 CUBOIDS = [("cuboid", 2.0, 0.3, 0.5, 0.7), ("cuboid", 0.8, 1.1, 0.4, 0.6)]
+WALKERS = [(0.2, 0.4), (-0.3, 0.1)]
 
 #: (slip, check, file, old, new, probe, inputs, path, diagnosis, the hint's detail)
 OPERATORS = [
@@ -208,6 +209,17 @@ OPERATORS = [
      "second = 0.5 * (len(moments) - 2.0 * moments)", "problem_16.dimensions",
      [(2.0, 0.5, 0.6, 0.7), (0.5, 0.4, 0.5, 0.8)], ("cuboid",), "wrong_factor",
      "`principal_second_moments` divides by the number of entries where their sum belongs"),
+    ("a loop that stops one short", "p22.loop_values", "planar.py",
+     "for length, angle in np.asarray(q, dtype=float).reshape(-1, 2):",
+     "for length, angle in np.asarray(q, dtype=float).reshape(-1, 2)[:-1]:", "problem_22.loop", ARMS, (),
+     "missing_term", "a loop in `end_effector_loop` stops one short"),
+    ("a keyword argument left out, its default used", "p25.sheet_values", "problem_25.py",
+     "S_r_SDs=(-DX, DY, 0.0), q_index=[1])", "q_index=[1])", "problem_25.walker", WALKERS, ("x",), "missing_term",
+     "a call in `build_walker` leaves out one of its keyword arguments"),
+    ("an argument converted to radians again", "p47.impulse", "problem_47.py",
+     "arm = x_cog * np.cos(phi) - y_cog * np.sin(phi)",
+     "arm = x_cog * np.cos(np.deg2rad(phi)) - y_cog * np.sin(np.deg2rad(phi))", "problem_47.impulse", IMPULSES, (),
+     "degrees", "`impulse` converts an argument to radians that already is in radians"),
     ("a slip in a symbolic answer that its probe computes once per package", "p45.jacobian", "problem_45.py",
      "y * sp.cos(phi) - x * sp.sin(phi) - d,", "y * sp.sin(phi) - x * sp.sin(phi) - d,", "problem_45.evaluate",
      [("J", [dict(s=0.3, l=1.2, d=0.4, m=2.0, theta=0.5, phid=-1.0)]),
@@ -230,6 +242,30 @@ def test_each_operator_names_its_slip_and_the_students_function(operator, tmp_pa
     for h in found:  # the student's function by its name, and nothing of the reference's code
         assert mutants.NAMES_A_FUNCTION.search(h.detail)
         assert old not in h.detail and "np." not in h.detail and "=" not in h.detail and "self" not in h.detail
+
+
+#: (slip, check, file, old, new, probe, inputs, path, what the hint must not say): a mistake near a slip of the
+#: grammar that is not that slip
+NEAR_MISSES = [
+    ("a loop that stops two short", "p22.loop_values", "planar.py",
+     "for length, angle in np.asarray(q, dtype=float).reshape(-1, 2):",
+     "for length, angle in np.asarray(q, dtype=float).reshape(-1, 2)[:-2]:", "problem_22.loop", ARMS, (),
+     "a loop in"),
+    ("a keyword argument given another value", "p25.sheet_values", "problem_25.py",
+     "S_r_SDs=(-DX, DY, 0.0), q_index=[1])", "S_r_SDs=(DX, -DY, 0.0), q_index=[1])", "problem_25.walker", WALKERS,
+     ("x",), "keyword arguments"),
+    ("an argument converted by twice the factor", "p47.impulse", "problem_47.py",
+     "arm = x_cog * np.cos(phi) - y_cog * np.sin(phi)",
+     "arm = x_cog * np.cos(phi * np.pi / 90) - y_cog * np.sin(phi * np.pi / 90)", "problem_47.impulse", IMPULSES, (),
+     "converts an argument"),
+]
+
+
+@pytest.mark.parametrize("near", NEAR_MISSES, ids=[n[0] for n in NEAR_MISSES])
+def test_a_near_miss_of_a_slip_is_not_named_as_it(near, tmp_path):
+    _, check_id, file, old, new, probe, inputs, path, said = near
+    found = slips_of(tmp_path, check_id, file, old, new, probe, inputs, path)
+    assert not any(said in h.detail for h in found), [(h.name, h.detail) for h in found]
 
 
 def test_a_slip_inside_an_index_is_an_index_slip(tmp_path):
@@ -577,6 +613,20 @@ def shear(k, d):
     """The shear of the plane by ``k`` along its first axis, and by ``d`` of the third along the second."""
     # BEGIN SOLUTION problem 98
     return np.array([[1.0, k, 0.0], [0.0, 1.0, d], [0.0, 0.0, 1.0]])
+    # END SOLUTION
+
+
+def relaxed(K, c):
+    """``E + c K``."""
+    # BEGIN SOLUTION problem 98
+    return np.eye(3) + c * K
+    # END SOLUTION
+
+
+def compliant_rates(A, B, w):
+    """The rates ``x`` of ``B A x = w``, each matrix inverted in turn."""
+    # BEGIN SOLUTION problem 98
+    return np.linalg.inv(A) @ np.linalg.solve(B, w)
     # END SOLUTION
 
 
@@ -1490,3 +1540,40 @@ def test_a_sign_no_exchange_makes_has_no_rival(made_up):
     assert mutants.opposite_slips(scene("p98.difference"), evidences, "sign") == []
     evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0)])
     assert mutants.opposite_slips(scene("p98.difference"), evidences, "scale") == []
+
+
+#: two inputs of ``compliant_rates``
+COMPLIANT = [(SPD, 1.5 * SPD + np.eye(3), V(0.3, -1.0, 0.5)), (2.0 * SPD + np.eye(3), SPD, V(-0.8, 0.2, 1.1))]
+
+
+def test_every_inverse_of_a_statement_left_out_is_no_inverse(made_up):
+    """``A @ B @ w`` for ``inv(A) @ solve(B, w)``: both inverses of the statement left out together; the near miss,
+    one of them left out, is told as that one alone."""
+    def both(A, B, w):
+        return A @ B @ w
+
+    found = mutants.mutant_slips(scene("p98.compliant_rates"), made_up_evidences(made_up, "compliant_rates", both,
+                                                                                 COMPLIANT))
+    assert {h.name for h in found} == {"no_inverse"}, [(h.name, h.detail) for h in found]
+    assert any("every inverse" in h.detail for h in found), [h.detail for h in found]
+
+    def one(A, B, w):
+        return A @ np.linalg.solve(B, w)
+
+    found = mutants.mutant_slips(scene("p98.compliant_rates"), made_up_evidences(made_up, "compliant_rates", one,
+                                                                                 COMPLIANT))
+    assert {h.name for h in found} == {"no_inverse"}, [(h.name, h.detail) for h in found]
+    assert not any("every inverse" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_the_identity_written_as_one_is_a_term_added_and_an_offset(made_up):
+    """``1.0 + c K`` for ``np.eye(3) + c K``: numpy adds the 1 to every entry, a term added that is the same on
+    every input (an offset as well); the near miss, the identity's rows reversed, is no identity written as 1."""
+    inputs = [(SPD, 0.5), (1.5 * SPD + np.eye(3), -1.2)]
+    found = mutants.mutant_slips(scene("p98.relaxed"), made_up_evidences(made_up, "relaxed", lambda K, c: 1.0 + c * K,
+                                                                         inputs))
+    assert {h.name for h in found} == {"extra_term", "offset"}, [(h.name, h.detail) for h in found]
+    assert any("the identity matrix as the number 1" in h.detail for h in found), [h.detail for h in found]
+    found = mutants.mutant_slips(scene("p98.relaxed"), made_up_evidences(made_up, "relaxed",
+                                                                         lambda K, c: np.eye(3)[::-1] + c * K, inputs))
+    assert not any("the number 1" in h.detail for h in found), [(h.name, h.detail) for h in found]
