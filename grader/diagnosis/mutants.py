@@ -64,7 +64,9 @@ its sum left out), a keyword argument left out of a call of a function or a clas
 of that name has a default (the callee then uses the default: a term left out, a joint built without its
 ``A_PDp``), every inverse and solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no
 inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to
-every entry, a term added, told as an offset as well where it is the same on every input); last of all, after the
+every entry, a term added, told as an offset as well where it is the same on every input), and a body's matrix
+turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @ B_I_B @
+A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame); last of all, after the
 reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units
 into the ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s,
 ``phi * np.pi / 180`` of an angle already in radians: a scale).  The reads of names and the indices written come
@@ -538,6 +540,8 @@ SLIPS = {
                                "to the diagonal alone)"),
     "converted_radians": ("degrees", "`{f}` converts an argument to radians that already is in radians"),
     "converted_rpm": ("wrong_factor", "`{f}` converts an argument from rpm to rad/s that already is in rad/s"),
+    "inertial_matrix": ("wrong_frame", "`{f}` turns a matrix of body coordinates into inertial ones (A M A^T) where "
+                                       "the body's own belongs"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
 PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed"})
@@ -786,6 +790,58 @@ def _keyword_slips(node, keywords: frozenset):
         for k, keyword in enumerate(node.keywords):
             if keyword.arg is not None and (callee, keyword.arg) in keywords:
                 yield "keyword", lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
+
+
+#: a matrix in the coordinates of one frame by the course's notation (``B_I_B``, ``K_I_K``): the frame on both sides
+_BODY_MATRIX = re.compile(r"^([A-Z][A-Za-z0-9]{0,4})_([A-Z][A-Za-z0-9]*)_\1$")
+
+
+def _body_matrix(node) -> str | None:
+    """The frame of a read of a body's matrix (``B`` of ``self.B_I_B`` or of ``B_I_B``), or None."""
+    if isinstance(node, (ast.Name, ast.Attribute)) and isinstance(node.ctx, ast.Load):
+        found = _BODY_MATRIX.match(node.id if isinstance(node, ast.Name) else node.attr)
+        return found.group(1) if found else None
+    return None
+
+
+def _rotation_at_hand(node, frame: str, names: frozenset, attributes: frozenset):
+    """The rotation ``A_I<frame>`` where the function has it at hand: a name it reads or binds (``A_IB``), or an
+    attribute of the reference held by the matrix's own holder (``self.A_IB`` beside ``self.B_I_B``); else None."""
+    rotation = f"A_I{frame}"
+    if isinstance(node, ast.Name):
+        return ast.Name(rotation, ast.Load()) if rotation in names else None
+    return ast.Attribute(copy.deepcopy(node.value), rotation, ast.Load()) if rotation in attributes else None
+
+
+def _frame_slips(node, names: frozenset, attributes: frozenset):
+    """Every read of a body's matrix in a statement (``B_I_B``) turned into inertial coordinates, ``A_IB @ B_I_B @
+    A_IB.T``, where the function has the rotation at hand (``_rotation_at_hand``): the body's matrix where its own
+    coordinates belong, taken as the inertial one."""
+    if not isinstance(node, (ast.Assign, ast.Return, ast.AugAssign, ast.Expr)):
+        return
+    seen = set()
+    for read in ast.walk(node):
+        frame = _body_matrix(read)
+        key = ast.dump(read)
+        if frame is None or key in seen:
+            continue
+        seen.add(key)
+        rotation = _rotation_at_hand(read, frame, names, attributes)
+        if rotation is not None:
+            yield "inertial_matrix", lambda n, key=key, rotation=rotation: _Turned(key, rotation).visit(n)
+
+
+class _Turned(ast.NodeTransformer):
+    """Every read whose ``ast.dump`` is ``key`` as ``rotation @ read @ rotation.T``."""
+
+    def __init__(self, key: str, rotation):
+        self.key, self.rotation = key, rotation
+
+    def generic_visit(self, node):
+        if isinstance(node, ast.expr) and ast.dump(node) == self.key:
+            turned = ast.BinOp(copy.deepcopy(self.rotation), ast.MatMult(), node)
+            return ast.BinOp(turned, ast.MatMult(), _transposed(copy.deepcopy(self.rotation)))
+        return super().generic_visit(node)
 
 
 #: the conversions of units a course applies to an argument (``_conversion_slips``), into the units a function
@@ -1667,7 +1723,8 @@ def _mutated(function: _Function, lines: tuple):
                                     _read_slips(node, names, function.attributes),
                                     _trig_read_slips(node, parent, others),
                                     _typed_slips(node, parent, function.constants),
-                                    _keyword_slips(node, function.keywords))
+                                    _keyword_slips(node, function.keywords),
+                                    _frame_slips(node, names, function.attributes))
         for slip, edit in slips:
             if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
                 continue

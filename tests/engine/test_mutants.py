@@ -616,6 +616,13 @@ def shear(k, d):
     # END SOLUTION
 
 
+def spin_torque(A_IB, B_I_B, w):
+    """Euler's gyroscopic torque ``-w x (B_I_B w)`` in body coordinates (of a body that ``A_IB`` turns)."""
+    # BEGIN SOLUTION problem 98
+    return -np.cross(w, B_I_B @ w)
+    # END SOLUTION
+
+
 def relaxed(K, c):
     """``E + c K``."""
     # BEGIN SOLUTION problem 98
@@ -1577,3 +1584,24 @@ def test_the_identity_written_as_one_is_a_term_added_and_an_offset(made_up):
     found = mutants.mutant_slips(scene("p98.relaxed"), made_up_evidences(made_up, "relaxed",
                                                                          lambda K, c: np.eye(3)[::-1] + c * K, inputs))
     assert not any("the number 1" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_a_body_matrix_turned_into_inertial_coordinates_is_a_wrong_frame(made_up):
+    """``A_IB @ B_I_B @ A_IB.T`` where ``B_I_B`` belongs (the rotation at hand): the body's matrix taken in inertial
+    coordinates; the near miss, turned the other way (``A_IB.T @ B_I_B @ A_IB``), is not that slip."""
+    inputs = [(ROTATIONS[0], INERTIA, V(0.3, -1.0, 0.5)), (ROTATIONS[1], 1.5 * INERTIA, V(-0.8, 0.2, 1.1))]
+
+    def inertial(A_IB, B_I_B, w):
+        return -np.cross(w, A_IB @ B_I_B @ A_IB.T @ w)
+
+    found = mutants.mutant_slips(scene("p98.spin_torque"), made_up_evidences(made_up, "spin_torque", inertial,
+                                                                             inputs))
+    assert {DIAGNOSES[h.name].family for h in found} == {"frame"}, [(h.name, h.detail) for h in found]
+    assert any("into inertial ones" in h.detail for h in found), [h.detail for h in found]
+
+    def reversed_turn(A_IB, B_I_B, w):
+        return -np.cross(w, A_IB.T @ B_I_B @ A_IB @ w)
+
+    found = mutants.mutant_slips(scene("p98.spin_torque"), made_up_evidences(made_up, "spin_torque", reversed_turn,
+                                                                             inputs))
+    assert not any("into inertial ones" in h.detail for h in found), [(h.name, h.detail) for h in found]
