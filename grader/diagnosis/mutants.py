@@ -62,7 +62,7 @@ one read or at all of them: the argument ignored; and an entry written into a ne
 one item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of
 its sum left out), a keyword argument left out of a call of a function or a class of the reference whose parameter
 of that name has a default (the callee then uses the default: a term left out, a joint built without its
-``A_PDp``), every inverse and solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no
+``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no
 inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to
 every entry, a term added, told as an offset as well where it is the same on every input), and a body's matrix
 turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @ B_I_B @
@@ -535,6 +535,8 @@ SLIPS = {
     "loop_late": ("missing_term", "a loop in `{f}` starts one late: its first item is left out"),
     "keyword": ("missing_term", "a call in `{f}` leaves out one of its keyword arguments, so that the callee's "
                                 "default is used"),
+    "keyword_point": ("offset", "a call in `{f}` leaves out a point's position among its keyword arguments, so that "
+                                "the callee's default puts the point elsewhere"),
     "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
@@ -784,12 +786,14 @@ class _Uninverted(ast.NodeTransformer):
 
 def _keyword_slips(node, keywords: frozenset):
     """A keyword argument left out of a call of a function (or a class) of the reference whose parameter of that
-    name has a default (``keywords``: ``_keyword_defaults``): the callee then uses the default."""
+    name has a default (``keywords``: ``_keyword_defaults``): the callee then uses the default; a point's position
+    by the course's notation left out (``P_r_PDp``) moves the point, an offset."""
     if isinstance(node, ast.Call):
         callee = _callee(node)
         for k, keyword in enumerate(node.keywords):
             if keyword.arg is not None and (callee, keyword.arg) in keywords:
-                yield "keyword", lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
+                yield "keyword_point" if _POSITION.match(keyword.arg) else "keyword", \
+                    lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
 
 
 #: a matrix in the coordinates of one frame by the course's notation (``B_I_B``, ``K_I_K``): the frame on both sides

@@ -213,9 +213,9 @@ OPERATORS = [
      "for length, angle in np.asarray(q, dtype=float).reshape(-1, 2):",
      "for length, angle in np.asarray(q, dtype=float).reshape(-1, 2)[:-1]:", "problem_22.loop", ARMS, (),
      "missing_term", "a loop in `end_effector_loop` stops one short"),
-    ("a keyword argument left out, its default used", "p25.sheet_values", "problem_25.py",
-     "S_r_SDs=(-DX, DY, 0.0), q_index=[1])", "q_index=[1])", "problem_25.walker", WALKERS, ("x",), "missing_term",
-     "a call in `build_walker` leaves out one of its keyword arguments"),
+    ("a point's position left out of the keywords, its default used", "p25.sheet_values", "problem_25.py",
+     "S_r_SDs=(-DX, DY, 0.0), q_index=[1])", "q_index=[1])", "problem_25.walker", WALKERS, ("x",), "offset",
+     "a call in `build_walker` leaves out a point's position among its keyword arguments"),
     ("an argument converted to radians again", "p47.impulse", "problem_47.py",
      "arm = x_cog * np.cos(phi) - y_cog * np.sin(phi)",
      "arm = x_cog * np.cos(np.deg2rad(phi)) - y_cog * np.sin(np.deg2rad(phi))", "problem_47.impulse", IMPULSES, (),
@@ -253,7 +253,7 @@ NEAR_MISSES = [
      "a loop in"),
     ("a keyword argument given another value", "p25.sheet_values", "problem_25.py",
      "S_r_SDs=(-DX, DY, 0.0), q_index=[1])", "S_r_SDs=(DX, -DY, 0.0), q_index=[1])", "problem_25.walker", WALKERS,
-     ("x",), "keyword arguments"),
+     ("x",), "its keyword arguments"),
     ("an argument converted by twice the factor", "p47.impulse", "problem_47.py",
      "arm = x_cog * np.cos(phi) - y_cog * np.sin(phi)",
      "arm = x_cog * np.cos(phi * np.pi / 90) - y_cog * np.sin(phi * np.pi / 90)", "problem_47.impulse", IMPULSES, (),
@@ -613,6 +613,17 @@ def shear(k, d):
     """The shear of the plane by ``k`` along its first axis, and by ``d`` of the third along the second."""
     # BEGIN SOLUTION problem 98
     return np.array([[1.0, k, 0.0], [0.0, 1.0, d], [0.0, 0.0, 1.0]])
+    # END SOLUTION
+
+
+def _spring(x, k=1.0, preload=0.0):
+    return -k * x + preload
+
+
+def spring_force(x, k, preload):
+    """The force of a spring of stiffness ``k`` with its ``preload``."""
+    # BEGIN SOLUTION problem 98
+    return _spring(x, k=k, preload=preload)
     # END SOLUTION
 
 
@@ -1605,3 +1616,16 @@ def test_a_body_matrix_turned_into_inertial_coordinates_is_a_wrong_frame(made_up
     found = mutants.mutant_slips(scene("p98.spin_torque"), made_up_evidences(made_up, "spin_torque", reversed_turn,
                                                                              inputs))
     assert not any("into inertial ones" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_a_keyword_argument_left_out_is_a_term_left_out(made_up):
+    """``_spring(x, k=k)`` for ``_spring(x, k=k, preload=preload)``: the callee's default preload (0) used, a term
+    left out; the near miss, the keyword given another value (``preload=k``), is not that slip."""
+    inputs = [(V(0.3, -0.2), 2.0, 0.5), (V(-0.4, 0.7), 3.0, -1.5)]
+    found = mutants.mutant_slips(scene("p98.spring_force"), made_up_evidences(made_up, "spring_force",
+                                                                              lambda x, k, preload: -k * x, inputs))
+    assert {h.name for h in found} == {"missing_term"}, [(h.name, h.detail) for h in found]
+    assert any("leaves out one of its keyword arguments" in h.detail for h in found), [h.detail for h in found]
+    found = mutants.mutant_slips(scene("p98.spring_force"), made_up_evidences(made_up, "spring_force",
+                                                                              lambda x, k, preload: -k * x + k, inputs))
+    assert not any("keyword arguments" in h.detail for h in found), [(h.name, h.detail) for h in found]
