@@ -26,7 +26,9 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   or ``{"args": (indices), "names": (...), "sheet": probe}`` for parameters given one argument each (exchanged,
   and each given one at its sheet value); with ``"start"`` (``{"arg": index, "name": ..., "sheet": probe}``), the
   argument that holds the run's start and the probe of the sheet's, which the engine tries in its place (the start
-  ignored); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...),
+  ignored); with ``"parts"`` (``{"arg": index, "names": (...), "sheet": probe}``), an argument that holds other
+  values of the run's set-up (a wire's anchor and length), which the engine tries each at the sheet's value (that
+  value ignored); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...),
   "tolerances": True}``), the probe's argument by which the engine asks the reference's run with ``solve_ivp``
   called as a slip would call it (``_dynamics.solver_variant``: from a start with two entries exchanged, at looser
   tolerances); with ``"at_events"`` (``{key: (event, state[, entry])}``), the result's values taken from the

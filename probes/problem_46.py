@@ -169,7 +169,8 @@ def constrained(pkg, cases):
     says="simulate(table, {1}, {2})",
     motion={"time": "t", "states": ("q", "qd"), "events": ("t_event",), "fixed_step": "problem_46.simulate_fixed",
                "schemes": ("euler", "symplectic"), "rhs": "problem_46.free_ode", "rhs_args": (0,),
-               "at_events": {"q_minus": ("t_event", "q"), "qd_minus": ("t_event", "qd"), "q_plus": ("t_event", "q")}},
+               "at_events": {"q_minus": ("t_event", "q"), "qd_minus": ("t_event", "qd"), "q_plus": ("t_event", "q")},
+               "parts": {"arg": 3, "names": ("anchor", "wire_length"), "sheet": "problem_46.sheet_wire"}},
 )
 def simulate(pkg, table, baumgarte, t_end, wire=None):
     """``simulate(table, baumgarte, t_end)``: the run, the impact values, the end effector's positions at every
@@ -191,6 +192,14 @@ def simulate(pkg, table, baumgarte, t_end, wire=None):
     out["Lam"] = np.asarray(run["Lam"], dtype=float).reshape(-1)
     out["J_plus"] = _terms(pkg, tree, out["q_plus"], out["qd_plus"], False, wire)["J"]
     return out
+
+
+@probe(reference_only=True)
+def sheet_wire(pkg):
+    """The sheet's wire ``(anchor, wire_length)``: the values ``simulate`` hangs it by where it is given no ``wire``
+    (the diagnosis engine calls it on the reference)."""
+    p46 = module(pkg, "problem_46")
+    return [[float(x) for x in p46.ANCHOR], float(p46.WIRE_LENGTH)]
 
 
 @probe(reference_only=True)

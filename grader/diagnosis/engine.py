@@ -1145,11 +1145,12 @@ def _prepare_declared(scene: Scene, ask, decl: Declaration, source: Source) -> N
                 ask(decl.motion["fixed_step"], (*source.args, h, scheme), persist=True)
     if decl.motion.get("rhs"):
         _prepare_model(ask, decl, source)
-    if decl.motion.get("parameters") or decl.motion.get("start"):
+    if decl.motion.get("parameters") or decl.motion.get("start") or decl.motion.get("parts"):
         spec = decl.motion.get("parameters") or {}
         sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
         start = ask(decl.motion["start"]["sheet"], ()) if decl.motion.get("start") else None
-        for _, args in parameter_variants(decl.motion, tuple(source.args), sheet, start):
+        parts = ask(decl.motion["parts"]["sheet"], ()) if decl.motion.get("parts") else None
+        for _, args in parameter_variants(decl.motion, tuple(source.args), sheet, start, parts):
             ask(source.probe, args, persist=True)
 
 

@@ -685,7 +685,9 @@ def run_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: 
     reference's (``integration``).  Where those at the simplest span more than ``MAX_FAMILIES`` families, none."""
     steps = step_slips(scene, evidence, decl) if integration else []
     found = parameter_slips(scene, evidence, decl, integration)
-    found += steps + [h for h in motion_slips(evidence, decl) if not (steps and h.name.startswith("event"))
+    # an event that a varied run finds where the student's does is found late or early because of that variation
+    moved = steps or (found and evidence.source is not None and _compared_event(evidence.source.path, decl.motion))
+    found += steps + [h for h in motion_slips(evidence, decl) if not (moved and h.name.startswith("event"))
                       and (integration or h.name not in INTEGRATION)]
     return found if len(_families(found)) <= MAX_FAMILIES else []
 
@@ -704,7 +706,7 @@ def _families(found: list) -> set:
     return {DIAGNOSES[h.name].family if h.name in DIAGNOSES else h.name for h in found if h.cost == cost}
 
 
-def parameter_variants(motion: dict, args: tuple, sheet, start=None) -> list:
+def parameter_variants(motion: dict, args: tuple, sheet, start=None, parts=None) -> list:
     """``(hypothesis, arguments)``: the run's arguments varied, each a run of the reference that a slip of the
     student's would give (every one a function of the run's arguments alone, so the kit's key holds them).
 
@@ -720,6 +722,11 @@ def parameter_variants(motion: dict, args: tuple, sheet, start=None) -> list:
     (``start``: the sheet's): the reference's run from the sheet's start where another is given (the argument
     ignored, the module's start used instead); told beside a start that differs (``initial_state``), at its cost.
 
+    ``motion["parts"]`` (``{"arg": index, "names": (...), "sheet": probe}``), an argument that holds several values
+    of the run's set-up that are not its parameters (a wire's anchor and length, each a vector or a number;
+    ``parts``: the sheet's): each given one at the sheet's value (that value ignored where the run uses it, an event
+    that reads the module's constant, say).
+
     Two parameters of equal value are not exchanged: that cannot be told.  ``motion["variants"]`` (``{"arg":
     index, "starts": ((i, j), ...), "tolerances": True}``): the reference re-run by the probe from its start with
     the entries ``i`` and ``j`` exchanged, and by ``solve_ivp`` at the ``LOOSE_TOLERANCES``."""
@@ -730,6 +737,7 @@ def parameter_variants(motion: dict, args: tuple, sheet, start=None) -> list:
     elif spec and "args" in spec:
         found += _scalar_variants(spec, args, sheet)
     found += _start_variants(motion.get("start"), args, start)
+    found += _part_variants(motion.get("parts"), args, parts)
     variants = motion.get("variants")
     if variants:
         index = variants["arg"]
@@ -768,6 +776,30 @@ def _start_variants(spec: dict | None, args: tuple, start) -> list:
     return [(Hypothesis("run:start-sheet", "ignored_argument", 3,
                         f"{name} = {format_array(given)} is given, but your run is the reference's from the sheet's "
                         f"{name} = {format_array(sheet)}: the argument is ignored"), tuple(changed))]
+
+
+def _part_variants(spec: dict | None, args: tuple, sheet) -> list:
+    """The run with one part of the argument ``spec["arg"]`` (a tuple of values, each a number or an array) at the
+    sheet's value where another is given: that part ignored."""
+    if not spec or sheet is None:
+        return []
+    index, names = spec["arg"], tuple(spec["names"])
+    given = args[index] if index < len(args) else None
+    if given is None or len(given) != len(names) or len(sheet) != len(names):
+        return []
+    found = []
+    for k, name in enumerate(names):
+        mine, theirs = array_of(given[k]), array_of(sheet[k])
+        if mine is None or theirs is None or mine.shape != theirs.shape \
+                or np.allclose(mine, theirs, rtol=1e-9, atol=0.0):
+            continue
+        changed = list(args)
+        changed[index] = [sheet[j] if j == k else given[j] for j in range(len(names))]
+        found.append((Hypothesis(f"run:part:{k}", "ignored_argument", 2,
+                                 f"{name} = {format_array(mine)} is given, but your run is the reference's with the "
+                                 f"sheet's {name} = {format_array(theirs)}: the argument is ignored"),
+                      tuple(changed)))
+    return found
 
 
 def _vector_variants(spec: dict, args: tuple, sheet) -> list:
@@ -852,15 +884,18 @@ def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integra
     (``integration``)."""
     motion = decl.motion
     spec, source, student = motion.get("parameters"), evidence.source, evidence.student
-    if not (spec or motion.get("variants") or motion.get("start")) or source is None or student is None:
+    if not (spec or motion.get("variants") or motion.get("start") or motion.get("parts")) or source is None \
+            or student is None:
         return []
     mine, ours = run_of(student.root, motion), run_of(source.root, motion)
     if mine is None or ours is None:
         return []
     sheet = scene.reference(spec["sheet"], ()) if spec and spec.get("sheet") else None
     start = scene.reference(motion["start"]["sheet"], ()) if motion.get("start") else None
+    parts = scene.reference(motion["parts"]["sheet"], ()) if motion.get("parts") else None
+    event = _compared_event(source.path, motion)
     found = []
-    for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet, start):
+    for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet, start, parts):
         if hypothesis.name in INTEGRATION and not integration:
             continue
         try:
@@ -868,6 +903,10 @@ def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integra
         except GraderFault:
             continue  # the reference refuses the varied run (it never ends, say): no hypothesis
         theirs = run_of(root, motion)
+        if theirs is not None and event is not None and hypothesis.name not in INTEGRATION:
+            found += _event_variant(hypothesis, (mine, student.root), (theirs, root), (ours, source.root), event,
+                                    evidence.tol)
+            continue
         if theirs is None or not _same_run(mine, theirs, evidence.tol):
             continue
         if not _same_run(ours, theirs, evidence.tol, DISTINCT) or hypothesis.name in INTEGRATION \
@@ -911,6 +950,44 @@ def _misfit(mine, theirs, motion: dict, tol: Tol) -> float | None:
         if a is not None and b is not None and a.size == 1 and b.size == 1:
             worst = max(worst, abs(float(a) - float(b)) / (tol.atol + tol.rtol * abs(float(b))))
     return worst if shared else None
+
+
+def _compared_event(path, motion: dict) -> str | None:
+    """The event whose time the compared value is (``motion["events"]``) or is read at (``motion["at_events"]``),
+    or None for a value of the run itself."""
+    key = path[0] if path else None
+    if key in motion.get("events", ()):
+        return key
+    if key in motion.get("at_events", {}):
+        return motion["at_events"][key][0]
+    return None
+
+
+def _event_variant(hypothesis, mine, theirs, ours, event: str, tol: Tol) -> list:
+    """``[hypothesis]`` where the compared value belongs to an event (``event``) and the reference's varied run
+    reproduces the student's up to it: both find the event at the same time (within ``tol``) and agree at every
+    output time before it, while the reference's own run finds it clearly elsewhere.  What the runs do after the
+    event is another comparison's (a slip that moves an event alone, an event function that reads the module's
+    constant, leaves the motion after it to the arguments given)."""
+    (run_m, root_m), (run_t, root_t), (run_o, root_o) = mine, theirs, ours
+    times = [array_of(at(root, (event,))) for root in (root_m, root_t, root_o)]
+    if any(t is None or t.size != 1 for t in times):
+        return []
+    t_m, t_t, t_o = (float(t) for t in times)
+    if not within(np.array(t_m), np.array(t_t), tol) or not distinct(np.array(t_t), np.array(t_o), tol):
+        return []
+    before = [(t[t < t_m - 1e-12], {k: v[t < t_m - 1e-12] for k, v in S.items()}) for t, S in (run_m, run_t)]
+    if before[0][0].size < 3 or before[1][0].size < 3:
+        return []
+    (t_a, A), (t_b, B) = before
+    for key in A:
+        if key not in B or A[key].shape[1] != B[key].shape[1]:
+            return []
+        inside = t_a <= t_b[-1] + 1e-12
+        at_b = np.column_stack([np.interp(t_a[inside], t_b, B[key][:, j]) for j in range(B[key].shape[1])])
+        if not within(A[key][inside], at_b, tol):
+            return []
+    return [hypothesis]
 
 
 def _same_run(mine, theirs, tol: Tol, times: float = 1.0) -> bool:

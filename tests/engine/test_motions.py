@@ -113,6 +113,13 @@ THETA_IGNORED = Planted(
     name="motions-p44-theta-ignored", problem=44, file="problem_44.py",
     old="args=(m, theta, g),", new="args=(m, THETA, g),",
     check="p44.event", diagnosis="ignored_argument", message="sheet's theta = 1: the argument is ignored")
+#: the wire's event measured against the module's length whatever wire the run is given: the reference's run with
+#: that part of the wire at the sheet's value reproduces it (the event is found late only because of it)
+WIRE_LENGTH_IGNORED = Planted(
+    name="motions-p46-event-wire-length-ignored", problem=46, file="problem_46.py",
+    old="return float(np.linalg.norm(anchor - I_r_E) - wire_length)",
+    new="return float(np.linalg.norm(anchor - I_r_E) - WIRE_LENGTH)",
+    check="p46.event_and_impact", diagnosis="ignored_argument", message="sheet's wire_length = 2")
 #: its near miss: the pendulum released at the given angles negated, a start that is not the module's
 START_NEGATED = Planted(
     name="motions-p24-start-negated", problem=24, file="problem_24.py",
@@ -185,7 +192,7 @@ ARM_IN_SINGLE = Planted(
 
 RUN_SLIPS = [RATES_IN_SINGLE, ARM_IN_SINGLE, SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED,
              EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS, RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT,
-             RATES_NEGATED_AT_THE_START, Q0_IGNORED, THETA_IGNORED]
+             RATES_NEGATED_AT_THE_START, Q0_IGNORED, THETA_IGNORED, WIRE_LENGTH_IGNORED]
 NEAR_MISSES = [STRONGER_GRAVITY]
 
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
