@@ -358,6 +358,25 @@ def test_parameters_given_in_one_argument_are_each_tried_at_the_sheets_value_onl
     assert not {k for k, _ in parameter_variants(motion, (None,), (0.5, 1.0, 9.81)) if k.key.startswith("run:sheet")}
 
 
+def test_a_varied_run_explains_an_event_only_where_it_agrees_up_to_it_and_finds_it_at_the_students_time():
+    """An event's time compared: the reference's varied run must find the event at the student's time and agree
+    with the student's run before it (what follows the event is another comparison's), while the reference's own
+    run finds it clearly elsewhere; a varied run that agrees at the event but not before it, or that finds it where
+    the reference's own run does, explains nothing."""
+    from grader.diagnosis.runs import _event_variant
+
+    t = np.linspace(0.0, 1.0, 11)
+    run = (t, {"q": np.column_stack([t, t * t])})
+    tol = Tol("event time", 2e-3)
+    hypothesis = object()
+    mine, theirs, ours = ({"t_event": 0.8}, {"t_event": 0.8005}, {"t_event": 0.7})
+    assert _event_variant(hypothesis, (run, mine), (run, theirs), (run, ours), "t_event", tol) == [hypothesis]
+    bent = (t, {"q": np.column_stack([t, t * t + 0.1 * t])})
+    assert _event_variant(hypothesis, (run, mine), (bent, theirs), (run, ours), "t_event", tol) == []
+    assert _event_variant(hypothesis, (run, mine), (run, theirs), (run, {"t_event": 0.801}), "t_event", tol) == []
+    assert _event_variant(hypothesis, (run, mine), (run, {"t_event": 0.75}), (run, ours), "t_event", tol) == []
+
+
 def test_parameters_given_one_argument_each_are_exchanged_only_where_one_is_the_sheets():
     """A run's parameters given one argument each: two given ones are the grammar's to exchange (its input slips),
     so the run's tier exchanges a pair only where one takes the sheet's value; a given one is also tried at the
