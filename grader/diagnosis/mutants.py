@@ -27,7 +27,7 @@ constants of one module exchanged), each measured with the constants, defaults a
 computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor
-missing, two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
+missing (a ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or entries exchanged, a number doubled or halved, ``/`` for
 ``*``, a square or a square root missing or added, sin for cos (in one call, throughout one expression, or in one
 read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a
 transpose or one on the wrong factor (or a matrix written out row by row, transposed), a neighbouring index, two
@@ -1333,6 +1333,8 @@ def _binop_slips(node: ast.BinOp):
     elif isinstance(op, ast.Div):
         yield "divides" if _number(node.right) else "divides_by", lambda n: _with(n, op=ast.Mult())
         yield _dropped(node.right), lambda n: n.left
+        if _constant_expression(node.left):  # ``2 pi / T`` as ``1 / T``: a numerator of constants left out
+            yield "factor", lambda n: _with(n, left=ast.Constant(1.0))
         if not _reciprocal(node):  # ``12 / m`` as ``m / 12`` (``1 / x`` as ``x``: a reciprocal, the inputs' slip)
             yield "ratio", lambda n: _with(n, left=n.right, right=n.left)
     elif isinstance(op, ast.MatMult):

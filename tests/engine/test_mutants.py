@@ -1300,6 +1300,23 @@ def test_a_ratio_upside_down_is_an_inverse_slip(made_up):
     assert any("a ratio in `oscillation` is upside down" in h.detail for h in found)
 
 
+def test_a_ratio_without_its_numerator_of_constants_is_a_factor_left_out(made_up):
+    """``1 / omega`` where the period ``2 pi / omega`` belongs: the factor 2 pi of the numerator left out (a frequency
+    in cycles where radians belong); the near miss ``pi / omega`` (half of it) is no factor left out."""
+    def cycles(m, k):
+        omega = np.sqrt(k / m)
+        return np.array([1.0 / omega, omega])
+
+    def half(m, k):
+        omega = np.sqrt(k / m)
+        return np.array([np.pi / omega, omega])
+
+    names, found = names_of(made_up, "oscillation", cycles, [(2.0, 5.0), (0.7, 3.0)])
+    assert "missing_factor" in names, [(h.name, h.detail) for h in found]
+    names, found = names_of(made_up, "oscillation", half, [(2.0, 5.0), (0.7, 3.0)])
+    assert "missing_factor" not in names, [(h.name, h.detail) for h in found]
+
+
 def test_a_product_for_a_ratio_is_not_a_ratio_upside_down(made_up):
     """The near miss: ``2 pi omega`` multiplies where the ratio divides; no ratio is upside down.  The product by
     omega where the division by it belongs uses omega as its reciprocal: told beside the factor, as its twin."""
