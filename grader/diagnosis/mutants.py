@@ -559,9 +559,10 @@ SHORT_PI = (3.14, 3.1416)
 #: the decimals a number of the code is typed short to
 SHORT_DECIMALS = (1, 2)
 #: the decimals a constant of the code that is not one number (``np.pi / 6``, ``np.sqrt(1.0 / 3.0)``, a module's
-#: constant ``GAMMA``) is typed short to, as its value rounded (``round(np.pi / 6, 2)``: 0.52); not one decimal,
-#: which writes a small entry 0 (a slope's ``sin`` of 0.017 left out is a term left out, not a value typed short)
-TYPED_DECIMALS = (2, 3)
+#: constant ``GAMMA``) is typed short to, as its value rounded (``round(np.pi / 6, 2)``: 0.52), up to the four
+#: decimals the sheet prints; not one decimal, which writes a small entry 0 (a slope's ``sin`` of 0.017 left out is
+#: a term left out, not a value typed short)
+TYPED_DECIMALS = (2, 3, 4)
 #: the names a constant expression may read besides numbers: its modules and pi
 _CONSTANT_NAMES = frozenset({"np", "numpy", "math", "sp", "sympy", "pi"})
 #: the functions a constant expression may call (``np.sqrt(3)``, ``np.deg2rad(30.0)``)

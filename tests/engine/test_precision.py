@@ -195,6 +195,16 @@ def test_a_module_constant_typed_short_is_named_rounded(tmp_path):
     assert any("`walker_ode` uses a constant typed short" in h.detail for h in found)
 
 
+def test_a_module_constant_typed_at_the_sheets_four_decimals_is_named_rounded(tmp_path):
+    """Problem 6's pitch typed to the four decimals the sheet prints, 0.7854 for 45 degrees: the frames read the
+    module's constant, and its value rounded reproduces the student's on the one input there is; typed with its
+    last digit wrong (0.7853), no rounding gives it."""
+    for typed, told in (("0.7854", {"rounded"}), ("0.7853", set())):
+        found = planted_slips(tmp_path / typed, "p06.frames", "problem_06.py", "BETA = np.deg2rad(45.0)",
+                              f"BETA = {typed}", "problem_06.frames", [()], ("A_IC2",))
+        assert named(found) == told, (typed, [(h.name, h.detail) for h in found])
+
+
 def test_a_slope_left_out_of_a_module_constant_is_no_constant_typed_short(tmp_path):
     """The near miss: the slope's component written 0 (gravity straight down) is what the same constant rounded to
     one decimal gives, but a term left out, not a value typed short: no slip of precision is told."""
