@@ -62,6 +62,8 @@ __all__ = [
     "in_random_input",
     "at_sheet_digits",
     "round_to_sheet",
+    "engine_on",
+    "transposed_shape_hint",
 ]
 
 
@@ -341,11 +343,9 @@ def as_array(value, name: str, shape: tuple | None = None) -> np.ndarray:
     except (TypeError, ValueError):
         fail(f"{name} must be numeric, got a value of type {type(value).__name__}: {str(value)[:200]}")
     if shape is not None and array.shape != tuple(shape):
-        if len(shape) == 2 and shape[0] != shape[1] and array.shape == tuple(shape)[::-1] and _engine():
+        if len(shape) == 2 and shape[0] != shape[1] and array.shape == tuple(shape)[::-1] and engine_on():
             fail(f"{name} must have shape {tuple(shape)}, got shape {array.shape}: the transposed shape.",
-                 f"Your {array.shape[0]} x {array.shape[1]} array looks like the transpose of the {shape[0]} x "
-                 f"{shape[1]} one asked for: swap its rows and columns (build it the other way round, or return "
-                 "its .T).", "transpose")
+                 transposed_shape_hint(shape), "transpose")
         if array.size == int(np.prod(shape)):
             fail(
                 f"{name} must have shape {tuple(shape)}, got shape {array.shape}.",
@@ -466,17 +466,24 @@ def _holds(name: str, failure, mistakes: list, expected, tol: Tol) -> bool:
     return all(_matches(np.asarray(expected, dtype=float), m, tol) for m in mistakes if m.name == name)
 
 
-def _engine() -> bool:
+def engine_on() -> bool:
     """Whether the diagnosis engine's grammar is used (a transposed shape is one of its slips)."""
     from . import diagnosis
 
     return diagnosis.ENABLED
 
 
+def transposed_shape_hint(shape) -> str:
+    """The hint for an array of the transposed shape of the ``rows x columns`` one asked for (``shape``)."""
+    rows, columns = shape
+    return (f"Your {columns} x {rows} array looks like the transpose of the {rows} x {columns} one asked for: swap "
+            "its rows and columns (build it the other way round, or return its .T).")
+
+
 def _transposed(got, expected, name: str, tol: Tol) -> None:
     """Fail with ``transpose`` when ``got`` has the transposed shape of a non-square ``expected`` and is its
     transpose: the cause of the wrong shape, not only the shape."""
-    if expected.ndim != 2 or expected.shape[0] == expected.shape[1] or not _engine():
+    if expected.ndim != 2 or expected.shape[0] == expected.shape[1] or not engine_on():
         return
     try:
         array = np.asarray(got, dtype=float)

@@ -13,8 +13,7 @@ from functools import lru_cache
 
 import probes
 
-from . import diagnosis
-from .checking import CheckFailure
+from .checking import CheckFailure, engine_on, transposed_shape_hint
 from .errors import GraderFault
 
 __all__ = ["admit", "form_of", "describe_call", "probe_function", "GATE_PREFIX"]
@@ -90,10 +89,7 @@ def admit(probe, args: tuple, value):
         return value
     where = describe_call(probe, args, says)
     subject = f"{where}{fault.path}" if fault.path else where
-    if fault.transposed and diagnosis.ENABLED:  # the transposed shape: one of the diagnosis engine's slips
-        rows, columns = fault.transposed
+    if fault.transposed and engine_on():  # the transposed shape: one of the diagnosis engine's slips
         raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}: the transposed shape.",
-                           f"Your {columns} x {rows} array looks like the transpose of the {rows} x {columns} one "
-                           "asked for: swap its rows and columns (build it the other way round, or return its .T).",
-                           "transpose", None)
+                           transposed_shape_hint(fault.transposed), "transpose", None)
     raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}.", fault.hint, fault.diagnosis, None)
