@@ -275,13 +275,11 @@ def _joints_moved(mine, theirs, differing: list) -> list[Hypothesis]:
     joint a loop writes): an offset.  Anchors moved each by another vector hold no one story: nothing."""
     if not differing or any(path[0] != "joints" or path[-1] != "anchor" for path in differing):
         return []
-    offsets = []
-    for _, j, _ in differing:
-        frame = _frame(theirs, int(theirs["joints"][j]["body"]))
-        offsets.append(frame.T @ (np.asarray(at(mine, ("joints", j, "anchor")), dtype=float)
-                                  - np.asarray(at(theirs, ("joints", j, "anchor")), dtype=float)))
+    offsets = [_frame(theirs, int(theirs["joints"][path[1]]["body"])).T
+               @ (np.asarray(at(mine, path), dtype=float) - np.asarray(at(theirs, path), dtype=float))
+               for path in differing]
     d = offsets[0]
-    if not all(within(o, d, Tol("", 1e-9, 1e-7)) for o in offsets):
+    if not all(within(o, d, SAME) for o in offsets):
         return []
     names = [str(theirs["joints"][j].get("name") or f"joint {j + 1}") for _, j, _ in differing]
     which = f'the joint "{names[0]}" sits' if len(names) == 1 else f"the joints {', '.join(names)} each sit"
