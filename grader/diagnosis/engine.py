@@ -68,6 +68,7 @@ from .runs import (
     RHS_TOL,
     run_in_log,
     run_slips,
+    variant_sheets,
 )
 
 __all__ = [
@@ -1146,11 +1147,7 @@ def _prepare_declared(scene: Scene, ask, decl: Declaration, source: Source) -> N
     if decl.motion.get("rhs"):
         _prepare_model(ask, decl, source)
     if decl.motion.get("parameters") or decl.motion.get("start") or decl.motion.get("parts"):
-        spec = decl.motion.get("parameters") or {}
-        sheet = ask(spec["sheet"], ()) if spec.get("sheet") else None
-        start = ask(decl.motion["start"]["sheet"], ()) if decl.motion.get("start") else None
-        parts = ask(decl.motion["parts"]["sheet"], ()) if decl.motion.get("parts") else None
-        for _, args in parameter_variants(decl.motion, tuple(source.args), sheet, start, parts):
+        for _, args in parameter_variants(decl.motion, tuple(source.args), *variant_sheets(ask, decl.motion)):
             ask(source.probe, args, persist=True)
 
 

@@ -39,6 +39,7 @@ from .scene import Scene
 
 __all__ = [
     "START_KEY",
+    "variant_sheets",
     "FIXED_STEPS",
     "STEP_WINDOW",
     "STEP_SHAPE",
@@ -778,6 +779,22 @@ def _start_variants(spec: dict | None, args: tuple, start) -> list:
                         f"{name} = {format_array(sheet)}: the argument is ignored"), tuple(changed))]
 
 
+def variant_sheets(ask, motion: dict) -> tuple:
+    """``(sheet, start, parts)`` of ``parameter_variants``: the sheet's values of the run's parameters, start and
+    parts, each asked of the reference (``ask(probe, ())``) where the run declares it, else None."""
+    spec = motion.get("parameters") or {}
+    return (ask(spec["sheet"], ()) if spec.get("sheet") else None,
+            ask(motion["start"]["sheet"], ()) if motion.get("start") else None,
+            ask(motion["parts"]["sheet"], ()) if motion.get("parts") else None)
+
+
+def _sheets_value(key: str, name: str, given: str, sheet: str) -> Hypothesis:
+    """The hypothesis of a run whose ``name`` is given (``given``, as words) but that is the reference's run with the
+    sheet's value (``sheet``): the argument ignored."""
+    return Hypothesis(key, "ignored_argument", 2, f"{name} = {given} is given, but your run is the reference's with "
+                      f"the sheet's {name} = {sheet}: the argument is ignored")
+
+
 def _part_variants(spec: dict | None, args: tuple, sheet) -> list:
     """The run with one part of the argument ``spec["arg"]`` (a tuple of values, each a number or an array) at the
     sheet's value where another is given: that part ignored."""
@@ -795,9 +812,7 @@ def _part_variants(spec: dict | None, args: tuple, sheet) -> list:
             continue
         changed = list(args)
         changed[index] = [sheet[j] if j == k else given[j] for j in range(len(names))]
-        found.append((Hypothesis(f"run:part:{k}", "ignored_argument", 2,
-                                 f"{name} = {format_array(mine)} is given, but your run is the reference's with the "
-                                 f"sheet's {name} = {format_array(theirs)}: the argument is ignored"),
+        found.append((_sheets_value(f"run:part:{k}", name, format_array(mine), format_array(theirs)),
                       tuple(changed)))
     return found
 
@@ -838,9 +853,8 @@ def _vector_variants(spec: dict, args: tuple, sheet) -> list:
                 continue
             changed = values.copy()
             changed[i] = defaults[i]
-            found.append((Hypothesis(f"run:sheet:{i}", "ignored_argument", 2,
-                                     f"{name} = {values[i]:g} is given, but your run is the reference's with the "
-                                     f"sheet's {name} = {defaults[i]:g}: the argument is ignored"), run_with(changed)))
+            found.append((_sheets_value(f"run:sheet:{i}", name, f"{values[i]:g}", f"{defaults[i]:g}"),
+                          run_with(changed)))
     return found
 
 
@@ -868,9 +882,7 @@ def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
                       run_with({i: values[j], j: values[i]})))
     for k, name in enumerate(names):
         if given[k] and not np.isclose(values[k], defaults[k], rtol=1e-9, atol=0.0):
-            found.append((Hypothesis(f"run:sheet:{k}", "ignored_argument", 2,
-                                     f"{name} = {values[k]:g} is given, but your run is the reference's with the "
-                                     f"sheet's {name} = {defaults[k]:g}: the argument is ignored"),
+            found.append((_sheets_value(f"run:sheet:{k}", name, f"{values[k]:g}", f"{defaults[k]:g}"),
                           run_with({k: float(defaults[k])})))
     return found
 
@@ -890,12 +902,9 @@ def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integra
     mine, ours = run_of(student.root, motion), run_of(source.root, motion)
     if mine is None or ours is None:
         return []
-    sheet = scene.reference(spec["sheet"], ()) if spec and spec.get("sheet") else None
-    start = scene.reference(motion["start"]["sheet"], ()) if motion.get("start") else None
-    parts = scene.reference(motion["parts"]["sheet"], ()) if motion.get("parts") else None
     event = _compared_event(source.path, motion)
     found = []
-    for hypothesis, args in parameter_variants(motion, tuple(source.args), sheet, start, parts):
+    for hypothesis, args in parameter_variants(motion, tuple(source.args), *variant_sheets(scene.reference, motion)):
         if hypothesis.name in INTEGRATION and not integration:
             continue
         try:
@@ -969,7 +978,7 @@ def _event_variant(hypothesis, mine, theirs, ours, event: str, tol: Tol) -> list
     output time before it, while the reference's own run finds it clearly elsewhere.  What the runs do after the
     event is another comparison's (a slip that moves an event alone, an event function that reads the module's
     constant, leaves the motion after it to the arguments given)."""
-    (run_m, root_m), (run_t, root_t), (run_o, root_o) = mine, theirs, ours
+    (run_m, root_m), (run_t, root_t), (_, root_o) = mine, theirs, ours
     times = [array_of(at(root, (event,))) for root in (root_m, root_t, root_o)]
     if any(t is None or t.size != 1 for t in times):
         return []
@@ -979,30 +988,28 @@ def _event_variant(hypothesis, mine, theirs, ours, event: str, tol: Tol) -> list
     before = [(t[t < t_m - 1e-12], {k: v[t < t_m - 1e-12] for k, v in S.items()}) for t, S in (run_m, run_t)]
     if before[0][0].size < 3 or before[1][0].size < 3:
         return []
-    (t_a, A), (t_b, B) = before
-    for key in A:
-        if key not in B or A[key].shape[1] != B[key].shape[1]:
-            return []
-        inside = t_a <= t_b[-1] + 1e-12
-        at_b = np.column_stack([np.interp(t_a[inside], t_b, B[key][:, j]) for j in range(B[key].shape[1])])
-        if not within(A[key][inside], at_b, tol):
-            return []
-    return [hypothesis]
+    return [hypothesis] if _agree(*before, tol) else []
 
 
 def _same_run(mine, theirs, tol: Tol, times: float = 1.0) -> bool:
     """Two runs ``(t, states)`` end together (within an output step) and agree within ``times`` the tolerance at
     every output time of the first."""
-    (t_m, M), (t_t, T) = mine, theirs
+    (t_m, _), (t_t, _) = mine, theirs
     step = float(np.median(np.diff(t_m)))
     if abs(t_m[-1] - t_t[-1]) > step + 1e-9 or abs(t_m[0] - t_t[0]) > 1e-9:
         return False
+    return _agree(mine, theirs, Tol(tol.name, times * tol.atol, times * tol.rtol))
+
+
+def _agree(mine, theirs, tol: Tol) -> bool:
+    """Every state of the run ``mine`` is, within ``tol``, the run ``theirs``'s (interpolated) at every output time
+    of ``mine`` that ``theirs`` covers."""
+    (t_m, M), (t_t, T) = mine, theirs
     inside = t_m <= t_t[-1] + 1e-12
-    loose = Tol(tol.name, times * tol.atol, times * tol.rtol)
     for key in M:
         if key not in T or M[key].shape[1] != T[key].shape[1]:
             return False
-        at = np.column_stack([np.interp(t_m[inside], t_t, T[key][:, j]) for j in range(T[key].shape[1])])
-        if not within(M[key][inside], at, loose):
+        at_t = np.column_stack([np.interp(t_m[inside], t_t, T[key][:, j]) for j in range(T[key].shape[1])])
+        if not within(M[key][inside], at_t, tol):
             return False
     return True
