@@ -5,6 +5,8 @@ from ._forms import ANY, Arr, Dict, Maybe, Tup
 
 #: the student's own value of an upstream function (``_own``): a rotation, or None when it cannot be had
 OWN = Maybe(Arr(3, 3))
+#: the sheet's angles, which ``frames()`` and ``vectors()`` read from the module
+REBIND = {"module": "problem_06", "names": ("GAMMA", "BETA", "ALPHA")}
 #: ``vectors()``: the coordinates of V in I, C1, C2, C3
 VECTORS = Dict({"I_v": Arr(3), "C1_v": Arr(3), "C2_v": Arr(3), "C3_v": Arr(3)})
 
@@ -20,12 +22,12 @@ def cardan(pkg, alpha, beta, gamma):
     return module(pkg, "rotations").cardan(alpha, beta, gamma)
 
 
-@probe(returns=Dict({"A_IC1": Arr(3, 3), "A_IC2": Arr(3, 3), "A_IC3": Arr(3, 3)}), says="frames()")
+@probe(returns=Dict({"A_IC1": Arr(3, 3), "A_IC2": Arr(3, 3), "A_IC3": Arr(3, 3)}), says="frames()", rebind=REBIND)
 def frames(pkg):
     return module(pkg, "problem_06").frames()
 
 
-@probe(returns=VECTORS, says="vectors()")
+@probe(returns=VECTORS, says="vectors()", rebind=REBIND)
 def vectors(pkg):
     return module(pkg, "problem_06").vectors()
 
@@ -58,7 +60,8 @@ def cardan_with_factors(pkg, alpha, beta, gamma):
     }
 
 
-@probe(returns=Dict({"frames": ANY, "R1": OWN, "R2": OWN, "R3": OWN, "cardan": Tup(OWN, OWN, OWN)}), says="frames()")
+@probe(returns=Dict({"frames": ANY, "R1": OWN, "R2": OWN, "R3": OWN, "cardan": Tup(OWN, OWN, OWN)}), says="frames()",
+       rebind=REBIND)
 def frames_with_factors(pkg, alpha, beta, gamma):
     """``frames()`` with the package's own ``R3(gamma), R2(beta), R1(alpha)`` and ``cardan`` of the partial
     sequences ``(0, 0, gamma), (0, beta, gamma), (alpha, beta, gamma)``."""
@@ -76,6 +79,7 @@ def frames_with_factors(pkg, alpha, beta, gamma):
 @probe(
     returns=Dict({"vectors": VECTORS, "frames": Maybe(Dict({"A_IC1": OWN, "A_IC2": OWN, "A_IC3": OWN}))}),
     says="vectors()",
+    rebind=REBIND,
 )
 def vectors_with_frames(pkg):
     """``vectors()`` with the package's own ``frames()`` (None when they cannot be had)."""

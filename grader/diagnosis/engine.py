@@ -52,6 +52,7 @@ from .grammar import (
 )
 from . import trace
 from .models import model_slips
+from .rebound import REBOUND, rebound_drawn, rebound_input
 from .mutants import KIT_NOTE, left_to_live, mutant_slips, opposite_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -237,16 +238,17 @@ def _vanishes(value: np.ndarray, expected: np.ndarray, tol: Tol) -> bool:
 
 def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
     """The same comparison on an input the engine draws (``_drawn``: the probe's declared angles, vectors,
-    rotations and scalars drawn anew, or every float of its arguments varied): the student's value there and the
+    rotations and scalars drawn anew, or every float of its arguments varied; where that draws nothing, the
+    module's constants the probes declare drawn anew, ``rebound_input``): the student's value there and the
     reference's, or None."""
     source, student = evidence.source, evidence.student
-    if source is None or student is None or source.probe != student.probe or evidence.motion:
+    if source is None or student is None or evidence.motion:
         return None
-    if not _equal_args(source.args, student.args):
-        return None
+    if source.probe == REBOUND or source.probe != student.probe or not _equal_args(source.args, student.args):
+        return rebound_input(scene, evidence)
     drawn = _drawn(scene, source, evidence.expected, evidence.tol)
     if drawn is None:
-        return None
+        return rebound_input(scene, evidence)
     args, expected_root = drawn
     try:
         got_root = scene.student(source.probe, args)
@@ -270,26 +272,39 @@ def _siblings(evidences: list) -> list:
     own, those nearest the compared one first: a slip inside a formula must give the student's whole result of
     that call (the values they have right as well as the ones they have wrong), not only the one compared; two
     slips that give the same compared value (a term left out, two arguments exchanged that put that term
-    elsewhere) differ there."""
+    elsewhere) differ there.  Where the student's call is another probe's, its values are those below the same
+    start of the reference's paths (``_prefix``)."""
     if len(evidences) < 2:
         return []
     first = evidences[0]
     source, student = first.source, first.student
-    if source is None or student is None or source.root is None or student.root is None \
-            or source.probe != student.probe or source.path != student.path:
+    if source is None or student is None or source.root is None or student.root is None:
+        return []
+    prefix = _prefix(tuple(source.path), tuple(student.path))
+    if prefix is None or (prefix if source.probe == student.probe else not student.path):
         return []
     found = []
-    for path, expected in _leaves(source.root):
-        if path == tuple(source.path):
+    for path, expected in _leaves(at(source.root, prefix)):
+        if (*prefix, *path) == tuple(source.path):
             continue
         got = array_of(at(student.root, path))
         if got is None or got.shape != expected.shape:
             continue
         found.append(Evidence(got, expected, first.tol, first.name, None, None,
-                              Source(source.probe, tuple(source.args), path, source.root),
+                              Source(source.probe, tuple(source.args), (*prefix, *path), source.root),
                               Source(student.probe, tuple(student.args), path, student.root)))
     found.sort(key=lambda e: -_shared(e.source.path, tuple(source.path)))
     return found[:SIBLINGS]
+
+
+def _prefix(source_path: tuple, student_path: tuple) -> tuple | None:
+    """The start of the reference's path before the student's (the student's call gives, at its own paths, the
+    values the reference's gives below it: ``frames()`` within a call that returns the frames beside other values),
+    or None where the student's path is no end of the reference's."""
+    start = len(source_path) - len(student_path)
+    if start < 0 or source_path[start:] != student_path:
+        return None
+    return source_path[:start]
 
 
 def _shared(a: tuple, b: tuple) -> int:
@@ -1115,6 +1130,8 @@ def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
             root = source.root if source.root is not None else ask(source.probe, source.args)
             expected = array_of(at(root, source.path))
             drawn = None if expected is None else _drawn(scene, source, expected, tol or SECOND_TOL)
+            if drawn is None and expected is not None:  # the draw of the constants, where there is one
+                rebound_drawn(scene, source, expected, tol or SECOND_TOL)
             if drawn is not None:
                 for args in perturbations(decl, drawn[0]):
                     ask(source.probe, args)

@@ -59,9 +59,9 @@ class Declaration:
 
 
 DECLARATIONS: dict[str, Declaration | None] = {}
-#: the declarations that only say how a value is computed more cheaply (``part_of``): a probe that declares nothing
-#: else declares nothing to the engine's tiers
-SHORTCUTS = frozenset({"part"})
+#: the declarations that only say how a value is computed more cheaply (``part_of``) or which module constants its
+#: functions read (``rebind``): a probe that declares nothing else declares nothing to the engine's tiers
+SHORTCUTS = frozenset({"part", "rebind"})
 
 
 def declaration(probe: str) -> Declaration | None:

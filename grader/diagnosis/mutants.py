@@ -2773,8 +2773,20 @@ def _in_band(evidence: Evidence) -> bool:
 
 def _precise(mutant: Mutant, inputs: list[Evidence]) -> bool:
     """A mutant of another slip than precision, or one of precision where the student's value is in the band of
-    precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well)."""
-    return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) for e in inputs)
+    precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well), or is the
+    expected one on an input at the problem's constants drawn anew (``rebound``: a constant typed short is bound to
+    the drawn value there, on both sides)."""
+    return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) or _rebound_alike(e) for e in inputs)
+
+
+def _rebound_alike(evidence: Evidence) -> bool:
+    """The student's value is the expected one on an input at the problem's constants drawn anew."""
+    from .rebound import REBOUND
+
+    source = evidence.source
+    got, expected = evidence.got, evidence.expected
+    return source is not None and source.probe == REBOUND and got is not None and got.shape == expected.shape \
+        and not distinct(got, expected, evidence.tol)
 
 
 def _closely(value: np.ndarray, evidence: Evidence) -> bool:

@@ -1,0 +1,133 @@
+"""The diagnosis engine's second input by a problem's constants drawn anew (``grader.diagnosis.rebound``): a
+function that reads its module's constants (the sheet's angles) rather than taking them as arguments is called again
+with the constants its probe declares (``rebind``) bound to drawn values, on the reference and on the student's
+package alike (``probes._rebound``).
+
+* The probe binds the constants for the call only, and puts them back (one the module lacks is removed again).
+* The drawn values are near the sheet's, each changed, away from the special angles and from each other; a value
+  that only scales with them is no second input.
+* Graded as ``grade batch`` grades (``tests/engine/rebound.toml``): a slip in a function of the sheet's frames is
+  named live on the two inputs and nothing without the constants drawn; the kit, whose key holds the call at the
+  constants drawn, names the same or leaves it to the graded submission's formulas; with the engine off no cause
+  of that family is named.  The same slip with the sheet's numbers typed in (its value at the sheet's angles the
+  same) gives the same value at the drawn constants, and is not named as the slip.
+"""
+
+import dataclasses
+import tomllib
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from checks._diagnoses import families_of
+from grader.checking import Tol
+from grader.diagnosis import engine as explaining
+from grader.diagnosis import rebound
+from grader.diagnosis.mutants import KIT_NOTE
+from grader.results import Status
+from probes import _rebound
+
+from ..kit_support import (  # noqa: F401 (fixtures)
+    assert_named_failure,
+    assert_no_catalogue_names_it,
+    assert_same_verdicts,
+    engine_mistakes,
+    grade_live_and_kit,
+    warm_slot,
+)
+from ..submissions import build_planted
+
+ROOT = Path(__file__).resolve().parents[2]
+TABLE = ROOT / "tests" / "engine" / "rebound.toml"
+TIGHT = Tol("tight", 1e-9, 1e-9)
+
+
+def test_the_constants_are_bound_for_the_call_only():
+    import reference
+    from reference import problem_06
+
+    sheet = problem_06.GAMMA
+    bindings = [["problem_06", "GAMMA", 0.2], ["problem_06", "NOT_THERE", 1.0]]
+    frames = _rebound.rebound(reference, "problem_06.frames", bindings, [])
+    assert np.allclose(frames["A_IC1"], problem_06.R3(0.2))
+    assert problem_06.GAMMA == sheet and not hasattr(problem_06, "NOT_THERE")
+    assert _rebound.constants(reference, "problem_06", ["GAMMA", "C3_V"]) == {"GAMMA": sheet}
+
+
+def test_the_drawn_constants_are_near_the_sheets_and_apart():
+    import reference
+    from reference import problem_06
+
+    class Scene:
+        def reference(self, probe, args):
+            return getattr(_rebound, probe.rpartition(".")[2])(reference, *args)
+
+    for attempt in range(20):
+        drawn = rebound._bindings(Scene(), "problem_06.frames", [7, attempt], attempt)
+        values = {name: value for _, name, value in drawn}
+        assert set(values) == {"GAMMA", "BETA", "ALPHA"}
+        for name, value in values.items():
+            ratio = value / getattr(problem_06, name)
+            assert 0.6 <= ratio <= 1.4 and abs(ratio - 1.0) >= rebound.LEAST_CHANGE
+            assert not rebound._special(value)
+        assert len({round(v, 3) for v in values.values()}) == 3
+
+
+def test_a_value_that_only_scales_with_the_constants_is_no_second_input():
+    """A position set by a length drawn anew is the shown one scaled: it would confirm any slip that scales it."""
+    shown = np.array([0.5, -0.2, 0.0])
+    assert rebound._scaled(1.3 * shown, shown, TIGHT)
+    assert not rebound._scaled(1.3 * shown + np.array([0.0, 0.0, 0.1]), shown, TIGHT)
+
+
+REBOUND, FAMILIES = engine_mistakes(TABLE)
+NEAR = {e["name"]: (e["near_old"], e["near_new"]) for e in tomllib.loads(TABLE.read_text())["mistake"]}
+
+
+@pytest.fixture(scope="module")
+def slot():
+    yield from warm_slot(sorted({mistake.problem for mistake in REBOUND}))
+
+
+def test_the_graded_mistakes_are_of_their_families():
+    for mistake in REBOUND:
+        assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],), mistake.name
+
+
+@pytest.mark.parametrize("mistake", REBOUND, ids=lambda m: m.name)
+def test_a_slip_that_reads_the_constants_is_named_at_constants_drawn(
+        mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
+    from grader import grade_problem
+    from grader.workers import Forked
+
+    from ..kit_support import SEED
+
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    target = assert_named_failure(mistake, live)
+    assert "on the input shown and on a second one" in target.hint, target.hint
+    theirs = {r.check_id: r for r in kit.results}[mistake.check]
+    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
+    if not theirs.diagnosis:  # the key holds the call at constants drawn: two inputs, left to the formulas
+        assert KIT_NOTE in theirs.hint, theirs.hint
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    with monkeypatch.context() as patched:  # without the constants drawn: one input, nothing named
+        patched.setattr(explaining, "rebound_input", lambda scene, evidence: None)
+        alone = grade_problem(mistake.problem, submission, seed=SEED, workers=Forked(slot))
+    result = {r.check_id: r for r in alone.results}[mistake.check]
+    assert result.status is Status.FAILED and result.diagnosis == "", result.diagnosis
+    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
+
+
+@pytest.mark.parametrize("mistake", REBOUND, ids=lambda m: m.name)
+def test_the_slip_with_the_numbers_typed_in_is_not_named_as_it(mistake, tmp_path, kit_oracle, slot):
+    old, new = NEAR[mistake.name]
+    typed = dataclasses.replace(mistake, old=old, new=new)
+    submission = build_planted(typed, tmp_path / "pkg")
+    live, _ = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    result = {r.check_id: r for r in live.results}[mistake.check]
+    assert result.status is Status.FAILED, result.message
+    assert not set(families_of(result.diagnosis)) & set(families_of(mistake.diagnosis)), result.diagnosis
+    assert mistake.message not in result.hint
