@@ -3,6 +3,8 @@
 from . import module, probe
 from ._forms import ANY, Arr, Dict, Maybe, Seq
 
+#: the sheet's angles of problem 6, which ``build_chain()`` reads from the module (imported there)
+REBIND = {"module": "problem_09", "names": ("GAMMA", "BETA", "ALPHA")}
 #: ``vectors()``: the coordinates of V in I, C1, C2, C3
 VECTORS = Dict({"I_v": Arr(3), "C1_v": Arr(3), "C2_v": Arr(3), "C3_v": Arr(3)})
 
@@ -30,12 +32,13 @@ def set_later(pkg, A_IB, A_BC):
     return {"A_BC": C.get_transform(B), "A_IC": C.get_transform()}
 
 
-@probe(returns=VECTORS, says="vectors()")
+@probe(returns=VECTORS, says="vectors()", rebind=REBIND)
 def vectors(pkg):
     return module(pkg, "problem_09").vectors()
 
 
-@probe(returns=Dict({"vectors": VECTORS, "chain": Maybe(Seq(Arr(3, 3), length=4))}), says="vectors()")
+@probe(returns=Dict({"vectors": VECTORS, "chain": Maybe(Seq(Arr(3, 3), length=4))}), says="vectors()",
+       rebind=REBIND)
 def vectors_with_chain(pkg):
     """``vectors()`` with the transformations of the package's own ``build_chain()``: ``A_IC3`` and ``A_CkC3``
     (None when they cannot be had)."""
