@@ -2652,6 +2652,10 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
         return []
     if not _tried(evidences):
         return _imprecise(scene, evidences, another)
+    if any(_rebound_alike(e) for e in evidences[1:]):  # right at the constants drawn: a constant typed short?
+        found = _imprecise(scene, evidences[:1], None)
+        if found:
+            return found
     problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
     if problem is None:
         return []
@@ -2773,14 +2777,14 @@ def _in_band(evidence: Evidence) -> bool:
 
 def _precise(mutant: Mutant, inputs: list[Evidence]) -> bool:
     """A mutant of another slip than precision, or one of precision where the student's value is in the band of
-    precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well), or is the
-    expected one on an input at the problem's constants drawn anew (``rebound``: a constant typed short is bound to
-    the drawn value there, on both sides)."""
-    return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) or _rebound_alike(e) for e in inputs)
+    precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well)."""
+    return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) for e in inputs)
 
 
 def _rebound_alike(evidence: Evidence) -> bool:
-    """The student's value is the expected one on an input at the problem's constants drawn anew."""
+    """The student's value is the expected one on an input at the problem's constants drawn anew (``rebound``): a
+    constant of theirs typed short is bound to the drawn value there, so the slips of precision are judged on the
+    input shown alone (``_imprecise``), as where no second input could be drawn."""
     from .rebound import REBOUND
 
     source = evidence.source
