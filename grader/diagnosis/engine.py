@@ -52,7 +52,7 @@ from .grammar import (
 )
 from . import trace
 from .models import model_slips
-from .rebound import REBOUND, rebound_drawn, rebound_input
+from .rebound import REBOUND, rebound_input
 from .mutants import KIT_NOTE, left_to_live, mutant_slips, opposite_slips
 from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -1130,8 +1130,6 @@ def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
             root = source.root if source.root is not None else ask(source.probe, source.args)
             expected = array_of(at(root, source.path))
             drawn = None if expected is None else _drawn(scene, source, expected, tol or SECOND_TOL)
-            if drawn is None and expected is not None:  # the draw of the constants, where there is one
-                rebound_drawn(scene, source, expected, tol or SECOND_TOL)
             if drawn is not None:
                 for args in perturbations(decl, drawn[0]):
                     ask(source.probe, args)

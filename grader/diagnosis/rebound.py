@@ -4,7 +4,9 @@ engine runs the same call on the reference and on the student's package with tho
 for its duration (``probes._rebound``).  A probe declares the constants its functions read (``rebind``); the values
 are drawn near the sheet's (a factor in ``FACTORS``, away from the special angles), each its own.  A student who
 typed the numbers in rather than reading the constants gives the same value there: no slip of a formula reproduces
-that, so nothing is told of it."""
+that, so nothing is told of it.  The student kit's key holds none of these calls: a call that reads the module's
+constants is one of the sheet's fixed cases, which the key holds at the sheet's digits only, and the engine names
+nothing there (``engine._at_sheet_digits``)."""
 
 from __future__ import annotations
 
@@ -106,7 +108,7 @@ def _scaled(value: np.ndarray, expected: np.ndarray, tol) -> bool:
 def rebound_drawn(scene, source: Source, expected: np.ndarray, tol):
     """``(bindings, root)``: the first draw of the constants of ``source``'s probe at which the reference's value at
     ``source.path`` is usable (of the same shape, not zeros where ``expected`` has none, changed, and not merely
-    scaled: ``_scaled``), or None.  A call the reference (or the kit's key) cannot answer is no draw."""
+    scaled: ``_scaled``), or None.  A call the reference cannot answer is no draw."""
     probe, args, first = _inner(source)
     if rebinding(probe) is None:
         return None
@@ -164,3 +166,4 @@ def rebound_input(scene, evidence: Evidence) -> Evidence | None:
     return Evidence(got, expected, evidence.tol, evidence.name, None, None,
                     Source(REBOUND, (probe, bindings, args), source.path, expected_root),
                     Source(REBOUND, (student_probe, bindings, student_args), student.path, got_root))
+
