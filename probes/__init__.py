@@ -43,10 +43,11 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   reproduces the student's value (the rest of the result is not computed for the mutants that cannot).  It is no
   declaration of the arguments or of the result: a probe that declares only its part is tried by the other tiers
   as one that declares nothing.
-* ``rebind``: ``{"module": name, "names": (constant, ...)}``, the float constants of the problem's module (the
-  sheet's angles, lengths, masses) that the probe's functions read rather than take as arguments: where the call
-  has nothing else to draw, the engine's second input is the same call with these constants drawn anew for its
-  duration (``probes._rebound``).  Like ``part``, it declares nothing of the arguments or of the result.
+* ``rebind``: ``{"module": name, "names": (constant, ...)}``, the constants of the problem's module, numbers or
+  rows of numbers (the sheet's angles, lengths, masses, a point) that the probe's functions read rather than take
+  as arguments: where the call has nothing else to draw, the engine's second input is the same call with these
+  constants drawn anew for its duration (``probes._rebound``).  Like ``part``, it declares nothing of the arguments
+  or of the result.
 """
 
 import contextlib

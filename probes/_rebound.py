@@ -2,10 +2,13 @@
 
 A function that reads its problem's constants (the sheet's angles, lengths, masses) rather than taking them as
 arguments has one input only; ``rebound`` runs a probe while ``bindings`` (``[[module, name, value], ...]``: a
-float constant of a module of the package and its value) hold, and puts the constants back afterwards, so that the
-same call gives the value at other constants.  It runs the same way on the reference and on a student's package;
+constant of a module of the package, a number or a row of numbers, and its value) hold, and puts the constants back
+afterwards, so that the same call gives the value at other constants.  A row is bound in the kind it had (a tuple, a
+list or an array).  It runs the same way on the reference and on a student's package;
 a constant the package's module does not define is set for the call and removed afterwards.
 """
+
+import numpy as np
 
 from . import fresh, lookup, module, probe
 from ._forms import ByArgs
@@ -29,8 +32,9 @@ def rebound(pkg, name, bindings, args):
     try:
         for module_name, constant, value in bindings:
             target = module(pkg, module_name)
-            kept.append((target, constant, getattr(target, constant, _MISSING)))
-            setattr(target, constant, float(value))
+            before = getattr(target, constant, _MISSING)
+            kept.append((target, constant, before))
+            setattr(target, constant, _like(before, value))
         with fresh():
             return inner(pkg, *args)
     finally:
@@ -41,16 +45,34 @@ def rebound(pkg, name, bindings, args):
                 setattr(target, constant, before)
 
 
+def _like(before, value):
+    """``value`` (a number or a list of numbers) in the kind of the constant it replaces."""
+    if not isinstance(value, (list, tuple)):
+        return float(value)
+    row = [float(x) for x in value]
+    if isinstance(before, tuple):
+        return tuple(row)
+    if isinstance(before, list):
+        return row
+    return np.array(row, dtype=float)
+
+
 @probe(returns=None, reference_only=True)
 def constants(pkg, module_name, names):
-    """The reference's values of the named float constants of a module (``{name: value}``; one not a number is
-    left out)."""
+    """The reference's values of the named constants of a module (``{name: value}``): a number as a float, a row
+    of numbers (a tuple, a list, an array of one dimension) as a list of floats; any other is left out."""
     target = module(pkg, module_name)
     found = {}
     for name in names:
         value = getattr(target, name, None)
+        if isinstance(value, (bool, str)) or value is None:
+            continue
         try:
-            found[name] = float(value)
+            array = np.asarray(value, dtype=float)
         except (TypeError, ValueError):
             continue
+        if array.ndim == 0:
+            found[name] = float(array)
+        elif array.ndim == 1 and array.size:
+            found[name] = [float(x) for x in array]
     return found

@@ -51,7 +51,8 @@ def symbolic(pkg, points):
     return out
 
 
-@probe(returns=Dict({"A_IC3": Arr(3, 3), "angles": Arr(3)}), says="animate()")
+@probe(returns=Dict({"A_IC3": Arr(3, 3), "angles": Arr(3)}), says="animate()",
+       rebind={"module": "problem_07", "names": ("START_ANGLES",)})
 def animate(pkg):
     return module(pkg, "problem_07").animate()
 

@@ -26,6 +26,7 @@ def step(pkg, which, x, I_omega, dt):
 @probe(
     returns=ByArgs(lambda which: Dict({"A_IC": Arr(3, 3), "angles": Arr(3)}) if which == "b" else Arr(3, 3)),
     says="part_{0}()",
+    rebind={"module": "problem_08", "names": ("I_OMEGA", "ANGLES0")},
 )
 def part(pkg, which):
     return getattr(module(pkg, "problem_08"), f"part_{which}")()

@@ -14,7 +14,8 @@ def prismatic_column(pkg, u):
     return module(pkg, "problem_27").prismatic_column(u)
 
 
-@probe(returns=Arr(3, 3), says="jacobian_a()")
+@probe(returns=Arr(3, 3), says="jacobian_a()",
+       rebind={"module": "problem_27", "names": ("JOINT_1", "AXIS_2", "JOINT_3", "END_EFFECTOR")})
 def jacobian_a(pkg):
     return module(pkg, "problem_27").jacobian_a()
 

@@ -1,8 +1,9 @@
 """The engine's second input by a problem's constants drawn anew: a function that reads its module's named
-constants (the sheet's angles, lengths, masses) rather than taking them as arguments has nothing to draw, so the
+constants (the sheet's angles, lengths, masses, a point's coordinates) rather than taking them as arguments has nothing to draw, so the
 engine runs the same call on the reference and on the student's package with those constants bound to drawn values
 for its duration (``probes._rebound``).  A probe declares the constants its functions read (``rebind``); the values
-are drawn near the sheet's (a factor in ``FACTORS``, away from the special angles), each its own.  A student who
+are drawn near the sheet's (a factor in ``FACTORS``, away from the special angles), each number its own (each of a
+row's numbers but its zeros).  A student who
 typed the numbers in rather than reading the constants gives the same value there: no slip of a formula reproduces
 that, so nothing is told of it.  The student kit's key holds none of these calls: a call that reads the module's
 constants is one of the sheet's fixed cases, which the key holds at the sheet's digits only, and the engine names
@@ -68,8 +69,9 @@ def _value(rng, sheet: float, taken: list) -> float:
 
 
 def _bindings(scene, probe: str, seed, attempt: int) -> list | None:
-    """The ``attempt``-th draw of the constants ``probe`` declares (``[[module, name, value], ...]``), or None: none
-    declared, or none of them a number other than zero."""
+    """The ``attempt``-th draw of the constants ``probe`` declares (``[[module, name, value], ...]``, a row's
+    value a list: each of its numbers drawn, a zero kept), or None: none declared, or none of them a number other
+    than zero."""
     declared = rebinding(probe)
     if declared is None:
         return None
@@ -79,11 +81,15 @@ def _bindings(scene, probe: str, seed, attempt: int) -> list | None:
     bindings, taken = [], []
     for name in names:
         value = sheet.get(name) if isinstance(sheet, dict) else None
-        if value is None or not np.isfinite(value) or value == 0.0:
+        row = np.asarray(value, dtype=float) if value is not None else None
+        if row is None or row.ndim > 1 or not np.all(np.isfinite(row)) or not np.any(row):
             continue
-        drawn = _value(rng, float(value), taken)
-        taken.append(drawn)
-        bindings.append([module, name, drawn])
+        drawn = []
+        for number in row.ravel():
+            drawn.append(0.0 if number == 0.0 else _value(rng, float(number), taken))
+            if number != 0.0:
+                taken.append(drawn[-1])
+        bindings.append([module, name, drawn if row.ndim else drawn[0]])
     return bindings or None
 
 
@@ -162,7 +168,7 @@ def rebound_input(scene, evidence: Evidence) -> Evidence | None:
     expected, got = array_of(at(expected_root, source.path)), array_of(at(got_root, student.path))
     if expected is None or got is None or got.shape != expected.shape:
         return None
-    trace.note("rebound", bindings=[[name, round(value, 6)] for _, name, value in bindings])
+    trace.note("rebound", bindings=[[name, np.round(value, 6).tolist()] for _, name, value in bindings])
     return Evidence(got, expected, evidence.tol, evidence.name, None, None,
                     Source(REBOUND, (probe, bindings, args), source.path, expected_root),
                     Source(REBOUND, (student_probe, bindings, student_args), student.path, got_root))

@@ -55,6 +55,53 @@ def test_the_constants_are_bound_for_the_call_only():
     assert _rebound.constants(reference, "problem_06", ["GAMMA", "C3_V"]) == {"GAMMA": sheet}
 
 
+def test_a_row_of_numbers_is_bound_in_its_kind_and_put_back():
+    """Problem 27's axis (a tuple) and problem 8's angular velocity (an array) are rows of numbers: the sheet's
+    values are read as lists, bound as a tuple and an array for the call, and put back."""
+    import reference
+    from reference import problem_08, problem_27
+
+    assert _rebound.constants(reference, "problem_27", ["AXIS_2", "JOINT_1"]) == {
+        "AXIS_2": list(problem_27.AXIS_2), "JOINT_1": [0.0, 0.0]}
+    sheet = problem_27.jacobian_a()
+    turned = _rebound.rebound(reference, "problem_27.jacobian_a", [["problem_27", "AXIS_2", [0.6, 0.8]]], [])
+    assert not np.allclose(turned, sheet)
+    assert problem_27.AXIS_2 == (0.26, 0.97) and isinstance(problem_27.AXIS_2, tuple)
+    seen = []
+    real = problem_08._run
+
+    def spy(step, x0, **kwargs):
+        seen.append(problem_08.I_OMEGA)
+        return real(step, x0, **kwargs)
+
+    problem_08._run = spy
+    try:
+        _rebound.rebound(reference, "problem_08.part", [["problem_08", "I_OMEGA", [0.4, 0.7, 0.5]]], ["a"])
+    finally:
+        problem_08._run = real
+    assert isinstance(seen[0], np.ndarray) and np.allclose(seen[0], [0.4, 0.7, 0.5])
+    assert np.allclose(problem_08.I_OMEGA, np.sqrt(1.0 / 3.0))
+
+
+def test_each_number_of_a_row_is_drawn_and_its_zeros_kept():
+    import reference
+
+    class Scene:
+        def reference(self, probe, args):
+            return getattr(_rebound, probe.rpartition(".")[2])(reference, *args)
+
+    sheet = {"AXIS_2": (0.26, 0.97), "JOINT_3": (1.82, 6.61), "END_EFFECTOR": (5.17, 2.83)}
+    for attempt in range(10):
+        drawn = {name: value for _, name, value in rebound._bindings(Scene(), "problem_27.jacobian_a", [3, attempt],
+                                                                     attempt)}
+        assert set(drawn) == set(sheet), drawn  # JOINT_1 is (0, 0): nothing to draw
+        for name, row in sheet.items():
+            ratios = np.array(drawn[name]) / np.array(row)
+            assert np.all((0.6 <= ratios) & (ratios <= 1.4)) and np.all(abs(ratios - 1.0) >= rebound.LEAST_CHANGE)
+    angles = {name: value for _, name, value in rebound._bindings(Scene(), "problem_08.part", [3, 0], 0)}
+    assert angles["ANGLES0"][:2] == [0.0, 0.0] and angles["ANGLES0"][2] != np.pi / 2
+
+
 def test_the_drawn_constants_are_near_the_sheets_and_apart():
     import reference
     from reference import problem_06
