@@ -529,6 +529,14 @@ SLIPS = {
     "constants": ("swapped", "the constants `{f}` are exchanged"),
     "loop_short": ("missing_term", "a loop in `{f}` stops one short: its last item is left out"),
     "loop_late": ("missing_term", "a loop in `{f}` starts one late: its first item is left out"),
+    "steps_short": ("step_count", "the loop of steps in `{f}` takes one step too few (it stops one short, or "
+                                  "starts one late)"),
+    "steps_late": ("step_count", "the loop of steps in `{f}` takes one step too few (it stops one short, or "
+                                 "starts one late)"),
+    "start_zeroed": ("initial_state", "an entry of the start `{f}` is written 0: the run starts from another state"),
+    "start_zeros": ("initial_state", "the start `{f}` is written as zeros: the run starts from another state"),
+    "start_identity": ("initial_state", "the start `{f}` is written as the identity: the run starts from another "
+                                        "orientation"),
     "keyword": ("missing_term", "a call in `{f}` leaves out one of its keyword arguments, so that the callee's "
                                 "default is used"),
     "keyword_point": ("offset", "a call in `{f}` leaves out a point's position among its keyword arguments, so that "
@@ -728,8 +736,9 @@ def _slips(node, parent):
         for k in _returned_names(node):  # ``np.array([x, y, gamma])`` with gamma in degrees
             yield "returned_degrees", lambda n, k=k: _in_degrees(n, k)
     if isinstance(node, (ast.For, ast.ListComp, ast.GeneratorExp, ast.SetComp, ast.DictComp)):
-        yield "loop_short", lambda n: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None))
-        yield "loop_late", lambda n: _loop_cut(n, ast.Slice(ast.Constant(1), None, None))
+        steps = _stepping(node)
+        yield "steps_short" if steps else "loop_short", lambda n: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None))
+        yield "steps_late" if steps else "loop_late", lambda n: _loop_cut(n, ast.Slice(ast.Constant(1), None, None))
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign, ast.Expr)) and _inverses(node) >= 2:
         yield "inverses", lambda n: _Uninverted().visit(n)
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):
@@ -742,6 +751,25 @@ def _slips(node, parent):
         yield "sign", _negated
         if isinstance(parent.op, ast.MatMult) and not (isinstance(node, ast.Attribute) and node.attr == "T"):
             yield "transpose", _transposed
+
+
+def _stepping(node) -> bool:
+    """True for a loop of steps: a ``for`` loop whose items its body does not read, and whose body computes a
+    name from that name's own value (``x = step(x, omega, dt)``, ``q = q + dt * qd``, ``t += dt``): one item fewer
+    is one step fewer of a run, where a loop over items that it reads (a sum of terms) leaves an item out."""
+    if not isinstance(node, ast.For):
+        return False
+    items = {n.id for n in ast.walk(node.target) if isinstance(n, ast.Name)}
+    body = ast.Module(node.body, [])
+    if items & {n.id for n in ast.walk(body) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}:
+        return False
+    for statement in ast.walk(body):
+        if isinstance(statement, ast.AugAssign) and isinstance(statement.target, ast.Name):
+            return True
+        if isinstance(statement, ast.Assign) and len(statement.targets) == 1 \
+                and isinstance(statement.targets[0], ast.Name) and statement.targets[0].id in _read(statement.value):
+            return True
+    return False
 
 
 def _loop_cut(node, cut: ast.Slice):
@@ -2912,6 +2940,11 @@ _NUMBER_SLIPS = (("constant_sign", -1.0), ("constant_doubled", 2.0), ("constant_
                  ("constant_thousandth", 1e-3), ("constant_root", None), ("constant_square", None))
 #: the entries of a list or tuple of a constant, at most, whose pairs are exchanged
 _TABLE = 6
+#: a constant that is a run's start, by the course's names (``A_IC0``, ``ANGLES0``, ``Q0``, ``X_START``,
+#: ``START_ANGLES``): a slip of it makes the run start elsewhere
+_START = re.compile(r"^(?:[A-Z_]*[A-Z_]0|\w*START\w*|\w*INITIAL\w*)$")
+#: the slips of a start that write it whole as a plain value (``_start_slips``)
+_WHOLE_STARTS = frozenset({"start_zeros", "start_identity"})
 
 
 @lru_cache(maxsize=4)
@@ -3063,6 +3096,24 @@ def _number_slips(expression):
                 yield "constant_transposed", index, _literal_transposed(node)
 
 
+def _start_slips(value) -> list:
+    """``(slip, value)`` of a start written whole as a plain value: all zeros (at rest, at the origin), and a
+    square matrix as the identity (no turn)."""
+    array = np.asarray(value, dtype=float)
+    slips = [("start_zeros", np.zeros_like(array))]
+    if array.ndim == 2 and array.shape[0] == array.shape[1]:
+        slips.append(("start_identity", np.eye(array.shape[0])))
+    return slips
+
+
+def _whole_starts_first(kept: list) -> list:
+    """The kept slips of the constants, but those of a start of which a slip writing it whole as a plain value
+    (zeros, the identity) is kept: its numbers typed otherwise (an angle a thousandth of its value, a turn of
+    nearly nothing) then give that value only within the tolerance."""
+    whole = {(m.module, m.path) for m in kept if m.slip in _WHOLE_STARTS}
+    return [m for m in kept if m.slip in _WHOLE_STARTS or (m.module, m.path) not in whole]
+
+
 def _replaced(expression, index: int, replacement):
     """A copy of the expression with its ``index``-th node (in the order of ``ast.walk``) replaced."""
     if index == 0:
@@ -3079,8 +3130,9 @@ def _replaced(expression, index: int, replacement):
 
 def constant_mutants(package, root: str, problem: int, ran: set) -> list[Mutant]:
     """The slips of the module constants the run reads (``_owned_constants``): a number of one typed otherwise, an
-    entry of a table written 0 or two of its entries exchanged, and two numeric constants of one module of one
-    shape exchanged; each with the bindings it makes (``_bindings``), where its value differs; at most
+    entry of a table written 0 or two of its entries exchanged, a start (``_START``) written whole as zeros or the
+    identity (``_start_slips``; an entry of it written 0 is a start's slip too), and two numeric constants of one
+    module of one shape exchanged; each with the bindings it makes (``_bindings``), where its value differs; at most
     ``CONSTANT_MUTANTS``."""
     trees, found = _modules(root), []
     values: dict = {}
@@ -3090,16 +3142,20 @@ def constant_mutants(package, root: str, problem: int, ran: set) -> list[Mutant]
         if module is None or expression is None or not _numeric(vars(module).get(name)):
             continue
         values[(stem, name)] = vars(module)[name]
+        start = bool(_START.match(name))
+        slips = _start_slips(values[(stem, name)]) if start else []
         for slip, index, replacement in _number_slips(expression):
             try:
-                value = _value_of(_replaced(expression, index, replacement), module)
+                slips.append((slip, _value_of(_replaced(expression, index, replacement), module)))
             except Exception:  # noqa: BLE001 - a slip whose value cannot be computed is no slip
                 continue
+        for slip, value in slips:
             if not _numeric(value) or np.shape(value) != np.shape(values[(stem, name)]) \
                     or np.array_equal(np.asarray(value), np.asarray(values[(stem, name)])):
                 continue
             bindings = _bindings(package, root, {(stem, name): value})
             if bindings is not None:
+                slip = "start_zeroed" if start and slip == "constant_zeroed" else slip
                 found.append(Mutant(stem, (name,), slip, None, bindings=bindings))
             if len(found) >= CONSTANT_MUTANTS:
                 return found
@@ -3135,7 +3191,7 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
                          progress=progress) if mutants else []
-    return kept, mutants
+    return (None if kept is None else _whole_starts_first(kept)), mutants
 
 
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,

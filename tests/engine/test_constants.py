@@ -9,6 +9,12 @@ The test plants a mistake into a copy of the reference and asks the tier on two 
 pendulum through the name its module imports and the constant it computes from it (``I_GRAV``).  The near miss is
 the gravity three times itself, which no slip of typing gives: nothing is named.  A joint frame's rotation of
 problem 32's table typed with its rows as columns is a transpose; with two rows changed otherwise, it is none.
+
+A run's start (``A_IC0``, ``ANGLES0``: ``mutants._START``) written whole as a plain value, the identity or zeros, is
+a wrong initial state, and its numbers typed otherwise that give the same within the tolerance (an angle a
+thousandth of itself) are not told beside it; the near misses, a start at another angle, are no such slip.  Problem
+8's runs read their constants only, and the second input is the same call at another angular velocity
+(``probes._rebound``).
 """
 
 import numpy as np
@@ -67,3 +73,58 @@ def test_a_constant_matrix_with_two_rows_changed_names_no_transpose(tmp_path):
     """The near miss: the rotation's first row negated and its last exchanged with the middle one (no transpose)."""
     found = arm_slips(tmp_path, "np.array([[0.0, 0.0, -1.0], [-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]),")
     assert "transpose" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
+def rebound_slips(tmp_path, file: str, old: str, new: str, probe: str, args: list, bindings: list, path: tuple,
+                  check: str):
+    """The tier's slips for a planted package on a call without arguments to draw: the sheet's, and the same call
+    at the module's constants ``bindings`` drawn anew (``probes._rebound``), as the engine's second input is."""
+    return planted_slips(tmp_path, file, old, new, "_rebound.rebound",
+                         [(probe, [], args), (probe, bindings, args)], path, check)
+
+
+#: problem 8's angular velocity drawn anew
+P08_OMEGA = [["problem_08", "I_OMEGA", [0.4, 0.7, 0.5]]]
+
+
+def test_a_start_written_as_the_identity_is_a_wrong_initial_state(tmp_path):
+    """Problem 8's start ``A_IC0`` typed as the identity: a start written whole as a plain value.  Its angle
+    typed a thousandth of itself (a turn of nearly nothing) gives the same within the tolerance, and is not told
+    beside it."""
+    found = rebound_slips(tmp_path, "problem_08.py", "A_IC0 = R3(np.pi / 2)", "A_IC0 = np.eye(3)",
+                          "problem_08.part", ["a"], P08_OMEGA, (), "p08.part_a")
+    assert {h.name for h in found} == {"initial_state"}, [(h.name, h.detail) for h in found]
+    assert any("the start `A_IC0` is written as the identity" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_start_at_another_angle_is_no_start_written_plainly(tmp_path):
+    """The near miss: the start turned by 60 degrees rather than 90, which no plain value and no typing gives."""
+    found = rebound_slips(tmp_path, "problem_08.py", "A_IC0 = R3(np.pi / 2)", "A_IC0 = R3(np.pi / 3)",
+                          "problem_08.part", ["a"], P08_OMEGA, (), "p08.part_a")
+    assert "initial_state" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
+def test_a_start_written_as_zeros_is_a_wrong_initial_state(tmp_path):
+    """Problem 8's Cardan start ``ANGLES0`` typed as zeros (the second input draws the angular velocity only):
+    a start written whole as a plain value, or its one entry other than zero written 0, where an entry of another
+    table written 0 is a term left out."""
+    found = rebound_slips(tmp_path, "problem_08.py", "ANGLES0 = np.array([0.0, 0.0, np.pi / 2])",
+                          "ANGLES0 = np.array([0.0, 0.0, 0.0])", "problem_08.part", ["b"], P08_OMEGA, ("angles",),
+                          "p08.part_b")
+    assert {h.name for h in found} == {"initial_state"}, [(h.name, h.detail) for h in found]
+    assert any("the start `ANGLES0` is written as zeros" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_start_typed_otherwise_is_no_wrong_initial_state(tmp_path):
+    """The near miss: the yaw of the start typed 60 degrees rather than 90, which no plain value gives."""
+    found = rebound_slips(tmp_path, "problem_08.py", "ANGLES0 = np.array([0.0, 0.0, np.pi / 2])",
+                          "ANGLES0 = np.array([0.0, 0.0, np.pi / 3])", "problem_08.part", ["b"], P08_OMEGA,
+                          ("angles",), "p08.part_b")
+    assert "initial_state" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
+def test_the_starts_by_the_course_notation():
+    starts = ["A_IC0", "ANGLES0", "Q0", "QD0", "X_START", "START_ANGLES", "INITIAL_STATE"]
+    others = ["I_OMEGA", "N_STEPS", "JOINT_1", "T10", "GRAVITY", "DT", "X_END"]
+    assert all(mutants._START.match(name) for name in starts)
+    assert not any(mutants._START.match(name) for name in others)
