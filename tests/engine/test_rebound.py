@@ -52,7 +52,8 @@ def test_the_constants_are_bound_for_the_call_only():
     frames = _rebound.rebound(reference, "problem_06.frames", bindings, [])
     assert np.allclose(frames["A_IC1"], problem_06.R3(0.2))
     assert problem_06.GAMMA == sheet and not hasattr(problem_06, "NOT_THERE")
-    assert _rebound.constants(reference, "problem_06", ["GAMMA", "C3_V"]) == {"GAMMA": sheet}
+    assert _rebound.constants(reference, "problem_06", ["GAMMA", "C3_V", "R3", "NOT_THERE"]) == {
+        "GAMMA": sheet, "C3_V": list(problem_06.C3_V)}  # a function, and a name the module lacks, are no constants
 
 
 def test_a_row_of_numbers_is_bound_in_its_kind_and_put_back():
