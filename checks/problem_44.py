@@ -30,7 +30,7 @@ from grader.checking import (
 from probes import problem_44 as p44
 
 from ._answers import typed_or_ignored
-from ._dynamics import assert_run, run_array, same_crossings, subsample
+from ._dynamics import assert_event_found, assert_run, run_array, same_crossings, subsample
 
 TITLE = "Implementing Event Detection"
 
@@ -128,10 +128,12 @@ def _runs(ctx):
 
 
 def _event(got, expected, what, bands):
-    """The event is found, ends the run and lies within the bands of the reference's."""
-    if got.get("t_event") is None:
-        fail(f"{what}: no event, the bar never reached the second support (t_event is None); the reference's run "
-             f"hits it at t = {expected['t_event']:.4f} s.", NO_EVENT_HINT, "no_event")
+    """The event is found, ends the run and lies within the bands of the reference's.  Where the run has no event,
+    the first place it leaves the reference's run before the reference's event is what differs
+    (``assert_event_found``); only a run that follows the reference's there and never fires has missed it."""
+    assert_event_found(got, expected, "t_event", ("q", "qd"), BAND, what,
+                       f"{what}: no event, the bar never reached the second support (t_event is None); the "
+                       f"reference's run hits it at t = {expected['t_event']:.4f} s.", NO_EVENT_HINT)
     t = run_array(got, "t", None, what)
     if t.size and t[-1] > got["t_event"] + 1e-9:
         fail(f"{what}: the run goes on after the event at t = {got['t_event']:.4f} s, to t = {t[-1]:.4g} s.",
