@@ -714,10 +714,11 @@ def parameter_variants(motion: dict, args: tuple, sheet, start=None, parts=None)
     ``motion["parameters"]``, the run's parameters (``sheet``: their values where an argument is not given):
 
     * ``{"arg": index, "names": (...)}``, one argument holding them all: exchanged in pairs, scaled by the
-      ``PARAMETER_FACTORS``, and, where the argument is given, each at the sheet's value (that parameter ignored);
+      ``PARAMETER_FACTORS``, each with its sign turned, and, where the argument is given, each at the sheet's value
+      (that parameter ignored);
     * ``{"args": (indices), "names": (...)}``, one argument each: exchanged in pairs (any two, where one at least is
-      not given: the grammar's input slips exchange the given ones), and each given one at the sheet's value (the
-      argument ignored, the module's constant used instead).
+      not given: the grammar's input slips exchange the given ones), each with its sign turned, and each given one
+      at the sheet's value (the argument ignored, the module's constant used instead).
 
     ``motion["start"]`` (``{"arg": index, "name": ..., "sheet": probe}``), the argument that holds the run's start
     (``start``: the sheet's): the reference's run from the sheet's start where another is given (the argument
@@ -845,6 +846,10 @@ def _vector_variants(spec: dict, args: tuple, sheet) -> list:
             found.append((Hypothesis(f"run:scale:{factor:g}:{i}", "scaled_argument", 2,
                                      f"{name} enters at {words} its value: the reference's run with {name} = "
                                      f"{changed[i]:g} is yours"), run_with(changed)))
+        if values[i] != 0.0:
+            changed = values.copy()
+            changed[i] = -values[i]
+            found.append((_negated(i, name, changed[i]), run_with(changed)))
     # each parameter given at its sheet value (the module's constant used where the argument belongs)
     defaults = array_of(sheet)
     if given is not sheet and defaults is not None and defaults.shape == values.shape:
@@ -884,7 +889,16 @@ def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
         if given[k] and not np.isclose(values[k], defaults[k], rtol=1e-9, atol=0.0):
             found.append((_sheets_value(f"run:sheet:{k}", name, f"{values[k]:g}", f"{defaults[k]:g}"),
                           run_with({k: float(defaults[k])})))
+        if values[k] != 0.0:
+            found.append((_negated(k, name, -values[k]), run_with({k: -values[k]})))
     return found
+
+
+def _negated(k: int, name: str, value: float) -> Hypothesis:
+    """The hypothesis of a run whose parameter ``name`` enters with its sign turned (a signed constant, g = -9.81,
+    passed where its magnitude belongs, or the reverse): the reference's run at ``value``."""
+    return Hypothesis(f"run:negated:{k}", "sign_flip", 2, f"{name} enters with its sign turned: the reference's run "
+                      f"with {name} = {value:g} is yours")
 
 
 def parameter_slips(scene: Scene, evidence: Evidence, decl: Declaration, integration: bool = True) -> list:

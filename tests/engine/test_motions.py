@@ -165,6 +165,20 @@ STRONGER_GRAVITY = Planted(
     old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
     new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, 1.05 * g),",
     check="p44.event", diagnosis="", message="")
+#: the bar's weight turned up by the run's own arguments (its right-hand side is right): the bar never falls onto the
+#: second support, and the run leaves the reference's from its first samples (no missed event); the reference's run
+#: with g negated is it
+GRAVITY_PASSED_NEGATIVE = Planted(
+    name="motions-p44-gravity-passed-negative", problem=44, file="problem_44.py",
+    old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
+    new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, -g),",
+    check="p44.event", diagnosis="sign_flip", message="g enters with its sign turned")
+#: its near miss: g negated and halved, which no single variant of the run's parameters gives
+GRAVITY_PASSED_NEGATIVE_AND_HALVED = Planted(
+    name="motions-p44-gravity-passed-negative-and-halved", problem=44, file="problem_44.py",
+    old="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, g),",
+    new="result = solve_ivp(bar_ode, (0.0, t_end), y0, t_eval=t_eval, args=(m, theta, -0.5 * g),",
+    check="p44.event", diagnosis="", message="")
 
 #: the output step taken as the span over the count of samples, not of steps: as many times as asked, evenly from 0,
 #: each after the first early by a growing share of the step (the grid of one sample more, cut to the count); the
@@ -192,8 +206,8 @@ ARM_IN_SINGLE = Planted(
 
 RUN_SLIPS = [RATES_IN_SINGLE, ARM_IN_SINGLE, SPAN_OVER_SAMPLES, LOOSE_BAR, V0_AND_G_EXCHANGED, V0_IGNORED,
              EVENT_RATES_FROM_POSITIONS, ANGLES_FROM_RATE_ROWS, RATES_FROM_ANGLE_COLUMNS, APEX_ON_THE_HEIGHT,
-             RATES_NEGATED_AT_THE_START, Q0_IGNORED, THETA_IGNORED, WIRE_LENGTH_IGNORED]
-NEAR_MISSES = [STRONGER_GRAVITY]
+             RATES_NEGATED_AT_THE_START, Q0_IGNORED, THETA_IGNORED, WIRE_LENGTH_IGNORED, GRAVITY_PASSED_NEGATIVE]
+NEAR_MISSES = [STRONGER_GRAVITY, GRAVITY_PASSED_NEGATIVE_AND_HALVED]
 
 MISTAKES = [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR, EULER_WALKER, RATES_AS_ANGLES,
             MASS_AND_INERTIA_EXCHANGED]
@@ -234,10 +248,11 @@ def test_a_start_that_is_not_the_modules_is_not_told_as_the_argument_ignored(tmp
 def test_a_run_off_for_another_reason_is_not_told_as_its_tolerances(mistake, tmp_path, kit_oracle, deferred_ids,
                                                                       slot):
     """A run whose arguments are off by a factor no hypothesis tries: its right-hand side agrees and the run
-    leaves the reference's, but no run at looser tolerances, no exchange and no wrong row is it."""
+    leaves the reference's, but no run at looser tolerances, no exchange, no parameter with its sign turned and no
+    wrong row is it."""
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     told = set(families_of(target.diagnosis))
-    assert not told & (INTEGRATION | {"state_row", "order", "initial_state"}), (target.diagnosis, target.hint)
+    assert not told & (INTEGRATION | {"state_row", "order", "initial_state", "sign"}), (target.diagnosis, target.hint)
 
 
 @pytest.mark.parametrize("mistake", [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR],
