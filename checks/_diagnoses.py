@@ -428,6 +428,8 @@ _TABLE = (
     _D("actuator_joint", "model", "an actuator on the wrong joint", "put the actuator on the wrong joint"),
     _D("leftover_input", "extra_term", "an input left in the model that should be zero", "left an input in"),
     _D("no_connect", "missing_term", "a loop not closed by a connect", "did not close the loop"),
+    _D("weld_for_connect", "extra_term", "a loop closed by a weld where a connect belongs (its orientation locked "
+       "too)", "closed a loop with a weld where a connect belongs"),
     _D("not_assembled", "model", "a linkage that is not assembled", "did not assemble the linkage"),
     _D("no_swing", "model", "a link that does not swing", "built a link that does not swing"),
     _D("diverged", "diverged", "a model whose run diverges", "built a model whose run diverges"),

@@ -378,6 +378,12 @@ def _assert_structure(ctx, point):
                      mistakes=[] if straight is None else [Mistake("built_straight", straight[k], STRAIGHT_HINT)])
         assert_close(joint["axis"], [0.0, 0.0, 1.0], f"the axis of joint {k + 1} in {what}", DIRECTION)
     connects = [e for e in desc["equalities"] if e["type"] == "connect" and e["active"]]
+    if not connects and any(e["type"] == "weld" and e["active"] for e in desc["equalities"]):
+        fail(f"{what} closes the loop with a <weld>, which locks the orientation of link 3 as well as its end: "
+             "three hinges and a weld leave no degree of freedom.",
+             "The fourth joint is a revolute one: a <connect> between link 3's tip and the fixed point holds the "
+             "points together and lets the link turn, '<equality><connect site1=\"tip\" site2=\"fixed\"/>"
+             "</equality>'.", "weld_for_connect")
     if len(connects) != 1 or not connects[0]["to_world"]:
         fail(f"{what} must close the loop with one active <connect> between link 3 and the world; it has "
              f"{len(desc['equalities'])} equality constraint(s): "
