@@ -524,6 +524,9 @@ SLIPS = {
     "constant_square": ("wrong_factor", "a number of the constant `{f}` is the square of the one that belongs"),
     "constant_entries": ("swapped", "two entries of the constant `{f}` are exchanged"),
     "constant_zeroed": ("missing_term", "an entry of the constant `{f}` is left out (written 0)"),
+    "constant_converted_back": ("degrees", "the constant `{f}` is converted the wrong way (rad2deg where deg2rad "
+                                           "belongs, or the reverse)"),
+    "constant_typed": ("rounded", "the constant `{f}` is typed short (pi / 2 as 1.57)"),
     "constant_transposed": ("transpose", "a matrix of the constant `{f}` is written transposed (its rows as "
                                          "columns)"),
     "constants": ("swapped", "the constants `{f}` are exchanged"),
@@ -545,12 +548,14 @@ SLIPS = {
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
     "converted_radians": ("degrees", "`{f}` converts an argument to radians that already is in radians"),
+    "converted_back": ("degrees", "`{f}` converts an angle the wrong way (rad2deg where deg2rad belongs, or the "
+                                  "reverse)"),
     "converted_rpm": ("wrong_factor", "`{f}` converts an argument from rpm to rad/s that already is in rad/s"),
     "inertial_matrix": ("wrong_frame", "`{f}` turns a matrix of body coordinates into inertial ones (A M A^T) where "
                                        "the body's own belongs"),
 }
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
-PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed"})
+PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed", "constant_typed"})
 #: the largest difference between the student's value and the expected one, relative to the expected value's size,
 #: that a slip of precision makes (a constant typed to two decimals, float32 accumulated over a run: pi as 3.14 is
 #: 5e-4, g as 9.8 is 1e-3, float32 alone about 1e-7); past it a slip of precision is not told
@@ -730,6 +735,8 @@ def _slips(node, parent):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _BACK:
+        yield "converted_back", lambda n: _with(n, func=_with(n.func, attr=_BACK[n.func.attr]))
     if isinstance(node, ast.Assign) and _stored(node):  # ``self.r = r`` as ``self.r = self.r + r``
         yield "kept_adding", lambda n: _with(n, value=ast.BinOp(_loaded(n.targets[0]), ast.Add(), n.value))
     if isinstance(node, ast.Return):
@@ -2681,7 +2688,7 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     if not _tried(evidences):
         return _imprecise(scene, evidences, another)
     if any(_rebound_alike(e) for e in evidences[1:]):  # right at the constants drawn: a constant typed short?
-        found = _imprecise(scene, evidences[:1], None)
+        found = _imprecise(scene, evidences[:1], None) or _drawn_constants(scene, evidences)
         if found:
             return found
     problem = _problem(getattr(scene.ctx, "check_id", ""), evidences[0].source.probe)
@@ -2807,6 +2814,26 @@ def _precise(mutant: Mutant, inputs: list[Evidence]) -> bool:
     """A mutant of another slip than precision, or one of precision where the student's value is in the band of
     precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well)."""
     return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) for e in inputs)
+
+
+def _drawn_constants(scene, evidences: list[Evidence]) -> list[Hypothesis]:
+    """Where the student's value is the expected one at the constants drawn anew (``_rebound_alike``) and not on
+    the input shown, what differs is in the values of those constants, which the drawn input binds on both sides:
+    their slips of typing (``constant_mutants``: a number of one typed otherwise, converted the wrong way, an entry
+    written 0), judged on the input shown alone."""
+    first = evidences[0]
+    names = frozenset((module, name) for e in evidences[1:] if _rebound_alike(e)
+                      for module, name, _ in e.source.args[1])
+    problem = _problem(getattr(scene.ctx, "check_id", ""), first.source.probe)
+    if problem is None or not names:
+        return []
+    try:
+        kept = _kept(problem, [first], constants=names)
+    except GraderFault:
+        return []
+    trace.note("drawn_constants", constants=sorted(name for _, name in names),
+               kept=sorted({m.name for m in kept or ()}))
+    return _hypotheses(kept or [], [first])
 
 
 def _rebound_alike(evidence: Evidence) -> bool:
@@ -3071,10 +3098,22 @@ def _value_of(expression, module):
                 dict(vars(module)))
 
 
+#: the conversions of an angle, each with the one the other way
+_BACK = {"deg2rad": "rad2deg", "rad2deg": "deg2rad", "radians": "degrees", "degrees": "radians"}
+
+
 def _number_slips(expression):
     """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``), each entry of
-    a list or tuple of it written 0, each two entries of one exchanged, and a matrix of it written out row by row
-    (``_written_out``) transposed."""
+    a list or tuple of it written 0, each two entries of one exchanged, a matrix of it written out row by row
+    (``_written_out``) transposed, a conversion of an angle the other way (``_BACK``), and an expression of numbers
+    in it that is not one number (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
+    parents = {id(child): node for node in ast.walk(expression) for child in ast.iter_child_nodes(node)}
+    for index, node in enumerate(ast.walk(expression)):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _BACK:
+            yield "constant_converted_back", index, _with(node, func=_with(node.func, attr=_BACK[node.func.attr]))
+        if _constant_expression(node) and not _pi(node) and not _constant_expression(parents.get(id(node))):
+            for decimals in TYPED_DECIMALS:
+                yield "constant_typed", index, _float_round(node, decimals)
     for index, node in enumerate(ast.walk(expression)):
         if isinstance(node, ast.Constant) and type(node.value) in (int, float) and node.value != 0:
             for slip, factor in _NUMBER_SLIPS:
@@ -3176,17 +3215,19 @@ def _made_constants(package, root: str, problem: int, ran: frozenset) -> tuple:
 
 
 def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
-                    progress: dict) -> tuple:
+                    progress: dict, names: frozenset | None = None) -> tuple:
     """``(kept, mutants)`` of the slips of the module constants the first input's call reads, tried where no slip
     of the code reproduced the student's value: the constants of the problem's own module and of the library hold
     the problem's data (lengths, masses, gains, tables), which a student types from the sheet; within a budget of
-    their own (``CONSTANT_TIME_BUDGET``; kept None when it runs out)."""
+    their own (``CONSTANT_TIME_BUDGET``; kept None when it runs out); ``names``: only those of these constants
+    (``(module, name)``)."""
     started = time.thread_time()
     first = evidences[0]
     with _Deadline(CONSTANT_TIME_BUDGET) as deadline:
         ran = _traced(package, root, first.source.probe, first.source.args)
         with deadline.making():
-            mutants = list(_made_constants(package, str(root), problem, frozenset(ran)))
+            mutants = [m for m in _made_constants(package, str(root), problem, frozenset(ran))
+                       if names is None or (m.module, m.path[0]) in names]
         trace.note("constants", count=len(mutants), constants=sorted({m.function for m in mutants}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
@@ -3195,12 +3236,13 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
 
 
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
-          told=None, only=None, outcome: dict | None = None) -> list[Mutant] | None:
+          told=None, only=None, outcome: dict | None = None, constants: frozenset | None = None) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
     the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``; ``only``:
     the slips tried, where not all; where none of a solution region's slips reproduces it (and no earlier tier
     explained the answer), the slips of the code the problem's module gives whole (``_given``); ``outcome``
-    (given) gets ``"timeout"`` where the time ran out on a stage."""
+    (given) gets ``"timeout"`` where the time ran out on a stage; ``constants`` (given): only the slips of these
+    module constants (``(module, name)``) are tried."""
     first = evidences[0]
     made = mutants is None
     judged = len(evidences) > 1 or only is not None  # one input of its own: a slip of precision, judged there
@@ -3211,48 +3253,52 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
         kept, originals, found, progress, rivals, twins, making = None, {}, [], {}, None, (), 0.0
         try:
             root, package = _package()
-            with _Deadline(TIME_BUDGET) as deadline:
-                with deadline.making():
-                    twins, ran = _twins(package, root, problem), None
-                for holder, _ in twins:  # put back by ``_restore`` wherever the time runs out
-                    originals.setdefault(id(holder), (holder, holder.__code__))
-                if twins and mutants is None:  # only the functions that the call runs
-                    ran = _traced(package, root, first.source.probe, first.source.args, twins)
-                    twins = tuple((holder, twin) for holder, twin in twins if holder.__code__ in ran)
-                elif twins:  # the functions of the mutants given
-                    holders = {id(_live(package, m.module, m.path)) for m in mutants}
-                    twins = tuple((holder, twin) for holder, twin in twins if id(holder) in holders)
-                if twins:
-                    holds = _holds(package, twins, evidences)
-                    trace.note("screened", functions=sorted(h.__name__ for h, _ in twins), holds=holds)
-                    twins, ran = (twins, ran) if holds else ((), None)  # traced without them, then
-                if mutants is None:
-                    mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, ran,
-                                         deadline=deadline)
-                    if mutants and only is not None:
-                        mutants = [m for m in mutants if m.slip in only]
-                    making = deadline.spent()[1]
-                    trace.note("mutated", count=None if mutants is None else len(mutants),
-                               functions=sorted({m.function for m in mutants or ()}),
-                               seconds=round(time.thread_time() - started, 3), making=round(making, 3))
-                    if mutants and told is not None:
-                        mutants, rivals = late(mutants, told)
-                        trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
-                if mutants and rivals is None:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins)
-            if made and mutants == []:
-                kept = []  # no function of a region runs: none of their slips reproduces the value
-            if kept and made and told is None and only is None and _opposite(kept) is not None:
-                kept = kept + _heard_in_given(package, root, problem, evidences, originals, judged, twins,
-                                              _opposite(kept))
-            if kept == [] and made and told is None and only is None:
-                kept, mutants = _given(package, root, problem, evidences, originals, judged, progress, twins)
-            if kept == [] and made and told is None and only is None:
-                kept, mutants = _constant_stage(package, root, problem, evidences, originals, judged, progress)
-            if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
-                with _Deadline(LATE_TIME_BUDGET) as deadline:
-                    kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                                     kept=found, progress=progress, twins=twins)
+            if constants is not None:  # the slips of these constants alone (``_drawn_constants``)
+                kept, mutants = _constant_stage(package, root, problem, evidences, originals, judged, progress,
+                                                constants)
+            else:
+                with _Deadline(TIME_BUDGET) as deadline:
+                    with deadline.making():
+                        twins, ran = _twins(package, root, problem), None
+                    for holder, _ in twins:  # put back by ``_restore`` wherever the time runs out
+                        originals.setdefault(id(holder), (holder, holder.__code__))
+                    if twins and mutants is None:  # only the functions that the call runs
+                        ran = _traced(package, root, first.source.probe, first.source.args, twins)
+                        twins = tuple((holder, twin) for holder, twin in twins if holder.__code__ in ran)
+                    elif twins:  # the functions of the mutants given
+                        holders = {id(_live(package, m.module, m.path)) for m in mutants}
+                        twins = tuple((holder, twin) for holder, twin in twins if id(holder) in holders)
+                    if twins:
+                        holds = _holds(package, twins, evidences)
+                        trace.note("screened", functions=sorted(h.__name__ for h, _ in twins), holds=holds)
+                        twins, ran = (twins, ran) if holds else ((), None)  # traced without them, then
+                    if mutants is None:
+                        mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, ran,
+                                             deadline=deadline)
+                        if mutants and only is not None:
+                            mutants = [m for m in mutants if m.slip in only]
+                        making = deadline.spent()[1]
+                        trace.note("mutated", count=None if mutants is None else len(mutants),
+                                   functions=sorted({m.function for m in mutants or ()}),
+                                   seconds=round(time.thread_time() - started, 3), making=round(making, 3))
+                        if mutants and told is not None:
+                            mutants, rivals = late(mutants, told)
+                            trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
+                    if mutants and rivals is None:
+                        kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins)
+                if made and mutants == []:
+                    kept = []  # no function of a region runs: none of their slips reproduces the value
+                if kept and made and told is None and only is None and _opposite(kept) is not None:
+                    kept = kept + _heard_in_given(package, root, problem, evidences, originals, judged, twins,
+                                                  _opposite(kept))
+                if kept == [] and made and told is None and only is None:
+                    kept, mutants = _given(package, root, problem, evidences, originals, judged, progress, twins)
+                if kept == [] and made and told is None and only is None:
+                    kept, mutants = _constant_stage(package, root, problem, evidences, originals, judged, progress)
+                if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
+                    with _Deadline(LATE_TIME_BUDGET) as deadline:
+                        kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
+                                         kept=found, progress=progress, twins=twins)
             if kept:
                 trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
                                                               if any(m is x for x in kept)])

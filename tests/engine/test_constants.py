@@ -15,6 +15,11 @@ a wrong initial state, and its numbers typed otherwise that give the same within
 thousandth of itself) are not told beside it; the near misses, a start at another angle, are no such slip.  Problem
 8's runs read their constants only, and the second input is the same call at another angular velocity
 (``probes._rebound``).
+
+A slip in a constant that the second input draws anew is bound away there (the student's value is the expected
+one): the slips of those constants are judged on the sheet's call alone (``mutants._drawn_constants``): a yaw
+typed in degrees, a roll converted the wrong way, an angular velocity typed short; a yaw at another angle is
+none.
 """
 
 import numpy as np
@@ -128,3 +133,49 @@ def test_the_starts_by_the_course_notation():
     others = ["I_OMEGA", "N_STEPS", "JOINT_1", "T10", "GRAVITY", "DT", "X_END"]
     assert all(mutants._START.match(name) for name in starts)
     assert not any(mutants._START.match(name) for name in others)
+
+
+def drawn_constants_slips(tmp_path, file: str, old: str, new: str, probe: str, args: list, bindings: list,
+                          path: tuple, check: str):
+    """The tier's slips where a planted constant's slip shows on the sheet's call and not at the constants drawn
+    anew: the drawn input binds the constant on both sides, so the student's value is the expected one there."""
+    student = planted_package(tmp_path, file, old, new)
+    try:
+        shown = evidence("_rebound.rebound", (probe, [], args), path, student)
+        drawn = evidence("_rebound.rebound", (probe, bindings, args), path, student)
+        assert not np.allclose(shown.got, shown.expected) and np.allclose(drawn.got, drawn.expected)
+        return mutants.mutant_slips(scene(check), [shown, drawn])
+    finally:
+        drop_private(student)
+
+
+P06_ANGLES = [["problem_06", "GAMMA", 0.41], ["problem_06", "BETA", 0.97], ["problem_06", "ALPHA", 1.32]]
+
+
+def test_a_drawn_constant_typed_otherwise_is_named_on_the_input_shown(tmp_path):
+    """Problem 6's yaw typed in degrees (``GAMMA = 30.0``): right at the angles drawn anew, so the slips of the
+    drawn constants are judged on the sheet's call alone."""
+    found = drawn_constants_slips(tmp_path, "problem_06.py", "GAMMA = np.deg2rad(30.0)", "GAMMA = 30.0",
+                                  "problem_06.frames", [], P06_ANGLES, ("A_IC1",), "p06.frames")
+    assert {h.name for h in found} == {"degrees"}, [(h.name, h.detail) for h in found]
+    assert any("the constant `GAMMA`" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_drawn_constant_at_another_value_is_named_nothing(tmp_path):
+    """The near miss: the yaw at 35 degrees, which no slip of typing gives."""
+    found = drawn_constants_slips(tmp_path, "problem_06.py", "GAMMA = np.deg2rad(30.0)", "GAMMA = np.deg2rad(35.0)",
+                                  "problem_06.frames", [], P06_ANGLES, ("A_IC1",), "p06.frames")
+    assert found == [], [(h.name, h.detail) for h in found]
+
+
+def test_a_drawn_constant_converted_the_wrong_way_and_one_typed_short(tmp_path):
+    """Problem 6's roll converted with rad2deg, and problem 8's angular velocity with sqrt(1/3) typed as 0.577:
+    a conversion the other way, and an expression of numbers typed short (a slip of precision)."""
+    found = drawn_constants_slips(tmp_path, "problem_06.py", "ALPHA = np.deg2rad(60.0)", "ALPHA = np.rad2deg(60.0)",
+                                  "problem_06.frames", [], P06_ANGLES, ("A_IC3",), "p06.frames")
+    assert any("the constant `ALPHA` is converted the wrong way" in h.detail for h in found), \
+        [(h.name, h.detail) for h in found]
+    found = drawn_constants_slips(tmp_path / "p08", "problem_08.py", "I_OMEGA = np.sqrt(1.0 / 3.0) * np.ones(3)",
+                                  "I_OMEGA = 0.577 * np.ones(3)", "problem_08.part", ["a"],
+                                  [["problem_08", "I_OMEGA", [0.4, 0.7, 0.5]]], (), "p08.part_a")
+    assert {h.name for h in found} == {"rounded"}, [(h.name, h.detail) for h in found]

@@ -537,6 +537,14 @@ def oscillation(m, k):
     # END SOLUTION
 
 
+def heading(bearing, distance):
+    """The point ``distance`` away along ``bearing``, an angle given in degrees."""
+    # BEGIN SOLUTION problem 98
+    angle = np.deg2rad(bearing)
+    return distance * np.array([np.cos(angle), np.sin(angle)])
+    # END SOLUTION
+
+
 def R1(a):
     """(given)"""
     return np.array([[1.0, 0.0, 0.0], [0.0, np.cos(a), -np.sin(a)], [0.0, np.sin(a), np.cos(a)]])
@@ -1656,3 +1664,21 @@ def test_a_keyword_argument_left_out_is_a_term_left_out(made_up):
     found = mutants.mutant_slips(scene("p98.spring_force"), made_up_evidences(made_up, "spring_force",
                                                                               lambda x, k, preload: -k * x + k, inputs))
     assert not any("keyword arguments" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_an_angle_converted_the_wrong_way_is_a_slip_of_degrees(made_up):
+    """``np.rad2deg(bearing)`` where ``np.deg2rad`` belongs: the conversion the other way; the near miss, the
+    bearing turned by a right angle before its conversion, is no such slip."""
+    def back(bearing, distance):
+        angle = np.rad2deg(bearing)
+        return distance * np.array([np.cos(angle), np.sin(angle)])
+
+    def turned(bearing, distance):
+        angle = np.deg2rad(bearing + 90.0)
+        return distance * np.array([np.cos(angle), np.sin(angle)])
+
+    names, found = names_of(made_up, "heading", back, [(37.0, 2.0), (-112.0, 0.7)])
+    assert names == {"degrees"}, [(h.name, h.detail) for h in found]
+    assert any("`heading` converts an angle the wrong way" in h.detail for h in found), [h.detail for h in found]
+    names, found = names_of(made_up, "heading", turned, [(37.0, 2.0), (-112.0, 0.7)])
+    assert not any("the wrong way" in h.detail for h in found), [(h.name, h.detail) for h in found]
