@@ -1,13 +1,12 @@
-"""The engine's second input by a problem's constants drawn anew: a function that reads its module's named
-constants (the sheet's angles, lengths, masses, a point's coordinates) rather than taking them as arguments has nothing to draw, so the
-engine runs the same call on the reference and on the student's package with those constants bound to drawn values
-for its duration (``probes._rebound``).  A probe declares the constants its functions read (``rebind``); the values
-are drawn near the sheet's (a factor in ``FACTORS``, away from the special angles), each number its own (each of a
-row's numbers but its zeros).  A student who
-typed the numbers in rather than reading the constants gives the same value there: no slip of a formula reproduces
-that, so nothing is told of it.  The student kit's key holds none of these calls: a call that reads the module's
-constants is one of the sheet's fixed cases, which the key holds at the sheet's digits only, and the engine names
-nothing there (``engine._at_sheet_digits``)."""
+"""The engine's second input by a problem's constants drawn anew: a function that reads its module's named constants
+(the sheet's angles, lengths, masses, a point's coordinates) rather than taking them as arguments has nothing to
+draw, so the engine runs the same call on the reference and on the student's package with those constants bound to
+drawn values for its duration (``probes._rebound``).  A probe declares the constants its functions read
+(``rebind``); the values are drawn near the sheet's (a factor in ``FACTORS``, away from the special angles), each
+number its own (each of a row's numbers but its zeros).  A student who typed the numbers in rather than reading the
+constants gives the same value there: no slip of a formula reproduces that, so nothing is told of it.  The student
+kit's key holds none of these calls: a call that reads the module's constants is one of the sheet's fixed cases,
+which the key holds at the sheet's digits only, and the engine names nothing there (``engine._at_sheet_digits``)."""
 
 from __future__ import annotations
 
