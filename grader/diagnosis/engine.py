@@ -54,13 +54,12 @@ from . import trace
 from .models import model_slips
 from .rebound import REBOUND, rebound_input
 from .mutants import KIT_NOTE, left_to_live, mutant_slips, opposite_slips
-from .scene import Budget, constants_of, MAX_STUDENT_CALLS, Scene
+from .scene import Budget, constants_of, evidence_at, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
 from .runs import (
     aligned_runs,
     START_KEY,
     FIXED_STEPS,
-    INTEGRATION,
     is_run,
     model_evidences,
     parameter_variants,
@@ -250,17 +249,8 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
     if drawn is None:
         return rebound_input(scene, evidence)
     args, expected_root = drawn
-    try:
-        got_root = scene.student(source.probe, args)
-    except StudentFault:
-        trace.note("second", reason="the student's code raised on it")
-        return None
-    expected, got = array_of(at(expected_root, source.path)), array_of(at(got_root, student.path))
-    if expected is None or got is None or got.shape != expected.shape:
-        return None
-    return Evidence(got, expected, evidence.tol, evidence.name, None, None,
-                    Source(source.probe, tuple(args), source.path, expected_root),
-                    Source(source.probe, tuple(args), student.path, got_root))
+    return evidence_at(scene, evidence, Source(source.probe, tuple(args), source.path, expected_root),
+                       (source.probe, tuple(args)), "second")
 
 
 #: the other values of the call shown that a slip of the formula tier must reproduce as well, at most

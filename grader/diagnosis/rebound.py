@@ -14,9 +14,10 @@ import numpy as np
 
 from probes import ProbeLookupError, lookup
 
-from ..errors import GraderFault, StudentFault
+from ..errors import GraderFault
 from . import trace
 from .evidence import array_of, at, distinct, Evidence, Source
+from .scene import evidence_at
 
 __all__ = ["REBOUND", "CONSTANTS", "rebinding", "rebound_input", "rebound_drawn"]
 
@@ -159,16 +160,7 @@ def rebound_input(scene, evidence: Evidence) -> Evidence | None:
     if drawn is None:
         return None
     bindings, expected_root = drawn
-    try:
-        got_root = scene.student(REBOUND, (student_probe, bindings, student_args))
-    except StudentFault:
-        trace.note("rebound", reason="the student's code raised on it")
-        return None
-    expected, got = array_of(at(expected_root, source.path)), array_of(at(got_root, student.path))
-    if expected is None or got is None or got.shape != expected.shape:
-        return None
     trace.note("rebound", bindings=[[name, np.round(value, 6).tolist()] for _, name, value in bindings])
-    return Evidence(got, expected, evidence.tol, evidence.name, None, None,
-                    Source(REBOUND, (probe, bindings, args), source.path, expected_root),
-                    Source(REBOUND, (student_probe, bindings, student_args), student.path, got_root))
+    return evidence_at(scene, evidence, Source(REBOUND, (probe, bindings, args), source.path, expected_root),
+                       (REBOUND, (student_probe, bindings, student_args)), "rebound")
 

@@ -8,8 +8,9 @@ from contextlib import nullcontext
 
 import numpy as np
 
-from ..errors import GraderFault
-from .evidence import array_of, at, call_key, Declaration, part_of, Source
+from ..errors import GraderFault, StudentFault
+from . import trace
+from .evidence import array_of, at, call_key, Declaration, Evidence, part_of, Source
 from .grammar import label_of, leaves_of
 
 __all__ = [
@@ -19,6 +20,7 @@ __all__ = [
     "Budget",
     "Scene",
     "constants_of",
+    "evidence_at",
 ]
 
 
@@ -114,3 +116,23 @@ def constants_of(scene: Scene, decl: Declaration, args: tuple) -> dict:
             if isinstance(item, (int, float)) and not isinstance(item, bool) and np.isfinite(item):
                 found.setdefault(key, float(item))
     return found
+
+
+def evidence_at(scene: Scene, evidence: Evidence, reference: Source, student: tuple, what: str) -> Evidence | None:
+    """The comparison of ``evidence`` at another input: the reference's value there (``reference``, whose root is
+    the reference's answer) and the student's, from the call ``student`` (``(probe, args)``), each at its side's
+    path of ``evidence``; None where the student's code raises on it (traced under ``what``) or the two values do
+    not compare."""
+    probe, args = student
+    try:
+        got_root = scene.student(probe, args)
+    except StudentFault:
+        trace.note(what, reason="the student's code raised on it")
+        return None
+    expected = array_of(at(reference.root, evidence.source.path))
+    got = array_of(at(got_root, evidence.student.path))
+    if expected is None or got is None or got.shape != expected.shape:
+        return None
+    return Evidence(got, expected, evidence.tol, evidence.name, None, None,
+                    Source(reference.probe, tuple(reference.args), evidence.source.path, reference.root),
+                    Source(probe, tuple(args), evidence.student.path, got_root))
