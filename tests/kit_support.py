@@ -355,6 +355,26 @@ def engine_mistakes(path) -> tuple[list, dict[str, str]]:
     return mistakes, {e["name"]: e["family"] for e in entries}
 
 
+def graded_table(path) -> tuple:
+    """What a module that grades one of the engine's tables needs: its mistakes and their families
+    (``engine_mistakes``), a fixture ``slot`` (a warm process of the mistakes' problems, for the module) and the test
+    that each mistake's diagnosis is of its family.  A module binds the fixture as ``slot`` and the test under a
+    name that starts with ``test_``."""
+    from checks._diagnoses import families_of
+
+    mistakes, families = engine_mistakes(path)
+
+    @pytest.fixture(scope="module")
+    def slot():
+        yield from warm_slot(sorted({mistake.problem for mistake in mistakes}))
+
+    def test_the_graded_mistakes_are_of_their_families():
+        for mistake in mistakes:
+            assert families_of(mistake.diagnosis) == (families[mistake.name],), mistake.name
+
+    return mistakes, families, slot, test_the_graded_mistakes_are_of_their_families
+
+
 def assert_no_catalogue_names_it(mistake, submission, zygote, monkeypatch) -> None:
     """With the diagnosis engine off, ``mistake.check`` still fails and names no cause of the mistake's families:
     only the engine names it."""

@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from checks._diagnoses import DIAGNOSES, families_of
+from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
 from grader.diagnosis import engine as explaining
 from grader.diagnosis import mutants
@@ -42,9 +42,8 @@ from ..kit_support import (  # noqa: F401 (fixtures)
     assert_named_failure,
     assert_no_catalogue_names_it,
     assert_same_verdicts,
-    engine_mistakes,
+    graded_table,
     grade_live_and_kit,
-    warm_slot,
 )
 from ..submissions import build_planted
 
@@ -1118,17 +1117,8 @@ def test_two_late_arguments_of_a_call_exchanged_are_tried(made_up):
 # ------------------------------------------------------------------------------------------ graded
 
 
-FORMULAS, FAMILIES = engine_mistakes(ROOT / "tests" / "engine" / "formulas.toml")
-
-
-@pytest.fixture(scope="module")
-def slot():
-    yield from warm_slot(sorted({mistake.problem for mistake in FORMULAS}))
-
-
-def test_the_graded_mistakes_are_of_their_families():
-    for mistake in FORMULAS:
-        assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],), mistake.name
+FORMULAS, _, slot, test_the_graded_mistakes_are_of_their_families = graded_table(
+    ROOT / "tests" / "engine" / "formulas.toml")
 
 
 @pytest.mark.parametrize("mistake", FORMULAS, ids=lambda m: m.name)

@@ -16,7 +16,6 @@ package alike (``probes._rebound``).
 import dataclasses
 import tomllib
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -32,9 +31,8 @@ from ..kit_support import (  # noqa: F401 (fixtures)
     assert_named_failure,
     assert_no_catalogue_names_it,
     assert_same_verdicts,
-    engine_mistakes,
+    graded_table,
     grade_live_and_kit,
-    warm_slot,
 )
 from ..submissions import build_planted
 
@@ -129,18 +127,8 @@ def test_a_value_that_only_scales_with_the_constants_is_no_second_input():
     assert not rebound._scaled(1.3 * shown + np.array([0.0, 0.0, 0.1]), shown, TIGHT)
 
 
-REBOUND, FAMILIES = engine_mistakes(TABLE)
+REBOUND, _, slot, test_the_graded_mistakes_are_of_their_families = graded_table(TABLE)
 NEAR = {e["name"]: (e["near_old"], e["near_new"]) for e in tomllib.loads(TABLE.read_text())["mistake"]}
-
-
-@pytest.fixture(scope="module")
-def slot():
-    yield from warm_slot(sorted({mistake.problem for mistake in REBOUND}))
-
-
-def test_the_graded_mistakes_are_of_their_families():
-    for mistake in REBOUND:
-        assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],), mistake.name
 
 
 @pytest.mark.parametrize("mistake", REBOUND, ids=lambda m: m.name)

@@ -22,7 +22,6 @@ import numpy as np
 import pytest
 
 import grader.diagnosis as engine
-from checks._diagnoses import families_of
 from grader.checking import CheckFailure, Tol, assert_close
 from grader.context import Context, explained
 from grader.diagnosis import scene as scenes
@@ -34,9 +33,8 @@ from ..kit_support import (  # noqa: F401 (fixtures)
     assert_named_failure,
     assert_no_catalogue_names_it,
     assert_same_verdicts,
-    engine_mistakes,
+    graded_table,
     grade_live_and_kit,
-    warm_slot,
 )
 from ..submissions import build_planted
 
@@ -272,17 +270,8 @@ def test_a_repeated_reference_call_is_counted_once(monkeypatch):
 # ------------------------------------------------------------------------------------------ graded
 
 
-DRAWN, FAMILIES = engine_mistakes(ROOT / "tests" / "engine" / "second_inputs.toml")
-
-
-@pytest.fixture(scope="module")
-def slot():
-    yield from warm_slot(sorted({mistake.problem for mistake in DRAWN}))
-
-
-def test_the_graded_mistakes_are_of_their_families():
-    for mistake in DRAWN:
-        assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],), mistake.name
+DRAWN, _, slot, test_the_graded_mistakes_are_of_their_families = graded_table(
+    ROOT / "tests" / "engine" / "second_inputs.toml")
 
 
 @pytest.mark.parametrize("mistake", DRAWN, ids=lambda m: m.name)
