@@ -458,6 +458,7 @@ SLIPS = {
     "entries_rates": ("swapped", "two entries that `{f}` builds are exchanged"),
     "arguments_rates": ("argument_order", "two arguments of a call in `{f}` are exchanged"),
     "blocks": ("argument_order", "two groups of arguments of a call in `{f}` are exchanged"),
+    "unpacked_reversed": ("argument_order", "a call in `{f}` unpacks its arguments in reverse order"),
     "sides": ("transpose", "a product in `{f}` transposes the wrong factor"),
     "trigs": ("sin_cos_swapped", "`{f}` takes sin where cos belongs and cos where sin belongs in one expression"),
     "rows": ("state_row", "`{f}` reads a part of the state from the wrong rows"),
@@ -735,6 +736,8 @@ def _slips(node, parent):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
+    if isinstance(node, ast.Call) and any(isinstance(a, ast.Starred) for a in node.args):  # ``f(*angles[::-1])``
+        yield "unpacked_reversed", _unpacked_reversed
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _BACK:
         yield "converted_back", lambda n: _with(n, func=_with(n.func, attr=_BACK[n.func.attr]))
     if isinstance(node, ast.Assign) and _stored(node):  # ``self.r = r`` as ``self.r = self.r + r``
@@ -1295,6 +1298,18 @@ def _neighbours_exchanged(node: ast.BinOp):
     return node
 
 
+def _unpacked_reversed(node: ast.Call):
+    """``f(*x)`` as ``f(*x[::-1])``: every argument unpacked into the call in reverse order."""
+    reverse = ast.Slice(None, None, ast.Constant(-1))
+    return _with(node, args=[ast.Starred(ast.Subscript(a.value, reverse, ast.Load()), ast.Load())
+                             if isinstance(a, ast.Starred) else a for a in node.args])
+
+
+def _nested_exchanged(node: ast.BinOp):
+    """``A @ (B @ v)`` as ``B @ (A @ v)``: the factor outside the parentheses exchanged with the first inside."""
+    return _with(node, left=node.right.left, right=_with(node.right, left=node.left))
+
+
 def _ends(node: ast.BinOp):
     """The first and the last factor of a product (``J.T`` and ``J`` of ``J.T @ I @ J``), with their holders."""
     return _edge(node, "left"), _edge(node, "right")
@@ -1383,6 +1398,9 @@ def _binop_slips(node: ast.BinOp):
             both = _ROTATION.match(_label(getattr(left, lfield)) or "-") and \
                 _ROTATION.match(_label(getattr(right, rfield)) or "-")
             yield "rotations" if both else "neighbours", _neighbours_exchanged
+        if _chained(node.right) and not _chained(node.left):  # ``A @ (B @ v)`` as ``B @ (A @ v)``
+            both = _ROTATION.match(_label(node.left) or "-") and _ROTATION.match(_label(node.right.left) or "-")
+            yield "rotations" if both else "neighbours", _nested_exchanged
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:

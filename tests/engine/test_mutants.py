@@ -554,6 +554,25 @@ def R3(a):
     return np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0.0, 0.0, 1.0]])
 
 
+def relay(a, b, v):
+    """A vector turned on by ``R1(b)`` and back by ``R3(a)``: ``R3(a).T (R1(b) v)``."""
+    # BEGIN SOLUTION problem 98
+    return R3(a).T @ (R1(b) @ v)
+    # END SOLUTION
+
+
+def zx(a, b):
+    """(given) the rotation ``R3(a) R1(b)``."""
+    return R3(a) @ R1(b)
+
+
+def spun(angles, v):
+    """A vector turned by ``zx`` of the two angles, in their order."""
+    # BEGIN SOLUTION problem 98
+    return zx(*angles) @ v
+    # END SOLUTION
+
+
 def gimbal(a, b, v):
     """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
     # BEGIN SOLUTION problem 98
@@ -1672,3 +1691,39 @@ def test_an_angle_converted_the_wrong_way_is_a_slip_of_degrees(made_up):
     assert any("`heading` converts an angle the wrong way" in h.detail for h in found), [h.detail for h in found]
     names, found = names_of(made_up, "heading", turned, [(37.0, 2.0), (-112.0, 0.7)])
     assert not any("the wrong way" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_two_rotations_exchanged_across_parentheses_are_rotations_in_the_wrong_order(made_up):
+    """``R1(b) (R3(a).T v)`` where ``R3(a).T (R1(b) v)`` belongs: the factor outside the parentheses exchanged with
+    the first inside; the near miss, each rotation also transposed, is none."""
+    P = importlib.import_module(f"{made_up.__name__}.problem_98")
+
+    def exchanged(a, b, v):
+        return P.R1(b) @ (P.R3(a).T @ v)
+
+    def turned(a, b, v):
+        return P.R1(b).T @ (P.R3(a) @ v)
+
+    names, found = names_of(made_up, "relay", exchanged, GIMBALS)
+    assert names == {"rotation_order"}, [(h.name, h.detail) for h in found]
+    names, found = names_of(made_up, "relay", turned, GIMBALS)
+    assert "rotation_order" not in names, [(h.name, h.detail) for h in found]
+
+
+def test_arguments_unpacked_in_reverse_order_are_arguments_in_the_wrong_order(made_up):
+    """``zx(*angles[::-1])`` where ``zx(*angles)`` belongs; the near miss, the first angle read twice, is no
+    reversal."""
+    P = importlib.import_module(f"{made_up.__name__}.problem_98")
+
+    def reversed_(angles, v):
+        return P.zx(*angles[::-1]) @ v
+
+    def twice(angles, v):
+        return P.zx(angles[0], angles[0]) @ v
+
+    inputs = [(V(0.4, -1.1), V(0.3, 0.5, -0.2)), (V(-0.8, 0.6), V(1.0, -0.4, 0.7))]
+    names, found = names_of(made_up, "spun", reversed_, inputs)
+    assert names == {"argument_order"}, [(h.name, h.detail) for h in found]
+    assert any("unpacks its arguments in reverse order" in h.detail for h in found), [h.detail for h in found]
+    names, found = names_of(made_up, "spun", twice, inputs)
+    assert not any("reverse order" in h.detail for h in found), [(h.name, h.detail) for h in found]
