@@ -16,6 +16,7 @@ proof that its integration is at fault, and when the right-hand sides differ the
 from __future__ import annotations
 
 import itertools
+import re
 
 import numpy as np
 
@@ -97,6 +98,9 @@ INTEGRATION = ("step_size", "event_late", "event_early", "energy_drift", "no_eve
 EVENT_AGREES = Tol("event time", 1e-3, 1e-3)
 #: the factors a run's parameter (a mass, an inertia, g) is tried at, and their words
 PARAMETER_FACTORS = ((2.0, "twice"), (0.5, "half"))
+#: a parameter with a sign convention, by its name (the gravity: g = 9.81 or -9.81), tried with its sign turned; a
+#: mass, an inertia or a drag coefficient is a magnitude, which no convention turns
+SIGNED = re.compile(r"^(g|grav\w*)$", re.IGNORECASE)
 #: the tolerances ``(rtol, atol)`` of ``solve_ivp`` (its default method) at which the reference's run is re-run
 #: where the probe takes them (``motion["variants"]``): looser than the defaults (1e-3, 1e-6), which every check's
 #: bands admit
@@ -714,11 +718,11 @@ def parameter_variants(motion: dict, args: tuple, sheet, start=None, parts=None)
     ``motion["parameters"]``, the run's parameters (``sheet``: their values where an argument is not given):
 
     * ``{"arg": index, "names": (...)}``, one argument holding them all: exchanged in pairs, scaled by the
-      ``PARAMETER_FACTORS``, each with its sign turned, and, where the argument is given, each at the sheet's value
-      (that parameter ignored);
+      ``PARAMETER_FACTORS``, one with a sign convention (``SIGNED``: the gravity) with its sign turned, and, where
+      the argument is given, each at the sheet's value (that parameter ignored);
     * ``{"args": (indices), "names": (...)}``, one argument each: exchanged in pairs (any two, where one at least is
-      not given: the grammar's input slips exchange the given ones), each with its sign turned, and each given one
-      at the sheet's value (the argument ignored, the module's constant used instead).
+      not given: the grammar's input slips exchange the given ones), one with a sign convention with its sign
+      turned, and each given one at the sheet's value (the argument ignored, the module's constant used instead).
 
     ``motion["start"]`` (``{"arg": index, "name": ..., "sheet": probe}``), the argument that holds the run's start
     (``start``: the sheet's): the reference's run from the sheet's start where another is given (the argument
@@ -846,7 +850,7 @@ def _vector_variants(spec: dict, args: tuple, sheet) -> list:
             found.append((Hypothesis(f"run:scale:{factor:g}:{i}", "scaled_argument", 2,
                                      f"{name} enters at {words} its value: the reference's run with {name} = "
                                      f"{changed[i]:g} is yours"), run_with(changed)))
-        if values[i] != 0.0:
+        if values[i] != 0.0 and SIGNED.match(name):
             changed = values.copy()
             changed[i] = -values[i]
             found.append((_negated(i, name, changed[i]), run_with(changed)))
@@ -889,14 +893,14 @@ def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
         if given[k] and not np.isclose(values[k], defaults[k], rtol=1e-9, atol=0.0):
             found.append((_sheets_value(f"run:sheet:{k}", name, f"{values[k]:g}", f"{defaults[k]:g}"),
                           run_with({k: float(defaults[k])})))
-        if values[k] != 0.0:
+        if values[k] != 0.0 and SIGNED.match(name):
             found.append((_negated(k, name, -values[k]), run_with({k: -values[k]})))
     return found
 
 
 def _negated(k: int, name: str, value: float) -> Hypothesis:
     """The hypothesis of a run whose parameter ``name`` enters with its sign turned (a signed constant, g = -9.81,
-    passed where its magnitude belongs, or the reverse): the reference's run at ``value``."""
+    passed where its magnitude belongs, or the reverse; ``SIGNED``): the reference's run at ``value``."""
     return Hypothesis(f"run:negated:{k}", "sign_flip", 2, f"{name} enters with its sign turned: the reference's run "
                       f"with {name} = {value:g} is yours")
 
