@@ -2846,7 +2846,7 @@ def _drawn_constants(scene, evidences: list[Evidence]) -> list[Hypothesis]:
     if problem is None or not names:
         return []
     try:
-        kept = _kept(problem, [first], constants=names)
+        kept = [m for m in _kept(problem, [first], constants=names) or () if _precise(m, [first])]
     except GraderFault:
         return []
     trace.note("drawn_constants", constants=sorted(name for _, name in names),
