@@ -738,8 +738,8 @@ def _slips(node, parent):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
     if isinstance(node, ast.Call) and any(isinstance(a, ast.Starred) for a in node.args):  # ``f(*angles[::-1])``
         yield "unpacked_reversed", _unpacked_reversed
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _BACK:
-        yield "converted_back", lambda n: _with(n, func=_with(n.func, attr=_BACK[n.func.attr]))
+    if _conversion(node):
+        yield "converted_back", _converted_back
     if isinstance(node, ast.Assign) and _stored(node):  # ``self.r = r`` as ``self.r = self.r + r``
         yield "kept_adding", lambda n: _with(n, value=ast.BinOp(_loaded(n.targets[0]), ast.Add(), n.value))
     if isinstance(node, ast.Return):
@@ -1296,6 +1296,16 @@ def _neighbours_exchanged(node: ast.BinOp):
     setattr(left, lfield, b)
     setattr(right, rfield, a)
     return node
+
+
+def _conversion(node) -> bool:
+    """A conversion of an angle by numpy's name for it (``np.deg2rad(x)``, ``np.degrees(x)``: ``_BACK``)."""
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _BACK
+
+
+def _converted_back(node: ast.Call):
+    """The conversion the other way: ``np.rad2deg(x)`` for ``np.deg2rad(x)``."""
+    return _with(node, func=_with(node.func, attr=_BACK[node.func.attr]))
 
 
 def _unpacked_reversed(node: ast.Call):
@@ -3127,8 +3137,8 @@ def _number_slips(expression):
     in it that is not one number (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
     parents = {id(child): node for node in ast.walk(expression) for child in ast.iter_child_nodes(node)}
     for index, node in enumerate(ast.walk(expression)):
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in _BACK:
-            yield "constant_converted_back", index, _with(node, func=_with(node.func, attr=_BACK[node.func.attr]))
+        if _conversion(node):
+            yield "constant_converted_back", index, _converted_back(node)
         if _constant_expression(node) and not _pi(node) and not _constant_expression(parents.get(id(node))):
             for decimals in TYPED_DECIMALS:
                 yield "constant_typed", index, _float_round(node, decimals)
