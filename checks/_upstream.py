@@ -12,6 +12,11 @@ forward only where the student's values are real (``flaw``, the rule of ``checks
 that returns zeros, a constant, NaN, a matrix that is not orthonormal or the identity where the reference's turns
 gives nothing to carry.
 
+Within a problem it is the same: problem 8's Cardan step and its part (b) use the student's own
+``cardan_rate_matrix``, which ``p08.rate_matrix`` grades, and are judged on it.  A shared function is never
+carried into the check that grades it (``p08.exponential_step`` compares the student's step, built on their
+``expm_skew``, with the reference's).
+
 ``SHARED`` lists the shared functions (``"module.function"``), with the problem that owns each (its solution
 region) and the check that grades it; a test holds it to the reference's regions.  The student kit cannot compose
 the reference's code with the student's functions: where they differ it leaves the check to the graded

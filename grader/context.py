@@ -236,7 +236,7 @@ class Context:
         probe = _probe_name(probe)
         key = call_key(probe, args)
         if self.oracle.mode == "record":
-            self.oracle.record_upstream(key, self._hybrid_for(shared, flaw).calls_of(probe, args))
+            self.oracle.record_upstream(key, self._hybrid_for(shared, flaw).calls_of(probe, args, self.check_id))
         return Judged(self, probe, tuple(args), key, shared, flaw)
 
     def _hybrid_for(self, shared, flaw):
@@ -507,7 +507,7 @@ class Judged:
 
         ctx = self._ctx
         if ctx.oracle.composes:
-            found = ctx._hybrid_for(self._shared, self._flaw).run(self._probe, self._args)
+            found = ctx._hybrid_for(self._shared, self._flaw).run(self._probe, self._args, ctx.check_id)
             return found if found.differing else None
         differing: dict[int, UpstreamCall] = {}
         for index, (function, args, parent) in enumerate(ctx.oracle.upstream_calls(self._key)):

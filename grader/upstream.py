@@ -1,5 +1,5 @@
 """Error carried forward across problems: the reference's logic of a later problem applied to the student's own
-functions of earlier problems.
+functions of earlier problems (and, within a problem, to its own functions that another of its checks grades).
 
 One mistake costs its points once, where it is checked.  A student whose ``R3`` is transposed fails problem 6's
 check of ``R3``; problem 8's steps and runs use their ``R3`` too, so their values differ from the reference's even
@@ -110,7 +110,9 @@ _NUMBERS = itertools.count()
 
 
 class Hybrid:
-    """The reference package with the student's own shared functions of problems before ``problem``.
+    """The reference package with the student's own shared functions of problems before ``problem``, and, for a
+    check of ``problem``, those of ``problem`` itself that other checks grade (problem 8's runs on the student's own
+    ``cardan_rate_matrix``, which ``p08.rate_matrix`` grades): never the function that the check itself grades.
 
     ``student(probe, *args)`` and ``reference(probe, *args)`` are the grading context's doors; ``shared`` maps
     ``"module.function"`` to ``(the problem that owns it, the check that grades it)``; ``flaw(mine, reference)``
@@ -121,8 +123,10 @@ class Hybrid:
     def __init__(self, problem: int, shared: dict, student, reference, flaw):
         self.root = reference_root("error carried forward across problems")
         self.problem = problem
-        self.forwarded = {name for name, (owner, _) in shared.items() if owner < problem}
-        self._callees = {name.rpartition(".")[2] for name in self.forwarded}
+        self._shared = shared
+        self.forwarded: set[str] = set()
+        self._callees: set[str] = set()
+        self._for_check(None)
         self._student = student
         self._reference = reference
         self._flaw = flaw
@@ -131,6 +135,14 @@ class Hybrid:
         self._differences = 0  # values handed to the reference's code that differ from the reference's
         self._parent = -1  # the call whose reference code runs now (see ``_explained``)
         self._explore = False  # while a key is recorded: every forwarded call's own code is run too
+
+    def _for_check(self, check: str | None) -> None:
+        """Forward the shared functions of earlier problems, and those of this problem that a check other than
+        ``check`` grades: a mistake in one of them costs the points of its own check, once."""
+        self.forwarded = {name for name, (owner, grading) in self._shared.items()
+                          if owner < self.problem or (owner == self.problem and check is not None
+                                                      and grading != check)}
+        self._callees = {name.rpartition(".")[2] for name in self.forwarded}
 
     # -------------------------------------------------------------- the package
 
@@ -223,11 +235,12 @@ class Hybrid:
 
     # -------------------------------------------------------------- running
 
-    def _run(self, probe: str, args: tuple):
-        """``(value or None, flaw, calls)`` of ``probe(*args)`` on a fresh hybrid package."""
+    def _run(self, probe: str, args: tuple, check: str | None = None):
+        """``(value or None, flaw, calls)`` of ``probe(*args)`` on a fresh hybrid package, for the check ``check``."""
         from probes._codec import decode, encode
 
         func = _probe_function(probe)
+        self._for_check(check)
         self._calls, self._memo, self._differences, self._parent = [], {}, 0, -1
         package = None
         try:
@@ -245,17 +258,17 @@ class Hybrid:
         calls, self._calls, self._memo = self._calls, [], {}
         return value, flaw, calls
 
-    def run(self, probe: str, args: tuple) -> Upstream:
-        """``probe(*args)`` on the hybrid package: its value, the student's calls that differ from the reference's
-        (the first per function) and the flaw that stopped it."""
-        value, flaw, calls = self._run(probe, args)
+    def run(self, probe: str, args: tuple, check: str | None = None) -> Upstream:
+        """``probe(*args)`` on the hybrid package, for the check ``check``: its value, the student's calls that
+        differ from the reference's (the first per function) and the flaw that stopped it."""
+        value, flaw, calls = self._run(probe, args, check)
         first: dict[str, UpstreamCall] = {}
         for call in calls:
             if not call.explained and (call.error or not same(call.mine, call.reference)):
                 first.setdefault(call.function, call)
         return Upstream(value, tuple(first.values()), flaw)
 
-    def calls_of(self, probe: str, args: tuple) -> list[tuple[str, tuple, int]]:
+    def calls_of(self, probe: str, args: tuple, check: str | None = None) -> list[tuple[str, tuple, int]]:
         """The forwarded calls ``(function, arguments, parent)`` that ``probe(*args)`` makes on the hybrid package,
         in order, each once, and within each the calls its own reference code makes of the shared functions
         (``parent``: the index of the call they belong to, -1 for the probe's own): what the student kit's key
@@ -263,7 +276,7 @@ class Hybrid:
         others."""
         self._explore = True
         try:
-            calls = self._run(probe, args)[2]
+            calls = self._run(probe, args, check)[2]
         finally:
             self._explore = False
         return [(call.function, call.args, call.parent) for call in calls]

@@ -155,8 +155,9 @@ def public_verdicts(report) -> dict:
 #: how the kit begins the message of a check it leaves to the graded submission because the check is judged on the
 #: student's own functions of earlier problems, which differ from the reference's (``grader.upstream``)
 JUDGED_ON_SUBMISSION = re.compile(r"^judged on your own .* when you submit")
-#: how a message names another problem's check
-CHECK_NAMED = re.compile(r"problem \d+'s check “[^”]*”")
+#: how a message names the check of another problem (``problem 6's check “…”``) or of its own problem (``see “…”``,
+#: a passing check's pointer at the failing check of the same problem that finds the mistake): the check's title
+CHECK_NAMED = re.compile(r"(?:problem \d+'s check|see) (“[^”]*”)")
 
 
 def judged_on_submission(result) -> bool:

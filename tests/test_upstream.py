@@ -115,6 +115,41 @@ def test_a_later_mistake_of_its_own_is_judged_on_the_students_R3(tmp_path):
     assert by_id["p08.part_b"].status is Status.PASSED and ROOT_TITLE in by_id["p08.part_b"].hint
 
 
+#: where problem 8's check of its rate matrix is named, within problem 8's own report
+RATE_MATRIX_TITLE = "see “cardan_rate_matrix(alpha, beta, gamma) gives C_omega = B @ (alpha_dot, beta_dot, gamma_dot)”"
+
+
+def test_a_wrong_rate_matrix_costs_its_own_check_only_within_its_problem(tmp_path):
+    """One mistake counts once within a problem too: problem 8's Cardan step and its part (b) use the student's own
+    cardan_rate_matrix, which problem 8's check of it grades; they are judged on it, keep their points and point at
+    that check, whose hint lists them (they had each cost their points as well)."""
+    report = grade_submission(build_planted(_planted("p08-rate-matrix-transposed"), tmp_path / "pkg"), [8],
+                              seed=SEED)[0]
+    by_id = {r.check_id: r for r in report.results}
+    assert {r.check_id for r in report.results if not r.passed} == {"p08.rate_matrix"}, \
+        [(r.check_id, r.message[:300]) for r in report.results if not r.passed]
+    assert by_id["p08.rate_matrix"].diagnosis == "transpose"
+    for check_id in ("p08.cardan_step", "p08.part_b"):
+        hint = by_id[check_id].hint
+        assert "Judged on your own cardan_rate_matrix (error carried forward: full credit)" in hint, hint
+        assert RATE_MATRIX_TITLE in hint, hint
+    root = by_id["p08.rate_matrix"].hint
+    assert "Later checks use your cardan_rate_matrix" in root and by_id["p08.part_b"].title in root, root
+
+
+def test_a_shared_function_is_never_carried_into_the_check_that_grades_it(tmp_path):
+    """Problem 8's exponential step is graded on random inputs through the reference's step, which calls the
+    student's expm_skew: that check grades expm_skew itself, so it is judged against the reference and fails, where
+    carrying the student's expm_skew into it would have passed it and left the mistake costing nothing."""
+    sign = ("rotations.py", "return np.eye(3) + np.sin(angle) / angle * W + (1.0 - np.cos(angle)) / angle**2 * (W @ W)",
+            "return np.eye(3) - np.sin(angle) / angle * W + (1.0 - np.cos(angle)) / angle**2 * (W @ W)")
+    report = grade_submission(_with(tmp_path, [sign]), [8], seed=SEED)[0]
+    by_id = {r.check_id: r for r in report.results}
+    assert by_id["p08.exponential_step"].status is Status.FAILED, by_id["p08.exponential_step"].hint
+    assert "Judged on your own" not in by_id["p08.exponential_step"].hint
+    assert report.score < report.auto_max_score
+
+
 def test_nothing_is_carried_on_an_R3_that_does_nothing(tmp_path):
     """An R3 of zeros is not a real result: problem 8's checks built on it fail against the reference, saying that
     nothing is carried forward on it."""
