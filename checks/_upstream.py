@@ -27,12 +27,13 @@ import numpy as np
 
 from grader.checking import CheckFailure, Tol, assert_close, close, is_rotation
 from grader.problems import check_title
+from grader.upstream import COULD_NOT_USE
 
 from ._real import flaw as real_flaw
 from ._real import rotation_flaw
 
 __all__ = ["SHARED", "flaw", "judged", "assert_close_judged", "judged_comparison", "judging", "judge_failure",
-           "held", "carried_note"]
+           "held", "carried_note", "carried_raise"]
 
 #: "module.function" -> (the problem whose solution region it is, the check that grades it)
 SHARED = {
@@ -62,16 +63,23 @@ def _numeric(value):
     return array
 
 
-def flaw(mine, reference) -> str:
+#: the shared functions whose values are rotations, judged as rotations by ``flaw``: another function's value that is
+#: a rotation on some input (problem 8's rate matrix at zero angles is the identity) is judged as any value
+ROTATION_VALUED = frozenset({"rotations.R1", "rotations.R2", "rotations.R3", "rotations.cardan",
+                             "rotations.expm_skew"})
+
+
+def flaw(mine, reference, function: str | None = None) -> str:
     """Why the student's value ``mine`` of a shared function is not a real result to carry forward, judged against
     the reference's value of the same call ("" when it is real), by the one rule of ``checks._real``: not numeric
     where the reference's is, another shape, NaN or infinite, all zeros or one constant where the reference's is
-    not; where the reference's is a rotation, not orthonormal or the identity.  Lists and dicts are judged entry by
-    entry."""
+    not; where the reference's is a rotation, not orthonormal or the identity (for ``function``, the shared
+    function called, only where it is one of ``ROTATION_VALUED``).  Lists and dicts are judged entry by entry."""
     if isinstance(reference, dict):
         if not isinstance(mine, dict) or mine.keys() != reference.keys():
             return "does not have the reference's entries"
-        return next((f"[{k!r}] {found}" for k in reference if (found := flaw(mine[k], reference[k]))), "")
+        return next((f"[{k!r}] {found}" for k in reference if (found := flaw(mine[k], reference[k], function))),
+                    "")
     if isinstance(reference, (str, bool)) or reference is None:
         return ""
     theirs = _numeric(reference)
@@ -79,15 +87,15 @@ def flaw(mine, reference) -> str:
         if isinstance(reference, (list, tuple)) and isinstance(mine, (list, tuple)):
             if len(mine) != len(reference):
                 return f"has {len(mine)} entries, not {len(reference)}"
-            return next((f"[{i}] {found}" for i, (a, b) in enumerate(zip(mine, reference)) if (found := flaw(a, b))),
-                        "")
+            return next((f"[{i}] {found}" for i, (a, b) in enumerate(zip(mine, reference))
+                         if (found := flaw(a, b, function))), "")
         return ""
     if mine is None:
         return "is None"
     ours = _numeric(mine)
     if ours is None or ours.dtype == object:
         return "is not numeric"
-    if is_rotation(theirs):
+    if is_rotation(theirs) and (function is None or function in ROTATION_VALUED):
         return rotation_flaw(ours, theirs)
     return real_flaw(ours, reference=theirs)
 
@@ -165,7 +173,23 @@ def judged_comparison(ctx, probe: str, name: str, tol: Tol, mistakes=None, pick=
         found = list(mistakes(args, expected)) if mistakes else ()
         assert_close_judged(ctx, got, expected, judged_value, name, tol, found, pick, normalize=normalize)
 
+    compare.carried_error = lambda error, args: carried_raise(ctx, judged(ctx, probe, *args), error)
     return compare
+
+
+def carried_raise(ctx, judged_value, error) -> bool:
+    """Whether the student's code raised ``error`` (a ``StudentCodeError``) where the reference's code, on the
+    student's own shared functions (``judged_value``, from ``judged``), raises the same: a singular rate matrix of
+    theirs makes a step of theirs and the reference's fail alike.  Then the error is carried forward, as a value
+    would be (True: the check passes there, pointing at the check that finds the mistake)."""
+    found = judged_value.result()
+    if found is None or found.value is not None \
+            or not found.flaw.startswith(f"{COULD_NOT_USE} ({error.type_name}:"):
+        return False
+    for function in found.functions:
+        if function in SHARED:
+            ctx.carry_forward(SHARED[function][1], _names(found))
+    return True
 
 
 def judge_failure(ctx, failure: CheckFailure, judged_value, rejudge):

@@ -287,7 +287,10 @@ class Context:
         (minimal, or the simplest of the kit's pool) and the seed, and a known mistake that matches there and on a
         second failing input.  ``mistakes(args, expected)`` lists known mistakes for the diagnosis; ``compare(got,
         expected, args)`` replaces the default entrywise comparison.  Both may reach the reference through
-        ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer."""
+        ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer.  Where the
+        student's code raises, ``compare.carried_error(exc, args)`` (if ``compare`` has it) may take the error as
+        carried forward (True: the input passes), as ``checks._upstream.judged_comparison`` does where the
+        reference's code raises alike on the student's own shared functions."""
         probe = _probe_name(probe)
 
         def evaluate(args):
@@ -295,7 +298,13 @@ class Context:
                 got = self.student_later(probe, *args)  # the reference and the catalogue meanwhile
                 expected = self.reference(probe, *args)
                 found = mistakes(args, expected) if mistakes and compare is None else ()
-                got = got()
+                try:
+                    got = got()
+                except StudentCodeError as exc:  # raised where the reference's code on their own functions does
+                    carried = getattr(compare, "carried_error", None)
+                    if carried is None or ends_grading(exc) or not carried(exc, args):
+                        raise
+                    return
                 if compare is None:
                     assert_close(got, expected, name, tol, found)
                     return
@@ -521,7 +530,7 @@ class Judged:
             if same(mine, theirs):
                 continue
             call = UpstreamCall(function, args, mine, theirs, parent=parent)
-            flaw = self._flaw(mine, theirs)
+            flaw = self._flaw(mine, theirs, function)
             if flaw:
                 return Upstream(None, (call,), f"your {call.shown()} {flaw}")
             differing[index] = call

@@ -104,6 +104,8 @@ class _Stop(Exception):
 
 
 _NUMBERS = itertools.count()
+#: how the flaw of a run begins where the reference's code raised on the student's values
+COULD_NOT_USE = "the reference's code could not use your values"
 
 
 # ---------------------------------------------------------------------------------------------- the hybrid
@@ -208,7 +210,7 @@ class Hybrid:
             if self._explore:
                 self._explained(real, args, mine, len(self._calls) - 1)
             return theirs, 0
-        flaw = self._flaw(mine, theirs)
+        flaw = self._flaw(mine, theirs, function)
         if flaw:
             raise _Stop(f"your {call.shown()} {flaw}")
         index = len(self._calls) - 1
@@ -251,7 +253,7 @@ class Hybrid:
         except (StudentFault, GraderFault):
             raise
         except Exception as exc:  # noqa: BLE001 - the reference's code could not use the student's values
-            value, flaw = None, f"the reference's code could not use your values ({type(exc).__name__}: {exc})"
+            value, flaw = None, f"{COULD_NOT_USE} ({type(exc).__name__}: {exc})"
         finally:
             if package is not None:
                 self._drop(package)

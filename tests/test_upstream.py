@@ -12,6 +12,7 @@ from __future__ import annotations
 import ast
 import re
 
+import numpy as np
 import pytest
 
 from checks._upstream import SHARED, flaw
@@ -135,6 +136,30 @@ def test_a_wrong_rate_matrix_costs_its_own_check_only_within_its_problem(tmp_pat
         assert RATE_MATRIX_TITLE in hint, hint
     root = by_id["p08.rate_matrix"].hint
     assert "Later checks use your cardan_rate_matrix" in root and by_id["p08.part_b"].title in root, root
+
+
+def test_an_error_the_students_own_rate_matrix_makes_the_reference_raise_too_is_carried(tmp_path):
+    """A rate matrix with its cos(alpha) left out is singular at alpha = 0: the student's Cardan step raises there,
+    and so does the reference's step on their rate matrix.  The error is carried forward as a value would be: the
+    step and part (b) keep their points, and only the rate matrix's check costs (they had erred, each costing its
+    points).  The reference's rate matrix is the identity at zero angles; the student's is judged there as any
+    value, not as a rotation (``ROTATION_VALUED``)."""
+    singular = ("rotations.py", "[0.0, ca, cb * sa]", "[0.0, 0.0, cb * sa]")
+    report = grade_submission(_with(tmp_path, [singular]), [8], seed=SEED)[0]
+    by_id = {r.check_id: r for r in report.results}
+    assert {r.check_id for r in report.results if not r.passed} == {"p08.rate_matrix"}, \
+        [(r.check_id, r.message[:300]) for r in report.results if not r.passed]
+    for check_id in ("p08.cardan_step", "p08.part_b"):
+        assert RATE_MATRIX_TITLE in by_id[check_id].hint, by_id[check_id].hint
+
+
+def test_only_the_rotations_are_judged_as_rotations():
+    """A value equal to the identity in the reference (problem 8's rate matrix at zero angles) is a rotation to be
+    judged as one only where the function returns rotations."""
+    mine, identity = np.diag([1.0, 0.0, 1.0]) + np.eye(3) * 0.1, np.eye(3)
+    assert "not orthonormal" in flaw(mine, identity, "rotations.R3")
+    assert "not orthonormal" in flaw(mine, identity)
+    assert flaw(mine, identity, "rotations.cardan_rate_matrix") == ""
 
 
 def test_a_shared_function_is_never_carried_into_the_check_that_grades_it(tmp_path):
