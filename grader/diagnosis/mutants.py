@@ -20,15 +20,15 @@ where
 nothing else reproduced it, the module constants that the call reads, of the problem's own module and of the library
 (the modules of no problem), directly, through a function's default or a constant computed from them, are typed
 otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
-or a tenth or a thousandth of itself (a decimal point misplaced, another unit), in degrees where radians belong or
-the reverse, its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
+or a tenth or a thousandth of itself (a decimal point misplaced, another unit), in degrees where radians belong
+(exactly, or rounded as a student types the degrees read off it: 0.35 as 20) or the reverse, its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
 matrix written out row by row transposed; two
 constants of one module exchanged), each measured with the constants, defaults and imported names its module
 computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor missing (a
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
-entries exchanged, a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
+entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: alpha}``), a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
 (in one call, throughout one expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where
 ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by
 row, transposed), a neighbouring index, two names exchanged (throughout, or two of a kind in one expression), a solve or
@@ -732,6 +732,9 @@ def _slips(node, parent):
             yield "interleaved", _interleaved
         if isinstance(node.ctx, ast.Load) and _written_out(node):  # ``[[c, s], [-s, c]]`` for [[c, -s], [s, c]]
             yield "transpose", _literal_transposed
+    elif isinstance(node, ast.Dict) and 2 <= len(node.values) <= 6 and None not in node.keys:
+        for i, j in _pairs(len(node.values)):  # ``{a: alpha, b: beta}`` as ``{a: beta, b: alpha}``: keys kept
+            yield "entries", lambda n, i=i, j=j: _exchanged(n, "values", i, j)
     elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load):
         yield from _index_slips(node)
         if _state_read(node) and _half(node.slice):
@@ -3130,6 +3133,21 @@ def _value_of(expression, module):
 _BACK = {"deg2rad": "rad2deg", "rad2deg": "deg2rad", "radians": "degrees", "degrees": "radians"}
 
 
+#: the decimals an angle in degrees is typed to, where it is typed rounded (0.35 rad as 20 or 20.1 degrees)
+DEGREES_DECIMALS = (0, 1)
+
+
+def _degrees_typed(degrees: float) -> list:
+    """An angle in degrees as it is typed rounded (``DEGREES_DECIMALS``), each value once, none that is the angle
+    itself or zero."""
+    typed = []
+    for decimals in DEGREES_DECIMALS:
+        value = float(round(degrees, decimals))
+        if value != 0 and value != degrees and value not in typed:
+            typed.append(value)
+    return typed
+
+
 def _number_slips(expression):
     """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``), each entry of
     a list or tuple of it written 0, each two entries of one exchanged, a matrix of it written out row by row
@@ -3149,6 +3167,9 @@ def _number_slips(expression):
                 value = number * factor if factor is not None else (
                     np.sqrt(abs(number)) if slip == "constant_root" else number * number)
                 yield slip, index, ast.Constant(float(value))
+                if slip == "constant_degrees":  # 0.35 rad typed as the degrees a student reads off it: 20
+                    for typed in _degrees_typed(value):
+                        yield slip, index, ast.Constant(typed)
     for index, node in enumerate(ast.walk(expression)):
         if isinstance(node, (ast.List, ast.Tuple)) and 1 < len(node.elts) <= _TABLE:
             for k, entry in enumerate(node.elts):

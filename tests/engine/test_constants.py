@@ -179,3 +179,23 @@ def test_a_drawn_constant_converted_the_wrong_way_and_one_typed_short(tmp_path):
                                   "I_OMEGA = 0.577 * np.ones(3)", "problem_08.part", ["a"],
                                   [["problem_08", "I_OMEGA", [0.4, 0.7, 0.5]]], (), "p08.part_a")
     assert {h.name for h in found} == {"rounded"}, [(h.name, h.detail) for h in found]
+
+
+#: problem 34's constants of the gait drawn anew
+P34_GAIT = [["problem_34", "PITCH", 0.05], ["problem_34", "HIP_AMPLITUDE", 0.3]]
+
+
+def test_a_drawn_angle_typed_as_the_degrees_read_off_it_is_a_slip_of_degrees(tmp_path):
+    """Problem 34's pitch of 0.03 rad typed as 1.7, the degrees a student reads off it to one decimal: the constant
+    in degrees, rounded as typed."""
+    found = drawn_constants_slips(tmp_path, "problem_34.py", "PITCH = 0.03", "PITCH = 1.7", "problem_34.biped",
+                                  [0.37], P34_GAIT, ("outline",), "p34.biped")
+    assert {h.name for h in found} == {"degrees"}, [(h.name, h.detail) for h in found]
+    assert any("the constant `PITCH`" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_drawn_angle_near_its_degrees_but_no_rounding_of_them_is_named_nothing(tmp_path):
+    """The near miss: the pitch typed as 1.9, which no rounding of its 1.72 degrees gives."""
+    found = drawn_constants_slips(tmp_path, "problem_34.py", "PITCH = 0.03", "PITCH = 1.9", "problem_34.biped",
+                                  [0.37], P34_GAIT, ("outline",), "p34.biped")
+    assert "degrees" not in {h.name for h in found}, [(h.name, h.detail) for h in found]

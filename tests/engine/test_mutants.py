@@ -573,6 +573,14 @@ def spun(angles, v):
     # END SOLUTION
 
 
+def lever(x, y):
+    """A load's moment about a pivot, its arm and its weight given by name: ``3 arm - weight``."""
+    # BEGIN SOLUTION problem 98
+    named = {"arm": 2.0 * x, "weight": y + 1.0}
+    return 3.0 * named["arm"] - named["weight"]
+    # END SOLUTION
+
+
 def gimbal(a, b, v):
     """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
     # BEGIN SOLUTION problem 98
@@ -1727,3 +1735,21 @@ def test_arguments_unpacked_in_reverse_order_are_arguments_in_the_wrong_order(ma
     assert any("unpacks its arguments in reverse order" in h.detail for h in found), [h.detail for h in found]
     names, found = names_of(made_up, "spun", twice, inputs)
     assert not any("reverse order" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_two_values_of_a_dict_exchanged_are_two_entries_exchanged(made_up):
+    """``{"arm": y + 1, "weight": 2 x}`` where ``{"arm": 2 x, "weight": y + 1}`` belongs (a substitution or a table
+    of named values built with two values in each other's places); the near miss, the arm's factor 3 written 2, is
+    no exchange."""
+    def exchanged(x, y):
+        return 3.0 * (y + 1.0) - 2.0 * x
+
+    def factor(x, y):
+        return 2.0 * (2.0 * x) - (y + 1.0)
+
+    inputs = [(0.7, -1.3), (2.1, 0.4)]
+    names, found = names_of(made_up, "lever", exchanged, inputs)
+    assert "swapped" in names, [(h.name, h.detail) for h in found]
+    assert any("two entries that `lever` builds are exchanged" in h.detail for h in found), [h.detail for h in found]
+    names, found = names_of(made_up, "lever", factor, inputs)
+    assert "swapped" not in names, [(h.name, h.detail) for h in found]
