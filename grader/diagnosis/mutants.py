@@ -21,14 +21,18 @@ nothing else reproduced it, the module constants that the call reads, of the pro
 (the modules of no problem), directly, through a function's default or a constant computed from them, are typed
 otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
 or a tenth or a thousandth of itself (a decimal point misplaced, another unit), in degrees where radians belong
-(exactly, or rounded as a student types the degrees read off it: 0.35 as 20) or the reverse, its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
+(exactly, or rounded as a student types the degrees read off it: 0.35 as 20) or the reverse, an expression
+in it with its minus left out or given one (``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
 matrix written out row by row transposed; two
 constants of one module exchanged), each measured with the constants, defaults and imported names its module
 computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor missing (a
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
-entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: alpha}``), a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
+entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: alpha}``), the arguments a call is
+to hand on (``*args``, ``**kwargs``) left out, a default taken whatever the argument (``np.eye(3) if I is None else
+I`` as ``np.eye(3)``), an angle the function binds itself (``x, z, phi = y``) read in degrees throughout, a number
+doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
 (in one call, throughout one expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where
 ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by
 row, transposed), a neighbouring index, two names exchanged (throughout, or two of a kind in one expression), a solve or
@@ -541,6 +545,8 @@ SLIPS = {
     "start_zeros": ("initial_state", "the start `{f}` is written as zeros: the run starts from another state"),
     "start_identity": ("initial_state", "the start `{f}` is written as the identity: the run starts from another "
                                         "orientation"),
+    "handed_on": ("ignored_argument", "a call in `{f}` leaves out the arguments it is to hand on (``*args``, "
+                  "``**kwargs``), so that the callee uses its defaults: those arguments are ignored"),
     "keyword": ("missing_term", "a call in `{f}` leaves out one of its keyword arguments, so that the callee's "
                                 "default is used"),
     "keyword_point": ("offset", "a call in `{f}` leaves out a point's position among its keyword arguments, so that "
@@ -832,6 +838,19 @@ def _keyword_slips(node, keywords: frozenset):
             if keyword.arg is not None and (callee, keyword.arg) in keywords:
                 yield "keyword_point" if _POSITION.match(keyword.arg) else "keyword", \
                     lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
+            if keyword.arg is None:  # ``super().__init__()`` for ``super().__init__(**kinematics)``
+                yield "handed_on", lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
+        for k, argument in enumerate(node.args):
+            if isinstance(argument, ast.Starred):
+                yield "handed_on", lambda n, k=k: _with(n, args=n.args[:k] + n.args[k + 1:])
+    if isinstance(node, ast.IfExp) and _none_test(node.test):  # ``eye(3) if I is None else I`` as ``eye(3)``
+        yield "default", lambda n: n.body if isinstance(n.test.ops[0], ast.Is) else n.orelse
+
+
+def _none_test(test) -> bool:
+    """``x is None`` or ``x is not None`` (the test of an argument left at its default)."""
+    return isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(test.ops[0], (ast.Is, ast.IsNot)) \
+        and isinstance(test.comparators[0], ast.Constant) and test.comparators[0].value is None
 
 
 #: a matrix in the coordinates of one frame by the course's notation (``B_I_B``, ``K_I_K``): the frame on both sides
@@ -891,16 +910,22 @@ class _Turned(ast.NodeTransformer):
 CONVERSIONS = (("converted_radians", np.pi / 180.0), ("converted_rpm", np.pi / 30.0))
 
 
-def _conversion_slips(function: ast.FunctionDef, lines: tuple):
+def _conversion_slips(function: ast.FunctionDef, lines: tuple, angles: frozenset = frozenset()):
     """Every read of one of the function's arguments in the region multiplied by the factor of a conversion of
     units (``CONVERSIONS``): an argument converted that already is in the unit the function computes in (``omega *
-    np.pi / 30`` of a rate given in rad/s), or converted the wrong way."""
+    np.pi / 30`` of a rate given in rad/s), or converted the wrong way; and every read of a name the function binds
+    itself and reads as an angle (``angles``: ``phi`` of ``x, z, phi = y`` and ``np.cos(phi)``) converted from
+    degrees, as where each of its sines and cosines is taken of it in degrees."""
     used = {node.id for node in ast.walk(function) if isinstance(node, ast.Name) and _in(node, lines)}
-    for a in function.args.posonlyargs + function.args.args + function.args.kwonlyargs:
-        if a.arg in used and a.arg not in ("self", "cls"):
+    parameters = [a.arg for a in function.args.posonlyargs + function.args.args + function.args.kwonlyargs]
+    for name in parameters:
+        if name in used and name not in ("self", "cls"):
             for slip, factor in CONVERSIONS:
-                yield slip, ("read_as", a.arg, ast.BinOp(ast.Name(a.arg, ast.Load()), ast.Mult(),
-                                                         ast.Constant(factor)))
+                yield slip, ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(),
+                                                        ast.Constant(factor)))
+    slip, factor = CONVERSIONS[0]
+    for name in sorted(angles & used - set(parameters)):
+        yield slip, ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(), ast.Constant(factor)))
 
 
 #: the marks of a rate in the course's notation: ``qd`` of ``q``, ``qdd`` of ``qd``, ``omegaDot`` of ``omega``,
@@ -1780,7 +1805,7 @@ def _mutated(function: _Function, lines: tuple):
         [(None, function.node, None, False, False, CONVERSIONS)]
     for index, node, parent, guarded, indexing, late_pass in places:
         if index is None:
-            slips = _conversion_slips(function.node, lines) if late_pass is CONVERSIONS else \
+            slips = _conversion_slips(function.node, lines, angles) if late_pass is CONVERSIONS else \
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
             slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums),
@@ -3170,8 +3195,15 @@ def _number_slips(expression):
                 if slip == "constant_degrees":  # 0.35 rad typed as the degrees a student reads off it: 20
                     for typed in _degrees_typed(value):
                         yield slip, index, ast.Constant(typed)
+    for index, node in enumerate(ast.walk(expression)):  # ``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) and not _number(node.operand):
+            yield "constant_sign", index, node.operand
     for index, node in enumerate(ast.walk(expression)):
         if isinstance(node, (ast.List, ast.Tuple)) and 1 < len(node.elts) <= _TABLE:
+            for k, entry in enumerate(node.elts):
+                if not isinstance(entry, (ast.Constant, ast.UnaryOp)) and not _constant_expression(entry):
+                    yield "constant_sign", index, _with(node, elts=node.elts[:k] + [ast.UnaryOp(ast.USub(), entry)]
+                                                        + node.elts[k + 1:])
             for k, entry in enumerate(node.elts):
                 if not (isinstance(entry, ast.Constant) and entry.value == 0):
                     yield "constant_zeroed", index, _with(node, elts=node.elts[:k] + [ast.Constant(0.0)]

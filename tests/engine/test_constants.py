@@ -199,3 +199,25 @@ def test_a_drawn_angle_near_its_degrees_but_no_rounding_of_them_is_named_nothing
     found = drawn_constants_slips(tmp_path, "problem_34.py", "PITCH = 0.03", "PITCH = 1.9", "problem_34.biped",
                                   [0.37], P34_GAIT, ("outline",), "p34.biped")
     assert "degrees" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
+def gravity_slips(tmp_path, new: str):
+    """The tier on problem 38's walker with its gravity vector on the slope written as ``new``."""
+    return planted_slips(tmp_path, "problem_38.py", "I_GRAV = np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0])", new,
+                         "problem_38.walker_ode", [([(0.3, [0.2, -0.4, 0.7, -1.1])],), ([(1.1, [-0.6, 0.5, -0.3, 0.9])],)],
+                         (0,), "p38.walker_ode")
+
+
+def test_an_expression_of_a_constant_with_the_wrong_sign_is_a_sign(tmp_path):
+    """Problem 38's gravity on the slope typed ``[-np.sin(SLOPE), -np.cos(SLOPE), 0.0]``: an entry that is an
+    expression (not a number) given a minus, which no slip of the code gives (the gravity's part along the slope
+    alone turned)."""
+    found = gravity_slips(tmp_path, "I_GRAV = np.array([-np.sin(SLOPE), -np.cos(SLOPE), 0.0])")
+    assert {h.name for h in found} == {"sign_flip"}, [(h.name, h.detail) for h in found]
+    assert any("`I_GRAV`" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_an_expression_of_a_constant_changed_otherwise_is_no_sign(tmp_path):
+    """The near miss: the part along the slope of twice the slope's angle, which no sign gives."""
+    found = gravity_slips(tmp_path, "I_GRAV = np.array([np.sin(2 * SLOPE), -np.cos(SLOPE), 0.0])")
+    assert "sign_flip" not in {h.name for h in found}, [(h.name, h.detail) for h in found]

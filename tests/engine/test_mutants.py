@@ -581,6 +581,34 @@ def lever(x, y):
     # END SOLUTION
 
 
+def edge(state, s):
+    """The height of a tipped bar's edge over a support at ``s``, from its state ``(x, z, phi)``."""
+    # BEGIN SOLUTION problem 98
+    x, z, phi = state
+    return z * np.cos(phi) - (x - s) * np.sin(phi)
+    # END SOLUTION
+
+
+def spring(x, k=2.0, c=0.5):
+    """(given) a spring's force with its stiffness and its quadratic damping."""
+    return -k * x - c * x ** 2
+
+
+def handed(x, params):
+    """The spring's force with the parameters given by name."""
+    # BEGIN SOLUTION problem 98
+    return spring(x, **params)
+    # END SOLUTION
+
+
+def scaled_inertia(m, inertia=None):
+    """A body's inertia of a unit body scaled by its mass: the identity where none is given."""
+    # BEGIN SOLUTION problem 98
+    J = np.eye(3) if inertia is None else np.asarray(inertia, dtype=float)
+    return m * J
+    # END SOLUTION
+
+
 def gimbal(a, b, v):
     """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
     # BEGIN SOLUTION problem 98
@@ -1753,3 +1781,58 @@ def test_two_values_of_a_dict_exchanged_are_two_entries_exchanged(made_up):
     assert any("two entries that `lever` builds are exchanged" in h.detail for h in found), [h.detail for h in found]
     names, found = names_of(made_up, "lever", factor, inputs)
     assert "swapped" not in names, [(h.name, h.detail) for h in found]
+
+
+def test_an_angle_the_function_binds_itself_read_in_degrees_throughout_is_a_slip_of_degrees(made_up):
+    """``x, z, phi = state`` with every sine and cosine of ``phi`` taken in degrees; the near miss, ``phi`` read
+    shifted by a tenth, is none of degrees."""
+    def degrees(state, s):
+        x, z, phi = state
+        return z * np.cos(np.deg2rad(phi)) - (x - s) * np.sin(np.deg2rad(phi))
+
+    def shifted(state, s):
+        x, z, phi = state
+        return z * np.cos(phi + 0.1) - (x - s) * np.sin(phi + 0.1)
+
+    inputs = [(V(0.3, 1.2, 0.4), 0.5), (V(-0.2, 0.9, -0.7), 1.1)]
+    names, found = names_of(made_up, "edge", degrees, inputs)
+    assert names == {"degrees"}, [(h.name, h.detail) for h in found]
+    names, found = names_of(made_up, "edge", shifted, inputs)
+    assert "degrees" not in names, [(h.name, h.detail) for h in found]
+
+
+def test_arguments_a_call_is_to_hand_on_left_out_are_arguments_ignored(made_up):
+    """``spring(x)`` where ``spring(x, **params)`` belongs: the parameters ignored, the callee's defaults used; the
+    near miss, the stiffness handed on and the damping not, is no argument ignored by this slip."""
+    P = importlib.import_module(f"{made_up.__name__}.problem_98")
+
+    def left_out(x, params):
+        return P.spring(x)
+
+    def half(x, params):
+        return P.spring(x, k=params["k"])
+
+    inputs = [(0.7, {"k": 5.0, "c": 1.5}), (-1.2, {"k": 0.5, "c": 3.0})]
+    names, found = names_of(made_up, "handed", left_out, inputs)
+    assert names == {"ignored_argument"}, [(h.name, h.detail) for h in found]
+    assert any("leaves out the arguments it is to hand on" in h.detail for h in found), [h.detail for h in found]
+    names, found = names_of(made_up, "handed", half, inputs)
+    assert not any("hand on" in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
+def test_a_default_taken_whatever_the_argument_is_an_argument_ignored(made_up):
+    """``J = np.eye(3)`` where ``np.eye(3) if inertia is None else inertia`` belongs: the argument ignored; the
+    near miss, the inertia given halved, is none."""
+    inertia = [np.diag([1.0, 2.0, 3.0]) + 0.1, np.diag([0.5, 0.7, 0.4])]
+
+    def ignored(m, given):
+        return m * np.eye(3)
+
+    def halved(m, given):
+        return m * 0.5 * np.asarray(given) + 0.01
+
+    inputs = [(2.0, inertia[0]), (0.7, inertia[1])]
+    names, found = names_of(made_up, "scaled_inertia", ignored, inputs)
+    assert names == {"ignored_argument"}, [(h.name, h.detail) for h in found]
+    names, found = names_of(made_up, "scaled_inertia", halved, inputs)
+    assert "ignored_argument" not in names, [(h.name, h.detail) for h in found]
