@@ -5,9 +5,15 @@ A reply of the wrong form (a string where a number belongs, a list for a dict, a
 shape, NaN) is the student's error: the check fails with "cannot be graded: ..." and says where and what, never
 with a crash of the check (an internal grader error, exit code 3).  A hostile worker can send any JSON at all; a
 student's function can return anything; both meet the same gate.
+
+Where the diagnosis engine is on, two shapes name a cause: a matrix of the transposed shape (a transpose), and a
+list of values whose entries fit the form in one other order (``V, moments`` for ``moments, V``: two entries
+exchanged).
 """
 
 from __future__ import annotations
+
+import itertools
 
 from functools import lru_cache
 
@@ -92,4 +98,24 @@ def admit(probe, args: tuple, value):
     if fault.transposed and engine_on():  # the transposed shape: one of the diagnosis engine's slips
         raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}: the transposed shape.",
                            transposed_shape_hint(fault.transposed), "transpose", None)
+    order = in_another_order(form, value, args) if engine_on() else None
+    if order is not None:  # ``V, moments`` returned where ``moments, V`` belongs
+        moved = ", ".join(f"your entry {i + 1} has the form of entry {k + 1}" for k, i in enumerate(order) if i != k)
+        raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}: the values in another order.",
+                           f"Looks like your function returns its values in another order ({moved}): "
+                           "return them in the order asked.", "swapped", None)
     raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}.", fault.hint, fault.diagnosis, None)
+
+
+def in_another_order(form, value, args=()) -> tuple | None:
+    """Where ``value`` (a list of two to four entries) fails ``form`` (a ``Tup``) but its entries in another order
+    fit it, that order (``order[k]``: the entry of ``value`` in place ``k``); else None.  One order only: where
+    several fit (two entries of one form), the form cannot tell which was meant."""
+    from probes._forms import Tup
+
+    if not isinstance(form, Tup) or not isinstance(value, list) or not 2 <= len(value) == len(form.forms) <= 4:
+        return None
+    own = tuple(range(len(value)))
+    fitting = [order for order in itertools.permutations(own)
+               if order != own and form.fault([value[k] for k in order], args) is None]
+    return fitting[0] if len(fitting) == 1 else None

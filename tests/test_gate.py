@@ -121,6 +121,26 @@ def test_a_matrix_of_the_transposed_shape_is_told_as_a_transpose_where_the_engin
     assert failure.value.diagnosis == "shape"
 
 
+def test_values_returned_in_another_order_are_told_as_such_where_the_engine_is_on(monkeypatch):
+    """``V, moments`` returned where ``moments, V`` is asked: the entries fit the form in one other order, so the
+    cause is named (two entries exchanged), and the hint says to return them in the order asked.  Near misses:
+    entries of one form (either order fits: nothing to tell), a reply that fits in no order, and the engine off."""
+    import grader.diagnosis
+    from grader.gate import in_another_order
+
+    with pytest.raises(CheckFailure) as failure:
+        admit("problem_17.principal_axes", (np.eye(3),), [np.eye(3), np.ones(3)])
+    assert failure.value.diagnosis == "swapped" and "in another order" in failure.value.message
+    assert "your entry 2 has the form of entry 1" in failure.value.hint, failure.value.hint
+    assert in_another_order(Tup(Arr(3), Arr(3)), [np.ones(2), np.ones(3)]) is None
+    assert in_another_order(Tup(Arr(3), Arr(3, 3)), [np.ones(4), np.eye(3)]) is None
+    assert in_another_order(Tup(Arr(2), Arr(3), Arr(3, 3)), [np.eye(3), np.ones(2), np.ones(3)]) == (1, 2, 0)
+    monkeypatch.setattr(grader.diagnosis, "ENABLED", False)
+    with pytest.raises(CheckFailure) as failure:
+        admit("problem_17.principal_axes", (np.eye(3),), [np.eye(3), np.ones(3)])
+    assert failure.value.diagnosis == "shape"
+
+
 # ---------------------------------------------------------------------------------------------- choices
 
 
