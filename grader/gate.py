@@ -108,14 +108,25 @@ def admit(probe, args: tuple, value):
 
 
 def in_another_order(form, value, args=()) -> tuple | None:
-    """Where ``value`` (a list of two to four entries) fails ``form`` (a ``Tup``) but its entries in another order
-    fit it, that order (``order[k]``: the entry of ``value`` in place ``k``); else None.  One order only: where
-    several fit (two entries of one form), the form cannot tell which was meant."""
-    from probes._forms import Tup
+    """Where ``value`` fails ``form`` but its entries in another order fit it, that order (``order[k]``: the entry
+    of ``value`` in place ``k``); else None.  The entries are those of a list of two to four (a ``Tup``) or the values
+    of a dict under its two to four keys (a ``Dict``: ``qdd`` and ``lam`` given each other's values); in a ``Seq`` of
+    such, the one order that mends every entry of it that fails.  One order only: where several fit (two entries of
+    one form), the form cannot tell which was meant."""
+    from probes._forms import Dict, Seq, Tup
 
-    if not isinstance(form, Tup) or not isinstance(value, list) or not 2 <= len(value) == len(form.forms) <= 4:
+    if isinstance(form, Seq) and isinstance(value, list) and value:
+        orders = {in_another_order(form.item, item, args) for item in value if form.item.fault(item, args) is not None}
+        return orders.pop() if len(orders) == 1 else None
+    if isinstance(form, Tup) and isinstance(value, list) and 2 <= len(value) == len(form.forms) <= 4:
+        entries, fits = value, lambda moved: form.fault(moved, args) is None
+    elif isinstance(form, Dict) and isinstance(value, dict) and 2 <= len(value) <= 4 \
+            and set(value) == set(form.fields):
+        keys = list(form.fields)
+        entries = [value[key] for key in keys]
+        fits = lambda moved: form.fault(dict(zip(keys, moved)), args) is None  # noqa: E731
+    else:
         return None
-    own = tuple(range(len(value)))
-    fitting = [order for order in itertools.permutations(own)
-               if order != own and form.fault([value[k] for k in order], args) is None]
+    own = tuple(range(len(entries)))
+    fitting = [order for order in itertools.permutations(own) if order != own and fits([entries[k] for k in order])]
     return fitting[0] if len(fitting) == 1 else None

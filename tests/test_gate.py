@@ -135,6 +135,11 @@ def test_values_returned_in_another_order_are_told_as_such_where_the_engine_is_o
     assert in_another_order(Tup(Arr(3), Arr(3)), [np.ones(2), np.ones(3)]) is None
     assert in_another_order(Tup(Arr(3), Arr(3, 3)), [np.ones(4), np.eye(3)]) is None
     assert in_another_order(Tup(Arr(2), Arr(3), Arr(3, 3)), [np.eye(3), np.ones(2), np.ones(3)]) == (1, 2, 0)
+    # a dict's values under each other's keys, in every failing entry of a sequence alike
+    pair = Dict({"qdd": Arr(3), "lam": Arr(1)})
+    assert in_another_order(Seq(pair), [{"qdd": np.ones(1), "lam": np.ones(3)}] * 2) == (1, 0)
+    assert in_another_order(Seq(pair), [{"qdd": np.ones(1), "lam": np.ones(3)}, {"qdd": np.ones(2),
+                                                                                 "lam": np.ones(3)}]) is None
     monkeypatch.setattr(grader.diagnosis, "ENABLED", False)
     with pytest.raises(CheckFailure) as failure:
         admit("problem_17.principal_axes", (np.eye(3),), [np.eye(3), np.ones(3)])
