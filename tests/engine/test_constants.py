@@ -33,6 +33,12 @@ from .test_mutants import evidence, planted_package, scene
 STATES = [[(0.0, [0.3, -0.5, 0.8, 0.2, -0.1, 0.4])], [(0.0, [-0.7, 0.4, 0.1, -0.3, 0.6, 0.0])]]
 
 
+def assert_told(found, name: str, detail: str) -> None:
+    """The slips found are of ``name`` alone, and one of their hints says ``detail``."""
+    assert {h.name for h in found} == {name}, [(h.name, h.detail) for h in found]
+    assert any(detail in h.detail for h in found), [h.detail for h in found]
+
+
 def planted_slips(tmp_path, file: str, old: str, new: str, probe: str, inputs, parts, check: str):
     """The formula tier's slips for a package with ``old`` written as ``new`` in ``file``, on two inputs of
     ``probe`` (each a tuple of its arguments) that the slip changes."""
@@ -69,9 +75,8 @@ def arm_slips(tmp_path, new: str):
 
 def test_a_constant_matrix_written_transposed_is_a_transpose(tmp_path):
     """A joint frame's rotation typed into the module's table with its rows as columns: a transpose."""
-    found = arm_slips(tmp_path, "np.array([[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]),")
-    assert {h.name for h in found} == {"transpose"}, [(h.name, h.detail) for h in found]
-    assert any("`_A_PDP` is written transposed" in h.detail for h in found), [h.detail for h in found]
+    assert_told(arm_slips(tmp_path, "np.array([[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]),"),
+                "transpose", "`_A_PDP` is written transposed")
 
 
 def test_a_constant_matrix_with_two_rows_changed_names_no_transpose(tmp_path):
@@ -212,9 +217,8 @@ def test_an_expression_of_a_constant_with_the_wrong_sign_is_a_sign(tmp_path):
     """Problem 38's gravity on the slope typed ``[-np.sin(SLOPE), -np.cos(SLOPE), 0.0]``: an entry that is an
     expression (not a number) given a minus, which no slip of the code gives (the gravity's part along the slope
     alone turned)."""
-    found = gravity_slips(tmp_path, "I_GRAV = np.array([-np.sin(SLOPE), -np.cos(SLOPE), 0.0])")
-    assert {h.name for h in found} == {"sign_flip"}, [(h.name, h.detail) for h in found]
-    assert any("`I_GRAV`" in h.detail for h in found), [h.detail for h in found]
+    assert_told(gravity_slips(tmp_path, "I_GRAV = np.array([-np.sin(SLOPE), -np.cos(SLOPE), 0.0])"), "sign_flip",
+                "`I_GRAV`")
 
 
 def test_an_expression_of_a_constant_changed_otherwise_is_no_sign(tmp_path):

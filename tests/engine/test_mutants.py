@@ -1041,6 +1041,16 @@ def names_of(made_up, name, student, inputs, path=()):
     return {h.name for h in found}, found
 
 
+def assert_told_not_the_near_miss(made_up, name, student, near_miss, inputs, names: set, detail: str):
+    """``student``'s value of ``name`` is told ``names``, by a hint that says ``detail``; ``near_miss``'s is told
+    nothing that says it."""
+    told, found = names_of(made_up, name, student, inputs)
+    assert told == names, [(h.name, h.detail) for h in found]
+    assert any(detail in h.detail for h in found), [h.detail for h in found]
+    _, found = names_of(made_up, name, near_miss, inputs)
+    assert not any(detail in h.detail for h in found), [(h.name, h.detail) for h in found]
+
+
 STATES = [(0.3, V(0.5, -1.0, 2.0, 0.4)), (1.1, V(-0.2, 0.7, -0.6, 1.5))]
 
 
@@ -1758,11 +1768,8 @@ def test_arguments_unpacked_in_reverse_order_are_arguments_in_the_wrong_order(ma
         return P.zx(angles[0], angles[0]) @ v
 
     inputs = [(V(0.4, -1.1), V(0.3, 0.5, -0.2)), (V(-0.8, 0.6), V(1.0, -0.4, 0.7))]
-    names, found = names_of(made_up, "spun", reversed_, inputs)
-    assert names == {"argument_order"}, [(h.name, h.detail) for h in found]
-    assert any("unpacks its arguments in reverse order" in h.detail for h in found), [h.detail for h in found]
-    names, found = names_of(made_up, "spun", twice, inputs)
-    assert not any("reverse order" in h.detail for h in found), [(h.name, h.detail) for h in found]
+    assert_told_not_the_near_miss(made_up, "spun", reversed_, twice, inputs, {"argument_order"},
+                                  "unpacks its arguments in reverse order")
 
 
 def test_two_values_of_a_dict_exchanged_are_two_entries_exchanged(made_up):
@@ -1813,11 +1820,8 @@ def test_arguments_a_call_is_to_hand_on_left_out_are_arguments_ignored(made_up):
         return P.spring(x, k=params["k"])
 
     inputs = [(0.7, {"k": 5.0, "c": 1.5}), (-1.2, {"k": 0.5, "c": 3.0})]
-    names, found = names_of(made_up, "handed", left_out, inputs)
-    assert names == {"ignored_argument"}, [(h.name, h.detail) for h in found]
-    assert any("leaves out the arguments it is to hand on" in h.detail for h in found), [h.detail for h in found]
-    names, found = names_of(made_up, "handed", half, inputs)
-    assert not any("hand on" in h.detail for h in found), [(h.name, h.detail) for h in found]
+    assert_told_not_the_near_miss(made_up, "handed", left_out, half, inputs, {"ignored_argument"},
+                                  "leaves out the arguments it is to hand on")
 
 
 def test_a_default_taken_whatever_the_argument_is_an_argument_ignored(made_up):
