@@ -1798,6 +1798,7 @@ def _mutated(function: _Function, lines: tuple):
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
     angles, defaults, sums = _angles(function), _defaults(function), _sums(function.node)
+    symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
     places = [(None, function.node, None, False, False, False)] + [site + (False,) for site in sites] + \
@@ -1805,7 +1806,8 @@ def _mutated(function: _Function, lines: tuple):
         [(None, function.node, None, False, False, CONVERSIONS)]
     for index, node, parent, guarded, indexing, late_pass in places:
         if index is None:
-            slips = _conversion_slips(function.node, lines, angles) if late_pass is CONVERSIONS else \
+            slips = _conversion_slips(function.node, lines, angles if not symbolic else frozenset()) \
+                if late_pass is CONVERSIONS else \
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
             slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums),
@@ -1824,6 +1826,8 @@ def _mutated(function: _Function, lines: tuple):
                 continue
             if slip == "kept_adding" and function.node.name == "__init__":
                 continue  # a constructor sets what its object keeps for the first time
+            if isinstance(node, ast.Dict) and symbolic:
+                continue  # a substitution of sympy's exchanged grinds on for seconds, as an angle converted does
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
@@ -1952,6 +1956,12 @@ SIMPLIFIERS = frozenset({"simplify", "trigsimp", "expand", "factor_terms", "fact
                          "powsimp", "expand_trig", "fu", "signsimp", "combsimp", "gammasimp"})
 #: what a simplifier passed as a value (``M.applyfunc(sp.simplify)``) becomes
 _IDENTITY = "(lambda _expression, *_arguments, **_keywords: _expression)"
+
+
+def _symbolic(function: _Function) -> bool:
+    """Whether the function reads sympy (``sp.Matrix``, ``sp.cos``): its angles are symbols, and a conversion of
+    one of them gives floats that sympy's simplification grinds on for seconds."""
+    return any(isinstance(node, ast.Name) and node.id in function.sympy for node in ast.walk(function.node))
 
 
 def _sympy_names(nodes) -> frozenset:

@@ -13,6 +13,7 @@ code of the check's problem, kept when it reproduces the student's value on the 
   the engine off no catalogue names a cause of that family.
 """
 
+import ast
 import gc
 import os
 import importlib
@@ -1840,3 +1841,20 @@ def test_a_default_taken_whatever_the_argument_is_an_argument_ignored(made_up):
     assert names == {"ignored_argument"}, [(h.name, h.detail) for h in found]
     names, found = names_of(made_up, "scaled_inertia", halved, inputs)
     assert "ignored_argument" not in names, [(h.name, h.detail) for h in found]
+
+
+def test_a_symbolic_functions_substitutions_are_not_exchanged_nor_its_angles_converted():
+    """Problem 45's impact Jacobian is built with sympy and substitutes with a dict: exchanging that dict's values,
+    or converting one of its angles to degrees, gives expressions that sympy grinds on for seconds each and ran the
+    tier out of its time before the problem's own slips were tried.  No mutant of it changes a dict or converts an
+    angle."""
+    function = next(f for f in mutants._functions(str(ROOT / "reference")) if f.node.name == "impact_jacobian")
+    assert mutants._symbolic(function)
+    dicts = {ast.dump(node) for node in ast.walk(function.node) if isinstance(node, ast.Dict)}
+    assert dicts
+    lines = tuple((region[1], region[2]) for region in function.regions)
+    slips = list(mutants._mutated(function, lines))
+    assert slips
+    for slip, tree, _ in slips:
+        assert {ast.dump(node) for node in ast.walk(tree) if isinstance(node, ast.Dict)} <= dicts, slip
+        assert slip != "converted_radians"
