@@ -554,6 +554,8 @@ SLIPS = {
     "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
+    "converted_degrees": ("degrees", "`{f}` converts an angle to degrees where it takes its sine or cosine in "
+                                     "radians"),
     "converted_radians": ("degrees", "`{f}` converts an argument to radians that already is in radians"),
     "converted_back": ("degrees", "`{f}` converts an angle the wrong way (rad2deg where deg2rad belongs, or the "
                                   "reverse)"),
@@ -915,7 +917,8 @@ def _conversion_slips(function: ast.FunctionDef, lines: tuple, angles: frozenset
     units (``CONVERSIONS``): an argument converted that already is in the unit the function computes in (``omega *
     np.pi / 30`` of a rate given in rad/s), or converted the wrong way; and every read of a name the function binds
     itself and reads as an angle (``angles``: ``phi`` of ``x, z, phi = y`` and ``np.cos(phi)``) converted from
-    degrees, as where each of its sines and cosines is taken of it in degrees."""
+    degrees, as where each of its sines and cosines is taken of it in degrees; and every read of an angle, its own
+    or an argument, converted to degrees (``phi = np.rad2deg(phi)`` before ``np.cos(phi)``)."""
     used = {node.id for node in ast.walk(function) if isinstance(node, ast.Name) and _in(node, lines)}
     parameters = [a.arg for a in function.args.posonlyargs + function.args.args + function.args.kwonlyargs]
     for name in parameters:
@@ -926,6 +929,9 @@ def _conversion_slips(function: ast.FunctionDef, lines: tuple, angles: frozenset
     slip, factor = CONVERSIONS[0]
     for name in sorted(angles & used - set(parameters)):
         yield slip, ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(), ast.Constant(factor)))
+    for name in sorted(angles & used):  # ``phi = np.rad2deg(phi)`` before its sine and cosine are taken
+        yield "converted_degrees", ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(),
+                                                               ast.Constant(1.0 / factor)))
 
 
 #: the marks of a rate in the course's notation: ``qd`` of ``q``, ``qdd`` of ``qd``, ``omegaDot`` of ``omega``,

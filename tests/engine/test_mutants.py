@@ -1858,3 +1858,20 @@ def test_a_symbolic_functions_substitutions_are_not_exchanged_nor_its_angles_con
     for slip, tree, _ in slips:
         assert {ast.dump(node) for node in ast.walk(tree) if isinstance(node, ast.Dict)} <= dicts, slip
         assert slip != "converted_radians"
+
+
+def test_an_angle_converted_to_degrees_before_its_sine_is_a_slip_of_degrees(made_up):
+    """``phi = np.rad2deg(phi)`` before ``np.cos(phi)`` and ``np.sin(phi)``: the angle converted to degrees where
+    the sines and cosines take radians; the near miss, the angle doubled, is none of it."""
+    def degrees(state, s):
+        x, z, phi = state
+        phi = np.rad2deg(phi)
+        return z * np.cos(phi) - (x - s) * np.sin(phi)
+
+    def doubled(state, s):
+        x, z, phi = state
+        return z * np.cos(2.0 * phi) - (x - s) * np.sin(2.0 * phi)
+
+    inputs = [(V(0.3, 1.2, 0.4), 0.5), (V(-0.2, 0.9, -0.7), 1.1)]
+    assert_told_not_the_near_miss(made_up, "edge", degrees, doubled, inputs, {"degrees"},
+                                  "converts an angle to degrees")
