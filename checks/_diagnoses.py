@@ -338,6 +338,9 @@ _TABLE = (
        "an event", "read an extremum from the solver's steps instead of an event"),
     _D("event_quantity", "event", "an event that watches the wrong quantity (another row of the state)",
        "watched the wrong quantity in an event"),
+    _D("event_residual", "event", "an event function that returns a test or a magnitude (height > 0, abs(gap)) "
+       "where a residual belongs that changes sign at the event", "returned a test or a magnitude from an event "
+       "function instead of a residual"),
     _D("state_row", "state_row", "a state read from the wrong row (or column) of the solution",
        "read a state from the wrong row"),
     _D("wrong_index", "state_row", "an entry read from the wrong index (a neighbouring row or column)",

@@ -31,8 +31,9 @@ Each mutant changes one place of one function's solution region (``SLIPS``: a te
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
 entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: alpha}``), the arguments a call is
 to hand on (``*args``, ``**kwargs``) left out, a default taken whatever the argument (``np.eye(3) if I is None else
-I`` as ``np.eye(3)``), an angle the function binds itself (``x, z, phi = y``) read in degrees throughout, a number
-doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
+I`` as ``np.eye(3)``), an angle the function binds itself (``x, z, phi = y``) read in degrees throughout or an
+angle converted to degrees before its sine (``phi = np.rad2deg(phi)``), an event's residual returned as a test or a
+magnitude (``y[0] > 0``, ``abs(gap)``, in a function of ``(t, y)``), a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
 (in one call, throughout one expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where
 ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by
 row, transposed), a neighbouring index, two names exchanged (throughout, or two of a kind in one expression), a solve or
@@ -554,6 +555,8 @@ SLIPS = {
     "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
+    "event_residual": ("event_residual", "the event function in `{f}` returns a test or a magnitude (`y > 0`, "
+                       "`abs(...)`) where a residual belongs that changes sign at the event"),
     "converted_degrees": ("degrees", "`{f}` converts an angle to degrees where it takes its sine or cosine in "
                                      "radians"),
     "converted_radians": ("degrees", "`{f}` converts an argument to radians that already is in radians"),
@@ -756,6 +759,10 @@ def _slips(node, parent):
     if isinstance(node, ast.Return):
         for k in _returned_names(node):  # ``np.array([x, y, gamma])`` with gamma in degrees
             yield "returned_degrees", lambda n, k=k: _in_degrees(n, k)
+    if isinstance(node, ast.Return) and node.value is not None and _event_function(parent):
+        for op in (ast.Gt(), ast.Lt()):  # ``y[0] > 0`` for ``y[0]``: a test where a residual belongs
+            yield "event_residual", lambda n, op=op: _with(n, value=ast.Compare(n.value, [op], [ast.Constant(0.0)]))
+        yield "event_residual", lambda n: _with(n, value=ast.Call(ast.Name("abs", ast.Load()), [n.value], []))
     if isinstance(node, (ast.For, ast.ListComp, ast.GeneratorExp, ast.SetComp, ast.DictComp)):
         steps = _stepping(node)
         yield "steps_short" if steps else "loop_short", lambda n: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None))
@@ -1227,6 +1234,14 @@ def _interleaved(node):
     first, second = node.elts
     return _with(node, elts=[_with(first, slice=ast.Slice(None, None, ast.Constant(2))),
                              _with(second, slice=ast.Slice(ast.Constant(1), None, ast.Constant(2)))])
+
+
+def _event_function(node) -> bool:
+    """A function of ``(t, y, ...)``: what solve_ivp calls, an event among them (``_STATE``: ``y`` or ``state``)."""
+    if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        return False
+    names = [a.arg for a in node.args.posonlyargs + node.args.args]
+    return len(names) >= 2 and names[0] == "t" and bool(_STATE.match(names[1]))
 
 
 def _state_parts(function: ast.FunctionDef) -> set:

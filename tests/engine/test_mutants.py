@@ -610,6 +610,13 @@ def scaled_inertia(m, inertia=None):
     # END SOLUTION
 
 
+def clearance(t, y, *args):
+    """An event's residual for solve_ivp: the height ``y[0]`` over a step 0.2 high, less a sag that grows with t."""
+    # BEGIN SOLUTION problem 98
+    return y[0] - 0.2 + 0.05 * t
+    # END SOLUTION
+
+
 def gimbal(a, b, v):
     """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
     # BEGIN SOLUTION problem 98
@@ -1875,3 +1882,21 @@ def test_an_angle_converted_to_degrees_before_its_sine_is_a_slip_of_degrees(made
     inputs = [(V(0.3, 1.2, 0.4), 0.5), (V(-0.2, 0.9, -0.7), 1.1)]
     assert_told_not_the_near_miss(made_up, "edge", degrees, doubled, inputs, {"degrees"},
                                   "converts an angle to degrees")
+
+
+def test_an_event_that_returns_a_test_or_a_magnitude_is_a_slip_of_the_event(made_up):
+    """``y[0] - 0.2 + 0.05 t > 0`` and ``abs(y[0] - 0.2 + 0.05 t)`` where the residual itself belongs: solve_ivp
+    finds no sign change of either; the near miss, the step at 0.3, is no slip of the event."""
+    def test(t, y):
+        return float(y[0] - 0.2 + 0.05 * t > 0)
+
+    def magnitude(t, y):
+        return abs(y[0] - 0.2 + 0.05 * t)
+
+    def higher(t, y):
+        return y[0] - 0.3 + 0.05 * t
+
+    inputs = [(0.4, V(0.1, -1.0)), (1.3, V(0.5, 2.0))]
+    for student in (test, magnitude):
+        assert_told_not_the_near_miss(made_up, "clearance", student, higher, inputs, {"event_residual"},
+                                      "returns a test or a magnitude")
