@@ -1087,9 +1087,16 @@ def _trig_names(function: ast.FunctionDef) -> dict:
 
 def _trig_read_slips(node, parent, others: dict):
     """A read of a name bound to a sine (a cosine) read as the cosine (the sine) of the same argument, one read at
-    a time (``-q3 * c2`` for ``-q3 * s2``)."""
+    a time (``-q3 * c2`` for ``-q3 * s2``), or the two names exchanged throughout one statement (``a @ s + b @ c``
+    for ``a @ c + b @ s``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in others:
         yield "trig", lambda n, other=others[node.id]: copy.deepcopy(other)
+    if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):  # ``a @ s + b @ c`` for ``a @ c + b @ s``
+        read = {n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
+        pairs = {tuple(sorted((name, others[name].id))) for name in read & set(others)
+                 if isinstance(others[name], ast.Name) and others[name].id in read}
+        for a, b in sorted(pairs):
+            yield "trigs", lambda n, a=a, b=b: _renamed_in(n, a, b)
 
 
 def _written_out(node) -> bool:

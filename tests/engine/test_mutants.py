@@ -617,6 +617,17 @@ def clearance(t, y, *args):
     # END SOLUTION
 
 
+def harmonic(t):
+    """Two harmonics and their rates at time ``t``."""
+    # BEGIN SOLUTION problem 98
+    w = np.array([1.0, 2.0])
+    c, s = np.cos(w * t), np.sin(w * t)
+    q = 3.0 * c + 0.5 * s
+    qd = w * (0.5 * c - 3.0 * s)
+    return np.concatenate([q, qd])
+    # END SOLUTION
+
+
 def gimbal(a, b, v):
     """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
     # BEGIN SOLUTION problem 98
@@ -1900,3 +1911,21 @@ def test_an_event_that_returns_a_test_or_a_magnitude_is_a_slip_of_the_event(made
     for student in (test, magnitude):
         assert_told_not_the_near_miss(made_up, "clearance", student, higher, inputs, {"event_residual"},
                                       "returns a test or a magnitude")
+
+
+def test_a_sine_and_a_cosine_exchanged_throughout_a_statement_are_sin_for_cos(made_up):
+    """``q = 3 s + 0.5 c`` where ``q = 3 c + 0.5 s`` belongs, ``c, s = np.cos(w t), np.sin(w t)`` and the rates
+    right: the two names exchanged in one statement (not where they are bound, which would change the rates too);
+    the near miss, both harmonics of q shifted in phase, is no such exchange."""
+    def exchanged(t):
+        w = np.array([1.0, 2.0])
+        c, s = np.cos(w * t), np.sin(w * t)
+        return np.concatenate([3.0 * s + 0.5 * c, w * (0.5 * c - 3.0 * s)])
+
+    def shifted(t):
+        w = np.array([1.0, 2.0])
+        c, s = np.cos(w * t), np.sin(w * t)
+        return np.concatenate([3.0 * np.cos(w * t + 0.5) + 0.5 * np.sin(w * t + 0.5), w * (0.5 * c - 3.0 * s)])
+
+    assert_told_not_the_near_miss(made_up, "harmonic", exchanged, shifted, [(0.6,), (1.7,)], {"sin_cos_swapped"},
+                                  "in one expression")
