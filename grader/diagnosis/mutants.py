@@ -33,7 +33,8 @@ entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: a
 to hand on (``*args``, ``**kwargs``) left out, a default taken whatever the argument (``np.eye(3) if I is None else
 I`` as ``np.eye(3)``), an angle the function binds itself (``x, z, phi = y``) read in degrees throughout or an
 angle converted to degrees before its sine (``phi = np.rad2deg(phi)``), an event's residual returned as a test or a
-magnitude (``y[0] > 0``, ``abs(gap)``, in a function of ``(t, y)``), a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
+magnitude (``y[0] > 0``, ``abs(gap)``, in a function of ``(t, y)``), a list of angles passed in reverse order
+(``ANGLES0[::-1]``), a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
 (in one call, throughout one expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where
 ``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by
 row, transposed), a neighbouring index, two names exchanged (throughout, or two of a kind in one expression), a solve or
@@ -463,6 +464,7 @@ SLIPS = {
     "entries_rates": ("swapped", "two entries that `{f}` builds are exchanged"),
     "arguments_rates": ("argument_order", "two arguments of a call in `{f}` are exchanged"),
     "blocks": ("argument_order", "two groups of arguments of a call in `{f}` are exchanged"),
+    "angles_reversed": ("argument_order", "a call in `{f}` is given a list of angles in reverse order"),
     "unpacked_reversed": ("argument_order", "a call in `{f}` unpacks its arguments in reverse order"),
     "sides": ("transpose", "a product in `{f}` transposes the wrong factor"),
     "trigs": ("sin_cos_swapped", "`{f}` takes sin where cos belongs and cos where sin belongs in one expression"),
@@ -752,6 +754,11 @@ def _slips(node, parent):
             yield "rows", lambda n: _with(n, slice=ast.Slice(n.slice.upper, n.slice.lower, None))
     if isinstance(node, ast.Call) and any(isinstance(a, ast.Starred) for a in node.args):  # ``f(*angles[::-1])``
         yield "unpacked_reversed", _unpacked_reversed
+    if isinstance(node, ast.Call):  # ``_run(step, ANGLES0[::-1])``: a list of angles passed in reverse order
+        for k, argument in enumerate(node.args):
+            if isinstance(argument, ast.Name) and _ANGLES.search(argument.id):
+                yield "angles_reversed", lambda n, k=k: _with(n, args=n.args[:k] + [ast.Subscript(
+                    n.args[k], ast.Slice(None, None, ast.Constant(-1)), ast.Load())] + n.args[k + 1:])
     if _conversion(node):
         yield "converted_back", _converted_back
     if isinstance(node, ast.Assign) and _stored(node):  # ``self.r = r`` as ``self.r = self.r + r``
@@ -1362,6 +1369,10 @@ def _conversion(node) -> bool:
 def _converted_back(node: ast.Call):
     """The conversion the other way: ``np.rad2deg(x)`` for ``np.deg2rad(x)``."""
     return _with(node, func=_with(node.func, attr=_BACK[node.func.attr]))
+
+
+#: a name of a list of angles (``angles``, ``ANGLES0``, ``start_angles``)
+_ANGLES = re.compile(r"angles", re.IGNORECASE)
 
 
 def _unpacked_reversed(node: ast.Call):

@@ -628,6 +628,18 @@ def harmonic(t):
     # END SOLUTION
 
 
+def zx_of(angles):
+    """(given) the rotation ``zx`` of a list of its two angles."""
+    return zx(angles[0], angles[1])
+
+
+def pointed(angles, v):
+    """A vector turned by ``zx_of`` of the angles, in their order."""
+    # BEGIN SOLUTION problem 98
+    return zx_of(angles) @ v
+    # END SOLUTION
+
+
 def gimbal(a, b, v):
     """A vector through the sequence z, x, z: ``R3(a) R1(b) R3(b / 2) v``."""
     # BEGIN SOLUTION problem 98
@@ -1929,3 +1941,19 @@ def test_a_sine_and_a_cosine_exchanged_throughout_a_statement_are_sin_for_cos(ma
 
     assert_told_not_the_near_miss(made_up, "harmonic", exchanged, shifted, [(0.6,), (1.7,)], {"sin_cos_swapped"},
                                   "in one expression")
+
+
+def test_a_list_of_angles_passed_in_reverse_order_is_arguments_in_the_wrong_order(made_up):
+    """``zx_of(angles[::-1])`` where ``zx_of(angles)`` belongs; the near miss, the first angle read twice, is no
+    reversal."""
+    P = importlib.import_module(f"{made_up.__name__}.problem_98")
+
+    def reversed_(angles, v):
+        return P.zx_of(angles[::-1]) @ v
+
+    def twice(angles, v):
+        return P.zx_of([angles[0], angles[0]]) @ v
+
+    inputs = [(V(0.4, -1.1), V(0.3, 0.5, -0.2)), (V(-0.8, 0.6), V(1.0, -0.4, 0.7))]
+    assert_told_not_the_near_miss(made_up, "pointed", reversed_, twice, inputs, {"argument_order"},
+                                  "is given a list of angles in reverse order")
