@@ -548,6 +548,8 @@ SLIPS = {
     "start_zeros": ("initial_state", "the start `{f}` is written as zeros: the run starts from another state"),
     "start_identity": ("initial_state", "the start `{f}` is written as the identity: the run starts from another "
                                         "orientation"),
+    "default_taken": ("ignored_argument", "`{f}` takes the default whatever its argument (``np.eye(3) if I is None "
+                      "else I`` written ``np.eye(3)``): the argument is ignored"),
     "handed_on": ("ignored_argument", "a call in `{f}` leaves out the arguments it is to hand on (``*args``, "
                   "``**kwargs``), so that the callee uses its defaults: those arguments are ignored"),
     "keyword": ("missing_term", "a call in `{f}` leaves out one of its keyword arguments, so that the callee's "
@@ -860,7 +862,7 @@ def _keyword_slips(node, keywords: frozenset):
             if isinstance(argument, ast.Starred):
                 yield "handed_on", lambda n, k=k: _with(n, args=n.args[:k] + n.args[k + 1:])
     if isinstance(node, ast.IfExp) and _none_test(node.test):  # ``eye(3) if I is None else I`` as ``eye(3)``
-        yield "default", lambda n: n.body if isinstance(n.test.ops[0], ast.Is) else n.orelse
+        yield "default_taken", lambda n: n.body if isinstance(n.test.ops[0], ast.Is) else n.orelse
 
 
 def _none_test(test) -> bool:
@@ -2273,7 +2275,7 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled", "typed",
-                        "written_index", "converted_radians", "converted_rpm"})
+                        "written_index", "converted_radians", "converted_rpm", "converted_degrees"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
