@@ -181,7 +181,8 @@ def carried_raise(ctx, judged_value, error) -> bool:
     """Whether the student's code raised ``error`` (a ``StudentCodeError``) where the reference's code, on the
     student's own shared functions (``judged_value``, from ``judged``), raises the same: a singular rate matrix of
     theirs makes a step of theirs and the reference's fail alike.  Then the error is carried forward, as a value
-    would be (True: the check passes there, pointing at the check that finds the mistake)."""
+    would be (True: the input passes, pointing at the check that finds the mistake); ``ctx.compare_random`` holds
+    it to the inputs judged by their value beside it, so that code that only raises earns nothing."""
     found = judged_value.result()
     if found is None or found.value is not None \
             or not found.flaw.startswith(f"{COULD_NOT_USE} ({error.type_name}:"):

@@ -290,8 +290,11 @@ class Context:
         ``ctx.reference`` with values computed from ``args`` alone, never from the student's answer.  Where the
         student's code raises, ``compare.carried_error(exc, args)`` (if ``compare`` has it) may take the error as
         carried forward (True: the input passes), as ``checks._upstream.judged_comparison`` does where the
-        reference's code raises alike on the student's own shared functions."""
+        reference's code raises alike on the student's own shared functions; only where some other input was
+        judged by its value: code that raises on every input earns nothing, whatever raised it."""
         probe = _probe_name(probe)
+        #: an error of the student's code carried forward (the first), and whether an input was judged by its value
+        errors = {"carried": None, "judged": False}
 
         def evaluate(args):
             with random_input():  # a failure here may show the digits it needs: the next grading draws anew
@@ -304,7 +307,9 @@ class Context:
                     carried = getattr(compare, "carried_error", None)
                     if carried is None or ends_grading(exc) or not carried(exc, args):
                         raise
+                    errors["carried"] = errors["carried"] or exc
                     return
+                errors["judged"] = True
                 if compare is None:
                     assert_close(got, expected, name, tol, found)
                     return
@@ -327,6 +332,8 @@ class Context:
             raise
         finally:
             self._fixed = fixed
+        if errors["carried"] is not None and not errors["judged"]:  # raised on every input: nothing of it judged
+            raise errors["carried"]
 
     def ask_common(self, failed: set[str]) -> None:
         """After the problem's last check: ask the student's code once more for each randomized comparison that
