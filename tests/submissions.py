@@ -139,6 +139,11 @@ def build_hostile(name: str, dest: Path) -> Path:
             target.parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(path, target)
     expect = hostile_expectation(name)
+    for edit in expect.get("replace", ()):  # a text of a reference file written otherwise, where it occurs once
+        path = dest / edit["file"]
+        text = path.read_text()
+        assert text.count(edit["old"]) == 1, (name, edit["file"], edit["old"])
+        path.write_text(text.replace(edit["old"], edit["new"]))
     for link, target in expect.get("links", {}).items():
         path = dest / link
         if path.exists() or path.is_symlink():
