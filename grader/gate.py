@@ -107,6 +107,11 @@ def admit(probe, args: tuple, value):
     raise CheckFailure(f"{GATE_PREFIX}{subject} {fault.text}.", fault.hint, fault.diagnosis, None)
 
 
+#: the entries of a sequence, at most, whose order is sought (a longer reply, a hostile one of millions, fails as a
+#: shape alone: each entry costs up to 24 tries of its form)
+ORDER_ENTRIES = 64
+
+
 def in_another_order(form, value, args=()) -> tuple | None:
     """Where ``value`` fails ``form`` but its entries in another order fit it, that order (``order[k]``: the entry
     of ``value`` in place ``k``); else None.  The entries are those of a list of two to four (a ``Tup``) or the values
@@ -115,7 +120,7 @@ def in_another_order(form, value, args=()) -> tuple | None:
     one form), the form cannot tell which was meant."""
     from probes._forms import Dict, Seq, Tup
 
-    if isinstance(form, Seq) and isinstance(value, list) and value:
+    if isinstance(form, Seq) and isinstance(value, list) and 0 < len(value) <= ORDER_ENTRIES:
         orders = {in_another_order(form.item, item, args) for item in value if form.item.fault(item, args) is not None}
         return orders.pop() if len(orders) == 1 else None
     if isinstance(form, Tup) and isinstance(value, list) and 2 <= len(value) == len(form.forms) <= 4:

@@ -140,6 +140,9 @@ def test_values_returned_in_another_order_are_told_as_such_where_the_engine_is_o
     assert in_another_order(Seq(pair), [{"qdd": np.ones(1), "lam": np.ones(3)}] * 2) == (1, 0)
     assert in_another_order(Seq(pair), [{"qdd": np.ones(1), "lam": np.ones(3)}, {"qdd": np.ones(2),
                                                                                  "lam": np.ones(3)}]) is None
+    # a sequence longer than the gate looks through fails as a shape alone
+    from grader.gate import ORDER_ENTRIES
+    assert in_another_order(Seq(pair), [{"qdd": np.ones(1), "lam": np.ones(3)}] * (ORDER_ENTRIES + 1)) is None
     monkeypatch.setattr(grader.diagnosis, "ENABLED", False)
     with pytest.raises(CheckFailure) as failure:
         admit("problem_17.principal_axes", (np.eye(3),), [np.eye(3), np.ones(3)])
