@@ -33,7 +33,7 @@ from ._real import flaw as real_flaw
 from ._real import rotation_flaw
 
 __all__ = ["SHARED", "flaw", "judged", "assert_close_judged", "judged_comparison", "judging", "judge_failure",
-           "held", "carried_note", "carried_raise"]
+           "held", "carried_note"]
 
 #: "module.function" -> (the problem whose solution region it is, the check that grades it)
 SHARED = {
@@ -110,6 +110,14 @@ def _names(found) -> str:
     return ", ".join(dict.fromkeys(function.rpartition(".")[2] for function in found.functions))
 
 
+def _carry(ctx, found) -> None:
+    """Record that the running check passed on the student's own shared functions of ``found``: error carried
+    forward, pointing at the checks that grade them."""
+    for function in found.functions:
+        if function in SHARED:
+            ctx.carry_forward(SHARED[function][1], _names(found))
+
+
 def carried_note(found) -> str:
     """The sentence that says which of the student's shared functions differ and which checks grade them."""
     graded = "; ".join(dict.fromkeys(check_title(SHARED[f][1]) for f in found.functions if f in SHARED))
@@ -146,9 +154,7 @@ def assert_close_judged(ctx, got, expected, judged_value, name: str, tol: Tol, m
     if normalize is not None:
         got = normalize(answer, value)
     if close(got, value, tol):
-        for function in found.functions:
-            if function in SHARED:
-                ctx.carry_forward(SHARED[function][1], _names(found))
+        _carry(ctx, found)
         return
     assert_close(got, value, name, tol, (), context=_join_context(context, f"judged on your own {_names(found)}"),
                  note=_join(note, f"{why} This answer is judged on {'it' if len(found.functions) == 1 else 'them'}: "
@@ -173,11 +179,11 @@ def judged_comparison(ctx, probe: str, name: str, tol: Tol, mistakes=None, pick=
         found = list(mistakes(args, expected)) if mistakes else ()
         assert_close_judged(ctx, got, expected, judged_value, name, tol, found, pick, normalize=normalize)
 
-    compare.carried_error = lambda error, args: carried_raise(ctx, judged(ctx, probe, *args), error)
+    compare.carried_error = lambda error, args: _carried_raise(ctx, judged(ctx, probe, *args), error)
     return compare
 
 
-def carried_raise(ctx, judged_value, error) -> bool:
+def _carried_raise(ctx, judged_value, error) -> bool:
     """Whether the student's code raised ``error`` (a ``StudentCodeError``) where the reference's code, on the
     student's own shared functions (``judged_value``, from ``judged``), raises the same: a singular rate matrix of
     theirs makes a step of theirs and the reference's fail alike.  Then the error is carried forward, as a value
@@ -187,9 +193,7 @@ def carried_raise(ctx, judged_value, error) -> bool:
     if found is None or found.value is not None \
             or not found.flaw.startswith(f"{COULD_NOT_USE} ({error.type_name}:"):
         return False
-    for function in found.functions:
-        if function in SHARED:
-            ctx.carry_forward(SHARED[function][1], _names(found))
+    _carry(ctx, found)
     return True
 
 
@@ -212,9 +216,7 @@ def judge_failure(ctx, failure: CheckFailure, judged_value, rejudge):
         raise CheckFailure(f"{first}\n(judged on your own {_names(found)}: the reference's code of this problem "
                            f"with your {_names(found)})\n{why}\n{rest}", again.hint, again.diagnosis,
                            again.candidates, again.evidence) from None
-    for function in found.functions:
-        if function in SHARED:
-            ctx.carry_forward(SHARED[function][1], _names(found))
+    _carry(ctx, found)
 
 
 def judging(ctx, probe: str, compare, rejudge=None):
