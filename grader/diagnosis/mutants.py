@@ -853,11 +853,12 @@ def _keyword_slips(node, keywords: frozenset):
     if isinstance(node, ast.Call):
         callee = _callee(node)
         for k, keyword in enumerate(node.keywords):
-            if keyword.arg is not None and (callee, keyword.arg) in keywords:
-                yield "keyword_point" if _POSITION.match(keyword.arg) else "keyword", \
-                    lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
-            if keyword.arg is None:  # ``super().__init__()`` for ``super().__init__(**kinematics)``
-                yield "handed_on", lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
+            # ``super().__init__()`` for ``super().__init__(**kinematics)``: the keywords to hand on left out
+            slip = "handed_on" if keyword.arg is None else \
+                "keyword_point" if (callee, keyword.arg) in keywords and _POSITION.match(keyword.arg) else \
+                "keyword" if (callee, keyword.arg) in keywords else None
+            if slip is not None:
+                yield slip, lambda n, k=k: _with(n, keywords=n.keywords[:k] + n.keywords[k + 1:])
         for k, argument in enumerate(node.args):
             if isinstance(argument, ast.Starred):
                 yield "handed_on", lambda n, k=k: _with(n, args=n.args[:k] + n.args[k + 1:])
@@ -935,19 +936,20 @@ def _conversion_slips(function: ast.FunctionDef, lines: tuple, angles: frozenset
     itself and reads as an angle (``angles``: ``phi`` of ``x, z, phi = y`` and ``np.cos(phi)``) converted from
     degrees, as where each of its sines and cosines is taken of it in degrees; and every read of an angle, its own
     or an argument, converted to degrees (``phi = np.rad2deg(phi)`` before ``np.cos(phi)``)."""
+    def scaled(name: str, factor: float):
+        return "read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(), ast.Constant(factor))
+
     used = {node.id for node in ast.walk(function) if isinstance(node, ast.Name) and _in(node, lines)}
     parameters = [a.arg for a in function.args.posonlyargs + function.args.args + function.args.kwonlyargs]
     for name in parameters:
         if name in used and name not in ("self", "cls"):
             for slip, factor in CONVERSIONS:
-                yield slip, ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(),
-                                                        ast.Constant(factor)))
+                yield slip, scaled(name, factor)
     slip, factor = CONVERSIONS[0]
     for name in sorted(angles & used - set(parameters)):
-        yield slip, ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(), ast.Constant(factor)))
+        yield slip, scaled(name, factor)
     for name in sorted(angles & used):  # ``phi = np.rad2deg(phi)`` before its sine and cosine are taken
-        yield "converted_degrees", ("read_as", name, ast.BinOp(ast.Name(name, ast.Load()), ast.Mult(),
-                                                               ast.Constant(1.0 / factor)))
+        yield "converted_degrees", scaled(name, 1.0 / factor)
 
 
 #: the marks of a rate in the course's notation: ``qd`` of ``q``, ``qdd`` of ``qd``, ``omegaDot`` of ``omega``,
