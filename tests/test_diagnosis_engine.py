@@ -456,6 +456,9 @@ def development_set() -> list[Planted]:
 
 FAMILIES = {e["name"]: e["family"] for e in tomllib.loads(
     (ROOT / "tests" / "engine" / "mistakes.toml").read_text())["mistake"]}
+#: the checks among a mistake's others (``also``) that name its diagnosis too
+ALSO_NAMED = {e["name"]: e.get("also_named", []) for e in tomllib.loads(
+    (ROOT / "tests" / "engine" / "mistakes.toml").read_text())["mistake"]}
 DEVELOPMENT = development_set()
 
 
@@ -494,5 +497,8 @@ def test_every_family_of_the_grammar_has_its_mistake():
 @pytest.mark.parametrize("mistake", DEVELOPMENT, ids=lambda m: m.name)
 def test_the_engine_names_a_mistake_no_catalogue_lists(mistake, tmp_path, kit_oracle, deferred_ids, slot,
                                                        monkeypatch):
-    submission, _, _ = assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+    submission, live, _ = assert_told_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+    results = {r.check_id: r for r in live.results}
+    for check in ALSO_NAMED[mistake.name]:
+        assert check in mistake.also and results[check].diagnosis == mistake.diagnosis, (check, results[check].hint)
     assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)  # (a shape, say, is not a cause)

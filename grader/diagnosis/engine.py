@@ -31,6 +31,7 @@ from .evidence import (
     Finding,
     Hypothesis,
     locate,
+    part_of,
     Source,
     within,
 )
@@ -104,7 +105,7 @@ class _Input:
     extras: dict | None = None
 
 
-def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: bool = True) -> _Input:
+def _predict(scene: Scene, evidence: Evidence, constants: dict) -> _Input:
     """The hypotheses' predicted values on one input."""
     one = _Input(evidence)
     source = evidence.source
@@ -113,9 +114,9 @@ def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: boo
     for hypothesis, value in output_slips(evidence.expected, constants, rotation, evidence.got):
         one.hypotheses[hypothesis.key] = hypothesis
         one.predicted[hypothesis.key] = value
-    if decl is None or not with_inputs:
+    if source is None:
         return one
-    for hypothesis, args in input_slips(decl, source.args):
+    for hypothesis, args in input_slips(decl, source.args) if decl is not None else ():
         try:
             value = scene.reference_at(source.probe, args, source.path)
         except GraderFault:
@@ -123,15 +124,28 @@ def _predict(scene: Scene, evidence: Evidence, constants: dict, with_inputs: boo
         if value is not None:
             one.hypotheses[hypothesis.key] = hypothesis
             one.predicted[hypothesis.key] = value
-    if decl.terms:
+    terms = terms_call(decl, source)
+    if terms is not None:
         try:
-            split = scene.reference(decl.terms, source.args)
+            split = scene.reference(*terms)
         except GraderFault:
             split = None
         if isinstance(split, dict):
             one.terms = term_values(split.get("terms", {}), source.path, evidence.expected.shape)
             one.extras = term_values(split.get("extra", {}), source.path, evidence.expected.shape)
     return one
+
+
+def terms_call(decl: Declaration | None, source: Source) -> tuple | None:
+    """``(probe, args)`` of the reference's call that splits ``source``'s value into its terms: the declared
+    ``terms`` of its probe, or of the cheaper call that holds the value (``part``: problem 37's Lagrange probe
+    holds ``M``, ``f``, ``g`` of the probe of the mass matrix), on that call's arguments; None where neither
+    declares terms."""
+    if decl is not None and decl.terms:
+        return decl.terms, tuple(source.args)
+    part = part_of(source)
+    inner = declaration(part[0]) if part is not None else None
+    return (inner.terms, part[1]) if inner is not None and inner.terms else None
 
 
 def _sources(scene: Scene, evidence: Evidence) -> None:
@@ -1116,6 +1130,9 @@ def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
         else:  # the test of an ignored argument changes the numbers of a probe that declares nothing
             for args in perturbations(None, source.args):
                 ask(source.probe, args)
+            terms = terms_call(None, source)  # those of the cheaper call that holds the value
+            if terms is not None:
+                ask(*terms)
         if not (decl is not None and decl.motion) and not getattr(ctx, "randomized", False):
             root = source.root if source.root is not None else ask(source.probe, source.args)
             expected = array_of(at(root, source.path))
@@ -1126,8 +1143,10 @@ def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
             if drawn is not None and decl is not None:
                 for _, variant in input_slips(decl, drawn[0]):
                     ask(source.probe, variant)
-                if decl.terms:
-                    ask(decl.terms, drawn[0])
+            terms = None if drawn is None else terms_call(decl, Source(source.probe, tuple(drawn[0]),
+                                                                          tuple(source.path)))
+            if terms is not None:
+                ask(*terms)
     except (Budget, GraderFault):
         pass
 
@@ -1143,8 +1162,9 @@ def _prepare_declared(scene: Scene, ask, decl: Declaration, source: Source) -> N
         ask(source.probe, args)
     for args in perturbations(decl, source.args):
         ask(source.probe, args)
-    if decl.terms:
-        ask(decl.terms, source.args)
+    terms = terms_call(decl, source)
+    if terms is not None:
+        ask(*terms)
     if decl.motion.get("fixed_step"):
         for scheme in decl.motion.get("schemes", ("euler",)):
             for h in decl.motion.get("steps", FIXED_STEPS):
