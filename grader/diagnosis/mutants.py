@@ -2529,14 +2529,15 @@ class _Deadline:
 
 def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: _Deadline,
               originals: dict, judged: bool = True, kept: list | None = None,
-              progress: dict | None = None, twins: tuple = ()) -> list[Mutant] | None:
+              progress: dict | None = None, twins: tuple = (), ran: frozenset | None = None) -> list[Mutant] | None:
     """The mutants that reproduce the student's value on every input (and, ``judged``, differ from the expected
     value on one, and from zero), or None when the time ran out first.  ``originals`` keeps the code of every
     function changed (``_restore`` puts it back); ``kept`` (given) gathers the mutants kept as they are found and
     ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out.
     ``twins`` (``_twins``, where the reference's value holds without them): the codes without simplifications of
     the functions that simplify, with which each mutant is screened, its symbolic answers read quickly; a mutant
-    that reproduces the student's value so is evaluated again as it is, and that value decides."""
+    that reproduces the student's value so is evaluated again as it is, and that value decides.  ``ran``: the codes
+    the first input's call runs, where the grading's refutations (``_Refuted``) are kept and heard."""
     kept = [] if kept is None else kept
     progress = {} if progress is None else progress
     calls = [(e.source.probe, _kept_once(e.source.args)) for e in inputs]
@@ -2549,17 +2550,23 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         progress["tried"] = tried
         if deadline.fired:
             return None
+        if _REFUTED.refuted(mutant, ran):
+            continue
+        misses = []  # the input at which the mutant's value is not the student's
         if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound
             try:
                 _bind(mutant.bindings, originals)
-                values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)])
+                values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)],
+                                     misses=misses)
                 if values is not None and any(parts):
-                    values = _reproduced(package, inputs, calls)
+                    values = _reproduced(package, inputs, calls, misses=misses)
             finally:
                 _unbind(mutant.bindings, originals)
         else:
-            values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened)
+            values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened, misses)
         if values is None:
+            if misses == [0] and not screened:
+                _REFUTED.refute(mutant, ran)
             continue
         if mutant.slip in PRECISION_SLIPS and not all(_closely(v, e) for v, e in zip(values, inputs)):
             continue
@@ -2578,22 +2585,23 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
 
 
 def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, parts: list, originals: dict,
-                    twins: tuple, screened: bool) -> list | None:
-    """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None."""
+                    twins: tuple, screened: bool, misses: list | None = None) -> list | None:
+    """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None
+    (``misses``, given, gets the input at which it is not the student's)."""
     holder = _live(package, mutant.module, mutant.path)
     originals.setdefault(id(holder), (holder, holder.__code__))
     try:
         for other, twin in twins:
             other.__code__ = twin
         holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
-        values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened)
+        values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened, misses)
         if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
-            values = _reproduced(package, inputs, calls, screened)
+            values = _reproduced(package, inputs, calls, screened, misses)
         if values is not None and screened:  # the mutant's own value decides
             for other, _ in twins:
                 other.__code__ = originals[id(other)][1]
             holder.__code__ = mutant.code
-            values = _reproduced(package, inputs, calls)
+            values = _reproduced(package, inputs, calls, misses=misses)
     finally:
         for other, _ in twins:
             other.__code__ = originals[id(other)][1]
@@ -2621,13 +2629,17 @@ def _unbind(bindings: tuple, originals: dict) -> None:
         setattr(holder, attribute, originals[(id(holder), attribute)][2])
 
 
-def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = False) -> list | None:
+def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = False,
+                misses: list | None = None) -> list | None:
     """The mutated package's values of ``calls`` (``(probe, arguments)``: each input's call, or its declared part),
-    or None at the first that does not reproduce the student's value (``quick``: see ``_call``)."""
+    or None at the first that does not reproduce the student's value (``quick``: see ``_call``; ``misses``, given,
+    gets that input's index)."""
     values = []
-    for evidence, call in zip(inputs, calls):
+    for index, (evidence, call) in enumerate(zip(inputs, calls)):
         value = _value(package, evidence, call, quick)
         if value is None or not within(evidence.got, value, evidence.tol):
+            if misses is not None:
+                misses.append(index)
             return None
         values.append(value)
     return values
@@ -2809,7 +2821,8 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
         kept = _MEASURED.get(scene.ctx.oracle, key)
         if kept is None:
             outcome = {}
-            kept = _kept(problem, evidences, told=told, outcome=outcome)
+            with _REFUTED.grading(scene.ctx.oracle):
+                kept = _kept(problem, evidences, told=told, outcome=outcome)
             if not outcome.get("timeout"):
                 _MEASURED.put(scene.ctx.oracle, key, kept)
         else:
@@ -2854,6 +2867,60 @@ class _Measured:
 
 
 _MEASURED = _Measured()
+
+
+class _Refuted:
+    """The mutants that an explanation of the grading has shown are not the student's code: on the first input of
+    a comparison, the mutated reference's value of the student's own call is not the student's value (or the mutant
+    raised where the student's code gave one).  A slip of the student's that a mutant is gives the student's value
+    on every call, so a mutant refuted once is not measured again in the grading's later explanations (problem 37's
+    checks of ``M``, ``f``, ``g`` ask the same mutants of the same functions on three calls).  It is left out only
+    where the call that refuted it ran no code of the reference that the later call does not run (``ran``): a second
+    slip in a function that only the earlier call ran would have refuted the first slip's mutant there.  Only a
+    mutant measured as it is refutes (not one screened by ``_twins``), and one grading's refutations are never
+    another's (``grading``: the oracle of the grading that the explanations belong to)."""
+
+    def __init__(self):
+        self._owner = None
+        self._by: dict = {}
+        self._local = threading.local()
+
+    @contextlib.contextmanager
+    def grading(self, owner):
+        if owner is not self._owner:
+            self._owner, self._by = owner, {}
+        self._local.on = owner is not None
+        try:
+            yield
+        finally:
+            self._local.on = False
+
+    def _on(self, ran) -> bool:
+        return ran is not None and getattr(self._local, "on", False)
+
+    def refute(self, mutant: Mutant, ran: frozenset | None) -> None:
+        if self._on(ran):
+            self._by.setdefault(_identity(mutant), []).append(ran)
+
+    def refuted(self, mutant: Mutant, ran: frozenset | None) -> bool:
+        return self._on(ran) and any(earlier <= ran for earlier in self._by.get(_identity(mutant), ()))
+
+
+_REFUTED = _Refuted()
+
+
+def _identity(mutant: Mutant) -> tuple:
+    """What makes a mutant the same slip in another explanation: its function, slip and code (code objects compare
+    by their contents), or the values its bindings set."""
+    return (mutant.module, mutant.path, mutant.slip, mutant.given, mutant.code,
+            tuple((id(holder), attribute, _fingerprint(value)) for holder, attribute, value in mutant.bindings))
+
+
+def _fingerprint(value):
+    try:
+        return pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # noqa: BLE001 - a value that cannot be pickled is told by its identity
+        return id(value)
 
 
 def _measure_key(problem: int, evidences: list[Evidence], told) -> tuple | None:
@@ -3002,8 +3069,9 @@ def _given(package, root: Path, problem: int, evidences: list[Evidence], origina
         trace.note("given", count=None if mutants is None else len(mutants),
                    functions=sorted({m.function for m in mutants or ()}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
+        ran = frozenset(_traced(package, root, first.source.probe, first.source.args, twins))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                         progress=progress, twins=twins) if mutants else []
+                         progress=progress, twins=twins, ran=ran) if mutants else []
     return kept, mutants
 
 
@@ -3365,7 +3433,7 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
         trace.note("constants", count=len(mutants), constants=sorted({m.function for m in mutants}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                         progress=progress) if mutants else []
+                         progress=progress, ran=frozenset(ran)) if mutants else []
     return (None if kept is None else _whole_starts_first(kept)), mutants
 
 
@@ -3385,6 +3453,7 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
         warnings.simplefilter("ignore")
         _TRACES["calls"] = {}
         kept, originals, found, progress, rivals, twins, making = None, {}, [], {}, None, (), 0.0
+        called = None  # the codes the first input's call runs, where the mutants are made for it
         try:
             root, package = _package()
             if constants is not None:  # the slips of these constants alone (``_drawn_constants``)
@@ -3412,6 +3481,8 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                         if mutants and only is not None:
                             mutants = [m for m in mutants if m.slip in only]
                         making = deadline.spent()[1]
+                        called = frozenset(ran if ran is not None else
+                                           _traced(package, root, first.source.probe, first.source.args, twins))
                         trace.note("mutated", count=None if mutants is None else len(mutants),
                                    functions=sorted({m.function for m in mutants or ()}),
                                    seconds=round(time.thread_time() - started, 3), making=round(making, 3))
@@ -3419,7 +3490,8 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                             mutants, rivals = late(mutants, told)
                             trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
                     if mutants and rivals is None:
-                        kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins)
+                        kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins,
+                                         ran=called)
                 if made and mutants == []:
                     kept = []  # no function of a region runs: none of their slips reproduces the value
                 if kept and made and told is None and only is None and _opposite(kept) is not None:
@@ -3432,7 +3504,7 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                 if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
                     with _Deadline(LATE_TIME_BUDGET) as deadline:
                         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                                         kept=found, progress=progress, twins=twins)
+                                         kept=found, progress=progress, twins=twins, ran=called)
             if kept:
                 trace.note("positions", of=len(mutants), kept=[(k, m.slip) for k, m in enumerate(mutants)
                                                               if any(m is x for x in kept)])
