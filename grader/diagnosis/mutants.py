@@ -2818,13 +2818,13 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     inputs = list(evidences)
     try:
         key = _measure_key(problem, evidences, told)
-        kept = _MEASURED.get(scene.ctx.oracle, key)
+        kept = _MEASURED.get(scene.ctx, key)
         if kept is None:
             outcome = {}
-            with _REFUTED.grading(scene.ctx.oracle):
+            with _REFUTED.grading(scene.ctx):
                 kept = _kept(problem, evidences, told=told, outcome=outcome)
             if not outcome.get("timeout"):
-                _MEASURED.put(scene.ctx.oracle, key, kept)
+                _MEASURED.put(scene.ctx, key, kept)
         else:
             trace.note("measured", count=len(kept))
         kept = None if kept is None else [m for m in kept if _precise(m, inputs)]
@@ -2841,15 +2841,16 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
 
 
 class _Measured:
-    """The mutants kept on a comparison's inputs (``_kept``), by what decides them, for the grading (the oracle) in
-    which they were measured: a run's failure that several checks explain (a right-hand side behind a run's state
-    and its event) asks the formula tier the same question on the same inputs, and the reference's code mutated
-    gives the same answer to it.  Measures that ran out of their time are not kept (the next may finish); one
+    """The mutants kept on a comparison's inputs (``_kept``), by what decides them, for the grading in which they
+    were measured (its context: one submission's problem; a batch's oracle serves every submission of a worker): a
+    run's failure that several checks explain (a right-hand side behind a run's state and its event) asks the
+    formula tier the same question on the same inputs, and the reference's code mutated gives the same answer to
+    it.  Measures that ran out of their time are not kept (the next may finish); one
     grading's measures are never another's (the cost of one grading does not depend on an earlier one), and only
     the latest grading's are kept."""
 
     def __init__(self):
-        self._owner = None  # the oracle of the grading the measures belong to
+        self._owner = None  # the context of the grading the measures belong to
         self._kept: dict = {}
 
     def get(self, owner, key):
@@ -2878,7 +2879,8 @@ class _Refuted:
     where the call that refuted it ran no code of the reference that the later call does not run (``ran``): a second
     slip in a function that only the earlier call ran would have refuted the first slip's mutant there.  Only a
     mutant measured as it is refutes (not one screened by ``_twins``), and one grading's refutations are never
-    another's (``grading``: the oracle of the grading that the explanations belong to)."""
+    another's (``grading``: the context of the grading that the explanations belong to, one submission's problem;
+    a batch's oracle serves every submission of a worker)."""
 
     def __init__(self):
         self._owner = None

@@ -5,7 +5,8 @@ grading does not measure it again, where the call that refuted it ran no code th
 * The same slip is named in the later explanation, with fewer mutants measured than in a grading of its own.
 * A refutation from a call that ran a function the later call does not run is not heard (a second slip there
   would have refuted the first slip's mutant).
-* Another grading hears none of it.
+* Another grading hears none of it, though the same oracle serves both (a batch's worker grades every submission
+  with one).
 """
 
 import importlib
@@ -58,9 +59,11 @@ def moments(pkg, a, b, tipped):
     return importlib.import_module(f"{pkg.__name__}.problem_96").moments(a, b, tipped)
 
 
-def grading():
-    """One grading's scene (its oracle is what the refutations belong to)."""
-    return SimpleNamespace(ctx=SimpleNamespace(check_id="p96.moments", oracle=SimpleNamespace(mode="live")))
+def grading(oracle=None):
+    """One grading's scene: its context (one submission's problem) is what the refutations belong to; the oracle
+    (given) may serve many, as a batch's does."""
+    oracle = SimpleNamespace(mode="live") if oracle is None else oracle
+    return SimpleNamespace(ctx=SimpleNamespace(check_id="p96.moments", oracle=oracle))
 
 
 def evidences_of(package, student, inputs):
@@ -136,3 +139,17 @@ def test_another_grading_hears_no_refutation(made_up, measured):
     del measured[:]
     mutants.mutant_slips(grading(), evidences_of(made_up, lever_swapped, LATER))
     assert len(measured) == measured_fresh > 0
+
+
+def test_another_submission_graded_by_the_same_oracle_hears_no_refutation(made_up, measured):
+    """The first submission's ``tip`` is wrong too, which refutes every slip of ``lever`` on its calls; the next
+    submission, graded with the same oracle, has only the slip of ``lever``, and its grading names it."""
+    def both_wrong(a, b, tipped):
+        return np.array([a * b - 0.1 * a, a ** 2 / 3.0 if tipped else 0.0])
+
+    oracle = SimpleNamespace(mode="live")
+    alone = mutants.mutant_slips(grading(), evidences_of(made_up, lever_swapped, LATER))
+    assert alone
+    assert mutants.mutant_slips(grading(oracle), evidences_of(made_up, both_wrong, FIRST)) == []
+    later = mutants.mutant_slips(grading(oracle), evidences_of(made_up, lever_swapped, LATER))
+    assert [h.name for h in later] == [h.name for h in alone]
