@@ -135,10 +135,12 @@ def inertias(draw):
 
 
 #: a body without special structure: a full (rotated) inertia, omega along no principal axis, every entry non-zero
+#: (the accelerations it holds before the call as well: an answer built from them is not the zero of a term left out)
 _A = np.array([[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]])
 GENERIC_STATE = {"m": 1.3, "B_I_B": _A @ np.diag([1.2, 2.0, 2.6]) @ _A.T, "A_IB": _A.T,
                  "B_r_IB": np.array([0.3, -0.2, 0.5]), "B_v_B": np.array([-0.4, 0.7, 0.2]),
-                 "B_a_B": np.array([0.6, -0.3, 0.9]), "B_omega_B": np.array([0.8, -1.1, 0.5])}
+                 "B_a_B": np.array([0.6, -0.3, 0.9]), "B_omega_B": np.array([0.8, -1.1, 0.5]),
+                 "B_omegaDot_B": np.array([-0.7, 0.4, 0.3])}
 
 STATES = st.fixed_dictionaries({
     "m": st.floats(0.5, 2.0, **FINITE),
