@@ -244,10 +244,30 @@ def reference_h(a, b):
     (lambda a, b: terms_of(a, b)["terms"]["coriolis"], "missing_gravity"),
     (lambda a, b: reference_h(a, b) - 2 * terms_of(a, b)["terms"]["coriolis"], "coriolis_sign"),
     (lambda a, b: reference_h(a, b) + terms_of(a, b)["extra"]["gyroscopic"], "extra_gyroscopic"),
+    # zeros: every term left out gives them, as do many other mistakes; no term is named
+    (lambda a, b: np.zeros(3), ""),
 ])
 def test_declared_terms_are_found_by_least_squares(monkeypatch, student, expected):
+    declared_terms_found(monkeypatch, student, expected, terms_of)
+
+
+def gravity_alone(a, b):
+    """A value made of one declared term."""
+    return {"terms": {"gravity": np.array([a, 1.0, 0.5 * b])}, "extra": {}}
+
+
+def test_zeros_for_a_value_of_one_term_are_that_term_left_out(monkeypatch):
+    declared_terms_found(monkeypatch, lambda a, b: np.zeros(3), "missing_gravity", gravity_alone)
+
+
+def declared_terms_found(monkeypatch, student, expected, terms):
+    """``student``'s value of ``stub.h``, whose terms are ``terms``, compared on random inputs: the diagnosis."""
     declare(monkeypatch, "stub.h", args=("scalar", "scalar"), names=("a", "b"), terms="stub.h_terms")
-    oracle = StubOracle({"stub.h": reference_h, "stub.h_terms": terms_of})
+
+    def reference(a, b):
+        return sum(terms(a, b)["terms"].values())
+
+    oracle = StubOracle({"stub.h": reference, "stub.h_terms": terms})
     ctx = Context(99, StubChild(lambda probe, a, b: student(a, b)), {}, None, 11, oracle)
     ctx.begin("p99.h_values")
     with pytest.raises(CheckFailure) as caught:

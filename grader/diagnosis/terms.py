@@ -8,7 +8,7 @@ import itertools
 import numpy as np
 
 from checks._diagnoses import DIAGNOSES, TERMS
-from .evidence import array_of, at, Hypothesis, within
+from .evidence import array_of, at, distinct, Hypothesis, within
 
 __all__ = [
     "term_values",
@@ -29,10 +29,15 @@ def term_slips(inputs: list) -> list:
     """The declared terms' slips that reproduce every input: the coefficients of ``got - expected`` on the terms
     (each present term's change: -1 missing, -2 sign-flipped, +1 doubled, -1/2 halved; each extra term's: +-1),
     found by least squares over the inputs and checked entrywise within the tolerance; several when the inputs
-    cannot tell them apart."""
+    cannot tell them apart.  A value that is zero on every input is no slip of a value made of several terms: all
+    of them left out give it, and so do many other mistakes (the mutants' tier keeps no slip that gives zeros
+    either); of a value made of one term, it is that term left out."""
     if any(one.terms is None for one in inputs):
         return []
     present = sorted(set().union(*(set(one.terms) for one in inputs)))
+    if len(present) > 1 and all(not distinct(one.evidence.got, np.zeros_like(one.evidence.got), one.evidence.tol)
+                                for one in inputs):
+        return []
     extra = sorted(set().union(*(set(one.extras or {}) for one in inputs)))
     columns = [("term", t) for t in present] + [("extra", t) for t in extra]
     if not columns or len(columns) > 8:
