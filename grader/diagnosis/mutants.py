@@ -295,16 +295,20 @@ def _functions(root: str) -> tuple[_Function, ...]:
     for path, regions, tree in modules:
         constants, sympy = _constants(tree), _sympy_names(tree.body)
         own = _OWN_MODULE.fullmatch(path.stem)
-        for node, names in _definitions(tree) if regions or own else ():
+        for node, names in _definitions(tree):
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
                 found.append(_Function(path.stem, names, node, inside, attributes, constants, angled, sympy,
                                        keywords=keywords))
-            elif own:
-                whole = ((int(own.group(1)), node.lineno, node.end_lineno + 1),)
+            else:  # given whole: by a problem's own module, or by the library (any problem's, ``LIBRARY``)
+                whole = ((int(own.group(1)) if own else LIBRARY, node.lineno, node.end_lineno + 1),)
                 found.append(_Function(path.stem, names, node, whole, attributes, constants, angled, sympy,
                                        given=True, keywords=keywords))
     return tuple(found)
+
+
+#: the problem of the regions of the functions the library gives whole (a constructor, a helper): each problem's
+LIBRARY = 0
 
 
 def _constants(tree: ast.Module) -> frozenset:
@@ -2287,17 +2291,20 @@ def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()
     the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for.  ``quick``
     (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs;
     ``ran``: the codes that call runs, where the caller traced it.  ``given``: the mutants of the functions of the
-    problem's own module that hold no region instead (those of problem N's module for problem N alone), in the
-    same order.  ``deadline``: the explanation's, against whose budget of making (``_Deadline.making``) the
+    problem's own module that hold no region instead (those of problem N's module for problem N alone), then
+    those of the library's modules (a constructor, a helper that the template gives whole), in the same order.  ``deadline``: the explanation's, against whose budget of making (``_Deadline.making``) the
     compiling of the mutants is counted."""
     ran = _traced(package, root, probe, args, quick) if ran is None else ran
     found: list[Mutant] = []
     reads: list[Mutant] = []
-    for function in _functions(str(root)):
+    functions = _functions(str(root))
+    if given:  # the problem's own module's first, then the library's
+        functions = sorted(functions, key=lambda function: function.regions[0][0] == LIBRARY)
+    for function in functions:
         if function.given != given:
             continue
         lines = tuple((first, last) for label, first, last in function.regions
-                      if (label == problem if given else abs(label - problem) <= NEIGHBOURS))
+                      if (label in (problem, LIBRARY) if given else abs(label - problem) <= NEIGHBOURS))
         live = _live(package, function.module, function.path)
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue

@@ -45,13 +45,16 @@ class StandInChild:
 
 
 @contextlib.contextmanager
-def made_up_package(tmp_path, monkeypatch, source: str, number: int, label: str):
-    """A package of one made-up problem (``problem_<number>.py`` holding ``source``), imported privately under a
-    name of its own, that the formula tier mutates in place of the reference while the context lasts."""
+def made_up_package(tmp_path, monkeypatch, source: str, number: int, label: str, library: dict | None = None):
+    """A package of one made-up problem (``problem_<number>.py`` holding ``source``, and the modules of
+    ``library``, by file name), imported privately under a name of its own, that the formula tier mutates in
+    place of the reference while the context lasts."""
     root = tmp_path / f"made_up_{label}"
     root.mkdir()
     (root / "__init__.py").write_text('"""A made-up package."""\n')
     (root / f"problem_{number}.py").write_text(source)
+    for name, text in (library or {}).items():
+        (root / name).write_text(text)
     package = private_import(f"_made_up_{label}_{next(_NUMBERS)}", root)
     monkeypatch.setattr(mutants, "_package", lambda: (root, package))
     try:
