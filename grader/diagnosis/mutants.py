@@ -2682,10 +2682,12 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
             # entry), and every value off by the same amount
             found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
                 f"{detail}; it is the same on every input: your values are all off by it"), twin=True))
-        elif mutant.given and mutant.slip in _ENTRIES:  # a number of data the template gives: where a value starts
+        elif (mutant.given or mutant.bindings) and mutant.slip in _ENTRIES:  # a number of data the template
+            # gives (a list that a given function sets, a module's constant): where a value starts or sits
+            data = f"the constant `{mutant.function}`" if mutant.bindings else f"the data `{mutant.function}` sets"
             found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
-                f"{detail}; it is a number of the data `{mutant.function}` sets, so it may be where a value starts "
-                "or sits: an offset"), twin=True))
+                f"{detail}; it is a number of {data}, so it may be where a value starts or sits: an offset"),
+                twin=True))
         unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
         for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told

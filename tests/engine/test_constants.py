@@ -225,3 +225,16 @@ def test_an_expression_of_a_constant_changed_otherwise_is_no_sign(tmp_path):
     """The near miss: the part along the slope of twice the slope's angle, which no sign gives."""
     found = gravity_slips(tmp_path, "I_GRAV = np.array([np.sin(2 * SLOPE), -np.cos(SLOPE), 0.0])")
     assert "sign_flip" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
+def test_an_entry_of_a_constant_written_0_is_a_term_left_out_and_an_offset(tmp_path):
+    """Problem 46's wire anchor with its first coordinate typed 0: a number of the data the module holds, which
+    is where the anchor sits; told as a term left out and as an offset, as an entry of a list that a given
+    function sets is (``_ENTRIES``)."""
+    states = [([[0.3, -0.5, 0.8, 0.0, 0.0, 0.0], [0.1, 0.4, -0.2, 0.0, 0.0, 0.0]],),
+              ([[-0.6, 0.2, 0.5, 0.0, 0.0, 0.0], [0.9, -0.3, 0.1, 0.0, 0.0, 0.0]],)]
+    found = planted_slips(tmp_path, "problem_46.py", "ANCHOR = np.array([-1.0, -1.0, -1.0])",
+                          "ANCHOR = np.array([0.0, -1.0, -1.0])", "problem_46.event", states, ("values",),
+                          "p46.event_function")
+    assert {h.name for h in found} == {"missing_term", "offset"}, [(h.name, h.detail) for h in found]
+    assert any("a number of the constant `ANCHOR`" in h.detail for h in found), [h.detail for h in found]
