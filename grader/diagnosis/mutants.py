@@ -2285,26 +2285,25 @@ LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", 
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
-               ran: set | None = None, given: bool = False, deadline: _Deadline | None = None) -> list[Mutant] | None:
+               ran: set | None = None, given: bool = False, deadline: _Deadline | None = None,
+               library: bool = False) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
     there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
     the reads of names (``LATE_SLIPS``) come after all the others, as many as the bound leaves room for.  ``quick``
     (``_twins``): the functions' codes without simplifications, which the call that finds the functions runs;
     ``ran``: the codes that call runs, where the caller traced it.  ``given``: the mutants of the functions of the
-    problem's own module that hold no region instead (those of problem N's module for problem N alone), then
-    those of the library's modules (a constructor, a helper that the template gives whole), in the same order.  ``deadline``: the explanation's, against whose budget of making (``_Deadline.making``) the
+    problem's own module that hold no region instead (those of problem N's module for problem N alone), or with
+    ``library`` those of the library's modules (a constructor, a helper that the template gives whole), in the
+    same order.  ``deadline``: the explanation's, against whose budget of making (``_Deadline.making``) the
     compiling of the mutants is counted."""
     ran = _traced(package, root, probe, args, quick) if ran is None else ran
     found: list[Mutant] = []
     reads: list[Mutant] = []
-    functions = _functions(str(root))
-    if given:  # the problem's own module's first, then the library's
-        functions = sorted(functions, key=lambda function: function.regions[0][0] == LIBRARY)
-    for function in functions:
+    for function in _functions(str(root)):
         if function.given != given:
             continue
         lines = tuple((first, last) for label, first, last in function.regions
-                      if (label in (problem, LIBRARY) if given else abs(label - problem) <= NEIGHBOURS))
+                      if (label == (LIBRARY if library else problem) if given else abs(label - problem) <= NEIGHBOURS))
         live = _live(package, function.module, function.path)
         if not lines or live is None or live.__code__ not in ran or _owned_earlier(function, problem):
             continue
@@ -3064,20 +3063,23 @@ def late(mutants: list[Mutant], told) -> tuple[list[Mutant], int]:
 
 
 def _given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
-           progress: dict, twins: tuple = ()) -> tuple:
+           progress: dict, twins: tuple = (), library: bool = False) -> tuple:
     """``(kept, mutants)`` of the slips of the functions that the problem's own module gives whole (``given``),
     tried where no slip of a solution region reproduced the student's value: the student's file holds them too,
     and a slip there is less likely than in the code the student wrote, so they come after all of it, within a
     budget of their own (``GIVEN_TIME_BUDGET``; kept None when it runs out).  ``twins``: those the regions' slips
     were screened with (``_twins``, where they hold), with which the call is traced and each of these mutants
     screened too (a slip of a given function that a simplifying function of a region reads, problem 40's
-    ``particle_positions``, would else pay the simplification for every mutant)."""
+    ``particle_positions``, would else pay the simplification for every mutant).  ``library``: the functions the
+    library's modules give whole instead (a constructor, a helper), tried last of all, after the module
+    constants: a student edits the code the template gives in a library module less often still, and a default
+    taken in a constructor gives what a call that leaves the argument out gives."""
     started = time.thread_time()
     first = evidences[0]
     with _Deadline(GIVEN_TIME_BUDGET) as deadline:
         mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, given=True,
-                             deadline=deadline)
-        trace.note("given", count=None if mutants is None else len(mutants),
+                             deadline=deadline, library=library)
+        trace.note("library" if library else "given", count=None if mutants is None else len(mutants),
                    functions=sorted({m.function for m in mutants or ()}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         ran = frozenset(_traced(package, root, first.source.probe, first.source.args, twins))
@@ -3512,6 +3514,9 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                     kept, mutants = _given(package, root, problem, evidences, originals, judged, progress, twins)
                 if kept == [] and made and told is None and only is None:
                     kept, mutants = _constant_stage(package, root, problem, evidences, originals, judged, progress)
+                if kept == [] and made and told is None and only is None:  # the library's given code, last
+                    kept, mutants = _given(package, root, problem, evidences, originals, judged, progress, twins,
+                                           library=True)
                 if mutants and rivals is not None:  # the late budget counts the evaluation, not the making (cached)
                     with _Deadline(LATE_TIME_BUDGET) as deadline:
                         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,

@@ -1,7 +1,7 @@
 """The formula tier on the code that a problem's own module gives whole (``grader.diagnosis.mutants``: ``given``):
 a function of ``problem_NN.py`` that holds no solution region is the student's file too, and its slips are tried
-where no slip of a region reproduces the student's value; then those of the functions the library gives whole (a
-constructor of ``bound.py``), which the student's package holds as well.
+where no slip of a region reproduces the student's value; last of all, after the module constants, those of the
+functions the library gives whole (a constructor), which the student's package holds as well.
 
 Problem 34's biped and gait are such functions (its module has no region).  The test plants a mistake into a copy
 of the reference and asks the tier on two inputs, as ``tests/engine/test_mutants.py`` does; the near miss is the
