@@ -898,6 +898,29 @@ def test_a_grading_measures_the_same_question_once(made_up, monkeypatch):
     assert mutants.mutant_slips(grading, hanging) == [] and len(measured) > count
 
 
+def test_another_submission_graded_by_the_same_oracle_measures_anew(made_up, monkeypatch):
+    """A batch's worker grades every submission with one oracle: the measures belong to one grading's context
+    (one submission's problem), so the next submission's same question is measured again, and the measures of a
+    batch are not all kept."""
+    measured = []
+    evaluate = mutants._evaluate
+
+    def counted(*args, **kwargs):
+        measured.append(1)
+        return evaluate(*args, **kwargs)
+
+    monkeypatch.setattr(mutants, "_evaluate", counted)
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
+    oracle = SimpleNamespace(mode="live")
+    first = mutants.mutant_slips(SimpleNamespace(ctx=SimpleNamespace(check_id="p98.difference", oracle=oracle)),
+                                 evidences)
+    count = len(measured)
+    assert first and count
+    later = mutants.mutant_slips(SimpleNamespace(ctx=SimpleNamespace(check_id="p98.difference", oracle=oracle)),
+                                 evidences)
+    assert later == first and len(measured) > count
+
+
 def test_an_explanation_traces_its_call_once(made_up, monkeypatch):
     """A value that no slip of a region reproduces is heard by the stages of the given code and of the constants,
     each of which reads the codes the compared call runs: the call is traced once for the explanation, and anew
