@@ -2888,32 +2888,32 @@ class _Refuted:
     slip in a function that only the earlier call ran would have refuted the first slip's mutant there.  Only a
     mutant measured as it is refutes (not one screened by ``_twins``), and one grading's refutations are never
     another's (``grading``: the context of the grading that the explanations belong to, one submission's problem;
-    a batch's oracle serves every submission of a worker)."""
+    a batch's oracle serves every submission of a worker).  Each thread keeps its own: a process that grades in
+    several threads never hears one thread's refutations in another's grading."""
 
     def __init__(self):
-        self._owner = None
-        self._by: dict = {}
-        self._local = threading.local()
+        self._local = threading.local()  # ``owner``, ``by`` (mutant -> the codes of the calls that refuted it), ``on``
 
     @contextlib.contextmanager
     def grading(self, owner):
-        if owner is not self._owner:
-            self._owner, self._by = owner, {}
-        self._local.on = owner is not None
+        local = self._local
+        if owner is not getattr(local, "owner", None):
+            local.owner, local.by = owner, {}
+        local.on = owner is not None
         try:
             yield
         finally:
-            self._local.on = False
+            local.on = False
 
     def _on(self, ran) -> bool:
         return ran is not None and getattr(self._local, "on", False)
 
     def refute(self, mutant: Mutant, ran: frozenset | None) -> None:
         if self._on(ran):
-            self._by.setdefault(_identity(mutant), []).append(ran)
+            self._local.by.setdefault(_identity(mutant), []).append(ran)
 
     def refuted(self, mutant: Mutant, ran: frozenset | None) -> bool:
-        return self._on(ran) and any(earlier <= ran for earlier in self._by.get(_identity(mutant), ()))
+        return self._on(ran) and any(earlier <= ran for earlier in self._local.by.get(_identity(mutant), ()))
 
 
 _REFUTED = _Refuted()

@@ -153,3 +153,27 @@ def test_another_submission_graded_by_the_same_oracle_hears_no_refutation(made_u
     assert mutants.mutant_slips(grading(oracle), evidences_of(made_up, both_wrong, FIRST)) == []
     later = mutants.mutant_slips(grading(oracle), evidences_of(made_up, lever_swapped, LATER))
     assert [h.name for h in later] == [h.name for h in alone]
+
+
+
+def test_the_refutations_of_a_grading_in_another_thread_are_not_heard():
+    """Two gradings under way at once in two threads of one process: the one thread's refutations are not heard in
+    the other's grading (each thread keeps its own), and its own are."""
+    import threading
+
+    store = mutants._Refuted()
+    mutant = mutants.Mutant("problem_96", ("lever",), "sign", None)
+    ran = frozenset({"lever"})
+    mine, theirs = object(), object()
+
+    def other():
+        with store.grading(theirs):
+            store.refute(mutant, ran)
+
+    with store.grading(mine):
+        thread = threading.Thread(target=other)
+        thread.start()
+        thread.join()
+        assert not store.refuted(mutant, ran)
+        store.refute(mutant, ran)
+        assert store.refuted(mutant, ran)
