@@ -867,18 +867,24 @@ def test_a_mutant_that_hangs_is_interrupted_and_names_nothing(made_up, monkeypat
     assert list(settle(1.0, 0.3)) == pytest.approx([1.2, 0.3])
 
 
-def test_a_grading_measures_the_same_question_once(made_up, monkeypatch):
-    """Two explanations of one grading (one oracle) that ask the tier the same question (the same inputs, student's
-    values and families told) measure the mutants once and hear the same slips; another grading, or another
-    student's value, measures them anew; a measure that ran out of its time is measured again."""
-    measured = []
+@pytest.fixture
+def measured(monkeypatch):
+    """One entry for each measure of the tier (``_evaluate``)."""
+    counted = []
     evaluate = mutants._evaluate
 
-    def counted(*args, **kwargs):
-        measured.append(1)
+    def counting(*args, **kwargs):
+        counted.append(1)
         return evaluate(*args, **kwargs)
 
-    monkeypatch.setattr(mutants, "_evaluate", counted)
+    monkeypatch.setattr(mutants, "_evaluate", counting)
+    return counted
+
+
+def test_a_grading_measures_the_same_question_once(made_up, monkeypatch, measured):
+    """Two explanations of one grading (one context) that ask the tier the same question (the same inputs,
+    student's values and families told) measure the mutants once and hear the same slips; another grading, or
+    another student's value, measures them anew; a measure that ran out of its time is measured again."""
     evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
     grading = scene("p98.difference")
     first = mutants.mutant_slips(grading, evidences)
@@ -898,18 +904,10 @@ def test_a_grading_measures_the_same_question_once(made_up, monkeypatch):
     assert mutants.mutant_slips(grading, hanging) == [] and len(measured) > count
 
 
-def test_another_submission_graded_by_the_same_oracle_measures_anew(made_up, monkeypatch):
+def test_another_submission_graded_by_the_same_oracle_measures_anew(made_up, measured):
     """A batch's worker grades every submission with one oracle: the measures belong to one grading's context
     (one submission's problem), so the next submission's same question is measured again, and the measures of a
     batch are not all kept."""
-    measured = []
-    evaluate = mutants._evaluate
-
-    def counted(*args, **kwargs):
-        measured.append(1)
-        return evaluate(*args, **kwargs)
-
-    monkeypatch.setattr(mutants, "_evaluate", counted)
     evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0), (2.5, -0.5)])
     oracle = SimpleNamespace(mode="live")
     first = mutants.mutant_slips(SimpleNamespace(ctx=SimpleNamespace(check_id="p98.difference", oracle=oracle)),
