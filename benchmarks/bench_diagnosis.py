@@ -10,9 +10,10 @@ each with the engine on and off, in turns (on, off, on, off, ...) so that the ma
 on both alike.  Every grading has a fresh in-memory reference (no result of an earlier grading is reused; the
 reference's persisted long simulations and fixed-step runs are read from the disk cache, as they are after a
 course's first student).  Prints each case's median wall time on and off and their ratio, the median time spent
-in the engine itself (``grader.diagnosis.explain``, timed in the gradings with it on) and its share of the
-grading, and for the passing and the failing gradings the ratio of the sums of the medians and the engine's share
-of the time (targets: the engine not asked on a passing grading; at most 10% more on a failing one).
+in the engine itself (its doors ``explain``, ``doubt``, ``judge`` and ``rival`` of ``grader.diagnosis``, timed in
+the gradings with it on) and its share of the grading, and for the passing and the failing gradings the ratio of
+the sums of the medians and the engine's share of the time (targets: the engine not asked on a passing grading; at
+most 10% more on a failing one).
 """
 
 from __future__ import annotations
@@ -60,21 +61,29 @@ def cases():
 SPENT = {"seconds": 0.0, "calls": 0}
 
 
+#: the engine's doors, as the grading context asks them: a failure that names no cause (``explain``), one that
+#: blames a run's integration (``doubt``), one that names a symptom (``judge``) or an effect its value shows
+#: (``rival``)
+DOORS = ("explain", "doubt", "judge", "rival")
+
+
 def instrument() -> None:
-    """Time every call of the engine (``explain``, as the grading context asks it)."""
+    """Time every call of the engine, through each of its doors (``DOORS``)."""
     import grader.context as context
 
-    explain = context.explain
+    def timed(door):
+        def timed_door(*args, **kwargs):
+            start = time.perf_counter()
+            try:
+                return door(*args, **kwargs)
+            finally:
+                SPENT["seconds"] += time.perf_counter() - start
+                SPENT["calls"] += 1
 
-    def timed_explain(*args, **kwargs):
-        start = time.perf_counter()
-        try:
-            return explain(*args, **kwargs)
-        finally:
-            SPENT["seconds"] += time.perf_counter() - start
-            SPENT["calls"] += 1
+        return timed_door
 
-    context.explain = timed_explain
+    for name in DOORS:
+        setattr(context, name, timed(getattr(context, name)))
 
 
 def timed(grade, problem, submission, on: bool) -> tuple[float, float, int]:
