@@ -2221,7 +2221,7 @@ def _copied(args) -> tuple:
 _TRACES: dict = {"calls": None}
 
 
-def _traced(package, root: Path, probe, args, quick: tuple = ()) -> set:
+def _traced(package, root: Path, probe, args, quick: tuple = ()) -> frozenset:
     """The code objects of the reference's folder that ``probe(*args)`` runs on the private package; with
     ``quick`` (``_twins``), run with those codes without simplifications in their functions' place (a profiler
     slows sympy's simplifications tenfold), each counted as its function's own code.  Traced once for each
@@ -2235,7 +2235,7 @@ def _traced(package, root: Path, probe, args, quick: tuple = ()) -> set:
     return calls[key][1]
 
 
-def _traced_once(package, root: Path, probe, args, quick: tuple = ()) -> set:
+def _traced_once(package, root: Path, probe, args, quick: tuple = ()) -> frozenset:
     seen: set = set()
     prefix = str(root)
 
@@ -2251,12 +2251,12 @@ def _traced_once(package, root: Path, probe, args, quick: tuple = ()) -> set:
         sys.setprofile(profile)
         _call(package, probe, args, (), quick=bool(quick))
     except Exception:  # noqa: BLE001 - the oracle computed this call: a failure here leaves nothing to mutate
-        return set()
+        return frozenset()
     finally:
         sys.setprofile(previous)
         for holder, twin in quick:
             holder.__code__ = own[twin]
-    return {own.get(code, code) for code in seen}
+    return frozenset(own.get(code, code) for code in seen)
 
 
 # ---------------------------------------------------------------------------------------------- the mutants
@@ -2285,7 +2285,7 @@ LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", 
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
-               ran: set | None = None, given: bool = False, deadline: _Deadline | None = None,
+               ran: frozenset | None = None, given: bool = False, deadline: _Deadline | None = None,
                library: bool = False) -> list[Mutant] | None:
     """The mutants of the functions of ``problem`` that ``probe(*args)`` runs on the private package, or None when
     there are more than ``MAX_MUTANTS`` of the slips other than the reads of names (the slips cannot all be tried);
@@ -2853,9 +2853,9 @@ class _Measured:
     were measured (its context: one submission's problem; a batch's oracle serves every submission of a worker): a
     run's failure that several checks explain (a right-hand side behind a run's state and its event) asks the
     formula tier the same question on the same inputs, and the reference's code mutated gives the same answer to
-    it.  Measures that ran out of their time are not kept (the next may finish); one
-    grading's measures are never another's (the cost of one grading does not depend on an earlier one), and only
-    the latest grading's are kept."""
+    it.  Measures that ran out of their time are not kept (the next may finish); one grading's measures are never
+    another's (the cost of one grading does not depend on an earlier one), and only the latest grading's are
+    kept."""
 
     def __init__(self):
         self._owner = None  # the context of the grading the measures belong to
@@ -3082,7 +3082,7 @@ def _given(package, root: Path, problem: int, evidences: list[Evidence], origina
         trace.note("library" if library else "given", count=None if mutants is None else len(mutants),
                    functions=sorted({m.function for m in mutants or ()}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
-        ran = frozenset(_traced(package, root, first.source.probe, first.source.args, twins))
+        ran = _traced(package, root, first.source.probe, first.source.args, twins)
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
                          progress=progress, twins=twins, ran=ran) if mutants else []
     return kept, mutants
@@ -3441,12 +3441,12 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
     with _Deadline(CONSTANT_TIME_BUDGET) as deadline:
         ran = _traced(package, root, first.source.probe, first.source.args)
         with deadline.making():
-            mutants = [m for m in _made_constants(package, str(root), problem, frozenset(ran))
+            mutants = [m for m in _made_constants(package, str(root), problem, ran)
                        if names is None or (m.module, m.path[0]) in names]
         trace.note("constants", count=len(mutants), constants=sorted({m.function for m in mutants}),
                    seconds=round(time.thread_time() - started, 3), making=round(deadline.spent()[1], 3))
         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged,
-                         progress=progress, ran=frozenset(ran)) if mutants else []
+                         progress=progress, ran=ran) if mutants else []
     return (None if kept is None else _whole_starts_first(kept)), mutants
 
 
@@ -3494,8 +3494,8 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                         if mutants and only is not None:
                             mutants = [m for m in mutants if m.slip in only]
                         making = deadline.spent()[1]
-                        called = frozenset(ran if ran is not None else
-                                           _traced(package, root, first.source.probe, first.source.args, twins))
+                        called = ran if ran is not None else \
+                            _traced(package, root, first.source.probe, first.source.args, twins)
                         trace.note("mutated", count=None if mutants is None else len(mutants),
                                    functions=sorted({m.function for m in mutants or ()}),
                                    seconds=round(time.thread_time() - started, 3), making=round(making, 3))
