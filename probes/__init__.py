@@ -54,7 +54,7 @@ import contextlib
 import importlib
 import threading
 
-__all__ = ["probe", "module", "lookup", "name_of", "remembered", "fresh", "ProbeLookupError"]
+__all__ = ["probe", "module", "lookup", "name_of", "remembered", "fresh", "kept_for_one_code", "ProbeLookupError"]
 
 #: the keywords a probe may declare
 DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw", "part", "rebind")
@@ -99,25 +99,58 @@ class Flag(threading.local):
             self.on = before
 
 
-_FRESH = Flag()
+class _Fresh(Flag):
+    """``Flag`` of ``fresh()``, with the store of ``kept_for_one_code()`` (None: nothing is kept within)."""
+
+    kept = None
+
+
+_FRESH = _Fresh()
 
 
 def remembered(store: dict, key, make):
     """``store[key]``, made by ``make()`` the first time: what a probe computes once per package and process (a
-    symbolic answer simplified and lambdified).  Within ``fresh()`` it is made anew and not kept."""
+    symbolic answer simplified and lambdified).  Within ``fresh()`` it is made anew and not kept, unless a
+    ``kept_for_one_code()`` around it keeps it until that block ends."""
     if _FRESH.on:
-        return make()
+        kept = _FRESH.kept
+        if kept is None:
+            return make()
+        key = (id(store), key)
+        if key not in kept:
+            kept[key] = make()
+        return kept[key]
     if key not in store:
         store[key] = make()
     return store[key]
 
 
 @contextlib.contextmanager
-def fresh():
+def fresh(alone: bool = False):
     """Within: the probes of this thread remember nothing (``remembered``), for a package whose functions' code
-    changes between calls (the diagnosis engine's mutants of the reference)."""
-    with _FRESH.within():
+    changes between calls (the diagnosis engine's mutants of the reference); ``alone``: nor do they hear what a
+    ``kept_for_one_code()`` around keeps (the package's constants are bound to other values within)."""
+    before = _FRESH.kept
+    if alone:
+        _FRESH.kept = None
+    try:
+        with _FRESH.within():
+            yield
+    finally:
+        _FRESH.kept = before
+
+
+@contextlib.contextmanager
+def kept_for_one_code(store: dict | None = None):
+    """Within: what the probes of this thread compute inside ``fresh()`` is remembered in ``store`` (a new one
+    where None is given), as the calls of a package whose code does not change remember it: the calls of one code
+    of a package on several inputs (one mutant of the reference) share it, and no other code hears it."""
+    before = _FRESH.kept
+    _FRESH.kept = {} if store is None else store
+    try:
         yield
+    finally:
+        _FRESH.kept = before
 
 
 def module(package, name):

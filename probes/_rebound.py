@@ -26,7 +26,8 @@ def _form(name, bindings, args):
 @probe(returns=ByArgs(_form), says="{0} at other constants")
 def rebound(pkg, name, bindings, args):
     """``name(*args)`` on the package with the constants of ``bindings`` bound to their values (made anew:
-    ``probes.fresh``, so that nothing computed at the sheet's constants is reused)."""
+    ``probes.fresh``, alone: nothing computed at the sheet's constants is reused, not even for one code of the
+    package on several inputs)."""
     inner = lookup(name)
     kept = []
     try:
@@ -35,7 +36,7 @@ def rebound(pkg, name, bindings, args):
             before = getattr(target, constant, _MISSING)
             kept.append((target, constant, before))
             setattr(target, constant, _like(before, value))
-        with fresh():
+        with fresh(alone=True):
             return inner(pkg, *args)
     finally:
         for target, constant, before in reversed(kept):
