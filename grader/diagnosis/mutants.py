@@ -127,13 +127,18 @@ by ``probes._symbolic.quick`` (a walk of the expression, not generated code), an
 functions run and the slips of the functions the module gives whole (``_given``) that the call reaches; this holds only where the reference's own value, so computed, is the expected one on every input
 (``_holds``), else every mutant is evaluated as it is.  A mutant that reproduces the student's value when screened
 is evaluated again as it is, and that value decides: the screen can only leave out a mutant whose value depends on
-an expression's form.
+an expression's form.  That evaluation is counted apart from the screening, against a budget of its own
+(``CONFIRMING_TIME_BUDGET``: one of problem 40's mutants takes longer to simplify than all of them to screen); what
+the probes compute once for a mutant's code is kept for its inputs and later explanations (``_CONFIRMED``); and a
+screened mutant of a slip of the same function as one kept already is kept on its screened value, for it adds no
+name to the finding.
 """
 
 from __future__ import annotations
 
 import __future__
 import ast
+import collections
 import contextlib
 import copy
 import ctypes
@@ -175,6 +180,10 @@ TIME_BUDGET = 2.0
 #: whose mutants an earlier one made spends next to nothing on it).  It depends on the reference alone, not on the
 #: student: the most, every function of problem 26 and its neighbours, take about 2 s on an idle machine
 MAKING_TIME_BUDGET = 8.0
+#: the CPU time of one explanation's mutants that a screening without sympy's simplifications kept, evaluated as
+#: they are (their simplifications, which decide) [s]: few reproduce the student's value, and one of problem 40's
+#: takes 1.5 s to simplify on an idle machine (the reference's own value, 0.4 s), more than the screening of all
+CONFIRMING_TIME_BUDGET = 4.0
 #: where an earlier tier already explained the answer, the formula tier's mutants tried at most, those of the
 #: families not told yet first, then those of the families told (a rival of a family told adds a name, not an
 #: explanation), within ``LATE_TIME_BUDGET``: where the time runs out before the rivals of other families were all
@@ -2423,14 +2432,19 @@ class _Deadline:
     and waited for a core where the scheduler tells it (Linux), so that a heavily loaded machine does not stop the
     work early.  That bound counts the collections too: work that does nothing but collect garbage is stopped.
 
-    The work inside ``making()`` (the making of mutants: the same for every answer, and kept for the process) is
-    counted apart, against ``making`` seconds (``MAKING_TIME_BUDGET``), so that ``seconds`` bounds the measuring of
-    one answer alone, whether or not an earlier explanation of the process made its mutants already."""
+    Two kinds of work are counted apart, each against a budget of its own, so that ``seconds`` bounds the
+    screening of one answer's mutants alone: the work inside ``making()`` (the making of mutants: the same for every
+    answer, and kept for the process), against ``making`` seconds (``MAKING_TIME_BUDGET``), whether or not an
+    earlier explanation of the process made its mutants already; and the work inside ``confirming()`` (a mutant
+    that a screening without simplifications kept, evaluated as it is), against ``confirming`` seconds
+    (``CONFIRMING_TIME_BUDGET``): a simplification of a symbolic answer may take longer than the screening of every
+    mutant, and it is paid only for the few that reproduce the student's value."""
 
-    def __init__(self, seconds: float, making: float | None = None):
+    def __init__(self, seconds: float, making: float | None = None, confirming: float | None = None):
         self.thread = threading.get_ident()
         self.seconds = seconds
-        self.making_seconds = MAKING_TIME_BUDGET if making is None else making
+        self.apart = {"making": MAKING_TIME_BUDGET if making is None else making,
+                      "confirming": CONFIRMING_TIME_BUDGET if confirming is None else confirming}
         self.lock = threading.Lock()
         self.armed = True
         self.fired = False
@@ -2440,8 +2454,8 @@ class _Deadline:
         self.schedstat = _schedstat(threading.get_native_id())
         self.queued = 0.0  # the last time ready to run and waiting for a core that the scheduler told
         self.start = (0.0, 0.0)
-        self.made = (0.0, 0.0)  # the CPU and wall time spent making, in the periods closed
-        self.making_since = None  # where the period of making now open began
+        self.closed = {kind: (0.0, 0.0) for kind in self.apart}  # the CPU and wall time of each kind, periods closed
+        self.open = None  # ``(kind, since)``: the period of work counted apart now open
         self.timer = threading.Thread(target=self._watch, daemon=True)
 
     def _now(self) -> tuple[float, float]:
@@ -2454,43 +2468,57 @@ class _Deadline:
         collected = _collected(self.thread, self.clock)
         return (time.clock_gettime(self.clock) if self.clock is not None else wall) - collected, wall - self.queued
 
-    def _accounts(self, now: tuple[float, float]) -> tuple[tuple[float, float], tuple[float, float]]:
-        """``((cpu, wall) measuring, (cpu, wall) making)`` spent until ``now``."""
+    def _accounts(self, now: tuple[float, float]) -> tuple[tuple[float, float], dict]:
+        """``((cpu, wall) screening, {kind: (cpu, wall)} of the work counted apart)`` spent until ``now``."""
         with self.lock:
-            made, since = self.made, self.making_since
-        if since is not None:
-            made = (made[0] + now[0] - since[0], made[1] + now[1] - since[1])
-        return (now[0] - self.start[0] - made[0], now[1] - self.start[1] - made[1]), made
+            apart, current = dict(self.closed), self.open
+        if current is not None:
+            kind, since = current
+            apart[kind] = (apart[kind][0] + now[0] - since[0], apart[kind][1] + now[1] - since[1])
+        cpu = sum(spent[0] for spent in apart.values())
+        wall = sum(spent[1] for spent in apart.values())
+        return (now[0] - self.start[0] - cpu, now[1] - self.start[1] - wall), apart
 
     def spent(self) -> tuple[float, float]:
-        """The CPU time spent so far measuring, and making [s]."""
-        measuring, making = self._accounts(self._now())
-        return measuring[0], making[0]
+        """The CPU time spent so far screening, and making [s]."""
+        measuring, apart = self._accounts(self._now())
+        return measuring[0], apart["making"][0]
 
     def _spent(self) -> bool:
-        measuring, making = self._accounts(self._now())
+        measuring, apart = self._accounts(self._now())
         return (measuring[0] >= self.seconds or measuring[1] >= WAIT_FACTOR * self.seconds
-                or making[0] >= self.making_seconds or making[1] >= WAIT_FACTOR * self.making_seconds)
+                or any(apart[kind][0] >= budget or apart[kind][1] >= WAIT_FACTOR * budget
+                       for kind, budget in self.apart.items()))
 
     @contextlib.contextmanager
-    def making(self):
-        """The work inside is the making of mutants, counted against its own budget (nested, the outer counts)."""
-        if self.making_since is not None:
+    def _apart(self, kind: str):
+        """The work inside is of ``kind``, counted against its own budget (nested in any such period, the outer
+        counts)."""
+        if self.open is not None:
             yield self
             return
         since = self._now()
         with self.lock:
-            self.making_since = since
+            self.open = (kind, since)
         try:
             yield self
         finally:
             now = self._now()
             with self.lock:
-                self.made = (self.made[0] + now[0] - since[0], self.made[1] + now[1] - since[1])
-                self.making_since = None
+                spent = self.closed[kind]
+                self.closed[kind] = (spent[0] + now[0] - since[0], spent[1] + now[1] - since[1])
+                self.open = None
+
+    def making(self):
+        """The work inside is the making of mutants (``MAKING_TIME_BUDGET``)."""
+        return self._apart("making")
+
+    def confirming(self):
+        """The work inside is a screened mutant evaluated as it is (``CONFIRMING_TIME_BUDGET``)."""
+        return self._apart("confirming")
 
     def _watch(self) -> None:
-        while not self.done.wait(min(_POLL, self.seconds, self.making_seconds)):
+        while not self.done.wait(min(_POLL, self.seconds, *self.apart.values())):
             if self._spent():
                 break
         else:
@@ -2542,8 +2570,11 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out.
     ``twins`` (``_twins``, where the reference's value holds without them): the codes without simplifications of
     the functions that simplify, with which each mutant is screened, its symbolic answers read quickly; a mutant
-    that reproduces the student's value so is evaluated again as it is, and that value decides.  ``ran``: the codes
-    the first input's call runs, where the grading's refutations (``_Refuted``) are kept and heard."""
+    that reproduces the student's value so is evaluated again as it is, and that value decides (unless a mutant of
+    the same slip of the same function is kept already: it would add no name).  ``ran``: the codes the first input's
+    call runs, where the grading's refutations (``_Refuted``) are kept and heard."""
+    from probes import kept_for_one_code
+
     kept = [] if kept is None else kept
     progress = {} if progress is None else progress
     calls = [(e.source.probe, _kept_once(e.source.args)) for e in inputs]
@@ -2562,14 +2593,18 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound
             try:
                 _bind(mutant.bindings, originals)
-                values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)],
-                                     misses=misses)
-                if values is not None and any(parts):
-                    values = _reproduced(package, inputs, calls, misses=misses)
+                with kept_for_one_code():
+                    values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)],
+                                         misses=misses)
+                    if values is not None and any(parts):
+                        values = _reproduced(package, inputs, calls, misses=misses)
             finally:
                 _unbind(mutant.bindings, originals)
         else:
-            values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened, misses)
+            # a slip of the same function that the kept ones hold already adds no name: its screened value decides
+            again = any(k.slip == mutant.slip and k.module == mutant.module and k.path == mutant.path for k in kept)
+            values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened, misses,
+                                     None if again else deadline, confirm=not again)
         if values is None:
             if misses == [0] and not screened:
                 _REFUTED.refute(mutant, ran)
@@ -2591,28 +2626,54 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
 
 
 def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, parts: list, originals: dict,
-                    twins: tuple, screened: bool, misses: list | None = None) -> list | None:
+                    twins: tuple, screened: bool, misses: list | None = None,
+                    deadline: _Deadline | None = None, confirm: bool = True) -> list | None:
     """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None
-    (``misses``, given, gets the input at which it is not the student's)."""
+    (``misses``, given, gets the input at which it is not the student's); a screened mutant that reproduces it is
+    evaluated as it is within ``deadline``'s budget of confirming, unless not ``confirm``."""
+    from probes import kept_for_one_code
+
     holder = _live(package, mutant.module, mutant.path)
     originals.setdefault(id(holder), (holder, holder.__code__))
     try:
         for other, twin in twins:
             other.__code__ = twin
         holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
-        values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened, misses)
-        if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
-            values = _reproduced(package, inputs, calls, screened, misses)
-        if values is not None and screened:  # the mutant's own value decides
+        with kept_for_one_code():  # one code on every input: what a probe makes once for it, it makes once
+            values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened,
+                                 misses)
+            if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
+                values = _reproduced(package, inputs, calls, screened, misses)
+        if values is not None and screened and confirm:  # the mutant's own value decides
             for other, _ in twins:
                 other.__code__ = originals[id(other)][1]
             holder.__code__ = mutant.code
-            values = _reproduced(package, inputs, calls, misses=misses)
+            with kept_for_one_code(_confirmed_store(package, mutant)), \
+                    deadline.confirming() if deadline is not None else contextlib.nullcontext():
+                values = _reproduced(package, inputs, calls, misses=misses)
     finally:
         for other, _ in twins:
             other.__code__ = originals[id(other)][1]
         holder.__code__ = originals[id(holder)][1]
     return values
+
+
+#: what the probes computed once for a mutant's own code (``probes.kept_for_one_code``), by the mutant's code: a
+#: screened mutant is evaluated as it is on each of an explanation's inputs, and again on a third input and in the
+#: grading's later explanations, and its symbolic answer, simplified, is the same for all of them (problem 40's
+#: takes seconds).  It depends on the reference's code alone, so it holds for every grading of the process; the
+#: latest ``CONFIRMED_KEPT`` are kept
+_CONFIRMED: collections.OrderedDict = collections.OrderedDict()
+CONFIRMED_KEPT = 8
+
+
+def _confirmed_store(package, mutant: Mutant) -> dict:
+    key = (id(package), mutant.module, mutant.path, mutant.code)
+    store = _CONFIRMED.pop(key, None)
+    _CONFIRMED[key] = {} if store is None else store
+    while len(_CONFIRMED) > CONFIRMED_KEPT:
+        _CONFIRMED.popitem(last=False)
+    return _CONFIRMED[key]
 
 
 def _restore(originals: dict) -> None:
