@@ -51,7 +51,7 @@ def derive():
     plain = {a: alpha, b: beta, g: gamma}
 
     def clean(expr):
-        return expr.subs(to_symbols).subs(plain)
+        return expr.xreplace(to_symbols).xreplace(plain)
 
     return {
         "A_IC1": clean(A_IC1),
