@@ -1,10 +1,11 @@
 """Probes of problem 7: skew/unskew, angular velocity from a transformation, the symbolic derivation."""
 
-from . import module, probe
+from . import module, probe, remembered
 from ._forms import Arr, Dict, Items, Seq
 from ._symbolic import lambdify
 
 NAMES = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot")
+_DERIVED = {}
 
 
 @probe(returns=Arr(3, 3), says="skew({0})", args=("vector",))
@@ -29,10 +30,12 @@ def omega_inertial(pkg, A, dA):
 
 @probe(returns=Items(Seq(Arr(any_shape=True))), says="derive()")
 def symbolic(pkg, points):
-    """Evaluate every expression of ``derive()`` at the given points (dicts of the six symbol values)."""
+    """Evaluate every expression of ``derive()`` at the given points (dicts of the six symbol values); the
+    derivation is made once per package and process (``remembered``), whatever the points."""
     import sympy as sp
 
-    derived = module(pkg, "problem_07").derive()
+    p07 = module(pkg, "problem_07")
+    derived = remembered(_DERIVED, (pkg.__name__, id(p07)), p07.derive)
     if not isinstance(derived, dict):
         raise TypeError(f"derive() must return a dict, got {type(derived).__name__}")
     out = {}
