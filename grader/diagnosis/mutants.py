@@ -150,6 +150,7 @@ import sys
 import threading
 import time
 import warnings
+import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -160,7 +161,7 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, within
+from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, Source, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "MAKING_TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS",
@@ -2197,18 +2198,41 @@ def _probe(probe):
     return getattr(importlib.import_module(f"probes.{module_name}"), name)
 
 
-def _call(package, probe, args, path, quick: bool = False):
+def _call(package, probe, args, path, quick: bool = False, replies: dict | None = None):
     """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the bytes of
     ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per
     package would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by
-    reading its expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``."""
+    reading its expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given):
+    the whole replies of the calls made so far with the package's code as it is now, by the call, which a call on
+    the same arguments reads rather than makes again (a comparison's other values of the same call, ``_siblings``),
+    and a call that raised raises again."""
     from probes import fresh
     from probes._codec import decode, encode
     from probes._symbolic import quick as reading
 
-    with fresh(), (reading() if quick else contextlib.nullcontext()):
-        value = decode(encode(_probe(probe)(package, *_copied(args))))
+    key = (probe, args if isinstance(args, bytes) else id(args), quick)
+    if replies is not None and key in replies:
+        value = replies[key]
+        if isinstance(value, _Raised):
+            raise value.error
+        return array_of(at(value, path))
+    try:
+        with fresh(), (reading() if quick else contextlib.nullcontext()):
+            value = decode(encode(_probe(probe)(package, *_copied(args))))
+    except Exception as error:  # noqa: BLE001 - kept for the same call, then raised as it was
+        if replies is not None:
+            replies[key] = _Raised(error)
+        raise
+    if replies is not None:
+        replies[key] = value
     return array_of(at(value, path))
+
+
+@dataclass(frozen=True)
+class _Raised:
+    """A call of ``_call``'s ``replies`` that raised ``error``."""
+
+    error: Exception
 
 
 def _kept_once(args: tuple):
@@ -2701,9 +2725,9 @@ def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = Fals
     """The mutated package's values of ``calls`` (``(probe, arguments)``: each input's call, or its declared part),
     or None at the first that does not reproduce the student's value (``quick``: see ``_call``; ``misses``, given,
     gets that input's index)."""
-    values = []
+    values, replies = [], {}
     for index, (evidence, call) in enumerate(zip(inputs, calls)):
-        value = _value(package, evidence, call, quick)
+        value = _value(package, evidence, call, quick, replies)
         if value is None or not within(evidence.got, value, evidence.tol):
             if misses is not None:
                 misses.append(index)
@@ -2712,12 +2736,13 @@ def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = Fals
     return values
 
 
-def _value(package, evidence: Evidence, call: tuple, quick: bool = False):
+def _value(package, evidence: Evidence, call: tuple, quick: bool = False, replies: dict | None = None):
     """The mutated package's value of ``call`` (``(probe, arguments)``: the comparison's call, or its declared
-    part) at the comparison's path (None when the mutant raises or gives another shape; ``quick``: see ``_call``)."""
+    part) at the comparison's path (None when the mutant raises or gives another shape; ``quick``, ``replies``: see
+    ``_call``)."""
     probe, args = call
     try:
-        value = _call(package, probe, args, evidence.source.path, quick)
+        value = _call(package, probe, args, evidence.source.path, quick, replies)
     except (Exception, RecursionError):  # noqa: BLE001 - a mutant that raises reproduces nothing
         return None
     if value is None or value.shape != evidence.got.shape:
@@ -2875,6 +2900,10 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     test ran out of its budget before changing, an argument of which a slip leaves unused told beside it."""
     if getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
+    evidences = own_calls(evidences)
+    if another is not None:
+        drawn = another
+        another = lambda: next(iter(own_calls([e for e in [drawn()] if e is not None])), None)  # noqa: E731
     if not _tried(evidences):
         return _imprecise(scene, evidences, another)
     if any(_rebound_alike(e) for e in evidences[1:]):  # right at the constants drawn: a constant typed short?
@@ -2907,6 +2936,66 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     except GraderFault:
         return []
     return _hypotheses(kept or [], inputs, untested, unreached)
+
+
+def own_calls(evidences: list[Evidence]) -> list[Evidence]:
+    """The evidences, each whose expected value came from a stand-in of the reference's (a probe for the reference
+    alone, ``reference_only``: problem 7's ``expressions`` evaluates the package's numeric rotations where the
+    student's ``symbolic`` evaluates their derivation) with the student's own call in its place: the mutants of the
+    reference are to run the code the student's call runs, not the stand-in's.  Only where the reference's value of
+    the student's call is the expected value on every such input (within the comparison's tolerance); else the
+    evidences as they are."""
+    stand_ins = [e for e in evidences if _stands_in(e)]
+    if not stand_ins:
+        return evidences
+    replaced, values = {}, {}
+    with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        _, package = _package()
+        for e in stand_ins:
+            own = Source(e.student.probe, tuple(e.student.args), tuple(e.student.path))
+            key = (own.probe, _kept_once(own.args))
+            if key not in values:
+                values[key] = _whole(package, own.probe, own.args)
+            value = _at_path(values[key], own.path)
+            if value is None or value.shape != e.expected.shape or not within(value, e.expected, e.tol):
+                trace.note("own_call", probe=own.probe, holds=False)
+                return evidences
+            replaced[id(e)] = dataclasses.replace(e, source=own)
+    trace.note("own_call", probe=stand_ins[0].student.probe, holds=True)
+    return [replaced.get(id(e), e) for e in evidences]
+
+
+def _stands_in(evidence: Evidence) -> bool:
+    """The evidence's expected value came from a probe for the reference alone, and the student's from another."""
+    source, student = evidence.source, evidence.student
+    if source is None or student is None or evidence.got is None or evidence.expected is None \
+            or source.probe == student.probe or not isinstance(source.probe, str) or not isinstance(student.probe, str):
+        return False
+    try:
+        return bool(getattr(_probe(source.probe), "reference_only", False)) \
+            and not getattr(_probe(student.probe), "reference_only", False)
+    except (ImportError, AttributeError):
+        return False
+
+
+def _whole(package, probe, args):
+    """The reference's whole value of ``probe(*args)`` (decoded as a probe's reply is), or None where it raises."""
+    from probes import fresh
+    from probes._codec import decode, encode
+
+    try:
+        with fresh():
+            return decode(encode(_probe(probe)(package, *_copied(args))))
+    except Exception:  # noqa: BLE001 - a call the reference cannot make has no code to mutate
+        return None
+
+
+def _at_path(value, path) -> np.ndarray | None:
+    try:
+        return None if value is None else array_of(at(value, path))
+    except (KeyError, IndexError, TypeError):
+        return None
 
 
 class _Measured:

@@ -1,0 +1,109 @@
+"""The calls the tier of formulas runs its mutants on (``grader.diagnosis.mutants``).
+
+* A comparison whose expected value came from a stand-in of the reference's (a probe for the reference alone:
+  problem 7's ``expressions`` evaluates the package's numeric rotations, where the student's ``symbolic`` evaluates
+  their derivation) has its mutants run on the student's own call, the code that call runs on the reference
+  (``own_calls``), but only where the reference's value of that call is the expected one.
+* The other values of a comparison's call (``_siblings``) are read from one reply of that call per mutant
+  (``_reproduced``), not by calling it again for each.
+* Graded as ``grade batch`` grades (``tests/engine/stand_ins.toml``): the slip is named live, the kit names the same
+  or nothing, and with the engine off no cause of that family is named.
+"""
+
+import sys
+import types
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from grader.checking import Tol
+from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source
+from grader.results import Status
+
+from ..kit_support import (  # noqa: F401 (fixtures)
+    assert_named_failure,
+    assert_no_catalogue_names_it,
+    assert_same_verdicts,
+    graded_table,
+    grade_live_and_kit,
+)
+from ..submissions import build_planted
+
+ROOT = Path(__file__).resolve().parents[2]
+TIGHT = Tol("tight", 1e-9, 1e-9)
+
+
+@pytest.fixture
+def stand_in_probes(monkeypatch):
+    """Made-up probes (``probes.stub_own``): ``stand_in`` (for the reference alone) and ``own`` (the student's
+    call), whose values on the private reference package are set by the test, and a count of the calls of ``own``."""
+    from probes import probe
+    from probes._forms import ANY
+
+    replies = {"stand_in": {"x": np.array([1.0, 2.0])}, "own": {"x": np.array([1.0, 2.0]), "y": np.array([3.0])}}
+    calls = []
+    stub = types.ModuleType("probes.stub_own")
+
+    def own(pkg, n):
+        calls.append(n)
+        return replies["own"]
+
+    stub.stand_in = probe(returns=ANY, reference_only=True)(lambda pkg, n: replies["stand_in"])
+    stub.own = probe(returns=ANY)(own)
+    monkeypatch.setitem(sys.modules, "probes.stub_own", stub)
+    return replies, calls
+
+
+def _evidence(source_probe: str, got) -> Evidence:
+    return Evidence(np.asarray(got, dtype=float), np.array([1.0, 2.0]), TIGHT, "x",
+                    source=Source(source_probe, (1,), ("x",)), student=Source("stub_own.own", (1,), ("x",)))
+
+
+def test_a_stand_in_gives_way_to_the_students_own_call_where_the_reference_agrees(stand_in_probes):
+    evidence = _evidence("stub_own.stand_in", [1.0, 5.0])
+    (own,) = mutants.own_calls([evidence])
+    assert own.source == Source("stub_own.own", (1,), ("x",))
+    assert own.got is evidence.got and own.expected is evidence.expected and own.student == evidence.student
+
+
+def test_a_stand_in_stays_where_the_reference_gives_the_students_call_another_value(stand_in_probes):
+    replies, _ = stand_in_probes
+    replies["own"] = {"x": np.array([1.0, 2.5])}  # the reference's own call is not what the stand-in says
+    evidence = _evidence("stub_own.stand_in", [1.0, 5.0])
+    assert mutants.own_calls([evidence]) == [evidence]
+
+
+def test_a_comparison_of_the_students_own_call_stays_as_it_is(stand_in_probes):
+    evidence = _evidence("stub_own.own", [1.0, 5.0])  # the reference's value of the same probe: no stand-in
+    assert mutants.own_calls([evidence]) == [evidence]
+
+
+def test_the_other_values_of_one_call_are_read_from_one_reply(stand_in_probes):
+    replies, calls = stand_in_probes
+    args = mutants._kept_once((1,))
+    first = Evidence(np.array([1.0, 2.0]), np.array([1.0, 2.0]), TIGHT, "x",
+                     source=Source("stub_own.own", (1,), ("x",)))
+    sibling = Evidence(np.array([3.0]), np.array([3.0]), TIGHT, "y", source=Source("stub_own.own", (1,), ("y",)))
+    values = mutants._reproduced(None, [first, sibling], [("stub_own.own", args), ("stub_own.own", args)])
+    assert [v.tolist() for v in values] == [[1.0, 2.0], [3.0]]
+    assert calls == [1]  # one call for both values
+    other = mutants._kept_once((2,))
+    mutants._reproduced(None, [first, sibling], [("stub_own.own", args), ("stub_own.own", other)])
+    assert calls == [1, 1, 2]  # another call's arguments: called anew, and a later comparison calls anew
+
+
+TABLE = ROOT / "tests" / "engine" / "stand_ins.toml"
+STAND_INS, _, slot, test_the_graded_mistakes_are_of_their_families = graded_table(TABLE)
+
+
+@pytest.mark.parametrize("mistake", STAND_INS, ids=lambda m: m.name)
+def test_a_slip_behind_a_stand_in_is_named(mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
+    assert_named_failure(mistake, live)
+    theirs = {r.check_id: r for r in kit.results}[mistake.check]
+    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
