@@ -103,13 +103,14 @@ the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
-the answer's inputs) takes at most ``TIME_BUDGET`` seconds of the thread's CPU time (a mutant that is still running
-then is interrupted, and nothing is named).  Their making (the reference's code mutated and compiled) is the same
+the answer's inputs) takes at most ``TIME_BUDGET`` seconds of the thread's CPU time (``SCREENED_TIME_BUDGET`` where
+they are screened without sympy's simplifications, below; a mutant that is still running then is interrupted, and
+nothing is named).  Their making (the reference's code mutated and compiled) is the same
 for every answer and kept for the process, so it is counted apart, within ``MAKING_TIME_BUDGET``: what the tier
 names does not depend on whether an earlier explanation of the process made the mutants, nor on how much a loaded
 machine slows their making.  The worst an explanation's formula tier may spend is so ``MAKING_TIME_BUDGET`` +
-``TIME_BUDGET`` + ``GIVEN_TIME_BUDGET`` of CPU time (or ``LATE_TIME_BUDGET`` in place of the last), the first
-only where the process has not made those mutants yet.  The codes the compared call runs are traced once for an
+``TIME_BUDGET`` (or ``SCREENED_TIME_BUDGET`` and ``CONFIRMING_TIME_BUDGET``) + ``GIVEN_TIME_BUDGET`` of CPU time (or
+``LATE_TIME_BUDGET`` in place of the last), the first only where the process has not made those mutants yet.  The codes the compared call runs are traced once for an
 explanation's stages (``_TRACES``), and a grading whose explanations ask the tier the same question (the same
 inputs, student's values and families told: a run's right-hand side behind its state and its event) measures the
 mutants once (``_Measured``; a measure that ran out of its time is made again); where an earlier
@@ -164,10 +165,10 @@ from . import trace
 from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, Source, within
 from .grammar import equivalents
 
-__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "MAKING_TIME_BUDGET", "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS",
-           "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS", "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE",
-           "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED", "Mutant", "rivals", "mutants_of", "mutant_slips",
-           "opposite_slips", "late", "left_to_live"]
+__all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
+           "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
+           "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
+           "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -181,6 +182,10 @@ TIME_BUDGET = 2.0
 #: whose mutants an earlier one made spends next to nothing on it).  It depends on the reference alone, not on the
 #: student: the most, every function of problem 26 and its neighbours, take about 2 s on an idle machine
 MAKING_TIME_BUDGET = 8.0
+#: the CPU time the measuring of one explanation's mutants may take where they are screened without sympy's
+#: simplifications [s], in place of ``TIME_BUDGET``: each still builds a symbolic answer (problem 7's derivation of
+#: its 238 mutants takes about 1.5 s on an idle machine, and a loaded one counts more of the thread's time)
+SCREENED_TIME_BUDGET = 4.0
 #: the CPU time of one explanation's mutants that a screening without sympy's simplifications kept, evaluated as
 #: they are (their simplifications, which decide) [s]: few reproduce the student's value, and one of problem 40's
 #: takes 1.5 s to simplify on an idle machine (the reference's own value, 0.4 s), more than the screening of all
@@ -3638,6 +3643,8 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                         holds = _holds(package, twins, evidences)
                         trace.note("screened", functions=sorted(h.__name__ for h, _ in twins), holds=holds)
                         twins, ran = (twins, ran) if holds else ((), None)  # traced without them, then
+                        if holds:  # sympy's work on each mutant: milliseconds where numbers take microseconds
+                            deadline.seconds = max(deadline.seconds, SCREENED_TIME_BUDGET)
                     if mutants is None:
                         mutants = mutants_of(package, root, problem, first.source.probe, first.source.args, twins, ran,
                                              deadline=deadline)
