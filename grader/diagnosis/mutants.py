@@ -472,6 +472,8 @@ SLIPS = {
     "degrees": ("degrees", "`{f}` takes an angle in degrees where it is in radians"),
     "radians": ("degrees", "`{f}` converts an angle to radians that already is in radians"),
     "transpose": ("transpose", "a matrix in `{f}` is transposed where it should not be, or the reverse"),
+    "turned_back": ("transpose", "a rotation written out in `{f}` is transposed: the signs of its sines are "
+                                 "exchanged, which turns it the other way"),
     "index": ("wrong_index", "`{f}` reads an entry from a neighbouring index"),
     "arguments": ("argument_order", "two arguments of a call in `{f}` are exchanged"),
     "names": ("argument_order", "two quantities are exchanged throughout `{f}`"),
@@ -765,7 +767,7 @@ def _slips(node, parent):
         if isinstance(node.ctx, ast.Load) and _halves(node.elts):  # ``y[:3], y[3:]`` as ``y[::2], y[1::2]``
             yield "interleaved", _interleaved
         if isinstance(node.ctx, ast.Load) and _written_out(node):  # ``[[c, s], [-s, c]]`` for [[c, -s], [s, c]]
-            yield "transpose", _literal_transposed
+            yield "turned_back" if _turning(node) else "transpose", _literal_transposed
     elif isinstance(node, ast.Dict) and 2 <= len(node.values) <= 6 and None not in node.keys:
         for i, j in _pairs(len(node.values)):  # ``{a: alpha, b: beta}`` as ``{a: beta, b: alpha}``: keys kept
             yield "entries", lambda n, i=i, j=j: _exchanged(n, "values", i, j)
@@ -1134,6 +1136,27 @@ def _written_out(node) -> bool:
     return isinstance(node, (ast.List, ast.Tuple)) and 2 <= len(node.elts) <= 4 and all(
         isinstance(row, (ast.List, ast.Tuple)) and len(row.elts) == len(node.elts)
         and not any(isinstance(e, ast.Starred) for e in row.elts) for row in node.elts)
+
+
+def _turning(node) -> bool:
+    """A matrix written out (``_written_out``) with no zero on its diagonal, whose entries off it are zeros or come
+    in pairs of opposite signs (``-s`` at one place, ``s`` at its mirror), one pair at least: the form of a rotation
+    written out, whose transpose is the same matrix with those signs exchanged, the rotation by the negated angle."""
+    rows = [row.elts for row in node.elts]
+    if any(isinstance(row[i], ast.Constant) and row[i].value == 0 for i, row in enumerate(rows)):
+        return False  # a zero on the diagonal: a skew matrix written out is no rotation
+    paired = False
+    for i in range(len(rows)):
+        for j in range(i + 1, len(rows)):
+            a, b = rows[i][j], rows[j][i]
+            if all(isinstance(e, ast.Constant) and e.value == 0 for e in (a, b)):
+                continue
+            if isinstance(a, ast.UnaryOp) and isinstance(a.op, ast.USub) and ast.dump(a.operand) == ast.dump(b) \
+                    or isinstance(b, ast.UnaryOp) and isinstance(b.op, ast.USub) and ast.dump(b.operand) == ast.dump(a):
+                paired = True
+                continue
+            return False
+    return paired
 
 
 def _literal_transposed(node):
@@ -2847,7 +2870,7 @@ def _unreached(mutant: Mutant, probe, positions) -> frozenset:
 
 
 #: what the expression of a slip is, for the grammar's equivalences (``grammar.EQUIVALENCES``)
-KINDS = {"skew": ("skew",), "cross": ("cross",)}
+KINDS = {"skew": ("skew",), "cross": ("cross",), "turned_back": ("rotation",)}
 
 
 #: the families of a term left out or added: where the term is the same on every input, the slip is an offset

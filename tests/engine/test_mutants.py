@@ -719,6 +719,13 @@ def shear(k, d):
     # END SOLUTION
 
 
+def turn(phi):
+    """The rotation about the third axis by ``phi``, written out."""
+    # BEGIN SOLUTION problem 98
+    return np.array([[np.cos(phi), -np.sin(phi), 0.0], [np.sin(phi), np.cos(phi), 0.0], [0.0, 0.0, 1.0]])
+    # END SOLUTION
+
+
 def _spring(x, k=1.0, preload=0.0):
     return -k * x + preload
 
@@ -1654,6 +1661,19 @@ def test_a_matrix_written_out_transposed_is_a_transpose(made_up):
     assert names == {"transpose"}, [(h.name, h.detail) for h in found]
     near = names_of(made_up, "shear", lambda k, d: np.array([[k, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, d, 1.0]]), inputs)
     assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_a_rotation_written_out_transposed_is_also_the_rotation_the_other_way(made_up):
+    """A rotation written out with the signs of its sines exchanged is its transpose and the rotation by the
+    negated angle (``grammar.EQUIVALENCES``): told both; the shear's transpose above is no rotation and is told a
+    transpose alone, and so is a skew matrix written out (a zero diagonal: its transpose is its negative)."""
+    inputs = [(0.4,), (-1.1,)]
+    names, found = names_of(made_up, "turn", lambda phi: np.array(
+        [[np.cos(phi), np.sin(phi), 0.0], [-np.sin(phi), np.cos(phi), 0.0], [0.0, 0.0, 1.0]]), inputs)
+    assert names == {"transpose", "angle_sign"}, [(h.name, h.detail) for h in found]
+    assert any("a rotation written out in `turn` is transposed" in h.detail for h in found), [h.detail for h in found]
+    assert not mutants._turning(ast.parse("[[0, -z, y], [z, 0, -x], [-y, x, 0]]", mode="eval").body)
+    assert not mutants._turning(ast.parse("[[1.0, k, 0.0], [0.0, 1.0, d], [0.0, 0.0, 1.0]]", mode="eval").body)
 
 
 def test_two_arguments_exchanged_into_a_given_difference_could_be_order_or_sign(made_up):
