@@ -2766,13 +2766,17 @@ def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = Fals
 
 def _value(package, evidence: Evidence, call: tuple, quick: bool = False, replies: dict | None = None):
     """The mutated package's value of ``call`` (``(probe, arguments)``: the comparison's call, or its declared
-    part) at the comparison's path (None when the mutant raises or gives another shape; ``quick``, ``replies``: see
-    ``_call``)."""
+    part) at the comparison's path, in the shape of the student's value where it differs from it by axes of one
+    entry only (the student's own call gives a column where the check compared a vector); None when the mutant
+    raises or gives another shape (``quick``, ``replies``: see ``_call``)."""
     probe, args = call
     try:
         value = _call(package, probe, args, evidence.source.path, quick, replies)
     except (Exception, RecursionError):  # noqa: BLE001 - a mutant that raises reproduces nothing
         return None
+    if value is not None and value.shape != evidence.got.shape \
+            and tuple(n for n in value.shape if n != 1) == tuple(n for n in evidence.got.shape if n != 1):
+        value = value.reshape(evidence.got.shape)  # a column for a vector, as the check read the student's
     if value is None or value.shape != evidence.got.shape:
         return None
     return value
@@ -2971,8 +2975,8 @@ def own_calls(evidences: list[Evidence]) -> list[Evidence]:
     alone, ``reference_only``: problem 7's ``expressions`` evaluates the package's numeric rotations where the
     student's ``symbolic`` evaluates their derivation) with the student's own call in its place: the mutants of the
     reference are to run the code the student's call runs, not the stand-in's.  Only where the reference's value of
-    the student's call is the expected value on every such input (within the comparison's tolerance); else the
-    evidences as they are."""
+    the student's call is the expected value on every such input (within the comparison's tolerance, in the
+    stand-in's shape: a column where it gives a vector); else the evidences as they are."""
     stand_ins = [e for e in evidences if _stands_in(e)]
     if not stand_ins:
         return evidences
@@ -2986,7 +2990,8 @@ def own_calls(evidences: list[Evidence]) -> list[Evidence]:
             if key not in values:
                 values[key] = _whole(package, own.probe, own.args)
             value = _at_path(values[key], own.path)
-            if value is None or value.shape != e.expected.shape or not within(value, e.expected, e.tol):
+            if value is None or value.size != e.expected.size \
+                    or not within(value.reshape(e.expected.shape), e.expected, e.tol):
                 trace.note("own_call", probe=own.probe, holds=False)
                 return evidences
             replaced[id(e)] = dataclasses.replace(e, source=own)

@@ -68,6 +68,21 @@ def test_a_stand_in_gives_way_to_the_students_own_call_where_the_reference_agree
     assert own.got is evidence.got and own.expected is evidence.expected and own.student == evidence.student
 
 
+def test_a_column_of_the_students_own_call_is_read_as_the_vector_the_check_compared(stand_in_probes):
+    """Problem 35's joint function gives its rates as columns where the stand-in gives vectors: the own call holds,
+    and its column is read in the shape of the student's value; a value of another shape than one of axes of one
+    entry more or fewer is no value of the comparison."""
+    replies, _ = stand_in_probes
+    replies["own"] = {"x": np.array([[1.0], [2.0]])}
+    evidence = _evidence("stub_own.stand_in", [1.0, 2.0])
+    (own,) = mutants.own_calls([evidence])
+    assert own.source.probe == "stub_own.own"
+    values = mutants._reproduced(None, [own], [("stub_own.own", mutants._kept_once((1,)))])
+    assert values is not None and values[0].shape == (2,)
+    replies["own"] = {"x": np.array([[1.0, 2.0], [3.0, 4.0]])}
+    assert mutants._reproduced(None, [own], [("stub_own.own", mutants._kept_once((1,)))]) is None
+
+
 def test_a_stand_in_stays_where_the_reference_gives_the_students_call_another_value(stand_in_probes):
     replies, _ = stand_in_probes
     replies["own"] = {"x": np.array([1.0, 2.5])}  # the reference's own call is not what the stand-in says
