@@ -1505,6 +1505,8 @@ def _binop_slips(node: ast.BinOp):
         yield _dropped(node.right), lambda n: n.left
         if _constant_expression(node.left):  # ``2 pi / T`` as ``1 / T``: a numerator of constants left out
             yield "factor", lambda n: _with(n, left=ast.Constant(1.0))
+        elif isinstance(node.left, (ast.Name, ast.Attribute)) and _number(node.right):
+            yield "factor", lambda n: _with(n, left=ast.Constant(1.0))  # ``m / 12`` as ``1 / 12``: the mass left out
         if not _reciprocal(node):  # ``12 / m`` as ``m / 12`` (``1 / x`` as ``x``: a reciprocal, the inputs' slip)
             yield "ratio", lambda n: _with(n, left=n.right, right=n.left)
     elif isinstance(op, ast.MatMult):

@@ -719,6 +719,13 @@ def shear(k, d):
     # END SOLUTION
 
 
+def box_moment(m, a):
+    """The moment of inertia of a thin rod of mass ``m`` and length ``a`` about its centre."""
+    # BEGIN SOLUTION problem 98
+    return m / 12 * a**2
+    # END SOLUTION
+
+
 def turn(phi):
     """The rotation about the third axis by ``phi``, written out."""
     # BEGIN SOLUTION problem 98
@@ -1661,6 +1668,16 @@ def test_a_matrix_written_out_transposed_is_a_transpose(made_up):
     assert names == {"transpose"}, [(h.name, h.detail) for h in found]
     near = names_of(made_up, "shear", lambda k, d: np.array([[k, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, d, 1.0]]), inputs)
     assert near[0] == set(), [(h.name, h.detail) for h in near[1]]
+
+
+def test_a_quantity_left_out_of_a_quotients_numerator_is_a_factor_left_out(made_up):
+    """``m / 12 * a**2`` written ``a**2 / 12``: the mass, the numerator of a division by a number, is left out; the
+    near miss ``m / 6 * a**2`` (a number typed otherwise) is no factor left out."""
+    inputs = [(2.0, 0.7), (0.6, 1.9)]
+    names, found = names_of(made_up, "box_moment", lambda m, a: a**2 / 12, inputs)
+    assert names == {"missing_factor"}, [(h.name, h.detail) for h in found]
+    near = names_of(made_up, "box_moment", lambda m, a: m / 6 * a**2, inputs)
+    assert "missing_factor" not in near[0], [(h.name, h.detail) for h in near[1]]
 
 
 def test_a_rotation_written_out_transposed_is_also_the_rotation_the_other_way(made_up):
