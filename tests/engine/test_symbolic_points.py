@@ -31,12 +31,14 @@ from tests.kit_support import (  # noqa: F401 (fixtures)
 from tests.submissions import Planted
 
 #: problem 35's time derivative along q(t) with the rates and the accelerations exchanged (d/dq @ qdd + d/dqd @ qd):
-#: the acceleration comes out as the velocity, which only a slip of the formula reproduces at two points
+#: the acceleration comes out as the velocity, which only a slip of the formula reproduces at two points; the
+#: formula tier mutates the code of the student's own call (``mutants.own_calls``), where a rate is read for the
+#: acceleration (a state row), not the numeric stand-in's, whose arguments exchanged had been told beside it
 RATES_EXCHANGED = Planted(
     name="points-p35-derivative-rates-exchanged", problem=35, file="problem_35.py",
     old="return expr.jacobian(q) @ qd + expr.jacobian(qd) @ qdd",
     new="return expr.jacobian(q) @ qdd + expr.jacobian(qd) @ qd",
-    check="p35.translational_values", diagnosis="argument_order or state_row",
+    check="p35.translational_values", diagnosis="state_row",
     message="on the input shown and on a second one",
     also=("p35.rotational_values", "p35.virtual_3dof_values", "p35.rolling_contact_values", "p35.poses_values"))
 
