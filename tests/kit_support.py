@@ -376,6 +376,23 @@ def graded_table(path) -> tuple:
     return mistakes, families, slot, test_the_graded_mistakes_are_of_their_families
 
 
+def assert_named_live_and_alike(mistake, tmp_path, kit_oracle, deferred_ids, zygote, monkeypatch) -> tuple:
+    """``mistake`` planted and graded live and with the kit's answer key: live, its check fails with its diagnosis
+    and a hint containing its message (``assert_named_failure``); the kit fails it alike and names the same cause or
+    none; every other check agrees (``assert_same_verdicts``); with the engine off no cause of its families is named
+    (``assert_no_catalogue_names_it``).  ``(live result, kit result)`` of the check, for a test's own asserts."""
+    from tests.submissions import build_planted
+
+    submission = build_planted(mistake, tmp_path / "pkg")
+    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=zygote)
+    target = assert_named_failure(mistake, live)
+    theirs = {r.check_id: r for r in kit.results}[mistake.check]
+    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
+    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
+    assert_no_catalogue_names_it(mistake, submission, zygote, monkeypatch)
+    return target, theirs
+
+
 def assert_no_catalogue_names_it(mistake, submission, zygote, monkeypatch) -> None:
     """With the diagnosis engine off, ``mistake.check`` still fails and names no cause of the mistake's families:
     only the engine names it."""

@@ -35,18 +35,13 @@ from grader.diagnosis import engine as explaining
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source, array_of, at
 from grader.private import drop_private, private_import
-from grader.results import Status
 from probes._codec import decode, encode
 
 from .stand_ins import made_up_package
 from ..kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
-    assert_no_catalogue_names_it,
-    assert_same_verdicts,
+    assert_named_live_and_alike,
     graded_table,
-    grade_live_and_kit,
 )
-from ..submissions import build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 TIGHT = Tol("tight", 1e-9, 1e-9)
@@ -1255,15 +1250,9 @@ FORMULAS, _, slot, test_the_graded_mistakes_are_of_their_families = graded_table
 @pytest.mark.parametrize("mistake", FORMULAS, ids=lambda m: m.name)
 def test_a_slip_inside_a_formula_is_named_live_and_left_to_the_submission_in_the_kit(
         mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_named_failure(mistake, live)
-    theirs = {r.check_id: r for r in kit.results}[mistake.check]
-    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
+    _, theirs = assert_named_live_and_alike(mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch)
     if not theirs.diagnosis:
         assert mutants.KIT_NOTE in theirs.hint, theirs.hint
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
 
 
 def test_the_trace_says_what_each_tier_found(made_up, tmp_path, monkeypatch):

@@ -20,16 +20,11 @@ import pytest
 from grader.checking import Tol
 from grader.diagnosis import mutants
 from grader.diagnosis.evidence import Evidence, Source
-from grader.results import Status
 
 from ..kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
-    assert_no_catalogue_names_it,
-    assert_same_verdicts,
+    assert_named_live_and_alike,
     graded_table,
-    grade_live_and_kit,
 )
-from ..submissions import build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 TIGHT = Tol("tight", 1e-9, 1e-9)
@@ -115,10 +110,4 @@ STAND_INS, _, slot, test_the_graded_mistakes_are_of_their_families = graded_tabl
 
 @pytest.mark.parametrize("mistake", STAND_INS, ids=lambda m: m.name)
 def test_a_slip_behind_a_stand_in_is_named(mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    assert_named_failure(mistake, live)
-    theirs = {r.check_id: r for r in kit.results}[mistake.check]
-    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
+    assert_named_live_and_alike(mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch)

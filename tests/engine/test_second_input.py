@@ -27,16 +27,11 @@ from grader.context import Context, explained
 from grader.diagnosis import scene as scenes
 from grader.diagnosis.grammar import DRAWN_ENTRIES, second_args, varied
 from grader.errors import GraderFault
-from grader.results import Status
 
 from ..kit_support import (  # noqa: F401 (fixtures)
-    assert_named_failure,
-    assert_no_catalogue_names_it,
-    assert_same_verdicts,
+    assert_named_live_and_alike,
     graded_table,
-    grade_live_and_kit,
 )
-from ..submissions import build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 TIGHT = Tol("tight", 1e-9, 1e-9)
@@ -277,11 +272,5 @@ DRAWN, _, slot, test_the_graded_mistakes_are_of_their_families = graded_table(
 @pytest.mark.parametrize("mistake", DRAWN, ids=lambda m: m.name)
 def test_a_mistake_shown_on_one_input_is_named_on_a_drawn_second_one(
         mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
-    submission = build_planted(mistake, tmp_path / "pkg")
-    live, kit = grade_live_and_kit(mistake.problem, submission, kit_oracle, zygote=slot)
-    target = assert_named_failure(mistake, live)
+    target, _ = assert_named_live_and_alike(mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch)
     assert "on the input shown and on a second one" in target.hint, target.hint
-    theirs = {r.check_id: r for r in kit.results}[mistake.check]
-    assert theirs.status is Status.FAILED and theirs.diagnosis in ("", mistake.diagnosis), theirs.diagnosis
-    assert_same_verdicts(mistake.name, live, kit, deferred_ids)
-    assert_no_catalogue_names_it(mistake, submission, slot, monkeypatch)
