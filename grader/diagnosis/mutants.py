@@ -110,14 +110,14 @@ for every answer and kept for the process, so it is counted apart, within ``MAKI
 names does not depend on whether an earlier explanation of the process made the mutants, nor on how much a loaded
 machine slows their making.  The worst an explanation's formula tier may spend is so ``MAKING_TIME_BUDGET`` +
 ``TIME_BUDGET`` (or ``SCREENED_TIME_BUDGET`` and ``CONFIRMING_TIME_BUDGET``) + ``GIVEN_TIME_BUDGET`` of CPU time (or
-``LATE_TIME_BUDGET`` in place of the last), the first only where the process has not made those mutants yet.  The codes the compared call runs are traced once for an
-explanation's stages (``_TRACES``), and a grading whose explanations ask the tier the same question (the same
-inputs, student's values and families told: a run's right-hand side behind its state and its event) measures the
-mutants once (``_Measured``; a measure that ran out of its time is made again); where an earlier
-tier already explained the answer, the tier is heard for rivals within a budget of its own, ``LATE_MUTANTS`` mutants
-and ``LATE_TIME_BUDGET``, those of the families not told yet first (``late``: a rival of a family told adds a name,
-not an explanation), warnings are
-silenced and a mutant that raises is dropped.  The student's code runs only for the third input, within the
+``LATE_TIME_BUDGET`` in place of the last), the first only where the process has not made those mutants yet.  The
+codes the compared call runs are traced once for an explanation's stages (``_TRACES``), and a grading whose
+explanations ask the tier the same question (the same inputs, student's values and families told: a run's
+right-hand side behind its state and its event) measures the mutants once (``_Measured``; a measure that ran out
+of its time is made again); where an earlier tier already explained the answer, the tier is heard for rivals within
+a budget of its own, ``LATE_MUTANTS`` mutants and ``LATE_TIME_BUDGET``, those of the families not told yet first
+(``late``: a rival of a family told adds a name, not an explanation), warnings are silenced and a mutant that raises
+is dropped.  The student's code runs only for the third input, within the
 scene's budget of the student's calls.  The student kit holds no reference code: the tier runs with the live
 reference only (``left_to_live``: the kit then says that the graded submission may say more).
 
@@ -143,6 +143,7 @@ import collections
 import contextlib
 import copy
 import ctypes
+import dataclasses
 import gc
 import itertools
 import pickle
@@ -151,7 +152,6 @@ import sys
 import threading
 import time
 import warnings
-import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -2243,26 +2243,19 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
     key = (probe, args if isinstance(args, bytes) else id(args), quick)
     if replies is not None and key in replies:
         value = replies[key]
-        if isinstance(value, _Raised):
-            raise value.error
+        if isinstance(value, Exception):  # a reply is plain data: an exception is the call's own
+            raise value
         return array_of(at(value, path))
     try:
         with fresh(), (reading() if quick else contextlib.nullcontext()):
             value = decode(encode(_probe(probe)(package, *_copied(args))))
     except Exception as error:  # noqa: BLE001 - kept for the same call, then raised as it was
         if replies is not None:
-            replies[key] = _Raised(error)
+            replies[key] = error
         raise
     if replies is not None:
         replies[key] = value
     return array_of(at(value, path))
-
-
-@dataclass(frozen=True)
-class _Raised:
-    """A call of ``_call``'s ``replies`` that raised ``error``."""
-
-    error: Exception
 
 
 def _kept_once(args: tuple):
@@ -2658,7 +2651,7 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
             # a slip of the same function that the kept ones hold already adds no name: its screened value decides
             again = any(k.slip == mutant.slip and k.module == mutant.module and k.path == mutant.path for k in kept)
             values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened, misses,
-                                     None if again else deadline, confirm=not again)
+                                     deadline, confirm=not again)
         if values is None:
             if misses == [0] and not screened:
                 _REFUTED.refute(mutant, ran)
@@ -2680,11 +2673,10 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
 
 
 def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, parts: list, originals: dict,
-                    twins: tuple, screened: bool, misses: list | None = None,
-                    deadline: _Deadline | None = None, confirm: bool = True) -> list | None:
+                    twins: tuple, screened: bool, misses: list, deadline: _Deadline, confirm: bool) -> list | None:
     """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None
-    (``misses``, given, gets the input at which it is not the student's); a screened mutant that reproduces it is
-    evaluated as it is within ``deadline``'s budget of confirming, unless not ``confirm``."""
+    (``misses`` gets the input at which it is not the student's); a screened mutant that reproduces it is evaluated
+    as it is, where ``confirm``, within ``deadline``'s budget of confirming."""
     from probes import kept_for_one_code
 
     holder = _live(package, mutant.module, mutant.path)
@@ -2702,8 +2694,7 @@ def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list
             for other, _ in twins:
                 other.__code__ = originals[id(other)][1]
             holder.__code__ = mutant.code
-            with kept_for_one_code(_confirmed_store(package, mutant)), \
-                    deadline.confirming() if deadline is not None else contextlib.nullcontext():
+            with kept_for_one_code(_confirmed_store(package, mutant)), deadline.confirming():
                 values = _reproduced(package, inputs, calls, misses=misses)
     finally:
         for other, _ in twins:
@@ -2982,16 +2973,16 @@ def own_calls(evidences: list[Evidence]) -> list[Evidence]:
     stand_ins = [e for e in evidences if _stands_in(e)]
     if not stand_ins:
         return evidences
-    replaced, values = {}, {}
+    replaced, replies = {}, {}  # one call of the reference for the values of one call of the student's
     with _LOCK, warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore")
         _, package = _package()
         for e in stand_ins:
             own = Source(e.student.probe, tuple(e.student.args), tuple(e.student.path))
-            key = (own.probe, _kept_once(own.args))
-            if key not in values:
-                values[key] = _whole(package, own.probe, own.args)
-            value = _at_path(values[key], own.path)
+            try:
+                value = _call(package, own.probe, _kept_once(own.args), own.path, replies=replies)
+            except Exception:  # noqa: BLE001 - a call the reference cannot make has no code to mutate
+                value = None
             if value is None or value.size != e.expected.size \
                     or not within(value.reshape(e.expected.shape), e.expected, e.tol):
                 trace.note("own_call", probe=own.probe, holds=False)
@@ -3012,25 +3003,6 @@ def _stands_in(evidence: Evidence) -> bool:
             and not getattr(_probe(student.probe), "reference_only", False)
     except (ImportError, AttributeError):
         return False
-
-
-def _whole(package, probe, args):
-    """The reference's whole value of ``probe(*args)`` (decoded as a probe's reply is), or None where it raises."""
-    from probes import fresh
-    from probes._codec import decode, encode
-
-    try:
-        with fresh():
-            return decode(encode(_probe(probe)(package, *_copied(args))))
-    except Exception:  # noqa: BLE001 - a call the reference cannot make has no code to mutate
-        return None
-
-
-def _at_path(value, path) -> np.ndarray | None:
-    try:
-        return None if value is None else array_of(at(value, path))
-    except (KeyError, IndexError, TypeError):
-        return None
 
 
 class _Measured:
