@@ -130,23 +130,22 @@ def fresh(alone: bool = False):
     """Within: the probes of this thread remember nothing (``remembered``), for a package whose functions' code
     changes between calls (the diagnosis engine's mutants of the reference); ``alone``: nor do they hear what a
     ``kept_for_one_code()`` around keeps (the package's constants are bound to other values within)."""
-    before = _FRESH.kept
-    if alone:
-        _FRESH.kept = None
-    try:
-        with _FRESH.within():
-            yield
-    finally:
-        _FRESH.kept = before
+    with _keeping(None) if alone else contextlib.nullcontext(), _FRESH.within():
+        yield
 
 
-@contextlib.contextmanager
 def kept_for_one_code(store: dict | None = None):
     """Within: what the probes of this thread compute inside ``fresh()`` is remembered in ``store`` (a new one
     where None is given), as the calls of a package whose code does not change remember it: the calls of one code
     of a package on several inputs (one mutant of the reference) share it, and no other code hears it."""
+    return _keeping({} if store is None else store)
+
+
+@contextlib.contextmanager
+def _keeping(store: dict | None):
+    """Within: ``store`` is what ``remembered`` keeps inside ``fresh()`` (None: nothing), as it was after."""
     before = _FRESH.kept
-    _FRESH.kept = {} if store is None else store
+    _FRESH.kept = store
     try:
         yield
     finally:
