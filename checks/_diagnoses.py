@@ -291,6 +291,8 @@ _TABLE = (
     _D("absolute_position", "missing_term", "an absolute position where a lever arm belongs",
        "used an absolute position instead of a lever arm"),
     _D("extra_term", "extra_term", "a term added where it does not belong", "added a term that does not belong"),
+    _D("samples_repeated", "extra_term", "output times kept twice (a sample on a boundary kept by both pieces that "
+       "meet there)", "kept output times twice"),
     _D("rotation", "extra_term", "a rotation where a prismatic joint has none", "added a prismatic joint's rotation"),
     _D("acceleration_not_reset", "extra_term", "an acceleration left where none acts",
        "left an acceleration where none acts"),
@@ -324,6 +326,8 @@ _TABLE = (
        "measured a position from the origin instead of from its point"),
     _D("step_size", "step_size", "an integration error that grows with the step (a step too large)",
        "integrated with a step too large"),
+    _D("output_step", "step_size", "an output step too long (every m-th output time alone)",
+       "sampled a run with too long a step"),
     _D("integration", "step_size", "an integration too coarse (a loose integrator or a step too large)",
        "integrated too coarsely"),
     _D("energy_drift", "step_size", "energy that drifts in a conservative run", "let the energy drift"),
@@ -355,6 +359,8 @@ _TABLE = (
        "updated an orientation before using it"),
     _D("grid_off_by_one", "time_shift", "an output grid of one sample too many or too few (every sample after the "
        "first at another time)", "built an output grid one sample off"),
+    _D("samples_left_out", "time_shift", "output times left out (a boundary of the span or of a piece taken with < "
+       "where <= belongs)", "left output times out of a run"),
     # ---------------------------------------------------------------- precision
     _D("float32", "precision", "values computed in single precision (float32)", "computed in single precision"),
     _D("rounded", "precision", "values rounded to a few decimals", "rounded the values"),

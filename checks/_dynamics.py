@@ -418,7 +418,8 @@ def defaulted_blocks(mine, given, defaults, tol: Tol = EXACT) -> list:
 def run_array(run, key, shape, what, times=None):
     """``run[key]`` as a finite array of the given shape.  Given the expected output ``times``, a run whose own
     times span them evenly in one sample more or fewer fails as a grid off by one (``grid_off_by_one``: every
-    sample after the first at another time) rather than as a value of the wrong shape."""
+    sample after the first at another time) rather than as a value of the wrong shape, and a run whose own times
+    are expected ones, some left out or some twice, fails saying which (``_assert_samples``)."""
     if not isinstance(run, dict) or key not in run:
         fail(f"{what} returned no {key!r}.", "Return a dict with the keys named in the docstring.", "format")
     if times is not None:
@@ -427,27 +428,92 @@ def run_array(run, key, shape, what, times=None):
 
 
 def _assert_grid(run, key, times, what):
-    """Fail where ``run[key]`` has one row per output time ``run["t"]`` (so it fails a shape of one row per time
-    of ``times`` anyway) and those times run evenly from the first of ``times`` to the last in one more or one
-    fewer."""
+    """Fail where ``run[key]`` has one row per output time ``run["t"]``, those times are as many as ``times`` but
+    one more or fewer or otherwise not as many (so it fails a shape of one row per time of ``times`` anyway), and
+    they run evenly from the first of ``times`` to the last in one more or one fewer, or lie on ``times``."""
     try:
         t = np.asarray(run.get("t"), dtype=float)
         rows = np.shape(run[key])
     except (TypeError, ValueError):
         return
-    if times.ndim != 1 or t.ndim != 1 or abs(t.size - times.size) != 1 or t.size < 3 or not rows or rows[0] != t.size:
+    if times.ndim != 1 or t.ndim != 1 or t.size == times.size or t.size < 2 or times.size < 3 or not rows \
+            or rows[0] != t.size or not (np.all(np.isfinite(t)) and np.all(np.isfinite(times))):
         return
     steps = np.diff(t)
     span = times[-1] - times[0]
-    if not (np.all(np.isfinite(t)) and np.all(steps > 0) and span > 0 and np.ptp(steps) <= 1e-6 * steps.mean()
-            and abs(t[0] - times[0]) <= 1e-9 * span and abs(t[-1] - times[-1]) <= 1e-9 * span):
+    if span <= 0:
         return
-    fewer = t.size < times.size
-    fail(f"{what} returned {t.size} output times from {t[0]:.6g} s to {t[-1]:.6g} s, one {'fewer' if fewer else 'more'} "
-         f"than the {times.size} expected: its samples lie {steps.mean():.6g} s apart, not {span / (times.size - 1):.6g} "
-         f"s, so every sample after the first comes {'late' if fewer else 'early'}.",
-         "np.linspace(t0, t_end, n) gives n points and n - 1 steps of (t_end - t0) / (n - 1): for a step dt from t0 to "
-         "t_end it takes round((t_end - t0) / dt) + 1 points.", "grid_off_by_one")
+    if abs(t.size - times.size) == 1 and t.size >= 3 and np.all(steps > 0) \
+            and np.ptp(steps) <= 1e-6 * steps.mean() and abs(t[0] - times[0]) <= 1e-9 * span \
+            and abs(t[-1] - times[-1]) <= 1e-9 * span:
+        fewer = t.size < times.size
+        fail(f"{what} returned {t.size} output times from {t[0]:.6g} s to {t[-1]:.6g} s, one "
+             f"{'fewer' if fewer else 'more'} than the {times.size} expected: its samples lie {steps.mean():.6g} s "
+             f"apart, not {span / (times.size - 1):.6g} s, so every sample after the first comes "
+             f"{'late' if fewer else 'early'}.",
+             "np.linspace(t0, t_end, n) gives n points and n - 1 steps of (t_end - t0) / (n - 1): for a step dt from "
+             "t0 to t_end it takes round((t_end - t0) / dt) + 1 points.", "grid_off_by_one")
+    _assert_samples(t, times, span, what)
+
+
+#: an output time of the student's run is one of the expected times within this share of their span
+ON_GRID = 1e-9
+#: the times listed in a message, at most
+LISTED_TIMES = 6
+
+
+def _listed(values) -> str:
+    shown = ", ".join(f"{v:.6g}" for v in values[:LISTED_TIMES])
+    return shown + (f" and {len(values) - LISTED_TIMES} more" if len(values) > LISTED_TIMES else "") + " s"
+
+
+def _assert_samples(t, times, span, what):
+    """Fail saying which output times differ, where every output time ``t`` of the student's run, in order, is one
+    of the expected ``times`` and their numbers differ: times left out (``samples_left_out``: a boundary of the span,
+    or of a piece, taken with < where <= belongs, or the reverse), times kept twice (``samples_repeated``: a sample
+    on a boundary kept by both pieces that meet there), every m-th time alone (``output_step``: an output step m
+    times too long).  A run that stops short of the span's end, or that both leaves out and repeats times, is told
+    by what differs alone (``shape``): its causes are too many (the end taken with < where <= belongs, the last
+    piece of a run in pieces never integrated, an event that ends it)."""
+    if np.any(np.diff(t) < 0):
+        return
+    at = np.clip(np.searchsorted(times, t), 1, times.size - 1)
+    nearest = np.where(np.abs(times[at - 1] - t) <= np.abs(times[at] - t), at - 1, at)
+    if np.any(np.abs(times[nearest] - t) > ON_GRID * span):
+        return
+    counts = np.bincount(nearest, minlength=times.size)
+    missing, twice = np.flatnonzero(counts == 0), np.flatnonzero(counts > 1)
+    said = (f"{what} returned {t.size} output times where {times.size} are expected; each of them is one of the "
+            "expected times, but")
+    if twice.size and not missing.size:
+        fail(f"{said} {_listed(times[twice])} come{'s' if twice.size == 1 else ''} twice.",
+             "Each output time belongs in the run once: where two pieces of a run meet (a break, an event), keep "
+             "the sample on their boundary in one of them only (t < b in the piece that ends at b).",
+             "samples_repeated")
+    if not missing.size or twice.size:
+        if missing.size:
+            fail(f"{said} {_listed(times[missing])} {'is' if missing.size == 1 else 'are'} left out and "
+                 f"{_listed(times[twice])} {'comes' if twice.size == 1 else 'come'} twice.",
+                 "Keep every output time asked for, each once.", "shape")
+        return
+    kept = np.flatnonzero(counts)
+    stride = kept[1] - kept[0] if kept.size > 2 else 0
+    gaps = np.diff(times)
+    if stride > 1 and kept[0] == 0 and np.all(np.diff(kept) == stride) and times.size - 1 - kept[-1] < stride \
+            and np.ptp(gaps) <= 1e-6 * gaps.mean():
+        fail(f"{said} only one of every {stride} is there: your samples lie {stride * gaps.mean():.6g} s apart, "
+             f"not {gaps.mean():.6g} s.",
+             "Sample the run at the output times asked for (the step between them as given, not a longer one).",
+             "output_step")
+    if missing[-1] == times.size - 1 and missing.size == times.size - 1 - kept[-1]:
+        last = (f"the last output time, {times[-1]:.6g} s, is" if missing.size == 1 else
+                f"the last {missing.size} output times, from {times[missing[0]]:.6g} s to {times[-1]:.6g} s, are")
+        fail(f"{said} the run stops at {t[-1]:.6g} s: {last} not in it.",
+             "Integrate over the whole span asked for, up to its end, and keep every output time in it (the end "
+             "of the span included).", "shape")
+    fail(f"{said} {_listed(times[missing])} {'is' if missing.size == 1 else 'are'} left out.",
+         "Keep every output time asked for: a boundary of the span or of a piece belongs to the run (<= where the "
+         "end is included, >= where the start is).", "samples_left_out")
 
 
 def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", roots=None):

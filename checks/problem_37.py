@@ -445,7 +445,7 @@ def _assert_starts_on_the_table(ctx, controller):
     ours = ctx.reference(p37.simulate, controller, later, START_RUN, persist=True)  # (the kit's key holds it)
     got = ctx.student(p37.simulate, controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
     n = int(np.sum(np.asarray(later["t"]) <= START_RUN))
-    q, qd = (run_array(got, key, (n, 3), call) for key in ("q", "qd"))
+    q, qd = (run_array(got, key, (n, 3), call, times=ours["t"]) for key in ("q", "qd"))
     mine, start = np.concatenate([q[0], qd[0]]), np.concatenate([later["q"][0], later["qd"][0]])
     if close(mine, start, EXACT):
         return
@@ -497,7 +497,7 @@ def _judged_on_own_model(ctx, controller, table, got, expected, probes):
         return False
     own = ctx.student(p37.own_run, controller, table, T_RUN[controller], timeout=SIMULATION_TIMEOUT)
     for key in ("t", "q", "qd"):
-        run_array(own, key, np.shape(expected[key]), "the run of your own robot_ode")
+        run_array(own, key, np.shape(expected[key]), "the run of your own robot_ode", times=expected["t"])
     assert_run(got, own, ("q", "qd"), BAND, f"the {NAMES[controller]} run",
                note="Your M, f, g differ from the reference's (their own check says how): the run is judged on "
                     "them, against your own robot_ode integrated by the grader (solve_ivp, rtol 1e-6).")

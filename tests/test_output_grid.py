@@ -40,3 +40,41 @@ def test_without_the_expected_times_a_grid_one_off_is_a_shape():
 def test_a_value_of_the_right_length_beside_times_one_off_is_not_failed_by_the_grid():
     run = {"t": np.linspace(0.0, 2.0, 100), "q": np.zeros((101, 2))}
     assert run_array(run, "q", (101, 2), "simulate()", times=TIMES).shape == (101, 2)
+
+
+def _told(t):
+    with pytest.raises(CheckFailure) as caught:
+        run_array(_run(t), "q", (101, 2), "simulate()", times=TIMES)
+    return caught.value
+
+
+def test_output_times_kept_twice_on_a_boundary_are_told_by_their_times():
+    told = _told(np.concatenate([TIMES[:51], TIMES[50:]]))  # the sample at 1 s kept by both halves
+    assert told.diagnosis == "samples_repeated"
+    assert "1 s comes twice" in told.message and "one of them only" in told.hint
+
+
+def test_output_times_left_out_inside_the_span_are_told_by_their_times():
+    told = _told(np.delete(TIMES, [0, 25, 50, 75]))  # the start and three breaks left out
+    assert told.diagnosis == "samples_left_out"
+    assert "0, 0.5, 1, 1.5 s are left out" in told.message
+
+
+def test_every_tenth_output_time_alone_is_an_output_step_too_long():
+    told = _told(TIMES[::10])
+    assert told.diagnosis == "output_step"
+    assert "one of every 10" in told.message and "0.2 s apart, not 0.02 s" in told.message
+
+
+@pytest.mark.parametrize("t, stops", [(TIMES[:-1], "the last output time, 2 s, is not in it"),
+                                      (TIMES[:80], "the last 21 output times, from 1.6 s to 2 s, are not in it")])
+def test_a_run_that_stops_short_says_where_and_names_no_cause(t, stops):
+    told = _told(t)  # the end taken with <, the last piece never integrated or an event: too many causes
+    assert told.diagnosis == "shape"
+    assert stops in told.message
+
+
+@pytest.mark.parametrize("t", [np.r_[np.delete(TIMES, 10), 2.0, 2.0],  # 0.2 s left out, 2 s thrice
+                               np.r_[TIMES[:50], TIMES[50:] + 1e-4, 2.5]])  # times off the grid
+def test_times_both_left_out_and_twice_or_off_the_grid_name_no_cause(t):
+    assert _told(t).diagnosis == "shape"
