@@ -141,10 +141,19 @@ def _assert_start(run, q0, qd0, what):
 
 def _assert_output_times(run, expected, what, dt=SIMULATION_DT):
     """The run's output times are the reference's (every ``dt`` from 0): the states are compared row by row, so a
-    run whose times are shifted would otherwise pass with the right states at the wrong times."""
+    run whose times are shifted would otherwise pass with the right states at the wrong times.  Times at the
+    default step where another ``dt`` is given are the argument ignored; times that are some of the expected ones
+    are told by those left out or kept twice (``run_array``)."""
     expected = np.asarray(expected, dtype=float)
     note = f"An output every dt = {dt:g} s from 0 to {expected[-1]:g} s (the t_eval of solve_ivp)."
     t = run_array(run, "t", None, what)
+    if dt != SIMULATION_DT and t.size != expected.size:
+        default = np.linspace(0.0, expected[-1], int(round(expected[-1] / SIMULATION_DT)) + 1)
+        if t.shape == default.shape and close(t, default, EXACT):
+            fail(f"the output times of {what} lie {SIMULATION_DT:g} s apart, the default step, not the dt = "
+                 f"{dt:g} s it is given.\n{note}", "Output every dt that simulate is given (t_eval from dt), not "
+                 "at the default step.", "ignored_argument")
+    run_array(run, "t", None, what, times=expected)
     if t.shape != expected.shape:
         fail(f"the output times of {what} are {t.size} values, expected {expected.size}.\n{note}",
              diagnosis="shape")

@@ -180,7 +180,7 @@ def _assert_small_motion(ctx):
     got = ctx.student(p38.simulate, T_SMALL, N_SMALL, I_GRAV, SMALL_START, timeout=SIMULATION_TIMEOUT)
     q0, qd0 = (np.round(x, 4).tolist() for x in SMALL_START)
     what = f"simulate({T_SMALL:g}, {N_SMALL}, q0 = {q0}, qd0 = {qd0})"
-    t = run_array(got, "t", None, what)
+    t = run_array(got, "t", None, what, times=expected["t"])
     if t.shape != np.shape(expected["t"]):
         typed = t.size == N_OUTPUT
         sheet = f" (the sheet's n = {N_OUTPUT}, whatever n is given)" if typed else ""
