@@ -275,6 +275,8 @@ _TABLE = (
     # ---------------------------------------------------------------- missing terms
     *_terms(),
     _D("missing_term", "missing_term", "a term left out of a sum", "left a term out of a sum"),
+    _D("missing_identity", "missing_term", "the identity matrix left out of a product (a number added to every "
+       "entry, not to the diagonal alone)", "left the identity matrix out"),
     _D("missing_rotation", "missing_term", "the rotational part J_R.T I J_R missing", "left out the rotation"),
     _D("missing_translation", "missing_term", "the translational part J_S.T m J_S missing",
        "left out the translation"),

@@ -68,7 +68,8 @@ argument left out of a call of a function or a class of the reference whose para
 callee then uses the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation
 left out, ``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M
 J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3)
-+ W``: numpy adds it to every entry, a term added, told as an offset as well where it is the same on every input), and a
++ W``: numpy adds it to every entry, a term added, told as an offset as well where it is the same on every input) or
+left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the identity left out, a term of its own), and a
 body's matrix turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @
 B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame); last of all, after the reads of
 names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the ones the
@@ -580,6 +581,8 @@ SLIPS = {
     "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
+    "identity_left_out": ("missing_identity", "the identity matrix of a product in `{f}` is left out (the number "
+                                              "it multiplies is added to every entry, not to the diagonal alone)"),
     "event_residual": ("event_residual", "the event function in `{f}` returns a test or a magnitude (`y > 0`, "
                        "`abs(...)`) where a residual belongs that changes sign at the event"),
     "converted_degrees": ("degrees", "`{f}` converts an angle to degrees where it takes its sine or cosine in "
@@ -666,9 +669,13 @@ def _np_round(node, decimals: int):
 
 
 def _dropped(operand) -> str:
-    """The slip of a factor left out of a product: a number, a rotation (a frame slip) or another factor."""
+    """The slip of a factor left out of a product: a number, the identity matrix (``(r @ r) * np.eye(3)`` as
+    ``r @ r``: the number is added to every entry, not to the diagonal alone), a rotation (a frame slip) or another
+    factor."""
     if _number(operand) or (isinstance(operand, ast.UnaryOp) and _number(operand.operand)):
         return "number"
+    if isinstance(operand, ast.Call) and _callee(operand) in ("eye", "identity"):
+        return "identity_left_out"
     return "rotation" if _ROTATION.match(_label(operand) or "-") else "factor"
 
 

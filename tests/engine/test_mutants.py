@@ -721,6 +721,13 @@ def box_moment(m, a):
     # END SOLUTION
 
 
+def steiner(m, r):
+    """The parallel-axis term of a mass ``m`` at ``r``: ``m (r.r E - r r^T)``."""
+    # BEGIN SOLUTION problem 98
+    return m * ((r @ r) * np.eye(3) - np.outer(r, r))
+    # END SOLUTION
+
+
 def turn(phi):
     """The rotation about the third axis by ``phi``, written out."""
     # BEGIN SOLUTION problem 98
@@ -1667,6 +1674,19 @@ def test_a_quantity_left_out_of_a_quotients_numerator_is_a_factor_left_out(made_
     assert names == {"missing_factor"}, [(h.name, h.detail) for h in found]
     near = names_of(made_up, "box_moment", lambda m, a: m / 6 * a**2, inputs)
     assert "missing_factor" not in near[0], [(h.name, h.detail) for h in near[1]]
+
+
+def test_the_identity_left_out_of_a_product_is_told_so_not_as_a_factor_left_out(made_up):
+    """``(r @ r) * np.eye(3)`` written ``r @ r``: the number is added to every entry, not to the diagonal alone (a
+    term of the identity's own, told beside the identity written as the number 1, a term added); the near miss
+    ``2 (r @ r) E`` (the number doubled) is no identity left out."""
+    inputs = [(2.0, np.array([0.3, -0.7, 1.1])), (0.6, np.array([-1.2, 0.4, 0.5]))]
+    names, found = names_of(made_up, "steiner", lambda m, r: m * ((r @ r) - np.outer(r, r)), inputs)
+    assert "missing_identity" in names and "missing_factor" not in names, [(h.name, h.detail) for h in found]
+    assert {DIAGNOSES[n].family for n in names} <= {"missing_term", "extra_term"}, names
+    assert any("the identity matrix of a product in `steiner` is left out" in h.detail for h in found)
+    near = names_of(made_up, "steiner", lambda m, r: m * (2 * (r @ r) * np.eye(3) - np.outer(r, r)), inputs)
+    assert "missing_identity" not in near[0], [(h.name, h.detail) for h in near[1]]
 
 
 def test_a_rotation_written_out_transposed_is_also_the_rotation_the_other_way(made_up):
