@@ -312,6 +312,8 @@ _TABLE = (
     _D("earth_gravity", "ignored_argument", "the Earth's gravity where another is given", "used the Earth's gravity"),
     # ---------------------------------------------------------------- motions
     _D("initial_state", "initial_state", "a run that starts from a wrong state", "started from a wrong state"),
+    _D("start_value", "initial_state", "the value at the start read where the value computed from it belongs (the "
+       "start returned for the end)", "returned the start for the end"),
     _D("starts_at_rest", "initial_state", "a run that starts at rest where it should move",
        "started at rest instead of in motion"),
     _D("not_horizontal", "initial_state", "a start that is not horizontal", "did not start horizontal"),

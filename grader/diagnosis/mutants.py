@@ -61,7 +61,9 @@ q4``, a term added or left out as well; the angles of a function are the names i
 where a function of the reference reads its parameter so), and a parameter read as the constant or the number of its
 default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for
 ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of
-them: the argument ignored; and an entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
+them: the argument ignored; a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
+``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
+entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
 index).  Among the slips of a place are also a loop (or a comprehension's first loop) over one item fewer, that stops
 one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a keyword
 argument left out of a call of a function or a class of the reference whose parameter of that name has a default (the
@@ -533,6 +535,8 @@ SLIPS = {
     "angle_part": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
                                     "where its argument belongs: the argument is ignored"),
+    "start_value": ("start_value", "`{f}` reads the value at the start where the value it computed from it belongs "
+                    "(the computation left unused: the start returned for the end)"),
     "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
     "axes": ("transpose", "`{f}` takes a row of a matrix where its column belongs, or the reverse"),
     "cycled": ("swapped", "`{f}` lists quantities in another order (the last first, or the first last)"),
@@ -1775,6 +1779,27 @@ def _default_slips(function: ast.FunctionDef, lines: tuple, defaults: dict):
             yield slip, ("read_as", name, value)
 
 
+#: a name of a value at the start, of a module's constant or a parameter (``ANGLES0``, ``START_ANGLES``, ``x0``)
+_START = re.compile(r"^([A-Za-z]\w*0|(start|initial)_\w+|\w+_(start|initial))$", re.IGNORECASE)
+
+
+def _starts(function: _Function) -> dict:
+    """``{name: start}`` of the names the function binds (not its parameters) to a value computed from one value
+    at the start, a module's constant or a parameter named so (``angles = START_ANGLES.copy()``, ``angles =
+    _run(step, ANGLES0)``, ``x = x0``): a read of such a name may be a read of its start, the value computed from
+    it then left unused (``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start returned for the end)."""
+    parameters = _parameters(function.node)
+    known = function.constants | parameters
+    found: dict = {}
+    for node in ast.walk(function.node):
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name) \
+                and node.targets[0].id not in parameters:
+            read = {n.id for n in ast.walk(node.value) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)
+                    and n.id in known and _START.match(n.id)}
+            found.setdefault(node.targets[0].id, set()).update(read - {node.targets[0].id})
+    return {name: next(iter(read)) for name, read in found.items() if len(read) == 1}
+
+
 def _angles(function: _Function) -> frozenset:
     """The names the function reads as angles: the argument of a sine or a cosine (``phi`` of ``np.cos(phi)``),
     and an argument passed where a function of the reference takes an angle (``a`` of ``rot(1, a)`` where
@@ -1807,11 +1832,12 @@ def _sums(function: ast.FunctionDef) -> dict:
     return found
 
 
-def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict):
+def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict):
     """One read of a name for another of its kind: an angle for another angle that the function reads
     (``np.cos(beta)`` for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the
     read of the sum for its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its module's constant or the Earth's
-    gravity (``_defaults``: the argument ignored); a slice's axes exchanged in one statement (``V[2, :]`` for
+    gravity (``_defaults``: the argument ignored), a name bound to a value computed from a start read as that start
+    (``_starts``: the computation left unused); a slice's axes exchanged in one statement (``V[2, :]`` for
     ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates, say) in the order of
     another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
@@ -1822,6 +1848,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict):
                 yield slip, lambda n, other=other: ast.Name(other, ast.Load())
         for slip, value in defaults.get(node.id, ()):
             yield slip, lambda n, value=value: copy.deepcopy(value)
+        if node.id in starts:  # ``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start for the value computed
+            yield "start_value", lambda n: ast.Name(starts[n.id], ast.Load())
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
@@ -1891,7 +1919,7 @@ def _mutated(function: _Function, lines: tuple):
     names, parameters = _names(function.node), _parameters(function.node)
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
-    angles, defaults, sums = _angles(function), _defaults(function), _sums(function.node)
+    angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -1904,7 +1932,7 @@ def _mutated(function: _Function, lines: tuple):
                 if late_pass is CONVERSIONS else \
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
-            slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums),
+            slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums, starts),
                                                                    _written_index_slips(node))
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
@@ -2343,8 +2371,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
-LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "earth", "axes", "cycled", "typed",
-                        "written_index", "converted_radians", "converted_rpm", "converted_degrees"})
+LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "start_value", "earth", "axes", "cycled",
+                        "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

@@ -353,6 +353,19 @@ import math
 
 import numpy as np
 
+#: where the made-up drift starts
+DRIFT_START = np.array([0.1, -0.2, 0.3])
+
+
+def drift(rate, n):
+    """Drift from ``DRIFT_START`` by ``rate`` for ``n`` steps: ``{"x": the end, "size": its length}``."""
+    # BEGIN SOLUTION problem 98
+    x = DRIFT_START.copy()
+    for _ in range(n):
+        x = x + rate
+    return {"x": x, "size": float(np.linalg.norm(x))}
+    # END SOLUTION
+
 
 def difference(a, b):
     """``(a - b, a b)``."""
@@ -795,6 +808,10 @@ def made_up_evidences(package, name, student, inputs, path=(), number=98):
     probe = made_up_probe(name, number)
     return [Evidence(array_of(at(student(*args), path)), array_of(at(probe(package, *args), path)), TIGHT,
                      "value", source=Source(probe, args, path)) for args in inputs]
+
+
+#: the made-up drift's start, as the made-up module binds it
+DRIFT_START = np.array([0.1, -0.2, 0.3])
 
 
 def test_a_value_two_families_give_is_could_be(made_up):
@@ -1687,6 +1704,26 @@ def test_the_identity_left_out_of_a_product_is_told_so_not_as_a_factor_left_out(
     assert any("the identity matrix of a product in `steiner` is left out" in h.detail for h in found)
     near = names_of(made_up, "steiner", lambda m, r: m * (2 * (r @ r) * np.eye(3) - np.outer(r, r)), inputs)
     assert "missing_identity" not in near[0], [(h.name, h.detail) for h in near[1]]
+
+
+def test_the_start_read_where_the_value_computed_from_it_belongs_is_a_start_value(made_up):
+    """``np.linalg.norm(DRIFT_START)`` for ``np.linalg.norm(x)``, where ``x`` is computed from ``DRIFT_START``: the
+    start returned for the end (an initial state); the near miss, the end after one step fewer, is no start read."""
+    inputs = [(np.array([0.3, 0.1, -0.2]), 4), (np.array([-0.5, 0.7, 0.2]), 3)]
+
+    def told(size):  # the end compared (right) and its length (the student's ``size``)
+        def student(rate, n):
+            return {"x": DRIFT_START + n * rate, "size": size(rate, n)}
+        evidences = [e for path in (("x",), ("size",)) for e in made_up_evidences(made_up, "drift", student, inputs,
+                                                                                    path)]
+        found = mutants.mutant_slips(scene("p98.made_up"), evidences)
+        return {h.name for h in found}, found
+
+    names, found = told(lambda rate, n: float(np.linalg.norm(DRIFT_START)))
+    assert names == {"start_value"}, [(h.name, h.detail) for h in found]
+    assert DIAGNOSES["start_value"].family == "initial_state"
+    near = told(lambda rate, n: float(np.linalg.norm(DRIFT_START + (n - 1) * rate)))
+    assert "start_value" not in near[0], [(h.name, h.detail) for h in near[1]]
 
 
 def test_a_rotation_written_out_transposed_is_also_the_rotation_the_other_way(made_up):
