@@ -208,16 +208,16 @@ def assert_alike_on_formulas(name: str, live, kit) -> bool:
     """Parity where the live grading names a slip inside a formula (``grader.diagnosis.mutants``: its hint names
     the student's function in backquotes): the kit holds no reference code to mutate, so it fails alike and names
     the same cause or none (saying, where it can tell, that the graded submission may say more: the tier's own
-    tests hold that); where the check names an effect its value shows (``grader.diagnosis.EFFECTS``: a sign) and the
+    tests hold that); where the check names an effect its value shows (``grader.diagnosis.effect``: a sign, a term not there) and the
     live grading tells a slip inside a formula beside it (``grader.diagnosis.rival``), the kit names the check's
     alone.  False when the live diagnosis is not of that tier."""
-    from grader.diagnosis import EFFECTS
+    from grader.diagnosis import effect
     from grader.diagnosis.mutants import NAMES_A_FUNCTION
 
     if live.status is not Status.FAILED or not live.diagnosis or not NAMES_A_FUNCTION.search(live.hint):
         return False
     assert kit.status is live.status, (name, kit.check_id, kit.message[:400])
-    beside = kit.diagnosis in EFFECTS and live.diagnosis.startswith(f"{kit.diagnosis} or ")
+    beside = effect(kit.diagnosis) and live.diagnosis.startswith(f"{kit.diagnosis} or ")
     assert kit.diagnosis in (live.diagnosis, "") or beside, (name, kit.check_id, live.diagnosis, kit.diagnosis)
     return True
 

@@ -109,7 +109,9 @@ is explained as a failing comparison (on the input shown and the engine's own se
 told beside the symptom, whose message stays.  A check that names an effect its value shows (``EFFECTS``: some
 entries with the wrong sign, found by comparing the value with the expected one) asks the formula tier for the
 exchanges of two operands whose effect that sign is (``rival``, ``mutants.opposite_slips``: a call's two points
-exchanged negate the lever arm between them), on the input shown alone where there is no second one: a rival found
+exchanged negate the lever arm between them), and for a check that names a term that is not there (``MISSING_TERMS``)
+the reorders of two factors of a product that make it vanish (``I (w x w)`` for ``w x (I w)``: the gyroscopic term
+written, in an order in which it is zero), on the input shown alone where there is no second one: a rival found
 is told beside the check's name, "could be" either; the kit, which holds no reference code, tells the check's name
 alone.  A randomized comparison whose shown input has no comparison (the
 student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
@@ -155,6 +157,8 @@ __all__ = [
     "SYMPTOMS",
     "rival",
     "EFFECTS",
+    "MISSING_TERMS",
+    "effect",
     "prepare",
     "prepare_call",
     "prepared",
@@ -222,15 +226,26 @@ def judge(ctx, evidence) -> Finding | None:
 #: student's value with the expected one), which a slip of another family has as its effect: an exchange of two
 #: operands that enter as a difference (``mutants.OPPOSITES``)
 EFFECTS = ("sign_flip",)
+#: the family of the names of a term that is not there, which a check tells from what its value shows as well: the
+#: formula tier hears two factors of a product reordered so that the term vanishes (``I (w x w)`` for ``w x (I w)``)
+MISSING_TERMS = "missing_term"
+
+
+def effect(diagnosis: str) -> bool:
+    """Whether ``diagnosis`` names an effect the value shows (``EFFECTS``, or a name of ``MISSING_TERMS``), whose
+    edit the formula tier may find (``rival``)."""
+    from checks._diagnoses import DIAGNOSES
+
+    return diagnosis in EFFECTS or (diagnosis in DIAGNOSES and DIAGNOSES[diagnosis].family == MISSING_TERMS)
 
 
 def rival(ctx, evidence, diagnosis: str) -> Finding | None:
-    """A check's ``diagnosis`` that names an effect its value shows (``EFFECTS``), with the rival of the other
-    family of ``mutants.OPPOSITES`` that the engine finds on the failing comparison ``evidence`` (two arguments
+    """A check's ``diagnosis`` that names an effect its value shows (``effect``), with the rival of another
+    family (``mutants.EFFECT_RIVALS``) that the engine finds on the failing comparison ``evidence`` (two arguments
     exchanged whose effect is that sign: the exchange is the edit, the sign its effect): the check's name and the
     rival's, "could be" either, and the engine's hint; None where the engine finds no such rival, or finds causes
     of a third family (the check's name stands)."""
-    if not ENABLED or evidence is None or diagnosis not in EFFECTS \
+    if not ENABLED or evidence is None or not effect(diagnosis) \
             or getattr(getattr(ctx, "oracle", None), "mode", "") != "live":  # the kit holds no reference code
         return None
     trace.begin(getattr(ctx, "check_id", ""), "rival")

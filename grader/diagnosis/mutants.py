@@ -171,7 +171,7 @@ from .grammar import equivalents
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
            "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
-           "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips", "late", "left_to_live"]
+           "FACTORS_REORDERED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -2645,9 +2645,11 @@ class _Deadline:
 
 def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: _Deadline,
               originals: dict, judged: bool = True, kept: list | None = None,
-              progress: dict | None = None, twins: tuple = (), ran: frozenset | None = None) -> list[Mutant] | None:
+              progress: dict | None = None, twins: tuple = (), ran: frozenset | None = None,
+              vanishing: bool = False) -> list[Mutant] | None:
     """The mutants that reproduce the student's value on every input (and, ``judged``, differ from the expected
-    value on one, and from zero), or None when the time ran out first.  ``originals`` keeps the code of every
+    value on one, and from zero unless ``vanishing``: a value that vanishes is the effect a check named), or None
+    when the time ran out first.  ``originals`` keeps the code of every
     function changed (``_restore`` puts it back); ``kept`` (given) gathers the mutants kept as they are found and
     ``progress["tried"]`` counts the mutants tried to the end, for a caller that uses them when the time runs out.
     ``twins`` (``_twins``, where the reference's value holds without them): the codes without simplifications of
@@ -2700,7 +2702,7 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
                                                              for v, e in zip(values, inputs))
         if not beyond and not any(distinct(v, e.expected, e.tol) for v, e in zip(values, inputs)):
             continue  # an equivalent mutant (one of precision differs by little, but beyond the tolerance)
-        if not any(distinct(v, np.zeros_like(v), e.tol) for v, e in zip(values, inputs)):
+        if not vanishing and not any(distinct(v, np.zeros_like(v), e.tol) for v, e in zip(values, inputs)):
             continue
         kept.append(mutant)
     progress["tried"] = len(mutants)
@@ -3297,22 +3299,30 @@ def _opposite(kept: list[Mutant]) -> str | None:
 OPERANDS_EXCHANGED = frozenset({"arguments", "names", "parameters", "blocks", "entries", "components", "factors"})
 
 
+#: the slips that reorder two factors of a product: their effect may be a term that vanishes (``I @ skew(w) @ w``
+#: for ``skew(w) @ I @ w``)
+FACTORS_REORDERED = frozenset({"factors", "neighbours"})
+#: ``{family a check tells from what the value shows: (the rival's family, the slips whose effect it may be)}``
+EFFECT_RIVALS = {"sign": ("order", OPERANDS_EXCHANGED), "missing_term": ("order", FACTORS_REORDERED)}
+
+
 def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypothesis]:
-    """The slips of ``family``'s opposite (``OPPOSITES``) that reproduce the student's value on ``evidences``, for a
-    check that told ``family`` from what the value shows (``diagnosis.rival``): where the check named a sign, the
-    exchanges of two operands (``OPERANDS_EXCHANGED``), whose effect may be that sign.  On the input shown alone
-    where the engine has no second one (a call of no arguments): a rival adds a name to the check's, which the value
-    proves already, and explains nothing by itself.  None in the kit."""
-    opposite = OPPOSITES.get(family)
+    """The slips whose effect ``family`` may be (``EFFECT_RIVALS``) that reproduce the student's value on
+    ``evidences``, for a check that told ``family`` from what the value shows (``diagnosis.rival``): where the check
+    named a sign, the exchanges of two operands (``OPERANDS_EXCHANGED``); where it named a term that is not there, two
+    factors of a product reordered (``FACTORS_REORDERED``: the term written, in an order in which it vanishes).  On
+    the input shown alone where the engine has no second one (a call of no arguments): a rival adds a name to the
+    check's, which the value proves already, and explains nothing by itself.  None in the kit."""
+    opposite, only = EFFECT_RIVALS.get(family, (None, frozenset()))
     first = evidences[0] if evidences else None
-    if getattr(scene.ctx.oracle, "mode", "") != "live" or opposite != "order" or first is None \
+    if getattr(scene.ctx.oracle, "mode", "") != "live" or opposite is None or first is None \
             or first.source is None or first.got is None or any(e.source is None or e.got is None for e in evidences):
         return []
     problem = _problem(getattr(scene.ctx, "check_id", ""), first.source.probe)
     if problem is None:
         return []
     try:
-        kept = _kept(problem, list(evidences), only=OPERANDS_EXCHANGED)
+        kept = _kept(problem, list(evidences), only=only, vanishing=family == "missing_term")
     except GraderFault:
         return []
     trace.note("opposite", family=opposite, kept=None if kept is None else sorted({m.name for m in kept}))
@@ -3643,13 +3653,15 @@ def _constant_stage(package, root: Path, problem: int, evidences: list[Evidence]
 
 
 def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None = None,
-          told=None, only=None, outcome: dict | None = None, constants: frozenset | None = None) -> list[Mutant] | None:
+          told=None, only=None, outcome: dict | None = None, constants: frozenset | None = None,
+          vanishing: bool = False) -> list[Mutant] | None:
     """The mutants (of the problem's functions that the first input's call runs, or ``mutants``) that reproduce
     the student's value on ``evidences``, or None when the time ran out; ``told``: see ``mutant_slips``; ``only``:
     the slips tried, where not all; where none of a solution region's slips reproduces it (and no earlier tier
     explained the answer), the slips of the code the problem's module gives whole (``_given``); ``outcome``
     (given) gets ``"timeout"`` where the time ran out on a stage; ``constants`` (given): only the slips of these
-    module constants (``(module, name)``) are tried."""
+    module constants (``(module, name)``) are tried; ``vanishing``: a mutant whose value vanishes is kept (see
+    ``_evaluate``)."""
     first = evidences[0]
     made = mutants is None
     judged = len(evidences) > 1 or only is not None  # one input of its own: a slip of precision, judged there
@@ -3698,7 +3710,7 @@ def _kept(problem: int, evidences: list[Evidence], mutants: list[Mutant] | None 
                             trace.note("late", told=sorted(told), count=len(mutants), rivals=rivals)
                     if mutants and rivals is None:
                         kept = _evaluate(package, mutants, evidences, deadline, originals, judged=judged, twins=twins,
-                                         ran=called)
+                                         ran=called, vanishing=vanishing)
                 if made and mutants == []:
                     kept = []  # no function of a region runs: none of their slips reproduces the value
                 if kept and made and told is None and only is None and _opposite(kept) is not None:

@@ -766,6 +766,18 @@ def spin_torque(A_IB, B_I_B, w):
     # END SOLUTION
 
 
+def skew(w):
+    """The matrix of ``w x``."""
+    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+
+def euler_torque(B_I_B, w):
+    """Euler's gyroscopic torque ``-w x (B_I_B w)``, with the skew matrix of ``w``."""
+    # BEGIN SOLUTION problem 98
+    return -skew(w) @ B_I_B @ w
+    # END SOLUTION
+
+
 def relaxed(K, c):
     """``E + c K``."""
     # BEGIN SOLUTION problem 98
@@ -1783,6 +1795,20 @@ def test_a_sign_no_exchange_makes_has_no_rival(made_up):
     assert mutants.opposite_slips(scene("p98.difference"), evidences, "sign") == []
     evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0)])
     assert mutants.opposite_slips(scene("p98.difference"), evidences, "scale") == []
+
+
+def test_a_term_a_check_told_missing_has_the_reorder_that_makes_it_vanish_as_a_rival(made_up):
+    """A check that tells a term left out from what the value shows (it vanishes) hears the reorders of two
+    factors of a product whose effect that is: ``B_I_B @ skew(w) @ w`` for ``skew(w) @ B_I_B @ w`` is zero, the term
+    written in an order in which it vanishes.  The near miss, half the torque, has none; nor has a check's name of
+    another family."""
+    inputs = [(SPD, V(0.3, -1.0, 0.5)), (2.0 * SPD + np.eye(3), V(-0.8, 0.2, 1.1))]
+    evidences = made_up_evidences(made_up, "euler_torque", lambda I, w: -I @ np.cross(w, w), inputs)
+    found = mutants.opposite_slips(scene("p98.euler_torque"), evidences, "missing_term")
+    assert {h.name for h in found} == {"factor_order"}, [(h.name, h.detail) for h in found]
+    half = made_up_evidences(made_up, "euler_torque", lambda I, w: -np.cross(w, I @ w) / 2, inputs)
+    assert mutants.opposite_slips(scene("p98.euler_torque"), half, "missing_term") == []
+    assert mutants.opposite_slips(scene("p98.euler_torque"), evidences, "scale") == []
 
 
 #: two inputs of ``compliant_rates``
