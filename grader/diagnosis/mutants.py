@@ -61,7 +61,8 @@ q4``, a term added or left out as well; the angles of a function are the names i
 where a function of the reference reads its parameter so), and a parameter read as the constant or the number of its
 default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for
 ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of
-them: the argument ignored; a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
+them: the argument ignored (and every parameter that has a default read as it at once: every argument ignored); a
+name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
 ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
 entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
 index).  Among the slips of a place are also a loop (or a comprehension's first loop) over one item fewer, that stops
@@ -535,6 +536,8 @@ SLIPS = {
     "angle_part": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
                                     "where its argument belongs: the argument is ignored"),
+    "defaults": ("ignored_argument", "`{f}` reads every parameter that has a default as that default (the module's "
+                 "constants), whatever it is given: every argument ignored"),
     "start_value": ("start_value", "`{f}` reads the value at the start where the value it computed from it belongs "
                     "(the computation left unused: the start returned for the end)"),
     "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
@@ -1773,10 +1776,15 @@ def _defaults(function: _Function) -> dict:
 
 def _default_slips(function: ast.FunctionDef, lines: tuple, defaults: dict):
     """Every read of a parameter in the region read as its default, its module's constant or the Earth's gravity
-    (``_defaults``): the argument ignored throughout."""
+    (``_defaults``): the argument ignored throughout; and, where several parameters have one, every read of each
+    read as its first (``np.diag([I_AXIAL, I_TRANSVERSE, I_TRANSVERSE])`` for ``np.diag([I_axial, I_transverse,
+    I_transverse])``: every argument ignored, the answer the one at the module's constants)."""
     for name, reads in defaults.items():
         for slip, value in reads:
             yield slip, ("read_as", name, value)
+    firsts = tuple((name, reads[0][1]) for name, reads in defaults.items() if reads[0][0] == "default")
+    if len(firsts) > 1:
+        yield "defaults", ("read_all_as", firsts)
 
 
 #: a name of a value at the start, of a module's constant or a parameter (``ANGLES0``, ``START_ANGLES``, ``x0``)
@@ -1964,6 +1972,9 @@ def _mutated(function: _Function, lines: tuple):
                 _unit(tree, lines, edit[1])
             elif isinstance(edit, tuple) and edit[0] == "read_as":
                 _read_as(tree, lines, edit[1], edit[2])
+            elif isinstance(edit, tuple) and edit[0] == "read_all_as":
+                for name, value in edit[1]:
+                    _read_as(tree, lines, name, value)
             elif isinstance(edit, tuple) and edit[0] == "single":
                 _single(tree, edit[1])
             elif isinstance(edit, tuple):
@@ -2371,8 +2382,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
-LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "start_value", "earth", "axes", "cycled",
-                        "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees"})
+LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
+                        "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

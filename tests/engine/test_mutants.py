@@ -355,6 +355,16 @@ import numpy as np
 
 #: where the made-up drift starts
 DRIFT_START = np.array([0.1, -0.2, 0.3])
+#: the made-up rotor's moments of inertia
+I_AXIS = 2.0
+I_ACROSS = 3.5
+
+
+def rotor_inertia(I_axis=I_AXIS, I_across=I_ACROSS):
+    """The rotor's inertia with its axis along 1."""
+    # BEGIN SOLUTION problem 98
+    return np.diag([I_axis, I_across, I_across])
+    # END SOLUTION
 
 
 def drift(rate, n):
@@ -1736,6 +1746,19 @@ def test_the_start_read_where_the_value_computed_from_it_belongs_is_a_start_valu
     assert DIAGNOSES["start_value"].family == "initial_state"
     near = told(lambda rate, n: float(np.linalg.norm(DRIFT_START + (n - 1) * rate)))
     assert "start_value" not in near[0], [(h.name, h.detail) for h in near[1]]
+
+
+def test_every_parameter_read_as_its_default_is_every_argument_ignored(made_up):
+    """``np.diag([I_AXIS, I_ACROSS, I_ACROSS])`` for ``np.diag([I_axis, I_across, I_across])``: the module's
+    constants, whatever the arguments (every argument ignored at once); the near miss, one of them read so, is the
+    one argument ignored."""
+    inputs = [(4.0, 6.0), (1.5, 0.5)]
+    told = "reads every parameter that has a default as that default"
+    names, found = names_of(made_up, "rotor_inertia", lambda a, b: np.diag([2.0, 3.5, 3.5]), inputs)
+    assert names == {"ignored_argument"} and any(told in h.detail for h in found), [(h.name, h.detail) for h in found]
+    names, found = names_of(made_up, "rotor_inertia", lambda a, b: np.diag([2.0, b, b]), inputs)
+    assert names == {"ignored_argument"} and not any(told in h.detail for h in found), \
+        [(h.name, h.detail) for h in found]
 
 
 def test_a_rotation_written_out_transposed_is_also_the_rotation_the_other_way(made_up):
