@@ -65,7 +65,7 @@ them: the argument ignored (and every parameter that has a default read as it at
 name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
 ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
 entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
-index).  Among the slips of a place are also a loop (or a comprehension's first loop) over one item fewer, that stops
+index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one item fewer, that stops
 one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a keyword
 argument left out of a call of a function or a class of the reference whose parameter of that name has a default (the
 callee then uses the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation
@@ -809,8 +809,11 @@ def _slips(node, parent):
         yield "event_residual", lambda n: _with(n, value=ast.Call(ast.Name("abs", ast.Load()), [n.value], []))
     if isinstance(node, (ast.For, ast.ListComp, ast.GeneratorExp, ast.SetComp, ast.DictComp)):
         steps = _stepping(node)
-        yield "steps_short" if steps else "loop_short", lambda n: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None))
-        yield "steps_late" if steps else "loop_late", lambda n: _loop_cut(n, ast.Slice(ast.Constant(1), None, None))
+        for k in range(1 if isinstance(node, ast.For) else len(node.generators)):  # each of a comprehension's loops
+            yield "steps_short" if steps else "loop_short", \
+                lambda n, k=k: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None), k)
+            yield "steps_late" if steps else "loop_late", \
+                lambda n, k=k: _loop_cut(n, ast.Slice(ast.Constant(1), None, None), k)
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign, ast.Expr)) and _inverses(node) >= 2:
         yield "inverses", lambda n: _Uninverted().visit(n)
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):
@@ -844,16 +847,16 @@ def _stepping(node) -> bool:
     return False
 
 
-def _loop_cut(node, cut: ast.Slice):
-    """The loop (or the comprehension's first loop) over its items ``cut``: ``[*items][:-1]`` (one short) or
+def _loop_cut(node, cut: ast.Slice, k: int = 0):
+    """The loop (or the comprehension's ``k``-th loop) over its items ``cut``: ``[*items][:-1]`` (one short) or
     ``[*items][1:]`` (one late), whatever the items are (a list, a range, an ``enumerate``)."""
     def cut_of(items):
         return ast.Subscript(ast.List([ast.Starred(items, ast.Load())], ast.Load()), cut, ast.Load())
 
     if isinstance(node, ast.For):
         return _with(node, iter=cut_of(node.iter))
-    first = _with(node.generators[0], iter=cut_of(node.generators[0].iter))
-    return _with(node, generators=[first] + node.generators[1:])
+    loop = _with(node.generators[k], iter=cut_of(node.generators[k].iter))
+    return _with(node, generators=node.generators[:k] + [loop] + node.generators[k + 1:])
 
 
 def _inverse_call(node) -> bool:

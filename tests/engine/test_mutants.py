@@ -776,6 +776,13 @@ def spin_torque(A_IB, B_I_B, w):
     # END SOLUTION
 
 
+def weighed(values):
+    """Each value counted once in full and once at a weight of a half."""
+    # BEGIN SOLUTION problem 98
+    return sum(v * w for v in values for w in (1.0, 0.5))
+    # END SOLUTION
+
+
 def skew(w):
     """The matrix of ``w x``."""
     return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
@@ -1759,6 +1766,18 @@ def test_every_parameter_read_as_its_default_is_every_argument_ignored(made_up):
     names, found = names_of(made_up, "rotor_inertia", lambda a, b: np.diag([2.0, b, b]), inputs)
     assert names == {"ignored_argument"} and not any(told in h.detail for h in found), \
         [(h.name, h.detail) for h in found]
+
+
+def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
+    """``for w in (1.0,)`` for ``for w in (1.0, 0.5)``, the second loop of a comprehension one short: the terms of
+    its last item are left out of the sum, as with its first loop; the near miss, every value weighed 1.4, is no
+    loop cut."""
+    inputs = [(np.array([0.3, 1.2, -0.7]),), (np.array([2.0, -0.4, 0.9, 1.1]),)]
+    names, found = names_of(made_up, "weighed", lambda values: float(np.sum(values)), inputs)
+    assert names == {"missing_term"}, [(h.name, h.detail) for h in found]
+    assert any("stops one short" in h.detail for h in found), [h.detail for h in found]
+    near = names_of(made_up, "weighed", lambda values: 1.4 * float(np.sum(values)), inputs)
+    assert not any("stops one short" in h.detail for h in near[1]), [(h.name, h.detail) for h in near[1]]
 
 
 def test_a_rotation_written_out_transposed_is_also_the_rotation_the_other_way(made_up):
