@@ -2277,14 +2277,15 @@ def _probe(probe):
     return getattr(importlib.import_module(f"probes.{module_name}"), name)
 
 
-def _call(package, probe, args, path, quick: bool = False, replies: dict | None = None):
+def _call(package, probe, args, path, quick: bool = False, replies: dict | None = None, remember: bool = False):
     """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the bytes of
     ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per
     package would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by
     reading its expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given):
     the whole replies of the calls made so far with the package's code as it is now, by the call, which a call on
     the same arguments reads rather than makes again (a comparison's other values of the same call, ``_siblings``),
-    and a call that raised raises again."""
+    and a call that raised raises again.  ``remember``: the package's code is the reference's own, and the probe
+    keeps what it computes once as it does for any call of the package (``probes.remembered``)."""
     from probes import fresh
     from probes._codec import decode, encode
     from probes._symbolic import quick as reading
@@ -2296,7 +2297,8 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
             raise value
         return array_of(at(value, path))
     try:
-        with fresh(), (reading() if quick else contextlib.nullcontext()):
+        with contextlib.nullcontext() if remember else fresh(), \
+                (reading() if quick else contextlib.nullcontext()):
             value = decode(encode(_probe(probe)(package, *_copied(args))))
     except Exception as error:  # noqa: BLE001 - kept for the same call, then raised as it was
         if replies is not None:
@@ -3020,7 +3022,8 @@ def own_calls(evidences: list[Evidence]) -> list[Evidence]:
     student's ``symbolic`` evaluates their derivation) with the student's own call in its place: the mutants of the
     reference are to run the code the student's call runs, not the stand-in's.  Only where the reference's value of
     the student's call is the expected value on every such input (within the comparison's tolerance, in the
-    stand-in's shape: a column where it gives a vector); else the evidences as they are."""
+    stand-in's shape: a column where it gives a vector); else the evidences as they are.  The reference's own code
+    runs these calls, so what a probe computes once (a symbolic derivation simplified) is kept for later ones."""
     stand_ins = [e for e in evidences if _stands_in(e)]
     if not stand_ins:
         return evidences
@@ -3031,7 +3034,7 @@ def own_calls(evidences: list[Evidence]) -> list[Evidence]:
         for e in stand_ins:
             own = Source(e.student.probe, tuple(e.student.args), tuple(e.student.path))
             try:
-                value = _call(package, own.probe, _kept_once(own.args), own.path, replies=replies)
+                value = _call(package, own.probe, _kept_once(own.args), own.path, replies=replies, remember=True)
             except Exception:  # noqa: BLE001 - a call the reference cannot make has no code to mutate
                 value = None
             if value is None or value.size != e.expected.size \

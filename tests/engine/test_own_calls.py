@@ -90,6 +90,32 @@ def test_a_comparison_of_the_students_own_call_stays_as_it_is(stand_in_probes):
     assert mutants.own_calls([evidence]) == [evidence]
 
 
+def test_the_reference_keeps_what_its_own_call_computes_once_and_a_mutants_call_makes_it_anew(monkeypatch):
+    """The own call runs the reference's own code: what its probe computes once (``probes.remembered``: problem 7's
+    derivation, simplified in seconds) is kept for the next grading's own call; a mutant's call makes it anew."""
+    from probes import probe, remembered
+    from probes._forms import ANY
+
+    made, store = [], {}
+
+    def derived(pkg, n):
+        return remembered(store, n, lambda: made.append(n) or {"x": np.array([1.0, 2.0])})
+
+    stub = types.ModuleType("probes.stub_kept")
+    stub.stand_in = probe(returns=ANY, reference_only=True)(lambda pkg, n: {"x": np.array([1.0, 2.0])})
+    stub.own = probe(returns=ANY)(derived)
+    monkeypatch.setitem(sys.modules, "probes.stub_kept", stub)
+    evidence = Evidence(np.array([1.0, 5.0]), np.array([1.0, 2.0]), TIGHT, "x",
+                        source=Source("stub_kept.stand_in", (1,), ("x",)),
+                        student=Source("stub_kept.own", (1,), ("x",)))
+    for _ in range(2):
+        (own,) = mutants.own_calls([evidence])
+        assert own.source.probe == "stub_kept.own"
+    assert made == [1]  # made once, for both gradings' own calls
+    mutants._call(None, "stub_kept.own", mutants._kept_once((1,)), ("x",))
+    assert made == [1, 1]  # a mutant's call (its code may differ) hears nothing kept
+
+
 def test_the_other_values_of_one_call_are_read_from_one_reply(stand_in_probes):
     replies, calls = stand_in_probes
     args = mutants._kept_once((1,))
