@@ -1321,6 +1321,21 @@ def _event_function(node) -> bool:
     return len(names) >= 2 and names[0] == "t" and bool(_STATE.match(names[1]))
 
 
+#: a name of a vector of generalized coordinates or of a run's state (``q``, ``qd``, ``q_des``, ``y``, ``state``)
+_COORDINATES = re.compile(r"^(q|qd|qdd|q_\w+|qd_\w+|y|y_\w+|state)$")
+
+
+def _unpacked_coordinates(node, parent) -> bool:
+    """The names a vector of coordinates or a state is unpacked into (``_, q2 = np.asarray(q, dtype=float)``, ``x,
+    h = y``): two of them exchanged read a coordinate from another's row."""
+    if not (isinstance(node, ast.Tuple) and isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign)):
+        return False
+    value = parent.value
+    if isinstance(value, ast.Call) and _callee(value) in ("asarray", "array", "ravel", "atleast_1d") and value.args:
+        value = value.args[0]
+    return isinstance(value, ast.Name) and bool(_COORDINATES.match(value.id))
+
+
 def _state_parts(function: ast.FunctionDef) -> set:
     """The names the function binds to parts of a run's state (``q, qd = y[:3], y[3:]``, ``x, h = y[:2]``)."""
     found = set()
@@ -1964,6 +1979,8 @@ def _mutated(function: _Function, lines: tuple):
             slip = "index" if indexing else slip  # a slip inside an index reads a wrong entry
             if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
+            elif slip == "entries" and _unpacked_coordinates(node, parent):
+                slip = "rows"  # ``q2, _ = q`` for ``_, q2 = q``: a coordinate read from another's row
             elif isinstance(edit, tuple) and len(edit) == 3 and slip in ("names", "parameters") \
                     and _rates(edit[1], edit[2]):
                 slip = f"{slip}_rates"  # a quantity and its rate exchanged: each read where the other belongs

@@ -776,6 +776,15 @@ def spin_torque(A_IB, B_I_B, w):
     # END SOLUTION
 
 
+def two_link_tip(q, lengths):
+    """The tip of a planar arm of two links at the angles ``q`` (the second relative to the first)."""
+    # BEGIN SOLUTION problem 98
+    q1, q2 = np.asarray(q, dtype=float)
+    l1, l2 = lengths
+    return np.array([l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)])
+    # END SOLUTION
+
+
 def weighed(values):
     """Each value counted once in full and once at a weight of a half."""
     # BEGIN SOLUTION problem 98
@@ -1766,6 +1775,21 @@ def test_every_parameter_read_as_its_default_is_every_argument_ignored(made_up):
     names, found = names_of(made_up, "rotor_inertia", lambda a, b: np.diag([2.0, b, b]), inputs)
     assert names == {"ignored_argument"} and not any(told in h.detail for h in found), \
         [(h.name, h.detail) for h in found]
+
+
+def test_coordinates_unpacked_into_each_others_names_are_read_from_the_wrong_rows(made_up):
+    """``q2, q1 = np.asarray(q)`` for ``q1, q2 = ...``: each angle read from the other's row of the coordinates (a
+    state read from the wrong row; the two angles exchanged in the expression that reads them give it too); the
+    near miss, the lengths unpacked so, is two quantities exchanged."""
+    inputs = [((0.3, 1.1), (1.0, 0.6)), ((-0.7, 0.4), (0.8, 1.3))]
+
+    def tip(q1, q2, l1, l2):
+        return np.array([l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)])
+
+    names, found = names_of(made_up, "two_link_tip", lambda q, l: tip(q[1], q[0], *l), inputs)
+    assert "state_row" in names and names <= {"state_row", "swapped"}, [(h.name, h.detail) for h in found]
+    near = names_of(made_up, "two_link_tip", lambda q, l: tip(*q, l[1], l[0]), inputs)
+    assert "state_row" not in near[0] and "swapped" in near[0], [(h.name, h.detail) for h in near[1]]
 
 
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
