@@ -337,6 +337,8 @@ _TABLE = (
     _D("energy_drift", "step_size", "energy that drifts in a conservative run", "let the energy drift"),
     _D("event_late", "event", "an event found late (or a run that goes past it)", "found an event late"),
     _D("event_early", "event", "an event found too early", "found an event too early"),
+    _D("state_before_event", "event", "the state at an event read from the last output before it (not solve_ivp's "
+       "y_events)", "read the state at an event from the output before it"),
     _D("event_direction", "event", "an event with the wrong direction", "gave an event the wrong direction"),
     _D("no_event", "event", "an event that never fires", "never detected the event"),
     _D("not_terminal", "event", "an event that does not end the run", "did not end the run at the event"),

@@ -80,7 +80,7 @@ The grammar:
   as asked, spaced as a grid of one more or one fewer), a constant offset, a state read from the wrong row (of the
   run, or of the state at an event: another of its rows, or a slice of the whole state there from another start,
   where the event itself is found where the reference's is), the state at an event read from the run's last output
-  before it, a wrong initial state (and, beside it, the slip of a value that gives the student's start from the
+  before it (and, its twin, a state of another time), a wrong initial state (and, beside it, the slip of a value that gives the student's start from the
   given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start typed
   rounded, its entries exchanged; on fewer numbers as a twin of the wrong start, "could be" either: one angle
   typed with the wrong sign),

@@ -363,7 +363,7 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     ran = run_of(source.root, motion)
     last = _last_output(evidence, ran, at_events[key], te)
     if last is not None:
-        return [last]
+        return last
     if ran is not None and ran[0][0] <= te <= ran[0][-1]:
         t, R = ran
         for state, samples in R.items():
@@ -387,11 +387,13 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
 LAST_OUTPUT_SHARE = 0.1
 
 
-def _last_output(evidence: Evidence, ran, spec: tuple, te: float) -> Hypothesis | None:
+def _last_output(evidence: Evidence, ran, spec: tuple, te: float) -> list | None:
     """The state at an event read from the run's last output before the event (``sol.y[:, -1]`` where
     ``sol.y_events`` belongs): the student's value of the compared key is the reference's own output of that state
     (``spec``: ``(event, state[, entry])``) at its last output time before ``te`` (within the tolerance, and up to
-    ``LAST_OUTPUT_SHARE`` of the difference), which is beyond the tolerance of the state at the event."""
+    ``LAST_OUTPUT_SHARE`` of the difference), which is beyond the tolerance of the state at the event.  Told as the
+    state at the event read otherwise and, a twin, as a state of another time: the event itself is found where it
+    belongs."""
     if ran is None:
         return None
     t, R = ran
@@ -410,10 +412,13 @@ def _last_output(evidence: Evidence, ran, spec: tuple, te: float) -> Hypothesis 
         return None
     if np.max(np.abs(mine - value)) > LAST_OUTPUT_SHARE * np.max(np.abs(mine - ours)):
         return None  # near the last output, inside a loose tolerance, but not it
-    return Hypothesis(f"event:last:{key}", "event_early", 2,
-                      f"your {key} is the reference's {state} at its last output time t = {float(t[k]):.6g} s, before "
-                      f"the event at {te:.6g} s: read the state at the event (solve_ivp's y_events), not the last "
-                      "row of the output")
+    return [Hypothesis(f"event:last:{key}", "state_before_event", 2,
+                       f"your {key} is the reference's {state} at its last output time t = {float(t[k]):.6g} s, before "
+                       f"the event at {te:.6g} s: read the state at the event (solve_ivp's y_events), not the last "
+                       "row of the output"),
+            Hypothesis(f"event:last:{key}:time", "time_shift", 2,
+                       f"your {key} is a state of another time, {float(t[k]):.6g} s, where the event's at "
+                       f"{te:.6g} s belongs", twin=True)]
 
 
 def event_state(root, motion: dict, event: str, te: float):

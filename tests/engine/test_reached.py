@@ -60,7 +60,7 @@ def slot():
 @pytest.mark.parametrize("mistake", PLANTED, ids=lambda m: m.name)
 def test_a_slip_is_named_live_and_alike_in_the_kit(
         mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch):
-    assert families_of(mistake.diagnosis) == (FAMILIES[mistake.name],)
+    assert families_of(mistake.diagnosis) == FAMILIES[mistake.name]
     assert_named_live_and_alike(mistake, tmp_path, kit_oracle, deferred_ids, slot, monkeypatch)
 
 
