@@ -1326,9 +1326,12 @@ _COORDINATES = re.compile(r"^(q|qd|qdd|q_\w+|qd_\w+|y|y_\w+|state)$")
 
 
 def _unpacked_coordinates(node, parent) -> bool:
-    """The names a vector of coordinates or a state is unpacked into (``_, q2 = np.asarray(q, dtype=float)``, ``x,
-    h = y``): two of them exchanged read a coordinate from another's row."""
-    if not (isinstance(node, ast.Tuple) and isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign)):
+    """The name and the slot left unread (``_``) that a vector of two coordinates or a state is unpacked into (``_,
+    q2 = np.asarray(q, dtype=float)``): the two exchanged read the coordinate from the other's row.  Two names
+    exchanged (``y, x = q``) are two quantities exchanged, as any two entries."""
+    if not (isinstance(node, ast.Tuple) and isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign)
+            and len(node.elts) == 2 and all(isinstance(e, ast.Name) for e in node.elts)
+            and sum(e.id == "_" for e in node.elts) == 1):
         return False
     value = parent.value
     if isinstance(value, ast.Call) and _callee(value) in ("asarray", "array", "ravel", "atleast_1d") and value.args:
@@ -1980,7 +1983,7 @@ def _mutated(function: _Function, lines: tuple):
             if isinstance(edit, tuple) and len(edit) == 3 and edit[1] in parts and edit[2] in parts:
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
             elif slip == "entries" and _unpacked_coordinates(node, parent):
-                slip = "rows"  # ``q2, _ = q`` for ``_, q2 = q``: a coordinate read from another's row
+                slip = "rows"  # ``q2, _ = q`` for ``_, q2 = q``: a coordinate read from the other's row
             elif isinstance(edit, tuple) and len(edit) == 3 and slip in ("names", "parameters") \
                     and _rates(edit[1], edit[2]):
                 slip = f"{slip}_rates"  # a quantity and its rate exchanged: each read where the other belongs

@@ -776,12 +776,12 @@ def spin_torque(A_IB, B_I_B, w):
     # END SOLUTION
 
 
-def two_link_tip(q, lengths):
-    """The tip of a planar arm of two links at the angles ``q`` (the second relative to the first)."""
+def elbow_height(q, lengths):
+    """The height of the elbow of a planar arm of two links at the angles ``q``: its first link's alone."""
     # BEGIN SOLUTION problem 98
-    q1, q2 = np.asarray(q, dtype=float)
-    l1, l2 = lengths
-    return np.array([l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)])
+    q1, _ = np.asarray(q, dtype=float)
+    l1, _ = lengths
+    return l1 * np.sin(q1) + 0.1 * l1
     # END SOLUTION
 
 
@@ -1777,19 +1777,18 @@ def test_every_parameter_read_as_its_default_is_every_argument_ignored(made_up):
         [(h.name, h.detail) for h in found]
 
 
-def test_coordinates_unpacked_into_each_others_names_are_read_from_the_wrong_rows(made_up):
-    """``q2, q1 = np.asarray(q)`` for ``q1, q2 = ...``: each angle read from the other's row of the coordinates (a
-    state read from the wrong row; the two angles exchanged in the expression that reads them give it too); the
-    near miss, the lengths unpacked so, is two quantities exchanged."""
+def test_a_coordinate_unpacked_into_the_slot_left_unread_is_read_from_the_wrong_row(made_up):
+    """``_, q1 = np.asarray(q)`` for ``q1, _ = ...``: the angle read from the other coordinate's row (a state read
+    from the wrong row); the near miss, the lengths unpacked so, is two entries exchanged.  Two names of the state
+    exchanged (``q2, q1 = q``) stay two quantities exchanged (an order), as the planted suite's and the held-out
+    sets' unpackings are."""
     inputs = [((0.3, 1.1), (1.0, 0.6)), ((-0.7, 0.4), (0.8, 1.3))]
-
-    def tip(q1, q2, l1, l2):
-        return np.array([l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)])
-
-    names, found = names_of(made_up, "two_link_tip", lambda q, l: tip(q[1], q[0], *l), inputs)
-    assert "state_row" in names and names <= {"state_row", "swapped"}, [(h.name, h.detail) for h in found]
-    near = names_of(made_up, "two_link_tip", lambda q, l: tip(*q, l[1], l[0]), inputs)
+    names, found = names_of(made_up, "elbow_height", lambda q, l: l[0] * np.sin(q[1]) + 0.1 * l[0], inputs)
+    assert names == {"state_row"}, [(h.name, h.detail) for h in found]
+    near = names_of(made_up, "elbow_height", lambda q, l: l[1] * np.sin(q[0]) + 0.1 * l[1], inputs)
     assert "state_row" not in near[0] and "swapped" in near[0], [(h.name, h.detail) for h in near[1]]
+    pair = ast.parse("q2, q1 = q").body[0]
+    assert not mutants._unpacked_coordinates(pair.targets[0], pair)
 
 
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
