@@ -1,7 +1,7 @@
 """The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second
-to the nineteenth held-out sets written apart from the engine (``fresh2`` ... ``fresh19``), and the script that
+to the twentieth held-out sets written apart from the engine (``fresh2`` ... ``fresh20``), and the script that
 grades them and classifies each diagnosis (``tests/diagnosis/score.py``), strictly and leniently (where an entry of
-the seventh to the nineteenth set names a second family, ``also``).
+the seventh to the twentieth set names a second family, ``also``).
 
 The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
 into the reference, and the diagnosis recorded with it (``today``) is not the right cause, which is what put it in
@@ -44,6 +44,7 @@ from .score import (
     FRESH17,
     FRESH18,
     FRESH19,
+    FRESH20,
     NAMED,
     NAMED2,
     NAMED3,
@@ -78,6 +79,7 @@ FRESH16_SET = fresh_mistakes(FRESH16)
 FRESH17_SET = fresh_mistakes(FRESH17)
 FRESH18_SET = fresh_mistakes(FRESH18)
 FRESH19_SET = fresh_mistakes(FRESH19)
+FRESH20_SET = fresh_mistakes(FRESH20)
 
 
 def _fallback(name):
@@ -100,10 +102,11 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
                                   (FRESH4_SET, []), (FRESH5_SET, []), (FRESH6_SET, []), (FRESH7_SET, []),
                                   (FRESH8_SET, []), (FRESH9_SET, []), (FRESH10_SET, []), (FRESH11_SET, []),
                                   (FRESH12_SET, []), (FRESH13_SET, []), (FRESH14_SET, []), (FRESH15_SET, []),
-                                  (FRESH16_SET, []), (FRESH17_SET, []), (FRESH18_SET, []), (FRESH19_SET, [])],
+                                  (FRESH16_SET, []), (FRESH17_SET, []), (FRESH18_SET, []), (FRESH19_SET, []),
+                                  (FRESH20_SET, [])],
                          ids=["first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth",
                               "tenth", "eleventh", "twelfth", "thirteenth", "fourteenth", "fifteenth", "sixteenth",
-                              "seventeenth", "eighteenth", "nineteenth"])
+                              "seventeenth", "eighteenth", "nineteenth", "twentieth"])
 def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
     for mistakes in sets:
         assert defects(mistakes) == []
@@ -334,7 +337,7 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
     _assert_repeats_none(FRESH4_SET, earlier)
 
 
-# ------------------------------------------------------------------------------- the fifth to nineteenth sets
+# -------------------------------------------------------------------------------- the fifth to twentieth sets
 
 #: the sets written like the fourth (every realistic mistake whose check fails, whatever its diagnosis), each with
 #: the sets written before it beyond the first three (whose entries ``_earlier_entries`` reads itself)
@@ -368,17 +371,22 @@ LATER_SETS = {"fifth": (FRESH5_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET),
                              + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET),
               "nineteenth": (FRESH19_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
                              + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                             + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET)}
+                             + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET),
+              "twentieth": (FRESH20_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
+                            + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
+                            + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
+                            + FRESH19_SET)}
 
 #: the size of a later set and its mistakes in the simulated problems, at least: ninety and twenty, except the tenth
-#: to nineteenth sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth 42,
-#: the thirteenth 36, the fourteenth 43, the fifteenth 40, the sixteenth 38, the seventeenth 30, the eighteenth 29 and
-#: the nineteenth 35, at most four of one problem) after the earlier sets had taken most slips of the simulated
-#: problems (the seventeenth: 11 of its entries in the problems of ``SIMULATED``, 14 in Exercise I's MuJoCo problems
-#: and the runs; the eighteenth: 11 and 16; the nineteenth: 12 and 17)
+#: to twentieth sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth 42,
+#: the thirteenth 36, the fourteenth 43, the fifteenth 40, the sixteenth 38, the seventeenth 30, the eighteenth 29,
+#: the nineteenth 35 and the twentieth 35, at most four of one problem) after the earlier sets had taken most slips of
+#: the simulated problems (the seventeenth: 11 of its entries in the problems of ``SIMULATED``, 14 in Exercise I's
+#: MuJoCo problems and the runs; the eighteenth: 11 and 16; the nineteenth: 12 and 17; the twentieth: 13 and 17)
 LATER_SIZES = {"tenth": (50, 14), "eleventh": (48, 15), "twelfth": (42, 14), "thirteenth": (36, 13),
                "fourteenth": (43, 15), "fifteenth": (40, 13), "sixteenth": (38, 13),
-               "seventeenth": (30, 11), "eighteenth": (29, 11), "nineteenth": (35, 12)}
+               "seventeenth": (30, 11), "eighteenth": (29, 11), "nineteenth": (35, 12),
+               "twentieth": (35, 13)}
 
 
 @pytest.mark.parametrize("which", sorted(LATER_SETS))
@@ -459,7 +467,7 @@ def test_a_set_without_a_second_family_reads_alike_strictly_and_leniently(which)
 
 @pytest.mark.parametrize("which", ["seventh", "eighth", "ninth", "tenth", "eleventh", "twelfth", "thirteenth",
                                    "fourteenth", "fifteenth", "sixteenth", "seventeenth", "eighteenth",
-                                   "nineteenth"])
+                                   "nineteenth", "twentieth"])
 def test_a_set_with_second_families_reads_them_leniently_only(which):
     """The sets that name a second family (``also``) on some entries: an entry without one is classified alike
     strictly and leniently, whatever is told; an entry with one is right leniently and wrong strictly when only its
@@ -467,7 +475,8 @@ def test_a_set_with_second_families_reads_them_leniently_only(which):
     chosen = {"seventh": FRESH7_SET, "eighth": FRESH8_SET, "ninth": FRESH9_SET, "tenth": FRESH10_SET,
               "eleventh": FRESH11_SET, "twelfth": FRESH12_SET, "thirteenth": FRESH13_SET,
               "fourteenth": FRESH14_SET, "fifteenth": FRESH15_SET, "sixteenth": FRESH16_SET,
-              "seventeenth": FRESH17_SET, "eighteenth": FRESH18_SET, "nineteenth": FRESH19_SET}[which]
+              "seventeenth": FRESH17_SET, "eighteenth": FRESH18_SET, "nineteenth": FRESH19_SET,
+              "twentieth": FRESH20_SET}[which]
     named = {}
     for name, family in FALLBACK.items():
         named.setdefault(family, name)
