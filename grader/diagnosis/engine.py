@@ -865,8 +865,9 @@ def _result_evidences(evidence: Evidence) -> dict:
 
 def _from_results(scene: Scene, evidences: list) -> Finding | None:
     """The cause of a failing property of values derived from a call's results (``Evidence.call``): each result
-    that differs from the reference's on both failing inputs is explained as a comparison of its own, and a cause
-    is named when the results explained agree on it."""
+    that differs from the reference's on both failing inputs is explained as a comparison of its own, and the causes
+    that every result explained names are named (one result's "could be X or Y" beside another's "X" is X), with the
+    hints of the results that name those alone."""
     if len(evidences) < 2:
         return None
     first, second = _result_evidences(evidences[0]), _result_evidences(evidences[1])
@@ -878,10 +879,21 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
         left = left or (finding is not None and not finding.names and KIT_NOTE in finding.hint)
     if left:  # the student kit: a result left to the graded submission's formula tier, which may say more
         return Finding((), KIT_NOTE)
-    if not findings or len({f.diagnosis for _, f in findings}) != 1:
+    return _agreed(findings)
+
+
+def _agreed(findings: list, labelled: bool = True) -> Finding | None:
+    """The causes that every result's finding (``(label, finding)``) names, with the hints of the results that name
+    those alone (all, where none does), each after its label; None where they share none.  One result alone is told
+    as it was found where not ``labelled``."""
+    common = [name for name in findings[0][1].names if all(name in f.names for _, f in findings)] if findings else []
+    if not common:
         return None
-    hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
-    return Finding(findings[0][1].names, hint)
+    if len(findings) == 1 and not labelled:
+        return findings[0][1]
+    exact = [(label, f) for label, f in findings if list(f.names) == common] or findings
+    hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in exact)
+    return Finding(tuple(common), hint)
 
 
 #: the tolerance of the comparison the engine makes itself where a check judged the student's value by a property
@@ -916,12 +928,7 @@ def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
         left = left or (finding is not None and not finding.names and KIT_NOTE in finding.hint)
     if left:
         return Finding((), KIT_NOTE)
-    if not findings or len({f.diagnosis for _, f in findings}) != 1:
-        return None
-    if len(findings) == 1:
-        return findings[0][1]
-    hint = "\n".join(f"Your {label}: {finding.hint[:1].lower()}{finding.hint[1:]}" for label, finding in findings)
-    return Finding(findings[0][1].names, hint)
+    return _agreed(findings, labelled=False)
 
 
 def judged_call(log, evidence: Evidence | None) -> Source | None:

@@ -176,3 +176,17 @@ def test_a_shown_input_that_raised_names_nothing_where_no_slip_holds_on_another(
     context, shown, failures = _randomized(monkeypatch, student)
     told = context._narrowed(shown, failures)
     assert told.diagnosis == "" and told.hint == "" and told.explained
+
+
+def test_the_results_of_a_call_agree_on_the_causes_every_one_names():
+    """A call's results explained apart (``_agreed``): one "could be X or Y" beside another's "X" is X, told with the
+    hint of the result that names it alone; results that share no cause name none."""
+    from grader.diagnosis.engine import Finding, _agreed
+
+    either = Finding(("ignored_argument", "state_row"), "Could be an argument ignored or a rate for its quantity.")
+    rows = Finding(("state_row",), "Looks like a rate read for its quantity.")
+    agreed = _agreed([("qd_plus", either), ("Lam", rows)])
+    assert agreed.names == ("state_row",)
+    assert agreed.hint == "Your Lam: looks like a rate read for its quantity."
+    assert _agreed([("qd_plus", either), ("Lam", Finding(("sign_flip",), "Looks like a sign."))]) is None
+    assert _agreed([("Lam", rows)], labelled=False) is rows
