@@ -50,7 +50,7 @@ inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)`
 / 12`` for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``),
 the halves of a run's state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read
 for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r
-r^T``), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
+r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
 ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product
 it is a factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a slice's axes exchanged in one
 statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
@@ -1527,6 +1527,8 @@ def _binop_slips(node: ast.BinOp):
             yield "origin", lambda n: _negated(n.right)
         else:
             yield "term" if isinstance(op, ast.Add) else "minuend", lambda n: n.right
+            if isinstance(op, ast.Sub):  # ``-qd`` for ``qd_des - qd``: the first term left out, the second's minus kept
+                yield "minuend", lambda n: _negated(n.right)
     elif isinstance(op, ast.Mult):
         for side, other in (("left", "right"), ("right", "left")):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)

@@ -785,6 +785,13 @@ def elbow_height(q, lengths):
     # END SOLUTION
 
 
+def damping(D, rate_des, rate):
+    """The damping torque of a PD law: ``D (rate_des - rate)``."""
+    # BEGIN SOLUTION problem 98
+    return D * (rate_des - rate)
+    # END SOLUTION
+
+
 def weighed(values):
     """Each value counted once in full and once at a weight of a half."""
     # BEGIN SOLUTION problem 98
@@ -1789,6 +1796,17 @@ def test_a_coordinate_unpacked_into_the_slot_left_unread_is_read_from_the_wrong_
     assert "state_row" not in near[0] and "swapped" in near[0], [(h.name, h.detail) for h in near[1]]
     pair = ast.parse("q2, q1 = q").body[0]
     assert not mutants._unpacked_coordinates(pair.targets[0], pair)
+
+
+def test_the_first_term_of_a_difference_left_out_keeps_the_second_ones_minus(made_up):
+    """``-D rate`` for ``D (rate_des - rate)``: the desired rate left out, the measured one keeping its minus (a
+    term left out); the near miss, ``-D rate_des``, is no first term left out."""
+    inputs = [(2.0, 0.7, -0.4), (0.5, -1.3, 0.9)]
+    names, found = names_of(made_up, "damping", lambda D, rate_des, rate: -D * rate, inputs)
+    assert "missing_term" in names, [(h.name, h.detail) for h in found]
+    assert any("the first term of a difference" in h.detail for h in found), [h.detail for h in found]
+    near = names_of(made_up, "damping", lambda D, rate_des, rate: -D * rate_des, inputs)
+    assert not any("the first term of a difference" in h.detail for h in near[1]), [h.detail for h in near[1]]
 
 
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
