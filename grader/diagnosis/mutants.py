@@ -66,7 +66,8 @@ name computed from a value at the start read, once, as that start (``cardan(*ANG
 ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
 entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
 index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one item fewer, that stops
-one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a keyword
+one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of
+steps over a range one step longer (``range(n + 1)``: one step too many), a keyword
 argument left out of a call of a function or a class of the reference whose parameter of that name has a default (the
 callee then uses the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation
 left out, ``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M
@@ -573,6 +574,8 @@ SLIPS = {
                                   "starts one late)"),
     "steps_late": ("step_count", "the loop of steps in `{f}` takes one step too few (it stops one short, or "
                                  "starts one late)"),
+    "steps_long": ("step_count", "the loop of steps in `{f}` takes one step too many (``range(n + 1)`` for "
+                                 "``range(n)``)"),
     "start_zeroed": ("initial_state", "an entry of the start `{f}` is written 0: the run starts from another state"),
     "start_zeros": ("initial_state", "the start `{f}` is written as zeros: the run starts from another state"),
     "start_identity": ("initial_state", "the start `{f}` is written as the identity: the run starts from another "
@@ -814,6 +817,10 @@ def _slips(node, parent):
                 lambda n, k=k: _loop_cut(n, ast.Slice(None, ast.Constant(-1), None), k)
             yield "steps_late" if steps else "loop_late", \
                 lambda n, k=k: _loop_cut(n, ast.Slice(ast.Constant(1), None, None), k)
+        if steps and isinstance(node.iter, ast.Call) and _callee(node.iter) == "range" and node.iter.args \
+                and not node.iter.keywords and len(node.iter.args) <= 2:  # ``range(n + 1)``: one step more
+            yield "steps_long", lambda n: _with(n, iter=_with(n.iter, args=n.iter.args[:-1] + [
+                ast.BinOp(n.iter.args[-1], ast.Add(), ast.Constant(1))]))
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign, ast.Expr)) and _inverses(node) >= 2:
         yield "inverses", lambda n: _Uninverted().visit(n)
     if isinstance(node, (ast.Assign, ast.Return, ast.AugAssign)):

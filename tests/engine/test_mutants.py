@@ -1809,6 +1809,21 @@ def test_the_first_term_of_a_difference_left_out_keeps_the_second_ones_minus(mad
     assert not any("the first term of a difference" in h.detail for h in near[1]), [h.detail for h in near[1]]
 
 
+def test_a_loop_of_steps_one_step_long_is_a_step_count(made_up):
+    """``range(n + 1)`` for ``range(n)`` in a loop of steps: one step too many (the step count); the near miss, two
+    steps more, is none."""
+    inputs = [(np.array([0.3, 0.1, -0.2]), 4), (np.array([-0.5, 0.7, 0.2]), 3)]
+
+    def after(steps):
+        return lambda rate, n: {"x": DRIFT_START + (n + steps) * rate,
+                                "size": float(np.linalg.norm(DRIFT_START + (n + steps) * rate))}
+
+    names, found = names_of(made_up, "drift", after(1), inputs, ("x",))
+    assert names == {"step_count"}, [(h.name, h.detail) for h in found]
+    assert any("one step too many" in h.detail for h in found), [h.detail for h in found]
+    assert "step_count" not in names_of(made_up, "drift", after(2), inputs, ("x",))[0]
+
+
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
     """``for w in (1.0,)`` for ``for w in (1.0, 0.5)``, the second loop of a comprehension one short: the terms of
     its last item are left out of the sum, as with its first loop; the near miss, every value weighed 1.4, is no
