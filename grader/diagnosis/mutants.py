@@ -52,7 +52,8 @@ the halves of a run's state read as alternate entries (``y[::2]``, ``y[1::2]`` f
 for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r
 r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
 ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product
-it is a factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a slice's axes exchanged in one
+it is a factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a power or a root over the
+wrong part of a product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
 statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
 with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for another
 of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
@@ -471,6 +472,10 @@ SLIPS = {
     "divides": ("wrong_factor", "`{f}` multiplies where it should divide"),
     "multiplies_by": ("wrong_factor", "`{f}` divides where it should multiply"),
     "divides_by": ("wrong_factor", "`{f}` multiplies where it should divide"),
+    "power_scope": ("wrong_factor", "`{f}` raises a whole product to a power where its last factor alone is "
+                                    "(``(m * a)**2`` for ``m * a**2``)"),
+    "root_scope": ("wrong_factor", "`{f}` takes a factor out of a square root without taking its root "
+                                   "(``np.sqrt(x) / m`` for ``np.sqrt(x / m)``)"),
     "square": ("wrong_factor", "a square is missing in `{f}`"),
     "root": ("wrong_factor", "a square root is missing in `{f}`"),
     "trig": ("sin_cos_swapped", "`{f}` takes sin where cos belongs, or the reverse"),
@@ -1574,6 +1579,9 @@ def _binop_slips(node: ast.BinOp):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
         yield "square", lambda n: n.left
+    if isinstance(op, (ast.Mult, ast.Div)) and isinstance(node.right, ast.BinOp) and isinstance(node.right.op, ast.Pow) \
+            and _number(node.right.right):  # ``(m * arm)**2`` for ``m * arm**2``: the power over the whole product
+        yield "power_scope", lambda n: ast.BinOp(_with(n, right=n.right.left), ast.Pow(), n.right.right)
     if not isinstance(op, ast.Pow):
         for side in ("left", "right"):
             if _number(getattr(node, side)) and getattr(node, side).value not in (0, 1):
@@ -1642,6 +1650,9 @@ def _call_slips(node: ast.Call):
         yield "diagonal", lambda n: _diagonal_inverse(n.args[0])
     if callee == "inv" and not args and isinstance(node.func, ast.Attribute):  # sympy's ``M.inv()``
         yield "inverse", lambda n: n.func.value
+    if callee == "sqrt" and len(args) == 1 and isinstance(args[0], ast.BinOp) \
+            and isinstance(args[0].op, (ast.Mult, ast.Div)):  # ``np.sqrt(3 * S) / m`` for ``np.sqrt(3 * S / m)``
+        yield "root_scope", lambda n: ast.BinOp(_with(n, args=[n.args[0].left]), n.args[0].op, n.args[0].right)
     if callee == "eye" and len(args) == 1 and not node.keywords:  # ``np.eye(3) + W`` as ``1.0 + W``
         yield "identity", lambda n: ast.Constant(1.0)
     yield from _single_slips(node)

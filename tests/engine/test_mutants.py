@@ -792,6 +792,20 @@ def damping(D, rate_des, rate):
     # END SOLUTION
 
 
+def rod_impulse(m, a, theta):
+    """The impulse on a rod of mass ``m`` hit at the arm ``a``, ``theta`` its inertia about its centre."""
+    # BEGIN SOLUTION problem 98
+    return -m * theta / (m * a**2 + theta)
+    # END SOLUTION
+
+
+def spread(S, m):
+    """The distance of points of mass ``m`` whose second moment is ``S``: ``sqrt(3 S / m)``."""
+    # BEGIN SOLUTION problem 98
+    return np.sqrt(3 * S / m)
+    # END SOLUTION
+
+
 def weighed(values):
     """Each value counted once in full and once at a weight of a half."""
     # BEGIN SOLUTION problem 98
@@ -1822,6 +1836,23 @@ def test_a_loop_of_steps_one_step_long_is_a_step_count(made_up):
     assert names == {"step_count"}, [(h.name, h.detail) for h in found]
     assert any("one step too many" in h.detail for h in found), [h.detail for h in found]
     assert "step_count" not in names_of(made_up, "drift", after(2), inputs, ("x",))[0]
+
+
+def test_a_power_or_a_root_over_the_wrong_part_of_a_product_is_a_wrong_factor(made_up):
+    """``(m a)**2`` for ``m a**2`` and ``np.sqrt(3 S) / m`` for ``np.sqrt(3 S / m)``: a bracket misplaced, a factor
+    raised to the power (or out of the root) with the other; the near misses, a cube and a root of 2 S, are
+    neither."""
+    inputs = [(2.0, 0.7, 0.3), (0.6, 1.9, 1.1)]
+    names, found = names_of(made_up, "rod_impulse", lambda m, a, theta: -m * theta / ((m * a) ** 2 + theta), inputs)
+    assert names == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+    assert any("raises a whole product to a power" in h.detail for h in found), [h.detail for h in found]
+    near = names_of(made_up, "rod_impulse", lambda m, a, theta: -m * theta / (m * a**3 + theta), inputs)
+    assert not any("raises a whole product" in h.detail for h in near[1]), [h.detail for h in near[1]]
+    inputs = [(2.0, 0.7), (0.6, 1.9)]
+    names, found = names_of(made_up, "spread", lambda S, m: np.sqrt(3 * S) / m, inputs)
+    assert any("out of a square root" in h.detail for h in found), [(h.name, h.detail) for h in found]
+    near = names_of(made_up, "spread", lambda S, m: np.sqrt(2 * S / m), inputs)
+    assert not any("out of a square root" in h.detail for h in near[1]), [h.detail for h in near[1]]
 
 
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
