@@ -52,7 +52,8 @@ the halves of a run's state read as alternate entries (``y[::2]``, ``y[1::2]`` f
 for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r
 r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
 ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product
-it is a factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a power or a root over the
+it is a factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a vector or matrix the function writes out
+passed to a call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the
 wrong part of a product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
 statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
 with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for another
@@ -1881,7 +1882,17 @@ def _sums(function: ast.FunctionDef) -> dict:
     return found
 
 
-def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict):
+def _built(function: ast.FunctionDef) -> frozenset:
+    """The names the function binds to a vector or matrix it writes out (``hip = sp.Matrix([-dx, dy, 0])``,
+    ``r = np.array([x, y, 0.0])``): one passed to a call with the wrong sign is a sign slip of the call's argument."""
+    return frozenset(t.id for node in ast.walk(function) if isinstance(node, ast.Assign) and len(node.targets) == 1
+                     and isinstance(node.value, ast.Call) and _callee(node.value) in ("Matrix", "array")
+                     and node.value.args and isinstance(node.value.args[0], (ast.List, ast.Tuple))
+                     for t in node.targets if isinstance(t, ast.Name))
+
+
+def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
+                built: frozenset = frozenset()):
     """One read of a name for another of its kind: an angle for another angle that the function reads
     (``np.cos(beta)`` for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the
     read of the sum for its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its module's constant or the Earth's
@@ -1899,6 +1910,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield slip, lambda n, value=value: copy.deepcopy(value)
         if node.id in starts:  # ``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start for the value computed
             yield "start_value", lambda n: ast.Name(starts[n.id], ast.Load())
+        if node.id in built and isinstance(parent, ast.Call) and node in parent.args:  # ``f(..., -hip)``
+            yield "sign", _negated
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
@@ -1969,6 +1982,7 @@ def _mutated(function: _Function, lines: tuple):
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
+    built = _built(function.node)
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -1981,7 +1995,7 @@ def _mutated(function: _Function, lines: tuple):
                 if late_pass is CONVERSIONS else \
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
-            slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums, starts),
+            slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums, starts, built),
                                                                    _written_index_slips(node))
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()

@@ -806,6 +806,14 @@ def spread(S, m):
     # END SOLUTION
 
 
+def arm_ends(r0, d):
+    """The two ends of an arm about ``r0``, the second at twice its lever."""
+    # BEGIN SOLUTION problem 98
+    offset = np.array([d, 0.0, 0.5 * d])
+    return np.concatenate([np.add(r0, offset), 2.0 * np.subtract(r0, offset)])
+    # END SOLUTION
+
+
 def weighed(values):
     """Each value counted once in full and once at a weight of a half."""
     # BEGIN SOLUTION problem 98
@@ -1853,6 +1861,20 @@ def test_a_power_or_a_root_over_the_wrong_part_of_a_product_is_a_wrong_factor(ma
     assert any("out of a square root" in h.detail for h in found), [(h.name, h.detail) for h in found]
     near = names_of(made_up, "spread", lambda S, m: np.sqrt(2 * S / m), inputs)
     assert not any("out of a square root" in h.detail for h in near[1]), [h.detail for h in near[1]]
+
+
+def test_a_vector_written_out_and_passed_with_the_wrong_sign_is_a_sign(made_up):
+    """``np.add(r0, -offset)`` where ``offset = np.array([...])`` is read twice: that argument's sign alone (the
+    vector's own sign would change both reads); the near miss, half the vector passed, is no sign."""
+    inputs = [(np.array([0.3, -1.0, 0.5]), 0.7), (np.array([1.2, 0.4, -0.6]), -0.4)]
+
+    def ends(r0, d, sign=-1.0, scale=1.0):
+        offset = np.array([d, 0.0, 0.5 * d])
+        return np.concatenate([r0 + sign * scale * offset, 2.0 * (r0 - offset)])
+
+    names, found = names_of(made_up, "arm_ends", lambda r0, d: ends(r0, d), inputs)
+    assert names == {"sign_flip"}, [(h.name, h.detail) for h in found]
+    assert "sign_flip" not in names_of(made_up, "arm_ends", lambda r0, d: ends(r0, d, 1.0, 0.5), inputs)[0]
 
 
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):
