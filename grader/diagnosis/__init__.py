@@ -123,7 +123,8 @@ What a probe's arguments and result are is declared beside ``@probe`` (``probes.
 rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
 grading context), never from ``reference`` itself.  Where a check takes its expected value from a stand-in of the
 reference's (a probe for the reference alone: problem 7's numeric ``expressions`` for the student's symbolic
-``derive``), the tier of formulas mutates the code of the student's own call on the reference instead, where the
+``derive``; or any other probe than the student's: problem 16's numeric ``body`` for its ``symbolic``), the tier of
+formulas mutates the code of the student's own call on the reference instead, where the
 reference's value of that call is the expected one (``mutants.own_calls``).  Every reference call the engine may need is a function of the
 probe's arguments alone, so the student kit's answer key holds them: while the key is recorded, every comparison
 of a declared probe makes them (``prepare``).

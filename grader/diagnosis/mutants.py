@@ -169,13 +169,14 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at, distinct, Evidence, Hypothesis, part_of, Source, within
+from .evidence import array_of, at, at_point, distinct, Evidence, Hypothesis, part_of, Source, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
            "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
-           "FACTORS_REORDERED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips", "late", "left_to_live"]
+           "FACTORS_REORDERED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips",
+           "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -2338,7 +2339,8 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
     reading its expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given):
     the whole replies of the calls made so far with the package's code as it is now, by the call, which a call on
     the same arguments reads rather than makes again (a comparison's other values of the same call, ``_siblings``),
-    and a call that raised raises again.  ``remember``: the package's code is the reference's own, and the probe
+    and a call that raised raises again.  An integer of ``path`` also indexes the first axis of an array (the value
+    of one point of a probe that returns one per point, as a symbolic answer evaluated at several).  ``remember``: the package's code is the reference's own, and the probe
     keeps what it computes once as it does for any call of the package (``probes.remembered``)."""
     from probes import fresh
     from probes._codec import decode, encode
@@ -2349,7 +2351,7 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
         value = replies[key]
         if isinstance(value, Exception):  # a reply is plain data: an exception is the call's own
             raise value
-        return array_of(at(value, path))
+        return array_of(at_point(value, path))
     try:
         with contextlib.nullcontext() if remember else fresh(), \
                 (reading() if quick else contextlib.nullcontext()):
@@ -2360,7 +2362,7 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
         raise
     if replies is not None:
         replies[key] = value
-    return array_of(at(value, path))
+    return array_of(at_point(value, path))
 
 
 def _kept_once(args: tuple):
@@ -3073,7 +3075,8 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
 def own_calls(evidences: list[Evidence]) -> list[Evidence]:
     """The evidences, each whose expected value came from a stand-in of the reference's (a probe for the reference
     alone, ``reference_only``: problem 7's ``expressions`` evaluates the package's numeric rotations where the
-    student's ``symbolic`` evaluates their derivation) with the student's own call in its place: the mutants of the
+    student's ``symbolic`` evaluates their derivation; or another probe, such as the numeric twin of a symbolic
+    answer, problem 16's ``body`` beside its ``symbolic``) with the student's own call in its place: the mutants of the
     reference are to run the code the student's call runs, not the stand-in's.  Only where the reference's value of
     the student's call is the expected value on every such input (within the comparison's tolerance, in the
     stand-in's shape: a column where it gives a vector); else the evidences as they are.  The reference's own code
@@ -3101,14 +3104,14 @@ def own_calls(evidences: list[Evidence]) -> list[Evidence]:
 
 
 def _stands_in(evidence: Evidence) -> bool:
-    """The evidence's expected value came from a probe for the reference alone, and the student's from another."""
+    """The evidence's expected value came from another probe than the student's (a probe for the reference alone, or
+    the reference's numeric twin of a symbolic answer), and the student's is not for the reference alone."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or evidence.got is None or evidence.expected is None \
             or source.probe == student.probe or not isinstance(source.probe, str) or not isinstance(student.probe, str):
         return False
     try:
-        return bool(getattr(_probe(source.probe), "reference_only", False)) \
-            and not getattr(_probe(student.probe), "reference_only", False)
+        return not getattr(_probe(student.probe), "reference_only", False)
     except (ImportError, AttributeError):
         return False
 

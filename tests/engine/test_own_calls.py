@@ -2,7 +2,8 @@
 
 * A comparison whose expected value came from a stand-in of the reference's (a probe for the reference alone:
   problem 7's ``expressions`` evaluates the package's numeric rotations, where the student's ``symbolic`` evaluates
-  their derivation) has its mutants run on the student's own call, the code that call runs on the reference
+  their derivation; or the numeric twin of a symbolic answer, problem 16's ``body``) has its mutants run on the
+  student's own call, the code that call runs on the reference
   (``own_calls``), but only where the reference's value of that call is the expected one.
 * The other values of a comparison's call (``_siblings``) are read from one reply of that call per mutant
   (``_reproduced``), not by calling it again for each.
@@ -10,6 +11,7 @@
   or nothing, and with the engine off no cause of that family is named.
 """
 
+import dataclasses
 import sys
 import types
 from pathlib import Path
@@ -114,6 +116,26 @@ def test_the_reference_keeps_what_its_own_call_computes_once_and_a_mutants_call_
     assert made == [1]  # made once, for both gradings' own calls
     mutants._call(None, "stub_kept.own", mutants._kept_once((1,)), ("x",))
     assert made == [1, 1]  # a mutant's call (its code may differ) hears nothing kept
+
+
+def test_a_numeric_twin_gives_way_to_the_students_symbolic_call_read_at_its_point(monkeypatch):
+    """A symbolic answer evaluated at several points (one array, one row per point) is compared with the
+    reference's numeric twin at one of them: the twin is a stand-in too (though the student writes it as well), and
+    the own call's row of that point is read, where the reference's value of it is the twin's."""
+    from probes import probe
+    from probes._forms import ANY
+
+    stub = types.ModuleType("probes.stub_twin")
+    stub.numeric = probe(returns=ANY)(lambda pkg, m: np.array([m, 2 * m]))
+    stub.symbolic = probe(returns=ANY)(lambda pkg, points: np.array([[p, 2 * p] for p in points]))
+    monkeypatch.setitem(sys.modules, "probes.stub_twin", stub)
+    evidence = Evidence(np.array([3.0, 3.0]), np.array([3.0, 6.0]), TIGHT, "x",
+                        source=Source("stub_twin.numeric", (3.0,), ()),
+                        student=Source("stub_twin.symbolic", ((1.0, 3.0),), (1,)))
+    (own,) = mutants.own_calls([evidence])
+    assert own.source == Source("stub_twin.symbolic", ((1.0, 3.0),), (1,))
+    elsewhere = dataclasses.replace(evidence, student=Source("stub_twin.symbolic", ((1.0, 3.0),), (0,)))
+    assert mutants.own_calls([elsewhere]) == [elsewhere]  # the reference's row there is not the twin's value
 
 
 def test_the_other_values_of_one_call_are_read_from_one_reply(stand_in_probes):
