@@ -205,12 +205,12 @@ def assert_alike_at_sheet_digits(name: str, live, kit) -> bool:
 
 
 def assert_alike_on_formulas(name: str, live, kit) -> bool:
-    """Parity where the live grading names a slip inside a formula (``grader.diagnosis.mutants``: its hint names
-    the student's function in backquotes): the kit holds no reference code to mutate, so it fails alike and names
-    the same cause or none (saying, where it can tell, that the graded submission may say more: the tier's own
-    tests hold that); where the check names an effect its value shows (``grader.diagnosis.effect``: a sign, a term not there) and the
-    live grading tells a slip inside a formula beside it (``grader.diagnosis.rival``), the kit names the check's
-    alone.  False when the live diagnosis is not of that tier."""
+    """Parity where the live grading names a slip inside a formula (``grader.diagnosis.mutants``: its hint names the
+    student's function in backquotes): the kit holds no reference code to mutate, so it fails alike and names the same
+    cause or none (saying, where it can tell, that the graded submission may say more: the tier's own tests hold that);
+    where the check names an effect its value shows (``grader.diagnosis.effect``: a sign, a term not there) and the live
+    grading tells a slip inside a formula beside it (``grader.diagnosis.rival``), the kit names the check's alone.
+    False when the live diagnosis is not of that tier."""
     from grader.diagnosis import effect
     from grader.diagnosis.mutants import NAMES_A_FUNCTION
 

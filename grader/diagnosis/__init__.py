@@ -76,18 +76,17 @@ The grammar:
   terms), found by least squares over the inputs; and ``mutants``' slips inside the reference's own code, among
   them slips of precision (float32, a constant typed short), tried on one input too where the value is within
   their band;
-* motions (``motion``: a run's times, states and events): a time shift, an output grid one sample off (as many times
-  as asked, spaced as a grid of one more or one fewer), a constant offset, a state read from the wrong row (of the
-  run, or of the state at an event: another of its rows, or a slice of the whole state there from another start,
-  where the event itself is found where the reference's is), the state at an event read from the run's last output
-  before it (and, its twin, a state of another time), a wrong initial state (and, beside it, the slip of a value that gives the student's start from the
-  given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start typed
-  rounded, its entries exchanged; on fewer numbers as a twin of the wrong start, "could be" either: one angle
-  typed with the wrong sign),
-  an event found late or early, an error that grows with the step, the run's
-  parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the
-  reference re-run so: a run clearly another than the reference's, or one far nearer to the student's than the
-  reference's is); a randomized comparison's second failing run must show the same cause.
+* motions (``motion``: a run's times, states and events): a time shift, an output grid one sample off (as many times as
+  asked, spaced as a grid of one more or one fewer), a constant offset, a state read from the wrong row (of the run, or
+  of the state at an event: another of its rows, or a slice of the whole state there from another start, where the event
+  itself is found where the reference's is), the state at an event read from the run's last output before it (and, its
+  twin, a state of another time), a wrong initial state (and, beside it, the slip of a value that gives the student's
+  start from the given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start
+  typed rounded, its entries exchanged; on fewer numbers as a twin of the wrong start, "could be" either: one angle
+  typed with the wrong sign), an event found late or early, an error that grows with the step, the run's parameters
+  exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the reference re-run
+  so: a run clearly another than the reference's, or one far nearer to the student's than the reference's is); a
+  randomized comparison's second failing run must show the same cause.
 
 * models (``models``: a value of the student's MuJoCo model, which a check compares with the sheet's numbers or
   the reference's analytic values, so that no reference call stands behind it): the student's compiled model and
@@ -119,18 +118,17 @@ A value the check derives from the student's reply itself (the centre of gravity
 coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; the
 kit's key may not hold the reference's call: there the kit leaves the cause to the graded submission.
 
-What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=...,
-rotation=..., motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the
-grading context), never from ``reference`` itself.  Where a check takes its expected value from a stand-in of the
-reference's (a probe for the reference alone: problem 7's numeric ``expressions`` for the student's symbolic
-``derive``; or any other probe than the student's: problem 16's numeric ``body`` for its ``symbolic``), the tier of
-formulas mutates the code of the student's own call on the reference instead, where the
-reference's value of that call is the expected one (``mutants.own_calls``).  Every reference call the engine may need is a function of the
-probe's arguments alone, so the student kit's answer key holds them: while the key is recorded, every comparison
-of a declared probe makes them (``prepare``).
+What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=..., rotation=...,
+motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the grading context), never
+from ``reference`` itself.  Where a check takes its expected value from a stand-in of the reference's (a probe for the
+reference alone: problem 7's numeric ``expressions`` for the student's symbolic ``derive``; or any other probe than the
+student's: problem 16's numeric ``body`` for its ``symbolic``), the tier of formulas mutates the code of the student's
+own call on the reference instead, where the reference's value of that call is the expected one (``mutants.own_calls``).
+Every reference call the engine may need is a function of the probe's arguments alone, so the student kit's answer key
+holds them: while the key is recorded, every comparison of a declared probe makes them (``prepare``).
 
-The package: ``evidence`` (declarations, evidence, where values came from), ``grammar`` (slips of values and
-arguments), ``terms``, ``runs``, ``models``, ``scene`` (the reference and the student's code, with budgets) and ``engine``
+The package: ``evidence`` (declarations, evidence, where values came from), ``grammar`` (slips of values and arguments),
+``terms``, ``runs``, ``models``, ``scene`` (the reference and the student's code, with budgets) and ``engine``
 (explaining, and recording the key).
 """
 

@@ -1,112 +1,111 @@
 """Formulas: mutated copies of the reference's own code.
 
-Most mistakes no transform of the output or of the inputs reproduces are slips *inside* a formula: one term's
-sign, a factor or an operand left out, two arguments exchanged, a neighbouring index.  This tier evaluates the
-reference's code with one such slip on the very inputs of the failing comparison.  The code mutated is what the
-student writes: the functions that hold a solution region (``# BEGIN SOLUTION problem N``) of the problem of the
-check (or of a neighbouring problem: one region may serve two of the sheet's problems), that the probe's call
-runs, and that no earlier problem owns (``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6).
-The student's file of problem N (``problem_NN.py``) also holds code that the template gives whole (a function with
-no region: problem 34's gait, problem 24's pendulum): a slip there is the student's too, but less likely than one in
-the code they wrote, so its functions' slips (``given``) are tried only where no slip of a region reproduced the
-student's value, and no earlier tier explained it, within a budget of their own (``GIVEN_TIME_BUDGET``); a list's
-entry written 0 there is data left out, told as a term left out and as an offset (``_ENTRIES``).  Where the slips of
-the regions that reproduce it are all exchanges, or all signs, the given code's slips of the other of the two
-families are heard as well, within the same budget (``OPPOSITES``): two arguments exchanged in a call of a given
-function that takes their difference (``pd(q, qd_des, q_des, qd)``) are as truly that difference's sign, and the
-value cannot tell the edit from its effect; for the same reason a check that tells a sign from what the value
-shows hears the exchanges of two operands of the regions (``opposite_slips``, asked by ``diagnosis.rival``).  Last,
-where
-nothing else reproduced it, the module constants that the call reads, of the problem's own module and of the library
-(the modules of no problem), directly, through a function's default or a constant computed from them, are typed
-otherwise (``constant_mutants``: a number of one with the wrong sign, twice or half itself, ten or a thousand times
-or a tenth or a thousandth of itself (a decimal point misplaced, another unit), in degrees where radians belong
-(exactly, or rounded as a student types the degrees read off it: 0.35 as 20) or the reverse, an expression
-in it with its minus left out or given one (``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
-matrix written out row by row transposed; two
-constants of one module exchanged), each measured with the constants, defaults and imported names its module
-computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
+Most mistakes no transform of the output or of the inputs reproduces are slips *inside* a formula: one term's sign, a
+factor or an operand left out, two arguments exchanged, a neighbouring index.  This tier evaluates the reference's code
+with one such slip on the very inputs of the failing comparison.  The code mutated is what the student writes: the
+functions that hold a solution region (``# BEGIN SOLUTION problem N``) of the problem of the check (or of a neighbouring
+problem: one region may serve two of the sheet's problems), that the probe's call runs, and that no earlier problem owns
+(``checks._upstream.SHARED``: a mistake of ``R3`` belongs to problem 6). The student's file of problem N
+(``problem_NN.py``) also holds code that the template gives whole (a function with no region: problem 34's gait, problem
+24's pendulum): a slip there is the student's too, but less likely than one in the code they wrote, so its functions'
+slips (``given``) are tried only where no slip of a region reproduced the student's value, and no earlier tier explained
+it, within a budget of their own (``GIVEN_TIME_BUDGET``); a list's entry written 0 there is data left out, told as a
+term left out and as an offset (``_ENTRIES``).  Where the slips of the regions that reproduce it are all exchanges, or
+all signs, the given code's slips of the other of the two families are heard as well, within the same budget
+(``OPPOSITES``): two arguments exchanged in a call of a given function that takes their difference (``pd(q, qd_des,
+q_des, qd)``) are as truly that difference's sign, and the value cannot tell the edit from its effect; for the same
+reason a check that tells a sign from what the value shows hears the exchanges of two operands of the regions
+(``opposite_slips``, asked by ``diagnosis.rival``).  Last, where nothing else reproduced it, the module constants that
+the call reads, of the problem's own module and of the library (the modules of no problem), directly, through a
+function's default or a constant computed from them, are typed otherwise (``constant_mutants``: a number of one with the
+wrong sign, twice or half itself, ten or a thousand times or a tenth or a thousandth of itself (a decimal point
+misplaced, another unit), in degrees where radians belong (exactly, or rounded as a student types the degrees read off
+it: 0.35 as 20) or the reverse, an expression in it with its minus left out or given one (``np.cos(SLOPE)`` for
+``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
+matrix written out row by row transposed; two constants of one module exchanged), each measured with the constants,
+defaults and imported names its module computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and
+``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor missing (a
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
-entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: alpha}``), the arguments a call is
-to hand on (``*args``, ``**kwargs``) left out, a default taken whatever the argument (``np.eye(3) if I is None else
-I`` as ``np.eye(3)``), an angle the function binds itself (``x, z, phi = y``) read in degrees throughout or an
-angle converted to degrees before its sine (``phi = np.rad2deg(phi)``), an event's residual returned as a test or a
-magnitude (``y[0] > 0``, ``abs(gap)``, in a function of ``(t, y)``), a list of angles passed in reverse order
-(``ANGLES0[::-1]``), a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos
-(in one call, throughout one expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where
-``c2, s2 = np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by
-row, transposed), a neighbouring index, two names exchanged (throughout, or two of a kind in one expression), a solve or
-an inverse left out or made with the matrix's diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an
-entry of a matrix or vector written 0 (told beside an offset where it is the same on every input), a sum that keeps only
-its last term, a count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``,
-``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the course's
-notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied to one
-term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a term written with a plus given
-a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is replaced (``self.r = self.r +
-r`` for ``self.r = r``, outside a constructor: a term added), one factor of a product inverted where the product's
-inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no inverse), a ratio upside down (``m
-/ 12`` for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``),
-the halves of a run's state read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read
-for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r
-r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
-``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product
-it is a factor of, a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``), a vector or matrix the function writes out
-passed to a call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the
-wrong part of a product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
-statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
-with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for another
-of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
-``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum of the other and more, ``g_e = q2 +
-q4``, a term added or left out as well; the angles of a function are the names it reads in a sine or a cosine or passes
-where a function of the reference reads its parameter so), and a parameter read as the constant or the number of its
-default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for
-``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of
-them: the argument ignored (and every parameter that has a default read as it at once: every argument ignored); a
-name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
-``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
-entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
-index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one item fewer, that stops
-one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of
-steps over a range one step longer (``range(n + 1)``: one step too many), a keyword
-argument left out of a call of a function or a class of the reference whose parameter of that name has a default (the
-callee then uses the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation
-left out, ``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M
-J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3)
-+ W``: numpy adds it to every entry, a term added, told as an offset as well where it is the same on every input) or
-left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the identity left out, a term of its own), and a
-body's matrix turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @
-B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame); last of all, after the reads of
-names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the ones the
-function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180`` of an
-angle already in radians: a scale).  The reads of names and the indices written come after every other slip of every
-function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the slips
-of precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``,
-also inside a loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a
-constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant
-rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577,
-``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is told only where
-the student's value is in the band such slips make (``PRECISION_BAND``), differs from the expected one beyond the
-tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input
-(no second one to draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is
-as truly a slip of another family is told with both names, as a twin (``rivals``): a product with a quantity where the
-division by it belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each
-where the other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored,
-where the engine could test none of the call's arguments itself, and so is an argument of the call that the engine's
-test had no budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos
-exchanged in a term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong
-rows; a skew matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round
-as a sign or the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant
-is kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the second
-one (and on a third where the engine can draw one), and differs from the expected value (an equivalent mutant says
-nothing).  Where the probe computes more than the compared value and declares the cheaper call that holds it (``part``:
-``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only
-where it reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part
-for the others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from
-one kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of
-one family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never
-the reference's code.
+entries exchanged (of a list, a tuple, or the values of a dict: ``{a: beta, b: alpha}``), the arguments a call is to
+hand on (``*args``, ``**kwargs``) left out, a default taken whatever the argument (``np.eye(3) if I is None else I`` as
+``np.eye(3)``), an angle the function binds itself (``x, z, phi = y``) read in degrees throughout or an angle converted
+to degrees before its sine (``phi = np.rad2deg(phi)``), an event's residual returned as a test or a magnitude (``y[0] >
+0``, ``abs(gap)``, in a function of ``(t, y)``), a list of angles passed in reverse order (``ANGLES0[::-1]``), a number
+doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos (in one call, throughout one
+expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where ``c2, s2 = np.cos(q2),
+np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by row, transposed), a
+neighbouring index, two names exchanged (throughout, or two of a kind in one expression), a solve or an inverse left out
+or made with the matrix's diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or
+vector written 0 (told beside an offset where it is the same on every input), a sum that keeps only its last term, a
+count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for
+``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the course's notation), a quantity
+read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a factor of a sum applied to one term only (``A @ x + y``
+for ``A @ (x + y)``), one entry of a list with the wrong sign (a term written with a plus given a minus: ``-C / 2`` for
+``+C / 2``), a value that the object keeps added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``,
+outside a constructor: a term added), one factor of a product inverted where the product's inverse belongs (``solve(A, B
+@ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no inverse), a ratio upside down (``m / 12`` for ``12 / m``), two
+neighbouring factors of a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state
+read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair
+(``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``, its second read as
+it is, and ``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is
+measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset,
+not a term left out), an argument left out of every product it is a factor of, a length where its square belongs
+(``np.sqrt(r @ r)`` for ``r @ r``), a vector or matrix the function writes out passed to a call with the wrong sign
+(``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a product (``(m * a)**2``
+for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one statement (``V[2, :] =
+-V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts with its last or its
+second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for another of its kind: an angle
+where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip,
+``wrong_angle``, and where one angle is bound to a sum of the other and more, ``g_e = q2 + q4``, a term added or left
+out as well; the angles of a function are the names it reads in a sine or a cosine or passes where a function of the
+reference reads its parameter so), and a parameter read as the constant or the number of its default, as its module's
+constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for ``angles``: its value at the
+start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of them: the argument ignored
+(and every parameter that has a default read as it at once: every argument ignored); a name computed from a value at the
+start read, once, as that start (``cardan(*ANGLES0)`` for ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``:
+the start returned for the end, an initial state); and an entry written into a neighbouring index (``a[0] = ...`` for
+``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one
+item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum
+left out), a loop of steps over a range one step longer (``range(n + 1)``: one step too many), a keyword argument left
+out of a call of a function or a class of the reference whose parameter of that name has a default (the callee then uses
+the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation left out,
+``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M J^T`` for
+``(J M^-1 J^T)^-1``: no inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``:
+numpy adds it to every entry, a term added, told as an offset as well where it is the same on every input) or left out
+of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the identity left out, a term of its own), and a body's matrix
+turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T``
+for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame); last of all, after the reads of names, every read of
+one of a function's arguments multiplied by the factor of a conversion of units into the ones the function computes in
+(``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180`` of an angle already in
+radians: a scale).  The reads of names and the indices written come after every other slip of every function, as many as
+``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the slips of precision
+(``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
+loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
+short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to two,
+three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as
+0.52: these come with the reads of names, after the other slips).  A slip of precision is told only where the student's
+value is in the band such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is
+reproduced closely (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to
+draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of
+another family is told with both names, as a twin (``rivals``): a product with a quantity where the division by it
+belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the
+other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored, where the
+engine could test none of the call's arguments itself, and so is an argument of the call that the engine's test had no
+budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a
+term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
+matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a sign or
+the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is kept when
+its value reproduces the student's within the comparison's tolerance on the input shown *and* on the second one (and on
+a third where the engine can draw one), and differs from the expected value (an equivalent mutant says nothing).  Where
+the probe computes more than the compared value and declares the cheaper call that holds it (``part``: ``lagrange``'s
+``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only where it
+reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part for the
+others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from one
+kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of one
+family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never the
+reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
@@ -130,18 +129,16 @@ reference only (``left_to_live``: the kit then says that the graded submission m
 
 A symbolic answer costs most in its simplification (``trigsimp`` of problem 40's matrices: a quarter of a second)
 and in sympy's ``lambdify``, neither of which changes its value.  Where a function of the problem simplifies
-(``SIMPLIFIERS``), its mutants are screened on a copy of their code without the simplifications, the answers read
-by ``probes._symbolic.quick`` (a walk of the expression, not generated code), and so are the call that finds the
-functions run and the slips of the functions the module gives whole (``_given``) that the call reaches; this holds only where the reference's own value, so computed, is the expected one on every input
-(``_holds``), else every mutant is evaluated as it is.  A mutant that reproduces the student's value when screened
-is evaluated again as it is, and that value decides: the screen can only leave out a mutant whose value depends on
-an expression's form.  That evaluation is counted apart from the screening, against a budget of its own
-(``CONFIRMING_TIME_BUDGET``: one of problem 40's mutants takes longer to simplify than all of them to screen); what
-the probes compute once for a mutant's code is kept for its inputs and later explanations (``_CONFIRMED``); and a
-screened mutant of a slip of the same function as one kept already is kept on its screened value, for it adds no
-name to the finding.
-"""
-
+(``SIMPLIFIERS``), its mutants are screened on a copy of their code without the simplifications, the answers read by
+``probes._symbolic.quick`` (a walk of the expression, not generated code), and so are the call that finds the functions
+run and the slips of the functions the module gives whole (``_given``) that the call reaches; this holds only where the
+reference's own value, so computed, is the expected one on every input (``_holds``), else every mutant is evaluated as
+it is.  A mutant that reproduces the student's value when screened is evaluated again as it is, and that value decides:
+the screen can only leave out a mutant whose value depends on an expression's form.  That evaluation is counted apart
+from the screening, against a budget of its own (``CONFIRMING_TIME_BUDGET``: one of problem 40's mutants takes longer to
+simplify than all of them to screen); what the probes compute once for a mutant's code is kept for its inputs and later
+explanations (``_CONFIRMED``); and a screened mutant of a slip of the same function as one kept already is kept on its
+screened value, for it adds no name to the finding. """
 from __future__ import annotations
 
 import __future__
@@ -169,7 +166,7 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at, at_point, distinct, Evidence, Hypothesis, part_of, Source, within
+from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, Source, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
@@ -1581,8 +1578,8 @@ def _binop_slips(node: ast.BinOp):
             yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
         yield "square", lambda n: n.left
-    if isinstance(op, (ast.Mult, ast.Div)) and isinstance(node.right, ast.BinOp) and isinstance(node.right.op, ast.Pow) \
-            and _number(node.right.right):  # ``(m * arm)**2`` for ``m * arm**2``: the power over the whole product
+    if isinstance(op, (ast.Mult, ast.Div)) and isinstance(node.right, ast.BinOp) \
+            and isinstance(node.right.op, ast.Pow) and _number(node.right.right):  # ``(m * arm)**2`` for ``m * arm**2``
         yield "power_scope", lambda n: ast.BinOp(_with(n, right=n.right.left), ast.Pow(), n.right.right)
     if not isinstance(op, ast.Pow):
         for side in ("left", "right"):
@@ -1894,13 +1891,13 @@ def _built(function: ast.FunctionDef) -> frozenset:
 
 def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
                 built: frozenset = frozenset()):
-    """One read of a name for another of its kind: an angle for another angle that the function reads
-    (``np.cos(beta)`` for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the
-    read of the sum for its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its module's constant or the Earth's
-    gravity (``_defaults``: the argument ignored), a name bound to a value computed from a start read as that start
-    (``_starts``: the computation left unused); a slice's axes exchanged in one statement (``V[2, :]`` for
-    ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates, say) in the order of
-    another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``)."""
+    """One read of a name for another of its kind: an angle for another angle that the function reads (``np.cos(beta)``
+    for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the read of the sum for
+    its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its
+    module's constant or the Earth's gravity (``_defaults``: the argument ignored), a name bound to a value computed
+    from a start read as that start (``_starts``: the computation left unused); a slice's axes exchanged in one
+    statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
+    say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
@@ -1996,8 +1993,8 @@ def _mutated(function: _Function, lines: tuple):
                 if late_pass is CONVERSIONS else \
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
-            slips = () if guarded or indexing else itertools.chain(_name_slips(node, parent, angles, defaults, sums, starts, built),
-                                                                   _written_index_slips(node))
+            slips = () if guarded or indexing else itertools.chain(
+                _name_slips(node, parent, angles, defaults, sums, starts, built), _written_index_slips(node))
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
@@ -2334,14 +2331,15 @@ def _probe(probe):
 
 def _call(package, probe, args, path, quick: bool = False, replies: dict | None = None, remember: bool = False):
     """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the bytes of
-    ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per
-    package would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by
-    reading its expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given):
-    the whole replies of the calls made so far with the package's code as it is now, by the call, which a call on
-    the same arguments reads rather than makes again (a comparison's other values of the same call, ``_siblings``),
-    and a call that raised raises again.  An integer of ``path`` also indexes the first axis of an array (the value
-    of one point of a probe that returns one per point, as a symbolic answer evaluated at several).  ``remember``: the package's code is the reference's own, and the probe
-    keeps what it computes once as it does for any call of the package (``probes.remembered``)."""
+    ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per package
+    would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by reading its
+    expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given): the whole
+    replies of the calls made so far with the package's code as it is now, by the call, which a call on the same
+    arguments reads rather than makes again (a comparison's other values of the same call, ``_siblings``), and a call
+    that raised raises again.  An integer of ``path`` also indexes the first axis of an array (the value of one point of
+    a probe that returns one per point, as a symbolic answer evaluated at several).  ``remember``: the package's code is
+    the reference's own, and the probe keeps what it computes once as it does for any call of the package
+    (``probes.remembered``)."""
     from probes import fresh
     from probes._codec import decode, encode
     from probes._symbolic import quick as reading
