@@ -275,6 +275,8 @@ _TABLE = (
     # ---------------------------------------------------------------- missing terms
     *_terms(),
     _D("missing_term", "missing_term", "a term left out of a sum", "left a term out of a sum"),
+    _D("missing_matrix_factor", "missing_term", "a matrix or vector factor of a matrix product left out (J for J "
+       "@ qd)", "left a matrix factor out of a product"),
     _D("missing_identity", "missing_term", "the identity matrix left out of a product (a number added to every "
        "entry, not to the diagonal alone)", "left the identity matrix out"),
     _D("missing_rotation", "missing_term", "the rotational part J_R.T I J_R missing", "left out the rotation"),

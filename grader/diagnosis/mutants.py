@@ -462,6 +462,8 @@ SLIPS = {
                           "it)"),
     "term": ("missing_term", "one term of a sum in `{f}` is left out"),
     "factor": ("missing_factor", "one factor of a product in `{f}` is left out"),
+    "matrix_factor": ("missing_matrix_factor", "a matrix or vector factor of a product in `{f}` is left out (``J`` "
+                                               "for ``J @ qd``)"),
     "rotation": ("wrong_frame", "a rotation is left out in `{f}`: a vector stays in the coordinates of another frame"),
     "number": ("wrong_factor", "a number in `{f}` is left out of a product"),
     "doubled": ("wrong_factor", "a number in `{f}` is doubled"),
@@ -1574,8 +1576,9 @@ def _binop_slips(node: ast.BinOp):
         if _chained(node.right) and not _chained(node.left):  # ``A @ (B @ v)`` as ``B @ (A @ v)``
             both = _ROTATION.match(_label(node.left) or "-") and _ROTATION.match(_label(node.right.left) or "-")
             yield "rotations" if both else "neighbours", _nested_exchanged
-        for side, other in (("left", "right"), ("right", "left")):
-            yield _dropped(getattr(node, side)), lambda n, other=other: getattr(n, other)
+        for side, other in (("left", "right"), ("right", "left")):  # ``J`` for ``J @ qd``: a matrix factor
+            dropped = _dropped(getattr(node, side))
+            yield "matrix_factor" if dropped == "factor" else dropped, lambda n, other=other: getattr(n, other)
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
         yield "square", lambda n: n.left
     if isinstance(op, (ast.Mult, ast.Div)) and isinstance(node.right, ast.BinOp) \
@@ -3029,13 +3032,25 @@ def mutant_slips(scene, evidences: list[Evidence], another=None, told=None, unte
     tries rivals within a budget of its own, those of other families first (``late``).  ``untested``: the test of
     an ignored argument could change none of the call's arguments, and a parameter with a default that a slip
     leaves unused is told beside it (``rivals``); ``unreached``: the positions of the call's arguments that the
-    test ran out of its budget before changing, an argument of which a slip leaves unused told beside it."""
+    test ran out of its budget before changing, an argument of which a slip leaves unused told beside it.  Where the
+    student's own call stands in for the probe the expected value came from (``own_calls``), its code is mutated
+    first, and the stand-in's where that reproduces nothing."""
     if getattr(scene.ctx.oracle, "mode", "") != "live":
         return []
-    evidences = own_calls(evidences)
-    if another is not None:
-        drawn = another
-        another = lambda: next(iter(own_calls([e for e in [drawn()] if e is not None])), None)  # noqa: E731
+    owned = own_calls(evidences)
+    if owned is evidences:
+        return _slips_on(scene, evidences, another, told, untested, unreached)
+    drawn = another
+    found = _slips_on(scene, owned, None if drawn is None else lambda: next(
+        iter(own_calls([e for e in [drawn()] if e is not None])), None), told, untested, unreached)
+    if not found:  # no slip of the code the student's own call runs: the stand-in's code, as where it holds none
+        trace.note("own_call", fallback=True)
+        found = _slips_on(scene, evidences, drawn, told, untested, unreached)
+    return found
+
+
+def _slips_on(scene, evidences: list[Evidence], another, told, untested, unreached) -> list[Hypothesis]:
+    """``mutant_slips`` on these evidences (the student's own calls in place of stand-ins, or as they are)."""
     if not _tried(evidences):
         return _imprecise(scene, evidences, another)
     if any(_rebound_alike(e) for e in evidences[1:]):  # right at the constants drawn: a constant typed short?

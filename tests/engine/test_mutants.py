@@ -814,6 +814,13 @@ def arm_ends(r0, d):
     # END SOLUTION
 
 
+def spring_back(K, x):
+    """A spring's force ``-K x`` with a light damping of the position, ``0.1 x``."""
+    # BEGIN SOLUTION problem 98
+    return -(K @ x) + 0.1 * x
+    # END SOLUTION
+
+
 def weighed(values):
     """Each value counted once in full and once at a weight of a half."""
     # BEGIN SOLUTION problem 98
@@ -1681,12 +1688,17 @@ def _region_of(made_up, name):
     return function.node, tuple((first, last) for _, first, last in function.regions)
 
 
-def test_the_second_term_of_a_difference_alone_with_its_minus_is_not_the_first_left_out(tmp_path):
-    """The near miss: ``I_G - m r r^T`` keeps the minus of the term left alone; leaving out the first term of the
-    difference keeps the second as it reads (``+ m r r^T``), so that slip does not give it."""
+def test_the_second_term_of_a_difference_alone_with_its_minus_is_the_first_left_out_too(tmp_path):
+    """``I_G - m r r^T``: the first term of the difference left out, the second keeping its minus (as ``-qd`` for
+    ``qd_des - qd``), beside the second read as it is (``+ m r r^T``); the near miss, the second term halved as
+    well, is not that slip."""
     found = slips_of(tmp_path, "p19.parallel_axis", "inertia.py",
                      "return as_matrix(I_G) + m * ((r @ r) * np.eye(3) - np.outer(r, r))",
                      "return as_matrix(I_G) - m * np.outer(r, r)", "problem_19.parallel_axis", STEINER)
+    assert any("the first term of a difference" in h.detail for h in found), [(h.name, h.detail) for h in found]
+    found = slips_of(tmp_path / "near", "p19.parallel_axis", "inertia.py",
+                     "return as_matrix(I_G) + m * ((r @ r) * np.eye(3) - np.outer(r, r))",
+                     "return as_matrix(I_G) - 0.5 * m * np.outer(r, r)", "problem_19.parallel_axis", STEINER)
     assert not any("the first term of a difference" in h.detail for h in found), [(h.name, h.detail) for h in found]
 
 
@@ -1875,6 +1887,17 @@ def test_a_vector_written_out_and_passed_with_the_wrong_sign_is_a_sign(made_up):
     names, found = names_of(made_up, "arm_ends", lambda r0, d: ends(r0, d), inputs)
     assert names == {"sign_flip"}, [(h.name, h.detail) for h in found]
     assert "sign_flip" not in names_of(made_up, "arm_ends", lambda r0, d: ends(r0, d, 1.0, 0.5), inputs)[0]
+
+
+def test_a_matrix_factor_of_a_product_left_out_is_a_term_left_out_not_a_scale(made_up):
+    """``-x`` for ``-(K @ x)``: the matrix of the product left out changes what the product is, not its scale (a
+    missing term, as the held-out sets label it); a number left out stays a factor left out."""
+    inputs = [(SPD, V(0.3, -1.0, 0.5)), (2.0 * SPD + np.eye(3), V(-0.8, 0.2, 1.1))]
+    names, found = names_of(made_up, "spring_back", lambda K, x: -x + 0.1 * x, inputs)
+    assert "missing_matrix_factor" in names and "missing_factor" not in names, [(h.name, h.detail) for h in found]
+    assert DIAGNOSES["missing_matrix_factor"].family == "missing_term"
+    names, found = names_of(made_up, "spring_back", lambda K, x: -(K @ x) + x, inputs)
+    assert "missing_matrix_factor" not in names, [(h.name, h.detail) for h in found]
 
 
 def test_a_comprehensions_later_loop_one_short_is_a_term_left_out(made_up):

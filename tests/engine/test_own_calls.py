@@ -138,6 +138,20 @@ def test_a_numeric_twin_gives_way_to_the_students_symbolic_call_read_at_its_poin
     assert mutants.own_calls([elsewhere]) == [elsewhere]  # the reference's row there is not the twin's value
 
 
+def test_the_stand_ins_code_is_mutated_where_the_own_calls_reproduces_nothing(stand_in_probes, monkeypatch):
+    """The own call's code first; where none of its slips reproduces the student's value, the stand-in's code, as
+    where the own call does not hold (a slip of problem 25's symbolic pass that its numeric walker shares)."""
+    from grader.diagnosis.evidence import Hypothesis
+
+    seen, found = [], Hypothesis("k", "sign_flip", 1, "a sign")
+    monkeypatch.setattr(mutants, "_slips_on", lambda scene, evidences, *rest: seen.append(
+        evidences[0].source.probe) or ([] if len(seen) == 1 else [found]))
+    evidence = _evidence("stub_own.stand_in", [1.0, 5.0])
+    live = types.SimpleNamespace(ctx=types.SimpleNamespace(oracle=types.SimpleNamespace(mode="live")))
+    assert mutants.mutant_slips(live, [evidence]) == [found]
+    assert seen == ["stub_own.own", "stub_own.stand_in"]
+
+
 def test_the_other_values_of_one_call_are_read_from_one_reply(stand_in_probes):
     replies, calls = stand_in_probes
     args = mutants._kept_once((1,))
