@@ -28,11 +28,11 @@ from tests.engine.stand_ins import StandInChild, StandInOracle
 from tests.submissions import Planted
 
 #: problem 7's body angular velocity with A_CI left out, unskew(dA_IC): the value does not follow the rotation A_IC
-#: (the test of an ignored argument turns it), and the formula tier reproduces it with a factor left out
+#: (the test of an ignored argument turns it), and the formula tier reproduces it with a matrix factor left out
 OMEGA_WITHOUT_ROTATION = Planted(
     name="ignored-p07-omega-body-without-rotation", problem=7, file="rotations.py",
     old="    return unskew(np.asarray(A_IC).T @ np.asarray(dA_IC))", new="    return unskew(np.asarray(dA_IC))",
-    check="p07.omega_body", diagnosis="ignored_argument or missing_factor", message="when A turns")
+    check="p07.omega_body", diagnosis="ignored_argument or missing_matrix_factor", message="when A turns")
 
 MISTAKES = [OMEGA_WITHOUT_ROTATION]
 
