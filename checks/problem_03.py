@@ -344,15 +344,11 @@ def check_driven_rate(ctx):
     if np.isclose(slope, -RATE, rtol=0.05):
         fail(message, "Joint 1 turns the other way: the servo's control and the keyframe's initial velocity are the "
              "rate itself, +rate (q1 = +t).", "sign_flip")
-    hint = ("The servo's control is the rate in rad/s (an <intvelocity> integrates it into the setpoint): set it, and "
-            "the keyframe's initial velocity, to the rate.")
-    strays = _strays(t, q1, slope)
-    if slope > 0 and not np.isclose(slope, RATE, rtol=0.05) and strays is not None and strays <= _steady(t, slope):
-        fail(message, hint, "wrong_rate")
-    fail(message if strays is None else f"{message}\nIt does not turn steadily: it strays up to {strays:.3g} rad from "
-         "the straight line q1 = a + b t that fits it best.", UNSTEADY_HINT, "")
+    fail(*_off_rate(t, q1, slope, message))
 
 
+RATE_HINT = ("The servo's control is the rate in rad/s (an <intvelocity> integrates it into the setpoint): set it, and "
+             "the keyframe's initial velocity, to the rate.")
 UNSTEADY_HINT = ("Joint 1 should turn steadily, q1 = rate t: an <intvelocity> servo (kp = 1000) integrates its "
                  "control, the rate in rad/s, into a setpoint that moves so. Look at the actuator, its control and the "
                  "keyframe that starts it (its qvel and ctrl).")
@@ -361,16 +357,18 @@ UNSTEADY_HINT = ("Joint 1 should turn steadily, q1 = rate t: an <intvelocity> se
 STEADY_SHARE = 0.05
 
 
-def _strays(t, q1, slope) -> float | None:
-    """How far joint 1's angle ``q1`` strays from the straight line that fits it best, or None for a run that is not
-    finite."""
+def _off_rate(t, q1, slope, message) -> tuple[str, str, str]:
+    """``(message, hint, diagnosis)`` of joint 1 off its prescribed motion at none of the rates the check names
+    otherwise: a steady turn at another positive rate is the rate (``wrong_rate``); an unsteady turn is told how far
+    it strays from its best straight line, with no cause; a steady turn at no positive rate (at rest, backwards) or
+    a run that is not finite, with no cause either."""
     if not (np.all(np.isfinite(q1)) and np.isfinite(slope)):
-        return None
-    return float(np.max(np.abs(np.polyval(np.polyfit(t, q1, 1), t) - q1)))
-
-
-def _steady(t, slope) -> float:
-    return max(STEADY_SHARE * abs(slope) * float(t[-1] - t[0]), DRIVEN.atol)
+        return message, RATE_HINT, ""
+    strays = float(np.max(np.abs(np.polyval(np.polyfit(t, q1, 1), t) - q1)))
+    if strays > max(STEADY_SHARE * abs(slope) * float(t[-1] - t[0]), DRIVEN.atol):
+        return (f"{message}\nIt does not turn steadily: it strays up to {strays:.3g} rad from the straight line "
+                "q1 = a + b t that fits it best.", UNSTEADY_HINT, "")
+    return message, RATE_HINT, "wrong_rate" if slope > 0 and not np.isclose(slope, RATE, rtol=0.05) else ""
 
 
 @check(2, title="3(c): joint 2's angle and rate follow the reference over 10 s (up to the chaos horizon, if any)",
