@@ -3389,8 +3389,9 @@ OPERANDS_EXCHANGED = frozenset({"arguments", "names", "parameters", "blocks", "e
 #: the slips that reorder two factors of a product: their effect may be a term that vanishes (``I @ skew(w) @ w``
 #: for ``skew(w) @ I @ w``)
 FACTORS_REORDERED = frozenset({"factors", "neighbours"})
-#: ``{family a check tells from what the value shows: (the rival's family, the slips whose effect it may be)}``
-EFFECT_RIVALS = {"sign": ("order", OPERANDS_EXCHANGED), "missing_term": ("order", FACTORS_REORDERED)}
+#: ``{family a check tells from what the value shows: (the rival's family, the slips whose effect it may be, whether
+#: a mutant whose value vanishes is one: the effect of a term that is not there)}``
+EFFECT_RIVALS = {"sign": ("order", OPERANDS_EXCHANGED, False), "missing_term": ("order", FACTORS_REORDERED, True)}
 
 
 def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypothesis]:
@@ -3400,7 +3401,7 @@ def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypoth
     factors of a product reordered (``FACTORS_REORDERED``: the term written, in an order in which it vanishes).  On
     the input shown alone where the engine has no second one (a call of no arguments): a rival adds a name to the
     check's, which the value proves already, and explains nothing by itself.  None in the kit."""
-    opposite, only = EFFECT_RIVALS.get(family, (None, frozenset()))
+    opposite, only, vanishing = EFFECT_RIVALS.get(family, (None, frozenset(), False))
     first = evidences[0] if evidences else None
     if getattr(scene.ctx.oracle, "mode", "") != "live" or opposite is None or first is None \
             or first.source is None or first.got is None or any(e.source is None or e.got is None for e in evidences):
@@ -3409,7 +3410,7 @@ def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypoth
     if problem is None:
         return []
     try:
-        kept = _kept(problem, list(evidences), only=only, vanishing=family == "missing_term")
+        kept = _kept(problem, list(evidences), only=only, vanishing=vanishing)
     except GraderFault:
         return []
     trace.note("opposite", family=opposite, kept=None if kept is None else sorted({m.name for m in kept}))
