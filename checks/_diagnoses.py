@@ -372,6 +372,8 @@ _TABLE = (
     # ---------------------------------------------------------------- precision
     _D("float32", "precision", "values computed in single precision (float32)", "computed in single precision"),
     _D("rounded", "precision", "values rounded to a few decimals", "rounded the values"),
+    _D("integer_truncated", "precision", "values cut to whole numbers (an integer dtype where floats belong)",
+       "cut values to whole numbers"),
     _D("absolute_tolerance", "precision", "a tolerance not relative to the size of the values",
        "compared with an absolute tolerance"),
     # ---------------------------------------------------------------- integration schemes

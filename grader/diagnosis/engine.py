@@ -235,12 +235,16 @@ def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
             continue
         if not distinct(value, expected, tol):
             trace.note("second", reason="the value does not change with the arguments")
-            return None
+            return FIXED
         return args, root
     trace.note("second", reason="no usable draw")
     if fault is not None and getattr(scene.ctx.oracle, "mode", "") == "kit":
         raise fault
     return None
+
+
+#: what ``_drawn`` gives for a value that does not change with the call's arguments
+FIXED = "fixed"
 
 
 def _vanishes(value: np.ndarray, expected: np.ndarray, tol: Tol) -> bool:
@@ -253,15 +257,18 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
     """The same comparison on an input the engine draws (``_drawn``: the probe's declared angles, vectors,
     rotations and scalars drawn anew, or every float of its arguments varied; where that draws nothing, the
     module's constants the probes declare drawn anew, ``rebound_input``): the student's value there and the
-    reference's, or None."""
+    reference's, or None.  Where the value does not change with the arguments and no constant is drawn anew, the
+    evidence is marked ``alone``: its one input is all there is."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or evidence.motion:
         return None
     if source.probe == REBOUND or source.probe != student.probe or not _equal_args(source.args, student.args):
         return rebound_input(scene, evidence)
     drawn = _drawn(scene, source, evidence.expected, evidence.tol)
-    if drawn is None:
-        return rebound_input(scene, evidence)
+    if drawn is None or drawn is FIXED:
+        second = rebound_input(scene, evidence)
+        evidence.alone = second is None and drawn is FIXED
+        return second
     args, expected_root = drawn
     return evidence_at(scene, evidence, Source(source.probe, tuple(args), source.path, expected_root),
                        (source.probe, tuple(args)), "second")
@@ -272,13 +279,13 @@ SIBLINGS = 12
 
 
 def _siblings(evidences: list) -> list:
-    """The other values of the call behind the input shown (where there are two inputs), as comparisons of their
-    own, those nearest the compared one first: a slip inside a formula must give the student's whole result of
-    that call (the values they have right as well as the ones they have wrong), not only the one compared; two
-    slips that give the same compared value (a term left out, two arguments exchanged that put that term
-    elsewhere) differ there.  Where the student's call is another probe's, its values are those below the same
-    start of the reference's paths (``_prefix``)."""
-    if len(evidences) < 2:
+    """The other values of the call behind the input shown (where there are two inputs, or the one is ``alone``), as
+    comparisons of their own, those nearest the compared one first: a slip inside a formula must give the student's
+    whole result of that call (the values they have right as well as the ones they have wrong), not only the one
+    compared; two slips that give the same compared value (a term left out, two arguments exchanged that put that term
+    elsewhere) differ there.  Where the student's call is another probe's, its values are those below the same start of
+    the reference's paths (``_prefix``)."""
+    if len(evidences) < 2 and not (evidences and evidences[0].alone):
         return []
     first = evidences[0]
     source, student = first.source, first.student
@@ -508,7 +515,31 @@ def _at_sheet_digits(scene: Scene, first: Evidence) -> bool:
 
 def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     """The cause of a failing comparison (``evidences``: the input shown first); ``runs``: the run behind it is
-    explained too (False for the engine's own comparisons of a run's right-hand side)."""
+    explained too (False for the engine's own comparisons of a run's right-hand side).  Where the student's value
+    is derived from their results (no call of theirs holds it) and its expected value was traced to a call of the
+    reference that explains nothing (a total mass found equal to the module's constant the check passed), the call
+    the check judged is compared with the reference's, as for a value traced to no call (``judged``)."""
+    finding = _find(scene, evidences, runs)
+    first = evidences[0]
+    if (finding is None or not finding.names) and _derived(first):
+        trace.note("derived", traced=True)
+        try:
+            return judged(scene, first) or finding
+        except GraderFault:
+            if getattr(scene.ctx.oracle, "mode", "") == "kit":  # the key lacks that call: live may tell more
+                return _left_to_live(finding)
+            raise
+    return finding
+
+
+def _derived(evidence: Evidence) -> bool:
+    """A value the check derived from the student's results whose expected value is traced to a call: the student's
+    side to none, and no run or typed answer behind it."""
+    return evidence.source is not None and evidence.student is None and evidence.call is None \
+        and not evidence.typed and not is_run(evidence)
+
+
+def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     if evidences[0].typed:  # a value typed into answers.toml: the output grammar alone, on its one input
         found = typed_slips(evidences[0])
         trace.note("typed", shape=list(evidences[0].expected.shape), found=[h.name for h in found])

@@ -18,13 +18,13 @@ reason a check that tells a sign from what the value shows hears the exchanges o
 (``opposite_slips``, asked by ``diagnosis.rival``).  Last, where nothing else reproduced it, the module constants that
 the call reads, of the problem's own module and of the library (the modules of no problem), directly, through a
 function's default or a constant computed from them, are typed otherwise (``constant_mutants``: a number of one with the
-wrong sign, twice or half itself, ten or a thousand times or a tenth or a thousandth of itself (a decimal point
-misplaced, another unit), in degrees where radians belong (exactly, or rounded as a student types the degrees read off
-it: 0.35 as 20) or the reverse, an expression in it with its minus left out or given one (``np.cos(SLOPE)`` for
-``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two entries exchanged, a
-matrix written out row by row transposed; two constants of one module exchanged), each measured with the constants,
-defaults and imported names its module computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and
-``CONSTANT_MUTANTS``.
+wrong sign, twice or half itself, ten, a hundred or a thousand times or a tenth, a hundredth or a thousandth of itself
+(a decimal point misplaced, another unit), in degrees where radians belong (exactly, or rounded as a student types the
+degrees read off it: 0.35 as 20) or the reverse, an expression in it with its minus left out or given one
+(``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two
+entries exchanged, a matrix written out row by row transposed; two constants of one module exchanged), each measured
+with the constants, defaults and imported names its module computed from it bound again, within
+``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor missing (a
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
@@ -535,6 +535,8 @@ SLIPS = {
     "siblings": ("sibling_matrix", "`{f}` reads a matrix where its sibling belongs (one of a pair such as J_R and "
                                    "J_S)"),
     "single": ("float32", "`{f}` computes in single precision (float32) where numpy's float64 belongs"),
+    "integer": ("integer_truncated", "`{f}` converts values with an integer dtype (``dtype=int``) where floats "
+                                     "belong: every value is cut to a whole number"),
     "single_argument": ("float32", "`{f}` converts an argument to single precision (float32) before it uses it"),
     "short": ("rounded", "`{f}` uses a constant typed short (pi as 3.14, g as 9.8)"),
     "typed": ("rounded", "`{f}` uses a constant typed short (pi / 6 as 0.52, sqrt(1/3) as 0.577)"),
@@ -562,6 +564,10 @@ SLIPS = {
                                               "belongs (in another unit: mm for m, g for kg)"),
     "constant_thousandth": ("wrong_factor", "a number of the constant `{f}` is a thousandth of the one that belongs "
                                             "(in another unit: m for mm, kg for g)"),
+    "constant_hundredfold": ("wrong_factor", "a number of the constant `{f}` is a hundred times the one that belongs "
+                                             "(in another unit: cm for m)"),
+    "constant_hundredth": ("wrong_factor", "a number of the constant `{f}` is a hundredth of the one that belongs (in "
+                                           "another unit: m for cm)"),
     "constant_degrees": ("degrees", "a number of the constant `{f}` is an angle in degrees where radians belong"),
     "constant_radians": ("degrees", "a number of the constant `{f}` is an angle in radians where degrees belong"),
     "constant_root": ("wrong_factor", "a number of the constant `{f}` is the square root of the one that belongs"),
@@ -742,15 +748,21 @@ def _float32():
     return ast.Attribute(ast.Name("np", ast.Load()), "float32", ast.Load())
 
 
+def _integer():
+    return ast.Name("int", ast.Load())
+
+
 def _single_slips(node: ast.Call):
-    """A dtype of double precision given as single (``np.asarray(q, dtype=float)``, ``.astype(float)``)."""
-    for k, keyword in enumerate(node.keywords):
-        if keyword.arg == "dtype" and _double(keyword.value):
-            yield "single", lambda n, k=k: _with(n, keywords=[
-                ast.keyword("dtype", _float32()) if i == k else w for i, w in enumerate(n.keywords)])
-    if _callee(node) in ("astype", "array", "asarray") and node.args and _double(node.args[-1]) \
-            and len(node.args) == (1 if _callee(node) == "astype" else 2):
-        yield "single", lambda n: _with(n, args=n.args[:-1] + [_float32()])
+    """A dtype of double precision given as single (``np.asarray(q, dtype=float)``, ``.astype(float)``), or as an
+    integer (``dtype=int``: every value cut to a whole number)."""
+    for slip, dtype in (("single", _float32), ("integer", _integer)):
+        for k, keyword in enumerate(node.keywords):
+            if keyword.arg == "dtype" and _double(keyword.value):
+                yield slip, lambda n, k=k, dtype=dtype: _with(n, keywords=[
+                    ast.keyword("dtype", dtype()) if i == k else w for i, w in enumerate(n.keywords)])
+        if _callee(node) in ("astype", "array", "asarray") and node.args and _double(node.args[-1]) \
+                and len(node.args) == (1 if _callee(node) == "astype" else 2):
+            yield slip, lambda n, dtype=dtype: _with(n, args=n.args[:-1] + [dtype()])
 
 
 def _slips(node, parent):
@@ -2008,7 +2020,7 @@ def _mutated(function: _Function, lines: tuple):
                                     _keyword_slips(node, function.keywords),
                                     _frame_slips(node, names, function.attributes))
         for slip, edit in slips:
-            if guarded == ITERABLE and slip not in _EXCHANGES | {"single"}:
+            if guarded == ITERABLE and slip not in _EXCHANGES | {"single", "integer"}:
                 continue
             if slip == "kept_adding" and function.node.name == "__init__":
                 continue  # a constructor sets what its object keeps for the first time
@@ -3008,7 +3020,10 @@ def _constant_difference(evidences: list[Evidence]) -> bool:
 
 
 def _tried(evidences: list[Evidence]) -> bool:
-    return len(evidences) >= 2 and all(e.source is not None and e.got is not None for e in evidences)
+    """Whether the formula tier tries its slips: on two inputs, or on the one a value that does not change with
+    the call's arguments has (``Evidence.alone``: one input is all there is)."""
+    return bool(evidences) and (len(evidences) >= 2 or evidences[0].alone) \
+        and all(e.source is not None and e.got is not None for e in evidences)
 
 
 def left_to_live(scene, evidences: list[Evidence]) -> bool:
@@ -3444,7 +3459,8 @@ CONSTANT_MUTANTS = 300
 _NUMBER_SLIPS = (("constant_sign", -1.0), ("constant_doubled", 2.0), ("constant_halved", 0.5),
                  ("constant_degrees", 180.0 / np.pi), ("constant_radians", np.pi / 180.0),
                  ("constant_tenfold", 10.0), ("constant_tenth", 0.1), ("constant_thousandfold", 1000.0),
-                 ("constant_thousandth", 1e-3), ("constant_root", None), ("constant_square", None))
+                 ("constant_thousandth", 1e-3), ("constant_hundredfold", 100.0), ("constant_hundredth", 0.01),
+                 ("constant_root", None), ("constant_square", None))
 #: the entries of a list or tuple of a constant, at most, whose pairs are exchanged
 _TABLE = 6
 #: a constant that is a run's start, by the course's names (``A_IC0``, ``ANGLES0``, ``Q0``, ``X_START``,

@@ -1,13 +1,14 @@
 """The formula tier on module constants (``grader.diagnosis.mutants``: ``constant_mutants``): the data a student
 types from the sheet into the constants of a problem's module or of the library (lengths, masses, gains, gravity)
-may be typed otherwise (a number's sign, a factor 2, ten or a thousand, degrees for radians, a square root, an
-entry of a table exchanged or written 0, a matrix written out transposed, two constants exchanged); those slips are
-tried after every slip of the code, where none reproduced the student's value.
+may be typed otherwise (a number's sign, a factor 2, ten, a hundred or a thousand, degrees for radians, a square
+root, an entry of a table exchanged or written 0, a matrix written out transposed, two constants exchanged); those
+slips are tried after every slip of the code, where none reproduced the student's value.
 
 The test plants a mistake into a copy of the reference and asks the tier on two inputs, as
 ``tests/engine/test_mutants.py`` does: the library's gravity typed a tenth of itself reaches problem 24's triple
-pendulum through the name its module imports and the constant it computes from it (``I_GRAV``).  The near miss is
-the gravity three times itself, which no slip of typing gives: nothing is named.  A joint frame's rotation of
+pendulum through the name its module imports and the constant it computes from it (``I_GRAV``), and so does the
+gravity typed in centimetres per second squared (981).  The near miss is the gravity three times itself, which no
+slip of typing gives: nothing is named.  A joint frame's rotation of
 problem 32's table typed with its rows as columns is a transpose; with two rows changed otherwise, it is none.
 
 A run's start (``A_IC0``, ``ANGLES0``: ``mutants._START``) written whole as a plain value, the identity or zeros, is
@@ -60,6 +61,13 @@ def test_a_library_constant_typed_otherwise_is_named(tmp_path):
     found = pendulum_slips(tmp_path, "GRAVITY = 0.981")
     assert {h.name for h in found} == {"wrong_factor"}, [(h.name, h.detail) for h in found]
     assert any("`GRAVITY` is a tenth" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_library_constant_typed_in_centimetres_is_named(tmp_path):
+    found = pendulum_slips(tmp_path, "GRAVITY = 981.0")
+    assert {h.name for h in found} == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+    assert any("`GRAVITY` is a hundred times" in h.detail and "cm for m" in h.detail for h in found), \
+        [h.detail for h in found]
 
 
 def test_a_constant_off_by_a_factor_no_typing_gives_names_nothing(tmp_path):

@@ -1,6 +1,8 @@
 """The formula tier's slips of precision (``grader.diagnosis.mutants``: ``PRECISION_SLIPS``): a dtype of double
 precision given as single, an argument converted to float32 at a function's start, a constant typed short (pi as
-3.14, 9.81 as 9.8), and an expression of numbers or a module's constant typed short (``TYPED_DECIMALS``).
+3.14, 9.81 as 9.8), and an expression of numbers or a module's constant typed short (``TYPED_DECIMALS``).  A dtype of
+double precision given as an integer cuts every value to a whole number: far outside the band of precision, it is
+tried among the other slips of the code (``integer_truncated``).
 
 Each is a mistake planted into a copy of the reference (or of a made-up problem) that the tier names, and a near
 miss it must not name: a value in the band of precision that no slip of precision reproduces, a constant typed so
@@ -46,6 +48,26 @@ def planted_slips(tmp_path, check_id, file, old, new, probe, inputs, path):
 
 
 # ------------------------------------------------------------------------------------------ on the reference
+
+
+def test_values_converted_with_an_integer_dtype_are_named_cut_to_whole_numbers(tmp_path):
+    """Problem 39's inertia converted with ``dtype=int``: its entries cut to whole numbers, far off the expected
+    forces, on two inputs whose products of inertia (the entries the forces read) are no whole numbers above 1 (cut,
+    they are not written 0)."""
+    student = planted_package(tmp_path, "problem_39.py", "moment = np.cross(w, np.asarray(I2, dtype=float) @ w)",
+                              "moment = np.cross(w, np.asarray(I2, dtype=int) @ w)")
+    try:
+        tilted = np.array([[4.0, 1.3, 2.7], [1.3, 5.0, 0.4], [2.7, 0.4, 6.0]])  # products of inertia above 1
+        inputs = [(tilted, 10.0, 5.0, 9.81, 0.8), (1.7 * tilted, 7.0, 3.0, 9.81, 1.2)]
+        evidences = [evidence("problem_39.bearing_forces", args, (0,), student) for args in inputs]
+        assert all(not np.allclose(e.got, e.expected, rtol=1e-2) for e in evidences)
+        found = mutants.mutant_slips(scene("p39.bearing_forces"), evidences)
+    finally:
+        drop_private(student)
+    assert named(found) == {"integer_truncated"}, [(h.name, h.detail) for h in found]
+    assert any("`bearing_forces` converts values with an integer dtype" in h.detail for h in found)
+    assert DIAGNOSES["integer_truncated"].family == "precision"
+
 
 
 def test_a_product_in_single_precision_is_named_float32(tmp_path):

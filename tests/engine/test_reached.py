@@ -2,8 +2,10 @@
 
 * ``tests/engine/reach.toml``: a slip of precision inside a formula (``grader.diagnosis.mutants``), a whole value in
   other units (1000 or 1/1000 times the expected one: a mass in grams; ``grader.diagnosis.grammar``), the state at an
-  event read from the run's last output before it (``grader.diagnosis.runs``); near misses: a factor 100, a value off
-  by a relative 3e-7, the state two outputs before the event.
+  event read from the run's last output before it (``grader.diagnosis.runs``), a module's constant typed in other
+  units where the value compared does not change with the call's arguments (one input is all there is); near misses:
+  a factor 100 of a whole inertia, a value off by a relative 3e-7, the state two outputs before the event, the
+  constant at another value.
 * ``tests/engine/operators.toml``: the formula tier's operators (``grader.diagnosis.mutants``): a name bound to a sine
   read as the cosine of its angle, an entry of a matrix written 0, a solve that divides by the matrix's diagonal alone;
   near misses: the sine of twice the angle, the entry a tenth of its value, a division by the trace.
