@@ -597,10 +597,13 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
         return _from_results(scene, evidences)
     decl = declaration(first.source.probe)
     constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
+    stepped = _stepped(decl)
     if len(evidences) == 1 and not (decl is not None and decl.motion):
         second = _second_input(scene, first)
         if second is not None:
             evidences = [first, second]
+    elif len(evidences) == 1 and stepped:
+        first.alone = True  # a run of the student's own steps from the one start asked: its other states say more
     trace.note("inputs", count=len(evidences), declared=decl is not None,
                motion=bool(decl is not None and decl.motion), found_so_far=[h.name for h in found])
     inputs = [_predict(scene, e, constants) for e in evidences]
@@ -615,7 +618,7 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     explained = any(tiers)
     unreached = []
     tiers.append(_heard(lambda: _ignored(scene, evidences, unreached), explained, "ignored"))
-    if not (decl is not None and decl.motion):  # slips inside a formula: the last tier
+    if not (decl is not None and decl.motion) or stepped:  # slips inside a formula: the last tier
         told = {DIAGNOSES[h.name].family for tier in tiers for h in tier} if any(tiers) else None
         untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
@@ -628,6 +631,13 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)
     return _told(_beside(tiers), _where(evidences))
+
+
+def _stepped(decl: Declaration | None) -> bool:
+    """A run counted in steps (``"time": "step"``): the student's own step function called again and again, with no
+    solver between it and the states, so that a slip inside it gives the run exactly, as a formula's slip gives a
+    value; the formula tier tries its slips on the run's states."""
+    return decl is not None and bool(decl.motion) and decl.motion.get("time") == "step"
 
 
 def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:

@@ -34,6 +34,8 @@ __all__ = [
     "at",
     "array_of",
     "within",
+    "REPRODUCED_RTOL",
+    "reproduces",
     "distinct",
     "ONE_INPUT_NUMBERS",
     "numbers_told",
@@ -504,6 +506,21 @@ def array_of(value):
 
 def within(got, value, tol: Tol) -> bool:
     return got.shape == value.shape and bool(np.all(np.abs(got - value) <= tol.atol + tol.rtol * np.abs(value)))
+
+
+#: the relative difference within which two values are one computation's (the same operations, in another order),
+#: whatever the check's tolerance: a run that grows far past the size its absolute tolerance was set for (a step that
+#: does not scale a term by the step) is still reproduced by the slip that makes it
+REPRODUCED_RTOL = 1e-9
+
+
+def reproduces(got, value, tol: Tol) -> bool:
+    """``value`` gives the student's ``got``: within the comparison's tolerance, or within ``REPRODUCED_RTOL`` of
+    the larger of the two, entry by entry."""
+    if within(got, value, tol):
+        return True
+    return got.shape == value.shape and bool(np.all(np.isfinite(got))) and bool(np.all(
+        np.abs(got - value) <= REPRODUCED_RTOL * np.maximum(np.abs(got), np.abs(value))))
 
 
 def distinct(value, expected, tol: Tol) -> bool:

@@ -166,7 +166,7 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, Source, within
+from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, reproduces, Source, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
@@ -2871,7 +2871,7 @@ def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = Fals
     values, replies = [], {}
     for index, (evidence, call) in enumerate(zip(inputs, calls)):
         value = _value(package, evidence, call, quick, replies)
-        if value is None or not within(evidence.got, value, evidence.tol):
+        if value is None or not reproduces(evidence.got, value, evidence.tol):
             if misses is not None:
                 misses.append(index)
             return None

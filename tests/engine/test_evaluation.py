@@ -10,6 +10,9 @@ how cheaply it is found.
 * The declaration holds on the reference: every probe that declares a part gives the part's values at its keys.
 * The arguments of one input are copied for each call of a mutant (a mutant may change them in place) from one
   kept copy.
+* A mutant's value reproduces the student's within the comparison's tolerance, or within a relative 1e-9
+  (``evidence.REPRODUCED_RTOL``): a run that grows far past the size an absolute tolerance was set for is the same
+  computation still; a value off by more, or not finite, is not reproduced.
 """
 
 from __future__ import annotations
@@ -26,7 +29,7 @@ import probes
 from checks._diagnoses import DIAGNOSES
 from grader.checking import Tol
 from grader.diagnosis import mutants
-from grader.diagnosis.evidence import Evidence, Source, array_of, at, declaration
+from grader.diagnosis.evidence import Evidence, Source, array_of, at, declaration, reproduces, within
 from probes._codec import decode, encode
 
 from .stand_ins import made_up_package
@@ -229,3 +232,16 @@ def test_the_live_reference_is_asked_for_the_declared_part(monkeypatch):
     kit = Scene(SimpleNamespace(oracle=oracle, check_id="p97.halve"))
     assert np.array_equal(kit.reference_at("made_up.whole", (3.0, 1.0, True), ("d",)), [1.0, 3.0])
     assert asked == ["part", "whole", "whole"]
+
+
+def test_a_value_grown_past_an_absolute_tolerance_is_reproduced_to_its_relative_digits():
+    sheet = Tol("sheet, 4 decimals", 6e-4)
+    grown = np.array([3.2e15, -1.7e14, 5.0e-3])
+    same = grown * (1.0 + np.array([4e-14, -2e-13, 0.0]))  # the same steps summed in another order
+    assert not within(grown, same, sheet) and reproduces(grown, same, sheet)
+    assert not reproduces(grown, grown * (1.0 + 1e-6), sheet)
+    assert not reproduces(grown, grown[::-1], sheet)
+    diverged = np.array([np.nan, 1.0, 2.0])
+    assert not reproduces(diverged, diverged.copy(), sheet)
+    small = np.array([0.1, 0.2, 0.3])
+    assert reproduces(small, small + 5e-4, sheet) and not reproduces(small, small + 1e-3, sheet)
