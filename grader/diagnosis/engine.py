@@ -211,8 +211,8 @@ DRAW_ATTEMPTS = 3
 def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
     """``(args, root)``: the first of the engine's draws of a second input for ``source``'s call (``second_args``)
     on which the reference gives a usable value at ``source.path`` (``expected``: the value of the input shown),
-    or None: nothing to draw, no usable draw, or a value that does not change with the arguments (a second input
-    would tell nothing).  In the student kit a draw whose value the key does not hold ends the explanation (a
+    ``ALONE`` where there is nothing to draw or the value does not change with the arguments (a second input would
+    tell nothing), or None where no draw is usable.  In the student kit a draw whose value the key does not hold ends the explanation (a
     grader fault), as every other call the key lacks."""
     decl = declaration(source.probe)
     seed = scene.draw_seed(source)
@@ -221,7 +221,7 @@ def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
         args = second_args(decl, tuple(source.args), seed, attempt)
         if args is None:
             trace.note("second", reason="nothing to draw")
-            return None
+            return ALONE
         try:
             root = scene.reference(source.probe, args)
         except GraderFault as exc:
@@ -235,7 +235,7 @@ def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
             continue
         if not distinct(value, expected, tol):
             trace.note("second", reason="the value does not change with the arguments")
-            return FIXED
+            return ALONE
         return args, root
     trace.note("second", reason="no usable draw")
     if fault is not None and getattr(scene.ctx.oracle, "mode", "") == "kit":
@@ -243,8 +243,9 @@ def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
     return None
 
 
-#: what ``_drawn`` gives for a value that does not change with the call's arguments
-FIXED = "fixed"
+#: what ``_drawn`` gives where one input is all there is: the call has no arguments to draw, or its value does not
+#: change with them
+ALONE = "alone"
 
 
 def _vanishes(value: np.ndarray, expected: np.ndarray, tol: Tol) -> bool:
@@ -257,17 +258,17 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
     """The same comparison on an input the engine draws (``_drawn``: the probe's declared angles, vectors,
     rotations and scalars drawn anew, or every float of its arguments varied; where that draws nothing, the
     module's constants the probes declare drawn anew, ``rebound_input``): the student's value there and the
-    reference's, or None.  Where the value does not change with the arguments and no constant is drawn anew, the
-    evidence is marked ``alone``: its one input is all there is."""
+    reference's, or None.  Where the call has no arguments to draw or its value does not change with them, and no
+    constant is drawn anew, the evidence is marked ``alone``: its one input is all there is."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or evidence.motion:
         return None
     if source.probe == REBOUND or source.probe != student.probe or not _equal_args(source.args, student.args):
         return rebound_input(scene, evidence)
     drawn = _drawn(scene, source, evidence.expected, evidence.tol)
-    if drawn is None or drawn is FIXED:
+    if drawn is None or drawn is ALONE:
         second = rebound_input(scene, evidence)
-        evidence.alone = second is None and drawn is FIXED
+        evidence.alone = second is None and drawn is ALONE
         return second
     args, expected_root = drawn
     return evidence_at(scene, evidence, Source(source.probe, tuple(args), source.path, expected_root),
@@ -1185,6 +1186,7 @@ def prepare(ctx, source: Source, tol: Tol | None = None) -> None:
             root = source.root if source.root is not None else ask(source.probe, source.args)
             expected = array_of(at(root, source.path))
             drawn = None if expected is None else _drawn(scene, source, expected, tol or SECOND_TOL)
+            drawn = None if drawn is ALONE else drawn
             if drawn is not None:
                 for args in perturbations(decl, drawn[0]):
                     ask(source.probe, args)

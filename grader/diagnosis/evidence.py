@@ -141,8 +141,9 @@ class Evidence:
     #: a value typed into answers.toml compared with its key (``typed_slips``): no call stands behind either side,
     #: and the one input there is tells a slip only where the answer holds many numbers
     typed: bool = False
-    #: the value does not change with the call's arguments (a tree built from a module's constants): the one input
-    #: shown is all there is, and the formula tier tries its slips there, with the call's other values
+    #: the call has no arguments to draw, or its value does not change with them (a tree built from a module's
+    #: constants), or it is a run of the student's own steps: the one input shown is all there is, and the formula
+    #: tier tries its slips there, with the call's other values
     alone: bool = False
 
 

@@ -160,11 +160,12 @@ def test_a_later_tier_out_of_budget_leaves_the_earlier_finding_standing():
 
 #: problem 12's body with the skew matrix of omega transposed in the rotation's update: the body turns the other way,
 #: the final A_IB is the transpose of the reference's (a skew matrix transposed is its negative, a rotation
-#: transposed the rotation backwards)
+#: transposed the rotation backwards); the formula tier, on the run's steps, finds the sign of the step's skew
+#: matrix too
 SKEW_TRANSPOSED = Planted(
     name="alternatives-p12-omega-skew-transposed", problem=12, file="rigid_body.py",
     old="I_Om = skew(self.A_IB @ self.B_omega_B)", new="I_Om = skew(self.A_IB @ self.B_omega_B).T",
-    check="p12.sheet_cases", diagnosis="transpose or angle_sign",
+    check="p12.sheet_cases", diagnosis="transpose or angle_sign or sign_flip",
     message="a rotation transposed is the rotation the other way", also=("p12.wheel",))
 
 #: problem 8's exponential step with dt left out: dt does not change the student's value (the test of an ignored

@@ -41,11 +41,12 @@ STANCE_LENGTH_SIGN = Planted(
     check="p25.sheet_values", diagnosis="sign_flip", message="on the input shown and on a second one",
     also=("p25.walker_random",))
 #: problem 12's body turned backwards each step: the sheet's final A_IB is the transpose of the reference's (the
-#: rotation of the negated angle: both told)
+#: rotation of the negated angle: both told), and the formula tier, on the run's steps, finds the step's sign
 ROTATION_BACKWARDS = Planted(
     name="located-p12-rotation-backwards", problem=12, file="rigid_body.py",
     old="self.A_IB = expm_skew(dt * I_Om) @ self.A_IB", new="self.A_IB = expm_skew(-dt * I_Om) @ self.A_IB",
-    check="p12.sheet_cases", diagnosis="transpose or angle_sign", message="transpose", also=("p12.wheel",))
+    check="p12.sheet_cases", diagnosis="transpose or angle_sign or sign_flip", message="transpose",
+    also=("p12.wheel",))
 
 MISTAKES = [SYMBOLIC_ENTRY_SIGN, STANCE_LENGTH_SIGN, ROTATION_BACKWARDS]
 
