@@ -990,10 +990,16 @@ def judged_call(log, evidence: Evidence | None) -> Source | None:
     return None
 
 
+#: the probe by which the grader calls a student's function of an earlier problem to judge a value on what the
+#: reference's code makes of it (``grader.upstream``): a question of the grader's, not the check's of the student
+UPSTREAM_PROBE = "_upstream.call"
+
+
 def _judgeable(probe) -> bool:
     """A probe whose call the engine may compare with the reference's: one it knows by name (``probes``), not a
-    run's (whose comparison is the checks' own)."""
-    if not isinstance(probe, str):
+    run's (whose comparison is the checks' own), nor the grader's own call of an earlier problem's function
+    (``UPSTREAM_PROBE``)."""
+    if not isinstance(probe, str) or probe == UPSTREAM_PROBE:
         return False
     decl = declaration(probe)
     if decl is None:

@@ -128,6 +128,18 @@ def test_a_failure_that_names_a_cause_is_not_asked(monkeypatch):
     assert judged_call([("student", "stub_judged.run", (1.0,), np.zeros(3))], None) is None
 
 
+def test_the_graders_own_call_of_an_earlier_problems_function_is_never_the_call_judged(monkeypatch):
+    """A check that judges its value on what the reference's code makes of the student's earlier functions calls
+    them last (``_upstream.call``): the call judged is the student's answer to the check, before them."""
+    monkeypatch.setitem(engine.DECLARATIONS, "stub_judged.answer", Declaration())
+    log = [("student", "stub_judged.answer", (0.4,), np.ones(3)),
+           ("reference", "_upstream.call", ("problem_06", "R1", [0.4]), np.eye(3)),
+           ("student", "_upstream.call", ("problem_06", "R1", [0.4]), np.eye(3))]
+    judged = judged_call(log, None)
+    assert judged is not None and judged.probe == "stub_judged.answer" and judged.args == (0.4,)
+    assert judged_call(log[1:], None) is None
+
+
 # ------------------------------------------------------------------------------------------ a shown input that raised
 
 
