@@ -22,9 +22,9 @@ wrong sign, twice or half itself, ten, a hundred or a thousand times or a tenth,
 (a decimal point misplaced, another unit), in degrees where radians belong (exactly, or rounded as a student types the
 degrees read off it: 0.35 as 20) or the reverse, an expression in it with its minus left out or given one
 (``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two
-entries exchanged, a matrix written out row by row transposed; two constants of one module exchanged), each measured
-with the constants, defaults and imported names its module computed from it bound again, within
-``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
+entries exchanged, a matrix written out row by row transposed, a vector written as its direction alone; two constants
+of one module exchanged), each measured with the constants, defaults and imported names its module computed from it
+bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor missing (a
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
@@ -572,6 +572,8 @@ SLIPS = {
     "constant_radians": ("degrees", "a number of the constant `{f}` is an angle in radians where degrees belong"),
     "constant_root": ("wrong_factor", "a number of the constant `{f}` is the square root of the one that belongs"),
     "constant_square": ("wrong_factor", "a number of the constant `{f}` is the square of the one that belongs"),
+    "constant_direction": ("wrong_factor", "the vector constant `{f}` is written as its direction alone (divided by "
+                                           "its length: gravity as a unit vector)"),
     "constant_entries": ("swapped", "two entries of the constant `{f}` are exchanged"),
     "constant_zeroed": ("missing_term", "an entry of the constant `{f}` is left out (written 0)"),
     "constant_converted_back": ("degrees", "the constant `{f}` is converted the wrong way (rad2deg where deg2rad "
@@ -3666,6 +3668,16 @@ def _start_slips(value) -> list:
     return slips
 
 
+def _direction_slips(value) -> list:
+    """``(slip, value)`` of a vector constant written as its direction alone (divided by its length: gravity as the
+    unit vector (0, -1, 0)), where its length is not 1."""
+    array = np.asarray(value, dtype=float)
+    length = float(np.linalg.norm(array)) if array.ndim == 1 and 2 <= array.size <= 3 else 0.0
+    if length == 0.0 or not np.isfinite(length) or abs(length - 1.0) < 1e-9:
+        return []
+    return [("constant_direction", array / length)]
+
+
 def _whole_starts_first(kept: list) -> list:
     """The kept slips of the constants, but those of a start of which a slip writing it whole as a plain value
     (zeros, the identity) is kept: its numbers typed otherwise (an angle a thousandth of its value, a turn of
@@ -3704,6 +3716,7 @@ def constant_mutants(package, root: str, problem: int, ran: set) -> list[Mutant]
         values[(stem, name)] = vars(module)[name]
         start = bool(_START.match(name))
         slips = _start_slips(values[(stem, name)]) if start else []
+        slips += _direction_slips(values[(stem, name)])
         for slip, index, replacement in _number_slips(expression):
             try:
                 slips.append((slip, _value_of(_replaced(expression, index, replacement), module)))

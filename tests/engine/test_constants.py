@@ -1,8 +1,9 @@
 """The formula tier on module constants (``grader.diagnosis.mutants``: ``constant_mutants``): the data a student
 types from the sheet into the constants of a problem's module or of the library (lengths, masses, gains, gravity)
 may be typed otherwise (a number's sign, a factor 2, ten, a hundred or a thousand, degrees for radians, a square
-root, an entry of a table exchanged or written 0, a matrix written out transposed, two constants exchanged); those
-slips are tried after every slip of the code, where none reproduced the student's value.
+root, an entry of a table exchanged or written 0, a matrix written out transposed, a vector written as its
+direction alone, two constants exchanged); those slips are tried after every slip of the code, where none reproduced
+the student's value.
 
 The test plants a mistake into a copy of the reference and asks the tier on two inputs, as
 ``tests/engine/test_mutants.py`` does: the library's gravity typed a tenth of itself reaches problem 24's triple
@@ -68,6 +69,24 @@ def test_a_library_constant_typed_in_centimetres_is_named(tmp_path):
     assert {h.name for h in found} == {"wrong_factor"}, [(h.name, h.detail) for h in found]
     assert any("`GRAVITY` is a hundred times" in h.detail and "cm for m" in h.detail for h in found), \
         [h.detail for h in found]
+
+
+def torque_slips(tmp_path, new: str):
+    """The tier on problem 32's torques that hold the arm against gravity, with its gravity constant written as
+    ``new``."""
+    return planted_slips(tmp_path, "problem_32.py", "I_GRAV = np.array([0.0, -GRAVITY, 0.0])", new,
+                         "problem_32.torques", [([[0.3, -0.6, 0.9]],), ([[-0.8, 0.4, 1.3]],)], (0,),
+                         "p32.gravity_trajectory")
+
+
+def test_a_vector_constant_written_as_its_direction_is_named(tmp_path):
+    found = torque_slips(tmp_path, "I_GRAV = np.array([0.0, -1.0, 0.0])")
+    assert {h.name for h in found} == {"wrong_factor"}, [(h.name, h.detail) for h in found]
+    assert any("`I_GRAV` is written as its direction alone" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_vector_constant_turned_is_no_direction(tmp_path):
+    assert "wrong_factor" not in {h.name for h in torque_slips(tmp_path, "I_GRAV = np.array([0.0, -9.81, 1.0])")}
 
 
 def test_a_constant_off_by_a_factor_no_typing_gives_names_nothing(tmp_path):
