@@ -233,6 +233,34 @@ def test_a_value_that_does_not_change_with_the_arguments_gets_no_second_input(dr
     assert len(oracle.asked) == 2  # the input shown, and one draw
 
 
+def test_one_input_is_all_there_is_where_the_value_does_not_change_or_nothing_is_drawn(draws_only, monkeypatch):
+    """Where a drawn input gives the same value, or there is nothing to draw, the input shown is marked ``alone``:
+    the formula tier tries its slips there (its evidences say so); a value a drawn input changes is not alone, and
+    neither is one on which no draw was usable (the reference raised on every draw)."""
+    from grader.diagnosis import engine as explaining
+
+    asked = []
+    monkeypatch.setattr(explaining, "mutant_slips", lambda scene, evidences, *rest: asked.append(evidences) or [])
+
+    def alone_after(student, **case):
+        asked.clear()
+        explain_case(student, **case)
+        return [e.alone for e in asked[0][:1]] if asked else None
+
+    constant = np.array([[1.0, 2.0], [3.0, 4.0]])
+    assert alone_after(lambda body, gamma: constant + 0.7, reference=lambda body, gamma: constant) == [True]
+    assert alone_after(lambda body, gamma: pose(body, gamma) + 0.7) == [False]
+
+    def refusing(body, gamma):
+        if not _same((body, gamma), SHOWN):
+            raise GraderFault("the reference failed on the drawn input")
+        return pose(body, gamma)
+
+    assert alone_after(lambda body, gamma: pose(body, gamma) + 0.7, reference=refusing) == [False]
+    monkeypatch.setattr(explaining, "second_args", lambda *args: None)  # nothing to draw
+    assert alone_after(lambda body, gamma: pose(body, gamma) + 0.7) == [True]
+
+
 def test_in_the_kit_a_draw_the_key_does_not_hold_names_nothing():
     """The key holds the input shown only: the kit cannot judge a second input, and names no cause rather than
     one judged on a single input."""
