@@ -532,6 +532,10 @@ SLIPS = {
                                                     "point"),
     "minuend": ("missing_term", "the first term of a difference in `{f}` is left out"),
     "unit": ("missing_factor", "`{f}` leaves one of its arguments out of every product it is a factor of"),
+    "step_unit": ("step_left_out", "`{f}` leaves its step out of every product it is a factor of: each update takes "
+                                   "a whole unit of time where one step belongs"),
+    "step_left_out": ("step_left_out", "the step is left out of a product in `{f}`: the update takes a whole unit of "
+                                       "time where one step belongs"),
     "siblings": ("sibling_matrix", "`{f}` reads a matrix where its sibling belongs (one of a pair such as J_R and "
                                    "J_S)"),
     "single": ("float32", "`{f}` computes in single precision (float32) where numpy's float64 belongs"),
@@ -692,14 +696,21 @@ def _np_round(node, decimals: int):
     return ast.Call(ast.Attribute(numpy, "round", ast.Load()), [node, ast.Constant(decimals)], [])
 
 
+#: the names of an integration's step, by the course's notation (``dt``, ``h``, ``self.dt``, ``time_step``)
+_STEP = re.compile(r"^(?:dt|h|step|time_step|delta_t|d_t)$")
+
+
 def _dropped(operand) -> str:
     """The slip of a factor left out of a product: a number, the identity matrix (``(r @ r) * np.eye(3)`` as
-    ``r @ r``: the number is added to every entry, not to the diagonal alone), a rotation (a frame slip) or another
-    factor."""
+    ``r @ r``: the number is added to every entry, not to the diagonal alone), a rotation (a frame slip), the step
+    of an integration (``expm_skew(I_Om)`` for ``expm_skew(dt * I_Om)``: a whole unit of time taken for a step) or
+    another factor."""
     if _number(operand) or (isinstance(operand, ast.UnaryOp) and _number(operand.operand)):
         return "number"
     if isinstance(operand, ast.Call) and _callee(operand) in ("eye", "identity"):
         return "identity_left_out"
+    if isinstance(operand, (ast.Name, ast.Attribute)) and _STEP.match(_label(operand) or "-"):
+        return "step_left_out"
     return "rotation" if _ROTATION.match(_label(operand) or "-") else "factor"
 
 
@@ -1745,7 +1756,7 @@ def _parameter_slips(function: ast.FunctionDef, lines: tuple):
     for i, j in _pairs(len(names)):
         yield "parameters", ("names", names[i], names[j])
     for name in _factors_only(function, lines, names):
-        yield "unit", ("unit", name)
+        yield "step_unit" if _STEP.match(name) else "unit", ("unit", name)
     for name in names:
         if _SINGLE.match(name):
             yield "single_argument", ("single", name)

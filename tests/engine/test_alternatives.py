@@ -169,12 +169,13 @@ SKEW_TRANSPOSED = Planted(
     message="a rotation transposed is the rotation the other way", also=("p12.wheel",))
 
 #: problem 8's exponential step with dt left out: dt does not change the student's value (the test of an ignored
-#: argument), and the formula tier reproduces it with a factor left out: two tiers, two families, both told
+#: argument), and the formula tier reproduces it with the step left out of the product: two tiers, two families,
+#: both told
 STEP_WITHOUT_DT = Planted(
     name="alternatives-p08-exponential-step-without-dt", problem=8, file="problem_08.py",
     old="return expm_skew(dt * skew(I_omega)) @ np.asarray(A_IC, dtype=float)",
     new="return expm_skew(skew(I_omega)) @ np.asarray(A_IC, dtype=float)",
-    check="p08.exponential_step", diagnosis="ignored_argument or missing_factor", message="Could be ",
+    check="p08.exponential_step", diagnosis="ignored_argument or step_left_out", message="Could be ",
     also=("p08.part_c",))
 #: near miss: the step taken twice as long: only the inputs' tier reproduces it (dt at twice its value), and the
 #: formula tier, heard, adds nothing: one family, "looks like"
