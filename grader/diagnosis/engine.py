@@ -209,11 +209,11 @@ DRAW_ATTEMPTS = 3
 
 
 def _drawn(scene: Scene, source: Source, expected: np.ndarray, tol: Tol):
-    """``(args, root)``: the first of the engine's draws of a second input for ``source``'s call (``second_args``)
-    on which the reference gives a usable value at ``source.path`` (``expected``: the value of the input shown),
-    ``ALONE`` where there is nothing to draw or the value does not change with the arguments (a second input would
-    tell nothing), or None where no draw is usable.  In the student kit a draw whose value the key does not hold ends the explanation (a
-    grader fault), as every other call the key lacks."""
+    """``(args, root)``: the first of the engine's draws of a second input for ``source``'s call (``second_args``) on
+    which the reference gives a usable value at ``source.path`` (``expected``: the value of the input shown), ``ALONE``
+    where there is nothing to draw or the value does not change with the arguments (a second input would tell nothing),
+    or None where no draw is usable.  In the student kit a draw whose value the key does not hold ends the explanation
+    (a grader fault), as every other call the key lacks."""
     decl = declaration(source.probe)
     seed = scene.draw_seed(source)
     fault = None
