@@ -75,7 +75,9 @@ The grammar:
 * formulas: a declared term missing, sign-flipped or added (``terms``: the reference splits its result into named
   terms), found by least squares over the inputs; and ``mutants``' slips inside the reference's own code, among
   them slips of precision (float32, a constant typed short), tried on one input too where the value is within
-  their band;
+  their band; where one input is all there is (``Evidence.alone``: the call has no arguments to draw, its value
+  does not change with them, or it is a run counted in steps, the student's own step called again and again), all
+  of them are tried there, held to the call's other values (the run's other states) as well;
 * motions (``motion``: a run's times, states and events): a time shift, an output grid one sample off (as many times as
   asked, spaced as a grid of one more or one fewer), a constant offset, a state read from the wrong row (of the run, or
   of the state at an event: another of its rows, or a slice of the whole state there from another start, where the event
