@@ -332,6 +332,8 @@ _TABLE = (
        "measured a position from the origin instead of from its point"),
     _D("step_size", "step_size", "an integration error that grows with the step (a step too large)",
        "integrated with a step too large"),
+    _D("step_typed", "step_size", "a step or a count of steps typed otherwise (the run takes steps of another size)",
+       "typed the step or the number of steps otherwise"),
     _D("step_left_out", "step_size", "the step left out of an update (a whole unit of time taken for one step)",
        "left the step out of an update"),
     _D("output_step", "step_size", "an output step too long (every m-th output time alone)",

@@ -572,6 +572,9 @@ SLIPS = {
                                              "(in another unit: cm for m)"),
     "constant_hundredth": ("wrong_factor", "a number of the constant `{f}` is a hundredth of the one that belongs (in "
                                            "another unit: m for cm)"),
+    "constant_step": ("step_typed", "the constant `{f}`, a step or a count of steps, is typed otherwise (a factor 2, "
+                                    "10, 100 or 1000 off, or its square root or square): the run takes steps of "
+                                    "another size"),
     "constant_degrees": ("degrees", "a number of the constant `{f}` is an angle in degrees where radians belong"),
     "constant_radians": ("degrees", "a number of the constant `{f}` is an angle in radians where degrees belong"),
     "constant_root": ("wrong_factor", "a number of the constant `{f}` is the square root of the one that belongs"),
@@ -3474,6 +3477,17 @@ _NUMBER_SLIPS = (("constant_sign", -1.0), ("constant_doubled", 2.0), ("constant_
                  ("constant_tenfold", 10.0), ("constant_tenth", 0.1), ("constant_thousandfold", 1000.0),
                  ("constant_thousandth", 1e-3), ("constant_hundredfold", 100.0), ("constant_hundredth", 0.01),
                  ("constant_root", None), ("constant_square", None))
+#: the number slips that change a constant's size (a factor 2, 10, 100 or 1000 or its reciprocal, a square root, a
+#: square)
+_RESIZINGS = frozenset({"constant_doubled", "constant_halved", "constant_tenfold", "constant_tenth",
+                        "constant_hundredfold", "constant_hundredth", "constant_thousandfold", "constant_thousandth",
+                        "constant_root", "constant_square"})
+#: a constant that is an integration's step or its count of steps, by the course's names (``DT``, ``H``, ``N_STEPS``,
+#: ``STEPS``, ``WHEEL_DT``): scaled, the run takes steps of another size
+_STEP_CONSTANT = re.compile(r"^(?:\w+_)?(?:DT|H|STEP|STEPS|N_STEPS|STEP_SIZE|TIME_STEP)$")
+#: the number slips an integer is not typed with (it has no decimal point to misplace by more than a digit, and no
+#: unit): a count of steps a hundred or a thousand times itself, or squared, would also cost as many steps again
+_UNCOUNTED = frozenset({"constant_hundredfold", "constant_thousandfold", "constant_square"})
 #: the entries of a list or tuple of a constant, at most, whose pairs are exchanged
 _TABLE = 6
 #: a constant that is a run's start, by the course's names (``A_IC0``, ``ANGLES0``, ``Q0``, ``X_START``,
@@ -3627,10 +3641,11 @@ def _degrees_typed(degrees: float) -> list:
 
 
 def _number_slips(expression):
-    """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``), each entry of
-    a list or tuple of it written 0, each two entries of one exchanged, a matrix of it written out row by row
-    (``_written_out``) transposed, a conversion of an angle the other way (``_BACK``), and an expression of numbers
-    in it that is not one number (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
+    """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``; an integer that the
+    slip keeps whole stays an integer, a count of steps that ``range`` takes), each entry of a list or tuple of it
+    written 0, each two entries of one exchanged, a matrix of it written out row by row (``_written_out``) transposed, a
+    conversion of an angle the other way (``_BACK``), and an expression of numbers in it that is not one number
+    (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
     parents = {id(child): node for node in ast.walk(expression) for child in ast.iter_child_nodes(node)}
     for index, node in enumerate(ast.walk(expression)):
         if _conversion(node):
@@ -3641,10 +3656,13 @@ def _number_slips(expression):
     for index, node in enumerate(ast.walk(expression)):
         if isinstance(node, ast.Constant) and type(node.value) in (int, float) and node.value != 0:
             for slip, factor in _NUMBER_SLIPS:
+                if type(node.value) is int and slip in _UNCOUNTED:
+                    continue
                 number = float(node.value)
                 value = number * factor if factor is not None else (
                     np.sqrt(abs(number)) if slip == "constant_root" else number * number)
-                yield slip, index, ast.Constant(float(value))
+                whole = type(node.value) is int and float(value).is_integer()  # a count stays a count: 1000 steps
+                yield slip, index, ast.Constant(int(value) if whole else float(value))
                 if slip == "constant_degrees":  # 0.35 rad typed as the degrees a student reads off it: 20
                     for typed in _degrees_typed(value):
                         yield slip, index, ast.Constant(typed)
@@ -3740,6 +3758,7 @@ def constant_mutants(package, root: str, problem: int, ran: set) -> list[Mutant]
             bindings = _bindings(package, root, {(stem, name): value})
             if bindings is not None:
                 slip = "start_zeroed" if start and slip == "constant_zeroed" else slip
+                slip = "constant_step" if slip in _RESIZINGS and _STEP_CONSTANT.match(name) else slip
                 found.append(Mutant(stem, (name,), slip, None, bindings=bindings))
             if len(found) >= CONSTANT_MUTANTS:
                 return found

@@ -12,6 +12,10 @@ gravity typed in centimetres per second squared (981).  The near miss is the gra
 slip of typing gives: nothing is named.  A joint frame's rotation of
 problem 32's table typed with its rows as columns is a transpose; with two rows changed otherwise, it is none.
 
+A step's constant or a count of steps (``DT``, ``N_STEPS``: ``mutants._STEP_CONSTANT``) typed otherwise is a step
+typed otherwise (the run takes steps of another size); a count stays an integer (``range`` takes it), and is not
+typed a hundred or a thousand times itself; the near miss, a count at another value, is none.
+
 A run's start (``A_IC0``, ``ANGLES0``: ``mutants._START``) written whole as a plain value, the identity or zeros, is
 a wrong initial state, and its numbers typed otherwise that give the same within the tolerance (an angle a
 thousandth of itself) are not told beside it; the near misses, a start at another angle, are no such slip.  Problem
@@ -87,6 +91,31 @@ def test_a_vector_constant_written_as_its_direction_is_named(tmp_path):
 
 def test_a_vector_constant_turned_is_no_direction(tmp_path):
     assert "wrong_factor" not in {h.name for h in torque_slips(tmp_path, "I_GRAV = np.array([0.0, -9.81, 1.0])")}
+
+
+def steps_slips(tmp_path, new: str):
+    """The tier on problem 8's Euler runs of the matrix and of the angles with the count of steps written as ``new``
+    (the step ``DT`` is computed from it: a run over the same span)."""
+    student = planted_package(tmp_path, "problem_08.py", "N_STEPS = 100", new)
+    try:
+        evidences = [evidence("problem_08.part", ("a",), (), student),
+                     evidence("problem_08.part", ("b",), ("A_IC",), student)]
+        assert all(not np.allclose(e.got, e.expected) for e in evidences)
+        return mutants.mutant_slips(scene("p08.part_a"), evidences)
+    finally:
+        drop_private(student)
+
+
+def test_a_count_of_steps_typed_a_tenth_is_a_step_typed_otherwise(tmp_path):
+    """The count is an integer that ``range`` takes: typed a tenth, it stays one (10 steps, not 10.0), and the slip
+    of a step's constant is of the step's size."""
+    found = steps_slips(tmp_path, "N_STEPS = 10")
+    assert {h.name for h in found} == {"step_typed"}, [(h.name, h.detail) for h in found]
+    assert any("`N_STEPS`, a step or a count of steps" in h.detail for h in found), [h.detail for h in found]
+
+
+def test_a_count_of_steps_at_another_value_is_no_step_typed(tmp_path):
+    assert steps_slips(tmp_path, "N_STEPS = 37") == []
 
 
 def test_a_constant_off_by_a_factor_no_typing_gives_names_nothing(tmp_path):
