@@ -524,13 +524,19 @@ def find(scene: Scene, evidences: list, runs: bool = True) -> Finding | None:
     first = evidences[0]
     if (finding is None or not finding.names) and _derived(first):
         trace.note("derived", traced=True)
-        try:
-            return judged(scene, first) or finding
-        except GraderFault:
-            if getattr(scene.ctx.oracle, "mode", "") == "kit":  # the key lacks that call: live may tell more
-                return _left_to_live(finding)
-            raise
+        return _judged_derived(scene, first, finding)
     return finding
+
+
+def _judged_derived(scene: Scene, evidence: Evidence, finding: Finding | None = None) -> Finding | None:
+    """``judged`` for a value the check derived from the student's results, or ``finding`` where it finds none; in
+    the kit, whose key may lack the call judged, ``finding`` is left to live, which may tell more."""
+    try:
+        return judged(scene, evidence) or finding
+    except GraderFault:
+        if getattr(scene.ctx.oracle, "mode", "") == "kit":  # the key lacks that call: live may tell more
+            return _left_to_live(finding)
+        raise
 
 
 def _derived(evidence: Evidence) -> bool:
@@ -586,12 +592,7 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
         # a value the check derived from the student's results (a centre of gravity of their points, an anchor's
         # first two coordinates): the call it judges, against the reference's call on the same arguments
         trace.note("derived")
-        try:
-            return judged(scene, first)
-        except GraderFault:
-            if getattr(scene.ctx.oracle, "mode", "") == "kit":  # the key lacks that call: live may tell more
-                return _left_to_live(None)
-            raise
+        return _judged_derived(scene, first)
     if first.source is None:  # a value derived from the student's own: explain the results it came from
         if found or described or first.call is None:
             return _told([found, described], "in your model" if described else "here")

@@ -23,8 +23,10 @@ wrong sign, twice or half itself, ten, a hundred or a thousand times or a tenth,
 degrees read off it: 0.35 as 20) or the reverse, an expression in it with its minus left out or given one
 (``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``), its square root or its square; an entry of one of its lists written 0, two
 entries exchanged, a matrix written out row by row transposed, a vector written as its direction alone; two constants
-of one module exchanged), each measured with the constants, defaults and imported names its module computed from it
-bound again, within ``CONSTANT_TIME_BUDGET`` and ``CONSTANT_MUTANTS``.
+of one module exchanged; an integer stays an integer, and is not typed a hundred or a thousand times itself or
+squared; a step or a count of steps, ``DT``, ``N_STEPS``, typed otherwise is a step typed otherwise), each measured with
+the constants, defaults and imported names its module computed from it bound again, within ``CONSTANT_TIME_BUDGET`` and
+``CONSTANT_MUTANTS``.
 
 Each mutant changes one place of one function's solution region (``SLIPS``: a term's sign, a term or a factor missing (a
 ratio's numerator of constants too: ``1 / T`` for ``2 pi / T``), two arguments, two groups of arguments, factors or
@@ -51,7 +53,9 @@ read as alternate entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a 
 (``B_J_R`` for ``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``, its second read as
 it is, and ``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is
 measured from a point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset,
-not a term left out), an argument left out of every product it is a factor of, a length where its square belongs
+not a term left out), an argument left out of every product it is a factor of (the step of an integration, ``dt``,
+left out of a product, there or in one place: each update takes a whole unit of time), a length where its square
+belongs
 (``np.sqrt(r @ r)`` for ``r @ r``), a vector or matrix the function writes out passed to a call with the wrong sign
 (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a product (``(m * a)**2``
 for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one statement (``V[2, :] =
@@ -82,7 +86,8 @@ one of a function's arguments multiplied by the factor of a conversion of units 
 radians: a scale).  The reads of names and the indices written come after every other slip of every function, as many as
 ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the slips of precision
 (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a
-loop's bounds, where it changes no count; an argument converted to float32 at a function's start; a constant typed
+loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts every value to a whole number:
+far outside the band, not one of these); an argument converted to float32 at a function's start; a constant typed
 short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to two,
 three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as
 0.52: these come with the reads of names, after the other slips).  A slip of precision is told only where the student's
@@ -138,7 +143,9 @@ the screen can only leave out a mutant whose value depends on an expression's fo
 from the screening, against a budget of its own (``CONFIRMING_TIME_BUDGET``: one of problem 40's mutants takes longer to
 simplify than all of them to screen); what the probes compute once for a mutant's code is kept for its inputs and later
 explanations (``_CONFIRMED``); and a screened mutant of a slip of the same function as one kept already is kept on its
-screened value, for it adds no name to the finding. """
+screened value, for it adds no name to the finding.
+"""
+
 from __future__ import annotations
 
 import __future__
