@@ -1,0 +1,138 @@
+"""The formula tier's slips of whole numbers and of sums (``grader.diagnosis.mutants``): an array created as one of
+integers and then filled with floats (``np.zeros(n, dtype=int)``), a number converted with ``int`` where ``float``
+belongs, a division by a whole number written ``//``, a length taken as its square (``v @ v`` for
+``np.linalg.norm(v)``) and a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``).
+
+Each is a mistake planted into a made-up problem that the tier names on two inputs, with a near miss it must not
+name: a floor division whose quotient is zero on every input (an answer of zeros, which many slips reproduce, tells
+nothing) and an array of integers that is only read, never filled (numpy's sums of it are floats: no slip)."""
+
+import numpy as np
+import pytest
+
+from checks._diagnoses import DIAGNOSES
+from grader.diagnosis import mutants
+
+from .stand_ins import made_up_package
+from .test_mutants import made_up_evidences, scene
+
+SOURCE = '''"""A made-up problem for the slips of whole numbers."""
+
+import numpy as np
+
+
+def table(n, w):
+    """The cosines and sines of ``k w`` for ``k = 0 .. n - 1``, each scaled by 3.7."""
+    # BEGIN SOLUTION problem 95
+    out = np.zeros((n, 2))
+    for k in range(n):
+        out[k] = 3.7 * np.array([np.cos(w * k), np.sin(w * k)])
+    return out
+    # END SOLUTION
+
+
+def shifted(n, w):
+    """The cosines of ``k w`` for ``k = 0 .. n - 1``, each plus 0.25."""
+    # BEGIN SOLUTION problem 95
+    base = np.zeros(n)
+    return base + np.cos(w * np.arange(n)) + 0.25
+    # END SOLUTION
+
+
+def moment(m, length):
+    """A rod's moment of inertia about its centre and its centre's distance from its end."""
+    # BEGIN SOLUTION problem 95
+    return np.array([m / 12 * length ** 2, float(m * length / 2)])
+    # END SOLUTION
+
+
+def direction(v):
+    """The unit vector along ``v``."""
+    # BEGIN SOLUTION problem 95
+    return v / np.linalg.norm(v)
+    # END SOLUTION
+
+
+def points(steps):
+    """The points a chain of ``steps`` (rows) reaches from the origin."""
+    # BEGIN SOLUTION problem 95
+    return np.cumsum(steps, axis=0)
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def made_up(tmp_path, monkeypatch):
+    """A package of one made-up problem (95) that the tier mutates in place of the reference."""
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 95, "whole") as package:
+        yield package
+
+
+def found(package, name, student, inputs):
+    evidences = made_up_evidences(package, name, student, inputs, number=95)
+    assert all(not np.allclose(e.got, e.expected) for e in evidences)
+    return mutants.mutant_slips(scene(f"p95.{name}"), evidences)
+
+
+def named(hypotheses) -> set:
+    return {h.name for h in hypotheses}
+
+
+def test_an_array_of_integers_filled_with_floats_is_named_cut_to_whole_numbers(made_up):
+    def student(n, w):
+        out = np.zeros((n, 2), dtype=int)
+        for k in range(n):
+            out[k] = 3.7 * np.array([np.cos(w * k), np.sin(w * k)])
+        return out
+
+    hypotheses = found(made_up, "table", student, [(5, 0.7), (6, 1.3)])
+    assert named(hypotheses) == {"integer_truncated"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`table` creates an array of integers" in h.detail for h in hypotheses)
+    assert DIAGNOSES["integer_truncated"].family == "precision"
+
+
+def test_an_array_of_integers_only_read_is_no_slip(made_up):
+    """The near miss: ``base`` of integers is only added to, and numpy's sum is of floats: the mutant is the
+    reference itself, and the student's value (a cosine of the wrong angle) is named by no slip of whole numbers."""
+    hypotheses = found(made_up, "shifted", lambda n, w: np.zeros(n) + np.cos(1.1 * w * np.arange(n)) + 0.25,
+                       [(5, 0.7), (6, 1.3)])
+    assert "integer_truncated" not in named(hypotheses)
+
+
+def test_a_number_converted_with_int_is_named_cut_to_a_whole_number(made_up):
+    hypotheses = found(made_up, "moment", lambda m, length: np.array([m / 12 * length ** 2, int(m * length / 2)]),
+                       [(2.5, 1.3), (3.1, 0.9)])
+    assert named(hypotheses) == {"integer_truncated"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`moment` converts a number with ``int``" in h.detail for h in hypotheses)
+
+
+def test_a_floor_division_is_named_where_its_quotient_is_not_zero(made_up):
+    hypotheses = found(made_up, "moment", lambda m, length: np.array([m // 12 * length ** 2, m * length / 2]),
+                       [(30.5, 1.3), (41.0, 0.9)])
+    assert named(hypotheses) == {"integer_truncated"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`moment` divides with ``//``" in h.detail for h in hypotheses)
+
+
+def test_a_floor_division_that_leaves_zeros_is_not_named(made_up):
+    """The near miss: a mass below 12 floor-divided by 12 is 0, and the moment vanishes on every input: a value of
+    zeros is reproduced by many slips and tells none of them."""
+    def student(m, length):
+        return np.array([m // 12 * length ** 2, 0.0])
+
+    assert found(made_up, "moment", student, [(2.5, 1.3), (3.1, 0.9)]) == []
+
+
+def test_a_length_taken_as_its_square_is_named_a_square_root_missing(made_up):
+    hypotheses = found(made_up, "direction", lambda v: v / (v @ v), [(np.array([0.3, -1.2, 2.0]),),
+                                                                    (np.array([1.5, 0.4, -0.7]),)])
+    assert named(hypotheses) == {"wrong_factor"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("a square root is missing in `direction`" in h.detail for h in hypotheses)
+    assert DIAGNOSES["wrong_factor"].family == "scale"
+
+
+def test_a_running_sum_left_out_is_named_a_term_missing(made_up):
+    steps = [(np.array([[0.3, 0.1], [0.2, -0.4], [0.5, 0.6]]),), (np.array([[-0.2, 0.7], [0.9, 0.1], [0.1, 0.3]]),)]
+    hypotheses = found(made_up, "points", lambda s: s, steps)
+    assert "missing_term" in named(hypotheses), [(h.name, h.detail) for h in hypotheses]
+    assert any("`points` leaves out a running sum" in h.detail for h in hypotheses)
+    assert {DIAGNOSES[h.name].family for h in hypotheses} == {"missing_term"}
