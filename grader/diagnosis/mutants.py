@@ -82,26 +82,27 @@ and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W
 added, told as an offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r)
 * np.eye(3)``: the identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one
 statement where the function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside
-``self.B_I_B``: a wrong frame); last of all, after the reads of names, every read of one of a function's arguments
-multiplied by the factor of a conversion of units into the ones the function computes in (``CONVERSIONS``: ``omega *
-np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180`` of an angle already in radians: a scale).  The reads of
-names and the indices written come after every other slip of every function, as many as ``MAX_MUTANTS`` leaves room for,
-so that the budget reaches the older slips first), and the slips of precision (``PRECISION_SLIPS``: a dtype of double
-precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a loop's bounds, where it changes no count
-(given as an integer, ``dtype=int``, it cuts every value to a whole number, as do an array created of integers and
-filled with floats, ``np.zeros(n, dtype=int)``, a number converted with ``int`` where ``float`` belongs, and a division
-by a whole number written ``//``: far outside the band, not one of these); an argument converted to float32 at a
-function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a
-module's constant rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 /
-3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is
-told only where the student's value is in the band such slips make (``PRECISION_BAND``), differs from the expected one
-beyond the tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left at most); on a comparison of
-one input (no second one to draw) the slips of precision alone are tried there, where the value is in the band.  An edit
-that is as truly a slip of another family is told with both names, as a twin (``rivals``): a product with a quantity
-where the division by it belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged
-read each where the other belongs (a state row); a parameter with a default that the edit leaves unused is an argument
-ignored, where the engine could test none of the call's arguments itself, and so is an argument of the call that the
-engine's test had no budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos
+``self.B_I_B``: a wrong frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``);
+last of all, after the reads of names, every read of one of a function's arguments multiplied by the factor of a
+conversion of units into the ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in
+rad/s, ``phi * np.pi / 180`` of an angle already in radians: a scale).  The reads of names and the indices written come
+after every other slip of every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the
+older slips first), and the slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single,
+``np.asarray(q, dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer,
+``dtype=int``, it cuts every value to a whole number, as do an array created of integers and filled with floats,
+``np.zeros(n, dtype=int)``, a number converted with ``int`` where ``float`` belongs, and a division by a whole number
+written ``//``: far outside the band, not one of these); an argument converted to float32 at a function's start; a
+constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant
+rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577,
+``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is told only where
+the student's value is in the band such slips make (``PRECISION_BAND``), differs from the expected one beyond the
+tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input
+(no second one to draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is
+as truly a slip of another family is told with both names, as a twin (``rivals``): a product with a quantity where the
+division by it belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each
+where the other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored,
+where the engine could test none of the call's arguments itself, and so is an argument of the call that the engine's
+test had no budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos
 exchanged in a term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong
 rows; a skew matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round
 as a sign or the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant
@@ -645,6 +646,8 @@ SLIPS = {
     "converted_back": ("degrees", "`{f}` converts an angle the wrong way (rad2deg where deg2rad belongs, or the "
                                   "reverse)"),
     "converted_rpm": ("wrong_factor", "`{f}` converts an argument from rpm to rad/s that already is in rad/s"),
+    "inertial_vector": ("wrong_frame", "`{f}` turns a vector of body coordinates into inertial ones (``A_IB @ B_v_B``) "
+                                       "where the body's own belong"),
     "inertial_matrix": ("wrong_frame", "`{f}` turns a matrix of body coordinates into inertial ones (A M A^T) where "
                                        "the body's own belongs"),
 }
@@ -1030,22 +1033,42 @@ def _rotation_at_hand(node, frame: str, names: frozenset, attributes: frozenset)
     return ast.Attribute(copy.deepcopy(node.value), rotation, ast.Load()) if rotation in attributes else None
 
 
+#: a vector in the coordinates of a body's frame by the course's notation (``B_v_B``, ``B_omegaDot_B``,
+#: ``B_r_BQ``): the frame first, a quantity's name in lower case, a point or a frame
+_BODY_VECTOR = re.compile(r"^([A-HJ-Z][A-Za-z0-9]{0,4})_[a-z][A-Za-z0-9]*_[A-Z][A-Za-z0-9]*$")
+
+
+def _body_vector(node) -> str | None:
+    """The frame of a read of a vector in a body's coordinates (``B`` of ``self.B_v_B`` or of ``B_v_B``), or
+    None."""
+    if isinstance(node, (ast.Name, ast.Attribute)) and isinstance(node.ctx, ast.Load):
+        found = _BODY_VECTOR.match(node.id if isinstance(node, ast.Name) else node.attr)
+        return found.group(1) if found else None
+    return None
+
+
 def _frame_slips(node, names: frozenset, attributes: frozenset):
     """Every read of a body's matrix in a statement (``B_I_B``) turned into inertial coordinates, ``A_IB @ B_I_B @
     A_IB.T``, where the function has the rotation at hand (``_rotation_at_hand``): the body's matrix where its own
-    coordinates belong, taken as the inertial one."""
+    coordinates belong, taken as the inertial one; and so every read of a vector in the body's coordinates
+    (``A_IB @ B_v_B`` for ``B_v_B``)."""
     if not isinstance(node, (ast.Assign, ast.Return, ast.AugAssign, ast.Expr)):
         return
-    seen = set()
-    for read in ast.walk(node):
-        frame = _body_matrix(read)
+    turned = {id(b.right) for b in ast.walk(node) if isinstance(b, ast.BinOp) and isinstance(b.op, ast.MatMult)
+              and _ROTATION.match(_label(b.left) or "-")}  # a vector turned already (``A_IB @ B_omega_B``)
+    seen, reads = set(), [n for n in ast.walk(node) if isinstance(n, (ast.Name, ast.Attribute))]
+    for k, read in enumerate(reads):
+        matrix, vector = _body_matrix(read), _body_vector(read)
         key = ast.dump(read)
-        if frame is None or key in seen:
-            continue
-        seen.add(key)
-        rotation = _rotation_at_hand(read, frame, names, attributes)
-        if rotation is not None:
-            yield "inertial_matrix", lambda n, key=key, rotation=rotation: _Turned(key, rotation).visit(n)
+        if matrix is not None and key not in seen:  # every read of a matrix at once
+            seen.add(key)
+            rotation = _rotation_at_hand(read, matrix, names, attributes)
+            if rotation is not None:
+                yield "inertial_matrix", lambda n, key=key, rotation=rotation: _Turned(key, rotation).visit(n)
+        elif vector is not None and id(read) not in turned:  # each read of a vector alone
+            rotation = _rotation_at_hand(read, vector, names, attributes)
+            if rotation is not None:
+                yield "inertial_vector", lambda n, k=k, rotation=rotation: _turned_read(n, k, rotation)
 
 
 class _Turned(ast.NodeTransformer):
@@ -1059,6 +1082,16 @@ class _Turned(ast.NodeTransformer):
             turned = ast.BinOp(copy.deepcopy(self.rotation), ast.MatMult(), node)
             return ast.BinOp(turned, ast.MatMult(), _transposed(copy.deepcopy(self.rotation)))
         return super().generic_visit(node)
+
+
+def _turned_read(statement, k: int, rotation):
+    """The statement with its ``k``-th read (of names and attributes, in ``ast.walk``'s order) as ``rotation @
+    read``."""
+    reads = [n for n in ast.walk(statement) if isinstance(n, (ast.Name, ast.Attribute))]
+    parents = {id(child): parent for parent in ast.walk(statement) for child in ast.iter_child_nodes(parent)}
+    read = reads[k]
+    _replace(parents[id(read)], read, ast.BinOp(copy.deepcopy(rotation), ast.MatMult(), read))
+    return statement
 
 
 #: the conversions of units a course applies to an argument (``_conversion_slips``), into the units a function
