@@ -63,41 +63,41 @@ where the length belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matr
 call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a
 product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
 statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
-with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``: entries swapped), and one read of a name for another
-of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for
-``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum of the other and more, ``g_e = q2 +
-q4``, a term added or left out as well; the angles of a function are the names it reads in a sine or a cosine or passes
-where a function of the reference reads its parameter so), and a parameter read as the constant or the number of its
-default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for
-``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of
-them: the argument ignored (and every parameter that has a default read as it at once: every argument ignored); a name
-computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for ``cardan(*angles)`` where
-``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an entry written into a
-neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or
-any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for body in bodies[:-1]``,
-``range(1, n)``: a term of its sum left out), a loop of steps over a range one step longer (``range(n + 1)``: one step
-too many), a keyword argument left out of a call of a function or a class of the reference whose parameter of that name
-has a default (the callee then uses the default: a term left out, a joint built without its ``A_PDp``; a point's
-position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement
-left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix written as the number 1
-(``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added, told as an offset as well where it is
-the same on every input) or left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the identity left out, a term
-of its own), and a body's matrix turned into inertial coordinates in one statement where the function has the rotation
-at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame), and so one read
-of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the reads of names, every
-read of one of a function's arguments multiplied by the factor of a conversion of units into the ones the function
-computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180`` of an angle
-already in radians: a scale).  The reads of names and the indices written come after every other slip of every function,
-as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the slips of
-precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q, dtype=np.float32)``, also
-inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts every value to a whole
-number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a number converted with
-``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the band, not one of
-these); an argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as
-9.8, and an expression of numbers or a read of a module's constant rounded to two, three or four decimals (the sheet
-prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of
-names, after the other slips).  A slip of precision is told only where the student's value is in the band such slips
-make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
+with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped),
+and one read of a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for
+``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum
+of the other and more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it
+reads in a sine or a cosine or passes where a function of the reference reads its parameter so), and a parameter read as
+the constant or the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for
+``wire_length``, ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m
+* g``), at one read or at all of them: the argument ignored (and every parameter that has a default read as it at once:
+every argument ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
+``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
+entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
+are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
+body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps over a range one step longer
+(``range(n + 1)``: one step too many), a keyword argument left out of a call of a function or a class of the reference
+whose parameter of that name has a default (the callee then uses the default: a term left out, a joint built without its
+``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and
+solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix
+written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added, told as an
+offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the
+identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one statement where the
+function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong
+frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the
+reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the
+ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180``
+of an angle already in radians: a scale).  The reads of names and the indices written come after every other slip of
+every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
+slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q,
+dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts
+every value to a whole number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a
+number converted with ``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the
+band, not one of these); an argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or
+3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to two, three or four
+decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come
+with the reads of names, after the other slips).  A slip of precision is told only where the student's value is in the
+band such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
 (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to draw) the slips of
 precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of another family is
 told with both names, as a twin (``rivals``): a product with a quantity where the division by it belongs (or the
@@ -2079,8 +2079,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
-    if isinstance(node, (ast.Tuple, ast.List)) and isinstance(node.ctx, ast.Load) and 3 <= len(node.elts) <= 6 \
-            and all(isinstance(e, ast.Name) for e in node.elts):  # ``[phi, x, y]`` for ``[x, y, phi]``
+    if isinstance(node, (ast.Tuple, ast.List)) and 3 <= len(node.elts) <= 6 \
+            and all(isinstance(e, ast.Name) for e in node.elts):  # ``[phi, x, y]`` for ``[x, y, phi]``, read or bound
         yield "cycled", lambda n: _with(n, elts=n.elts[-1:] + n.elts[:-1])
         yield "cycled", lambda n: _with(n, elts=n.elts[1:] + n.elts[:1])
 

@@ -1,0 +1,60 @@
+"""The formula tier's slip of names bound in another order (``grader.diagnosis.mutants``: ``cycled``, on names bound
+as well as read): ``phi, x, y = q`` for ``x, y, phi = q``, each name bound from another's row, told as quantities in
+another order.  Planted into a made-up problem that the tier names on two inputs, with the near miss of a name bound
+from a row that no order of the three gives."""
+
+import numpy as np
+import pytest
+
+from grader.diagnosis import mutants
+
+from .stand_ins import made_up_package
+from .test_mutants import made_up_evidences, scene
+
+SOURCE = '''"""A made-up problem of names bound from a state."""
+
+import numpy as np
+
+
+def pin(q):
+    """A made-up pin's place and its turn, from the coordinates ``q = (x, y, phi)``."""
+    # BEGIN SOLUTION problem 92
+    x, y, phi = q
+    return np.array([x + 2.0 * y, y * phi, np.cos(phi)])
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def made_up(tmp_path, monkeypatch):
+    """A package of one made-up problem (92) that the tier mutates in place of the reference."""
+    with made_up_package(tmp_path, monkeypatch, SOURCE, 92, "unpacked") as package:
+        yield package
+
+
+INPUTS = [(np.array([0.3, -1.2, 0.7]),), (np.array([1.1, 0.4, -0.9]),)]
+
+
+def found(package, student):
+    evidences = made_up_evidences(package, "pin", student, INPUTS, number=92)
+    assert all(not np.allclose(e.got, e.expected) for e in evidences)
+    return mutants.mutant_slips(scene("p92.pin"), evidences)
+
+
+def test_names_bound_in_another_order_are_quantities_in_another_order(made_up):
+    def student(q):
+        phi, x, y = q
+        return np.array([x + 2.0 * y, y * phi, np.cos(phi)])
+
+    hypotheses = found(made_up, student)
+    assert {h.name for h in hypotheses} == {"swapped"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`pin` lists quantities in another order" in h.detail for h in hypotheses)
+
+
+def test_a_name_bound_from_a_row_no_order_gives_is_not_that_slip(made_up):
+    def student(q):
+        x, y, phi = q[0], q[1], 0.5 * q[2]
+        return np.array([x + 2.0 * y, y * phi, np.cos(phi)])
+
+    hypotheses = found(made_up, student)
+    assert not any("another order" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
