@@ -65,9 +65,10 @@ The grammar:
   student's value holds (its halves exchanged, say), a factor 2, 1/2, pi/180, 180/pi, 1000 or 1/1000 (a unit) or a
   named constant of the problem, float32 rounding, rounding to a few decimals that keep two significant digits of
   the largest value (``grammar.ROUNDED_DIGITS``: values of order one as whole numbers are no rounding a student
-  writes), the output in the other frame (conjugation by the problem's rotation); a value typed into answers.toml
-  and compared with its key (``checks._answers.typed_failure``) hears these alone, on its one input, and only where
-  it holds many numbers (``grammar.typed_slips``: a 3 x 3 matrix read off a figure, not a scalar);
+  writes; nor is a time of the student's own output grid, which its spacing rounds), held to every input, the output in
+  the other frame (conjugation by the problem's rotation); a value typed into answers.toml and compared with its key
+  (``checks._answers.typed_failure``) hears these alone, on its one input, and only where it holds many numbers
+  (``grammar.typed_slips``: a 3 x 3 matrix read off a figure, not a scalar);
 * inputs (the reference on transformed arguments): arguments swapped, angles as degrees, negated angles, a
   rotation argument transposed, a vector argument in the other frame, an argument ignored (the student's value
   does not change when it does, on the input shown and on one with every argument moved at once, while the

@@ -614,7 +614,7 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     keys = list(inputs[0].predicted)
     outputs = _keep(inputs, [k for k in keys if not k.startswith(INPUT_KEYS)])
     if all(_same_shape(e) for e in evidences) and (len(inputs) > 1 or _told_enough(first)):
-        outputs += precision_slips(first.got, first.expected, first.tol)  # a run's value as well: rounded only if so
+        outputs += _rounded(evidences, run, decl)  # a run's value as well: rounded only if so
     tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs), described]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
@@ -633,6 +633,37 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
             return _left_to_live(_told(tiers, _where(evidences)) if any(tiers) else None)
         tiers.append(formulas)
     return _told(_beside(tiers), _where(evidences))
+
+
+def _rounded(evidences: list, run: Evidence | None, decl: Declaration | None) -> list:
+    """The slips of precision (``precision_slips``: float32, a rounding) that give the student's value on every input
+    of the comparison, as every tier is held to them; none for a time of the student's own output grid
+    (``_on_its_grid``), which the grid's spacing rounds."""
+    if _on_its_grid(run, decl, evidences[0]):
+        return []
+    each = [precision_slips(e.got, e.expected, e.tol) for e in evidences]
+    return [h for h in each[0] if all(h.key in {o.key for o in other} for other in each[1:])]
+
+
+def _on_its_grid(run: Evidence | None, decl: Declaration | None, evidence: Evidence) -> bool:
+    """The student's value is a time of their run's own output grid (``decl.motion``'s times), or of that grid
+    extended at its spacing (past a run that ended at its event): a time read off the grid where the run's own time
+    belongs (an event's), which a rounding matches by the grid's spacing."""
+    motion = (run.motion if run is not None and run.motion else decl.motion if decl is not None else None) or {}
+    root = run.student.root if run is not None and run.student is not None else None
+    if not isinstance(motion.get("time"), str) or not isinstance(root, dict) or evidence.got is None:
+        return False
+    times = array_of(root.get(motion["time"]))
+    if times is None or times.ndim != 1 or times.size < 2 or evidence.got.size != 1:
+        return False
+    value, steps = float(evidence.got.ravel()[0]), np.diff(times)
+    scale = 1e-9 * max(1.0, float(np.abs(times).max()), abs(value))
+    if np.any(np.abs(times - value) <= scale):
+        return True
+    if steps.min() <= 0 or np.ptp(steps) > 1e-9 * steps.mean():  # no even grid to extend
+        return False
+    k = (value - times[0]) / steps.mean()  # a time of the grid beyond its last (a run ended at its event)
+    return abs(k - round(k)) * steps.mean() <= scale
 
 
 def _stepped(decl: Declaration | None) -> bool:
