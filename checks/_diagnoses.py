@@ -511,6 +511,10 @@ _TABLE = (
     _D("install", "installation", "a package that is not installed", "had a package missing"),
     _D("mujoco_broken", "installation", "a MuJoCo that does not run", "had a broken MuJoCo"),
     _D("versions", "installation", "versions that are not read as asked", "reported the versions wrongly"),
+    _D("versions_left_out", "missing_term", "packages left out of the versions", "left packages out of the versions"),
+    _D("versions_cut", "precision", "versions cut short", "cut the versions short"),
+    _D("versions_of_one", "ignored_argument", "one package's version reported for others",
+       "reported one package's version for others"),
     _D("type", "format", "a value of the wrong type", "returned a value of the wrong type"),
     # ---------------------------------------------------------------- structure
     _D("shape", "shape", "a value of the wrong shape", "returned an array of the wrong shape"),

@@ -87,10 +87,31 @@ def check_versions(ctx):
         if reported.get(name) not in [a for a in accepted if a]:
             wrong.append(f"  {name}: got {reported.get(name)!r}, expected {' or '.join(repr(a) for a in accepted if a)}")
     if wrong:
+        hint, diagnosis = _versions_slip(reported, {name: [a for a in accepted if a] for name, accepted in
+                                                    expected.items()})
         fail("versions() does not report the versions installed here.\n" + "\n".join(wrong)
              + "\nfound:\n" + _listing(found),
-             "Read them with importlib.metadata.version(name) and platform.python_version(); the keys are "
-             "python, numpy, scipy, sympy and mujoco.", "versions")
+             hint or "Read them with importlib.metadata.version(name) and platform.python_version(); the keys are "
+             "python, numpy, scipy, sympy and mujoco.", diagnosis)
+
+
+def _versions_slip(reported: dict, expected: dict) -> tuple[str, str]:
+    """``(hint, diagnosis)`` where every wrong entry of ``reported`` is wrong alike: left out (keys missing), cut
+    short (a leading part of the version: ``"3.11"`` of ``"3.11.7"``), or one other entry's version reported for it
+    (every version read from one package); else the plain ``versions``."""
+    wrong = {name: reported.get(name) for name, accepted in expected.items() if reported.get(name) not in accepted}
+    if all(name not in reported for name in wrong):
+        return (f"versions() leaves out {', '.join(sorted(wrong))}: report every one of python, numpy, scipy, "
+                "sympy and mujoco (the loop over the packages must reach each).", "versions_left_out")
+    if all(isinstance(v, str) and v and any(a.startswith(v) and a != v for a in expected[name])
+           for name, v in wrong.items()):
+        return ("Your versions are cut short: report the whole version string, as importlib.metadata.version(name) "
+                "and platform.python_version() give it (major, minor and patch).", "versions_cut")
+    values = set(wrong.values())
+    if len(wrong) > 1 and len(values) == 1 and any(values <= set(accepted) for accepted in expected.values()):
+        return ("Every wrong entry holds the version of one package: read each package's own version, "
+                "importlib.metadata.version(name) with the name of the loop.", "versions_of_one")
+    return "", "versions"
 
 
 @check(1, title="a tiny MuJoCo model (a falling link) loads and runs in the sandbox, and moves as physics says",
