@@ -1,7 +1,8 @@
 """The formula tier's slip of names bound in another order (``grader.diagnosis.mutants``: ``cycled``, on names bound
 as well as read): ``phi, x, y = q`` for ``x, y, phi = q``, each name bound from another's row, told as quantities in
-another order.  Planted into a made-up problem that the tier names on two inputs, with the near miss of a name bound
-from a row that no order of the three gives."""
+another order; and a slice of a state one row on (``y[1:4]`` for ``y[:3]``: as many entries, each from the next
+row), told as a neighbouring index.  Planted into a made-up problem that the tier names on two inputs, with the near
+misses of a name bound from a row that no order of the three gives and of a slice two rows on."""
 
 import numpy as np
 import pytest
@@ -21,6 +22,14 @@ def pin(q):
     # BEGIN SOLUTION problem 92
     x, y, phi = q
     return np.array([x + 2.0 * y, y * phi, np.cos(phi)])
+    # END SOLUTION
+
+
+def event_state(y):
+    """A made-up residual from the first three entries of a state of six."""
+    # BEGIN SOLUTION problem 92
+    q = y[:3]
+    return np.array([q[0] - 2.0 * q[1], q[2] ** 2 + y[4]])
     # END SOLUTION
 '''
 
@@ -58,3 +67,24 @@ def test_a_name_bound_from_a_row_no_order_gives_is_not_that_slip(made_up):
 
     hypotheses = found(made_up, student)
     assert not any("another order" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+STATES = [(np.array([0.3, -1.2, 0.7, 0.2, -0.5, 0.9]),), (np.array([1.1, 0.4, -0.9, -0.6, 0.8, 0.1]),)]
+
+
+def test_a_slice_of_the_state_one_row_on_is_a_neighbouring_index(made_up):
+    def student(y):
+        q = y[1:4]
+        return np.array([q[0] - 2.0 * q[1], q[2] ** 2 + y[4]])
+
+    evidences = made_up_evidences(made_up, "event_state", student, STATES, number=92)
+    hypotheses = mutants.mutant_slips(scene("p92.event_state"), evidences)
+    assert {h.name for h in hypotheses} == {"wrong_index"}, [(h.name, h.detail) for h in hypotheses]
+
+    def two_on(y):
+        q = y[2:5]
+        return np.array([q[0] - 2.0 * q[1], q[2] ** 2 + y[4]])
+
+    evidences = made_up_evidences(made_up, "event_state", two_on, STATES, number=92)
+    hypotheses = mutants.mutant_slips(scene("p92.event_state"), evidences)
+    assert "wrong_index" not in {h.name for h in hypotheses}, [(h.name, h.detail) for h in hypotheses]
