@@ -41,39 +41,40 @@ converted to degrees before its sine (``phi = np.rad2deg(phi)``), an event's res
 a number doubled or halved, ``/`` for ``*``, a square or a square root missing or added, sin for cos (in one call,
 throughout one expression, or in one read of a name bound to a sine or a cosine: ``c2`` for ``s2`` where ``c2, s2 =
 np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a matrix written out row by row,
-transposed), a neighbouring index (or a slice of as many entries one row on or back: ``y[1:4]`` for ``y[:3]``), two
-names exchanged (throughout, or two of a kind in one expression), a solve or an inverse left out or made with the
-matrix's diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0
-(told beside an offset where it is the same on every input), a sum that keeps only its last term, a running sum left out
-(``steps`` for ``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where its rate belongs or the reverse
-(``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference,
-related by the course's notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a
-coordinate system read for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to
-one: a wrong frame), a factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list
-with the wrong sign (a term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps
-added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one
-factor of a product inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A
-@ B, b)``: no inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product
-exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state read as alternate entries (``y[::2]``,
-``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term
-of a difference left out (``r r^T`` for ``r.r E - r r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``,
-its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E
-- anchor``, and ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of
-every product it is a factor of (the step of an integration, ``dt``, left out of a product, there or in one place: each
-update takes a whole unit of time), a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``) or its square
-where the length belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix the function writes out passed to a
-call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a
-product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
-statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
-with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped),
-and one read of a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for
-``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum
-of the other and more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it
-reads in a sine or a cosine or passes where a function of the reference reads its parameter so), and a parameter read as
-the constant or the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for
-``wire_length``, ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m
-* g``), at one read or at all of them: the argument ignored (and every parameter that has a default read as it at once:
-every argument ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
+transposed), a neighbouring index (or a slice of as many entries one row on or back: ``y[1:4]`` for ``y[:3]``; or the
+first entry for a later one: ``x[0]`` for ``x[3]``), two names exchanged (throughout, or two of a kind in one
+expression), a solve or an inverse left out or made with the matrix's diagonal alone (``b / np.diag(M)`` for
+``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside an offset where it is the same on
+every input), a sum that keeps only its last term, a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``),
+a count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for
+``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the course's notation), a quantity
+read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a coordinate system read for another
+(``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to one: a wrong frame), a factor of a
+sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a term
+written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is
+replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one factor of a product
+inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no
+inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3
+@ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state read as alternate entries (``y[::2]``, ``y[1::2]`` for
+``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term of a difference
+left out (``r r^T`` for ``r.r E - r r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``, its second keeping
+its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
+``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product
+it is a factor of (the step of an integration, ``dt``, left out of a product, there or in one place: each update takes a
+whole unit of time), a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``) or its square where the length
+belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix the function writes out passed to a call with the
+wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a product (``(m
+* a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one statement
+(``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts with its last
+or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped), and one read of
+a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``,
+``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum of the other and
+more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it reads in a sine or
+a cosine or passes where a function of the reference reads its parameter so), and a parameter read as the constant or
+the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
+``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one
+read or at all of them: the argument ignored (and every parameter that has a default read as it at once: every argument
+ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
 ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
 entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
 are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
@@ -1861,8 +1862,9 @@ def _call_slips(node: ast.Call):
 
 
 def _index_slips(node: ast.Subscript):
-    """A neighbouring index: a number one more or less (not below 0), an expression plus or minus one, a slice of
-    whole numbers one row on or back (as many entries)."""
+    """A neighbouring index: a number one more or less (not below 0), or 0 for a number of 2 or more (the first
+    entry where a later one belongs), an expression plus or minus one, a slice of whole numbers one row on or back
+    (as many entries)."""
     index = node.slice
     entries = index.elts if isinstance(index, ast.Tuple) else [index]
     for k, entry in enumerate(entries):
@@ -1870,6 +1872,8 @@ def _index_slips(node: ast.Subscript):
             for step in (-1, 1):
                 if entry.value + step >= 0:
                     yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)
+            if entry.value >= 2:  # ``x[0]`` for ``x[3]``: the first entry where a later one belongs
+                yield "index", lambda n, k=k, step=-entry.value: _reindexed(n, k, step)
         elif isinstance(entry, (ast.Name, ast.BinOp)):
             for step in (-1, 1):
                 yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)

@@ -1,8 +1,9 @@
-"""The formula tier's slip of names bound in another order (``grader.diagnosis.mutants``: ``cycled``, on names bound
-as well as read): ``phi, x, y = q`` for ``x, y, phi = q``, each name bound from another's row, told as quantities in
-another order; and a slice of a state one row on (``y[1:4]`` for ``y[:3]``: as many entries, each from the next
-row), told as a neighbouring index.  Planted into a made-up problem that the tier names on two inputs, with the near
-misses of a name bound from a row that no order of the three gives and of a slice two rows on."""
+"""The formula tier's slip of names bound in another order (``grader.diagnosis.mutants``: ``cycled``, on names bound as
+well as read): ``phi, x, y = q`` for ``x, y, phi = q``, each name bound from another's row, told as quantities in
+another order; and a slice of a state one row on (``y[1:4]`` for ``y[:3]``: as many entries, each from the next row),
+told as a neighbouring index, as is the first entry read for a later one (``q[0]`` for ``q[2]``).  Planted into a
+made-up problem that the tier names on two inputs, with the near misses of a name bound from a row that no order of the
+three gives and of a slice two rows on."""
 
 import numpy as np
 import pytest
@@ -88,3 +89,14 @@ def test_a_slice_of_the_state_one_row_on_is_a_neighbouring_index(made_up):
     evidences = made_up_evidences(made_up, "event_state", two_on, STATES, number=92)
     hypotheses = mutants.mutant_slips(scene("p92.event_state"), evidences)
     assert "wrong_index" not in {h.name for h in hypotheses}, [(h.name, h.detail) for h in hypotheses]
+
+
+def test_the_first_entry_read_for_a_later_one_is_a_wrong_index(made_up):
+    """``q[0]`` for ``q[2]``: an index of 2 or more read as 0 (the first entry), told as a wrong index."""
+    def student(y):
+        q = y[:3]
+        return np.array([q[0] - 2.0 * q[1], q[0] ** 2 + y[4]])
+
+    evidences = made_up_evidences(made_up, "event_state", student, STATES, number=92)
+    hypotheses = mutants.mutant_slips(scene("p92.event_state"), evidences)
+    assert {h.name for h in hypotheses} == {"wrong_index"}, [(h.name, h.detail) for h in hypotheses]
