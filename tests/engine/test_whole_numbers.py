@@ -1,8 +1,9 @@
 """The formula tier's slips of whole numbers and of sums (``grader.diagnosis.mutants``): an array created as one of
 integers and then filled with floats (``np.zeros(n, dtype=int)``), a number converted with ``int`` where ``float``
 belongs, a division by a whole number written ``//``, a length taken as its square (``v @ v`` for
-``np.linalg.norm(v)``), a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``) and a term of a sum
-left outside the solve it belongs under (``solve(M, f + g) + tau``).
+``np.linalg.norm(v)``), a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``) and a term of a sum left
+outside the solve it belongs under (``solve(M, f + g) + tau``), or every term subtracted added instead (``M qdd + f +
+g`` for ``M qdd - f - g``).
 
 Each is a mistake planted into a made-up problem that the tier names on two inputs, with a near miss it must not
 name: a floor division whose quotient is zero on every input (an answer of zeros, which many slips reproduce, tells
@@ -58,6 +59,13 @@ def accelerations(M, f, g, tau):
     """The accelerations that solve ``M qdd = f + g + tau``."""
     # BEGIN SOLUTION problem 95
     return np.linalg.solve(M, f + g + tau)
+    # END SOLUTION
+
+
+def torque(M, qdd, f, g):
+    """The torque that gives ``qdd`` against the bias ``f + g``."""
+    # BEGIN SOLUTION problem 95
+    return M @ qdd - f - g
     # END SOLUTION
 
 
@@ -154,3 +162,11 @@ def test_a_term_left_outside_the_solve_is_an_inverse_missing(made_up):
     hypotheses = found(made_up, "accelerations", lambda M, f, g, tau: np.linalg.solve(M, f) + g + tau, inputs)
     assert {h.name for h in hypotheses} == {"no_inverse"}, [(h.name, h.detail) for h in hypotheses]
     assert any("`accelerations` solves with a matrix for part of a sum only" in h.detail for h in hypotheses)
+
+
+def test_every_term_subtracted_added_instead_is_a_sign(made_up):
+    M = np.array([[2.0, 0.3, 0.0], [0.3, 1.5, 0.2], [0.0, 0.2, 1.0]])
+    inputs = [(M, np.array([0.3, -1.0, 0.5]), np.array([0.0, -2.0, 0.1]), np.array([1.0, 0.4, -0.7])),
+              (1.5 * M, np.array([-0.8, 0.2, 1.1]), np.array([0.5, 0.3, -1.2]), np.array([-0.4, 0.9, 0.6]))]
+    hypotheses = found(made_up, "torque", lambda M, qdd, f, g: M @ qdd + f + g, inputs)
+    assert {h.name for h in hypotheses} == {"sign_flip"}, [(h.name, h.detail) for h in hypotheses]
