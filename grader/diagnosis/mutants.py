@@ -535,6 +535,8 @@ SLIPS = {
     "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
     "frame_objects": ("wrong_frame", "`{f}` reads one coordinate system where another belongs (``C1`` for ``C3``)"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
+    "spread": ("wrong_factor", "a factor of one term in `{f}` multiplies the whole sum (``m * (a + b)`` for ``m * a + "
+                               "b``)"),
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
     "rotated": ("wrong_frame", "a rotation in `{f}` is applied to one term of a sum only, not the whole sum"),
     "entry_sign": ("sign_flip", "one entry that `{f}` builds has the wrong sign"),
@@ -1706,6 +1708,10 @@ def _binop_slips(node: ast.BinOp):
     op = node.op
     if isinstance(op, ast.Sub) and isinstance(node.left, ast.BinOp) and isinstance(node.left.op, ast.Sub):
         yield "sign", _all_added  # ``a + f + g`` for ``a - f - g``: every term subtracted added instead
+    if isinstance(op, (ast.Add, ast.Sub)) and _leading_factor(node.left) is not None:
+        # ``m * (a + b)`` for ``m * a + b`` (``m * (J.T @ J + R)`` for ``m * J.T @ J + R``): the first term's factor
+        # on both
+        yield "spread", _spread
     if isinstance(op, (ast.Add, ast.Sub)):
         other = ast.Sub() if isinstance(op, ast.Add) else ast.Add()
         yield "sign", lambda n: _with(n, op=other)
@@ -1773,6 +1779,24 @@ def _binop_slips(node: ast.BinOp):
                 for slip, factor in (("doubled", 2.0), ("halved", 0.5)):
                     yield slip, lambda n, side=side, factor=factor: _with(
                         n, **{side: ast.Constant(getattr(n, side).value * factor)})
+
+
+def _leading_factor(node):
+    """``(factor, rest)`` of a product whose first factor is a name multiplied in (``m`` and ``J.T @ J`` of ``m *
+    J.T @ J``), or None."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult) and isinstance(node.left, (ast.Name,
+                                                                                                 ast.Attribute)):
+        return node.left, node.right
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Mult, ast.MatMult)):
+        inner = _leading_factor(node.left)
+        if inner is not None:
+            return inner[0], ast.BinOp(inner[1], node.op, node.right)
+    return None
+
+
+def _spread(node: ast.BinOp):
+    factor, rest = _leading_factor(node.left)
+    return ast.BinOp(factor, ast.Mult(), ast.BinOp(rest, node.op, node.right))
 
 
 def _all_added(node: ast.BinOp):

@@ -3,7 +3,7 @@ integers and then filled with floats (``np.zeros(n, dtype=int)``), a number conv
 belongs, a division by a whole number written ``//``, a length taken as its square (``v @ v`` for
 ``np.linalg.norm(v)``), a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``) and a term of a sum left
 outside the solve it belongs under (``solve(M, f + g) + tau``), or every term subtracted added instead (``M qdd + f +
-g`` for ``M qdd - f - g``).
+g`` for ``M qdd - f - g``), or a factor of one term multiplying the whole sum (``m * (J.T @ J + R.T @ R)``).
 
 Each is a mistake planted into a made-up problem that the tier names on two inputs, with a near miss it must not
 name: a floor division whose quotient is zero on every input (an answer of zeros, which many slips reproduce, tells
@@ -66,6 +66,13 @@ def torque(M, qdd, f, g):
     """The torque that gives ``qdd`` against the bias ``f + g``."""
     # BEGIN SOLUTION problem 95
     return M @ qdd - f - g
+    # END SOLUTION
+
+
+def shares(m, J, R):
+    """A made-up mass matrix: the translational share of mass ``m`` and the rotational one."""
+    # BEGIN SOLUTION problem 95
+    return m * J.T @ J + R.T @ R
     # END SOLUTION
 
 
@@ -170,3 +177,15 @@ def test_every_term_subtracted_added_instead_is_a_sign(made_up):
               (1.5 * M, np.array([-0.8, 0.2, 1.1]), np.array([0.5, 0.3, -1.2]), np.array([-0.4, 0.9, 0.6]))]
     hypotheses = found(made_up, "torque", lambda M, qdd, f, g: M @ qdd + f + g, inputs)
     assert {h.name for h in hypotheses} == {"sign_flip"}, [(h.name, h.detail) for h in hypotheses]
+
+
+def test_a_factor_of_one_term_multiplying_the_whole_sum_is_a_factor(made_up):
+    """The near miss: the second term scaled by the square of the factor is no factor spread over the sum."""
+    rng = np.random.default_rng(7)
+    inputs = [(2.5, rng.normal(size=(2, 3)), rng.normal(size=(2, 3))), (0.7, rng.normal(size=(2, 3)),
+                                                                       rng.normal(size=(2, 3)))]
+    hypotheses = found(made_up, "shares", lambda m, J, R: m * (J.T @ J + R.T @ R), inputs)
+    assert {h.name for h in hypotheses} == {"wrong_factor"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("multiplies the whole sum" in h.detail for h in hypotheses)
+    hypotheses = found(made_up, "shares", lambda m, J, R: m * J.T @ J + m ** 2 * R.T @ R, inputs)
+    assert not any("whole sum" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
