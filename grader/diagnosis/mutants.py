@@ -44,15 +44,16 @@ np.cos(q2), np.sin(q2)``), degrees, a transpose or one on the wrong factor (or a
 transposed), a neighbouring index (or a slice of as many entries one row on or back: ``y[1:4]`` for ``y[:3]``; or the
 first entry for a later one: ``x[0]`` for ``x[3]``), two names exchanged (throughout, or two of a kind in one
 expression), a term of a sum left outside the solve it belongs under (``solve(M, f + g) + tau``), every term subtracted
-added instead (``a + f + g`` for ``a - f - g``), a solve or an inverse left out or made with the matrix's diagonal alone
-(``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside an offset
-where it is the same on every input), a sum that keeps only its last term, a running sum left out (``steps`` for
-``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for
-``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the
-course's notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a coordinate system read
-for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to one: a wrong frame), a
-factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a
-term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is
+added instead (``a + f + g`` for ``a - f - g``), a factor of one term multiplying the whole sum (``m * (a + b)`` for ``m
+* a + b``), a solve or an inverse left out or made with the matrix's diagonal alone (``b / np.diag(M)`` for
+``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside an offset where it is the same on
+every input), a sum that keeps only its last term, a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``),
+a count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for
+``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the course's notation), a quantity
+read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a coordinate system read for another
+(``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to one: a wrong frame), a factor of a
+sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a term
+written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is
 replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one factor of a product
 inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no
 inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3
