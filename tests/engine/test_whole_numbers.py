@@ -3,7 +3,8 @@ integers and then filled with floats (``np.zeros(n, dtype=int)``), a number conv
 belongs, a division by a whole number written ``//``, a length taken as its square (``v @ v`` for
 ``np.linalg.norm(v)``), a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``) and a term of a sum left
 outside the solve it belongs under (``solve(M, f + g) + tau``), or every term subtracted added instead (``M qdd + f +
-g`` for ``M qdd - f - g``), or a factor of one term multiplying the whole sum (``m * (J.T @ J + R.T @ R)``).
+g`` for ``M qdd - f - g``), or a factor of one term multiplying the whole sum (``m * (J.T @ J + R.T @ R)``), or the
+weights of two terms exchanged (``w * a + (1 - w) * b``).
 
 Each is a mistake planted into a made-up problem that the tier names on two inputs, with a near miss it must not
 name: a floor division whose quotient is zero on every input (an answer of zeros, which many slips reproduce, tells
@@ -73,6 +74,13 @@ def shares(m, J, R):
     """A made-up mass matrix: the translational share of mass ``m`` and the rotational one."""
     # BEGIN SOLUTION problem 95
     return m * J.T @ J + R.T @ R
+    # END SOLUTION
+
+
+def blend(a, b, w):
+    """A made-up blend of ``a`` and ``b`` by the weight ``w``."""
+    # BEGIN SOLUTION problem 95
+    return (1.0 - w) * a + w * b
     # END SOLUTION
 
 
@@ -189,3 +197,11 @@ def test_a_factor_of_one_term_multiplying_the_whole_sum_is_a_factor(made_up):
     assert any("multiplies the whole sum" in h.detail for h in hypotheses)
     hypotheses = found(made_up, "shares", lambda m, J, R: m * J.T @ J + m ** 2 * R.T @ R, inputs)
     assert not any("whole sum" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+def test_the_weights_of_two_terms_exchanged_are_swapped(made_up):
+    inputs = [(np.array([0.3, -1.0, 0.5]), np.array([1.2, 0.4, -0.7]), 0.3),
+              (np.array([-0.8, 0.2, 1.1]), np.array([0.5, 0.3, -1.2]), 0.15)]
+    hypotheses = found(made_up, "blend", lambda a, b, w: w * a + (1.0 - w) * b, inputs)  # a, b exchanged alike
+    assert {DIAGNOSES[h.name].family for h in hypotheses} == {"order"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("the weights of two terms of a sum in `blend` are exchanged" in h.detail for h in hypotheses)
