@@ -1712,8 +1712,9 @@ def _binop_slips(node: ast.BinOp):
     if isinstance(op, ast.Sub) and isinstance(node.left, ast.BinOp) and isinstance(node.left.op, ast.Sub):
         yield "sign", _all_added  # ``a + f + g`` for ``a - f - g``: every term subtracted added instead
     if isinstance(op, ast.Add) and all(isinstance(side, ast.BinOp) and isinstance(side.op, ast.Mult)
-                                       for side in (node.left, node.right)):
-        # ``w * a + (1 - w) * b`` for ``(1 - w) * a + w * b``: the weights of two terms exchanged
+                                       for side in (node.left, node.right)) \
+            and not (_number(node.left.left) and _number(node.right.left)):
+        # ``w * a + (1 - w) * b`` for ``(1 - w) * a + w * b``: the weights of two terms exchanged (not two numbers)
         yield "weights", lambda n: _with(n, left=_with(n.left, left=n.right.left),
                                          right=_with(n.right, left=n.left.left))
     if isinstance(op, (ast.Add, ast.Sub)) and _leading_factor(node.left) is not None:
