@@ -45,83 +45,84 @@ transposed), a neighbouring index (or a slice of as many entries one row on or b
 first entry for a later one: ``x[0]`` for ``x[3]``), two names exchanged (throughout, or two of a kind in one
 expression), a term of a sum left outside the solve it belongs under (``solve(M, f + g) + tau``), every term subtracted
 added instead (``a + f + g`` for ``a - f - g``), a factor of one term multiplying the whole sum (``m * (a + b)`` for ``m
-* a + b``), the weights of two terms exchanged (``w * a + (1 - w) * b`` for ``(1 - w) * a + w * b``), a solve or an
-inverse left out or made with the matrix's diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry
-of a matrix or vector written 0 (told beside an offset where it is the same on every input), a sum that keeps only its
-last term, a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where
-its rate belongs or the reverse (``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an
-attribute of the reference, related by the course's notation), a quantity read in another frame's coordinates (``B_v_B``
-for ``I_v_B``), a coordinate system read for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of
-a call or given to one: a wrong frame), a factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``),
-one entry of a list with the wrong sign (a term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value
-that the object keeps added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor:
-a term added), one factor of a product inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @
-b``, for ``solve(A @ B, b)``: no inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of
-a longer product exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state read as alternate
-entries (``y[::2]``, ``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair (``B_J_R`` for
-``B_J_S``), the first term of a difference left out (``r r^T`` for ``r.r E - r r^T``, its second read as it is, and
-``-qd`` for ``qd_des - qd``, its second keeping its minus), a position taken from the origin where it is measured from a
-point (``I_r_E`` for ``I_r_E - anchor``, and ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left
-out), an argument left out of every product it is a factor of (the step of an integration, ``dt``, left out of a
-product, there or in one place: each update takes a whole unit of time), a length where its square belongs (``np.sqrt(r
-@ r)`` for ``r @ r``) or its square where the length belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix
-the function writes out passed to a call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a
-power or a root over the wrong part of a product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x /
-m)``), a slice's axes exchanged in one statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a
-list of three to six names that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound:
-``phi, x, y = q``; entries swapped), and one read of a name for another of its kind: an angle where another angle
-belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and
-where one angle is bound to a sum of the other and more, ``g_e = q2 + q4``, a term added or left out as well; the angles
-of a function are the names it reads in a sine or a cosine or passes where a function of the reference reads its
-parameter so), and a parameter read as the constant or the number of its default, as its module's constant of its name
-in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as
-the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of them: the argument ignored (and every parameter that
-has a default read as it at once: every argument ignored); a name computed from a value at the start read, once, as that
-start (``cardan(*ANGLES0)`` for ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the
-end, an initial state); and an entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong
-index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one item fewer, that stops one
-short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps
-over a range one step longer (``range(n + 1)``: one step too many), a keyword argument left out of a call of a function
-or a class of the reference whose parameter of that name has a default (the callee then uses the default: a term left
-out, a joint built without its ``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an
-offset), every inverse and solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse),
-and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term
-added, told as an offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r)
-* np.eye(3)``: the identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one
-statement where the function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside
-``self.B_I_B``: a wrong frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``);
-last of all, after the reads of names, every read of one of a function's arguments multiplied by the factor of a
-conversion of units into the ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in
-rad/s, ``phi * np.pi / 180`` of an angle already in radians: a scale).  The reads of names and the indices written come
-after every other slip of every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the
-older slips first), and the slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single,
-``np.asarray(q, dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer,
-``dtype=int``, it cuts every value to a whole number, as do an array created of integers and filled with floats,
-``np.zeros(n, dtype=int)``, a number converted with ``int`` where ``float`` belongs, and a division by a whole number
-written ``//``: far outside the band, not one of these); an argument converted to float32 at a function's start; a
-constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant
-rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577,
-``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is told only where
-the student's value is in the band such slips make (``PRECISION_BAND``), differs from the expected one beyond the
-tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left at most); on a comparison of one input
-(no second one to draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is
-as truly a slip of another family is told with both names, as a twin (``rivals``): a product with a quantity where the
-division by it belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each
-where the other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored,
-where the engine could test none of the call's arguments itself, and so is an argument of the call that the engine's
-test had no budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos
-exchanged in a term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong
-rows; a skew matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round
-as a sign or the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant
-is kept when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the second
-one (and on a third where the engine can draw one), and differs from the expected value (an equivalent mutant says
-nothing).  Where the probe computes more than the compared value and declares the cheaper call that holds it (``part``:
-``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only
-where it reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part
-for the others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from
-one kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of
-one family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never
-the reference's code.
+* a + b``), the weights of two terms exchanged (``w * a + (1 - w) * b`` for ``(1 - w) * a + w * b``), a range counted
+from one (``np.arange(1, n + 1)`` for ``np.arange(n)``: an offset), a solve or an inverse left out or made with the
+matrix's diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0
+(told beside an offset where it is the same on every input), a sum that keeps only its last term, a running sum left out
+(``steps`` for ``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where its rate belongs or the reverse
+(``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference,
+related by the course's notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a
+coordinate system read for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to
+one: a wrong frame), a factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list
+with the wrong sign (a term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps
+added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one
+factor of a product inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A
+@ B, b)``: no inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product
+exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state read as alternate entries (``y[::2]``,
+``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term
+of a difference left out (``r r^T`` for ``r.r E - r r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``,
+its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E
+- anchor``, and ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of
+every product it is a factor of (the step of an integration, ``dt``, left out of a product, there or in one place: each
+update takes a whole unit of time), a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``) or its square
+where the length belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix the function writes out passed to a
+call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a
+product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
+statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
+with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped),
+and one read of a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for
+``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum
+of the other and more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it
+reads in a sine or a cosine or passes where a function of the reference reads its parameter so), and a parameter read as
+the constant or the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for
+``wire_length``, ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m
+* g``), at one read or at all of them: the argument ignored (and every parameter that has a default read as it at once:
+every argument ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
+``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
+entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
+are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
+body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps over a range one step longer
+(``range(n + 1)``: one step too many), a keyword argument left out of a call of a function or a class of the reference
+whose parameter of that name has a default (the callee then uses the default: a term left out, a joint built without its
+``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and
+solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix
+written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added, told as an
+offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the
+identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one statement where the
+function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong
+frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the
+reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the
+ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180``
+of an angle already in radians: a scale).  The reads of names and the indices written come after every other slip of
+every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
+slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q,
+dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts
+every value to a whole number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a
+number converted with ``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the
+band, not one of these); an argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or
+3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to two, three or four
+decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come
+with the reads of names, after the other slips).  A slip of precision is told only where the student's value is in the
+band such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
+(``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to draw) the slips of
+precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of another family is
+told with both names, as a twin (``rivals``): a product with a quantity where the division by it belongs (or the
+reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the other belongs (a
+state row); a parameter with a default that the edit leaves unused is an argument ignored, where the engine could test
+none of the call's arguments itself, and so is an argument of the call that the engine's test had no budget to change. A
+slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an exchange of
+reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew matrix transposed is
+its negative, told as a sign or a transpose, and a cross product the other way round as a sign or the factors' order
+(``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is kept when its value
+reproduces the student's within the comparison's tolerance on the input shown *and* on the second one (and on a third
+where the engine can draw one), and differs from the expected value (an equivalent mutant says nothing).  Where the
+probe computes more than the compared value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``,
+``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only where it reproduces
+the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part for the others.
+Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from one kept for
+the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of one family
+of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never the
+reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
@@ -536,6 +537,8 @@ SLIPS = {
     "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
     "frame_objects": ("wrong_frame", "`{f}` reads one coordinate system where another belongs (``C1`` for ``C3``)"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
+    "one_based": ("offset", "`{f}` counts from one where numpy counts from zero (``np.arange(1, n + 1)`` for "
+                            "``np.arange(n)``)"),
     "weights": ("swapped", "the weights of two terms of a sum in `{f}` are exchanged (``w * a + (1 - w) * b`` for "
                            "``(1 - w) * a + w * b``)"),
     "spread": ("wrong_factor", "a factor of one term in `{f}` multiplies the whole sum (``m * (a + b)`` for ``m * a + "
@@ -1857,6 +1860,8 @@ def _call_slips(node: ast.Call):
         yield "root", lambda n: n.args[0]
     if callee == "norm" and len(args) == 1 and not node.keywords:  # ``w @ w`` for ``np.linalg.norm(w)``
         yield "root", lambda n: ast.BinOp(n, ast.Pow(), ast.Constant(2))
+    if callee == "arange" and len(args) == 1 and not node.keywords:  # ``np.arange(1, n + 1)``: counted from one
+        yield "one_based", lambda n: _with(n, args=[ast.Constant(1), ast.BinOp(n.args[0], ast.Add(), ast.Constant(1))])
     if callee == "cumsum" and len(args) == 1:  # ``steps`` for ``np.cumsum(steps, axis=0)``: each its own term alone
         yield "running_sum", lambda n: n.args[0]
     if callee == "dot" and len(args) == 2 and ast.dump(args[0]) == ast.dump(args[1]):

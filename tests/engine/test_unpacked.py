@@ -1,9 +1,9 @@
 """The formula tier's slip of names bound in another order (``grader.diagnosis.mutants``: ``cycled``, on names bound as
 well as read): ``phi, x, y = q`` for ``x, y, phi = q``, each name bound from another's row, told as quantities in
 another order; and a slice of a state one row on (``y[1:4]`` for ``y[:3]``: as many entries, each from the next row),
-told as a neighbouring index, as is the first entry read for a later one (``q[0]`` for ``q[2]``).  Planted into a
-made-up problem that the tier names on two inputs, with the near misses of a name bound from a row that no order of the
-three gives and of a slice two rows on."""
+told as a neighbouring index, as is the first entry read for a later one (``q[0]`` for ``q[2]``); and a range counted
+from one (``np.arange(1, n + 1)``), told as an offset.  Planted into a made-up problem that the tier names on two
+inputs, with the near misses of a name bound from a row that no order of the three gives and of a slice two rows on."""
 
 import numpy as np
 import pytest
@@ -23,6 +23,14 @@ def pin(q):
     # BEGIN SOLUTION problem 92
     x, y, phi = q
     return np.array([x + 2.0 * y, y * phi, np.cos(phi)])
+    # END SOLUTION
+
+
+def harmonics(n, t):
+    """The cosines of the first ``n`` harmonics of ``t``, the constant one first."""
+    # BEGIN SOLUTION problem 92
+    k = np.arange(n)
+    return np.cos(k * t)
     # END SOLUTION
 
 
@@ -100,3 +108,18 @@ def test_the_first_entry_read_for_a_later_one_is_a_wrong_index(made_up):
     evidences = made_up_evidences(made_up, "event_state", student, STATES, number=92)
     hypotheses = mutants.mutant_slips(scene("p92.event_state"), evidences)
     assert {h.name for h in hypotheses} == {"wrong_index"}, [(h.name, h.detail) for h in hypotheses]
+
+
+def test_a_range_counted_from_one_is_an_offset(made_up):
+    """``np.arange(1, n + 1)`` for ``np.arange(n)`` (MATLAB's ``1:n``): an offset; the near miss, counted from two,
+    is not that slip."""
+    inputs = [(4, 0.7), (5, 1.3)]
+    evidences = made_up_evidences(made_up, "harmonics", lambda n, t: np.cos(np.arange(1, n + 1) * t), inputs,
+                                  number=92)
+    hypotheses = mutants.mutant_slips(scene("p92.harmonics"), evidences)
+    assert {h.name for h in hypotheses} == {"offset"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`harmonics` counts from one where numpy counts from zero" in h.detail for h in hypotheses)
+    evidences = made_up_evidences(made_up, "harmonics", lambda n, t: np.cos(np.arange(2, n + 2) * t), inputs,
+                                  number=92)
+    hypotheses = mutants.mutant_slips(scene("p92.harmonics"), evidences)
+    assert not any("counts from one" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
