@@ -46,38 +46,39 @@ first entry for a later one: ``x[0]`` for ``x[3]``), two names exchanged (throug
 expression), a term of a sum left outside the solve it belongs under (``solve(M, f + g) + tau``), every term subtracted
 added instead (``a + f + g`` for ``a - f - g``), a factor of one term multiplying the whole sum (``m * (a + b)`` for ``m
 * a + b``), the weights of two terms exchanged (``w * a + (1 - w) * b`` for ``(1 - w) * a + w * b``), a range counted
-from one (``np.arange(1, n + 1)`` for ``np.arange(n)``: an offset), a solve or an inverse left out or made with the
-matrix's diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0
-(told beside an offset where it is the same on every input), a sum that keeps only its last term, a running sum left out
-(``steps`` for ``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where its rate belongs or the reverse
-(``qd`` for ``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference,
-related by the course's notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a
-coordinate system read for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to
-one: a wrong frame), a factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list
-with the wrong sign (a term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps
-added to where it is replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one
-factor of a product inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A
-@ B, b)``: no inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product
-exchanged (``R3 @ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state read as alternate entries (``y[::2]``,
-``y[1::2]`` for ``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term
-of a difference left out (``r r^T`` for ``r.r E - r r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``,
-its second keeping its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E
-- anchor``, and ``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of
-every product it is a factor of (the step of an integration, ``dt``, left out of a product, there or in one place: each
-update takes a whole unit of time), a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``) or its square
-where the length belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix the function writes out passed to a
-call with the wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a
-product (``(m * a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one
-statement (``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts
-with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped),
-and one read of a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for
-``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum
-of the other and more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it
-reads in a sine or a cosine or passes where a function of the reference reads its parameter so), and a parameter read as
-the constant or the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for
-``wire_length``, ``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m
-* g``), at one read or at all of them: the argument ignored (and every parameter that has a default read as it at once:
-every argument ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
+from one (``np.arange(1, n + 1)`` for ``np.arange(n)``: an offset), the identity written where a square block of zeros
+belongs (``np.eye(k)`` for ``np.zeros((k, k))``: a term added), a solve or an inverse left out or made with the matrix's
+diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside
+an offset where it is the same on every input), a sum that keeps only its last term, a running sum left out (``steps``
+for ``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for
+``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the
+course's notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a coordinate system read
+for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to one: a wrong frame), a
+factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a
+term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is
+replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one factor of a product
+inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no
+inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3
+@ R1 @ R2`` for ``R3 @ R2 @ R1``), the halves of a run's state read as alternate entries (``y[::2]``, ``y[1::2]`` for
+``y[:3]``, ``y[3:]``), a matrix read for its sibling of a pair (``B_J_R`` for ``B_J_S``), the first term of a difference
+left out (``r r^T`` for ``r.r E - r r^T``, its second read as it is, and ``-qd`` for ``qd_des - qd``, its second keeping
+its minus), a position taken from the origin where it is measured from a point (``I_r_E`` for ``I_r_E - anchor``, and
+``I_r_E`` or ``-I_r_E`` for ``anchor - I_r_E``: an offset, not a term left out), an argument left out of every product
+it is a factor of (the step of an integration, ``dt``, left out of a product, there or in one place: each update takes a
+whole unit of time), a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``) or its square where the length
+belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix the function writes out passed to a call with the
+wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a product (``(m
+* a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one statement
+(``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts with its last
+or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped), and one read of
+a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``,
+``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum of the other and
+more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it reads in a sine or
+a cosine or passes where a function of the reference reads its parameter so), and a parameter read as the constant or
+the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
+``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one
+read or at all of them: the argument ignored (and every parameter that has a default read as it at once: every argument
+ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
 ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
 entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
 are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
@@ -537,6 +538,8 @@ SLIPS = {
     "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
     "frame_objects": ("wrong_frame", "`{f}` reads one coordinate system where another belongs (``C1`` for ``C3``)"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
+    "identity_block": ("extra_term", "`{f}` writes the identity where a square block of zeros belongs (``np.eye(k)`` "
+                                     "for ``np.zeros((k, k))``)"),
     "one_based": ("offset", "`{f}` counts from one where numpy counts from zero (``np.arange(1, n + 1)`` for "
                             "``np.arange(n)``)"),
     "weights": ("swapped", "the weights of two terms of a sum in `{f}` are exchanged (``w * a + (1 - w) * b`` for "
@@ -1860,6 +1863,9 @@ def _call_slips(node: ast.Call):
         yield "root", lambda n: n.args[0]
     if callee == "norm" and len(args) == 1 and not node.keywords:  # ``w @ w`` for ``np.linalg.norm(w)``
         yield "root", lambda n: ast.BinOp(n, ast.Pow(), ast.Constant(2))
+    if callee == "zeros" and len(args) == 1 and isinstance(args[0], ast.Tuple) and len(args[0].elts) == 2 \
+            and ast.dump(args[0].elts[0]) == ast.dump(args[0].elts[1]):  # ``np.eye(k)`` for ``np.zeros((k, k))``
+        yield "identity_block", lambda n: ast.Call(_np("eye"), [n.args[0].elts[0]], [])
     if callee == "arange" and len(args) == 1 and not node.keywords:  # ``np.arange(1, n + 1)``: counted from one
         yield "one_based", lambda n: _with(n, args=[ast.Constant(1), ast.BinOp(n.args[0], ast.Add(), ast.Constant(1))])
     if callee == "cumsum" and len(args) == 1:  # ``steps`` for ``np.cumsum(steps, axis=0)``: each its own term alone

@@ -4,7 +4,8 @@ belongs, a division by a whole number written ``//``, a length taken as its squa
 ``np.linalg.norm(v)``), a running sum left out (``steps`` for ``np.cumsum(steps, axis=0)``) and a term of a sum left
 outside the solve it belongs under (``solve(M, f + g) + tau``), or every term subtracted added instead (``M qdd + f +
 g`` for ``M qdd - f - g``), or a factor of one term multiplying the whole sum (``m * (J.T @ J + R.T @ R)``), or the
-weights of two terms exchanged (``w * a + (1 - w) * b``).
+weights of two terms exchanged (``w * a + (1 - w) * b``), or the identity written where a square block of zeros
+belongs (``np.eye(k)`` for ``np.zeros((k, k))``).
 
 Each is a mistake planted into a made-up problem that the tier names on two inputs, with a near miss it must not
 name: a floor division whose quotient is zero on every input (an answer of zeros, which many slips reproduce, tells
@@ -81,6 +82,14 @@ def blend(a, b, w):
     """A made-up blend of ``a`` and ``b`` by the weight ``w``."""
     # BEGIN SOLUTION problem 95
     return (1.0 - w) * a + w * b
+    # END SOLUTION
+
+
+def saddle(M, J, b):
+    """A made-up saddle-point system ``[[M, -J.T], [J, 0]] x = b`` solved."""
+    # BEGIN SOLUTION problem 95
+    k = J.shape[0]
+    return np.linalg.solve(np.block([[M, -J.T], [J, np.zeros((k, k))]]), b)
     # END SOLUTION
 
 
@@ -205,3 +214,19 @@ def test_the_weights_of_two_terms_exchanged_are_swapped(made_up):
     hypotheses = found(made_up, "blend", lambda a, b, w: w * a + (1.0 - w) * b, inputs)  # a, b exchanged alike
     assert {DIAGNOSES[h.name].family for h in hypotheses} == {"order"}, [(h.name, h.detail) for h in hypotheses]
     assert any("the weights of two terms of a sum in `blend` are exchanged" in h.detail for h in hypotheses)
+
+
+def test_the_identity_where_a_block_of_zeros_belongs_is_a_term_added(made_up):
+    """The near miss: the block written as twice the identity is not that slip."""
+    M = np.array([[2.0, 0.3, 0.0], [0.3, 1.5, 0.2], [0.0, 0.2, 1.0]])
+    inputs = [(M, np.array([[0.4, -1.0, 0.3]]), np.array([0.3, -1.0, 0.5, 0.2])),
+              (1.5 * M, np.array([[-0.2, 0.7, 1.1]]), np.array([-0.8, 0.2, 1.1, -0.6]))]
+
+    def student(block):
+        return lambda M, J, b: np.linalg.solve(np.block([[M, -J.T], [J, block]]), b)
+
+    hypotheses = found(made_up, "saddle", student(np.eye(1)), inputs)
+    assert {h.name for h in hypotheses} == {"extra_term"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`saddle` writes the identity where a square block of zeros belongs" in h.detail for h in hypotheses)
+    hypotheses = found(made_up, "saddle", student(2.0 * np.eye(1)), inputs)
+    assert not any("block of zeros" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
