@@ -527,14 +527,15 @@ left out for proportion and realism (Exercise VII above its share, a contrived e
 set takes about half a minute on a two-core machine (28 s graded, 30 s in all, in the recording run); it was written
 in about 25 minutes.
 
-``--set fresh23`` is a twenty-third held-out set (``tests/diagnosis/fresh23/``), written like the twenty-second and
-kept from the engine's builders until they were done: from the sheet, the problem data and the reference alone, every
-realistic mistake whose check fails, whatever the grader of the day said of it (chosen with the diagnosis engine
-switched off; ``today`` recorded from one run after the set was chosen, at commit 734e1e7, the commit the set's branch
-started from, an empty string where the check names nothing; every entry's check failed in that run, so none was
-dropped after it).  Its check is the first of its problem's checks that it fails; a slip that repeats one of the
-twenty-two earlier sets, their named companions, the engine's own tests or the planted suite (the same file and
-replaced text, the same planted text, or the same slip written otherwise) was dropped.  It holds 31 entries in 22
+``--set fresh23``, the twenty-third held-out set (``tests/diagnosis/fresh23/``), follows the rules of the twenty-second
+and was kept from the engine's builders until they were done.  Its writer worked from the sheet, the problem data and
+the reference alone and kept every realistic mistake whose check fails, whatever the grader of the day said of it: the
+candidates were graded with the diagnosis engine switched off, and ``today`` was recorded from a single run once the
+set was chosen (at commit 734e1e7, where the set's branch started; an empty string where the check names nothing).
+Every entry's check failed in that run, so no entry was dropped after it.  Each entry's check is the first of its
+problem's checks that it fails, and a slip that repeats one of the twenty-two earlier sets, their named companions,
+the engine's own tests or the planted suite (by its file and replaced text, by its planted text, or as the same slip
+written otherwise) was dropped.  It holds 31 entries in 22
 problems of all seven exercises (I 3, II 3, III 4, IV 5, V 5, VI 5, VII 6), at most three of one problem (one problem
 holds three, seven hold two), 14 of them in the problems of ``SIMULATED`` and 17 in Exercise I's MuJoCo problems and
 the problems with runs; the earlier sets had again taken most slips tried (six in ten candidates repeated an earlier

@@ -6,12 +6,13 @@ import contextlib
 import itertools
 
 import numpy as np
+import pytest
 
 from grader.diagnosis import mutants
 from grader.errors import StudentFault
 from grader.private import drop_private, private_import
 
-__all__ = ["StandInOracle", "StandInChild", "made_up_package"]
+__all__ = ["StandInOracle", "StandInChild", "made_up_package", "made_up_fixture", "about_3"]
 
 _NUMBERS = itertools.count()
 
@@ -61,3 +62,20 @@ def made_up_package(tmp_path, monkeypatch, source: str, number: int, label: str,
         yield package
     finally:
         drop_private(package)
+
+
+def made_up_fixture(source: str, number: int, label: str):
+    """A fixture ``made_up``: the package of one made-up problem ``number`` holding ``source``, which the formula
+    tier mutates in place of the reference while a test lasts (``made_up_package``)."""
+    @pytest.fixture
+    def made_up(tmp_path, monkeypatch):
+        with made_up_package(tmp_path, monkeypatch, source, number, label) as package:
+            yield package
+
+    return made_up
+
+
+def about_3(angle: float) -> np.ndarray:
+    """The rotation by ``angle`` about the 3-axis."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])

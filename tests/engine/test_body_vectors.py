@@ -6,12 +6,11 @@ Planted into a made-up problem that the tier names on two inputs, with the near 
 (``A_IB.T @ B_v_B``), which is not that slip."""
 
 import numpy as np
-import pytest
 
 from checks._diagnoses import DIAGNOSES
 from grader.diagnosis import mutants
 
-from .stand_ins import made_up_package
+from .stand_ins import made_up_fixture
 from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem for the slips of a body's coordinates."""
@@ -28,11 +27,7 @@ def drift(A_IB, B_v_B, B_omega_B, dt):
 '''
 
 
-@pytest.fixture
-def made_up(tmp_path, monkeypatch):
-    """A package of one made-up problem (93) that the tier mutates in place of the reference."""
-    with made_up_package(tmp_path, monkeypatch, SOURCE, 93, "body") as package:
-        yield package
+made_up = made_up_fixture(SOURCE, 93, "body")
 
 
 def turn(axis, angle):

@@ -8,12 +8,11 @@ Each is planted into a made-up problem that the tier names on two inputs, with t
 same slip, which the tier does not try) and of an offset three times as long."""
 
 import numpy as np
-import pytest
 
 from checks._diagnoses import DIAGNOSES
 from grader.diagnosis import mutants
 
-from .stand_ins import made_up_package
+from .stand_ins import about_3, made_up_fixture
 from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem for the slips of a loop's first item."""
@@ -53,16 +52,8 @@ def masses(count, m):
 '''
 
 
-@pytest.fixture
-def made_up(tmp_path, monkeypatch):
-    """A package of one made-up problem (94) that the tier mutates in place of the reference."""
-    with made_up_package(tmp_path, monkeypatch, SOURCE, 94, "first") as package:
-        yield package
+made_up = made_up_fixture(SOURCE, 94, "first")
 
-
-def _turn(angle):
-    c, s = np.cos(angle), np.sin(angle)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def student_chain(first_offset: bool, first_turn: bool, reach: float = 1.0):
@@ -72,9 +63,9 @@ def student_chain(first_offset: bool, first_turn: bool, reach: float = 1.0):
         points, A, r = [], np.eye(3), np.zeros(3)
         for k, angle in enumerate(angles):
             P_r_PDp = np.array([0.0, 0.3, 0.0]) if first_offset or k == 0 else np.array([reach * length, 0.0, 0.0])
-            A_PDp = _turn(np.pi / 2) if first_turn or k == 0 else np.eye(3)
+            A_PDp = about_3(np.pi / 2) if first_turn or k == 0 else np.eye(3)
             r = r + A @ P_r_PDp
-            A = A @ A_PDp @ _turn(angle)
+            A = A @ A_PDp @ about_3(angle)
             points.append(r)
         return np.array(points + [r + A @ np.array([length, 0.0, 0.0])])
     return chain

@@ -10,7 +10,7 @@ import pytest
 
 from grader.diagnosis import mutants
 
-from .stand_ins import made_up_package
+from .stand_ins import about_3, made_up_fixture
 from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem of coordinate systems."""
@@ -46,16 +46,8 @@ def coordinates(v, angle):
 '''
 
 
-@pytest.fixture
-def made_up(tmp_path, monkeypatch):
-    """A package of one made-up problem (91) that the tier mutates in place of the reference."""
-    with made_up_package(tmp_path, monkeypatch, SOURCE, 91, "frames") as package:
-        yield package
+made_up = made_up_fixture(SOURCE, 91, "frames")
 
-
-def turn(angle):
-    c, s = np.cos(angle), np.sin(angle)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 INPUTS = [(np.array([0.3, -1.2, 0.7]), 0.4), (np.array([1.1, 0.4, -0.9]), -0.7)]
@@ -70,9 +62,9 @@ def found(package, student):
 def rotation(into, frm):
     """The rotation of the made-up chain from frame ``frm``'s coordinates into ``into``'s."""
     def coordinates(v, angle):
-        A = {"I": np.eye(3), "1": turn(angle)}
-        A["2"] = A["1"] @ turn(2 * angle)
-        A["3"] = A["2"] @ turn(0.5)
+        A = {"I": np.eye(3), "1": about_3(angle)}
+        A["2"] = A["1"] @ about_3(2 * angle)
+        A["3"] = A["2"] @ about_3(0.5)
         return A[into].T @ A[frm] @ v
     return coordinates
 
@@ -100,7 +92,7 @@ def test_a_coordinate_system_read_for_another_is_a_wrong_frame(made_up, pairs, w
 def test_a_vector_turned_by_no_frame_of_the_chain_is_not_that_slip(made_up):
     def other(v, angle):
         right = student(*RIGHT)(v, angle)
-        return np.concatenate([turn(0.9) @ v, right[3:]])
+        return np.concatenate([about_3(0.9) @ v, right[3:]])
 
     hypotheses = found(made_up, other)
     assert not any("coordinate system" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]

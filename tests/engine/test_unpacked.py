@@ -6,11 +6,10 @@ from one (``np.arange(1, n + 1)``), told as an offset.  Planted into a made-up p
 inputs, with the near misses of a name bound from a row that no order of the three gives and of a slice two rows on."""
 
 import numpy as np
-import pytest
 
 from grader.diagnosis import mutants
 
-from .stand_ins import made_up_package
+from .stand_ins import made_up_fixture
 from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem of names bound from a state."""
@@ -43,11 +42,7 @@ def event_state(y):
 '''
 
 
-@pytest.fixture
-def made_up(tmp_path, monkeypatch):
-    """A package of one made-up problem (92) that the tier mutates in place of the reference."""
-    with made_up_package(tmp_path, monkeypatch, SOURCE, 92, "unpacked") as package:
-        yield package
+made_up = made_up_fixture(SOURCE, 92, "unpacked")
 
 
 INPUTS = [(np.array([0.3, -1.2, 0.7]),), (np.array([1.1, 0.4, -0.9]),)]

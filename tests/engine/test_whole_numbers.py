@@ -12,12 +12,11 @@ name: a floor division whose quotient is zero on every input (an answer of zeros
 nothing) and an array of integers that is only read, never filled (numpy's sums of it are floats: no slip)."""
 
 import numpy as np
-import pytest
 
 from checks._diagnoses import DIAGNOSES
 from grader.diagnosis import mutants
 
-from .stand_ins import made_up_package
+from .stand_ins import made_up_fixture
 from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem for the slips of whole numbers."""
@@ -101,11 +100,7 @@ def points(steps):
 '''
 
 
-@pytest.fixture
-def made_up(tmp_path, monkeypatch):
-    """A package of one made-up problem (95) that the tier mutates in place of the reference."""
-    with made_up_package(tmp_path, monkeypatch, SOURCE, 95, "whole") as package:
-        yield package
+made_up = made_up_fixture(SOURCE, 95, "whole")
 
 
 def found(package, name, student, inputs):
