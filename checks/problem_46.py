@@ -19,6 +19,7 @@ from grader.checking import (
     EXACT,
     STAGE_STRUCTURE,
     STAGE_VALUES,
+    CheckFailure,
     Mistake,
     Tol,
     as_array,
@@ -403,7 +404,12 @@ def _assert_other_wire(ctx, sheet_run):
 
 
 def _stays_taut(run, what, anchor=ANCHOR, wire_length=WIRE_LENGTH) -> bool:
-    t, violation = _violation(run, what, anchor, wire_length)
+    """The run holds the end effector on its wire after the impact, within ``TAUT``; False for a run whose times or
+    positions cannot be read (the failure at hand is the other run's, not this one's)."""
+    try:
+        t, violation = _violation(run, what, anchor, wire_length)
+    except CheckFailure:
+        return False
     return not t.size or np.abs(violation).max() <= TAUT.atol
 
 
