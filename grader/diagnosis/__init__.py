@@ -85,8 +85,9 @@ The grammar:
   itself is found where the reference's is), the state at an event read from the run's last output before it (and, its
   twin, a state of another time), a wrong initial state (and, beside it, the slip of a value that gives the student's
   start from the given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start
-  typed rounded, its entries exchanged; on fewer numbers as a twin of the wrong start, "could be" either: one angle
-  typed with the wrong sign), an event found late or early, an error that grows with the step, the run's parameters
+  typed rounded, cut to whole numbers (an integer dtype), its entries exchanged; on fewer numbers as a twin of the wrong
+  start, "could be" either: one angle typed with the wrong sign), an event found late or early, an error that grows with
+  the step, the run's parameters
   exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the reference re-run
   so: a run clearly another than the reference's, or one far nearer to the student's than the reference's is); a
   randomized comparison's second failing run must show the same cause.

@@ -703,13 +703,17 @@ def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
 
 def value_slips(got, given, tol: Tol) -> list:
     """The grammar's slips of one value (``output_slips``: entries exchanged, a sign, a factor, degrees;
-    ``precision_slips``: rounded) that give the student's ``got`` from the ``given`` one, each a hypothesis: what
-    made a start typed wrongly, say.  Told beside the wrong value, never as its only cause where it says fewer
-    than ``ONE_INPUT_NUMBERS`` numbers."""
+    ``precision_slips``: rounded; every number cut to a whole one, an integer dtype) that give the student's ``got``
+    from the ``given`` one, each a hypothesis: what made a start typed wrongly, say.  Told beside the wrong value, never
+    as its only cause where it says fewer than ``ONE_INPUT_NUMBERS`` numbers."""
     got, given = np.asarray(got, dtype=float), np.asarray(given, dtype=float)
     if got.shape != given.shape or not np.all(np.isfinite(got)):
         return []
-    return precision_slips(got, given, tol) + [
+    whole = np.trunc(given)  # ``np.asarray(y0, dtype=int)``: every number cut to a whole one
+    truncated = [Hypothesis("truncated", "integer_truncated", 1, "your values are the given ones cut to whole numbers "
+                            "(converted with an integer dtype, ``dtype=int``): keep them as floats")] \
+        if within(got, whole, tol) and distinct(whole, given, tol) else []
+    return precision_slips(got, given, tol) + truncated + [
         h for h, value in output_slips(given, {}, None, got)
         if not h.twin and value.shape == got.shape and within(got, value, tol) and distinct(value, given, tol)]
 

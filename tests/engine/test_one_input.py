@@ -85,6 +85,15 @@ def test_a_start_typed_short_is_told_as_rounded_beside_the_wrong_start(monkeypat
     assert "rounded to 2 decimals" in finding.hint, finding.hint
 
 
+def test_a_start_cut_to_whole_numbers_is_told_beside_the_wrong_start(monkeypatch):
+    """``np.asarray(q0, dtype=int)``: every angle of the start cut to a whole number (0, 0 and 1: three numbers off),
+    told as values cut to whole numbers beside the wrong start; a start of 1.3 times the given one is not."""
+    finding = _explain_start(monkeypatch, np.trunc(START))
+    assert set(_names(finding)) == {"initial_state", "integer_truncated"}, finding
+    assert "cut to whole numbers" in finding.hint, finding.hint
+    assert "integer_truncated" not in _names(_explain_start(monkeypatch, 1.3 * START))
+
+
 def test_a_start_wrong_in_a_number_or_two_by_a_slip_is_told_could_be_that_slip(monkeypatch):
     """One angle typed with the wrong sign, two angles exchanged: too few numbers to tell the slip as what made
     the start, so it is told as a twin of the wrong start ("could be" either)."""
