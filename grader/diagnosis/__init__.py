@@ -87,10 +87,9 @@ The grammar:
   start from the given one, where the start differs in ``evidence.ONE_INPUT_NUMBERS`` distinct numbers or more: a start
   typed rounded, cut to whole numbers (an integer dtype), its entries exchanged; on fewer numbers as a twin of the wrong
   start, "could be" either: one angle typed with the wrong sign), an event found late or early, an error that grows with
-  the step, the run's parameters
-  exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser tolerances (the reference re-run
-  so: a run clearly another than the reference's, or one far nearer to the student's than the reference's is); a
-  randomized comparison's second failing run must show the same cause.
+  the step, the run's parameters exchanged, scaled or ignored, its start's entries exchanged and solve_ivp at looser
+  tolerances (the reference re-run so: a run clearly another than the reference's, or one far nearer to the student's
+  than the reference's is); a randomized comparison's second failing run must show the same cause.
 
 * models (``models``: a value of the student's MuJoCo model, which a check compares with the sheet's numbers or
   the reference's analytic values, so that no reference call stands behind it): the student's compiled model and
