@@ -81,14 +81,14 @@ def check_versions(ctx):
         fail(f"versions() must return a dict of version strings, got {str(reported)[:200]}",
              'e.g. {"python": "3.11.7", "numpy": "1.26.4", ...}', "type")
     wrong = []
-    expected = {"python": (found["python"],)}
-    expected.update({name: (e["version"], e["distribution"]) for name, e in found["packages"].items()})
+    installed = {"python": (found["python"],)}
+    installed.update({name: (e["version"], e["distribution"]) for name, e in found["packages"].items()})
+    expected = {name: [v for v in values if v] for name, values in installed.items()}
     for name, accepted in expected.items():
-        if reported.get(name) not in [a for a in accepted if a]:
-            wrong.append(f"  {name}: got {reported.get(name)!r}, expected {' or '.join(repr(a) for a in accepted if a)}")
+        if reported.get(name) not in accepted:
+            wrong.append(f"  {name}: got {reported.get(name)!r}, expected {' or '.join(map(repr, accepted))}")
     if wrong:
-        hint, diagnosis = _versions_slip(reported, {name: [a for a in accepted if a] for name, accepted in
-                                                    expected.items()})
+        hint, diagnosis = _versions_slip(reported, expected)
         fail("versions() does not report the versions installed here.\n" + "\n".join(wrong)
              + "\nfound:\n" + _listing(found),
              hint or "Read them with importlib.metadata.version(name) and platform.python_version(); the keys are "

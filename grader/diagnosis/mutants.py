@@ -1016,17 +1016,29 @@ def _position_slips(node):
     """A number of a point's position written out (``P_r_PDp=(half, 0.0, 0.0)``, ``P_r_PDp = (0.0, -0.5, 0.0)``, in
     either branch of a choice) doubled or halved: a full length for a half, or the reverse, which places the point
     elsewhere (told as a factor, and as an offset beside it: ``RIVALS``)."""
-    target = node.arg if isinstance(node, ast.keyword) else \
-        node.targets[0].id if isinstance(node, ast.Assign) and len(node.targets) == 1 \
-        and isinstance(node.targets[0], ast.Name) else None
+    target = _bound_name(node)
     if not target or not _POSITION.match(target):
         return
-    points = [t for t in ast.walk(node.value) if isinstance(t, (ast.Tuple, ast.List)) and 2 <= len(t.elts) <= 3]
-    for i, point in enumerate(points):
+    for i, point in enumerate(_points(node.value)):
         for k, entry in enumerate(point.elts):
             if _scalable(entry):
                 for slip, factor in (("point_doubled", 2.0), ("point_halved", 0.5)):
                     yield slip, lambda n, i=i, k=k, factor=factor: _scaled_entry(n, i, k, factor)
+
+
+def _bound_name(node) -> str | None:
+    """The name a keyword argument or an assignment to one name gives its value (``P_r_PDp`` of ``P_r_PDp=...`` or
+    of ``P_r_PDp = ...``), or None."""
+    if isinstance(node, ast.keyword):
+        return node.arg
+    if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
+        return node.targets[0].id
+    return None
+
+
+def _points(value) -> list:
+    """The points written out in ``value`` (lists or tuples of two or three entries), in ``ast.walk``'s order."""
+    return [t for t in ast.walk(value) if isinstance(t, (ast.Tuple, ast.List)) and 2 <= len(t.elts) <= 3]
 
 
 def _scalable(entry) -> bool:
@@ -1037,7 +1049,7 @@ def _scalable(entry) -> bool:
 
 
 def _scaled_entry(node, i: int, k: int, factor: float):
-    point = [t for t in ast.walk(node.value) if isinstance(t, (ast.Tuple, ast.List)) and 2 <= len(t.elts) <= 3][i]
+    point = _points(node.value)[i]
     entry = point.elts[k]
     point.elts[k] = ast.Constant(entry.value * factor) if _number(entry) else \
         ast.BinOp(ast.Constant(factor), ast.Mult(), entry)
@@ -1051,9 +1063,7 @@ def _first_slips(node, parent):
             and isinstance(node.test.ops[0], ast.Eq) and isinstance(node.test.left, ast.Name)
             and _number(node.test.comparators[0]) and node.test.comparators[0].value == 0):
         return
-    target = parent.arg if isinstance(parent, ast.keyword) else \
-        parent.targets[0].id if isinstance(parent, ast.Assign) and len(parent.targets) == 1 \
-        and isinstance(parent.targets[0], ast.Name) else None
+    target = _bound_name(parent)
     slip = "first_offset" if target and _POSITION.match(target) else \
         "first_frame" if target and _ROTATION.match(target) else None
     if slip is not None:
@@ -1112,8 +1122,8 @@ def _frame_slips(node, names: frozenset, attributes: frozenset):
         return
     turned = {id(b.right) for b in ast.walk(node) if isinstance(b, ast.BinOp) and isinstance(b.op, ast.MatMult)
               and _ROTATION.match(_label(b.left) or "-")}  # a vector turned already (``A_IB @ B_omega_B``)
-    seen, reads = set(), [n for n in ast.walk(node) if isinstance(n, (ast.Name, ast.Attribute))]
-    for k, read in enumerate(reads):
+    seen = set()
+    for k, read in enumerate(_reads_of(node)):
         matrix, vector = _body_matrix(read), _body_vector(read)
         key = ast.dump(read)
         if matrix is not None and key not in seen:  # every read of a matrix at once
@@ -1140,12 +1150,16 @@ class _Turned(ast.NodeTransformer):
         return super().generic_visit(node)
 
 
+def _reads_of(statement) -> list:
+    """The names and attributes of a statement, in ``ast.walk``'s order (a copy of it lists its own alike)."""
+    return [n for n in ast.walk(statement) if isinstance(n, (ast.Name, ast.Attribute))]
+
+
 def _turned_read(statement, k: int, rotation):
     """The statement with its ``k``-th read (of names and attributes, in ``ast.walk``'s order) as ``rotation @
     read``."""
-    reads = [n for n in ast.walk(statement) if isinstance(n, (ast.Name, ast.Attribute))]
     parents = {id(child): parent for parent in ast.walk(statement) for child in ast.iter_child_nodes(parent)}
-    read = reads[k]
+    read = _reads_of(statement)[k]
     _replace(parents[id(read)], read, ast.BinOp(copy.deepcopy(rotation), ast.MatMult(), read))
     return statement
 
