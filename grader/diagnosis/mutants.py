@@ -3564,21 +3564,26 @@ def _imprecise(scene, evidences: list[Evidence], another) -> list[Hypothesis]:
     return _hypotheses(kept, inputs)
 
 
-def _in_band(evidence: Evidence) -> bool:
+def _in_band(evidence: Evidence, differs: bool = True) -> bool:
     """The student's value differs from the expected one by no more than a slip of precision makes
-    (``PRECISION_BAND`` of the expected value's size), and differs."""
+    (``PRECISION_BAND`` of the expected value's size), and differs (``differs``; else it may be the expected one)."""
     got, expected = evidence.got, evidence.expected
     if got is None or expected is None or got.shape != expected.shape or not np.all(np.isfinite(got)):
         return False
     scale = float(np.max(np.abs(expected))) if expected.size else 0.0
     difference = float(np.max(np.abs(got - expected))) if got.size else 0.0
+    if not differs and difference == 0:
+        return True
     return scale > 0 and 0 < difference <= PRECISION_BAND * scale
 
 
 def _precise(mutant: Mutant, inputs: list[Evidence]) -> bool:
     """A mutant of another slip than precision, or one of precision where the student's value is in the band of
-    precision on every input (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well)."""
-    return mutant.slip not in PRECISION_SLIPS or all(_in_band(e) for e in inputs)
+    precision on the input shown and on every other input either in that band or the expected value itself (a value
+    of the same call that the slip leaves as it is: a state's positions where the velocities were rounded), as the
+    mutant's own is there (``_evaluate`` holds it to ``PRECISION_SHARE`` of the difference as well)."""
+    return mutant.slip not in PRECISION_SLIPS or (
+        bool(inputs) and _in_band(inputs[0]) and all(_in_band(e, differs=False) for e in inputs[1:]))
 
 
 def _drawn_constants(scene, evidences: list[Evidence]) -> list[Hypothesis]:
