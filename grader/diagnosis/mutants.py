@@ -100,30 +100,31 @@ slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as si
 dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts
 every value to a whole number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a
 number converted with ``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the
-band, not one of these); an argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or
-3.1416, 9.81 as 9.8, and an expression of numbers or a read of a module's constant rounded to two, three or four
-decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come
-with the reads of names, after the other slips).  A slip of precision is told only where the student's value is in the
-band such slips make (``PRECISION_BAND``), differs from the expected one beyond the tolerance and is reproduced closely
-(``PRECISION_SHARE`` of the difference left at most); on a comparison of one input (no second one to draw) the slips of
-precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of another family is
-told with both names, as a twin (``rivals``): a product with a quantity where the division by it belongs (or the
-reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the other belongs (a
-state row); a parameter with a default that the edit leaves unused is an argument ignored, where the engine could test
-none of the call's arguments itself, and so is an argument of the call that the engine's test had no budget to change. A
-slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a term); an exchange of
-reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew matrix transposed is
-its negative, told as a sign or a transpose, and a cross product the other way round as a sign or the factors' order
-(``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is kept when its value
-reproduces the student's within the comparison's tolerance on the input shown *and* on the second one (and on a third
-where the engine can draw one), and differs from the expected value (an equivalent mutant says nothing).  Where the
-probe computes more than the compared value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``,
-``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only where it reproduces
-the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part for the others.
-Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from one kept for
-the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of one family
-of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never the
-reference's code.
+band, not one of these); an array given no dtype created in single precision; an argument converted to float32 at a
+function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a
+module's constant rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 /
+3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is
+told only where the student's value is in the band such slips make (``PRECISION_BAND``; on the other inputs and the
+call's other values, in that band or the expected value itself), differs from the expected one beyond the tolerance and
+is reproduced closely (``PRECISION_SHARE`` of the difference left at most), and none is tried where the value shown is
+beyond the band; on a comparison of one input (no second one to draw) the slips of precision alone are tried there,
+where the value is in the band.  An edit that is as truly a slip of another family is told with both names, as a twin
+(``rivals``): a product with a quantity where the division by it belongs (or the reverse) uses the quantity as its
+reciprocal; a quantity and its rate exchanged read each where the other belongs (a state row); a parameter with a
+default that the edit leaves unused is an argument ignored, where the engine could test none of the call's arguments
+itself, and so is an argument of the call that the engine's test had no budget to change. A slip is one kind of mistake
+even where it takes more than one edit (sin and cos exchanged in a term); an exchange of reads of a run's state, or a
+read of its other half, is a state read from the wrong rows; a skew matrix transposed is its negative, told as a sign or
+a transpose, and a cross product the other way round as a sign or the factors' order (``grammar.EQUIVALENCES``); inside
+a loop's iterable only exchanges are made.  A mutant is kept when its value reproduces the student's within the
+comparison's tolerance on the input shown *and* on the second one (and on a third where the engine can draw one), and
+differs from the expected value (an equivalent mutant says nothing).  Where the probe computes more than the compared
+value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant
+is evaluated on that call first and on the whole probe only where it reproduces the student's value there: the mutants
+kept are those the whole probe keeps, at the cost of the part for the others. Each call gets its own copy of the input's
+arguments (a mutant may change them in place), unpickled from one kept for the input.  A slip inside an index is one of
+the index.  A cause is named only when the mutants kept are of one family of the vocabulary, or of two; the hint says
+what kind of slip and in which of the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
@@ -828,8 +829,8 @@ _CREATORS = {"zeros": 1, "ones": 1, "empty": 1, "zeros_like": 1, "ones_like": 1,
 
 def _single_slips(node: ast.Call):
     """A dtype of double precision given as single (``np.asarray(q, dtype=float)``, ``.astype(float)``), or as an
-    integer (``dtype=int``: every value cut to a whole number), and a number converted with ``int`` where ``float``
-    belongs."""
+    integer (``dtype=int``: every value cut to a whole number), an array given no dtype created in single precision
+    (``np.array([x, y], dtype=np.float32)``), and a number converted with ``int`` where ``float`` belongs."""
     callee = _callee(node)
     if callee == "float" and isinstance(node.func, ast.Name) and len(node.args) == 1 and not node.keywords:
         yield "integer_call", lambda n: _with(n, func=_integer())
@@ -841,6 +842,9 @@ def _single_slips(node: ast.Call):
         if _callee(node) in ("astype", "array", "asarray") and node.args and _double(node.args[-1]) \
                 and len(node.args) == (1 if _callee(node) == "astype" else 2):
             yield slip, lambda n, dtype=dtype: _with(n, args=n.args[:-1] + [dtype()])
+    if callee in ("array", "asarray") and isinstance(node.func, ast.Attribute) and len(node.args) == 1 \
+            and not node.keywords:  # an array given no dtype, created in single precision
+        yield "single", lambda n: _with(n, keywords=[ast.keyword("dtype", _float32())])
 
 
 def _slips(node, parent):
@@ -3031,13 +3035,14 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     parts = [part_of(e.source) for e in inputs]
     parts = [None if part is None else (part[0], _kept_once(part[1])) for part in parts]
     screened = bool(twins)
+    banded = bool(inputs) and _in_band(inputs[0], differs=False)  # else no slip of precision is told: none is tried
     for holder, twin in twins:
         originals.setdefault(id(holder), (holder, holder.__code__))
     for tried, mutant in enumerate(mutants):
         progress["tried"] = tried
         if deadline.fired:
             return None
-        if _REFUTED.refuted(mutant, ran):
+        if _REFUTED.refuted(mutant, ran) or (mutant.slip in PRECISION_SLIPS and not banded):
             continue
         misses = []  # the input at which the mutant's value is not the student's
         if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound

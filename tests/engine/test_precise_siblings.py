@@ -6,7 +6,10 @@ those values as they are (a state's positions where only its velocities were con
 the expected one exactly, as the mutant's own is, and does not refute the slip; a value of the same call off by more
 than a slip of precision makes does.
 
-Each is a mistake planted into a made-up problem, graded on two inputs and on the value the slip leaves alone."""
+An array given no dtype (``np.array([x, y])``) is tried created in single precision too, and no slip of precision is
+tried where the student's value is beyond the band of precision on the input shown (none would be told there).
+
+Each is a mistake planted into a made-up problem, graded on two inputs (and on the value the slip leaves alone)."""
 
 import numpy as np
 
@@ -25,6 +28,13 @@ def kicked(q, qd, m):
     # BEGIN SOLUTION problem 89
     qd = np.asarray(qd, dtype=float)
     return np.array(q, dtype=float), qd + np.array([0.3, -1.7, 0.45]) / m
+    # END SOLUTION
+
+
+def spread(x, y, m):
+    """Made-up distances of two points from their centre, from their second moments ``x``, ``y`` and the mass."""
+    # BEGIN SOLUTION problem 89
+    return np.sqrt(3.0 * np.array([x, y]) / m)
     # END SOLUTION
 '''
 
@@ -60,3 +70,22 @@ def test_velocities_in_float32_beside_positions_far_off_are_not_named_float32(ma
         return positions + 0.5, velocities
 
     assert "float32" not in {h.name for h in slips(made_up, moved)}
+
+
+SPREAD = [(0.37, 1.21, 1.9), (2.3, 0.71, 0.6)]
+
+
+def test_an_array_given_no_dtype_created_in_float32_is_named_float32(made_up):
+    def student(x, y, m):
+        return np.sqrt(3.0 * np.array([x, y], dtype=np.float32) / m)
+
+    found = mutants.mutant_slips(scene("p89.spread"), made_up_evidences(made_up, "spread", student, SPREAD, number=89))
+    assert {h.name for h in found} == {"float32"}, [(h.name, h.detail) for h in found]
+
+
+def test_a_value_beyond_the_band_of_precision_is_no_slip_of_precision(made_up):
+    """The near miss: the points' distances doubled are far outside the band; no slip of precision is told."""
+    found = mutants.mutant_slips(scene("p89.spread"), made_up_evidences(
+        made_up, "spread", lambda x, y, m: 2.0 * np.sqrt(3.0 * np.array([x, y], dtype=np.float32) / m), SPREAD,
+        number=89))
+    assert not {h.name for h in found} & {"float32", "rounded"}, [(h.name, h.detail) for h in found]
