@@ -19,8 +19,9 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   ``checks._diagnoses.TERMS``;
 * ``motion``: for a run, ``{"time": key, "states": (keys,), "events": (keys,)}``; with ``"rhs"``, the probe of
   the run's right-hand side (``rhs(*args, cases)`` for ``(t, y)`` cases, ``y`` the states in their order;
-  ``"rhs_args"``: the indices of the run's arguments it takes first, None for one not given), at which the
-  engine tells a wrong model from a wrong integration; with ``"parameters"`` (``{"arg": index, "names": (...),
+  ``"rhs_args"``: the indices of the run's arguments it takes first, None for one not given; ``"rhs_through"``:
+  the events it holds through, where the run goes on by the same model), at which the engine tells a wrong model
+  from a wrong integration; with ``"parameters"`` (``{"arg": index, "names": (...),
   "sheet": probe}``), the argument that holds the run's parameters (a mass, an inertia, g; the probe of their
   sheet values for a run not given them), which the engine tries exchanged and scaled by re-running the reference,
   or ``{"args": (indices), "names": (...), "sheet": probe}`` for parameters given one argument each (exchanged,

@@ -54,7 +54,7 @@ def _optional(value):
     args=("scalar", "scalar", "scalar"),
     draw=False,
     motion={"time": "t", "states": ("y",), "events": ("t_apex", "t_land"), "fixed_step": "problem_42.throw_fixed",
-               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2),
+               "schemes": ("euler",), "rhs": "problem_42.ball_ode", "rhs_args": (1, 2), "rhs_through": ("t_apex",),
                "parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g"), "sheet": "problem_42.sheet_ball"},
                "variants": {"arg": 3, "starts": ((0, 1),), "tolerances": True},
                "at_events": {"height_apex": ("t_apex", "y", 0), "v_land": ("t_land", "y", 1)}},

@@ -641,12 +641,16 @@ def remember_run(ctx, probe: str, args: tuple, value) -> None:
 
 def rhs_cases(root, motion: dict):
     """Two lists of ``(t, y)`` from the reference's run ``root`` before its first event (``y``: the declared states
-    in their order), ``RHS_STATES`` from each half of it; None when the run is too short."""
+    in their order), ``RHS_STATES`` from each half of it; None when the run is too short.  An event that the
+    right-hand side holds through (``motion["rhs_through"]``: an apex, where only the sign of a velocity changes)
+    does not end that part of the run."""
     ours = run_of(root, motion)
     if ours is None:
         return None
     t, R = ours
-    end = min([t[-1], *event_times(root, motion)])
+    through = set(motion.get("rhs_through", ()))
+    ends = {**motion, "events": tuple(key for key in motion.get("events", ()) if key not in through)}
+    end = min([t[-1], *event_times(root, ends)])
     inside = np.flatnonzero(t < end - 1e-12)
     if inside.size < 2 * RHS_STATES:
         return None

@@ -94,6 +94,13 @@ V0_AND_G_EXCHANGED = Planted(
     old="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, v0], args=(drag, g),",
     new="result = solve_ivp(ball_ode, (0.0, t_max), [0.0, g], args=(drag, v0),",
     check="p42.flight", diagnosis="argument_order", message="v0 and g are exchanged")
+#: the drag on the thrown ball left out on its way down (it only brakes a rising ball): the right-hand side differs
+#: from the reference's only past the apex, an event the run goes on through by the same model
+DRAG_ON_THE_WAY_UP_ONLY = Planted(
+    name="motions-p42-drag-on-the-way-up-only", problem=42, file="problem_42.py",
+    old="return np.array([velocity, -g - drag * abs(velocity) * velocity])",
+    new="return np.array([velocity, -g - drag * max(velocity, 0.0) * velocity])",
+    check="p42.flight", diagnosis="", message="Your right-hand side differs from the reference's")
 #: the module's V0 thrown whatever v0 is given: the sheet's ball is right, a random one is the sheet's speed
 V0_IGNORED = Planted(
     name="motions-p42-v0-ignored", problem=42, file="problem_42.py",
@@ -253,6 +260,15 @@ def test_a_run_off_for_another_reason_is_not_told_as_its_tolerances(mistake, tmp
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     told = set(families_of(target.diagnosis))
     assert not told & (INTEGRATION | {"state_row", "order", "initial_state", "sign"}), (target.diagnosis, target.hint)
+
+
+def test_a_model_that_differs_past_an_event_the_run_goes_on_through_is_told_as_the_model(tmp_path, kit_oracle,
+                                                                                         deferred_ids, slot):
+    """The right-hand side is compared at states along the whole run up to an event that ends it: a ball braked
+    on its way up only agrees with the reference's up to the apex, and its run is told as a wrong model (with no
+    cause, none of the grammar being it), never as its integration."""
+    target = failed_alike(DRAG_ON_THE_WAY_UP_ONLY, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
+    assert_told(DRAG_ON_THE_WAY_UP_ONLY, target)
 
 
 @pytest.mark.parametrize("mistake", [GRAVITY_SIGN_PENDULUM, GRAVITY_SIGN_BAR, ROWS_OF_THE_BAR],
