@@ -68,63 +68,64 @@ it is a factor of (the step of an integration, ``dt``, left out of a product, th
 whole unit of time), a length where its square belongs (``np.sqrt(r @ r)`` for ``r @ r``) or its square where the length
 belongs (``w @ w`` for ``np.linalg.norm(w)``), a vector or matrix the function writes out passed to a call with the
 wrong sign (``f(..., -hip)`` where ``hip = sp.Matrix([...])``), a power or a root over the wrong part of a product (``(m
-* a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` for ``np.sqrt(x / m)``), a slice's axes exchanged in one statement
-(``V[2, :] = -V[2, :]`` for ``V[:, 2] = -V[:, 2]``: a transpose), a list of three to six names that starts with its last
-or its second (``[phi, x, y]`` for ``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped), and one read of
-a name for another of its kind: an angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``,
-``R1(gamma)`` for ``R1(alpha)``: an order slip, ``wrong_angle``, and where one angle is bound to a sum of the other and
-more, ``g_e = q2 + q4``, a term added or left out as well; the angles of a function are the names it reads in a sine or
-a cosine or passes where a function of the reference reads its parameter so), and a parameter read as the constant or
-the number of its default, as its module's constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``,
-``ANGLES0`` for ``angles``: its value at the start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one
-read or at all of them: the argument ignored (and every parameter that has a default read as it at once: every argument
-ignored); a name computed from a value at the start read, once, as that start (``cardan(*ANGLES0)`` for
-``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``: the start returned for the end, an initial state); and an
-entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
-are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
-body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps over a range one step longer
-(``range(n + 1)``: one step too many), a keyword argument left out of a call of a function or a class of the reference
-whose parameter of that name has a default (the callee then uses the default: a term left out, a joint built without its
-``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and
-solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix
-written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added, told as an
-offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the
-identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one statement where the
-function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong
-frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the
-reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the
-ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180``
-of an angle already in radians: a scale).  The reads of names and the indices written come after every other slip of
-every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
-slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q,
-dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts
-every value to a whole number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a
-number converted with ``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the
-band, not one of these); an array given no dtype created in single precision; an argument converted to float32 at a
-function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a
-module's constant rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 /
-3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is
-told only where the student's value is in the band such slips make (``PRECISION_BAND``; on the other inputs and the
-call's other values, in that band or the expected value itself), differs from the expected one beyond the tolerance and
-is reproduced closely (``PRECISION_SHARE`` of the difference left at most), and none is tried where the value shown is
-beyond the band; on a comparison of one input (no second one to draw) the slips of precision alone are tried there,
-where the value is in the band.  An edit that is as truly a slip of another family is told with both names, as a twin
-(``rivals``): a product with a quantity where the division by it belongs (or the reverse) uses the quantity as its
-reciprocal; a quantity and its rate exchanged read each where the other belongs (a state row); a parameter with a
-default that the edit leaves unused is an argument ignored, where the engine could test none of the call's arguments
-itself, and so is an argument of the call that the engine's test had no budget to change. A slip is one kind of mistake
-even where it takes more than one edit (sin and cos exchanged in a term); an exchange of reads of a run's state, or a
-read of its other half, is a state read from the wrong rows; a skew matrix transposed is its negative, told as a sign or
-a transpose, and a cross product the other way round as a sign or the factors' order (``grammar.EQUIVALENCES``); inside
-a loop's iterable only exchanges are made.  A mutant is kept when its value reproduces the student's within the
-comparison's tolerance on the input shown *and* on the second one (and on a third where the engine can draw one), and
-differs from the expected value (an equivalent mutant says nothing).  Where the probe computes more than the compared
-value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant
-is evaluated on that call first and on the whole probe only where it reproduces the student's value there: the mutants
-kept are those the whole probe keeps, at the cost of the part for the others. Each call gets its own copy of the input's
-arguments (a mutant may change them in place), unpickled from one kept for the input.  A slip inside an index is one of
-the index.  A cause is named only when the mutants kept are of one family of the vocabulary, or of two; the hint says
-what kind of slip and in which of the student's functions, never the reference's code.
+* a)**2`` for ``m * a**2``, ``np.sqrt(x) / m`` or ``m * np.sqrt(x)`` for ``np.sqrt(x / m)``), an absolute value left out
+(``v * v`` for ``abs(v) * v``: a sign), a slice's axes exchanged in one statement (``V[2, :] = -V[2, :]`` for ``V[:, 2]
+= -V[:, 2]``: a transpose), a list of three to six names that starts with its last or its second (``[phi, x, y]`` for
+``[x, y, phi]``, read or bound: ``phi, x, y = q``; entries swapped), and one read of a name for another of its kind: an
+angle where another angle belongs (``np.cos(beta)`` for ``np.cos(phi)``, ``R1(gamma)`` for ``R1(alpha)``: an order slip,
+``wrong_angle``, and where one angle is bound to a sum of the other and more, ``g_e = q2 + q4``, a term added or left
+out as well; the angles of a function are the names it reads in a sine or a cosine or passes where a function of the
+reference reads its parameter so), and a parameter read as the constant or the number of its default, as its module's
+constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0`` for ``angles``: its value at the
+start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of them: the argument ignored
+(and every parameter that has a default read as it at once: every argument ignored); a name computed from a value at the
+start read, once, as that start (``cardan(*ANGLES0)`` for ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``:
+the start returned for the end, an initial state); and an entry written into a neighbouring index (``a[0] = ...`` for
+``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one
+item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum
+left out), a loop of steps over a range one step longer (``range(n + 1)``: one step too many), a keyword argument left
+out of a call of a function or a class of the reference whose parameter of that name has a default (the callee then uses
+the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation left out,
+``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M J^T`` for
+``(J M^-1 J^T)^-1``: no inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``:
+numpy adds it to every entry, a term added, told as an offset as well where it is the same on every input) or left out
+of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the identity left out, a term of its own), and a body's matrix
+turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T``
+for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame), and so one read of a vector in the body's
+coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the reads of names, every read of one of a function's
+arguments multiplied by the factor of a conversion of units into the ones the function computes in (``CONVERSIONS``:
+``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180`` of an angle already in radians: a scale).  The
+reads of names and the indices written come after every other slip of every function, as many as ``MAX_MUTANTS`` leaves
+room for, so that the budget reaches the older slips first), and the slips of precision (``PRECISION_SLIPS``: a dtype of
+double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a loop's bounds, where it changes no
+count (given as an integer, ``dtype=int``, it cuts every value to a whole number, as do an array created of integers and
+filled with floats, ``np.zeros(n, dtype=int)``, a number converted with ``int`` where ``float`` belongs, and a division
+by a whole number written ``//``: far outside the band, not one of these); an array given no dtype created in single
+precision; an argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as
+9.8, and an expression of numbers or a read of a module's constant rounded to two, three or four decimals (the sheet
+prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of
+names, after the other slips).  A slip of precision is told only where the student's value is in the band such slips
+make (``PRECISION_BAND``; on the other inputs and the call's other values, in that band or the expected value itself),
+differs from the expected one beyond the tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left
+at most), and none is tried where the value shown is beyond the band; on a comparison of one input (no second one to
+draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of
+another family is told with both names, as a twin (``rivals``): a product with a quantity where the division by it
+belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the
+other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored, where the
+engine could test none of the call's arguments itself, and so is an argument of the call that the engine's test had no
+budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a
+term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
+matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a sign or
+the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is kept when
+its value reproduces the student's within the comparison's tolerance on the input shown *and* on the second one (and on
+a third where the engine can draw one), and differs from the expected value (an equivalent mutant says nothing).  Where
+the probe computes more than the compared value and declares the cheaper call that holds it (``part``: ``lagrange``'s
+``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only where it
+reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part for the
+others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from one
+kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of one
+family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never the
+reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
@@ -498,6 +499,8 @@ SLIPS = {
                                     "(``(m * a)**2`` for ``m * a**2``)"),
     "root_scope": ("wrong_factor", "`{f}` takes a factor out of a square root without taking its root "
                                    "(``np.sqrt(x) / m`` for ``np.sqrt(x / m)``)"),
+    "magnitude": ("sign_flip", "`{f}` leaves out an absolute value (``v * v`` for ``abs(v) * v``): the sign of a "
+                               "value that can be negative is lost"),
     "square": ("wrong_factor", "a square is missing in `{f}`"),
     "root": ("wrong_factor", "a square root is missing in `{f}`"),
     "trig": ("sin_cos_swapped", "`{f}` takes sin where cos belongs, or the reverse"),
@@ -1917,6 +1920,10 @@ def _call_slips(node: ast.Call):
     if callee == "sqrt" and len(args) == 1 and isinstance(args[0], ast.BinOp) \
             and isinstance(args[0].op, (ast.Mult, ast.Div)):  # ``np.sqrt(3 * S) / m`` for ``np.sqrt(3 * S / m)``
         yield "root_scope", lambda n: ast.BinOp(_with(n, args=[n.args[0].left]), n.args[0].op, n.args[0].right)
+        # ``12 / m * np.sqrt(S)`` for ``np.sqrt(12 / m * S)``: the root taken of the last factor only
+        yield "root_scope", lambda n: ast.BinOp(n.args[0].left, n.args[0].op, _with(n, args=[n.args[0].right]))
+    if callee in ("abs", "absolute", "fabs") and len(args) == 1 and not node.keywords:
+        yield "magnitude", lambda n: n.args[0]
     if callee == "eye" and len(args) == 1 and not node.keywords:  # ``np.eye(3) + W`` as ``1.0 + W``
         yield "identity", lambda n: ast.Constant(1.0)
     yield from _single_slips(node)
