@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from checks._diagnoses import DIAGNOSES
-from probes import ProbeLookupError, lookup
+from probes import ProbeLookupError, lookup, name_of
 
 from ..values import Tol, format_array
 from ..errors import GraderFault, StudentFault
@@ -52,7 +52,7 @@ from .grammar import (
     unturned,
 )
 from . import trace
-from .models import model_slips
+from .models import is_model, model_slips
 from .rebound import REBOUND, rebound_input
 from .mutants import KIT_NOTE, left_to_live, mutant_slips, opposite_slips
 from .scene import Budget, constants_of, evidence_at, MAX_STUDENT_CALLS, Scene
@@ -165,7 +165,14 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
             evidence.expected = array_of(at_point(evidence.source.root, evidence.source.path))
     if evidence.source is not None and evidence.student is not None \
             and evidence.student.probe != evidence.source.probe:
-        evidence.student = _asked_alike(scene, evidence) or evidence.student
+        alike = _asked_alike(scene, evidence)
+        answered = _answered_alike(scene, evidence) if alike is None else None
+        if alike is not None:
+            evidence.student = alike
+        elif answered is not None:  # both sides named alike: the student's call was logged with its function
+            student = evidence.student
+            evidence.source = answered
+            evidence.student = Source(answered.probe, tuple(student.args), student.path, student.root)
 
 
 def _asked_alike(scene: Scene, evidence: Evidence) -> Source | None:
@@ -185,6 +192,33 @@ def _asked_alike(scene: Scene, evidence: Evidence) -> Source | None:
     if value is None or value.shape != evidence.got.shape or not within(value, evidence.got, evidence.tol):
         return None
     return Source(source.probe, tuple(source.args), source.path, root)
+
+
+def _answered_alike(scene: Scene, evidence: Evidence) -> Source | None:
+    """The reference's call of the student's own probe, on the student's arguments, where the expected value came
+    from another probe (a mass the check computes with the reference's formula, compared with the mass of the
+    student's MuJoCo model: the reference's model stands for the formula) and the reference's call gives the expected value at the student's path: the second
+    input, the test of an ignored argument and the formula tier then ask the two sides alike.  One call of the
+    reference; None where it fails, gives another value, or the student's call is no MuJoCo model (a run, a symbolic
+    answer evaluated at the check's points, whose second input is the reference's call at another point)."""
+    student = evidence.student
+    if not is_model(student.root):
+        return None
+    try:
+        probe = name_of(student.probe)
+    except ProbeLookupError:
+        return None
+    decl = declaration(probe)
+    if evidence.motion or (decl is not None and decl.motion) or evidence.expected is None:
+        return None
+    try:
+        root = scene.reference(probe, tuple(student.args))
+    except (GraderFault, Budget):
+        return None
+    value = array_of(at_point(root, student.path))
+    if value is None or value.shape != evidence.expected.shape or not within(value, evidence.expected, evidence.tol):
+        return None
+    return Source(probe, tuple(student.args), student.path, root)
 
 
 def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:

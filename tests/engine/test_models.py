@@ -8,6 +8,9 @@
   told by the grammar of values; joints placed elsewhere in their bodies by one vector, nothing else changed, are
   an offset (the joint's pos).
   Differences that no one story holds name nothing.
+* A value of the student's model compared with one the check computes with the reference's own formula (a link's
+  mass): the reference's model, from the student's probe on their arguments, stands for that formula where it gives
+  the same value, so the engine asks both sides alike (a second input, an argument the model ignores).
 
 The planted mistakes are in no set of ``tests/diagnosis/``, no table of ``tests/engine/`` and no planted suite;
 graded as ``grade batch`` grades (a warm fork), live and from the kit's answer key (the same verdicts, and the same
@@ -62,7 +65,22 @@ JOINT_INSIDE_LINK = Planted(
     new='<joint name="joint{i}" type="hinge" pos="0.01 0 0" axis="0 0 1"',
     check="p02.joint", diagnosis="offset", message="from where it belongs in its body",
     also=("p02.period", "p02.traces_2a", "p02.traces_2b", "p02.traces_2c"))
-MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y, JOINT_INSIDE_LINK]
+#: problem 2's density overwritten by aluminium's whatever density is given: the mass the check computes with the
+#: reference's formula is compared with the mass of the student's model, and the reference's model (the student's
+#: own probe, on their arguments) stands for it, so the test of an ignored argument can change the density
+DENSITY_OVERWRITTEN = Planted(
+    name="models-p02-density-overwritten", problem=2, file="problem_02.py",
+    old="    per_radian = damping * 180 / np.pi  #",
+    new="    density = 2700.0\n    per_radian = damping * 180 / np.pi  #",
+    check="p02.mass_inertia", diagnosis="ignored_argument", message="your value does not change when argument 1",
+    also=("p02.traces_2a", "p02.traces_2b", "p02.traces_2c"))
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y, JOINT_INSIDE_LINK, DENSITY_OVERWRITTEN]
+#: its near miss: the density scaled by a factor no grammar holds, which the mass follows: no argument ignored
+DENSITY_SCALED = Planted(
+    name="models-p02-density-scaled", problem=2, file="problem_02.py",
+    old="    per_radian = damping * 180 / np.pi  #",
+    new="    density = 1.37 * density\n    per_radian = damping * 180 / np.pi  #",
+    check="p02.mass_inertia", diagnosis="", message="")
 
 #: a near miss: the hinges placed off their bodies' origins and turned upside down as well: the anchors move and
 #: the axes turn, which no one story of a model holds (joints moved alone are an offset, an axis alone a sign)
@@ -75,7 +93,7 @@ JOINTS_MOVED_AND_TURNED = Planted(
 
 @pytest.fixture(scope="module")
 def slot():
-    yield from warm_slot(sorted({m.problem for m in MISTAKES + [JOINTS_MOVED_AND_TURNED]}))
+    yield from warm_slot(sorted({m.problem for m in MISTAKES + [JOINTS_MOVED_AND_TURNED, DENSITY_SCALED]}))
 
 
 @pytest.mark.parametrize("mistake", MISTAKES, ids=lambda m: m.name)
@@ -89,6 +107,14 @@ def test_a_model_whose_differences_no_story_holds_names_nothing(tmp_path, kit_or
     target = {r.check_id: r for r in live.results}[JOINTS_MOVED_AND_TURNED.check]
     assert target.status is Status.FAILED, target.message
     assert target.diagnosis == "", (target.diagnosis, target.hint)
+
+
+def test_a_density_the_model_follows_is_no_argument_ignored(tmp_path, kit_oracle, slot):
+    submission = build_planted(DENSITY_SCALED, tmp_path / "pkg")
+    live, _ = grade_live_and_kit(DENSITY_SCALED.problem, submission, kit_oracle, zygote=slot)
+    target = {r.check_id: r for r in live.results}[DENSITY_SCALED.check]
+    assert target.status is Status.FAILED, target.message
+    assert "ignored_argument" not in target.diagnosis, (target.diagnosis, target.hint)
 
 
 # ------------------------------------------------------------------------------------------ stand-ins
