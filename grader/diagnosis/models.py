@@ -18,6 +18,9 @@ holds them all, and the compared value is among them:
   unturned relative to its parent, the model built in another configuration (its ``euler`` or its keyframe);
   where it starts turned by an angle (a configuration the model is given), the slip of that angle's value that
   gives the student's turn (its sign, degrees, a factor), else nothing;
+* two bodies or more, each turned about its own joint by one slip of its own start angle, every body keeping its own
+  structure (in its frame and its parent's): the configuration's angles read as degrees (no ``<compiler
+  angle="radian"/>``) or written in degrees, or each negated;
 * joints placed elsewhere in their bodies, nothing else changed: every difference is a joint's anchor, each off by
   one vector in its body's frame (a joint's ``pos`` typed wrongly, or written so for every joint by one loop): an
   offset;
@@ -263,6 +266,8 @@ def model_slips(scene, evidence: Evidence) -> list[Hypothesis] | None:
         if angle is not None:
             told += _angle_slips(theirs, body, angle)
             break
+    else:
+        told += _turned_each(mine, theirs, differing)
     told += _joints_moved(mine, theirs, differing)
     if len(differing) == 1:
         told += _attribute_slips(mine, theirs, differing[0])
@@ -404,6 +409,60 @@ def _angle_slips(theirs, body: int, turn: float) -> list[Hypothesis]:
     return [Hypothesis(f"model:angle:{body}:{name}:{words}", name, 1, where + f"its joint, as with {words} "
                        f"({mine:+.4g} rad where {q:+.4g} rad belongs)")
             for name, slip, words in _ANGLE_SLIPS if abs(_wrapped(slip(q) - mine)) < 1e-6]
+
+
+#: the angles every body may start turned by where the reference's start turned by their configuration's angles
+#: ``q``: one slip of every angle's value, in words
+_ANGLES_SLIPS = (
+    ("degrees", np.radians, "the angles read as degrees (MuJoCo's default where the model declares no <compiler "
+                            "angle=\"radian\"/>), or converted to radians once too often"),
+    ("degrees", np.degrees, "the angles written in degrees where the model declares them in radians"),
+    ("sign_flip", np.negative, "every angle with the opposite sign"),
+)
+
+
+def _turned_each(mine, theirs, differing: list) -> list[Hypothesis]:
+    """Two bodies or more, each turned about its own joint relative to its parent by one slip of its own start angle
+    (the configuration's angles read as degrees, say), where the reference's bodies start turned by the
+    configuration's angles, and nothing else changed: every body keeps its own structure (mass, centre of mass,
+    inertia and joint axis in its own frame, and its joint where it sits in its parent's frame).  One body turned
+    alone (and the bodies it carries) is ``_turned``'s."""
+    n = len(theirs["bodies"])
+    allowed = {("qpos",), ("qvel",)}
+    if n < 2 or not differing or not all(path in allowed or (path[0] == "bodies" and path[-1] in _BODY)
+                                         or (path[0] == "joints" and path[-1] in ("anchor", "axis"))
+                                         for path in differing):
+        return []
+    ours = [_start_angle(mine, body) for body in range(1, n + 1)]
+    refs = [_start_angle(theirs, body) for body in range(1, n + 1)]
+    if any(a is None for a in ours + refs) or not all(_kept_structure(mine, theirs, b) for b in range(1, n + 1)):
+        return []
+    if sum(abs(_wrapped(a - b)) > 1e-6 for a, b in zip(ours, refs)) < 2:
+        return []
+    return [Hypothesis(f"model:angles:{name}", name, 1, f"every body starts turned about its joint by another angle "
+                       f"than its own ({', '.join(f'{a:+.4g}' for a in ours)} rad where "
+                       f"{', '.join(f'{b:+.4g}' for b in refs)} rad belong), as with {words}")
+            for name, slip, words in _ANGLES_SLIPS
+            if all(abs(_wrapped(float(slip(b)) - a)) < 1e-6 for a, b in zip(ours, refs))]
+
+
+def _kept_structure(mine, theirs, body: int) -> bool:
+    """``body`` has the same mass, centre of mass, inertia and joint axis in its own frame in both models, and its
+    joint sits where it does in its parent's frame (relative to the parent's joint, or the world's origin)."""
+    def local(desc):
+        F, P = _frame(desc, body), _frame(desc, int(desc["bodies"][body - 1]["parent"]))
+        entry, anchor = desc["bodies"][body - 1], _pivot(desc, body)
+        parent = _pivot(desc, int(entry["parent"]))
+        axes = [joint["axis"] for joint in desc["joints"] if int(joint["body"]) == body]
+        if anchor is None or parent is None or len(axes) != 1:
+            return None
+        return [np.atleast_1d(np.asarray(entry["mass"], dtype=float)),
+                F.T @ (np.asarray(entry["com"], dtype=float) - anchor),
+                F.T @ np.asarray(entry["inertia"], dtype=float) @ F,
+                F.T @ np.asarray(axes[0], dtype=float), P.T @ (anchor - parent)]
+
+    a, b = local(mine), local(theirs)
+    return a is not None and b is not None and all(within(x, y, SAME) for x, y in zip(a, b))
 
 
 def _attribute_slips(mine, theirs, path) -> list[Hypothesis]:

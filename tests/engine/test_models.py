@@ -4,7 +4,8 @@
   the same arguments, element by element; a body moved with what it carries is an offset (and a scale where it
   sits at a factor of the lever from its parent's joint, a sign where it sits at the lever's opposite), a body
   turned about its joint where the reference's starts unturned is the model built in another configuration, where
-  it starts turned by an angle given the slip of that angle (degrees, a sign), and one attribute alone differing is
+  it starts turned by an angle given the slip of that angle (degrees, a sign), every body turned by one slip of its
+  own angle is the configuration's angles so slipped (read as degrees), and one attribute alone differing is
   told by the grammar of values; joints placed elsewhere in their bodies by one vector, nothing else changed, are
   an offset (the joint's pos).
   Differences that no one story holds name nothing.
@@ -74,7 +75,15 @@ DENSITY_OVERWRITTEN = Planted(
     new="    density = 2700.0\n    per_radian = damping * 180 / np.pi  #",
     check="p02.mass_inertia", diagnosis="ignored_argument", message="your value does not change when argument 1",
     also=("p02.traces_2a", "p02.traces_2b", "p02.traces_2c"))
-MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y, JOINT_INSIDE_LINK, DENSITY_OVERWRITTEN]
+#: problem 4's four-bar with its compiler told that angles are degrees: every body's euler angle (its joint angle in
+#: radians) is read as degrees, each body turned by its own angle's slip
+COMPILER_IN_DEGREES = Planted(
+    name="models-p04-compiler-in-degrees", problem=4, file="problem_04.py",
+    old='<mujoco model="four_bar">\n  <compiler angle="radian"/>',
+    new='<mujoco model="four_bar">\n  <compiler angle="degree"/>',
+    check="p04.model_structure", diagnosis="degrees", message="as with the angles read as degrees",
+    also=("p04.model_dynamics", "p04.model_at_rest"))
+MISTAKES = [LINK_FURTHER_OUT, LINK_TURNED, LINK3_ALONG_Y, JOINT_INSIDE_LINK, DENSITY_OVERWRITTEN, COMPILER_IN_DEGREES]
 #: its near miss: the density scaled by a factor no grammar holds, which the mass follows: no argument ignored
 DENSITY_SCALED = Planted(
     name="models-p02-density-scaled", problem=2, file="problem_02.py",
@@ -183,6 +192,26 @@ def _told(mine, theirs, got):
 def test_a_configuration_given_in_degrees_is_told_as_degrees():
     theirs, mine = _chain([0.4, -0.7]), _chain([np.degrees(0.4), -0.7])
     assert _told(mine, theirs, mine["joints"][1]["anchor"]) == ["degrees"]
+
+
+@pytest.mark.parametrize("slip", [np.radians, np.degrees], ids=["read-as-degrees", "written-in-degrees"])
+def test_every_angle_of_a_configuration_in_degrees_is_told_as_degrees(slip):
+    """Every body turned by one slip of its own angle: the configuration's angles read as degrees (a model that
+    declares no <compiler angle="radian"/>) or written in degrees, each body keeping its own structure."""
+    q = [0.4, -0.7, 1.2]
+    theirs, mine = _chain(q, (L, L, L)), _chain([slip(a) for a in q], (L, L, L))
+    assert _told(mine, theirs, mine["bodies"][1]["com"]) == ["degrees"]
+
+
+def test_angles_turned_by_different_slips_or_with_a_link_lengthened_name_nothing():
+    """The near misses: one angle in degrees and the next negated hold no one slip; every angle in degrees with the
+    second link hung further out changes a body's own structure as well."""
+    q = [0.4, -0.7, 1.2]
+    theirs = _chain(q, (L, L, L))
+    mixed = _chain([np.radians(q[0]), -q[1], q[2]], (L, L, L))
+    assert _told(mixed, theirs, mixed["bodies"][1]["com"]) == []
+    longer = _chain([np.radians(a) for a in q], (L, 1.5 * L, L))
+    assert _told(longer, theirs, longer["bodies"][1]["com"]) == []
 
 
 def test_a_link_turned_by_its_parent_s_angle_as_well_names_nothing():
