@@ -1210,12 +1210,17 @@ _FRAME_PART = re.compile(r"^[A-Z][A-Za-z0-9]{0,4}$")
 
 def _rate(a: str, b: str) -> bool:
     """``b`` names the rate of what ``a`` names: one part of the name (between underscores) carries a rate's mark
-    (``qd`` of ``q``, ``B_omegaDot_B`` of ``B_omega_B``, ``dq1`` of ``q1``) or the next letter of r, v, a."""
+    (``qd`` of ``q``, ``B_omegaDot_B`` of ``B_omega_B``, ``dq1`` of ``q1``) or the next letter of r, v, a; or, by
+    the course's notation, ``b`` is the velocity of the point whose position ``a`` is, in the same frame's
+    coordinates (``B_v_B`` of ``B_r_IB``: the position from I to B, the velocity of B)."""
     if b == f"{a}_dot":
         return True
     first, second = a.split("_"), b.split("_")
     if len(first) != len(second):
         return False
+    if len(first) == 3 and first[0] == second[0] and (first[1], second[1]) == ("r", "v") \
+            and len(second[2]) < len(first[2]) and first[2].endswith(second[2]) and second[2][:1].isupper():
+        return True
     differ = [(x, y) for x, y in zip(first, second) if x != y]
     if len(differ) != 1 or not differ[0][0]:
         return False

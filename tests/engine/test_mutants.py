@@ -1139,18 +1139,21 @@ def test_a_quantity_read_in_another_frames_coordinates_is_a_frame_slip(made_up):
 
 
 def test_the_names_related_by_rate_and_by_frame():
-    """By the course's notation: a rate's mark on one part of a name, the next of r, v, a; one quantity in two
-    frames' coordinates (the first part), or two rotations; a pair of sibling matrices (``B_J_S``, ``B_J_R``); not
+    """By the course's notation: a rate's mark on one part of a name, the next of r, v, a (a position's velocity is
+    that of its end point); one quantity in two frames' coordinates (the first part), or two rotations; a pair of sibling matrices (``B_J_S``, ``B_J_R``); not
     two other different quantities or points."""
     for a, b in (("q", "qd"), ("qd", "qdd"), ("B_omega_B", "B_omegaDot_B"), ("dq1", "q1"), ("x", "x_dot"),
                  ("B_v_B", "B_a_B"), ("Om", "dOm")):
+        assert mutants._related(a, b) == "rates", (a, b)
+    # a position from one point to another and the velocity of its end point, in the same frame's coordinates
+    for a, b in (("B_r_IB", "B_v_B"), ("I_v_T", "I_r_IT"), ("I_r_E", "I_v_E")):
         assert mutants._related(a, b) == "rates", (a, b)
     for a, b in (("I_v_B", "B_v_B"), ("A_IC2", "A_IC3"), ("I_r_IB", "B_r_IB")):
         assert mutants._related(a, b) == "frames", (a, b)
     for a, b in (("B_J_R", "B_J_S"), ("S_J_S", "S_J_R")):  # the two Jacobians of a body: a pair of siblings
         assert mutants._related(a, b) == "siblings", (a, b)
     for a, b in (("Dp_r_DpDs", "Dp_r_IDp"), ("P_GAIN", "D_GAIN"), ("m1", "m2"), ("q", "q"), ("B_v_B", "B_omega_B"),
-                 ("A_IB", "B_IB"), ("I_r_IB", "I_r_IC")):
+                 ("A_IB", "B_IB"), ("I_r_IB", "I_r_IC"), ("B_r_IB", "B_v_I"), ("B_r_IB", "I_v_B")):
         assert mutants._related(a, b) is None, (a, b)
 
 
