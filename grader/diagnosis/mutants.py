@@ -51,11 +51,12 @@ belongs (``np.eye(k)`` for ``np.zeros((k, k))``: a term added), a solve or an in
 diagonal alone (``b / np.diag(M)`` for ``np.linalg.solve(M, b)``), an entry of a matrix or vector written 0 (told beside
 an offset where it is the same on every input), a sum that keeps only its last term, a running sum left out (``steps``
 for ``np.cumsum(steps, axis=0)``), a count for a sum, a quantity read where its rate belongs or the reverse (``qd`` for
-``qdd``, ``B_omega_B`` for ``B_omegaDot_B``: a name of the function or an attribute of the reference, related by the
-course's notation), a quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a coordinate system read
-for another (``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to one: a wrong frame), a
-factor of a sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a
-term written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is
+``qdd``, ``B_omega_B`` for ``B_omegaDot_B``, ``B_v_B`` for ``B_r_IB``: a name of the function or an attribute of the
+reference, related by the course's notation; a list of names each so read at once, ``[q1, q2]`` for ``[dq1, dq2]``), a
+quantity read in another frame's coordinates (``B_v_B`` for ``I_v_B``), a coordinate system read for another
+(``C1.get_transform()`` for ``C3.get_transform()``, or left out of a call or given to one: a wrong frame), a factor of a
+sum applied to one term only (``A @ x + y`` for ``A @ (x + y)``), one entry of a list with the wrong sign (a term
+written with a plus given a minus: ``-C / 2`` for ``+C / 2``), a value that the object keeps added to where it is
 replaced (``self.r = self.r + r`` for ``self.r = r``, outside a constructor: a term added), one factor of a product
 inverted where the product's inverse belongs (``solve(A, B @ b)``, ``inv(A) @ B @ b``, for ``solve(A @ B, b)``: no
 inverse), a ratio upside down (``m / 12`` for ``12 / m``), two neighbouring factors of a longer product exchanged (``R3
@@ -1283,6 +1284,12 @@ def _read_slips(node, names: frozenset, attributes: frozenset):
             slip = _related(node.attr, other)
             if slip is not None:
                 yield slip, lambda n, other=other: _with(n, attr=other)
+    elif isinstance(node, (ast.List, ast.Tuple)) and isinstance(node.ctx, ast.Load) and len(node.elts) >= 2 \
+            and all(isinstance(e, ast.Name) for e in node.elts):
+        # ``[q1, q2]`` for ``[dq1, dq2]``: every entry read as what its rate belongs to, or the reverse
+        partners = [[other for other in sorted(names) if _related(e.id, other) == "rates"] for e in node.elts]
+        if all(len(p) == 1 for p in partners) and len({p[0] for p in partners}) == len(partners):
+            yield "rates", lambda n, partners=partners: _with(n, elts=[ast.Name(p[0], ast.Load()) for p in partners])
     elif isinstance(node, ast.Call) and len(node.args) == 1 and not node.keywords \
             and isinstance(node.args[0], ast.Name) and _FRAME_OBJECT.match(node.args[0].id):
         yield "frame_objects", lambda n: _with(n, args=[])  # ``C3.get_transform()`` for ``C3.get_transform(C3)``
