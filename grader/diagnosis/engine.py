@@ -197,10 +197,11 @@ def _asked_alike(scene: Scene, evidence: Evidence) -> Source | None:
 def _answered_alike(scene: Scene, evidence: Evidence) -> Source | None:
     """The reference's call of the student's own probe, on the student's arguments, where the expected value came
     from another probe (a mass the check computes with the reference's formula, compared with the mass of the
-    student's MuJoCo model: the reference's model stands for the formula) and the reference's call gives the expected value at the student's path: the second
-    input, the test of an ignored argument and the formula tier then ask the two sides alike.  One call of the
-    reference; None where it fails, gives another value, or the student's call is no MuJoCo model (a run, a symbolic
-    answer evaluated at the check's points, whose second input is the reference's call at another point)."""
+    student's MuJoCo model: the reference's model stands for the formula) and the reference's call gives the
+    expected value at the student's path: the second input, the test of an ignored argument and the formula tier
+    then ask the two sides alike.  One call of the reference; None where it fails, gives another value, or the
+    student's call is no MuJoCo model (a run, a symbolic answer evaluated at the check's points, whose second input
+    is the reference's call at another point)."""
     student = evidence.student
     if not is_model(student.root):
         return None

@@ -1140,8 +1140,8 @@ def test_a_quantity_read_in_another_frames_coordinates_is_a_frame_slip(made_up):
 
 def test_the_names_related_by_rate_and_by_frame():
     """By the course's notation: a rate's mark on one part of a name, the next of r, v, a (a position's velocity is
-    that of its end point); one quantity in two frames' coordinates (the first part), or two rotations; a pair of sibling matrices (``B_J_S``, ``B_J_R``); not
-    two other different quantities or points."""
+    that of its end point); one quantity in two frames' coordinates (the first part), or two rotations; a pair of
+    sibling matrices (``B_J_S``, ``B_J_R``); not two other different quantities or points."""
     for a, b in (("q", "qd"), ("qd", "qdd"), ("B_omega_B", "B_omegaDot_B"), ("dq1", "q1"), ("x", "x_dot"),
                  ("B_v_B", "B_a_B"), ("Om", "dOm")):
         assert mutants._related(a, b) == "rates", (a, b)
