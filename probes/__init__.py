@@ -17,24 +17,23 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   ``{"terms": {name: value shaped like the result}, "extra": {name: ...}}``, where the ``terms`` sum to the result
   and the ``extra`` ones are terms that do not belong (gravity counted twice, say); the names are those of
   ``checks._diagnoses.TERMS``;
-* ``motion``: for a run, ``{"time": key, "states": (keys,), "events": (keys,)}``; with ``"rhs"``, the probe of
-  the run's right-hand side (``rhs(*args, cases)`` for ``(t, y)`` cases, ``y`` the states in their order;
-  ``"rhs_args"``: the indices of the run's arguments it takes first, None for one not given; ``"rhs_through"``:
-  the events it holds through, where the run goes on by the same model), at which the engine tells a wrong model
-  from a wrong integration; with ``"parameters"`` (``{"arg": index, "names": (...),
-  "sheet": probe}``), the argument that holds the run's parameters (a mass, an inertia, g; the probe of their
-  sheet values for a run not given them), which the engine tries exchanged and scaled by re-running the reference,
-  or ``{"args": (indices), "names": (...), "sheet": probe}`` for parameters given one argument each (exchanged,
-  and each given one at its sheet value); with ``"start"`` (``{"arg": index, "name": ..., "sheet": probe}``), the
-  argument that holds the run's start and the probe of the sheet's, which the engine tries in its place (the start
-  ignored); with ``"parts"`` (``{"arg": index, "names": (...), "sheet": probe}``), an argument that holds other
-  values of the run's set-up (a wire's anchor and length), which the engine tries each at the sheet's value (that
-  value ignored); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...),
-  "tolerances": True}``), the probe's argument by which the engine asks the reference's run with ``solve_ivp``
-  called as a slip would call it (``_dynamics.solver_variant``: from a start with two entries exchanged, at looser
-  tolerances); with ``"at_events"`` (``{key: (event, state[, entry])}``), the result's values taken from the
-  state at an event, which the engine tries read from its other rows and from other slices of the whole state
-  there (a key that holds a whole state gives the engine that state at the event exactly, where it jumps);
+* ``motion``: for a run, ``{"time": key, "states": (keys,), "events": (keys,)}``; with ``"rhs"``, the probe of the run's
+  right-hand side (``rhs(*args, cases)`` for ``(t, y)`` cases, ``y`` the states in their order; ``"rhs_args"``: the
+  indices of the run's arguments it takes first, None for one not given; ``"rhs_through"``: the events it holds through,
+  where the run goes on by the same model), at which the engine tells a wrong model from a wrong integration; with
+  ``"parameters"`` (``{"arg": index, "names": (...), "sheet": probe}``), the argument that holds the run's parameters (a
+  mass, an inertia, g; the probe of their sheet values for a run not given them), which the engine tries exchanged and
+  scaled by re-running the reference, or ``{"args": (indices), "names": (...), "sheet": probe}`` for parameters given
+  one argument each (exchanged, and each given one at its sheet value); with ``"start"`` (``{"arg": index, "name": ...,
+  "sheet": probe}``), the argument that holds the run's start and the probe of the sheet's, which the engine tries in
+  its place (the start ignored); with ``"parts"`` (``{"arg": index, "names": (...), "sheet": probe}``), an argument that
+  holds other values of the run's set-up (a wire's anchor and length), which the engine tries each at the sheet's value
+  (that value ignored); with ``"variants"`` (``{"arg": index, "starts": ((i, j), ...), "tolerances": True}``), the
+  probe's argument by which the engine asks the reference's run with ``solve_ivp`` called as a slip would call it
+  (``_dynamics.solver_variant``: from a start with two entries exchanged, at looser tolerances); with ``"at_events"``
+  (``{key: (event, state[, entry])}``), the result's values taken from the state at an event, which the engine tries
+  read from its other rows and from other slices of the whole state there (a key that holds a whole state gives the
+  engine that state at the event exactly, where it jumps);
 * ``constants``: the probe (no arguments) of the problem's named constants (a mass, g, a length);
 * ``draw``: False when the engine must not draw a second input itself (the probe is slow, or its arguments must
   keep their relations);

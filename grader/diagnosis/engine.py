@@ -166,13 +166,14 @@ def _sources(scene: Scene, evidence: Evidence) -> None:
     if evidence.source is not None and evidence.student is not None \
             and evidence.student.probe != evidence.source.probe:
         alike = _asked_alike(scene, evidence)
-        answered = _answered_alike(scene, evidence) if alike is None else None
         if alike is not None:
             evidence.student = alike
-        elif answered is not None:  # both sides named alike: the student's call was logged with its function
-            student = evidence.student
-            evidence.source = answered
-            evidence.student = Source(answered.probe, tuple(student.args), student.path, student.root)
+        else:
+            answered = _answered_alike(scene, evidence)
+            if answered is not None:  # both sides named alike: the student's call was logged with its function
+                student = evidence.student
+                evidence.source = answered
+                evidence.student = Source(answered.probe, tuple(student.args), student.path, student.root)
 
 
 def _asked_alike(scene: Scene, evidence: Evidence) -> Source | None:
@@ -210,27 +211,31 @@ def _answered_alike(scene: Scene, evidence: Evidence) -> Source | None:
     except ProbeLookupError:
         return None
     decl = declaration(probe)
-    if evidence.motion or (decl is not None and decl.motion) or evidence.expected is None:
+    if evidence.motion or (decl is not None and decl.motion):
         return None
     try:
-        root = scene.reference(probe, tuple(student.args))
+        return _reference_alike(scene, Source(probe, tuple(student.args), student.path, student.root),
+                                evidence.expected, evidence.tol)
     except (GraderFault, Budget):
         return None
-    value = array_of(at_point(root, student.path))
-    if value is None or value.shape != evidence.expected.shape or not within(value, evidence.expected, evidence.tol):
-        return None
-    return Source(probe, tuple(student.args), student.path, root)
 
 
 def traced(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
     """The reference's call with the arguments of the student's call of a declared probe, when its value is the
     expected one within the tolerance (a value the sheet prints, compared before the check asks the reference):
     the source of the expected value, or None."""
-    decl = declaration(student.probe)
-    target = array_of(expected)
-    if decl is None or target is None:
+    if declaration(student.probe) is None:
         return None
-    root = scene.reference(student.probe, student.args)
+    return _reference_alike(scene, student, expected, tol)
+
+
+def _reference_alike(scene: Scene, student: Source, expected, tol: Tol) -> Source | None:
+    """The reference's call of ``student``'s probe on its arguments, as a source, where its value at the student's
+    path is ``expected`` within the tolerance; None otherwise (or where there is no expected value)."""
+    target = array_of(expected)
+    if target is None:
+        return None
+    root = scene.reference(student.probe, tuple(student.args))
     value = array_of(at_point(root, student.path))
     if value is None or value.shape != target.shape or not within(value, target, tol):
         return None
