@@ -601,6 +601,7 @@ SLIPS = {
     "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
     "axes": ("transpose", "`{f}` takes a row of a matrix where its column belongs, or the reverse"),
     "cycled": ("swapped", "`{f}` lists quantities in another order (the last first, or the first last)"),
+    "unpacked": ("swapped", "`{f}` unpacks the coordinates into its names in another order"),
     # the slips of a module's constant (``_constant_slips``): ``{f}`` is the constant's name
     "constant_sign": ("sign_flip", "a number of the constant `{f}` has the wrong sign"),
     "constant_doubled": ("factor_two", "a number of the constant `{f}` is twice the one that belongs"),
@@ -1575,6 +1576,20 @@ def _unpacked_coordinates(node, parent) -> bool:
     return isinstance(value, ast.Name) and bool(_COORDINATES.match(value.id))
 
 
+def _unpacked_state(node, parent) -> bool:
+    """The names that a vector of coordinates or a state is unpacked into (``x, y, phi = q``): bound in another
+    order, each takes the value of another's row, which is as truly quantities in another order as a state read
+    from the wrong rows.  (The names of a slice of a run's state, ``x, h, phi = y[:3]``, are its reads: exchanged,
+    they are the state read from the wrong rows.)"""
+    if not (isinstance(node, ast.Tuple) and isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign)
+            and all(isinstance(e, ast.Name) for e in node.elts)):
+        return False
+    value = parent.value
+    if isinstance(value, ast.Call) and _callee(value) in ("asarray", "array", "ravel", "atleast_1d") and value.args:
+        value = value.args[0]
+    return isinstance(value, ast.Name) and bool(_COORDINATES.match(value.id))
+
+
 def _state_parts(function: ast.FunctionDef) -> set:
     """The names the function binds to parts of a run's state (``q, qd = y[:3], y[3:]``, ``x, h = y[:2]``)."""
     found = set()
@@ -2335,6 +2350,8 @@ def _mutated(function: _Function, lines: tuple):
                 slip = "rows"  # two parts of the state exchanged: read from each other's rows
             elif slip == "entries" and _unpacked_coordinates(node, parent):
                 slip = "rows"  # ``q2, _ = q`` for ``_, q2 = q``: a coordinate read from the other's row
+            elif slip in ("entries", "cycled") and _unpacked_state(node, parent):
+                slip = "unpacked"  # ``y, x, phi = q``: names in another order, each read from another's row
             elif isinstance(edit, tuple) and len(edit) == 3 and slip in ("names", "parameters") \
                     and _rates(edit[1], edit[2]):
                 slip = f"{slip}_rates"  # a quantity and its rate exchanged: each read where the other belongs
@@ -3234,7 +3251,7 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
 #: the slips whose edit is as truly a slip of another family: a product with a quantity for a division by it uses
 #: the quantity where its reciprocal belongs (a number's factor is a scale: ``x * 2`` for ``x / 2``); two entries
 #: or arguments exchanged that are one expression of a quantity and of its rate (``R @ qd``, ``R @ qdd``) read each
-#: where the other belongs
+#: where the other belongs; the names a state is unpacked into, bound in another order, read each from another's row
 RIVALS = {
     "point_doubled": ("offset", "`{f}` places a point elsewhere: a number of its position is doubled"),
     "point_halved": ("offset", "`{f}` places a point elsewhere: a number of its position is halved"),
@@ -3250,6 +3267,7 @@ RIVALS = {
                                  "belongs"),
     "parameters_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the "
                                       "quantity belongs"),
+    "unpacked": ("state_row", "`{f}` reads each coordinate it unpacks from another's row of the state"),
     "angle_sum": ("extra_term", "`{f}` reads a sum of angles where one of its terms belongs (a term added)"),
     "angle_part": ("missing_term", "`{f}` reads one term of a sum of angles where the sum belongs (a term left "
                                    "out)"),

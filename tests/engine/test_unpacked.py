@@ -1,9 +1,11 @@
 """The formula tier's slip of names bound in another order (``grader.diagnosis.mutants``: ``cycled``, on names bound as
 well as read): ``phi, x, y = q`` for ``x, y, phi = q``, each name bound from another's row, told as quantities in
-another order; and a slice of a state one row on (``y[1:4]`` for ``y[:3]``: as many entries, each from the next row),
-told as a neighbouring index, as is the first entry read for a later one (``q[0]`` for ``q[2]``); and a range counted
-from one (``np.arange(1, n + 1)``), told as an offset.  Planted into a made-up problem that the tier names on two
-inputs, with the near misses of a name bound from a row that no order of the three gives and of a slice two rows on."""
+another order and as the state read from the wrong rows (names unpacked from what is no state, as the first only; those
+of a slice of a run's state, as the second only); and a slice of a state one row on (``y[1:4]`` for ``y[:3]``: as many
+entries, each from the next row), told as a neighbouring index, as is the first entry read for a later one (``q[0]`` for
+``q[2]``); and a range counted from one (``np.arange(1, n + 1)``), told as an offset.  Planted into a made-up problem
+that the tier names on two inputs, with the near misses of a name bound from a row that no order of the three gives and
+of a slice two rows on."""
 
 import numpy as np
 
@@ -33,6 +35,22 @@ def harmonics(n, t):
     # END SOLUTION
 
 
+def tip(y):
+    """A made-up tip's height and reach from a state of six, its first three the coordinates ``(x, h, phi)``."""
+    # BEGIN SOLUTION problem 92
+    x, h, phi = y[:3]
+    return np.array([h + np.sin(phi), x * h])
+    # END SOLUTION
+
+
+def damped(gains, e):
+    """A made-up feedback of an error ``e = (position, rate)`` with the gains ``(kp, kd)``."""
+    # BEGIN SOLUTION problem 92
+    kp, kd = gains
+    return -kp * e[0] - kd * e[1]
+    # END SOLUTION
+
+
 def event_state(y):
     """A made-up residual from the first three entries of a state of six."""
     # BEGIN SOLUTION problem 92
@@ -54,14 +72,17 @@ def found(package, student):
     return mutants.mutant_slips(scene("p92.pin"), evidences)
 
 
-def test_names_bound_in_another_order_are_quantities_in_another_order(made_up):
+def test_names_bound_in_another_order_are_quantities_in_another_order_and_rows_of_the_state(made_up):
+    """``phi, x, y = q`` binds each name from another's row: as truly quantities in another order as a state read
+    from the wrong rows, so both are told."""
     def student(q):
         phi, x, y = q
         return np.array([x + 2.0 * y, y * phi, np.cos(phi)])
 
     hypotheses = found(made_up, student)
-    assert {h.name for h in hypotheses} == {"swapped"}, [(h.name, h.detail) for h in hypotheses]
-    assert any("`pin` lists quantities in another order" in h.detail for h in hypotheses)
+    assert {h.name for h in hypotheses} == {"swapped", "state_row"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("`pin` unpacks the coordinates into its names in another order" in h.detail for h in hypotheses)
+    assert any("`pin` reads each coordinate it unpacks from another's row" in h.detail for h in hypotheses)
 
 
 def test_a_name_bound_from_a_row_no_order_gives_is_not_that_slip(made_up):
@@ -118,3 +139,29 @@ def test_a_range_counted_from_one_is_an_offset(made_up):
                                   number=92)
     hypotheses = mutants.mutant_slips(scene("p92.harmonics"), evidences)
     assert not any("counts from one" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+def test_two_names_of_a_slice_of_a_runs_state_exchanged_are_the_state_read_from_the_wrong_rows(made_up):
+    """``h, x, phi = y[:3]``: the names of a slice of a run's state are its reads, read from each other's rows."""
+    def student(y):
+        h, x, phi = y[:3]
+        return np.array([h + np.sin(phi), x * h])
+
+    evidences = made_up_evidences(made_up, "tip", student, STATES, number=92)
+    assert all(not np.allclose(e.got, e.expected) for e in evidences)
+    hypotheses = mutants.mutant_slips(scene("p92.tip"), evidences)
+    assert {h.name for h in hypotheses} == {"state_row"}, [(h.name, h.detail) for h in hypotheses]
+
+
+def test_names_unpacked_from_what_is_no_state_are_quantities_in_another_order_only(made_up):
+    """``kd, kp = gains``: two gains exchanged are no rows of a state."""
+    def student(gains, e):
+        kd, kp = gains
+        return -kp * e[0] - kd * e[1]
+
+    inputs = [(np.array([4.0, 0.7]), np.array([0.3, -1.2])), (np.array([2.5, 1.3]), np.array([-0.8, 0.4]))]
+    evidences = made_up_evidences(made_up, "damped", student, inputs, number=92)
+    assert all(not np.allclose(e.got, e.expected) for e in evidences)
+    hypotheses = mutants.mutant_slips(scene("p92.damped"), evidences)
+    assert "swapped" in {h.name for h in hypotheses}, [(h.name, h.detail) for h in hypotheses]
+    assert "state_row" not in {h.name for h in hypotheses}, [(h.name, h.detail) for h in hypotheses]
