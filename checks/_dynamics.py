@@ -75,6 +75,7 @@ __all__ = [
     "first_departure",
     "assert_run",
     "assert_event_found",
+    "ended_early",
     "run_figure",
     "run_array",
     "same_crossings",
@@ -547,7 +548,8 @@ def assert_event_found(got, expected, event, keys, tols, what, message, hint):
     departs (``tols`` per key), with the whole runs as evidence for the diagnosis engine (the run never reaching
     the event is then a symptom, and its cause is what differs: a start, a model); only a run that follows the
     reference's up to its event and goes on without one has missed the event (``no_event``, ``message`` and
-    ``hint``)."""
+    ``hint``); one that follows it to its own end and ends before the event never reached it (``span_short``:
+    ``ended_early``)."""
     if not isinstance(got, dict) or got.get(event) is not None:
         return
     t_event = float(expected[event])
@@ -577,7 +579,40 @@ def assert_event_found(got, expected, event, keys, tols, what, message, hint):
 
                 evidence = Evidence(mine[key], ours[key], tols[key], key, got, expected)
                 raise CheckFailure(exc.message, "", "", evidence=evidence) from None
+    if before.size:
+        ended = ended_early(t_mine, {key: run_array(got, key, None, what) for key in keys}, expected, keys, t_event,
+                            tols)
+        if ended is not None:
+            fail(f"{message} Your run ends at t = {ended:.6g} s, before the reference's event at t = {t_event:.6g} "
+                 f"s; up to its end it agrees with the reference's.", SPAN_HINT, "span_short")
     fail(message, hint, "no_event")
+
+
+SPAN_HINT = ("Integrate over the whole span asked for: the event lies beyond the end of your run, so the run never "
+             "reaches it.")
+
+
+def ended_early(t_mine, mine: dict, expected, keys, t_event: float, tols) -> float | None:
+    """The end time of a run (its times ``t_mine``, its rows ``mine[key]``) that stops before the reference's
+    event at ``t_event`` while its last row agrees with the reference run ``expected`` (its ``"t"`` and ``keys``)
+    at that time, within ``tols[key]``: a span of the integration too short (``span_short``), where the event is
+    not missed but never reached.  None where the run reaches the event's time, or where it has left the
+    reference's by its end (then what differs is the cause)."""
+    t_mine = np.asarray(t_mine, dtype=float)
+    t_ours = np.asarray(expected["t"], dtype=float)
+    if t_mine.size < 2 or t_ours.size < 2 or not np.all(np.diff(t_ours) > 0):
+        return None
+    end = float(t_mine[-1])
+    if not (t_ours[0] <= end < t_event - 1e-9 * max(1.0, abs(t_event))):
+        return None
+    for key in keys:
+        ours, rows = np.asarray(expected[key], dtype=float), np.asarray(mine[key], dtype=float)
+        if rows.ndim != 2 or ours.ndim != 2 or rows.shape[0] != t_mine.size or rows.shape[1] != ours.shape[1]:
+            return None
+        there = np.array([np.interp(end, t_ours, ours[:, j]) for j in range(ours.shape[1])])
+        if not close(rows[-1], there, tols[key]):
+            return None
+    return end
 
 
 def subsample(t, y, n=250):

@@ -27,7 +27,7 @@ from grader.checking import (
 from probes import problem_42 as p42
 
 from ._answers import choice, typed_or_ignored
-from ._dynamics import subsample
+from ._dynamics import ended_early, subsample
 
 TITLE = "Event Detection"
 
@@ -38,6 +38,8 @@ V0, DRAG = 10.0, 0.1
 TIME = Tol("event time, a reasonable integrator", 2e-3)
 HEIGHT = Tol("apex height, a reasonable integrator", 1e-2)
 SPEED = Tol("landing velocity, a reasonable integrator", 2e-2)
+#: the state (height, velocity) of a flight that ends early, against the reference's at its end
+ALONG = Tol("a state along the flight, a reasonable integrator", 1e-2, 1e-2)
 SHEET_BANDS = {"t_land": TIME, "v_land": SPEED, "t_apex": TIME, "height_apex": HEIGHT}
 #: on random balls (up to 30 m/s, flights up to 6 s) the default tolerances err by up to 0.4 % in the times and
 #: 0.15 % in the height (DOP853's interpolated landing velocity by up to 3 %, so it is compared on the sheet's ball
@@ -130,6 +132,12 @@ def _flight(got, expected, v0, drag, bands, g=None):
     """The landing is found, is not the launch, ends the run; the apex and the landing lie within the bands."""
     what = f"throw(v0 = {v0:.4g}, drag = {drag:.4g}{'' if g is None else f', g = {g:g}'})"
     if got["t_land"] is None:
+        ended = _ended(got, expected)
+        if ended is not None:
+            fail(f"{what}: the ball never landed (t_land is None): your run ends at t = {ended:.4g} s, before the "
+                 f"reference's landing at t = {expected['t_land']:.4f} s, and agrees with the reference's flight up to "
+                 f"there.", "The flight is integrated until the ball lands: the span (0, t_max) must reach past the "
+                 "landing (t_max = T_MAX = 10 s unless another is given).", "span_short")
         fail(f"{what}: the ball never landed (t_land is None); the reference's lands at t = "
              f"{expected['t_land']:.4f} s.", "The landing event (height through zero, direction -1, terminal) must be "
              "among the events passed to solve_ivp(..., events=...).", "no_event")
@@ -156,6 +164,17 @@ def _flight(got, expected, v0, drag, bands, g=None):
     for key, tol in bands.items():
         assert_close(got[key], expected[key], key, tol, _apex_mistakes(key, at_step),
                      context=f"({what}, against a tight reference run)", note=BANDS_NOTE)
+
+
+def _ended(got, expected):
+    """The end time of a flight that stops before the reference's landing while it agrees with the reference's
+    flight there (the span of the integration too short), or None (``checks._dynamics.ended_early``)."""
+    try:
+        t, y = np.asarray(got["t"], dtype=float), np.asarray(got["y"], dtype=float)
+    except (KeyError, TypeError, ValueError):
+        return None
+    ours = {"t": expected["t"], "y": expected["y"]}
+    return ended_early(t, {"y": y}, ours, ("y",), float(expected["t_land"]), {"y": ALONG})
 
 
 def _highest_step(t, y):
