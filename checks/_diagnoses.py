@@ -177,6 +177,8 @@ _TABLE = (
     # ---------------------------------------------------------------- inverse
     _D("inverse", "inverse", "the inverse of the expected matrix", "returned the inverse of the matrix asked for"),
     _D("no_inverse", "inverse", "a matrix used where its inverse belongs", "forgot to invert a matrix"),
+    _D("inverse_left_out", "inverse", "an inverse factor of a product left out (J.T Lam for M^-1 J.T Lam)",
+       "left an inverse out of a product"),
     _D("reciprocal_argument", "inverse", "a number used as its reciprocal (1/x where x belongs, or the reverse)",
        "used a number's reciprocal in its place"),
     _D("ratio_inverted", "inverse", "a ratio upside down", "turned a ratio upside down"),

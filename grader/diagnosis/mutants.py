@@ -485,6 +485,8 @@ SLIPS = {
                           "it)"),
     "term": ("missing_term", "one term of a sum in `{f}` is left out"),
     "factor": ("missing_factor", "one factor of a product in `{f}` is left out"),
+    "inverse_factor": ("inverse_left_out", "`{f}` leaves an inverse factor out of a product (``J.T @ Lam`` for "
+                                           "``M_inv @ J.T @ Lam``)"),
     "matrix_factor": ("missing_matrix_factor", "a matrix or vector factor of a product in `{f}` is left out (``J`` "
                                                "for ``J @ qd``)"),
     "rotation": ("wrong_frame", "a rotation is left out in `{f}`: a vector stays in the coordinates of another frame"),
@@ -759,12 +761,15 @@ def _np_round(node, decimals: int):
 
 #: the names of an integration's step, by the course's notation (``dt``, ``h``, ``self.dt``, ``time_step``)
 _STEP = re.compile(r"^(?:dt|h|step|time_step|delta_t|d_t)$")
+#: the names of an inverse (``M_inv``, ``Minv``, ``inv_M``), for a factor left out
+_INVERSE = re.compile(r"^(?:[A-Za-z]\w*_?inv|inv_[A-Za-z]\w*)$")
 
 
 def _dropped(operand) -> str:
     """The slip of a factor left out of a product: a number, the identity matrix (``(r @ r) * np.eye(3)`` as
     ``r @ r``: the number is added to every entry, not to the diagonal alone), a rotation (a frame slip), the step
     of an integration (``expm_skew(I_Om)`` for ``expm_skew(dt * I_Om)``: a whole unit of time taken for a step) or
+    an inverse (``J.T @ Lam`` for ``M_inv @ J.T @ Lam``: the inverse left out, and as truly a factor left out) or
     another factor."""
     if _number(operand) or (isinstance(operand, ast.UnaryOp) and _number(operand.operand)):
         return "number"
@@ -772,6 +777,9 @@ def _dropped(operand) -> str:
         return "identity_left_out"
     if isinstance(operand, (ast.Name, ast.Attribute)) and _STEP.match(_label(operand) or "-"):
         return "step_left_out"
+    if (isinstance(operand, ast.Name) and _INVERSE.match(operand.id)) \
+            or (isinstance(operand, ast.Call) and _callee(operand) == "inv"):
+        return "inverse_factor"
     return "rotation" if _ROTATION.match(_label(operand) or "-") else "factor"
 
 
@@ -3251,7 +3259,8 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
 #: the slips whose edit is as truly a slip of another family: a product with a quantity for a division by it uses
 #: the quantity where its reciprocal belongs (a number's factor is a scale: ``x * 2`` for ``x / 2``); two entries
 #: or arguments exchanged that are one expression of a quantity and of its rate (``R @ qd``, ``R @ qdd``) read each
-#: where the other belongs; the names a state is unpacked into, bound in another order, read each from another's row
+#: where the other belongs; the names a state is unpacked into, bound in another order, read each from another's row;
+#: an inverse left out of a product is a matrix factor left out
 RIVALS = {
     "point_doubled": ("offset", "`{f}` places a point elsewhere: a number of its position is doubled"),
     "point_halved": ("offset", "`{f}` places a point elsewhere: a number of its position is halved"),
@@ -3267,6 +3276,7 @@ RIVALS = {
                                  "belongs"),
     "parameters_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the "
                                       "quantity belongs"),
+    "inverse_factor": ("missing_matrix_factor", "a matrix factor of a product in `{f}` is left out"),
     "unpacked": ("state_row", "`{f}` reads each coordinate it unpacks from another's row of the state"),
     "angle_sum": ("extra_term", "`{f}` reads a sum of angles where one of its terms belongs (a term added)"),
     "angle_part": ("missing_term", "`{f}` reads one term of a sum of angles where the sum belongs (a term left "
