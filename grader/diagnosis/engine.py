@@ -761,15 +761,21 @@ def value_slips(got, given, tol: Tol) -> list:
 #: the unlike slips of the formula tier that may reproduce one answer on every input and still be told: more say
 #: that the inputs cannot tell causes apart
 MAX_UNLIKE = 2
+#: the names of two things exchanged (entries, arguments, factors, a quantity and its rate, rows of a state): an
+#: exchange reproduces an answer only where the two exchanged are the two that differ, so exchanges found in
+#: several places are readings of one slip, not a sign of inputs that cannot tell causes apart
+EXCHANGES = frozenset({"swapped", "argument_order", "factor_order", "state_row"})
 
 
 def _told_apart(formulas: list) -> list:
-    """The formula tier's hypotheses, or none where more than ``MAX_UNLIKE`` unlike slips (names, twins aside) of
-    more than one family reproduce the answer on every input: many unlike edits giving one value is a sign that
-    the inputs cannot tell causes apart (a term whose size dwarfs the tolerance on none of them, that a factor left
-    out, a ratio upside down and a product for a division all make vanish alike), not that each is a reading of
-    the slip.  Unlike names of one family (entries, arguments or names exchanged) tell one family still."""
-    names = {h.name for h in formulas if not h.twin}
+    """The formula tier's hypotheses, or none where more than ``MAX_UNLIKE`` unlike slips (names, twins and
+    exchanges aside) of more than one family reproduce the answer on every input: many unlike edits giving one value
+    is a sign that the inputs cannot tell causes apart (a term whose size dwarfs the tolerance on none of them, that
+    a factor left out, a ratio upside down and a product for a division all make vanish alike), not that each is a
+    reading of the slip.  Unlike names of one family (entries, arguments or names exchanged) tell one family still,
+    and exchanges (``EXCHANGES``: the desired rates and accelerations exchanged as two entries, two arguments and a
+    quantity read for its rate) are not counted."""
+    names = {h.name for h in formulas if not h.twin and h.name not in EXCHANGES}
     if len(names) > MAX_UNLIKE and len({DIAGNOSES[name].family for name in names}) > 1:
         trace.note("unlike", names=sorted(names))
         return []

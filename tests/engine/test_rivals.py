@@ -195,6 +195,23 @@ def test_one_slip_read_two_ways_is_told_still(made_up):
     assert {h.name for h in _told_apart(found)} == {"wrong_factor", "reciprocal_argument"}, found
 
 
+def test_exchanges_found_in_several_places_are_told_as_readings_of_one_slip():
+    """Two quantities exchanged (the desired rates and accelerations) reproduce the answer as two entries exchanged,
+    two arguments exchanged and a quantity read for its rate: three names of two families, each an exchange, which
+    reproduces an answer only where the two exchanged are the two that differ.  They are told; three unlike slips
+    that are no exchanges (a factor left out, a ratio upside down, a reciprocal) still tell nothing."""
+    from grader.diagnosis.engine import _told_apart
+    from grader.diagnosis.evidence import Hypothesis
+
+    exchanged = [Hypothesis("a", "swapped", 2, "entries"), Hypothesis("b", "argument_order", 2, "arguments"),
+                 Hypothesis("c", "state_row", 2, "a rate")]
+    assert _told_apart(exchanged) == exchanged
+    vanishing = [Hypothesis("a", "missing_factor", 2, "factor"), Hypothesis("b", "ratio_inverted", 2, "ratio"),
+                 Hypothesis("c", "reciprocal_argument", 2, "reciprocal")]
+    assert _told_apart(vanishing) == []
+    assert _told_apart(vanishing[:2] + exchanged[:1]) == vanishing[:2] + exchanged[:1]
+
+
 # ------------------------------------------------------------------------------------------ a point at the origin
 
 STRETCHES = [(V(0.3, 1.2, -0.4),), (V(-1.1, 0.6, 0.9),)]
