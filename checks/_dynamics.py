@@ -598,15 +598,21 @@ def ended_early(t_mine, mine: dict, expected, keys, t_event: float, tols) -> flo
     at that time, within ``tols[key]``: a span of the integration too short (``span_short``), where the event is
     not missed but never reached.  None where the run reaches the event's time, or where it has left the
     reference's by its end (then what differs is the cause)."""
-    t_mine = np.asarray(t_mine, dtype=float)
-    t_ours = np.asarray(expected["t"], dtype=float)
-    if t_mine.size < 2 or t_ours.size < 2 or not np.all(np.diff(t_ours) > 0):
+    try:
+        t_mine, t_ours = np.asarray(t_mine, dtype=float), np.asarray(expected["t"], dtype=float)
+    except (TypeError, ValueError):
+        return None
+    if t_mine.ndim != 1 or t_ours.ndim != 1 or t_mine.size < 2 or t_ours.size < 2 \
+            or not np.all(np.isfinite(t_mine)) or not np.all(np.diff(t_ours) > 0):
         return None
     end = float(t_mine[-1])
     if not (t_ours[0] <= end < t_event - 1e-9 * max(1.0, abs(t_event))):
         return None
     for key in keys:
-        ours, rows = np.asarray(expected[key], dtype=float), np.asarray(mine[key], dtype=float)
+        try:
+            ours, rows = np.asarray(expected[key], dtype=float), np.asarray(mine[key], dtype=float)
+        except (TypeError, ValueError):
+            return None
         if rows.ndim != 2 or ours.ndim != 2 or rows.shape[0] != t_mine.size or rows.shape[1] != ours.shape[1]:
             return None
         there = np.array([np.interp(end, t_ours, ours[:, j]) for j in range(ours.shape[1])])

@@ -68,3 +68,13 @@ def test_the_shared_check_tells_a_run_that_ends_before_the_event_from_one_that_m
     with pytest.raises(CheckFailure) as caught:
         assert_event_found(past, expected, "t_event", ("q", "qd"), band, "a run", "No event.", "Pass the event.")
     assert caught.value.diagnosis == "no_event"
+
+
+@pytest.mark.parametrize("t, y", [
+    (np.array([[0.0], [0.5], [1.0]]), np.zeros((3, 2))),  # times as a column
+    (np.array([0.0, np.nan, 1.0]), np.zeros((3, 2))),  # a time that is no number
+    (np.array([0.0, 0.5, 1.0]), [[0.0, 1.0], [0.0], [1.0, 2.0]]),  # ragged rows
+    (np.array([0.0, 0.5, 1.0]), np.zeros((3, 5))),  # rows of another width
+])
+def test_a_run_that_cannot_be_read_is_no_span_too_short(flight, t, y):
+    assert check_42._ended({"t": t, "y": y}, flight) is None
