@@ -16,12 +16,14 @@ from grader.checking import (
     STAGE_RANDOM,
     STAGE_STRUCTURE,
     STAGE_VALUES,
+    CheckFailure,
     Mistake,
     Tol,
     assert_close,
     check,
     fail,
 )
+from grader.errors import StudentFault, ends_grading
 from probes import problem_03 as p03
 
 from ._mujoco import (
@@ -295,6 +297,33 @@ def _stepped_otherwise(run) -> str:
     return " and ".join(found)
 
 
+def _follows_as_sheet(ctx, q1_ref, duration):
+    """Whether the student's driven model, stepped with the sheet's integration (RK4 at 1 ms) whatever it declares,
+    holds joint 1 on q1 = t (``q1_ref``): True (the model's own integration is what strays), False (it strays as
+    well, at the right average rate: the servo), or None (that run cannot say)."""
+    try:
+        again = run_of(ctx.student(p03.run, "driven", HDPE, EARTH, duration, SAMPLE, RATE, True, timeout=30),
+                       f"the model of {VARIANTS['driven']}, stepped with RK4 at 1 ms")
+        q1 = np.asarray(again["qpos"], dtype=float)[:, 0]
+    except StudentFault as exc:
+        if ends_grading(exc):
+            raise
+        return None
+    except (CheckFailure, KeyError, TypeError, ValueError, IndexError):
+        return None
+    if q1.shape != np.shape(q1_ref) or not np.all(np.isfinite(q1)):
+        return None
+    if np.all(np.abs(q1 - q1_ref) <= DRIVEN.atol):
+        return True
+    return False if _right_average(q1, q1_ref) else None
+
+
+def _right_average(q1, q1_ref) -> bool:
+    """The run turns at the prescribed rate on average (its best straight line against the reference's)."""
+    t = np.arange(q1.size, dtype=float)
+    return bool(np.isclose(np.polyfit(t, q1, 1)[0], np.polyfit(t, q1_ref, 1)[0], rtol=0.02))
+
+
 def _other_rate(ctx):
     """Joint 1 turns at the rate given: the model built for ``OTHER_RATE`` follows q1 = OTHER_RATE t (a model with
     the sheet's rate typed in would pass the run at the sheet's rate)."""
@@ -334,11 +363,17 @@ def check_driven_rate(ctx):
     if np.isclose(slope, RATE, rtol=0.02):
         stepped = _stepped_otherwise(got)
         if stepped:  # a servo that lags and a model stepped otherwise both stray from q1 = t on the right average
+            as_sheet = _follows_as_sheet(ctx, q1_ref, duration)
+            if as_sheet:
+                fail(f"{message}\nYour model {stepped}; stepped as the sheet's models are, with RK4 at 1 ms, it "
+                     "follows q1 = t.", "Declare the sheet's integration, <option integrator=\"RK4\" "
+                     "timestep=\"0.001\"/>: with another step or integrator the servo holds the joint otherwise.",
+                     "integration")
             fail(f"{message}\nYour model {stepped}; the sheet's models integrate with RK4 at 1 ms.",
                  "On average the rate is right but the joint strays from q1 = t. Your model is not integrated as the "
                  "sheet's (<option integrator=\"RK4\" timestep=\"0.001\"/>): with another step or integrator the "
                  "servo holds the joint otherwise. If it still strays with the sheet's, look at the servo (kp = 1000, "
-                 "no damping kv).", "")
+                 "no damping kv).", "soft_servo" if as_sheet is False else "")
         fail(message, "On average the rate is right but the joint strays from q1 = t: stiffen the servo (kp = 1000) "
              "and drop its damping kv, which lags the joint behind a moving setpoint.", "soft_servo")
     if np.isclose(slope, -RATE, rtol=0.05):

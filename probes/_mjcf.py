@@ -171,6 +171,17 @@ def _integrator(model):
         return str(int(model.opt.integrator))
 
 
+def integrated_as_sheet(model, data):
+    """``(model, data)`` with the sheet's integration (RK4 at 1 ms) in place of the model's own: the same model
+    stepped as the sheet's, to tell a slip of its integration from one of the model."""
+    import mujoco
+
+    model.opt.timestep = 0.001
+    model.opt.integrator = mujoco.mjtIntegrator.mjINT_RK4
+    mujoco.mj_forward(model, data)
+    return model, data
+
+
 def _equality_points(model, data, i):
     """World positions of the two points a ``connect`` constraint joins (bodies with anchors, or sites)."""
     import mujoco

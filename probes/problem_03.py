@@ -24,10 +24,13 @@ def model(pkg, variant, density, gravity, rate=None):
 
 
 @probe(returns=_mjcf.RESULT_OF_RUN, says="the model of 3({0})")
-def run(pkg, variant, density, gravity, duration, sample, rate=None):
+def run(pkg, variant, density, gravity, duration, sample, rate=None, as_sheet=False):
     """The variant's model run for ``duration`` seconds from its first keyframe (or as written); controls as the
-    keyframe sets them."""
+    keyframe sets them.  ``as_sheet``: stepped with the sheet's integration (RK4 at 1 ms) whatever the model
+    declares."""
     xml = _xml(pkg, variant, density, gravity, rate)
+    if as_sheet:
+        return _mjcf.guarded(lambda: _mjcf.run(*_mjcf.integrated_as_sheet(*_mjcf.load(xml)), duration, sample))
     return _mjcf.guarded(lambda: _mjcf.run(*_mjcf.load(xml), duration, sample))
 
 
