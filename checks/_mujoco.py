@@ -12,13 +12,15 @@ from dataclasses import replace
 import numpy as np
 
 from grader.checking import CheckFailure, Mistake, Tol, assert_close, fail, figure
+from grader.errors import StudentFault, ends_grading
 from grader.oracle import call_key
 from grader.results import Series
 
 __all__ = [
     "LENGTH", "WIDTH", "HEIGHT", "VOLUME", "ALUMINIUM", "HDPE", "EARTH", "MOON", "SAMPLE",
     "MASS", "POSITION", "DIRECTION", "student_once", "model_of", "reference_of", "run_of", "hinges",
-    "body_of", "assert_link_masses", "compare_traces", "trace_figure", "MAX_POINTS",
+    "body_of", "assert_link_masses", "compare_traces", "departure", "stepped_otherwise", "integration_to_blame",
+    "trace_figure", "MAX_POINTS", "SHEET_INTEGRATOR", "SHEET_TIMESTEP",
 ]
 
 #: the sheet's link [m] (problem data, P2): a brick 20 x 1 x 1 cm, length along its x-axis
@@ -30,6 +32,8 @@ MATERIALS = {ALUMINIUM: "aluminium", HDPE: "HDPE"}
 EARTH, MOON = 9.81, 1.62
 #: traces are compared every 10 ms
 SAMPLE = 0.01
+#: the sheet's integration of every model: RK4 at 1 ms
+SHEET_INTEGRATOR, SHEET_TIMESTEP = "rk4", 0.001
 MAX_POINTS = 500
 
 #: mass and inertia as MuJoCo computes them or as the model declares them (four significant digits suffice)
@@ -122,13 +126,9 @@ def assert_link_masses(desc, what, links, density, link_mass):
                                        "kg/m^3): build the model with the density you are given.")])
 
 
-def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", note=""):
-    """Fail at the first sample with ``t <= window`` where a student's trace leaves the reference's.
-
-    ``got`` and ``expected`` map a label (e.g. "q2 [rad]") to a 1-D trace on the times ``t``; ``tols`` maps the same
-    labels to a tolerance.  The message names the time and the trace (then ``note``: why the window ends where
-    it does), and lists the samples around it.
-    """
+def departure(t, got, expected, tols, window):
+    """``(index, label)`` of the first sample with ``t <= window`` where a student's trace leaves the reference's
+    (``compare_traces``), or None where none does."""
     t = np.asarray(t, dtype=float)
     inside = t <= window + 1e-9
     first, label = None, None
@@ -139,8 +139,55 @@ def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", 
         hits = np.flatnonzero(bad)
         if hits.size and (first is None or hits[0] < first):
             first, label = int(hits[0]), key
-    if first is None:
+    return None if first is None else (first, label)
+
+
+def stepped_otherwise(run) -> str:
+    """How a run of the student's model is integrated otherwise than the sheet's (RK4 at 1 ms), in words ("" where
+    it is integrated as the sheet's, or the run does not say)."""
+    integrator, timestep = run.get("integrator"), run.get("timestep")
+    found = []
+    if timestep is not None and not np.isclose(float(timestep), SHEET_TIMESTEP, rtol=1e-6, atol=0.0):
+        found.append(f"steps at {float(timestep) * 1000:g} ms")
+    if integrator is not None and str(integrator).lower() != SHEET_INTEGRATOR:
+        found.append(f"integrates with {integrator}")
+    return " and ".join(found)
+
+
+def integration_to_blame(ctx, probe, args, run, traces, t, expected, tols, window) -> str:
+    """How the student's model is stepped otherwise than the sheet's, where its traces leave the reference's and the
+    same model stepped with RK4 at 1 ms (``probe(*args, True)``, the probe's ``as_sheet``) follows them: its
+    integration is then what strays; "" where the model is stepped as the sheet's, its traces follow the reference's,
+    the run stepped as the sheet's strays as well (a slip of the model) or cannot be read.  ``run``: the student's
+    run, ``traces(run)``: its traces by label, as compared."""
+    stepped = stepped_otherwise(run)
+    if not stepped or departure(t, traces(run), expected, tols, window) is None:
+        return ""
+    try:
+        again = run_of(ctx.student(probe, *args, True, timeout=30), "the model stepped with RK4 at 1 ms")
+        follows = departure(t, traces(again), expected, tols, window) is None
+    except StudentFault as exc:
+        if ends_grading(exc):
+            raise
+        return ""
+    except (CheckFailure, KeyError, TypeError, ValueError, IndexError):
+        return ""
+    return stepped if follows else ""
+
+
+def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", note=""):
+    """Fail at the first sample with ``t <= window`` where a student's trace leaves the reference's.
+
+    ``got`` and ``expected`` map a label (e.g. "q2 [rad]") to a 1-D trace on the times ``t``; ``tols`` maps the same
+    labels to a tolerance.  The message names the time and the trace (then ``note``: why the window ends where
+    it does), and lists the samples around it.
+    """
+    t = np.asarray(t, dtype=float)
+    inside = t <= window + 1e-9
+    found = departure(t, got, expected, tols, window)
+    if found is None:
         return
+    first, label = found
     rows = ["      t [s]  " + "".join(f"{'yours: ' + k:>22}{'reference':>12}" for k in tols)]
     for i in range(max(0, first - 3), min(len(t), first + 3)):
         mark = "  ✘" if i == first else ""

@@ -42,8 +42,10 @@ from ._mujoco import (
     body_of,
     compare_traces,
     hinges,
+    integration_to_blame,
     model_of,
     run_of,
+    stepped_otherwise,
     student_once,
     trace_figure,
 )
@@ -68,8 +70,6 @@ ANGLE = Tol("angle, MuJoCo vs the reference's ODE", 0.05)
 RATE_TOL = Tol("rate, MuJoCo vs the reference's ODE", 0.5)
 #: 3(c): joint 1 follows q1 = t (a servo of kp = 1000 stays within 1e-4 rad)
 DRIVEN = Tol("joint 1 on its prescribed motion", 0.01)
-#: the sheet's integration of every model: RK4 at 1 ms
-SHEET_INTEGRATOR, SHEET_TIMESTEP = "rk4", 0.001
 FINITE = dict(allow_nan=False, allow_infinity=False)
 BRICKS = st.tuples(st.floats(0.05, 1.0, **FINITE), st.floats(0.005, 0.1, **FINITE), st.floats(0.005, 0.1, **FINITE),
                    st.floats(100.0, 10000.0, **FINITE))
@@ -245,12 +245,19 @@ def _chaos_traces(ctx, variant, title):
         why = (f"The double pendulum is chaotic: the reference's own ODE, started {perturbation:g} rad off, parts "
                f"from itself by more than the tolerance after {horizon:.2f} s, so only the first {horizon:.2f} s "
                "can tell a wrong model from rounding (the sheet compared five seconds by eye).")
-    coarse = got["integrator"] != "rk4"
-    hint = (f"Your model integrates with {got['integrator']} at {got['timestep'] * 1000:g} ms, too coarse for a "
-            'chaotic motion: declare <option integrator="RK4" timestep="0.001"/>.' if coarse else
+    stepped = integration_to_blame(ctx, p03.run, (variant, HDPE, EARTH, duration, SAMPLE, rate), got, _traces,
+                                   expected["t"], ref, tols, horizon)
+    hint = (f"Your model {stepped}, too coarse for a chaotic motion: stepped as the sheet's models are, with RK4 at "
+            '1 ms, it follows the reference, so declare <option integrator="RK4" timestep="0.001"/>.' if stepped else
             "The checks of what the model declares (above) name the likely cause.")
     compare_traces(expected["t"], mine, ref, tols, horizon, f"of {VARIANTS[variant]}", hint,
-                   "integration" if coarse else "", note=why)
+                   "integration" if stepped else "", note=why)
+
+
+def _traces(run):
+    """The traces of a run of a double pendulum, by label: both joints' angles and rates."""
+    qpos, qvel = np.asarray(run["qpos"], dtype=float), np.asarray(run["qvel"], dtype=float)
+    return {"q1 [rad]": qpos[:, 0], "q1_dot [rad/s]": qvel[:, 0], "q2 [rad]": qpos[:, 1], "q2_dot [rad/s]": qvel[:, 1]}
 
 
 @check(2, title="3(a): both joints' angles and rates follow the reference up to the chaos horizon",
@@ -283,18 +290,6 @@ def check_driven_model(ctx):
         fail(f"{what}: its actuator drives {which}; the sheet drives joint 1 (q1 = t) and leaves joint 2 free.",
              'Attach the servo to the first hinge: <intvelocity joint="joint1" kp="1000"/>.', "actuator_joint")
     _density(ctx, "driven")
-
-
-def _stepped_otherwise(run) -> str:
-    """How a run of the student's model is integrated otherwise than the sheet's (RK4 at 1 ms), in words ("" where
-    it is integrated as the sheet's, or the run does not say)."""
-    integrator, timestep = run.get("integrator"), run.get("timestep")
-    found = []
-    if timestep is not None and not np.isclose(float(timestep), SHEET_TIMESTEP, rtol=1e-6, atol=0.0):
-        found.append(f"steps at {float(timestep) * 1000:g} ms")
-    if integrator is not None and str(integrator).lower() != SHEET_INTEGRATOR:
-        found.append(f"integrates with {integrator}")
-    return " and ".join(found)
 
 
 def _follows_as_sheet(ctx, q1_ref, duration):
@@ -361,7 +356,7 @@ def check_driven_rate(ctx):
         fail(message, "The rate is in rad/s: you converted it as if it were in degrees (or converted degrees "
              "twice).", "rate_degrees")
     if np.isclose(slope, RATE, rtol=0.02):
-        stepped = _stepped_otherwise(got)
+        stepped = stepped_otherwise(got)
         if stepped:  # a servo that lags and a model stepped otherwise both stray from q1 = t on the right average
             as_sheet = _follows_as_sheet(ctx, q1_ref, duration)
             if as_sheet:

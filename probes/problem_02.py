@@ -15,11 +15,13 @@ def model(pkg, density, gravity, damping=0.0, torque=0.0):
 
 
 @probe(returns=_mjcf.RESULT_OF_RUN, says="pendulum({0}, {1}, {2}, {3})")
-def run(pkg, density, gravity, damping, torque, duration, sample):
+def run(pkg, density, gravity, damping, torque, duration, sample, as_sheet=False):
     """``pendulum(...)`` run for ``duration`` seconds; every actuator gets the control sin(t) (the tutorial's
-    sine-wave source)."""
+    sine-wave source).  ``as_sheet``: stepped with the sheet's integration (RK4 at 1 ms) whatever the model
+    declares."""
     xml = _xml(pkg, density, gravity, damping, torque)
-    return _mjcf.guarded(lambda: _mjcf.run(*_mjcf.load(xml), duration, sample, control="sine"))
+    load = (lambda: _mjcf.integrated_as_sheet(*_mjcf.load(xml))) if as_sheet else (lambda: _mjcf.load(xml))
+    return _mjcf.guarded(lambda: _mjcf.run(*load(), duration, sample, control="sine"))
 
 
 # The reference's own computations (its ODE, independent of MuJoCo): called on the reference only.

@@ -54,12 +54,12 @@ def test_a_servo_too_soft_is_told_only_where_the_model_is_integrated_as_the_shee
     """Problem 3(c)'s joint 1 strays from q1 = t at the right average rate: a servo too soft does that, and so does
     a model stepped otherwise than the sheet's (RK4 at 1 ms).  The check names the servo only where the run says
     the model is integrated as the sheet's; otherwise it says what differs."""
-    from checks.problem_03 import _stepped_otherwise
+    from checks._mujoco import stepped_otherwise
 
-    assert _stepped_otherwise({"integrator": "rk4", "timestep": 0.001}) == ""
-    assert _stepped_otherwise({"integrator": "rk4", "timestep": 0.002}) == "steps at 2 ms"
-    assert _stepped_otherwise({"integrator": "euler", "timestep": 0.001}) == "integrates with euler"
-    assert _stepped_otherwise({"integrator": "implicitfast", "timestep": 0.005}) == \
+    assert stepped_otherwise({"integrator": "rk4", "timestep": 0.001}) == ""
+    assert stepped_otherwise({"integrator": "rk4", "timestep": 0.002}) == "steps at 2 ms"
+    assert stepped_otherwise({"integrator": "euler", "timestep": 0.001}) == "integrates with euler"
+    assert stepped_otherwise({"integrator": "implicitfast", "timestep": 0.005}) == \
         "steps at 5 ms and integrates with implicitfast"
 
 
