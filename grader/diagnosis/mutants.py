@@ -1613,9 +1613,19 @@ def _state_parts(function: ast.FunctionDef) -> set:
 
 
 def _skews(function: ast.FunctionDef) -> set:
-    """The names the function binds to a skew matrix (``lever = skew(r)``)."""
-    return {t.id for node in ast.walk(function) if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call)
-            and _callee(node.value) == "skew" for t in node.targets if isinstance(t, ast.Name)}
+    """The names the function binds to a skew matrix (``lever = skew(r)``, or one of several bound at once:
+    ``P_Om, P_dOm = skew(w), skew(dw)``)."""
+    found = set()
+    for node in ast.walk(function):
+        if not isinstance(node, ast.Assign):
+            continue
+        for target in node.targets:
+            pairs = zip(target.elts, node.value.elts) \
+                if isinstance(target, ast.Tuple) and isinstance(node.value, ast.Tuple) \
+                and len(target.elts) == len(node.value.elts) else [(target, node.value)]
+            found |= {t.id for t, value in pairs
+                      if isinstance(t, ast.Name) and isinstance(value, ast.Call) and _callee(value) == "skew"}
+    return found
 
 
 def _skew(node, skews: set, slip: str = "transpose") -> bool:

@@ -1330,6 +1330,14 @@ def test_a_skew_matrix_transposed_is_a_sign_or_a_transpose(made_up):
     assert any("a skew matrix in `transport` is transposed" in h.detail for h in found)
 
 
+def test_skew_matrices_bound_together_are_known_as_skew_matrices():
+    """``Om, dOm = skew(w), skew(dw)`` binds two skew matrices at once: their products reordered or transposed are
+    the skew matrix negated, as for one bound alone (``lever = skew(r)``); a name bound to something else is none."""
+    tree = ast.parse("def f(w, dw, r):\n    Om, dOm = skew(w), skew(dw)\n    lever = skew(r)\n    a, b = w, skew\n"
+                     "    c, d = skew(r)\n    return Om @ r")
+    assert mutants._skews(tree.body[0]) == {"Om", "dOm", "lever"}
+
+
 def test_two_late_arguments_of_a_call_exchanged_are_tried(made_up):
     """The fifth and the sixth argument of a call exchanged."""
     def exchanged(a, b, c, d, e, f):
