@@ -195,7 +195,7 @@ from .grammar import equivalents
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
            "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
-           "FACTORS_REORDERED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips",
+           "FACTORS_REORDERED", "TRANSPOSED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips",
            "late", "left_to_live"]
 
 
@@ -3754,21 +3754,26 @@ OPERANDS_EXCHANGED = frozenset({"arguments", "names", "parameters", "blocks", "e
 #: the slips that reorder two factors of a product: their effect may be a term that vanishes (``I @ skew(w) @ w``
 #: for ``skew(w) @ I @ w``)
 FACTORS_REORDERED = frozenset({"factors", "neighbours"})
-#: ``{family a check tells from what the value shows: (the rival's family, the slips whose effect it may be, whether
-#: a mutant whose value vanishes is one: the effect of a term that is not there)}``
-EFFECT_RIVALS = {"sign": ("order", OPERANDS_EXCHANGED, False), "missing_term": ("order", FACTORS_REORDERED, True)}
+#: the slips that transpose a matrix: a rotation transposed turns the other way, its angle's sign as its effect
+#: (``A_DpDs.T`` for ``A_DpDs``)
+TRANSPOSED = frozenset({"transpose", "turned_back"})
+#: ``{family a check tells from what the value shows: (the rivals' families, the slips whose effect it may be,
+#: whether a mutant whose value vanishes is one: the effect of a term that is not there)}``
+EFFECT_RIVALS = {"sign": (("order", "transpose"), OPERANDS_EXCHANGED | TRANSPOSED, False),
+                 "missing_term": (("order",), FACTORS_REORDERED, True)}
 
 
 def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypothesis]:
     """The slips whose effect ``family`` may be (``EFFECT_RIVALS``) that reproduce the student's value on
     ``evidences``, for a check that told ``family`` from what the value shows (``diagnosis.rival``): where the check
-    named a sign, the exchanges of two operands (``OPERANDS_EXCHANGED``); where it named a term that is not there, two
-    factors of a product reordered (``FACTORS_REORDERED``: the term written, in an order in which it vanishes).  On
+    named a sign, the exchanges of two operands (``OPERANDS_EXCHANGED``) and a matrix transposed (``TRANSPOSED``: a
+    rotation turned the other way); where it named a term that is not there, two factors of a product reordered
+    (``FACTORS_REORDERED``: the term written, in an order in which it vanishes).  On
     the input shown alone where the engine has no second one (a call of no arguments): a rival adds a name to the
     check's, which the value proves already, and explains nothing by itself.  None in the kit."""
-    opposite, only, vanishing = EFFECT_RIVALS.get(family, (None, frozenset(), False))
+    opposite, only, vanishing = EFFECT_RIVALS.get(family, ((), frozenset(), False))
     first = evidences[0] if evidences else None
-    if getattr(scene.ctx.oracle, "mode", "") != "live" or opposite is None or first is None \
+    if getattr(scene.ctx.oracle, "mode", "") != "live" or not opposite or first is None \
             or first.source is None or first.got is None or any(e.source is None or e.got is None for e in evidences):
         return []
     problem = _problem(getattr(scene.ctx, "check_id", ""), first.source.probe)
@@ -3778,8 +3783,8 @@ def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypoth
         kept = _kept(problem, list(evidences), only=only, vanishing=vanishing)
     except GraderFault:
         return []
-    trace.note("opposite", family=opposite, kept=None if kept is None else sorted({m.name for m in kept}))
-    return [h for h in _hypotheses(kept or [], list(evidences)) if DIAGNOSES[h.name].family == opposite]
+    trace.note("opposite", families=list(opposite), kept=None if kept is None else sorted({m.name for m in kept}))
+    return [h for h in _hypotheses(kept or [], list(evidences)) if DIAGNOSES[h.name].family in opposite]
 
 
 def _heard_in_given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,
