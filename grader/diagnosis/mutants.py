@@ -195,8 +195,8 @@ from .grammar import equivalents
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
            "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
-           "FACTORS_REORDERED", "TRANSPOSED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips", "opposite_slips",
-           "late", "left_to_live"]
+           "FACTORS_REORDERED", "TRANSPOSED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips",
+           "opposite_slips", "late", "left_to_live"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -505,6 +505,8 @@ SLIPS = {
     "magnitude": ("sign_flip", "`{f}` leaves out an absolute value (``v * v`` for ``abs(v) * v``): the sign of a "
                                "value that can be negative is lost"),
     "square": ("wrong_factor", "a square is missing in `{f}`"),
+    "square_of_sum": ("extra_term", "`{f}` squares a sum where the sum of the squares belongs (``(a + b)**2`` for "
+                                    "``a**2 + b**2``): a cross term ``2 a b`` is added"),
     "root": ("wrong_factor", "a square root is missing in `{f}`"),
     "trig": ("sin_cos_swapped", "`{f}` takes sin where cos belongs, or the reverse"),
     "degrees": ("degrees", "`{f}` takes an angle in degrees where it is in radians"),
@@ -1798,6 +1800,10 @@ def _binop_slips(node: ast.BinOp):
         yield "sign", lambda n: _with(n, op=other)
         if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):  # |r| for |r|^2
             yield "norm", _root_of
+        if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):
+            # ``(a + b)**2`` for ``a**2 + b**2``: the square of the sum, a cross term 2 a b added
+            yield "square_of_sum", lambda n: ast.BinOp(ast.BinOp(n.left.left, ast.Add(), n.right.left), ast.Pow(),
+                                                       ast.Constant(2))
         # ``I_r_E - anchor`` as ``I_r_E``: a position taken from the origin, not from the point subtracted
         yield "origin" if isinstance(op, ast.Sub) and _POSITION.match(_label(node.left) or "-") else "term", \
             lambda n: n.left
