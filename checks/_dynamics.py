@@ -455,6 +455,30 @@ def _assert_grid(run, key, times, what):
              "np.linspace(t0, t_end, n) gives n points and n - 1 steps of (t_end - t0) / (n - 1): for a step dt from "
              "t0 to t_end it takes round((t_end - t0) / dt) + 1 points.", "grid_off_by_one")
     _assert_samples(t, times, span, what)
+    _assert_own_steps(t, times, span, what)
+
+
+#: a run's own steps are uneven where the longest and the shortest differ by more than this share of their mean
+UNEVEN = 1e-3
+
+
+def _assert_own_steps(t, times, span, what):
+    """Fail where the output times ``t`` of the student's run span the expected ``times`` from the first to the last
+    at uneven steps, most of them off the expected ones: the solver's own steps, the output times asked for left out
+    (``t_eval`` not passed to ``solve_ivp``: ``solver_steps``)."""
+    steps = np.diff(t)
+    if t.size < 3 or np.any(steps <= 0) or np.ptp(steps) <= UNEVEN * steps.mean() \
+            or abs(t[0] - times[0]) > ON_GRID * span or abs(t[-1] - times[-1]) > 1e-6 * span:
+        return
+    at = np.clip(np.searchsorted(times, t), 1, times.size - 1)
+    on_grid = np.minimum(np.abs(times[at - 1] - t), np.abs(times[at] - t)) <= ON_GRID * span
+    if on_grid.mean() >= 0.5:
+        return
+    fail(f"{what} returned {t.size} output times from {t[0]:.6g} s to {t[-1]:.6g} s at uneven steps (from "
+         f"{steps.min():.3g} s to {steps.max():.3g} s), where the {times.size} output times asked for are expected: "
+         "they are the solver's own steps.",
+         "Pass the output times to the solver: solve_ivp(..., t_eval=times) returns the solution at them; without "
+         "t_eval it returns the steps it took.", "solver_steps")
 
 
 #: an output time of the student's run is one of the expected times within this share of their span

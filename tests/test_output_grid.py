@@ -1,4 +1,5 @@
-"""A run's output grid one sample off is told as such, and only where the run fails its shape anyway."""
+"""A run's output grid one sample off is told as such, and only where the run fails its shape anyway; a run at the
+solver's own steps (uneven, over the span, mostly off the grid asked for) is told as the output times left out."""
 
 import numpy as np
 import pytest
@@ -78,3 +79,22 @@ def test_a_run_that_stops_short_says_where_and_names_no_cause(t, stops):
                                np.r_[TIMES[:50], TIMES[50:] + 1e-4, 2.5]])  # times off the grid
 def test_times_both_left_out_and_twice_or_off_the_grid_name_no_cause(t):
     assert _told(t).diagnosis == "shape"
+
+
+#: a solver's own steps from 0 to 2 s: short at the start, growing, uneven
+OWN_STEPS = 2.0 * np.cumsum(np.r_[0.0, np.geomspace(1.0, 8.0, 36)]) / np.sum(np.geomspace(1.0, 8.0, 36))
+
+
+def test_uneven_times_over_the_span_mostly_off_the_grid_are_the_solvers_own_steps():
+    with pytest.raises(CheckFailure) as caught:
+        run_array(_run(OWN_STEPS), "q", (101, 2), "simulate()", times=TIMES)
+    assert caught.value.diagnosis == "solver_steps"
+    assert "the solver's own steps" in caught.value.message and "t_eval" in caught.value.hint
+
+
+@pytest.mark.parametrize("t", [OWN_STEPS[OWN_STEPS <= 1.5],  # a run that stops short of the span's end
+                               TIMES[np.r_[0, 1, 3, 6, 10, 15, 21, 28, 36, 45, 55, 66, 78, 91, 100]]])  # on the grid
+def test_uneven_times_that_stop_short_or_lie_on_the_grid_are_no_solvers_own_steps(t):
+    with pytest.raises(CheckFailure) as caught:
+        run_array(_run(t), "q", (101, 2), "simulate()", times=TIMES)
+    assert caught.value.diagnosis != "solver_steps"
