@@ -373,6 +373,8 @@ _TABLE = (
        "updated an orientation before using it"),
     _D("grid_off_by_one", "time_shift", "an output grid of one sample too many or too few (every sample after the "
        "first at another time)", "built an output grid one sample off"),
+    _D("weights_left_out", "ignored_argument", "a weighted sum taken unweighted (the weights, the masses, ignored)",
+       "left the weights out of a weighted sum"),
     _D("solver_steps", "ignored_argument", "the output times asked for left out (a run returned at the solver's own "
        "steps: t_eval not passed)", "left the output times out of a run"),
     _D("span_short", "time_shift", "a run that ends too early (the span of its integration shorter than the one "

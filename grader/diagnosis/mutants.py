@@ -505,6 +505,8 @@ SLIPS = {
     "magnitude": ("sign_flip", "`{f}` leaves out an absolute value (``v * v`` for ``abs(v) * v``): the sign of a "
                                "value that can be negative is lost"),
     "square": ("wrong_factor", "a square is missing in `{f}`"),
+    "unweighted": ("weights_left_out", "`{f}` sums the rows of a product unweighted (``points.sum(axis=0)`` for "
+                                       "``masses @ points``): the weights are ignored"),
     "square_of_sum": ("extra_term", "`{f}` squares a sum where the sum of the squares belongs (``(a + b)**2`` for "
                                     "``a**2 + b**2``): a cross term ``2 a b`` is added"),
     "root": ("wrong_factor", "a square root is missing in `{f}`"),
@@ -1855,6 +1857,10 @@ def _binop_slips(node: ast.BinOp):
         for side, other in (("left", "right"), ("right", "left")):  # ``J`` for ``J @ qd``: a matrix factor
             dropped = _dropped(getattr(node, side))
             yield "matrix_factor" if dropped == "factor" else dropped, lambda n, other=other: getattr(n, other)
+        if isinstance(node.left, ast.Name) and isinstance(node.right, ast.Name):
+            # ``points.sum(axis=0)`` for ``masses @ points``: a weighted sum taken unweighted
+            yield "unweighted", lambda n: ast.Call(ast.Attribute(n.right, "sum", ast.Load()), [],
+                                                   [ast.keyword("axis", ast.Constant(0))])
     elif isinstance(op, ast.Pow) and _number(node.right) and node.right.value == 2:
         yield "square", lambda n: n.left
     if isinstance(op, (ast.Mult, ast.Div)) and isinstance(node.right, ast.BinOp) \
