@@ -110,7 +110,10 @@ def test_problem_40s_mutants_screened_give_their_own_values(problem_40):
                 continue
             holder.__code__ = mutant.quick or mutant.code
             fast = mutants._call(package, "problem_40.evaluate", args, ("M",), quick=True)
-            assert np.allclose(fast, slow, rtol=1e-9, atol=1e-9), mutant.slip
+            if slow is None:  # a mutant whose answer holds no numbers gives none either way, and is dropped
+                assert fast is None, mutant.slip
+                continue
+            assert fast is not None and np.allclose(fast, slow, rtol=1e-9, atol=1e-9), mutant.slip
             compared += 1
     finally:
         holder.__code__ = own
