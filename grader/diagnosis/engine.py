@@ -913,7 +913,8 @@ def _model(scene: Scene, run: Evidence, decl: Declaration) -> _Model:
 def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None:
     """The rivals of another family of a check's ``diagnosis`` told from what its value shows (a sign), on the
     failing comparison ``evidence`` and a second input where the engine draws one (``mutants.opposite_slips``):
-    the check's name and theirs, "could be" either; None where none reproduces the student's value."""
+    the check's name and theirs, "could be" either; None where none reproduces the student's value, or where rivals
+    of two families do (with the check's, three: the check's name stands alone)."""
     _sources(scene, evidence)
     if evidence.source is None or evidence.got is None:
         return None
@@ -927,7 +928,11 @@ def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None
     if not found:
         return None
     cost = min(h.cost for h in found)
-    rivals = _finding([h for h in found if h.cost == cost], _where(evidences))
+    cheapest = [h for h in found if h.cost == cost]
+    if len({DIAGNOSES[h.name].family for h in cheapest}) > 1:  # rivals of two families: with the check's, three
+        trace.note("rivals", families=sorted({DIAGNOSES[h.name].family for h in cheapest}))
+        return None
+    rivals = _finding(cheapest, _where(evidences))
     said = " or ".join(DIAGNOSES[n].student for n in rivals.names)
     return Finding((diagnosis, *rivals.names),
                    f"Could be {DIAGNOSES[diagnosis].student} or, as well, {said}, whose effect it is.\n{rivals.hint}")
