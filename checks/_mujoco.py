@@ -20,7 +20,7 @@ __all__ = [
     "LENGTH", "WIDTH", "HEIGHT", "VOLUME", "ALUMINIUM", "HDPE", "EARTH", "MOON", "SAMPLE",
     "MASS", "POSITION", "DIRECTION", "student_once", "model_of", "reference_of", "run_of", "hinges",
     "body_of", "assert_link_masses", "compare_traces", "departure", "stepped_otherwise", "integration_to_blame",
-    "trace_figure", "MAX_POINTS", "SHEET_INTEGRATOR", "SHEET_TIMESTEP",
+    "run_as_sheet", "trace_figure", "MAX_POINTS", "SHEET_INTEGRATOR", "SHEET_TIMESTEP",
 ]
 
 #: the sheet's link [m] (problem data, P2): a brick 20 x 1 x 1 cm, length along its x-axis
@@ -163,16 +163,26 @@ def integration_to_blame(ctx, probe, args, run, traces, t, expected, tols, windo
     stepped = stepped_otherwise(run)
     if not stepped or departure(t, traces(run), expected, tols, window) is None:
         return ""
+    again = run_as_sheet(ctx, probe, args)
     try:
-        again = run_of(ctx.student(probe, *args, True, timeout=30), "the model stepped with RK4 at 1 ms")
-        follows = departure(t, traces(again), expected, tols, window) is None
+        follows = again is not None and departure(t, traces(again), expected, tols, window) is None
+    except (KeyError, TypeError, ValueError, IndexError):
+        return ""
+    return stepped if follows else ""
+
+
+def run_as_sheet(ctx, probe, args):
+    """The student's run of ``probe(*args)`` stepped with the sheet's integration (RK4 at 1 ms) whatever the model
+    declares (the probe's ``as_sheet``), or None where it cannot be used (refused, diverged, or a fault of the
+    student's code that does not end the grading)."""
+    try:
+        return run_of(ctx.student(probe, *args, True, timeout=30), "the model stepped with RK4 at 1 ms")
     except StudentFault as exc:
         if ends_grading(exc):
             raise
-        return ""
-    except (CheckFailure, KeyError, TypeError, ValueError, IndexError):
-        return ""
-    return stepped if follows else ""
+        return None
+    except CheckFailure:
+        return None
 
 
 def compare_traces(t, got, expected, tols, window, what, hint="", diagnosis="", note=""):
