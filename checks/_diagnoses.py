@@ -349,6 +349,8 @@ _TABLE = (
        "y_events)", "read the state at an event from the output before it"),
     _D("event_direction", "event", "an event with the wrong direction", "gave an event the wrong direction"),
     _D("no_event", "event", "an event that never fires", "never detected the event"),
+    _D("event_appended", "event", "the state at an event appended to a run's output (a sample off the output times)",
+       "appended the state at an event to a run"),
     _D("not_terminal", "event", "an event that does not end the run", "did not end the run at the event"),
     _D("apex_terminal", "event", "an event that ends the run where it should only mark a point",
        "ended the run at an event that only marks a point"),

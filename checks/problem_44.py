@@ -233,6 +233,11 @@ def check_motion(ctx):
     what = "simulate()"
     t = run_array(got, "t", None, what)
     c = run_array(got, "c", t.shape, what)
+    if _event_appended(t, got):
+        fail(f"{what}: the last of your {t.size} output times, t = {t[-1]:.6g} s, is your event's, appended after "
+             f"the output times asked for (every 0.01 s from 0, the last at {t[-2]:.6g} s).",
+             "The run is the solution at the output times asked for (t_eval) up to the event; the state at the event "
+             "belongs in t_event, q_event and qd_event, not in the run.", "event_appended")
     if t.size < 2 or np.abs(np.diff(t) - 0.01).max() > 1e-9 or abs(t[0]) > 1e-12:
         fail(f"{what}: the output times must run from 0 in steps of 0.01 s (t_eval), got {t.size} times "
              f"{np.round(t[:4], 4).tolist()}...", "Pass t_eval=np.arange(0, t_end + 0.005, 0.01) to solve_ivp.",
@@ -244,6 +249,19 @@ def check_motion(ctx):
     mine, reference = _common(got, expected)
     assert_run(mine, reference, ("q", "qd"), BAND, what, roots=(got, expected),
                note="Any solve_ivp method at its default tolerances stays within the band.")
+
+
+def _event_appended(t, got) -> bool:
+    """The run's output times are the ones asked for (every 0.01 s from 0) but for the last, which is the run's own
+    event time and lies off them: the state at the event appended to the run."""
+    t_event = got.get("t_event") if isinstance(got, dict) else None
+    if t.size < 3 or t_event is None or abs(t[0]) > 1e-12 or np.abs(np.diff(t[:-1]) - 0.01).max() > 1e-9:
+        return False
+    try:
+        t_event = float(t_event)
+    except (TypeError, ValueError):
+        return False
+    return abs(t[-1] - t_event) <= 1e-9 * max(1.0, abs(t_event)) and 1e-9 < t[-1] - t[-2] < 0.01 - 1e-9
 
 
 @st.composite
