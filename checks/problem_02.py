@@ -233,7 +233,7 @@ def check_period(ctx):
 def _traces_check(ctx, case):
     label, got = _run(ctx, case)
     expected = ctx.reference(p02.ode, *CASES[case][1], DURATION, SAMPLE, persist=True)
-    mine = {"q [rad]": got["qpos"][:, 0], "q_dot [rad/s]": got["qvel"][:, 0]}
+    mine = _traces(got)
     ref = {"q [rad]": expected["q"][:, 0], "q_dot [rad/s]": expected["qd"][:, 0]}
     ctx.add_figure(trace_figure(f"Problem {label}: angle and angle rate", expected["t"], mine, ref))
     tols = {"q [rad]": ANGLE, "q_dot [rad/s]": RATE}

@@ -233,11 +233,12 @@ def _chaos_traces(ctx, variant, title):
     got, expected, duration = _run(ctx, variant)
     rate = RATE if variant == "driven" else None
     horizon, perturbation = _horizon(ctx, rate, duration)
-    mine = {"q2 [rad]": got["qpos"][:, 1], "q2_dot [rad/s]": got["qvel"][:, 1]}
-    ref = {"q2 [rad]": expected["q"][:, 1], "q2_dot [rad/s]": expected["qd"][:, 1]}
-    ctx.add_figure(trace_figure(title, expected["t"], mine, ref, horizon if horizon < duration else None))
-    mine.update({"q1 [rad]": got["qpos"][:, 0], "q1_dot [rad/s]": got["qvel"][:, 0]})
-    ref.update({"q1 [rad]": expected["q"][:, 0], "q1_dot [rad/s]": expected["qd"][:, 0]})
+    mine = _traces(got)
+    ref = {"q1 [rad]": expected["q"][:, 0], "q1_dot [rad/s]": expected["qd"][:, 0], "q2 [rad]": expected["q"][:, 1],
+           "q2_dot [rad/s]": expected["qd"][:, 1]}
+    shown = ("q2 [rad]", "q2_dot [rad/s]")  # the figure shows joint 2, the chaotic one
+    ctx.add_figure(trace_figure(title, expected["t"], {k: mine[k] for k in shown}, {k: ref[k] for k in shown},
+                                horizon if horizon < duration else None))
     tols = {"q1 [rad]": ANGLE, "q1_dot [rad/s]": RATE_TOL, "q2 [rad]": ANGLE, "q2_dot [rad/s]": RATE_TOL}
     why = ""
     if horizon < duration:

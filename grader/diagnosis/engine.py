@@ -929,8 +929,9 @@ def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None
         return None
     cost = min(h.cost for h in found)
     cheapest = [h for h in found if h.cost == cost]
-    if len({DIAGNOSES[h.name].family for h in cheapest}) > 1:  # rivals of two families: with the check's, three
-        trace.note("rivals", families=sorted({DIAGNOSES[h.name].family for h in cheapest}))
+    families = {DIAGNOSES[h.name].family for h in cheapest}
+    if len(families) > 1:  # rivals of two families: with the check's, three
+        trace.note("rivals", families=sorted(families))
         return None
     rivals = _finding(cheapest, _where(evidences))
     said = " or ".join(DIAGNOSES[n].student for n in rivals.names)

@@ -1578,14 +1578,7 @@ def _unpacked_coordinates(node, parent) -> bool:
     """The name and the slot left unread (``_``) that a vector of two coordinates or a state is unpacked into (``_,
     q2 = np.asarray(q, dtype=float)``): the two exchanged read the coordinate from the other's row.  Two names
     exchanged (``y, x = q``) are two quantities exchanged, as any two entries."""
-    if not (isinstance(node, ast.Tuple) and isinstance(node.ctx, ast.Store) and isinstance(parent, ast.Assign)
-            and len(node.elts) == 2 and all(isinstance(e, ast.Name) for e in node.elts)
-            and sum(e.id == "_" for e in node.elts) == 1):
-        return False
-    value = parent.value
-    if isinstance(value, ast.Call) and _callee(value) in ("asarray", "array", "ravel", "atleast_1d") and value.args:
-        value = value.args[0]
-    return isinstance(value, ast.Name) and bool(_COORDINATES.match(value.id))
+    return _unpacked_state(node, parent) and len(node.elts) == 2 and sum(e.id == "_" for e in node.elts) == 1
 
 
 def _unpacked_state(node, parent) -> bool:
@@ -1800,9 +1793,8 @@ def _binop_slips(node: ast.BinOp):
     if isinstance(op, (ast.Add, ast.Sub)):
         other = ast.Sub() if isinstance(op, ast.Add) else ast.Add()
         yield "sign", lambda n: _with(n, op=other)
-        if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):  # |r| for |r|^2
-            yield "norm", _root_of
         if isinstance(op, ast.Add) and _square(node.left) and _square(node.right):
+            yield "norm", _root_of  # |r| for |r|^2
             # ``(a + b)**2`` for ``a**2 + b**2``: the square of the sum, a cross term 2 a b added
             yield "square_of_sum", lambda n: ast.BinOp(ast.BinOp(n.left.left, ast.Add(), n.right.left), ast.Pow(),
                                                        ast.Constant(2))
