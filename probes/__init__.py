@@ -48,6 +48,10 @@ diagnosis engine can try common slips on them (``grader.diagnosis``) when the st
   as arguments: where the call has nothing else to draw, the engine's second input is the same call with these
   constants drawn anew for its duration (``probes._rebound``).  Like ``part``, it declares nothing of the arguments
   or of the result.
+* ``rows``: the index of the argument that is a batch whose rows give the result's rows one each (problem 32's
+  torques at the points of a trajectory): the engine's tier of formulas measures a mutant on the few rows that
+  differ first, and on the whole batch only where those reproduce the student's value.  Like ``part``, it declares
+  nothing of the arguments or of the result.
 """
 
 import contextlib
@@ -57,7 +61,7 @@ import threading
 __all__ = ["probe", "module", "lookup", "name_of", "remembered", "fresh", "kept_for_one_code", "ProbeLookupError"]
 
 #: the keywords a probe may declare
-DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw", "part", "rebind")
+DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw", "part", "rebind", "rows")
 
 
 def probe(func=None, *, returns=None, says="", reference_only=False, **declared):

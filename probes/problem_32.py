@@ -51,7 +51,7 @@ def trajectory(pkg):
     return {"t": table["t"], "q": table["q"]}
 
 
-@probe(returns=Seq(Arr(3)), says="gravity_compensation(tree, q)")
+@probe(returns=Seq(Arr(3)), says="gravity_compensation(tree, q)", rows=0)
 def torques(pkg, qs):
     """``gravity_compensation(build_robot(), q)`` for every row of ``qs``."""
     p32 = module(pkg, "problem_32")

@@ -4,7 +4,7 @@ failing comparison and the calls its values came from (``locate``), the hypothes
 from __future__ import annotations
 
 import inspect
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -19,6 +19,7 @@ __all__ = [
     "DECLARATIONS",
     "SHORTCUTS",
     "part_of",
+    "rows_of",
     "declaration",
     "Source",
     "Evidence",
@@ -63,7 +64,7 @@ class Declaration:
 DECLARATIONS: dict[str, Declaration | None] = {}
 #: the declarations that only say how a value is computed more cheaply (``part_of``) or which module constants its
 #: functions read (``rebind``): a probe that declares nothing else declares nothing to the engine's tiers
-SHORTCUTS = frozenset({"part", "rebind"})
+SHORTCUTS = frozenset({"part", "rebind", "rows"})
 
 
 def declaration(probe: str) -> Declaration | None:
@@ -107,6 +108,45 @@ def part_of(source) -> tuple | None:
         return part["probe"], tuple(source.args[k] for k in part["args"])
     except (ProbeLookupError, AttributeError, LookupError, TypeError, ValueError):
         return None
+
+
+#: the rows of a batch that a comparison of the whole result is first measured on (``rows_of``)
+ROWS_SCREENED = 3
+
+
+def rows_of(evidence) -> tuple | None:
+    """``(evidence, (probe, args))`` of the same comparison on fewer rows of a batch, or None: where the probe
+    declares ``rows`` (the index of its argument whose rows give its result's rows one each: problem 32's torques
+    along 209 points of a trajectory), the rows of the whole result that differ (the first, the last and one
+    between) or the one row a comparison reads, with the argument cut to them.  A value that is not the student's
+    there is not the student's on the whole batch, and costs a few rows' work to refute."""
+    source = evidence.source
+    try:
+        func = source.probe if callable(source.probe) else lookup(source.probe)
+        index = (getattr(func, "declared", None) or {}).get("rows")
+        if index is None:
+            return None
+        batch = source.args[index]
+        count = len(batch)
+    except (ProbeLookupError, AttributeError, LookupError, TypeError, ValueError):
+        return None
+    got, expected = evidence.got, evidence.expected
+    if not source.path:
+        if got.ndim < 1 or got.shape != expected.shape or got.shape[0] != count or count <= ROWS_SCREENED:
+            return None
+        differ = [k for k in range(count) if not within(got[k], expected[k], evidence.tol)]
+        if not differ:
+            return None
+        pick = sorted({differ[0], differ[len(differ) // 2], differ[-1]})
+        got, expected, path = got[pick], expected[pick], ()
+    elif isinstance(source.path[0], int) and 0 <= source.path[0] < count and count > 1:
+        pick, path = [source.path[0]], (0,) + tuple(source.path[1:])
+    else:
+        return None
+    cut = np.asarray(batch)[pick] if isinstance(batch, np.ndarray) else [batch[k] for k in pick]
+    args = tuple(cut if k == index else a for k, a in enumerate(source.args))
+    screen = replace(evidence, got=got, expected=expected, source=replace(source, args=args, path=path))
+    return screen, (source.probe, args)
 
 
 @dataclass(frozen=True)

@@ -189,7 +189,7 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, reproduces, Source, within
+from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, reproduces, rows_of, Source, within
 from .grammar import equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
@@ -3092,6 +3092,8 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     calls = [(e.source.probe, _kept_once(e.source.args)) for e in inputs]
     parts = [part_of(e.source) for e in inputs]
     parts = [None if part is None else (part[0], _kept_once(part[1])) for part in parts]
+    rows = [rows_of(e) for e in inputs]
+    rows = [None if row is None else (row[0], (row[1][0], _kept_once(row[1][1]))) for row in rows]
     screened = bool(twins)
     banded = bool(inputs) and _in_band(inputs[0], differs=False)  # else no slip of precision is told: none is tried
     for holder, twin in twins:
@@ -3107,17 +3109,14 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
             try:
                 _bind(mutant.bindings, originals)
                 with kept_for_one_code():
-                    values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)],
-                                         misses=misses)
-                    if values is not None and any(parts):
-                        values = _reproduced(package, inputs, calls, misses=misses)
+                    values = _staged(package, inputs, calls, parts, rows, misses=misses)
             finally:
                 _unbind(mutant.bindings, originals)
         else:
             # a slip of the same function that the kept ones hold already adds no name: its screened value decides
             again = any(k.slip == mutant.slip and k.module == mutant.module and k.path == mutant.path for k in kept)
-            values = _mutated_values(package, mutant, inputs, calls, parts, originals, twins, screened, misses,
-                                     deadline, confirm=not again)
+            values = _mutated_values(package, mutant, inputs, calls, (parts, rows), originals, twins, screened,
+                                     misses, deadline, confirm=not again)
         if values is None:
             if misses == [0] and not screened:
                 _REFUTED.refute(mutant, ran)
@@ -3138,11 +3137,12 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     return kept
 
 
-def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, parts: list, originals: dict,
+def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, cheaper: tuple, originals: dict,
                     twins: tuple, screened: bool, misses: list, deadline: _Deadline, confirm: bool) -> list | None:
     """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None
-    (``misses`` gets the input at which it is not the student's); a screened mutant that reproduces it is evaluated
-    as it is, where ``confirm``, within ``deadline``'s budget of confirming."""
+    (``misses`` gets the input at which it is not the student's); ``cheaper``: the inputs' ``(parts, rows)`` (see
+    ``_staged``); a screened mutant that reproduces it is evaluated as it is, where ``confirm``, within
+    ``deadline``'s budget of confirming."""
     from probes import kept_for_one_code
 
     holder = _live(package, mutant.module, mutant.path)
@@ -3152,10 +3152,7 @@ def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list
             other.__code__ = twin
         holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
         with kept_for_one_code():  # one code on every input: what a probe makes once for it, it makes once
-            values = _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], screened,
-                                 misses)
-            if values is not None and any(parts):  # the whole probe's value, where the part's reproduces
-                values = _reproduced(package, inputs, calls, screened, misses)
+            values = _staged(package, inputs, calls, *cheaper, quick=screened, misses=misses)
         if values is not None and screened and confirm:  # the mutant's own value decides
             for other, _ in twins:
                 other.__code__ = originals[id(other)][1]
@@ -3205,6 +3202,23 @@ def _bind(bindings: tuple, originals: dict) -> None:
 def _unbind(bindings: tuple, originals: dict) -> None:
     for holder, attribute, _ in bindings:
         setattr(holder, attribute, originals[(id(holder), attribute)][2])
+
+
+def _staged(package, inputs: list[Evidence], calls: list, parts: list, rows: list, quick: bool = False,
+            misses: list | None = None) -> list | None:
+    """The mutated package's values of ``calls`` where they reproduce the student's values, or None, measured
+    cheapest first: on the few rows of a batch (``rows``: ``evidence.rows_of``) of the inputs that declare them,
+    then on the cheaper calls that hold the values (``parts``: ``evidence.part_of``), then on the calls themselves
+    (``quick``, ``misses``: see ``_reproduced``)."""
+    for index, row in enumerate(rows):
+        if row is not None and _reproduced(package, [row[0]], [row[1]], quick) is None:
+            if misses is not None:
+                misses.append(index)
+            return None
+    if any(parts) and _reproduced(package, inputs, [part or call for part, call in zip(parts, calls)], quick,
+                                  misses) is None:
+        return None
+    return _reproduced(package, inputs, calls, quick, misses)
 
 
 def _reproduced(package, inputs: list[Evidence], calls: list, quick: bool = False,
@@ -3812,8 +3826,9 @@ def _heard_in_given(package, root: Path, problem: int, evidences: list[Evidence]
 #: the CPU time of the measuring of the slips of module constants (``_constant_stage``), tried where no slip of the
 #: code reproduced the student's value [s] (their making is bounded by ``MAKING_TIME_BUDGET``)
 CONSTANT_TIME_BUDGET = 1.0
-#: the slips of module constants one explanation tries at most (past it, the first so many)
-CONSTANT_MUTANTS = 300
+#: the slips of module constants one explanation tries at most (past it, the first so many): problem 32's arm reads
+#: 331, the course's g among the last
+CONSTANT_MUTANTS = 400
 #: a number of a constant typed otherwise: as a factor of it (``None``: its square root, or its square)
 _NUMBER_SLIPS = (("constant_sign", -1.0), ("constant_doubled", 2.0), ("constant_halved", 0.5),
                  ("constant_degrees", 180.0 / np.pi), ("constant_radians", np.pi / 180.0),
@@ -3996,6 +4011,13 @@ def _number_slips(expression):
         if _constant_expression(node) and not _pi(node) and not _constant_expression(parents.get(id(node))):
             for decimals in TYPED_DECIMALS:
                 yield "constant_typed", index, _float_round(node, decimals)
+    for index, node in enumerate(ast.walk(expression)):
+        if isinstance(node, ast.Constant) and type(node.value) is float and "e" not in repr(node.value):
+            whole, _, decimals = repr(abs(node.value)).partition(".")
+            digits = (whole + decimals).lstrip("0")  # its significant digits: a number of three or more typed
+            short = round(node.value, len(decimals) - 1) if len(decimals) >= 2 and len(digits) >= 3 else 0.0
+            if short != 0 and short != node.value:  # one decimal short (9.81 as 9.8) is a slip of precision
+                yield "constant_typed", index, ast.Constant(float(short))
     for index, node in enumerate(ast.walk(expression)):
         if isinstance(node, ast.Constant) and type(node.value) in (int, float) and node.value != 0:
             for slip, factor in _NUMBER_SLIPS:
