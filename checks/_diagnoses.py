@@ -314,6 +314,8 @@ _TABLE = (
     _D("stale", "ignored_argument", "a value stored once instead of computed when asked",
        "stored a value instead of computing it"),
     _D("earth_gravity", "ignored_argument", "the Earth's gravity where another is given", "used the Earth's gravity"),
+    _D("value_unused", "ignored_argument", "one value read where another belongs, which is then never used",
+       "read one value where another belongs, leaving that one unused"),
     # ---------------------------------------------------------------- motions
     _D("initial_state", "initial_state", "a run that starts from a wrong state", "started from a wrong state"),
     _D("start_value", "initial_state", "the value at the start read where the value computed from it belongs (the "

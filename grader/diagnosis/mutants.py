@@ -81,8 +81,12 @@ constant of its name in capitals (``WIRE_LENGTH`` for ``wire_length``, ``ANGLES0
 start) or, a gravity, as the Earth's (``m * 9.81`` for ``m * g``), at one read or at all of them: the argument ignored
 (and every parameter that has a default read as it at once: every argument ignored); a name computed from a value at the
 start read, once, as that start (``cardan(*ANGLES0)`` for ``cardan(*angles)`` where ``angles = _run(step, ANGLES0)``:
-the start returned for the end, an initial state); and an entry written into a neighbouring index (``a[0] = ...`` for
-``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one
+the start returned for the end, an initial state); a name bound to a sum read, once, as one of its terms (``l2 * cb``
+for ``radius * cb`` where ``radius = l2 + l3 * np.sin(phi)``: a term left out there); a constructor's argument stored
+from another one it stores (``self.B_a_B = _vector_or_zeros(B_omegaDot_B)``, a line copied from its neighbour) and a
+list of names with one entry that is read nowhere else written as its neighbour (``(m1, m1)`` for ``(m1, m2)``, in a
+loop's iterable too): a value left unused, an argument ignored; and an entry written into a neighbouring index
+(``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one
 item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum
 left out), a loop of steps over a range one step longer (``range(n + 1)``: one step too many), a keyword argument left
 out of a call of a function or a class of the reference whose parameter of that name has a default (the callee then uses
@@ -598,6 +602,12 @@ SLIPS = {
     "angle": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "angle_sum": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "angle_part": ("wrong_angle", "`{f}` reads one angle where another belongs"),
+    "sum_part": ("missing_term", "`{f}` reads a name bound to a sum as one of its terms (``l2`` for ``radius`` where "
+                                 "``radius = l2 + l3 * sin(phi)``): the other terms are left out there"),
+    "stored_from": ("value_unused", "`{f}` stores one of its arguments from another (a line copied from its "
+                                    "neighbour): the argument that belongs there is never used"),
+    "repeated": ("value_unused", "`{f}` writes one entry of a list of names as its neighbour (``(m1, m1)`` for "
+                                 "``(m1, m2)``): the name that belongs there is never used"),
     "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
                                     "where its argument belongs: the argument is ignored"),
     "defaults": ("ignored_argument", "`{f}` reads every parameter that has a default as that default (the module's "
@@ -1818,6 +1828,9 @@ def _binop_slips(node: ast.BinOp):
                 # ``-m * theta``: the factor m left out keeps the minus
                 yield _dropped(operand.operand), lambda n, other=other: _negated(getattr(n, other))
         yield "multiplies" if _number(node.right) else "multiplies_by", lambda n: _with(n, op=ast.Div())
+        for side, other in (("left", "right"), ("right", "left")):  # ``L // 2`` for ``0.5 * L``: integer division
+            if _number(getattr(node, side)) and getattr(node, side).value == 0.5:
+                yield "floor", lambda n, other=other: ast.BinOp(getattr(n, other), ast.FloorDiv(), ast.Constant(2))
     elif isinstance(op, ast.Div):
         yield "divides" if _number(node.right) else "divides_by", lambda n: _with(n, op=ast.Mult())
         if _number(node.right) and isinstance(node.right.value, int):  # ``m // 12``: a habit of integer division
@@ -2235,6 +2248,51 @@ def _sums(function: ast.FunctionDef) -> dict:
     return found
 
 
+def _bound_terms(function: ast.FunctionDef) -> dict:
+    """``{name: its terms}`` of the names the function binds once, and to a sum or a difference of two to four
+    terms (``radius = l2 + l3 * np.sin(phi)``: ``l2``, ``l3 * np.sin(phi)``; a term subtracted, under its minus)."""
+    bound: dict = {}
+    for node in ast.walk(function):
+        for target in node.targets if isinstance(node, ast.Assign) else ():
+            for name in ast.walk(target):
+                if isinstance(name, ast.Name):
+                    bound.setdefault(name.id, []).append(node.value if target is name else None)
+    found = {}
+    for name, values in bound.items():
+        terms, value = [], values[0] if len(values) == 1 else None
+        while isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Add, ast.Sub)) and len(terms) < 4:
+            terms.insert(0, value.right if isinstance(value.op, ast.Add) else ast.UnaryOp(ast.USub(), value.right))
+            value = value.left
+        if value is not None and terms and len(terms) < 4:
+            found[name] = (value, *terms)
+    return found
+
+
+def _stored_reads(function: ast.FunctionDef) -> dict:
+    """``{id of a read: the other arguments}`` of a constructor's reads of its arguments in the statements that
+    store them (``self.B_a_B = _vector_or_zeros(B_a_B)``), where it stores two or more: the others, each one a read
+    copied from a neighbouring line would take."""
+    if function.name != "__init__":
+        return {}
+    parameters = {a.arg for a in function.args.args + function.args.kwonlyargs} - {"self"}
+    reads = [(node, name) for node in ast.walk(function) if isinstance(node, ast.Assign)
+             and all(isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name) and t.value.id == "self"
+                     for t in node.targets)
+             for name in ast.walk(node.value) if isinstance(name, ast.Name) and name.id in parameters]
+    stored = {name.id for _, name in reads}
+    if len(stored) < 2:
+        return {}
+    return {id(name): tuple(sorted(stored - {name.id})) for _, name in reads}
+
+
+def _unread_once(function: ast.FunctionDef) -> frozenset:
+    """The names the function reads once only: a list of names with one of them written as its neighbour leaves it
+    unused (``(m1, m1)`` for ``(m1, m2)``)."""
+    counts = collections.Counter(n.id for n in ast.walk(function) if isinstance(n, ast.Name)
+                                 and isinstance(n.ctx, ast.Load))
+    return frozenset(name for name, count in counts.items() if count == 1)
+
+
 def _built(function: ast.FunctionDef) -> frozenset:
     """The names the function binds to a vector or matrix it writes out (``hip = sp.Matrix([-dx, dy, 0])``,
     ``r = np.array([x, y, 0.0])``): one passed to a call with the wrong sign is a sign slip of the call's argument."""
@@ -2245,20 +2303,28 @@ def _built(function: ast.FunctionDef) -> frozenset:
 
 
 def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
-                built: frozenset = frozenset()):
+                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset())):
     """One read of a name for another of its kind: an angle for another angle that the function reads (``np.cos(beta)``
     for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the read of the sum for
     its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its
     module's constant or the Earth's gravity (``_defaults``: the argument ignored), a name bound to a value computed
     from a start read as that start (``_starts``: the computation left unused); a slice's axes exchanged in one
     statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
-    say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``)."""
+    say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``).
+    ``reads``: ``(_bound_terms, _stored_reads, _unread_once)`` of the function: a name bound to a sum read as one of
+    its terms (the others left out there), a constructor's argument stored from another one it stores (a line copied
+    from its neighbour), and a list of names with one that is read nowhere else written as its neighbour."""
+    terms, stored, once = reads
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
                 slip = "angle_sum" if node.id in sums.get(other, ()) else \
                     "angle_part" if other in sums.get(node.id, ()) else "angle"
                 yield slip, lambda n, other=other: ast.Name(other, ast.Load())
+        for term in terms.get(node.id, ()):  # after the angles: a sum of angles read as one is one angle for another
+            yield "sum_part", lambda n, term=term: copy.deepcopy(term)
+        for other in stored.get(id(node), ()):
+            yield "stored_from", lambda n, other=other: ast.Name(other, ast.Load())
         for slip, value in defaults.get(node.id, ()):
             yield slip, lambda n, value=value: copy.deepcopy(value)
         if node.id in starts:  # ``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start for the value computed
@@ -2268,6 +2334,13 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
+    if isinstance(node, (ast.Tuple, ast.List)) and isinstance(node.ctx, ast.Load) and 2 <= len(node.elts) <= 4 \
+            and all(isinstance(e, ast.Name) for e in node.elts) and len({e.id for e in node.elts}) == len(node.elts):
+        for k, entry in enumerate(node.elts):  # ``(m1, m1)`` for ``(m1, m2)``: m2, read nowhere else, unused
+            for j in (k - 1, k + 1) if entry.id in once else ():
+                if 0 <= j < len(node.elts):
+                    yield "repeated", lambda n, k=k, j=j: _with(n, elts=n.elts[:k] + [copy.deepcopy(n.elts[j])]
+                                                                + n.elts[k + 1:])
     if isinstance(node, (ast.Tuple, ast.List)) and 3 <= len(node.elts) <= 6 \
             and all(isinstance(e, ast.Name) for e in node.elts):  # ``[phi, x, y]`` for ``[x, y, phi]``, read or bound
         yield "cycled", lambda n: _with(n, elts=n.elts[-1:] + n.elts[:-1])
@@ -2336,6 +2409,7 @@ def _mutated(function: _Function, lines: tuple):
     used = _used_parameters(function.node, parameters)
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     built = _built(function.node)
+    reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node))
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -2348,8 +2422,8 @@ def _mutated(function: _Function, lines: tuple):
                 if late_pass is CONVERSIONS else \
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
-            slips = () if guarded or indexing else itertools.chain(
-                _name_slips(node, parent, angles, defaults, sums, starts, built), _written_index_slips(node))
+            slips = () if (guarded and guarded != ITERABLE) or indexing else itertools.chain(
+                _name_slips(node, parent, angles, defaults, sums, starts, built, reads), _written_index_slips(node))
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
@@ -2361,7 +2435,7 @@ def _mutated(function: _Function, lines: tuple):
                                     _position_slips(node),
                                     _frame_slips(node, names, function.attributes))
         for slip, edit in slips:
-            if guarded == ITERABLE and slip not in _EXCHANGES | _DTYPES:
+            if guarded == ITERABLE and slip not in _EXCHANGES | _DTYPES | {"repeated"}:
                 continue
             if slip == "kept_adding" and function.node.name == "__init__":
                 continue  # a constructor sets what its object keeps for the first time
@@ -2800,7 +2874,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
-                        "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees"})
+                        "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
+                        "sum_part", "stored_from", "repeated"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

@@ -1,0 +1,151 @@
+"""Reads of one value where another belongs (``grader.diagnosis.mutants``: ``sum_part``, ``stored_from``,
+``repeated``, and ``floor`` of a half): a name bound to a sum read as one of its terms (``l2 * cb`` for ``radius * cb``
+where ``radius = l2 + l3 * np.sin(phi)``) is a term left out there; a constructor that stores one of its arguments
+from another it stores (a line copied from its neighbour) and a list of names with one entry written as its
+neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it runs as often) each leave a value unused, an
+argument ignored; and half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
+whole number.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum
+at twice its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
+name no such slip."""
+
+import numpy as np
+
+from checks._diagnoses import DIAGNOSES
+from grader.diagnosis import mutants
+
+from .stand_ins import made_up_fixture
+from .test_mutants import made_up_evidences, scene
+
+SOURCE = '''"""A made-up problem of values read otherwise."""
+
+import numpy as np
+
+
+def reach(l2, l3, phi, beta):
+    """A made-up point on a circle whose radius is an arm and a chain's reach."""
+    # BEGIN SOLUTION problem 84
+    radius = l2 + l3 * np.sin(phi)
+    return np.array([radius * np.cos(beta), l3 * np.cos(phi), -radius * np.sin(beta)])
+    # END SOLUTION
+
+
+class Holder:
+    """A made-up object that keeps two vectors and their sum."""
+
+    def __init__(self, first, second):
+        # BEGIN SOLUTION problem 84
+        self.first = np.asarray(first, dtype=float)
+        self.second = np.asarray(second, dtype=float)
+        # END SOLUTION
+
+
+def held(first, second):
+    """A made-up reading of what a ``Holder`` keeps."""
+    # BEGIN SOLUTION problem 84
+    holder = Holder(first, second)
+    return np.concatenate([holder.first, 2.0 * holder.second])
+    # END SOLUTION
+
+
+def weighted(a, b, m1, m2):
+    """A made-up sum of two vectors, each weighted by its own mass."""
+    # BEGIN SOLUTION problem 84
+    total = np.zeros(2)
+    for x, m in zip((a, b), (m1, m2)):
+        total = total + m * np.asarray(x, dtype=float)
+    return total
+    # END SOLUTION
+
+
+def centres(length, angles):
+    """A made-up list of the centres of links of one length, at half the length along each angle."""
+    # BEGIN SOLUTION problem 84
+    half = 0.5 * length
+    return np.array([[half * np.cos(a), half * np.sin(a)] for a in angles])
+    # END SOLUTION
+'''
+
+made_up = made_up_fixture(SOURCE, 84, "read_otherwise")
+
+
+def found(package, name, student, inputs):
+    evidences = made_up_evidences(package, name, student, inputs, number=84)
+    assert all(not np.allclose(e.got, e.expected) for e in evidences)
+    return mutants.mutant_slips(scene(f"p84.{name}"), evidences)
+
+
+def names_of(hypotheses) -> set:
+    return {h.name for h in hypotheses}
+
+
+REACH = [(0.8, 0.5, 0.4, 1.1), (1.3, 0.7, -0.6, 0.3)]
+
+
+def arm_only(l2, l3, phi, beta):
+    radius = l2 + l3 * np.sin(phi)
+    return np.array([l2 * np.cos(beta), l3 * np.cos(phi), -radius * np.sin(beta)])
+
+
+def test_a_sum_read_as_its_first_term_is_a_term_left_out(made_up):
+    hypotheses = found(made_up, "reach", arm_only, REACH)
+    assert names_of(hypotheses) == {"missing_term"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("reads a name bound to a sum as one of its terms" in h.detail for h in hypotheses)
+
+
+def test_a_term_of_the_sum_doubled_is_no_sum_read_as_a_term(made_up):
+    def doubled(l2, l3, phi, beta):
+        radius = l2 + 2 * l3 * np.sin(phi)
+        return np.array([radius * np.cos(beta), l3 * np.cos(phi), -radius * np.sin(beta)])
+
+    hypotheses = found(made_up, "reach", doubled, REACH)
+    assert not any("bound to a sum" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+VECTORS = [(np.array([0.3, -1.2, 0.5]), np.array([1.1, 0.4, -0.7])),
+           (np.array([-0.8, 0.6, 1.4]), np.array([0.2, -0.9, 0.3]))]
+
+
+def test_an_argument_stored_from_its_neighbour_is_a_value_unused(made_up):
+    hypotheses = found(made_up, "held", lambda first, second: np.concatenate([first, 2.0 * first]), VECTORS)
+    assert names_of(hypotheses) == {"value_unused"}, [(h.name, h.detail) for h in hypotheses]
+    assert DIAGNOSES["value_unused"].family == "ignored_argument"
+    assert any("stores one of its arguments from another" in h.detail for h in hypotheses)
+
+
+def test_an_argument_stored_twice_itself_is_no_value_unused(made_up):
+    hypotheses = found(made_up, "held", lambda first, second: np.concatenate([first, 4.0 * second]), VECTORS)
+    assert "value_unused" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+WEIGHTED = [(np.array([0.3, -1.2]), np.array([1.1, 0.4]), 2.0, 0.7),
+            (np.array([-0.8, 0.6]), np.array([0.2, -0.9]), 1.3, 3.1)]
+
+
+def test_an_entry_of_a_loops_list_written_as_its_neighbour_is_a_value_unused(made_up):
+    hypotheses = found(made_up, "weighted", lambda a, b, m1, m2: m1 * a + m1 * b, WEIGHTED)
+    assert names_of(hypotheses) == {"value_unused"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("writes one entry of a list of names as its neighbour" in h.detail for h in hypotheses)
+
+
+def test_the_entries_of_a_loops_list_exchanged_are_no_value_unused(made_up):
+    hypotheses = found(made_up, "weighted", lambda a, b, m1, m2: m2 * a + m1 * b, WEIGHTED)
+    assert "value_unused" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+CENTRES = [(3.0, np.array([0.3, 1.1, -0.4])), (5.0, np.array([-0.9, 0.2, 0.7]))]
+
+
+def test_half_a_length_written_as_a_floor_division_is_a_value_cut_to_a_whole_number(made_up):
+    def floored(length, angles):
+        half = length // 2
+        return np.array([[half * np.cos(a), half * np.sin(a)] for a in angles])
+
+    hypotheses = found(made_up, "centres", floored, CENTRES)
+    assert names_of(hypotheses) == {"integer_truncated"}, [(h.name, h.detail) for h in hypotheses]
+
+
+def test_a_third_of_the_length_is_no_floor_division(made_up):
+    def third(length, angles):
+        return np.array([[length / 3 * np.cos(a), length / 3 * np.sin(a)] for a in angles])
+
+    assert "integer_truncated" not in names_of(found(made_up, "centres", third, CENTRES))
