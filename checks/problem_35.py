@@ -5,7 +5,8 @@ shows."""
 
 import numpy as np
 
-from grader.checking import EXACT, STAGE_RANDOM, STAGE_STRUCTURE, Mistake, as_array, assert_close, check, close, fail
+from grader.checking import (EXACT, STAGE_RANDOM, STAGE_STRUCTURE, CheckFailure, Mistake, as_array, assert_close, check,
+                             close, fail)
 from probes import problem_35 as p35
 
 from ._shapes import as_dict, as_list
@@ -77,17 +78,38 @@ def _at(point, kind):
     return f"at {shown}" + (f", r = {point['r']:.6g}" if kind == "rolling_contact" else "")
 
 
+#: each velocity, its subspace, and what the check says of the two
+SUBSPACES = (("r_rel_dot", "S", "S is the motion subspace of the translation: r_rel_dot = S qd, S = d r_rel_dot / d qd."),
+             ("omega_rel", "R", "R is the motion subspace of the rotation: omega_rel = R qd, R = d omega_rel / d qd."))
+
+
 def _subspaces(ctx, kind):
     points = _points(ctx, kind)
-    for point, values in zip(points, _evaluate(ctx, kind, points)):
+    numeric = ctx.reference(p35.numeric_joint_function, kind, points)
+    for point, values, expected in zip(points, _evaluate(ctx, kind, points), numeric):
         entries = _entries(values, kind)
         where = f"{_at(point, kind)} (seed {ctx.seed})"
-        assert_close(entries["r_rel_dot"], entries["S"] @ point["qd"], f"r_rel_dot {where}", EXACT,
-                     context="(expected: your S @ qd)",
-                     note="S is the motion subspace of the translation: r_rel_dot = S qd, S = d r_rel_dot / d qd.")
-        assert_close(entries["omega_rel"], entries["R"] @ point["qd"], f"omega_rel {where}", EXACT,
-                     context="(expected: your R @ qd)",
-                     note="R is the motion subspace of the rotation: omega_rel = R qd, R = d omega_rel / d qd.")
+        for velocity, subspace, note in SUBSPACES:
+            try:
+                assert_close(entries[velocity], entries[subspace] @ point["qd"], f"{velocity} {where}", EXACT,
+                             context=f"(expected: your {subspace} @ qd)", note=note)
+            except CheckFailure as failure:
+                raise _caused(failure, entries, expected, (velocity, subspace), kind, point) from None
+
+
+def _caused(failure, entries, expected, names, kind, point):
+    """The failure of a velocity and its subspace that disagree, with the comparison of the first of the two that
+    differs from the reference's at the point: its catalogue's name and hint, and the evidence the diagnosis engine
+    explains (the check itself compares the student's two values with each other, which no reference call gives)."""
+    for name in names:
+        target = np.asarray(expected[name], dtype=float)
+        try:
+            assert_close(entries[name], target, f"{name} {_at(point, kind)}", EXACT, _mistakes(kind, name, target),
+                         context=f"(the reference's {kind} joint function)")
+        except CheckFailure as cause:
+            return CheckFailure(f"{failure.message}\nYour {name} differs from the reference's: {cause.message}",
+                                cause.hint or failure.hint, cause.diagnosis, evidence=cause.evidence)
+    return failure
 
 
 def _mistakes(kind, name, target):
