@@ -699,6 +699,9 @@ SLIPS = {
 }
 #: the slips of a dtype, tried where a value is guarded too (a dtype changes no count)
 _DTYPES = frozenset({"single", "integer", "integer_call"})
+#: the slips made in the iterable of a loop, which runs as often: exchanges, a dtype, an entry of a list of names
+#: written as its neighbour, a quantity read for its rate (``zip(q, qdd)`` for ``zip(q, qd)``)
+_KEEP_COUNT = _EXCHANGES | _DTYPES | frozenset({"repeated", "rates"})
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
 PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed", "constant_typed"})
 #: the largest difference between the student's value and the expected one, relative to the expected value's size,
@@ -2435,7 +2438,7 @@ def _mutated(function: _Function, lines: tuple):
                                     _position_slips(node),
                                     _frame_slips(node, names, function.attributes))
         for slip, edit in slips:
-            if guarded == ITERABLE and slip not in _EXCHANGES | _DTYPES | {"repeated"}:
+            if guarded == ITERABLE and slip not in _KEEP_COUNT:
                 continue
             if slip == "kept_adding" and function.node.name == "__init__":
                 continue  # a constructor sets what its object keeps for the first time

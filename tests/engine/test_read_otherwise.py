@@ -3,7 +3,8 @@
 where ``radius = l2 + l3 * np.sin(phi)``) is a term left out there; a constructor that stores one of its arguments
 from another it stores (a line copied from its neighbour) and a list of names with one entry written as its
 neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it runs as often) each leave a value unused, an
-argument ignored; and half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
+argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q, qdd)`` for ``zip(q, qd)``) is a state
+read from the wrong row; and half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
 whole number.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum
 at twice its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip."""
@@ -54,6 +55,16 @@ def weighted(a, b, m1, m2):
     for x, m in zip((a, b), (m1, m2)):
         total = total + m * np.asarray(x, dtype=float)
     return total
+    # END SOLUTION
+
+
+def power(q, qd, qdd):
+    """A made-up sum of the coordinates' products with their rates, beside the accelerations' sum."""
+    # BEGIN SOLUTION problem 84
+    total = 0.0
+    for qi, qdi in zip(q, qd):
+        total = total + qi * qdi
+    return np.array([total, np.sum(qdd)])
     # END SOLUTION
 
 
@@ -149,3 +160,13 @@ def test_a_third_of_the_length_is_no_floor_division(made_up):
         return np.array([[length / 3 * np.cos(a), length / 3 * np.sin(a)] for a in angles])
 
     assert "integer_truncated" not in names_of(found(made_up, "centres", third, CENTRES))
+
+
+POWERS = [(np.array([0.3, -1.2, 0.5]), np.array([1.1, 0.4, -0.7]), np.array([0.2, 0.9, -1.5])),
+          (np.array([-0.8, 0.6, 1.4]), np.array([0.2, -0.9, 0.3]), np.array([1.3, -0.4, 0.6]))]
+
+
+def test_a_loops_iterable_that_reads_the_accelerations_for_the_rates_is_a_state_row(made_up):
+    hypotheses = found(made_up, "power", lambda q, qd, qdd: np.array([q @ qdd, np.sum(qdd)]), POWERS)
+    assert names_of(hypotheses) == {"state_row"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("reads a quantity where its rate belongs" in h.detail for h in hypotheses)
