@@ -209,6 +209,23 @@ def test_a_draw_on_which_the_reference_raises_is_not_used(draws_only):
     assert "on the input shown and on a second one" in failure.hint
 
 
+def test_a_second_input_is_drawn_past_many_refused_draws(draws_only):
+    """The reference refuses the first five draws (a fixed point drawn beyond a linkage's reach, as half the draws
+    of problem 4's point are, every grading of one check drawing the same): the engine draws on until it has one."""
+    drawn = []
+
+    def reference(body, gamma):
+        if not _same((body, gamma), SHOWN):
+            drawn.append(gamma)
+            if len(drawn) <= 5:
+                raise GraderFault("the reference failed on the drawn input")
+        return pose(body, gamma)
+
+    failure, _ = explain_case(lambda body, gamma: -pose(body, gamma), reference=reference)
+    assert len(drawn) == 6 and failure.diagnosis == "sign_flip"
+    assert "on the input shown and on a second one" in failure.hint
+
+
 def test_a_degenerate_draw_is_not_used(draws_only):
     """The reference gives zeros on the first draw where the input shown gives none: the next draw is used."""
     drawn = []
