@@ -2340,7 +2340,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     if isinstance(node, (ast.Tuple, ast.List)) and isinstance(node.ctx, ast.Load) and 2 <= len(node.elts) <= 4 \
             and all(isinstance(e, ast.Name) for e in node.elts) and len({e.id for e in node.elts}) == len(node.elts):
         for k, entry in enumerate(node.elts):  # ``(m1, m1)`` for ``(m1, m2)``: m2, read nowhere else, unused
-            for j in (k - 1, k + 1) if entry.id in once else ():
+            # (a module's constant written as another is a constant typed with the other's value: its slips say so)
+            for j in (k - 1, k + 1) if entry.id in once and not entry.id.isupper() else ():
                 if 0 <= j < len(node.elts):
                     yield "repeated", lambda n, k=k, j=j: _with(n, elts=n.elts[:k] + [copy.deepcopy(n.elts[j])]
                                                                 + n.elts[k + 1:])

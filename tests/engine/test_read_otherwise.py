@@ -7,7 +7,9 @@ argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q,
 read from the wrong row; and half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
 whole number.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum
 at twice its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
-name no such slip."""
+name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
+``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
+slips tell)."""
 
 import numpy as np
 
@@ -55,6 +57,18 @@ def weighted(a, b, m1, m2):
     for x, m in zip((a, b), (m1, m2)):
         total = total + m * np.asarray(x, dtype=float)
     return total
+    # END SOLUTION
+
+
+LENGTH = 1.0
+RADIUS = 0.5
+
+
+def wheel(angle):
+    """A made-up point of a wheel of the module's radius on a leg of the module's length."""
+    # BEGIN SOLUTION problem 84
+    l, r = LENGTH, RADIUS
+    return np.array([l * np.sin(angle) - r * angle, r - l * np.cos(angle)])
     # END SOLUTION
 
 
@@ -170,3 +184,11 @@ def test_a_loops_iterable_that_reads_the_accelerations_for_the_rates_is_a_state_
     hypotheses = found(made_up, "power", lambda q, qd, qdd: np.array([q @ qdd, np.sum(qdd)]), POWERS)
     assert names_of(hypotheses) == {"state_row"}, [(h.name, h.detail) for h in hypotheses]
     assert any("reads a quantity where its rate belongs" in h.detail for h in hypotheses)
+
+
+def test_a_constant_typed_with_anothers_value_is_no_value_unused(made_up):
+    def wheel(angle):
+        return np.array([np.sin(angle) - angle, 1.0 - np.cos(angle)])
+
+    hypotheses = found(made_up, "wheel", wheel, [(0.4,), (1.1,)])
+    assert "value_unused" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
