@@ -604,6 +604,8 @@ SLIPS = {
     "angle_part": ("wrong_angle", "`{f}` reads one angle where another belongs"),
     "sum_part": ("missing_term", "`{f}` reads a name bound to a sum as one of its terms (``l2`` for ``radius`` where "
                                  "``radius = l2 + l3 * sin(phi)``): the other terms are left out there"),
+    "term_doubled": ("factor_two", "`{f}` takes one term of a sum twice (as the Coriolis term of a moving point "
+                                   "is, ``2 * omega x v``)"),
     "stored_from": ("value_unused", "`{f}` stores one of its arguments from another (a line copied from its "
                                     "neighbour): the argument that belongs there is never used"),
     "repeated": ("value_unused", "`{f}` writes one entry of a list of names as its neighbour (``(m1, m1)`` for "
@@ -2334,6 +2336,12 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "start_value", lambda n: ast.Name(starts[n.id], ast.Load())
         if node.id in built and isinstance(parent, ast.Call) and node in parent.args:  # ``f(..., -hip)``
             yield "sign", _negated
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) and not _number(node.right):
+        # one term of a sum taken twice; a sum's first term only where it is no sum itself (else its own last)
+        yield "term_doubled", lambda n: _with(n, right=ast.BinOp(ast.Constant(2), ast.Mult(), n.right))
+        if not (isinstance(node.left, ast.BinOp) and isinstance(node.left.op, (ast.Add, ast.Sub))) \
+                and not _number(node.left):
+            yield "term_doubled", lambda n: _with(n, left=ast.BinOp(ast.Constant(2), ast.Mult(), n.left))
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
@@ -2879,7 +2887,7 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
-                        "sum_part", "stored_from", "repeated"})
+                        "sum_part", "stored_from", "repeated", "term_doubled"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

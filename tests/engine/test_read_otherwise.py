@@ -1,12 +1,13 @@
 """Reads of one value where another belongs (``grader.diagnosis.mutants``: ``sum_part``, ``stored_from``,
-``repeated``, and ``floor`` of a half): a name bound to a sum read as one of its terms (``l2 * cb`` for ``radius * cb``
+``repeated``, ``term_doubled``, and ``floor`` of a half): a name bound to a sum read as one of its terms (``l2 * cb`` for ``radius * cb``
 where ``radius = l2 + l3 * np.sin(phi)``) is a term left out there; a constructor that stores one of its arguments
 from another it stores (a line copied from its neighbour) and a list of names with one entry written as its
 neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it runs as often) each leave a value unused, an
 argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q, qdd)`` for ``zip(q, qd)``) is a state
-read from the wrong row; and half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
-whole number.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum
-at twice its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
+read from the wrong row; half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
+whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit) is a factor two
+there.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
+times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
 ``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
 slips tell)."""
@@ -117,13 +118,23 @@ def test_a_sum_read_as_its_first_term_is_a_term_left_out(made_up):
     assert any("reads a name bound to a sum as one of its terms" in h.detail for h in hypotheses)
 
 
-def test_a_term_of_the_sum_doubled_is_no_sum_read_as_a_term(made_up):
-    def doubled(l2, l3, phi, beta):
-        radius = l2 + 2 * l3 * np.sin(phi)
+def reach_with(factor: float):
+    def reach(l2, l3, phi, beta):
+        radius = l2 + factor * l3 * np.sin(phi)
         return np.array([radius * np.cos(beta), l3 * np.cos(phi), -radius * np.sin(beta)])
 
-    hypotheses = found(made_up, "reach", doubled, REACH)
+    return reach
+
+
+def test_a_term_of_the_sum_doubled_is_a_term_taken_twice_and_no_sum_read_as_a_term(made_up):
+    hypotheses = found(made_up, "reach", reach_with(2.0), REACH)
+    assert names_of(hypotheses) == {"factor_two"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("takes one term of a sum twice" in h.detail for h in hypotheses)
     assert not any("bound to a sum" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+def test_a_term_of_the_sum_at_three_times_its_value_is_no_term_taken_twice(made_up):
+    assert "factor_two" not in names_of(found(made_up, "reach", reach_with(3.0), REACH))
 
 
 VECTORS = [(np.array([0.3, -1.2, 0.5]), np.array([1.1, 0.4, -0.7])),
