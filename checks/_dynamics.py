@@ -497,9 +497,10 @@ def _assert_samples(t, times, span, what):
     of the expected ``times`` and their numbers differ: times left out (``samples_left_out``: a boundary of the span,
     or of a piece, taken with < where <= belongs, or the reverse), times kept twice (``samples_repeated``: a sample
     on a boundary kept by both pieces that meet there), every m-th time alone (``output_step``: an output step m
-    times too long).  A run that stops short of the span's end, or that both leaves out and repeats times, is told
-    by what differs alone (``shape``): its causes are too many (the end taken with < where <= belongs, the last
-    piece of a run in pieces never integrated, an event that ends it)."""
+    times too long).  A run that lacks its last output time alone has left the end out (taken with < where <=
+    belongs: ``samples_left_out``) or ended one step short (``span_short``); one that stops further short of the
+    span's end, or that both leaves out and repeats times, is told by what differs alone (``shape``): its causes are
+    too many (the last piece of a run in pieces never integrated, an event that ends it, a span cut short)."""
     if np.any(np.diff(t) < 0):
         return
     at = np.clip(np.searchsorted(times, t), 1, times.size - 1)
@@ -533,9 +534,11 @@ def _assert_samples(t, times, span, what):
     if missing[-1] == times.size - 1 and missing.size == times.size - 1 - kept[-1]:
         last = (f"the last output time, {times[-1]:.6g} s, is" if missing.size == 1 else
                 f"the last {missing.size} output times, from {times[missing[0]]:.6g} s to {times[-1]:.6g} s, are")
+        # the end alone left out is the end taken with < where <= belongs, or a span one step short; more of the
+        # run's end missing has causes too many to name
         fail(f"{said} the run stops at {t[-1]:.6g} s: {last} not in it.",
              "Integrate over the whole span asked for, up to its end, and keep every output time in it (the end "
-             "of the span included).", "shape")
+             "of the span included).", "samples_left_out or span_short" if missing.size == 1 else "shape")
     fail(f"{said} {_listed(times[missing])} {'is' if missing.size == 1 else 'are'} left out.",
          "Keep every output time asked for: a boundary of the span or of a piece belongs to the run (<= where the "
          "end is included, >= where the start is).", "samples_left_out")

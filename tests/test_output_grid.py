@@ -67,12 +67,16 @@ def test_every_tenth_output_time_alone_is_an_output_step_too_long():
     assert "one of every 10" in told.message and "0.2 s apart, not 0.02 s" in told.message
 
 
-@pytest.mark.parametrize("t, stops", [(TIMES[:-1], "the last output time, 2 s, is not in it"),
-                                      (TIMES[:80], "the last 21 output times, from 1.6 s to 2 s, are not in it")])
-def test_a_run_that_stops_short_says_where_and_names_no_cause(t, stops):
-    told = _told(t)  # the end taken with <, the last piece never integrated or an event: too many causes
+def test_a_run_that_lacks_its_last_output_time_alone_left_the_end_out_or_ended_a_step_short():
+    told = _told(TIMES[:-1])  # np.arange(0, t_end, dt), t < t_end: the end taken with < where <= belongs
+    assert told.diagnosis == "samples_left_out or span_short"
+    assert "the last output time, 2 s, is not in it" in told.message
+
+
+def test_a_run_that_stops_further_short_says_where_and_names_no_cause():
+    told = _told(TIMES[:80])  # the last piece never integrated, an event, a span cut short: too many causes
     assert told.diagnosis == "shape"
-    assert stops in told.message
+    assert "the last 21 output times, from 1.6 s to 2 s, are not in it" in told.message
 
 
 @pytest.mark.parametrize("t", [np.r_[np.delete(TIMES, 10), 2.0, 2.0],  # 0.2 s left out, 2 s thrice
