@@ -663,12 +663,15 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     unreached = []
     tiers.append(_heard(lambda: _ignored(scene, evidences, unreached), explained, "ignored"))
     if not (decl is not None and decl.motion) or stepped:  # slips inside a formula: the last tier
-        told = {DIAGNOSES[h.name].family for tier in tiers for h in tier} if any(tiers) else None
+        # an array argument ignored is told only beside another explanation (``_beside``): alone it explains
+        # nothing, and the formula tier is heard in full
+        explaining = [[h for h in tier if not h.key.startswith(IGNORED_ARRAY)] for tier in tiers]
+        told = {DIAGNOSES[h.name].family for tier in explaining for h in tier} if any(explaining) else None
         untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
                                                lambda: _second_input(scene, evidences[-1]), told, untested,
                                                tuple(unreached)),
-                          any(tiers), "formulas")
+                          any(explaining), "formulas")
         formulas = _unscaled(_told_apart(formulas), evidences)
         if not formulas and left_to_live(scene, evidences):
             tiers = _beside(tiers)

@@ -132,6 +132,23 @@ def test_masses_ignored_are_told_beside_a_rival_never_alone(monkeypatch):
     assert finding is not None and finding.names == ("ignored_argument",), finding
 
 
+def test_an_array_ignored_alone_leaves_the_formula_tier_heard_in_full(monkeypatch):
+    """The masses ignored and nothing else found: an array argument ignored is told only beside another
+    explanation, so the formula tier is asked as where nothing explained the answer (no family told), and its every
+    stage is heard (a constructor of the library that stores one argument from another is found there), not only the
+    rivals of a family told."""
+    from grader.diagnosis import engine as explaining
+
+    asked = []
+    monkeypatch.setattr(explaining, "mutant_slips",
+                        lambda scene, evidences, another=None, told=None, *rest: asked.append(told) or [])
+    points = np.array([[1.0, 0.5, -0.2], [-0.3, 0.8, 1.1], [0.4, -1.0, 0.6]])
+    _explain(monkeypatch, "stub.second_moment", None,
+             lambda masses, points: np.array([np.sum(np.asarray(masses) * np.sum(np.asarray(points) ** 2, axis=1))]),
+             lambda masses, points: np.array([np.sum(np.asarray(points) ** 2)]), ([2.0, 0.5, 1.5], points))
+    assert asked == [None], asked
+
+
 def test_the_arguments_the_test_had_no_budget_for_are_passed_on(monkeypatch):
     """The test of an ignored argument changes one argument after another within its budget of the student's
     calls; the positions of those it had no budget for are passed on to the formula tier (which may tell one that
