@@ -3365,6 +3365,12 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
             found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
                 f"{detail}; it is a number of {data}, so it may be where a value starts or sits: an offset"),
                 twin=True))
+        if mutant.slip == "rotation" and evidences and evidences[0].expected.ndim == 2:
+            # a rotation left out of a product whose value is a matrix (one of a chain of rotations, ``A_IC`` of
+            # ``skew(omega) @ A_IC``): no vector left in another frame's coordinates, as truly a factor left out
+            found.setdefault(f"{key}=factor", Hypothesis(f"{key}=factor", "missing_matrix_factor", COST, (
+                f"a matrix factor of a product in `{mutant.function}` is left out (a rotation, of a value that is "
+                "a matrix)"), twin=True))
         unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
         for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told

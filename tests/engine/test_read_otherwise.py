@@ -6,7 +6,8 @@ neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it runs as o
 argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q, qdd)`` for ``zip(q, qd)``) is a state
 read from the wrong row; half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
 whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit) is a factor two
-there.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
+there; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
+matrix factor left out as a frame's slip.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
 times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
 ``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
@@ -70,6 +71,21 @@ def wheel(angle):
     # BEGIN SOLUTION problem 84
     l, r = LENGTH, RADIUS
     return np.array([l * np.sin(angle) - r * angle, r - l * np.cos(angle)])
+    # END SOLUTION
+
+
+def turned_step(A_IC, w, dt):
+    """A made-up Euler step of a rotation matrix turning at ``w``."""
+    # BEGIN SOLUTION problem 84
+    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    return A_IC + dt * W @ A_IC
+    # END SOLUTION
+
+
+def inertial(A_IB, B_v):
+    """A made-up vector of body coordinates in inertial ones."""
+    # BEGIN SOLUTION problem 84
+    return A_IB @ B_v
     # END SOLUTION
 
 
@@ -203,3 +219,25 @@ def test_a_constant_typed_with_anothers_value_is_no_value_unused(made_up):
 
     hypotheses = found(made_up, "wheel", wheel, [(0.4,), (1.1,)])
     assert "value_unused" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+def rotation(angle, axis):
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_rotvec(angle * np.asarray(axis) / np.linalg.norm(axis)).as_matrix()
+
+
+def test_a_rotation_left_out_of_a_matrix_product_is_as_truly_a_matrix_factor_left_out(made_up):
+    """``dt * W`` for ``dt * W @ A_IC``: no vector stays in another frame's coordinates, the value is a matrix;
+    told as a frame's slip and, beside it, as a matrix factor left out.  A rotation left out of a vector's
+    product stays a frame's slip alone."""
+    steps = [(rotation(0.7, [1.0, 2.0, -0.5]), np.array([0.3, -1.1, 0.8]), 0.1),
+             (rotation(-1.2, [0.4, -0.3, 1.0]), np.array([-0.6, 0.2, 1.4]), 0.05)]
+    hypotheses = found(made_up, "turned_step", lambda A, w, dt: A + dt * np.array(
+        [[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]]), steps)
+    assert names_of(hypotheses) == {"wrong_frame", "missing_matrix_factor"}, [(h.name, h.detail) for h in hypotheses]
+    vectors = [(rotation(0.7, [1.0, 2.0, -0.5]), np.array([0.3, -1.1, 0.8])),
+               (rotation(-1.2, [0.4, -0.3, 1.0]), np.array([-0.6, 0.2, 1.4]))]
+    hypotheses = found(made_up, "inertial", lambda A, v: v, vectors)
+    assert "wrong_frame" in names_of(hypotheses) and "missing_matrix_factor" not in names_of(hypotheses), \
+        [(h.name, h.detail) for h in hypotheses]
