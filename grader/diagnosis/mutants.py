@@ -2236,35 +2236,31 @@ def _angles(function: _Function) -> frozenset:
     return frozenset(found)
 
 
-def _sums(function: ast.FunctionDef) -> dict:
-    """``{name: the names it sums}`` of the names the function binds once to a sum or a difference of names
-    (``g_e = q2 + q4``)."""
+def _bound_once(function: ast.FunctionDef) -> dict:
+    """``{name: its value}`` of the names the function binds once, and by themselves (not unpacked)."""
     bound: dict = {}
     for node in ast.walk(function):
         for target in node.targets if isinstance(node, ast.Assign) else ():
             for name in ast.walk(target):
                 if isinstance(name, ast.Name):
                     bound.setdefault(name.id, []).append(node.value if target is name else None)
-    found = {}
-    for name, values in bound.items():
-        value = values[0] if len(values) == 1 else None
-        if isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Add, ast.Sub)):
-            found[name] = frozenset(n.id for n in ast.walk(value) if isinstance(n, ast.Name))
-    return found
+    return {name: values[0] for name, values in bound.items() if len(values) == 1 and values[0] is not None}
+
+
+def _sums(function: ast.FunctionDef) -> dict:
+    """``{name: the names it sums}`` of the names the function binds once to a sum or a difference of names
+    (``g_e = q2 + q4``)."""
+    return {name: frozenset(n.id for n in ast.walk(value) if isinstance(n, ast.Name))
+            for name, value in _bound_once(function).items()
+            if isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Add, ast.Sub))}
 
 
 def _bound_terms(function: ast.FunctionDef) -> dict:
     """``{name: its terms}`` of the names the function binds once, and to a sum or a difference of two to four
     terms (``radius = l2 + l3 * np.sin(phi)``: ``l2``, ``l3 * np.sin(phi)``; a term subtracted, under its minus)."""
-    bound: dict = {}
-    for node in ast.walk(function):
-        for target in node.targets if isinstance(node, ast.Assign) else ():
-            for name in ast.walk(target):
-                if isinstance(name, ast.Name):
-                    bound.setdefault(name.id, []).append(node.value if target is name else None)
     found = {}
-    for name, values in bound.items():
-        terms, value = [], values[0] if len(values) == 1 else None
+    for name, value in _bound_once(function).items():
+        terms = []
         while isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Add, ast.Sub)) and len(terms) < 4:
             terms.insert(0, value.right if isinstance(value.op, ast.Add) else ast.UnaryOp(ast.USub(), value.right))
             value = value.left
