@@ -416,19 +416,20 @@ def defaulted_blocks(mine, given, defaults, tol: Tol = EXACT) -> list:
     return names
 
 
-def run_array(run, key, shape, what, times=None):
+def run_array(run, key, shape, what, times=None, pieces=False):
     """``run[key]`` as a finite array of the given shape.  Given the expected output ``times``, a run whose own
     times span them evenly in one sample more or fewer fails as a grid off by one (``grid_off_by_one``: every
     sample after the first at another time) rather than as a value of the wrong shape, and a run whose own times
-    are expected ones, some left out or some twice, fails saying which (``_assert_samples``)."""
+    are expected ones, some left out or some twice, fails saying which (``_assert_samples``; ``pieces``: a run
+    integrated in pieces between breaks at the output times)."""
     if not isinstance(run, dict) or key not in run:
         fail(f"{what} returned no {key!r}.", "Return a dict with the keys named in the docstring.", "format")
     if times is not None:
-        _assert_grid(run, key, np.asarray(times, dtype=float), what)
+        _assert_grid(run, key, np.asarray(times, dtype=float), what, pieces)
     return as_array(run[key], f"{key} of {what}", shape)
 
 
-def _assert_grid(run, key, times, what):
+def _assert_grid(run, key, times, what, pieces=False):
     """Fail where ``run[key]`` has one row per output time ``run["t"]``, those times are as many as ``times`` but
     one more or fewer or otherwise not as many (so it fails a shape of one row per time of ``times`` anyway), and
     they run evenly from the first of ``times`` to the last in one more or one fewer, or lie on ``times``."""
@@ -454,7 +455,7 @@ def _assert_grid(run, key, times, what):
              f"{'late' if fewer else 'early'}.",
              "np.linspace(t0, t_end, n) gives n points and n - 1 steps of (t_end - t0) / (n - 1): for a step dt from "
              "t0 to t_end it takes round((t_end - t0) / dt) + 1 points.", "grid_off_by_one")
-    _assert_samples(t, times, span, what)
+    _assert_samples(t, times, span, what, pieces)
     _assert_own_steps(t, times, span, what)
 
 
@@ -492,15 +493,17 @@ def _listed(values) -> str:
     return shown + (f" and {len(values) - LISTED_TIMES} more" if len(values) > LISTED_TIMES else "") + " s"
 
 
-def _assert_samples(t, times, span, what):
+def _assert_samples(t, times, span, what, pieces=False):
     """Fail saying which output times differ, where every output time ``t`` of the student's run, in order, is one
     of the expected ``times`` and their numbers differ: times left out (``samples_left_out``: a boundary of the span,
     or of a piece, taken with < where <= belongs, or the reverse), times kept twice (``samples_repeated``: a sample
     on a boundary kept by both pieces that meet there), every m-th time alone (``output_step``: an output step m
     times too long).  A run that lacks its last output time alone has left the end out (taken with < where <=
-    belongs: ``samples_left_out``) or ended one step short (``span_short``); one that stops further short of the
-    span's end, or that both leaves out and repeats times, is told by what differs alone (``shape``): its causes are
-    too many (the last piece of a run in pieces never integrated, an event that ends it, a span cut short)."""
+    belongs: ``samples_left_out``) or ended one step short (``span_short``), unless it is integrated in pieces
+    between breaks at the output times (``pieces``: its last piece, one output step long, may never have been
+    integrated); one that stops further short of the span's end, or that both leaves out and repeats times, is told
+    by what differs alone (``shape``): its causes are too many (the last piece of a run in pieces never integrated,
+    an event that ends it, a span cut short)."""
     if np.any(np.diff(t) < 0):
         return
     at = np.clip(np.searchsorted(times, t), 1, times.size - 1)
@@ -538,20 +541,22 @@ def _assert_samples(t, times, span, what):
         # run's end missing has causes too many to name
         fail(f"{said} the run stops at {t[-1]:.6g} s: {last} not in it.",
              "Integrate over the whole span asked for, up to its end, and keep every output time in it (the end "
-             "of the span included).", "samples_left_out or span_short" if missing.size == 1 else "shape")
+             "of the span included).", "samples_left_out or span_short" if missing.size == 1 and not pieces
+             else "shape")
     fail(f"{said} {_listed(times[missing])} {'is' if missing.size == 1 else 'are'} left out.",
          "Keep every output time asked for: a boundary of the span or of a piece belongs to the run (<= where the "
          "end is included, >= where the start is).", "samples_left_out")
 
 
-def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", roots=None):
+def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", roots=None, pieces=False):
     """Fail at the first output time where one of ``keys`` of the run ``got`` leaves the reference run
     ``expected`` (tolerance per key in ``tols``); the message names the time and shows both states.  The failure
     carries the whole run as evidence for the diagnosis engine (``roots``: the probes' whole results, the
-    student's and the reference's, when ``got`` and ``expected`` are parts of them)."""
+    student's and the reference's, when ``got`` and ``expected`` are parts of them; ``pieces``: see
+    ``run_array``)."""
     t = np.asarray(expected["t"], dtype=float)
-    run_array(got, "t", t.shape, what, times=t)
-    mine = {key: run_array(got, key, np.shape(expected[key]), what, times=t) for key in keys}
+    run_array(got, "t", t.shape, what, times=t, pieces=pieces)
+    mine = {key: run_array(got, key, np.shape(expected[key]), what, times=t, pieces=pieces) for key in keys}
     departures = [(i, k, key) for k, key in enumerate(keys)
                   if (i := first_departure(mine[key], np.asarray(expected[key]), tols[key])) is not None]
     if not departures:

@@ -400,7 +400,7 @@ def _simulation(ctx, controller):
     n = t.size
     for key in ("t", "q", "qd", "x", "xd"):
         run_array(got, key, np.shape(expected[key]), f"simulate({controller!r}, trajectory, {t_end:g})",
-                  times=expected["t"])
+                  times=expected["t"], pieces=True)
     desired = np.asarray(table["t"]) <= t_end
     name = NAMES[controller]
     for key, label, unit in (("x", "position", "m"), ("xd", "velocity", "m/s")):
@@ -445,7 +445,7 @@ def _assert_starts_on_the_table(ctx, controller):
     ours = ctx.reference(p37.simulate, controller, later, START_RUN, persist=True)  # (the kit's key holds it)
     got = ctx.student(p37.simulate, controller, later, START_RUN, timeout=SIMULATION_TIMEOUT)
     n = int(np.sum(np.asarray(later["t"]) <= START_RUN))
-    q, qd = (run_array(got, key, (n, 3), call, times=ours["t"]) for key in ("q", "qd"))
+    q, qd = (run_array(got, key, (n, 3), call, times=ours["t"], pieces=True) for key in ("q", "qd"))
     mine, start = np.concatenate([q[0], qd[0]]), np.concatenate([later["q"][0], later["qd"][0]])
     if close(mine, start, EXACT):
         return
@@ -497,8 +497,9 @@ def _judged_on_own_model(ctx, controller, table, got, expected, probes):
         return False
     own = ctx.student(p37.own_run, controller, table, T_RUN[controller], timeout=SIMULATION_TIMEOUT)
     for key in ("t", "q", "qd"):
-        run_array(own, key, np.shape(expected[key]), "the run of your own robot_ode", times=expected["t"])
-    assert_run(got, own, ("q", "qd"), BAND, f"the {NAMES[controller]} run",
+        run_array(own, key, np.shape(expected[key]), "the run of your own robot_ode", times=expected["t"],
+                  pieces=True)
+    assert_run(got, own, ("q", "qd"), BAND, f"the {NAMES[controller]} run", pieces=True,
                note="Your M, f, g differ from the reference's (their own check says how): the run is judged on "
                     "them, against your own robot_ode integrated by the grader (solve_ivp, rtol 1e-6).")
     ctx.carry_forward(ROBOT_MFG, "M, f, g")
@@ -545,7 +546,7 @@ def _diagnosed(ctx, controller, got, expected, probes, ode, check):
 
 def _follow_reference(got, expected, controller):
     """The student's run stays within the bands of the reference's."""
-    assert_run(got, expected, ("q", "qd"), BAND, f"the {NAMES[controller]} run",
+    assert_run(got, expected, ("q", "qd"), BAND, f"the {NAMES[controller]} run", pieces=True,
                note="Any solve_ivp method at its default tolerances stays within the band.")
 
 

@@ -102,3 +102,12 @@ def test_uneven_times_that_stop_short_or_lie_on_the_grid_are_no_solvers_own_step
     with pytest.raises(CheckFailure) as caught:
         run_array(_run(t), "q", (101, 2), "simulate()", times=TIMES)
     assert caught.value.diagnosis != "solver_steps"
+
+
+def test_a_run_in_pieces_that_lacks_its_last_output_time_names_no_cause():
+    """Integrated in pieces between breaks at the output times, a run's last piece is one output step long: left
+    un-integrated, it leaves out the last output time alone, as the end taken with < does; nothing is named."""
+    with pytest.raises(CheckFailure) as caught:
+        run_array(_run(TIMES[:-1]), "q", (101, 2), "simulate()", times=TIMES, pieces=True)
+    assert caught.value.diagnosis == "shape"
+    assert "the last output time, 2 s, is not in it" in caught.value.message
