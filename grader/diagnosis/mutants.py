@@ -3377,8 +3377,9 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
 #: the quantity where its reciprocal belongs (a number's factor is a scale: ``x * 2`` for ``x / 2``); two entries
 #: or arguments exchanged that are one expression of a quantity and of its rate (``R @ qd``, ``R @ qdd``) read each
 #: where the other belongs; the names a state is unpacked into, bound in another order, read each from another's row;
-#: an inverse left out of a product is a matrix factor left out
+#: an inverse left out of a product is a matrix factor left out; a term taken twice is that term added once more
 RIVALS = {
+    "term_doubled": ("extra_term", "`{f}` adds one term of a sum once more (an update written twice)"),
     "point_doubled": ("offset", "`{f}` places a point elsewhere: a number of its position is doubled"),
     "point_halved": ("offset", "`{f}` places a point elsewhere: a number of its position is halved"),
     "multiplies_by": ("reciprocal_argument", "`{f}` divides by a quantity where it should multiply by it (the "

@@ -5,8 +5,8 @@ from another it stores (a line copied from its neighbour) and a list of names wi
 neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it runs as often) each leave a value unused, an
 argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q, qdd)`` for ``zip(q, qd)``) is a state
 read from the wrong row; half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
-whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit) is a factor two
-there; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
+whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit, or an update
+written twice) is a factor two there, and as truly that term added once more; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
 matrix factor left out as a frame's slip.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
 times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
@@ -144,8 +144,9 @@ def reach_with(factor: float):
 
 def test_a_term_of_the_sum_doubled_is_a_term_taken_twice_and_no_sum_read_as_a_term(made_up):
     hypotheses = found(made_up, "reach", reach_with(2.0), REACH)
-    assert names_of(hypotheses) == {"factor_two"}, [(h.name, h.detail) for h in hypotheses]
+    assert names_of(hypotheses) == {"factor_two", "extra_term"}, [(h.name, h.detail) for h in hypotheses]
     assert any("takes one term of a sum twice" in h.detail for h in hypotheses)
+    assert any("adds one term of a sum once more" in h.detail for h in hypotheses)
     assert not any("bound to a sum" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
 
 
