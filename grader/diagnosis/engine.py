@@ -640,7 +640,7 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
             return _told([found, described], "in your model" if described else "here")
         return _from_results(scene, evidences)
     decl = declaration(first.source.probe)
-    constants = constants_of(scene, decl, first.source.args) if decl is not None else {}
+    constants = constants_of(scene, decl, first.source.args)
     stepped = _stepped(decl)
     if len(evidences) == 1 and not (decl is not None and decl.motion):
         second = _second_input(scene, first)

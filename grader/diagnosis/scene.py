@@ -102,19 +102,28 @@ class Scene:
         return [int(x) for x in drawn]
 
 
-def constants_of(scene: Scene, decl: Declaration, args: tuple) -> dict:
+#: the course's constants a value of any problem may be scaled by: the Earth's gravity of the course (a force
+#: multiplied by g once more, a gravity vector normalised to its direction)
+COURSE_CONSTANTS = {"g": 9.81}
+
+
+def constants_of(scene: Scene, decl: Declaration | None, args: tuple) -> dict:
     """The problem's named constants a value may be scaled by: the declared scalar arguments (a mass, g, a length:
-    by their names) and the numbers of the declared probe of constants."""
+    by their names), the numbers of the declared probe of constants, and the course's (``COURSE_CONSTANTS``) where
+    none of those is one of them."""
     found = {}
-    for path, role, value in leaves_of(decl.args, list(args)):
+    for path, role, value in leaves_of(decl.args, list(args)) if decl is not None else ():
         array = array_of(value)
         if role == "scalar" and len(path) == 1 and array is not None and array.ndim == 0:
             found[label_of(decl, path)] = float(array)
-    if decl.constants:
+    if decl is not None and decl.constants:
         value = scene.reference(decl.constants, ())
         for key, item in (value.items() if isinstance(value, dict) else ()):
             if isinstance(item, (int, float)) and not isinstance(item, bool) and np.isfinite(item):
                 found.setdefault(key, float(item))
+    for key, item in COURSE_CONSTANTS.items():
+        if key not in found and not any(abs(item - other) < 1e-9 for other in found.values()):
+            found[key] = item
     return found
 
 
