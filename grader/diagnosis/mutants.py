@@ -359,10 +359,14 @@ LIBRARY = 0
 
 
 def _constants(tree: ast.Module) -> frozenset:
-    """The names a module binds at its top level in capitals (``WIRE_LENGTH``, ``GRAVITY_39``): its constants."""
-    return frozenset(t.id for node in tree.body if isinstance(node, (ast.Assign, ast.AnnAssign))
-                     for t in (node.targets if isinstance(node, ast.Assign) else [node.target])
-                     if isinstance(t, ast.Name) and t.id.isupper())
+    """The names a module binds at its top level in capitals (``WIRE_LENGTH``, ``GRAVITY_39``), or imports so from
+    another module of the reference (``from .mjcf import LENGTH``): its constants."""
+    bound = {t.id for node in tree.body if isinstance(node, (ast.Assign, ast.AnnAssign))
+             for t in (node.targets if isinstance(node, ast.Assign) else [node.target])
+             if isinstance(t, ast.Name) and t.id.isupper()}
+    imported = {a.asname or a.name for node in tree.body if isinstance(node, ast.ImportFrom) and node.level == 1
+                for a in node.names if (a.asname or a.name).isupper()}
+    return frozenset(bound | imported)
 
 
 def _angled(tree: ast.Module):

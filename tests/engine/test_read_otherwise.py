@@ -7,18 +7,20 @@ argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q,
 read from the wrong row; half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
 whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit, or an update
 written twice) is a factor two there, and as truly that term added once more; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
-matrix factor left out as a frame's slip.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
+matrix factor left out as a frame's slip; and a parameter read as the constant its module imports from the library
+(``LENGTH`` for ``length``) ignores the argument, as for a constant the module binds.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
 times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
 ``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
 slips tell)."""
 
 import numpy as np
+import pytest
 
 from checks._diagnoses import DIAGNOSES
 from grader.diagnosis import mutants
 
-from .stand_ins import made_up_fixture
+from .stand_ins import made_up_fixture, made_up_package
 from .test_mutants import made_up_evidences, scene
 
 SOURCE = '''"""A made-up problem of values read otherwise."""
@@ -242,3 +244,38 @@ def test_a_rotation_left_out_of_a_matrix_product_is_as_truly_a_matrix_factor_lef
     hypotheses = found(made_up, "inertial", lambda A, v: v, vectors)
     assert "wrong_frame" in names_of(hypotheses) and "missing_matrix_factor" not in names_of(hypotheses), \
         [(h.name, h.detail) for h in hypotheses]
+
+
+IMPORTING = '''"""A made-up problem that imports its constants from a module of the library."""
+
+import numpy as np
+
+from .shapes import LENGTH
+
+
+def moments(length, width):
+    """A made-up pair of moments of a plate of the given length and width."""
+    # BEGIN SOLUTION problem 83
+    return np.array([width**2, length**2 + width**2]) / 12
+    # END SOLUTION
+'''
+
+
+@pytest.fixture
+def importing(tmp_path, monkeypatch):
+    with made_up_package(tmp_path, monkeypatch, IMPORTING, 83, "importing",
+                         {"shapes.py": '"""A made-up library module."""\n\nLENGTH = 0.2\n'}) as package:
+        yield package
+
+
+def test_a_parameter_read_as_the_constant_its_module_imports_ignores_the_argument(importing):
+    """``LENGTH`` (imported from a module of the library) read where the parameter ``length`` belongs: the argument
+    is ignored, as for a constant the module binds itself; the near miss, the length doubled, is no such slip."""
+    plates = [(0.5, 0.3), (1.2, 0.7)]
+    evidences = made_up_evidences(importing, "moments", lambda length, width: np.array(
+        [width**2, 0.2**2 + width**2]) / 12, plates, number=83)
+    hypotheses = mutants.mutant_slips(scene("p83.moments"), evidences)
+    assert names_of(hypotheses) == {"ignored_argument"}, [(h.name, h.detail) for h in hypotheses]
+    evidences = made_up_evidences(importing, "moments", lambda length, width: np.array(
+        [width**2, 4 * length**2 + width**2]) / 12, plates, number=83)
+    assert "ignored_argument" not in names_of(mutants.mutant_slips(scene("p83.moments"), evidences))
