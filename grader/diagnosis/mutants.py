@@ -620,7 +620,8 @@ SLIPS = {
                  "constants), whatever it is given: every argument ignored"),
     "start_value": ("start_value", "`{f}` reads the value at the start where the value it computed from it belongs "
                     "(the computation left unused: the start returned for the end)"),
-    "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81) where the gravity it is given belongs"),
+    "earth": ("earth_gravity", "`{f}` uses the Earth's gravity (9.81, or the vector (0, -9.81, 0)) where the gravity "
+                               "it is given belongs"),
     "axes": ("transpose", "`{f}` takes a row of a matrix where its column belongs, or the reverse"),
     "cycled": ("swapped", "`{f}` lists quantities in another order (the last first, or the first last)"),
     "unpacked": ("swapped", "`{f}` unpacks the coordinates into its names in another order"),
@@ -2158,6 +2159,8 @@ def _read_as(function: ast.FunctionDef, lines: tuple, name: str, value) -> None:
 _GRAVITY = re.compile(r"^(g|g_\w+|grav\w*)$", re.IGNORECASE)
 #: the Earth's gravity as a student types it [m/s^2]
 EARTH_GRAVITY = 9.81
+#: a gravity vector by the course's notation (``I_grav``, ``I_g``): read as the Earth's, along the course's -y
+_GRAVITY_VECTOR = re.compile(r"^I_(g|grav\w*)$")
 
 
 def _defaults(function: _Function) -> dict:
@@ -2165,7 +2168,7 @@ def _defaults(function: _Function) -> dict:
     instead, the argument then ignored: the constant or the number of its default (``WIRE_LENGTH`` of
     ``wire_length=WIRE_LENGTH``), the module's constant of its name in capitals, or of its name and a number (its
     value at the start: ``WIRE_LENGTH`` of ``wire_length``, ``ANGLES0`` of ``angles``), and for a gravity the
-    Earth's (``9.81`` of ``g``)."""
+    Earth's (``9.81`` of ``g``, ``(0, -9.81, 0)`` of ``I_grav``)."""
     node = function.node
     positional = node.args.posonlyargs + node.args.args
     given = dict(zip([a.arg for a in positional[len(positional) - len(node.args.defaults):]], node.args.defaults)) \
@@ -2186,6 +2189,10 @@ def _defaults(function: _Function) -> dict:
                 reads.append(("default", ast.Name(constant, ast.Load())))
         if _GRAVITY.match(name):
             reads.append(("earth", ast.Constant(EARTH_GRAVITY)))
+        elif _GRAVITY_VECTOR.match(name):  # ``np.array([0.0, -9.81, 0.0])`` for ``I_grav``: the course's -y
+            reads.append(("earth", ast.Call(ast.Attribute(ast.Name("np", ast.Load()), "array", ast.Load()),
+                                            [ast.List([ast.Constant(0.0), ast.Constant(-EARTH_GRAVITY),
+                                                       ast.Constant(0.0)], ast.Load())], [])))
         if reads:
             found[name] = reads
     return found

@@ -8,7 +8,8 @@ read from the wrong row; half a length written as a floor division (``L // 2`` f
 whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit, or an update
 written twice) is a factor two there, and as truly that term added once more; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
 matrix factor left out as a frame's slip; and a parameter read as the constant its module imports from the library
-(``LENGTH`` for ``length``) ignores the argument, as for a constant the module binds.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
+(``LENGTH`` for ``length``) ignores the argument, as for a constant the module binds, and so does a gravity vector
+read as the Earth's (``np.array([0.0, -9.81, 0.0])`` for ``I_grav``).  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
 times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
 ``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
@@ -88,6 +89,13 @@ def inertial(A_IB, B_v):
     """A made-up vector of body coordinates in inertial ones."""
     # BEGIN SOLUTION problem 84
     return A_IB @ B_v
+    # END SOLUTION
+
+
+def weight(m, I_grav):
+    """A made-up weight of a body in a given gravity."""
+    # BEGIN SOLUTION problem 84
+    return m * np.asarray(I_grav, dtype=float)
     # END SOLUTION
 
 
@@ -279,3 +287,12 @@ def test_a_parameter_read_as_the_constant_its_module_imports_ignores_the_argumen
     evidences = made_up_evidences(importing, "moments", lambda length, width: np.array(
         [width**2, 4 * length**2 + width**2]) / 12, plates, number=83)
     assert "ignored_argument" not in names_of(mutants.mutant_slips(scene("p83.moments"), evidences))
+
+
+def test_a_gravity_vector_read_as_the_earths_is_the_earths_gravity(made_up):
+    gravities = [(2.0, np.array([1.2, -3.4, 0.0])), (0.7, np.array([-0.5, -1.6, 0.3]))]
+    hypotheses = found(made_up, "weight", lambda m, I_grav: m * np.array([0.0, -9.81, 0.0]), gravities)
+    assert names_of(hypotheses) == {"earth_gravity"}, [(h.name, h.detail) for h in hypotheses]
+    assert DIAGNOSES["earth_gravity"].family == "ignored_argument"
+    hypotheses = found(made_up, "weight", lambda m, I_grav: m * np.array([0.0, -9.7, 0.0]), gravities)
+    assert "earth_gravity" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
