@@ -225,6 +225,8 @@ _TABLE = (
        "used a matrix where its sibling belongs"),
     _D("wrong_angle", "order", "one angle read where another belongs (cos(beta) for cos(phi))",
        "read one angle where another belongs"),
+    _D("wrong_parameter", "order", "one argument read where another belongs (the width for the height)",
+       "read one argument where another belongs"),
     _D("sin_cos_swapped", "order", "sin and cos swapped", "swapped sin and cos"),
     _D("beta_sin_cos", "order", "sin and cos of beta swapped", "swapped sin and cos of beta"),
     _D("phi_sin_cos", "order", "sin and cos of phi swapped", "swapped sin and cos of phi"),

@@ -85,7 +85,9 @@ the start returned for the end, an initial state); a name bound to a sum read, o
 for ``radius * cb`` where ``radius = l2 + l3 * np.sin(phi)``: a term left out there); a constructor's argument stored
 from another one it stores (``self.B_a_B = _vector_or_zeros(B_omegaDot_B)``, a line copied from its neighbour) and a
 list of names with one entry that is read nowhere else written as its neighbour (``(m1, m1)`` for ``(m1, m2)``, in a
-loop's iterable too): a value left unused, an argument ignored; and an entry written into a neighbouring index
+loop's iterable too): a value left unused, an argument ignored; one read of an argument where another that the same
+line reads in its arithmetic belongs (``length**2 + width**2`` for ``length**2 + height**2``: the wrong argument); and an entry written
+into a neighbouring index
 (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one
 item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum
 left out), a loop of steps over a range one step longer (``range(n + 1)``: one step too many), a keyword argument left
@@ -610,6 +612,8 @@ SLIPS = {
                                  "``radius = l2 + l3 * sin(phi)``): the other terms are left out there"),
     "term_doubled": ("factor_two", "`{f}` takes one term of a sum twice (as the Coriolis term of a moving point "
                                    "is, ``2 * omega x v``)"),
+    "parameter_read": ("wrong_parameter", "`{f}` reads one of its arguments where another one that the same line "
+                                          "reads belongs (the width for the height)"),
     "stored_from": ("value_unused", "`{f}` stores one of its arguments from another (a line copied from its "
                                     "neighbour): the argument that belongs there is never used"),
     "repeated": ("value_unused", "`{f}` writes one entry of a list of names as its neighbour (``(m1, m1)`` for "
@@ -2297,6 +2301,25 @@ def _stored_reads(function: ast.FunctionDef) -> dict:
     return {id(name): tuple(sorted(stored - {name.id})) for _, name in reads}
 
 
+def _sibling_reads(function: ast.FunctionDef) -> dict:
+    """``{id of a read: the other parameters}`` of the reads of the function's parameters as operands of arithmetic
+    (``length**2 + height**2``) in a statement that so reads two to five of them: the others, each one a read of the
+    wrong name would take (the width for the height).  A parameter passed to a call by itself (``f`` of
+    ``np.cross(r - c, f)``) is of another kind."""
+    parameters = _parameters(function) - {"self", "cls"}
+    found = {}
+    for statement in ast.walk(function):
+        if not isinstance(statement, (ast.Assign, ast.AugAssign, ast.Return)) or statement.value is None:
+            continue
+        operands = [child for node in ast.walk(statement.value) if isinstance(node, (ast.BinOp, ast.UnaryOp))
+                    for child in ast.iter_child_nodes(node)]
+        reads = [n for n in operands if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and n.id in parameters]
+        names = sorted({n.id for n in reads})
+        if 2 <= len(names) <= 5:
+            found.update({id(n): tuple(other for other in names if other != n.id) for n in reads})
+    return found
+
+
 def _unread_once(function: ast.FunctionDef) -> frozenset:
     """The names the function reads once only: a list of names with one of them written as its neighbour leaves it
     unused (``(m1, m1)`` for ``(m1, m2)``)."""
@@ -2315,7 +2338,7 @@ def _built(function: ast.FunctionDef) -> frozenset:
 
 
 def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
-                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset())):
+                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {})):
     """One read of a name for another of its kind: an angle for another angle that the function reads (``np.cos(beta)``
     for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the read of the sum for
     its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its
@@ -2323,10 +2346,11 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     from a start read as that start (``_starts``: the computation left unused); a slice's axes exchanged in one
     statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
     say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``).
-    ``reads``: ``(_bound_terms, _stored_reads, _unread_once)`` of the function: a name bound to a sum read as one of
-    its terms (the others left out there), a constructor's argument stored from another one it stores (a line copied
-    from its neighbour), and a list of names with one that is read nowhere else written as its neighbour."""
-    terms, stored, once = reads
+    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads)`` of the function: a name bound to a sum
+    read as one of its terms (the others left out there), a constructor's argument stored from another one it stores
+    (a line copied from its neighbour), a list of names with one that is read nowhere else written as its neighbour,
+    and one read of an argument where another that the same line reads belongs (not of an angle: its own slip)."""
+    terms, stored, once, siblings = reads
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
@@ -2337,6 +2361,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "sum_part", lambda n, term=term: copy.deepcopy(term)
         for other in stored.get(id(node), ()):
             yield "stored_from", lambda n, other=other: ast.Name(other, ast.Load())
+        for other in siblings.get(id(node), ()) if node.id not in angles else ():
+            yield "parameter_read", lambda n, other=other: ast.Name(other, ast.Load())
         for slip, value in defaults.get(node.id, ()):
             yield slip, lambda n, value=value: copy.deepcopy(value)
         if node.id in starts:  # ``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start for the value computed
@@ -2428,7 +2454,8 @@ def _mutated(function: _Function, lines: tuple):
     used = _used_parameters(function.node, parameters)
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     built = _built(function.node)
-    reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node))
+    reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node),
+             _sibling_reads(function.node))
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -2894,7 +2921,7 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
-                        "sum_part", "stored_from", "repeated", "term_doubled"})
+                        "sum_part", "stored_from", "repeated", "term_doubled", "parameter_read"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

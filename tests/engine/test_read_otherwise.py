@@ -9,7 +9,9 @@ whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, th
 written twice) is a factor two there, and as truly that term added once more; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
 matrix factor left out as a frame's slip; and a parameter read as the constant its module imports from the library
 (``LENGTH`` for ``length``) ignores the argument, as for a constant the module binds, and so does a gravity vector
-read as the Earth's (``np.array([0.0, -9.81, 0.0])`` for ``I_grav``).  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
+read as the Earth's (``np.array([0.0, -9.81, 0.0])`` for ``I_grav``); one read of an argument where another that the
+same line reads in its arithmetic belongs (``a**2 + b**2`` for ``a**2 + c**2``) is the wrong argument, the near miss of
+a term doubled no such slip.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
 times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
 name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
 ``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
@@ -96,6 +98,13 @@ def weight(m, I_grav):
     """A made-up weight of a body in a given gravity."""
     # BEGIN SOLUTION problem 84
     return m * np.asarray(I_grav, dtype=float)
+    # END SOLUTION
+
+
+def box(a, b, c):
+    """A made-up set of a box's moments per unit mass."""
+    # BEGIN SOLUTION problem 84
+    return np.array([b**2 + c**2, a**2 + c**2, a**2 + b**2]) / 12
     # END SOLUTION
 
 
@@ -296,3 +305,16 @@ def test_a_gravity_vector_read_as_the_earths_is_the_earths_gravity(made_up):
     assert DIAGNOSES["earth_gravity"].family == "ignored_argument"
     hypotheses = found(made_up, "weight", lambda m, I_grav: m * np.array([0.0, -9.7, 0.0]), gravities)
     assert "earth_gravity" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+BOXES = [(0.5, 0.3, 0.2), (1.2, 0.7, 0.4)]
+
+
+def test_one_argument_read_for_another_of_its_line_is_the_wrong_argument(made_up):
+    hypotheses = found(made_up, "box", lambda a, b, c: np.array([b**2 + c**2, a**2 + b**2, a**2 + b**2]) / 12,
+                       BOXES)
+    assert names_of(hypotheses) == {"wrong_parameter"}, [(h.name, h.detail) for h in hypotheses]
+    assert DIAGNOSES["wrong_parameter"].family == "order"
+    hypotheses = found(made_up, "box", lambda a, b, c: np.array([b**2 + c**2, a**2 + 2 * c**2, a**2 + b**2]) / 12,
+                       BOXES)
+    assert "wrong_parameter" not in names_of(hypotheses), [(h.name, h.detail) for h in hypotheses]
