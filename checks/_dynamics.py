@@ -574,14 +574,16 @@ def assert_run(got, expected, keys, tols, what, hint="", diagnosis="", note="", 
         raise CheckFailure(exc.message, hint, diagnosis, evidence=evidence) from None
 
 
-def assert_event_found(got, expected, event, keys, tols, what, message, hint):
+def assert_event_found(got, expected, event, keys, tols, what, message, hint, others=None):
     """Where the run ``got`` has no ``event`` (None) and the reference's run ``expected`` has: a run that leaves
     the reference's before the reference's event fails there, at the first output time where one of ``keys``
     departs (``tols`` per key), with the whole runs as evidence for the diagnosis engine (the run never reaching
     the event is then a symptom, and its cause is what differs: a start, a model); only a run that follows the
     reference's up to its event and goes on without one has missed the event (``no_event``, ``message`` and
     ``hint``); one that follows it to its own end and ends before the event never reached it (``span_short``:
-    ``ended_early``)."""
+    ``ended_early``), and where it ends at the value of another argument of the call (``others``: their names and
+    values; the support's distance ``s`` of ``simulate(q0, t_end, s)``), within an output step, the end time and
+    that argument were exchanged as well (``argument_order``)."""
     if not isinstance(got, dict) or got.get(event) is not None:
         return
     t_event = float(expected[event])
@@ -615,8 +617,15 @@ def assert_event_found(got, expected, event, keys, tols, what, message, hint):
         ended = ended_early(t_mine, {key: run_array(got, key, None, what) for key in keys}, expected, keys, t_event,
                             tols)
         if ended is not None:
-            fail(f"{message} Your run ends at t = {ended:.6g} s, before the reference's event at t = {t_event:.6g} "
-                 f"s; up to its end it agrees with the reference's.", SPAN_HINT, "span_short")
+            said = (f"{message} Your run ends at t = {ended:.6g} s, before the reference's event at t = "
+                    f"{t_event:.6g} s; up to its end it agrees with the reference's.")
+            step = float(t_mine[-1] - t_mine[-2]) if t_mine.size > 1 else 0.0
+            for name, value in (others or {}).items():
+                if -1e-9 * max(1.0, abs(value)) <= value - ended <= step + 1e-9 * max(1.0, abs(value)):
+                    fail(f"{said} It ends at {name} = {value:.6g}, another argument of the call: the end time and "
+                         f"{name} look exchanged.", "Pass the arguments in the order of the signature (or by their "
+                         "names): the run integrates up to t_end.", "argument_order or span_short")
+            fail(said, SPAN_HINT, "span_short")
     fail(message, hint, "no_event")
 
 

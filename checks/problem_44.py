@@ -127,13 +127,14 @@ def _runs(ctx):
     return runs["sheet"], expected
 
 
-def _event(got, expected, what, bands):
+def _event(got, expected, what, bands, s=S):
     """The event is found, ends the run and lies within the bands of the reference's.  Where the run has no event,
     the first place it leaves the reference's run before the reference's event is what differs
-    (``assert_event_found``); only a run that follows the reference's there and never fires has missed it."""
+    (``assert_event_found``); only a run that follows the reference's there and never fires has missed it, and one
+    that ends early at the support's distance ``s`` of the call took it for the end time."""
     assert_event_found(got, expected, "t_event", ("q", "qd"), BAND, what,
                        f"{what}: no event, the bar never reached the second support (t_event is None); the "
-                       f"reference's run hits it at t = {expected['t_event']:.4f} s.", NO_EVENT_HINT)
+                       f"reference's run hits it at t = {expected['t_event']:.4f} s.", NO_EVENT_HINT, {"s": s})
     t = run_array(got, "t", None, what)
     if t.size and t[-1] > got["t_event"] + 1e-9:
         fail(f"{what}: the run goes on after the event at t = {got['t_event']:.4f} s, to t = {t[-1]:.4g} s.",
@@ -278,6 +279,6 @@ def check_event_random(ctx):
     ctx.compare_random(p44.simulate, _starts(), name="the event", tol=EVENT_TIME, examples=3,
                        compare=lambda got, expected, args: _event(got, expected, f"simulate(q0 = "
                                                                   f"{np.round(args[0], 4).tolist()}, ...)",
-                                                                  RANDOM_BANDS),
+                                                                  RANDOM_BANDS, args[2]),
                        describe=lambda args: f"q0 = {np.round(args[0], 4).tolist()} at rest, t_end = {args[1]}, "
                        f"s = {args[2]:.4g}")
