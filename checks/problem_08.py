@@ -15,7 +15,6 @@ from grader.checking import (
     Mistake,
     Tol,
     as_array,
-    assert_close,
     assert_rotation,
     check,
     close,

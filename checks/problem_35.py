@@ -79,8 +79,10 @@ def _at(point, kind):
 
 
 #: each velocity, its subspace, and what the check says of the two
-SUBSPACES = (("r_rel_dot", "S", "S is the motion subspace of the translation: r_rel_dot = S qd, S = d r_rel_dot / d qd."),
-             ("omega_rel", "R", "R is the motion subspace of the rotation: omega_rel = R qd, R = d omega_rel / d qd."))
+SUBSPACES = (
+    ("r_rel_dot", "S", "S is the motion subspace of the translation: r_rel_dot = S qd, S = d r_rel_dot / d qd."),
+    ("omega_rel", "R", "R is the motion subspace of the rotation: omega_rel = R qd, R = d omega_rel / d qd."),
+)
 
 
 def _subspaces(ctx, kind):

@@ -85,54 +85,53 @@ the start returned for the end, an initial state); a name bound to a sum read, o
 for ``radius * cb`` where ``radius = l2 + l3 * np.sin(phi)``: a term left out there); a constructor's argument stored
 from another one it stores (``self.B_a_B = _vector_or_zeros(B_omegaDot_B)``, a line copied from its neighbour) and a
 list of names with one entry that is read nowhere else written as its neighbour (``(m1, m1)`` for ``(m1, m2)``, in a
-loop's iterable too): a value left unused, an argument ignored; one read of an argument where another that the same
-line reads in its arithmetic belongs (``length**2 + width**2`` for ``length**2 + height**2``: the wrong argument); and an entry written
-into a neighbouring index
-(``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place are also a loop (or any loop of a comprehension) over one
-item fewer, that stops one short or starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum
-left out), a loop of steps over a range one step longer (``range(n + 1)``: one step too many), a keyword argument left
-out of a call of a function or a class of the reference whose parameter of that name has a default (the callee then uses
-the default: a term left out, a joint built without its ``A_PDp``; a point's position by the notation left out,
-``P_r_PDp``, moves the point: an offset), every inverse and solve of one statement left out together (``J M J^T`` for
-``(J M^-1 J^T)^-1``: no inverse), and the identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``:
-numpy adds it to every entry, a term added, told as an offset as well where it is the same on every input) or left out
-of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the identity left out, a term of its own), and a body's matrix
-turned into inertial coordinates in one statement where the function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T``
-for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong frame), and so one read of a vector in the body's
-coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the reads of names, every read of one of a function's
-arguments multiplied by the factor of a conversion of units into the ones the function computes in (``CONVERSIONS``:
-``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180`` of an angle already in radians: a scale).  The
-reads of names and the indices written come after every other slip of every function, as many as ``MAX_MUTANTS`` leaves
-room for, so that the budget reaches the older slips first), and the slips of precision (``PRECISION_SLIPS``: a dtype of
-double precision given as single, ``np.asarray(q, dtype=np.float32)``, also inside a loop's bounds, where it changes no
-count (given as an integer, ``dtype=int``, it cuts every value to a whole number, as do an array created of integers and
-filled with floats, ``np.zeros(n, dtype=int)``, a number converted with ``int`` where ``float`` belongs, and a division
-by a whole number written ``//``: far outside the band, not one of these); an array given no dtype created in single
-precision; an argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as
-9.8, and an expression of numbers or a read of a module's constant rounded to two, three or four decimals (the sheet
-prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of
-names, after the other slips).  A slip of precision is told only where the student's value is in the band such slips
-make (``PRECISION_BAND``; on the other inputs and the call's other values, in that band or the expected value itself),
-differs from the expected one beyond the tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left
-at most), and none is tried where the value shown is beyond the band; on a comparison of one input (no second one to
-draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of
-another family is told with both names, as a twin (``rivals``): a product with a quantity where the division by it
-belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the
-other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored, where the
-engine could test none of the call's arguments itself, and so is an argument of the call that the engine's test had no
-budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a
-term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
-matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a sign or
-the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only exchanges are made.  A mutant is kept when
-its value reproduces the student's within the comparison's tolerance on the input shown *and* on the second one (and on
-a third where the engine can draw one), and differs from the expected value (an equivalent mutant says nothing).  Where
-the probe computes more than the compared value and declares the cheaper call that holds it (``part``: ``lagrange``'s
-``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only where it
-reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part for the
-others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from one
-kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of one
-family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never the
-reference's code.
+loop's iterable too): a value left unused, an argument ignored; one read of an argument where another that the same line
+reads in its arithmetic belongs (``length**2 + width**2`` for ``length**2 + height**2``: the wrong argument); and an
+entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
+are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
+body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps over a range one step longer
+(``range(n + 1)``: one step too many), a keyword argument left out of a call of a function or a class of the reference
+whose parameter of that name has a default (the callee then uses the default: a term left out, a joint built without its
+``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and
+solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix
+written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added, told as an
+offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the
+identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one statement where the
+function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong
+frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the
+reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the
+ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180``
+of an angle already in radians: a scale).  The reads of names and the indices written come after every other slip of
+every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
+slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q,
+dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts
+every value to a whole number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a
+number converted with ``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the
+band, not one of these); an array given no dtype created in single precision; an argument converted to float32 at a
+function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a
+module's constant rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 /
+3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is
+told only where the student's value is in the band such slips make (``PRECISION_BAND``; on the other inputs and the
+call's other values, in that band or the expected value itself), differs from the expected one beyond the tolerance and
+is reproduced closely (``PRECISION_SHARE`` of the difference left at most), and none is tried where the value shown is
+beyond the band; on a comparison of one input (no second one to draw) the slips of precision alone are tried there,
+where the value is in the band.  An edit that is as truly a slip of another family is told with both names, as a twin
+(``rivals``): a product with a quantity where the division by it belongs (or the reverse) uses the quantity as its
+reciprocal; a quantity and its rate exchanged read each where the other belongs (a state row); a parameter with a
+default that the edit leaves unused is an argument ignored, where the engine could test none of the call's arguments
+itself, and so is an argument of the call that the engine's test had no budget to change. A slip is one kind of mistake
+even where it takes more than one edit (sin and cos exchanged in a term); an exchange of reads of a run's state, or a
+read of its other half, is a state read from the wrong rows; a skew matrix transposed is its negative, told as a sign or
+a transpose, and a cross product the other way round as a sign or the factors' order (``grammar.EQUIVALENCES``); inside
+a loop's iterable only exchanges are made.  A mutant is kept when its value reproduces the student's within the
+comparison's tolerance on the input shown *and* on the second one (and on a third where the engine can draw one), and
+differs from the expected value (an equivalent mutant says nothing).  Where the probe computes more than the compared
+value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant
+is evaluated on that call first and on the whole probe only where it reproduces the student's value there: the mutants
+kept are those the whole probe keeps, at the cost of the part for the others. Each call gets its own copy of the input's
+arguments (a mutant may change them in place), unpickled from one kept for the input.  A slip inside an index is one of
+the index.  A cause is named only when the mutants kept are of one family of the vocabulary, or of two; the hint says
+what kind of slip and in which of the student's functions, never the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on

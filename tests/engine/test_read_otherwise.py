@@ -1,21 +1,28 @@
-"""Reads of one value where another belongs (``grader.diagnosis.mutants``: ``sum_part``, ``stored_from``,
-``repeated``, ``term_doubled``, and ``floor`` of a half): a name bound to a sum read as one of its terms (``l2 * cb`` for ``radius * cb``
-where ``radius = l2 + l3 * np.sin(phi)``) is a term left out there; a constructor that stores one of its arguments
-from another it stores (a line copied from its neighbour) and a list of names with one entry written as its
-neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it runs as often) each leave a value unused, an
-argument ignored; a loop's iterable that reads a quantity for its rate (``zip(q, qdd)`` for ``zip(q, qd)``) is a state
-read from the wrong row; half a length written as a floor division (``L // 2`` for ``0.5 * L``) is a value cut to a
-whole number; and a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit, or an update
-written twice) is a factor two there, and as truly that term added once more; a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``) is as truly a
-matrix factor left out as a frame's slip; and a parameter read as the constant its module imports from the library
-(``LENGTH`` for ``length``) ignores the argument, as for a constant the module binds, and so does a gravity vector
-read as the Earth's (``np.array([0.0, -9.81, 0.0])`` for ``I_grav``); one read of an argument where another that the
-same line reads in its arithmetic belongs (``a**2 + b**2`` for ``a**2 + c**2``) is the wrong argument, the near miss of
-a term doubled no such slip.  Planted into a made-up problem that the tier names on two inputs; the near misses (a term of the sum at three
-times its value, an argument stored at twice itself, the entries of the list exchanged, a third of the length)
-name no such slip, nor does a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``:
-``l, r = LENGTH, LENGTH`` gives the same, but a constant so written is a constant typed otherwise, which the constants'
-slips tell)."""
+"""Reads of one value where another belongs, and other slips of one read (``grader.diagnosis.mutants``), each planted
+into a made-up problem that the formula tier names on two inputs:
+
+* a name bound to a sum read as one of its terms (``l2 * cb`` for ``radius * cb`` where ``radius = l2 + l3 *
+  np.sin(phi)``): a term left out there (``sum_part``);
+* a constructor that stores one of its arguments from another it stores (a line copied from its neighbour), and a
+  list of names with one entry written as its neighbour (``(m1, m1)`` for ``(m1, m2)``, in a loop's iterable too: it
+  runs as often): a value left unused, an argument ignored (``stored_from``, ``repeated``);
+* a loop's iterable that reads a quantity for its rate (``zip(q, qdd)`` for ``zip(q, qd)``): a state read from the
+  wrong row;
+* half a length written as a floor division (``L // 2`` for ``0.5 * L``): a value cut to a whole number (``floor``);
+* a term of a sum taken twice (``l2 + 2 * l3 * np.sin(phi)``, the Coriolis habit, or an update written twice): a
+  factor two there, and as truly that term added once more (``term_doubled``);
+* a rotation left out of a product whose value is a matrix (``dt * W`` for ``dt * W @ A_IC``): as truly a matrix
+  factor left out as a frame's slip;
+* a parameter read as the constant its module imports from the library (``LENGTH`` for ``length``), as for a constant
+  the module binds, and a gravity vector read as the Earth's (``np.array([0.0, -9.81, 0.0])`` for ``I_grav``): the
+  argument ignored;
+* one read of an argument where another that the same line reads in its arithmetic belongs (``a**2 + b**2`` for
+  ``a**2 + c**2``): the wrong argument (``parameter_read``).
+
+The near misses name no such slip: a term of the sum at three times its value, an argument stored at twice itself,
+the entries of the list exchanged, a third of the length, a gravity of 9.7, a term doubled for the wrong argument, and
+a module's constant typed with another's value (``RADIUS = 1.0`` where ``LENGTH = 1.0``: ``l, r = LENGTH, LENGTH``
+gives the same, but a constant so written is a constant typed otherwise, which the constants' slips tell)."""
 
 import numpy as np
 import pytest
