@@ -621,7 +621,8 @@ def assert_event_found(got, expected, event, keys, tols, what, message, hint, ot
                     f"{t_event:.6g} s; up to its end it agrees with the reference's.")
             step = float(t_mine[-1] - t_mine[-2]) if t_mine.size > 1 else 0.0
             for name, value in (others or {}).items():
-                if -1e-9 * max(1.0, abs(value)) <= value - ended <= step + 1e-9 * max(1.0, abs(value)):
+                slack = 1e-9 * max(1.0, abs(value))  # the end at the value, or an output step short of it
+                if -slack <= value - ended <= step + slack:
                     fail(f"{said} It ends at {name} = {value:.6g}, another argument of the call: the end time and "
                          f"{name} look exchanged.", "Pass the arguments in the order of the signature (or by their "
                          "names): the run integrates up to t_end.", "argument_order or span_short")

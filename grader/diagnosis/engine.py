@@ -665,7 +665,7 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     if not (decl is not None and decl.motion) or stepped:  # slips inside a formula: the last tier
         # an array argument ignored is told only beside another explanation (``_beside``): alone it explains
         # nothing, and the formula tier is heard in full
-        explaining = [[h for h in tier if not h.key.startswith(IGNORED_ARRAY)] for tier in tiers]
+        explaining = _without_arrays_ignored(tiers)
         told = {DIAGNOSES[h.name].family for tier in explaining for h in tier} if any(explaining) else None
         untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
         formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
@@ -836,6 +836,11 @@ def _beside(tiers: list) -> list:
     families = {DIAGNOSES[h.name].family for h in simplest}
     if simplest and len(families | {DIAGNOSES["ignored_argument"].family}) <= MAX_FAMILIES:
         return tiers
+    return _without_arrays_ignored(tiers)
+
+
+def _without_arrays_ignored(tiers: list) -> list:
+    """The tiers without their hypotheses of an array argument ignored (``IGNORED_ARRAY``)."""
     return [[h for h in tier if not h.key.startswith(IGNORED_ARRAY)] for tier in tiers]
 
 

@@ -20,6 +20,7 @@ __all__ = [
     "kinds_of",
     "equivalents",
     "ENTRYWISE",
+    "EARTH_GRAVITY",
     "FACTORS",
     "UNIT_FACTORS",
     "ARGUMENT_FACTORS",
@@ -57,6 +58,9 @@ FACTORS = (
     (1 / np.sqrt(3.0), "1/sqrt(3)"), (np.pi, "pi"), (1 / np.pi, "1/pi"), (2 * np.pi, "2 pi"),
     (1 / (2 * np.pi), "1/(2 pi)"),
 )
+#: the Earth's gravity of the course, as a student types it [m/s^2]: a value may be off by it (a force multiplied by
+#: g once more), and a gravity given may be read as it
+EARTH_GRAVITY = 9.81
 #: the factors of a unit a whole value may be off by (a density in g/cm^3 for kg/m^3, a length in mm for m, a mass in
 #: g for kg): (factor, how it is written)
 UNIT_FACTORS = ((1000.0, "1000"), (1e-3, "1/1000"))

@@ -123,7 +123,8 @@ itself, and so is an argument of the call that the engine's test had no budget t
 even where it takes more than one edit (sin and cos exchanged in a term); an exchange of reads of a run's state, or a
 read of its other half, is a state read from the wrong rows; a skew matrix transposed is its negative, told as a sign or
 a transpose, and a cross product the other way round as a sign or the factors' order (``grammar.EQUIVALENCES``); inside
-a loop's iterable only exchanges are made.  A mutant is kept when its value reproduces the student's within the
+a loop's iterable only the slips that keep its count are made (``_KEEP_COUNT``: exchanges, a dtype, a name written as
+its neighbour, a quantity read for its rate).  A mutant is kept when its value reproduces the student's within the
 comparison's tolerance on the input shown *and* on the second one (and on a third where the engine can draw one), and
 differs from the expected value (an equivalent mutant says nothing).  Where the probe computes more than the compared
 value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant
@@ -195,7 +196,7 @@ from checks._diagnoses import DIAGNOSES
 from ..errors import GraderFault
 from . import trace
 from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, reproduces, rows_of, Source, within
-from .grammar import equivalents
+from .grammar import EARTH_GRAVITY, equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
@@ -2160,8 +2161,6 @@ def _read_as(function: ast.FunctionDef, lines: tuple, name: str, value) -> None:
 
 #: a parameter that names the gravity (``g``, ``gravity``), which a student may read as the Earth's
 _GRAVITY = re.compile(r"^(g|g_\w+|grav\w*)$", re.IGNORECASE)
-#: the Earth's gravity as a student types it [m/s^2]
-EARTH_GRAVITY = 9.81
 #: a gravity vector by the course's notation (``I_grav``, ``I_g``): read as the Earth's, along the course's -y
 _GRAVITY_VECTOR = re.compile(r"^I_(g|grav\w*)$")
 
@@ -2289,7 +2288,7 @@ def _stored_reads(function: ast.FunctionDef) -> dict:
     copied from a neighbouring line would take."""
     if function.name != "__init__":
         return {}
-    parameters = {a.arg for a in function.args.args + function.args.kwonlyargs} - {"self"}
+    parameters = _parameters(function) - {"self"}
     reads = [(node, name) for node in ast.walk(function) if isinstance(node, ast.Assign)
              and all(isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name) and t.value.id == "self"
                      for t in node.targets)

@@ -11,7 +11,7 @@ import numpy as np
 from ..errors import GraderFault, StudentFault
 from . import trace
 from .evidence import array_of, at, call_key, Declaration, Evidence, part_of, Source
-from .grammar import label_of, leaves_of
+from .grammar import EARTH_GRAVITY, label_of, leaves_of
 
 __all__ = [
     "MAX_REFERENCE_CALLS",
@@ -104,7 +104,7 @@ class Scene:
 
 #: the course's constants a value of any problem may be scaled by: the Earth's gravity of the course (a force
 #: multiplied by g once more, a gravity vector normalised to its direction)
-COURSE_CONSTANTS = {"g": 9.81}
+COURSE_CONSTANTS = {"g": EARTH_GRAVITY}
 
 
 def constants_of(scene: Scene, decl: Declaration | None, args: tuple) -> dict:
