@@ -77,3 +77,25 @@ def test_a_start_in_single_precision_is_no_start_of_its_own_for_problem_37():
     assert _single(start.astype(np.float32), start)
     assert not _single(np.round(start, 4), start)  # typed to four decimals: another start
     assert not _single(np.concatenate([start[:3], -start[3:4], start[4:]]) + [0, 0, 0.01, 0, 0, 0], start)
+
+
+def test_a_start_with_its_halves_exchanged_is_a_wrong_start_or_an_exchange():
+    """A run's start whose rates stand where its angles belong and the reverse (``simulate(..., qd0, q0)``, the
+    sheet's start ``(0, 0, -0.1, 1)`` with two zeros) is a wrong start, and, "could be" beside it, its two halves
+    exchanged (``checks._dynamics.wrong_start``, which hears ``engine.value_slips``): named even where the start's
+    entries repeat, so that no permutation of single entries tells which went where.  The near miss, a start that
+    is no order of the given one's entries, is a wrong start alone."""
+    import numpy as np
+
+    from checks._dynamics import wrong_start
+    from grader.checking import EXACT
+    from grader.diagnosis.engine import value_slips
+
+    given = np.array([0.0, 0.0, -0.1, 1.0])
+    hint, diagnosis = wrong_start(np.array([-0.1, 1.0, 0.0, 0.0]), given, "The run starts at the given start.")
+    assert diagnosis == "initial_state or swapped", diagnosis
+    assert "two halves are exchanged" in hint, hint
+    assert wrong_start(np.array([-0.1, 1.0, 0.0, 0.5]), given, "The run starts at the given start.")[1] == \
+        "initial_state"
+    distinct = value_slips(np.array([-0.1, 1.0, 0.05, 0.3]), np.array([0.05, 0.3, -0.1, 1.0]), EXACT)
+    assert [h.key for h in distinct] == ["swap:halves"], [(h.key, h.detail) for h in distinct]

@@ -232,8 +232,12 @@ def output_slips(E: np.ndarray, constants: dict, rotation, got=None) -> list:
             for shift in (1, 2):
                 add((Hypothesis(f"swap:cyclic:{shift}", "swapped", 3, "the axes are permuted cyclically"),
                      np.roll(E, shift)))
+        if E.size >= 4 and E.size % 2 == 0:  # ``(qd, q)`` for ``(q, qd)``: named even where entries repeat (zeros)
+            add((Hypothesis("swap:halves", "swapped", 3, "its two halves are exchanged (the second half's entries "
+                             "first: the rates where the coordinates belong, say)"), np.roll(E, E.size // 2)))
         order = _reordered(got, E) if got is not None and E.size > 3 else None
-        if order is not None:
+        if order is not None and not (E.size % 2 == 0 and list(order) == np.roll(np.arange(E.size), E.size // 2)
+                                      .tolist()):  # the halves exchanged are named so above
             moved = ", ".join(f"{_ordinal(k)} holds the expected {_ordinal(j)}" for k, j in enumerate(order) if k != j)
             add((Hypothesis(f"swap:order:{','.join(map(str, order))}", "swapped", 3,
                              f"the entries are in another order (entry {moved})"), E[list(order)].copy()))

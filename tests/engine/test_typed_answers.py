@@ -133,12 +133,12 @@ def test_a_tensor_with_its_axes_exchanged(undeclared):
 
 
 def test_a_vector_in_another_order(undeclared):
-    """A 6-vector with its halves exchanged is in an order no exchange of two entries gives; one whose entries are
-    of equal size where they moved tells no order (near miss)."""
+    """A 6-vector with its halves exchanged is in an order no exchange of two entries gives, told as its halves
+    exchanged; one whose entries are of equal size where they moved tells no order (near miss)."""
     spatial = np.array([0.3, -1.2, 0.7, 2.5, 0.1, -0.4])
     finding = _one_input(spatial[[3, 4, 5, 0, 1, 2]], spatial)
     assert finding is not None and finding.names == ("swapped",), finding
-    assert "another order" in finding.hint, finding.hint
+    assert "two halves are exchanged" in finding.hint, finding.hint
     alike = np.array([1.0, 1.0, 2.0, -3.0, 0.5, 4.0])
     keys = {h.key for h, _ in output_slips(alike, {}, None, alike[[2, 0, 1, 3, 4, 5]])}
     assert not any(k.startswith("swap:order") for k in keys), keys
