@@ -109,13 +109,15 @@ not orthonormal, a reflection, a body in the wrong orientation) asks the engine 
 probe call behind the value is compared with the reference's call on the same arguments, each result that differs
 is explained as a failing comparison (on the input shown and the engine's own second input), and a cause found is
 told beside the symptom, whose message stays.  A check that names an effect its value shows (``EFFECTS``: some
-entries with the wrong sign, found by comparing the value with the expected one) asks the formula tier for the
-exchanges of two operands whose effect that sign is (``rival``, ``mutants.opposite_slips``: a call's two points
-exchanged negate the lever arm between them), and for a check that names a term that is not there (``MISSING_TERMS``)
-the reorders of two factors of a product that make it vanish (``I (w x w)`` for ``w x (I w)``: the gyroscopic term
-written, in an order in which it is zero), on the input shown alone where there is no second one: a rival found
-is told beside the check's name, "could be" either; the kit, which holds no reference code, tells the check's name
-alone.  A randomized comparison whose shown input has no comparison (the
+entries with the wrong sign, found by comparing the value with the expected one, whether its catalogue names the
+sign of a term or a sign alone) asks the formula tier for the exchanges of two operands whose effect that sign is
+(``rival``, ``mutants.opposite_slips``: a call's two points exchanged negate the lever arm between them; ``np.cross(r,
+w)`` for ``np.cross(w, r)``) and for a matrix transposed (a system solved with its matrix transposed negates a
+multiplier); for a check that names a term that is not there, the reorders of two factors of a product that make it
+vanish (``I (w x w)`` for ``w x (I w)``: the gyroscopic term written, in an order in which it is zero); for a check
+that names a wrong start, the exchanges of two operands that the start is made of (a signature's start values in
+another order); on the input shown alone where there is no second one: a rival found is told beside the check's
+name, "could be" either; the kit, which holds no reference code, tells the check's name alone.  A randomized comparison whose shown input has no comparison (the
 student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
 A value the check derives from the student's reply itself (the centre of gravity of their points, an anchor's first
 coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; the
@@ -159,7 +161,6 @@ __all__ = [
     "SYMPTOMS",
     "rival",
     "EFFECTS",
-    "MISSING_TERMS",
     "effect",
     "prepare",
     "prepare_call",
@@ -224,21 +225,21 @@ def judge(ctx, evidence) -> Finding | None:
     return finding
 
 
-#: the names a check tells from what its value shows (some entries with the wrong sign, found by comparing the
-#: student's value with the expected one), which a slip of another family has as its effect: an exchange of two
-#: operands that enter as a difference (``mutants.OPPOSITES``)
-EFFECTS = ("sign_flip",)
-#: the family of the names of a term that is not there, which a check tells from what its value shows as well: the
-#: formula tier hears two factors of a product reordered so that the term vanishes (``I (w x w)`` for ``w x (I w)``)
-MISSING_TERMS = "missing_term"
+#: the families of the names a check tells from what its value shows, which a slip of another family has as its
+#: effect (``mutants.EFFECT_RIVALS``): some entries with the wrong sign, found by comparing the student's value with
+#: the expected one (the catalogue's sign of a term as well as ``sign_flip``), the effect of two operands exchanged
+#: that enter as a difference or of a matrix transposed; a term that is not there, the effect of two factors of a
+#: product reordered so that it vanishes (``I (w x w)`` for ``w x (I w)``); a wrong start, the effect of two
+#: arguments exchanged that the start is made of (a signature's start values in another order)
+EFFECTS = ("sign", "missing_term", "initial_state")
 
 
 def effect(diagnosis: str) -> bool:
-    """Whether ``diagnosis`` names an effect the value shows (``EFFECTS``, or a name of ``MISSING_TERMS``), whose
-    edit the formula tier may find (``rival``)."""
+    """Whether ``diagnosis`` names an effect the value shows (a name of a family of ``EFFECTS``), whose edit the
+    formula tier may find (``rival``)."""
     from checks._diagnoses import DIAGNOSES
 
-    return diagnosis in EFFECTS or (diagnosis in DIAGNOSES and DIAGNOSES[diagnosis].family == MISSING_TERMS)
+    return diagnosis in DIAGNOSES and DIAGNOSES[diagnosis].family in EFFECTS
 
 
 def rival(ctx, evidence, diagnosis: str) -> Finding | None:

@@ -924,10 +924,34 @@ def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None
     """The rivals of another family of a check's ``diagnosis`` told from what its value shows (a sign), on the
     failing comparison ``evidence`` and a second input where the engine draws one (``mutants.opposite_slips``):
     the check's name and theirs, "could be" either; None where none reproduces the student's value, or where rivals
-    of two families do (with the check's, three: the check's name stands alone)."""
+    of two families do (with the check's, three: the check's name stands alone).  A value the check derived from the
+    student's results (``J @ qdd`` of their ``qdd``), which no call holds, is explained by the results of the call it
+    came from (``judged_call``) that differ from the reference's: a rival is told where every such result names it."""
     _sources(scene, evidence)
-    if evidence.source is None or evidence.got is None:
+    if evidence.got is None:
         return None
+    if evidence.source is not None:
+        rivals = _rivals(scene, evidence, diagnosis)
+    else:
+        call = judged_call(getattr(scene.ctx, "calls", ()), evidence)
+        if call is None:
+            trace.note("rival", reason="no call behind the derived value")
+            return None
+        expected_root = scene.reference(call.probe, call.args)
+        results = _result_evidences(Evidence(np.zeros(0), np.zeros(0), evidence.tol, "the result",
+                                             call=(call.probe, call.args, call.root, expected_root)))
+        found = [_rivals(scene, result, diagnosis) for result in list(results.values())[:RESULT_LEAVES]]
+        names = set.intersection(*(set(f.names) for f in found)) if found and all(found) else set()
+        rivals = found[0] if found and all(found) and names == set(found[0].names) else None
+    if rivals is None:
+        return None
+    said = " or ".join(DIAGNOSES[n].student for n in rivals.names)
+    return Finding((diagnosis, *rivals.names),
+                   f"Could be {DIAGNOSES[diagnosis].student} or, as well, {said}, whose effect it is.\n{rivals.hint}")
+
+
+def _rivals(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None:
+    """``rivalled``'s rivals on one comparison with a reference call behind it: the cheapest, of one family."""
     evidences = [evidence]
     second = _second_input(scene, evidence)
     if second is not None:
@@ -943,10 +967,7 @@ def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None
     if len(families) > 1:  # rivals of two families: with the check's, three
         trace.note("rivals", families=sorted(families))
         return None
-    rivals = _finding(cheapest, _where(evidences))
-    said = " or ".join(DIAGNOSES[n].student for n in rivals.names)
-    return Finding((diagnosis, *rivals.names),
-                   f"Could be {DIAGNOSES[diagnosis].student} or, as well, {said}, whose effect it is.\n{rivals.hint}")
+    return _finding(cheapest, _where(evidences))
 
 
 def doubted(scene: Scene, evidence: Evidence) -> Finding | None:

@@ -493,6 +493,8 @@ SLIPS = {
     "cross": ("sign_flip", "a cross product in `{f}` is taken the other way round (its sign flips)"),
     "skew": ("sign_flip", "a skew matrix in `{f}` is transposed, or multiplied from the other side (either negates "
                           "it)"),
+    "skew_factors": ("sign_flip", "a product with a skew matrix in `{f}` is taken from the other side (``r @ skew(w)`` "
+                                  "for ``skew(w) @ r``: the cross product ``r x w`` for ``w x r``), which negates it"),
     "term": ("missing_term", "one term of a sum in `{f}` is left out"),
     "factor": ("missing_factor", "one factor of a product in `{f}` is left out"),
     "inverse_factor": ("inverse_left_out", "`{f}` leaves an inverse factor out of a product (``J.T @ Lam`` for "
@@ -1974,6 +1976,9 @@ def _call_slips(node: ast.Call):
         yield "count", lambda n: ast.Call(ast.Name("len", ast.Load()), [_summed(n)], [])
     if callee == "solve" and len(args) == 2 and not node.keywords:
         yield "solved", lambda n: ast.BinOp(n.args[0], ast.MatMult(), n.args[1])
+        if not (isinstance(args[0], ast.Attribute) and args[0].attr == "T"):  # ``solve(A.T, b)``: the system's
+            # matrix transposed (its blocks ``-J.T`` and ``J`` exchanged), as a product's factor may be
+            yield "transpose", lambda n: _with(n, args=[_transposed(n.args[0]), n.args[1]])
     if callee == "solve" and len(args) == 2 and not node.keywords and _product(args[0]):
         # ``inv(A) @ B @ b`` (or ``inv(B) @ A @ b``) for ``solve(A @ B, b)``: one factor of the product inverted
         yield "one_inverted", lambda n: _with(n, args=[n.args[0].left, ast.BinOp(n.args[0].right, ast.MatMult(),
@@ -2496,7 +2501,9 @@ def _mutated(function: _Function, lines: tuple):
                     and _rates(edit[1], edit[2]):
                 slip = f"{slip}_rates"  # a quantity and its rate exchanged: each read where the other belongs
             if slip in ("transpose", "factors", "sides") and _skew(node, skews, slip):
-                slip = "skew"  # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``)
+                # a skew matrix transposed is the matrix negated (``w @ S`` is ``S.T @ w``); a product with it taken
+                # from the other side is a cross product of its operands exchanged (``r @ skew(w)`` is ``r x w``)
+                slip = "skew_factors" if slip == "factors" else "skew"
             copies: dict = {}
             tree = _tree_copy(function.node, copies)
             if isinstance(edit, tuple) and edit[0] == "unit":
@@ -3447,11 +3454,16 @@ def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozense
     where that test ran out of its budget before it came to it (``unreached``: the names of the compared call's
     parameters it did not change; ``m = L W H`` for ``m = L W H rho``: a factor left out, and the density
     ignored).  Where that test changed an argument it is the measure of an argument ignored, heard as a tier of its
-    own: an argument it found followed is no twin."""
+    own: an argument it found followed is no twin.  A slip of a module's constant that is a start (``_START``:
+    ``Q0``, ``START_ANGLES``: two of its entries exchanged, one typed in degrees) starts the run from another state
+    as truly: a wrong initial state, told beside it."""
     found = []
     if mutant.slip in RIVALS:
         name, detail = RIVALS[mutant.slip]
         found.append(Hypothesis(f"{key}={name}", name, COST, detail.format(f=mutant.function), twin=True))
+    if mutant.bindings and _START.match(mutant.function) and DIAGNOSES[mutant.name].family != "initial_state":
+        found.append(Hypothesis(f"{key}=start", "initial_state", COST, f"the start `{mutant.function}` is typed "
+                                "otherwise: the run starts from another state", twin=True))
     for parameter in mutant.unused:
         if (untested and parameter in mutant.defaulted) or parameter in unreached:
             found.append(Hypothesis(f"{key}=unused:{parameter}", "ignored_argument", COST,
@@ -3478,7 +3490,7 @@ def _unreached(mutant: Mutant, probe, positions) -> frozenset:
 
 
 #: what the expression of a slip is, for the grammar's equivalences (``grammar.EQUIVALENCES``)
-KINDS = {"skew": ("skew",), "cross": ("cross",), "turned_back": ("rotation",)}
+KINDS = {"skew": ("skew",), "cross": ("cross",), "skew_factors": ("skew",), "turned_back": ("rotation",)}
 
 
 #: the families of a term left out or added: where the term is the same on every input, the slip is an offset
@@ -3892,7 +3904,8 @@ def _opposite(kept: list[Mutant]) -> str | None:
 
 #: the slips that exchange two operands of one expression (two arguments of a call, two names, two parameters, two
 #: groups of arguments, two entries, two components, two factors): their effect may be a sign (``OPPOSITES``)
-OPERANDS_EXCHANGED = frozenset({"arguments", "names", "parameters", "blocks", "entries", "components", "factors"})
+OPERANDS_EXCHANGED = frozenset({"arguments", "names", "parameters", "blocks", "entries", "components", "factors",
+                                "skew_factors"})
 
 
 #: the slips that reorder two factors of a product: their effect may be a term that vanishes (``I @ skew(w) @ w``
@@ -3904,7 +3917,8 @@ TRANSPOSED = frozenset({"transpose", "turned_back"})
 #: ``{family a check tells from what the value shows: (the rivals' families, the slips whose effect it may be,
 #: whether a mutant whose value vanishes is one: the effect of a term that is not there)}``
 EFFECT_RIVALS = {"sign": (("order", "transpose"), OPERANDS_EXCHANGED | TRANSPOSED, False),
-                 "missing_term": (("order",), FACTORS_REORDERED, True)}
+                 "missing_term": (("order",), FACTORS_REORDERED, True),
+                 "initial_state": (("order",), OPERANDS_EXCHANGED, False)}
 
 
 def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypothesis]:
@@ -3912,8 +3926,8 @@ def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypoth
     ``evidences``, for a check that told ``family`` from what the value shows (``diagnosis.rival``): where the check
     named a sign, the exchanges of two operands (``OPERANDS_EXCHANGED``) and a matrix transposed (``TRANSPOSED``: a
     rotation turned the other way); where it named a term that is not there, two factors of a product reordered
-    (``FACTORS_REORDERED``: the term written, in an order in which it vanishes).  On
-    the input shown alone where the engine has no second one (a call of no arguments): a rival adds a name to the
+    (``FACTORS_REORDERED``: the term written, in an order in which it vanishes); where it named a wrong start, the
+    exchanges of two operands (a signature's start values in another order).  On the input shown alone where the engine has no second one (a call of no arguments): a rival adds a name to the
     check's, which the value proves already, and explains nothing by itself.  None in the kit."""
     opposite, only, vanishing = EFFECT_RIVALS.get(family, ((), frozenset(), False))
     first = evidences[0] if evidences else None
@@ -3928,7 +3942,16 @@ def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypoth
     except GraderFault:
         return []
     trace.note("opposite", families=list(opposite), kept=None if kept is None else sorted({m.name for m in kept}))
-    return [h for h in _hypotheses(kept or [], list(evidences)) if DIAGNOSES[h.name].family in opposite]
+    exchanged = [Hypothesis(f"mutant:factor_order:{m.detail}", "factor_order", COST, SKEW_EXCHANGED.format(
+        f=m.function)) for m in kept or [] if m.slip == "skew_factors"]
+    others = [m for m in kept or [] if m.slip != "skew_factors"]  # read as the exchange alone, not as its twins
+    return [h for h in _hypotheses(others, list(evidences)) + exchanged if DIAGNOSES[h.name].family in opposite]
+
+
+#: a product with a skew matrix taken from the other side, read as the exchange it is where a check told its sign
+#: (``opposite_slips``): the formula tier tells it a sign (a skew matrix negated, or transposed), as the value says
+SKEW_EXCHANGED = ("the two factors of a cross product in `{f}` are taken in the other order (``r x w`` for ``w x r``, "
+                  "``r @ skew(w)`` for ``skew(w) @ r``), which negates it")
 
 
 def _heard_in_given(package, root: Path, problem: int, evidences: list[Evidence], originals: dict, judged: bool,

@@ -18,7 +18,9 @@ typed a hundred or a thousand times itself; the near miss, a count at another va
 
 A run's start (``A_IC0``, ``ANGLES0``: ``mutants._START``) written whole as a plain value, the identity or zeros, is
 a wrong initial state, and its numbers typed otherwise that give the same within the tolerance (an angle a
-thousandth of itself) are not told beside it; the near misses, a start at another angle, are no such slip.  Problem
+thousandth of itself) are not told beside it; the near misses, a start at another angle, are no such slip.  A
+slip of a start's numbers (two of its entries exchanged) starts the run from another state as truly: a wrong initial
+state is told beside it.  Problem
 8's runs read their constants only, and the second input is the same call at another angular velocity
 (``probes._rebound``).
 
@@ -187,6 +189,18 @@ def test_a_start_typed_otherwise_is_no_wrong_initial_state(tmp_path):
                           "ANGLES0 = np.array([0.0, 0.0, np.pi / 3])", "problem_08.part", ["b"], P08_OMEGA,
                           ("angles",), "p08.part_b")
     assert "initial_state" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
+def test_two_entries_of_a_start_exchanged_are_an_exchange_and_a_wrong_initial_state(tmp_path):
+    """Problem 8's Cardan start with its yaw typed into the pitch's slot: two entries of a constant exchanged, and,
+    the constant being a start (``mutants._START``), a run that starts from another state as truly (``rivals``): both
+    told, "could be" either.  The near misses are the slips of constants that are no start, above (the gravity
+    typed a tenth of itself is that slip alone: ``assert_told``)."""
+    found = rebound_slips(tmp_path, "problem_08.py", "ANGLES0 = np.array([0.0, 0.0, np.pi / 2])",
+                          "ANGLES0 = np.array([0.0, np.pi / 2, 0.0])", "problem_08.part", ["b"], P08_OMEGA,
+                          ("angles",), "p08.part_b")
+    assert {h.name for h in found} == {"swapped", "initial_state"}, [(h.name, h.detail) for h in found]
+    assert any("the start `ANGLES0` is typed otherwise" in h.detail for h in found), [h.detail for h in found]
 
 
 def test_the_starts_by_the_course_notation():

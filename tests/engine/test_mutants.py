@@ -1982,6 +1982,45 @@ def test_a_sign_no_exchange_makes_has_no_rival(made_up):
     assert mutants.opposite_slips(scene("p98.difference"), evidences, "scale") == []
 
 
+def test_a_wrong_start_a_check_told_has_the_exchange_that_makes_it_as_a_rival(made_up):
+    """A check that tells a wrong start from what the value shows hears the exchanges of two operands whose effect
+    that start is (a signature's start values in another order): ``np.subtract(b, a)`` for ``np.subtract(a, b)``."""
+    evidences = made_up_evidences(made_up, "difference", lambda a, b: [b - a, a * b], [(1.0, 3.0)])
+    found = mutants.opposite_slips(scene("p98.difference"), evidences, "initial_state")
+    assert {h.name for h in found} == {"argument_order"}, [(h.name, h.detail) for h in found]
+    product = made_up_evidences(made_up, "difference", lambda a, b: [a - b, -a * b], [(1.0, 3.0)])
+    assert mutants.opposite_slips(scene("p98.difference"), product, "initial_state") == []
+
+
+def test_a_sign_a_check_told_of_a_product_with_a_skew_matrix_turned_round_has_the_exchange_as_a_rival(made_up):
+    """``w @ lever`` for ``lever @ w`` (``lever = skew(r)``) is the cross product of its operands exchanged, ``w x r``
+    for ``r x w``: where a check told that sign, the exchange is its rival, and not the transpose that the formula
+    tier tells beside the sign (a skew matrix negated is the matrix transposed, ``test_a_skew_matrix_transposed_...``).
+    The near miss, the product's sign with a term doubled, has none."""
+    inputs = [(V(0.5, -1.0, 2.0), V(0.1, 0.2, 0.3), V(1.0, 0.0, 0.5)),
+              (V(1.2, 0.3, -0.4), V(-0.5, 0.8, 0.2), V(0.3, 0.3, 0.1))]
+    evidences = made_up_evidences(made_up, "transport", lambda r, w, v: v - np.cross(w, r) + 0.5 * r, inputs)
+    found = mutants.opposite_slips(scene("p98.transport"), evidences, "sign")
+    assert {h.name for h in found} == {"factor_order"}, [(h.name, h.detail) for h in found]
+    assert any("cross product in `transport` are taken in the other order" in h.detail for h in found)
+    doubled = made_up_evidences(made_up, "transport", lambda r, w, v: v + 2 * np.cross(r, w) + 0.5 * r, inputs)
+    assert mutants.opposite_slips(scene("p98.transport"), doubled, "sign") == []
+
+
+def test_a_system_solved_with_its_matrix_transposed_is_a_transpose(made_up):
+    """``np.linalg.solve((A @ B).T, w)`` for ``np.linalg.solve(A @ B, w)``: the system's matrix transposed, as a
+    product's factor may be; where a check told the sign its value shows, the transpose is its rival.  The near
+    miss, the product's factors multiplied the other way round, is no transpose."""
+    inputs = [(SPD + np.triu(np.ones((3, 3))), np.eye(3) + np.tril(np.ones((3, 3))), V(0.3, -1.0, 0.5)),
+              (2.0 * SPD + np.triu(np.ones((3, 3)), 1), SPD + np.tril(np.ones((3, 3)), -1), V(-0.8, 0.2, 1.1))]
+    names, found = names_of(made_up, "step_rates", lambda A, B, w: np.linalg.solve((A @ B).T, w), inputs)
+    assert names == {"transpose"}, [(h.name, h.detail) for h in found]
+    evidences = made_up_evidences(made_up, "step_rates", lambda A, B, w: np.linalg.solve((A @ B).T, w), inputs)
+    assert {h.name for h in mutants.opposite_slips(scene("p98.step_rates"), evidences, "sign")} == {"transpose"}
+    names, found = names_of(made_up, "step_rates", lambda A, B, w: np.linalg.solve(B @ A, w), inputs)
+    assert "transpose" not in names, [(h.name, h.detail) for h in found]
+
+
 def test_a_term_a_check_told_missing_has_the_reorder_that_makes_it_vanish_as_a_rival(made_up):
     """A check that tells a term left out from what the value shows (it vanishes) hears the reorders of two
     factors of a product whose effect that is: ``B_I_B @ skew(w) @ w`` for ``skew(w) @ B_I_B @ w`` is zero, the term
