@@ -411,7 +411,11 @@ class Context:
         others = [exc for _, _, exc in sorted(failures, key=lambda f: (f[0] == 0, f[0]))
                   if exc is not shown and isinstance(exc, CheckFailure) and exc.evidence is not None
                   and property_of(exc) == first]
-        if failure.evidence is None or not others:
+        if not others and any(exc is not shown for _, _, exc in failures):  # another input failed at another
+            # place (a trace's other entry, another step): the engine is asked on the comparison shown, and draws
+            # its second input itself
+            return explained(self, failure, [failure.evidence])
+        if not others:
             return CheckFailure(failure.message, failure.hint, failure.diagnosis, failure.candidates,
                                 failure.evidence, explained=True)
         return explained(self, failure, [failure.evidence, others[0].evidence])

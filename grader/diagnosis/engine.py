@@ -1010,7 +1010,7 @@ def _result_evidences(evidence: Evidence) -> dict:
         return {}
     probe, args, got_root, expected_root = evidence.call
     decl = declaration(probe)
-    if decl is not None and decl.motion:
+    if decl is not None and decl.motion and not _stepped(decl):
         return {}
     found = {}
     for path, expected in _leaves(expected_root):
@@ -1026,15 +1026,17 @@ def _result_evidences(evidence: Evidence) -> dict:
 
 def _from_results(scene: Scene, evidences: list) -> Finding | None:
     """The cause of a failing property of values derived from a call's results (``Evidence.call``): each result
-    that differs from the reference's on both failing inputs is explained as a comparison of its own, and the causes
-    that every result explained names are named (one result's "could be X or Y" beside another's "X" is X), with the
-    hints of the results that name those alone."""
-    if len(evidences) < 2:
-        return None
-    first, second = _result_evidences(evidences[0]), _result_evidences(evidences[1])
+    that differs from the reference's on both failing inputs (on one, where the check has no second: on it and on
+    the engine's own second input) is explained as a comparison of its own, and the causes that every result
+    explained names are named (one result's "could be X or Y" beside another's "X" is X), with the hints of the
+    results that name those alone.  A run counted in steps is such a call too (``_stepped``: its results are the
+    states the student's own step gives)."""
+    first = _result_evidences(evidences[0])
+    second = _result_evidences(evidences[1]) if len(evidences) > 1 else None
     findings, left = [], False
-    for path in [path for path in first if path in second][:RESULT_LEAVES]:
-        finding = find(scene, [first[path], second[path]])
+    for path in [path for path in first if second is None or path in second][:RESULT_LEAVES]:
+        # on one failing input, each result on it and on the engine's own second input (``find`` draws it)
+        finding = find(scene, [first[path]] if second is None else [first[path], second[path]])
         if finding is not None and finding.names:
             findings.append((first[path].name, finding))
         left = left or (finding is not None and not finding.names and KIT_NOTE in finding.hint)
@@ -1093,7 +1095,7 @@ def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
 
 
 def judged_call(log, evidence: Evidence | None) -> Source | None:
-    """The student's probe call (not a run's) behind a value a check judged: the call of the failure's comparison
+    """The student's probe call (not a run's, but for one counted in steps) behind a value a check judged: the call of the failure's comparison
     (``Evidence.call``), else the call whose result holds the compared value, else the last probe call the check
     made of the student's code (the check judges what it asked last); None."""
     if evidence is not None and evidence.call is not None:
@@ -1116,8 +1118,9 @@ UPSTREAM_PROBE = "_upstream.call"
 
 def _judgeable(probe) -> bool:
     """A probe whose call the engine may compare with the reference's: one it knows by name (``probes``), not a
-    run's (whose comparison is the checks' own), nor the grader's own call of an earlier problem's function
-    (``UPSTREAM_PROBE``)."""
+    run's (whose comparison is the checks' own) but one counted in steps (``_stepped``: the student's own step
+    called again and again, whose states a formula's slip gives exactly), nor the grader's own call of an earlier
+    problem's function (``UPSTREAM_PROBE``)."""
     if not isinstance(probe, str) or probe == UPSTREAM_PROBE:
         return False
     decl = declaration(probe)
@@ -1127,7 +1130,7 @@ def _judgeable(probe) -> bool:
         except ProbeLookupError:
             return False
         return True
-    return not decl.motion
+    return not decl.motion or _stepped(decl)
 
 
 def _same_shape(evidence: Evidence) -> bool:

@@ -128,6 +128,15 @@ def test_a_failure_that_names_a_cause_is_not_asked(monkeypatch):
     assert judged_call([("student", "stub_judged.run", (1.0,), np.zeros(3))], None) is None
 
 
+def test_a_run_counted_in_steps_is_a_call_the_engine_may_judge(monkeypatch):
+    """A run counted in steps (``"time": "step"``: the student's own step called again and again, no solver between
+    it and the states) is judged as a call is, its results the states it gives (a screw axis traced along the run,
+    judged by a property of the student's own states); a run of a solver is not (the near miss above)."""
+    monkeypatch.setitem(engine.DECLARATIONS, "stub_judged.steps", Declaration(motion={"time": "step"}))
+    judged = judged_call([("student", "stub_judged.steps", (1.0,), np.zeros(3))], None)
+    assert judged is not None and judged.probe == "stub_judged.steps"
+
+
 def test_the_graders_own_call_of_an_earlier_problems_function_is_never_the_call_judged(monkeypatch):
     """A check that judges its value on what the reference's code makes of the student's earlier functions calls
     them last (``_upstream.call``): the call judged is the student's answer to the check, before them."""

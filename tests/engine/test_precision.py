@@ -103,6 +103,43 @@ def test_a_runs_state_converted_to_single_precision_is_named_float32(tmp_path):
     assert any("`pendulum_ode` converts an argument to single precision" in h.detail for h in found)
 
 
+def test_an_attribute_of_its_object_converted_to_single_precision_is_named_float32(tmp_path):
+    """Problem 14's screw axis computed from the body's velocity converted to float32 (``self.B_v_B.astype(...)``), on
+    a run of steps from a drawn start: the reads of an attribute converted, the object's "argument".  The near miss:
+    the screw axis off by a relative 3e-7, which no conversion gives."""
+    from checks.problem_13 import SCREW
+    from checks._rigid import sheet_state
+
+    rng = np.random.default_rng(3)
+    start = sheet_state({key: [float(x) for x in rng.uniform(-1.5, 1.5, 3)]
+                         for key in ("B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B")})
+    old = "w, v = self.B_omega_B, self.B_v_B"
+    for new, names in (("w, v = self.B_omega_B, self.B_v_B.astype(np.float32)", {"float32"}),
+                       ("w, v = self.B_omega_B * (1.0 + 3e-7), self.B_v_B", set())):
+        student = planted_package(tmp_path / str(len(names)), "rigid_body.py", old, new)
+        try:
+            first = evidence("problem_14.screw_run", (start, 0.01, 20), ("screw",), student, tol=SCREW)
+            first.alone = True
+            found = mutants.mutant_slips(scene("p14.run_screw"), failing([first]))
+        finally:
+            drop_private(student)
+        assert named(found) == names, [(h.name, h.detail) for h in found]
+    assert any("`screw_axis` converts an argument to single precision" in h.detail for h in found) or not names
+
+
+def test_a_slip_of_precision_needs_no_difference_where_the_student_has_none():
+    """A slip of precision reproduces the student's value closely (``mutants._closely``: within a tenth of the
+    difference); on an input where the student's value is the expected one within the tolerance (another state of a
+    run, its last digits rounded otherwise) there is none to reproduce: a mutant within the tolerance of it is close
+    enough.  Where there is a difference, a value a tenth of it away is not."""
+    expected = np.array([1.0, -2.0, 0.5])
+    same = Evidence(expected + 1.4e-17, expected, TIGHT, "value")
+    assert mutants._closely(expected + 2.8e-17, same)
+    shown = Evidence(expected + 1e-6, expected, TIGHT, "value")
+    assert mutants._closely(expected + 1e-6 + 1e-8, shown)
+    assert not mutants._closely(expected + 1e-6 + 2e-7, shown)
+
+
 def test_a_slip_of_precision_is_not_told_outside_the_band():
     """A student's value off the expected one by more than ``PRECISION_BAND`` is no loss of precision, nor is one
     that equals it."""
