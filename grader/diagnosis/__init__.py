@@ -104,24 +104,26 @@ Before any cause of a run, the student's right-hand side is compared with the re
 probe declares it): where they differ the mistake is in the model, its cause is sought on the right-hand sides,
 and no cause that blames the integration is told, by the engine or by a check (``doubt``).
 
-A check that judges the student's value by a property and names only its symptom (``SYMPTOMS``: a matrix that is
-not orthonormal, a reflection, a body in the wrong orientation) asks the engine too (``judge``): the student's
-probe call behind the value is compared with the reference's call on the same arguments, each result that differs
-is explained as a failing comparison (on the input shown and the engine's own second input), and a cause found is
-told beside the symptom, whose message stays.  A check that names an effect its value shows (``EFFECTS``: some
-entries with the wrong sign, found by comparing the value with the expected one, whether its catalogue names the
-sign of a term or a sign alone) asks the formula tier for the exchanges of two operands whose effect that sign is
-(``rival``, ``mutants.opposite_slips``: a call's two points exchanged negate the lever arm between them; ``np.cross(r,
-w)`` for ``np.cross(w, r)``) and for a matrix transposed (a system solved with its matrix transposed negates a
-multiplier); for a check that names a term that is not there, the reorders of two factors of a product that make it
-vanish (``I (w x w)`` for ``w x (I w)``: the gyroscopic term written, in an order in which it is zero); for a check
-that names a wrong start, the exchanges of two operands that the start is made of (a signature's start values in
-another order); on the input shown alone where there is no second one: a rival found is told beside the check's
-name, "could be" either; the kit, which holds no reference code, tells the check's name alone.  A randomized comparison whose shown input has no comparison (the
-student's code raised there) is explained on its failing inputs that have one, and the cause told beside it.
-A value the check derives from the student's reply itself (the centre of gravity of their points, an anchor's first
-coordinates), which no call of either side holds, is explained alike, by the student's last call of the check; the
-kit's key may not hold the reference's call: there the kit leaves the cause to the graded submission.
+A check that judges the student's value by a property and names only its symptom (``SYMPTOMS``: a matrix that is not
+orthonormal, a reflection, a body in the wrong orientation) asks the engine too (``judge``): the student's probe call
+behind the value is compared with the reference's call on the same arguments, each result that differs is explained as a
+failing comparison (on the input shown and the engine's own second input), and a cause found is told beside the symptom,
+whose message stays.  A check that names an effect its value shows (``EFFECTS``: some entries with the wrong sign, found
+by comparing the value with the expected one, whether its catalogue names the sign of a term or a sign alone) asks the
+formula tier for the exchanges of two operands whose effect that sign is (``rival``, ``mutants.opposite_slips``: a
+call's two points exchanged negate the lever arm between them; ``np.cross(r, w)`` for ``np.cross(w, r)``) and for a
+matrix transposed (a system solved with its matrix transposed negates a multiplier); for a check that names a term that
+is not there, the reorders of two factors of a product that make it vanish (``I (w x w)`` for ``w x (I w)``: the
+gyroscopic term written, in an order in which it is zero); for a check that names a wrong start, the exchanges of two
+operands that the start is made of (a signature's start values in another order); on the input shown alone where there
+is no second one: a rival found is told beside the check's name, "could be" either; the kit, which holds no reference
+code, tells the check's name alone.  A randomized comparison whose shown input has no comparison (the student's code
+raised there) is explained on its failing inputs that have one, and the cause told beside it; one whose other failing
+inputs fail at another place (another entry of a trace, another step) is explained on the input shown alone, and the
+engine draws its second input itself.  A value the check derives from the student's reply itself (the centre of gravity
+of their points, an anchor's first coordinates), which no call of either side holds, is explained alike, by the
+student's last call of the check; the kit's key may not hold the reference's call: there the kit leaves the cause to the
+graded submission.
 
 What a probe's arguments and result are is declared beside ``@probe`` (``probes.probe(args=..., terms=..., rotation=...,
 motion=..., constants=..., draw=...)``); the reference's values come through the oracle (the grading context), never

@@ -1095,9 +1095,9 @@ def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
 
 
 def judged_call(log, evidence: Evidence | None) -> Source | None:
-    """The student's probe call (not a run's, but for one counted in steps) behind a value a check judged: the call of the failure's comparison
-    (``Evidence.call``), else the call whose result holds the compared value, else the last probe call the check
-    made of the student's code (the check judges what it asked last); None."""
+    """The student's probe call (not a run's, but for one counted in steps) behind a value a check judged: the call of
+    the failure's comparison (``Evidence.call``), else the call whose result holds the compared value, else the last
+    probe call the check made of the student's code (the check judges what it asked last); None."""
     if evidence is not None and evidence.call is not None:
         probe, args, got_root, _ = evidence.call
         return Source(probe, tuple(args), (), got_root) if _judgeable(probe) else None

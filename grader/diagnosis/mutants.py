@@ -3960,13 +3960,14 @@ EFFECT_RIVALS = {"sign": (("order", "transpose"), OPERANDS_EXCHANGED | TRANSPOSE
 
 
 def opposite_slips(scene, evidences: list[Evidence], family: str) -> list[Hypothesis]:
-    """The slips whose effect ``family`` may be (``EFFECT_RIVALS``) that reproduce the student's value on
-    ``evidences``, for a check that told ``family`` from what the value shows (``diagnosis.rival``): where the check
-    named a sign, the exchanges of two operands (``OPERANDS_EXCHANGED``) and a matrix transposed (``TRANSPOSED``: a
-    rotation turned the other way); where it named a term that is not there, two factors of a product reordered
-    (``FACTORS_REORDERED``: the term written, in an order in which it vanishes); where it named a wrong start, the
-    exchanges of two operands (a signature's start values in another order).  On the input shown alone where the engine has no second one (a call of no arguments): a rival adds a name to the
-    check's, which the value proves already, and explains nothing by itself.  None in the kit."""
+    """The slips whose effect ``family`` may be (``EFFECT_RIVALS``) that reproduce the student's value on ``evidences``,
+    for a check that told ``family`` from what the value shows (``diagnosis.rival``): where the check named a sign, the
+    exchanges of two operands (``OPERANDS_EXCHANGED``) and a matrix transposed (``TRANSPOSED``: a rotation turned the
+    other way); where it named a term that is not there, two factors of a product reordered (``FACTORS_REORDERED``: the
+    term written, in an order in which it vanishes); where it named a wrong start, the exchanges of two operands (a
+    signature's start values in another order).  On the input shown alone where the engine has no second one (a call of
+    no arguments): a rival adds a name to the check's, which the value proves already, and explains nothing by itself.
+    None in the kit."""
     opposite, only, vanishing = EFFECT_RIVALS.get(family, ((), frozenset(), False))
     first = evidences[0] if evidences else None
     if getattr(scene.ctx.oracle, "mode", "") != "live" or not opposite or first is None \
