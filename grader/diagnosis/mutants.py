@@ -447,16 +447,32 @@ def _definitions(tree: ast.Module):
 
 
 def _walk(node, guarded=False, indexing=False):
-    """``(node, guarded, indexing)`` in pre-order; ``guarded``: inside a loop's bounds or a condition, never
-    mutated (``ITERABLE``: inside the iterable of a loop, where only an exchange is made: the loop runs as often);
-    ``indexing``: inside an index (``q[2 * k - 1]``), where every slip is one of the index."""
+    """``(node, guarded, indexing)`` in pre-order; ``guarded``: inside a loop's bounds, a condition or a creator's
+    counts (``np.zeros(n)``; but the values it fills in or spans: ``_filled``), never mutated (``ITERABLE``: inside the
+    iterable of a loop, where only an exchange is made: the loop runs as often); ``indexing``: inside an index
+    (``q[2 * k - 1]``), where every slip is one of the index."""
     yield node, guarded, indexing
     for field, value in ast.iter_fields(node):
         guard = guarded if guarded is True else (_guards(node, field) or guarded)
         index = indexing or (isinstance(node, ast.Subscript) and field == "slice")
-        for item in value if isinstance(value, list) else [value]:
+        for position, item in enumerate(value if isinstance(value, list) else [value]):
             if isinstance(item, ast.AST):
-                yield from _walk(item, guard, index)
+                # a value among a creator's counts (``np.full(6, m / 6)``'s fill, ``np.linspace``'s ends) is mutated
+                value_guard = guarded if guard is True and _filled(node, field, position, item) else guard
+                yield from _walk(item, value_guard, index)
+
+
+#: ``{creator: (the positions of its arguments that are values, not counts or shapes; their keywords)}``
+_FILLS = {"full": ((1,), ("fill_value",)), "linspace": ((0, 1), ("start", "stop"))}
+
+
+def _filled(node, field: str, position: int, item) -> bool:
+    """Whether ``item`` (at ``position`` of ``node``'s ``field``) is a value that a creator of arrays fills in or
+    spans (``_FILLS``), which a slip may change as any value, where its counts are left as they are."""
+    if not isinstance(node, ast.Call) or _callee(node) not in _FILLS:
+        return False
+    positions, keywords = _FILLS[_callee(node)]
+    return (field == "args" and position in positions) or (field == "keywords" and item.arg in keywords)
 
 
 def _guards(node, field: str):
@@ -765,7 +781,16 @@ def _typed_slips(node, parent, constants: frozenset):
     """A constant typed short, to ``TYPED_DECIMALS`` decimals: an expression of numbers (``np.pi / 6`` as 0.52),
     the largest one there (not a part of another), or a read of a module's constant (``GAMMA``), in its place
     the value rounded (a slip of precision: the value it gives is held to the band of precision): an expression,
-    a number, as ``round(float(expression), decimals)``; a constant, a number or an array, with numpy's round."""
+    a number, as ``round(float(expression), decimals)``; a constant, a number or an array, with numpy's round; and a
+    division by a number written as a product with its reciprocal typed short (``m / 12`` as ``0.0833 * m``)."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div) and _number(node.right) and node.right.value \
+            and not _constant_expression(node.left):  # ``m / 12`` typed ``0.0833 * m``: the reciprocal typed short
+        reciprocal = 1.0 / node.right.value
+        for decimals in TYPED_DECIMALS:
+            typed = round(reciprocal, decimals)
+            if typed != 0.0 and typed != reciprocal:
+                yield "typed", lambda n, typed=typed: ast.BinOp(ast.Constant(typed), ast.Mult(), n.left)
+        return
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and node.id in constants:
         rounded = _np_round
     elif _constant_expression(node) and not _pi(node) and not _constant_expression(parent):
@@ -2504,14 +2529,14 @@ def _mutated(function: _Function, lines: tuple):
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
             slips = () if (guarded and guarded != ITERABLE) or indexing else itertools.chain(
-                _name_slips(node, parent, angles, defaults, sums, starts, built, reads), _written_index_slips(node))
+                _name_slips(node, parent, angles, defaults, sums, starts, built, reads), _written_index_slips(node),
+                _typed_slips(node, parent, function.constants))  # constants typed short: late slips too
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
             slips = itertools.chain(_slips(node, parent), _entry_slips(node, parent),
                                     _read_slips(node, names, function.attributes),
                                     _trig_read_slips(node, parent, others),
-                                    _typed_slips(node, parent, function.constants),
                                     _keyword_slips(node, function.keywords), _first_slips(node, parent),
                                     _position_slips(node),
                                     _frame_slips(node, names, function.attributes))

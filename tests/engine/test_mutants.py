@@ -2311,3 +2311,19 @@ def test_a_list_of_angles_passed_in_reverse_order_is_arguments_in_the_wrong_orde
     inputs = [(V(0.4, -1.1), V(0.3, 0.5, -0.2)), (V(-0.8, 0.6), V(1.0, -0.4, 0.7))]
     assert_told_not_the_near_miss(made_up, "pointed", reversed_, twice, inputs, {"argument_order"},
                                   "is given a list of angles in reverse order")
+
+
+def test_the_values_a_creator_of_arrays_fills_in_are_mutated_and_its_counts_are_not():
+    """A creator's counts and shapes are never mutated (``np.zeros(n)``, ``np.full(7, ...)``'s 7, ``np.linspace``'s
+    number of points: a slip there changes a count, not a value), but the values it fills in or spans are, as any
+    value (``np.full(6, m / 6)``'s fill, ``np.linspace(0.0, 2 * m, n)``'s ends)."""
+    import ast
+
+    tree = ast.parse("def f(m, n):\n    a = np.full(7, m / 6)\n    b = np.linspace(0.0, 2 * m, n)\n"
+                     "    c = np.full(shape=(n, 2), fill_value=m / 3)\n    return a, b, c, np.zeros(n + 1)")
+    guards = {ast.unparse(node): guarded for node, guarded, _ in mutants._walk(tree)
+              if isinstance(node, ast.BinOp)}
+    assert guards == {"m / 6": False, "2 * m": False, "m / 3": False, "n + 1": True}, guards
+    counts = {ast.unparse(node): guarded for node, guarded, _ in mutants._walk(tree)
+              if isinstance(node, (ast.Constant, ast.Tuple)) and ast.unparse(node) in ("7", "(n, 2)")}
+    assert counts == {"7": True, "(n, 2)": True}, counts

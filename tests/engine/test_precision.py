@@ -175,6 +175,13 @@ def weight(m):
     # BEGIN SOLUTION problem 97
     return np.array([0.0, -m * 9.81, 0.0])
     # END SOLUTION
+
+
+def shares(m):
+    """The mass of each of six equal points that make up ``m``."""
+    # BEGIN SOLUTION problem 97
+    return m / 6 * np.ones(6)
+    # END SOLUTION
 '''
 
 
@@ -210,6 +217,16 @@ def test_g_typed_short_is_named_rounded_on_one_input(made_up):
     found = mutants.mutant_slips(scene("p97.weight"), one_input(made_up, "weight", lambda m: [0.0, -m * 9.8, 0.0],
                                                                 (2.5,)))
     assert named(found) == {"rounded"}
+
+
+def test_a_division_by_a_number_typed_as_its_reciprocal_short_is_named_rounded(made_up):
+    """``0.167 * m * ...`` for ``m / 6 * ...``: the reciprocal of the number typed to three decimals, a constant typed
+    short; the near miss, ``0.16 * m``, leaves the band of precision and is named nothing."""
+    found = mutants.mutant_slips(scene("p97.shares"), one_input(made_up, "shares", lambda m: 0.167 * m * np.ones(6),
+                                                                (2.5,)))
+    assert named(found) == {"rounded"}, [(h.name, h.detail) for h in found]
+    (shown,) = shown_alone(made_up, "shares", lambda m: 0.16 * m * np.ones(6), (2.5,))
+    assert mutants.mutant_slips(scene("p97.shares"), [shown]) == []
 
 
 def test_pi_typed_far_too_short_is_no_slip_of_precision(made_up):
