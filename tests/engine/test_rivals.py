@@ -7,7 +7,8 @@ name more particular than another is told only where the evidence proves it.
   is; where the test of an ignored argument could change none of the call's arguments, a parameter with a
   default that the slip leaves unused is an argument ignored as well; two entries exchanged that are one
   expression of a quantity and of its rate read each where the other belongs (a state row as well); two names
-  unpacked from a run's state exchanged read the state from each other's rows.
+  unpacked from a run's state exchanged read the state from each other's rows; an object that a run counted in steps
+  starts from, built ignoring a value it is given, starts the run from another state.
 * The test of an ignored argument (``engine._ignored``): an angle or a rotation ignored, where the student's value
   is the reference's with it turning nothing, is a rotation left out as well (a frame slip).
 
@@ -381,3 +382,35 @@ def test_what_turns_nothing():
     assert unturned("angle", 0.0) is None  # already turning nothing: no rival to try
     assert unturned("scalar", 0.7) is None and unturned("vector", V(1.0, 0.0, 0.0)) is None
     assert unturned("", np.diag([1.0, 1.0, -1.0])) is None  # a reflection is no rotation
+
+
+def test_an_object_a_run_steps_built_ignoring_a_value_it_is_given_starts_from_another_state(tmp_path):
+    """Problem 12's body built with its angular velocity ignored (``self.B_omega_B = np.zeros(3)``), stepped from a
+    drawn start: its constructor takes the default whatever it is given, an argument ignored, and the run of steps
+    starts from another state than the given one as truly (``mutants._hypotheses``): both told.  The near miss is
+    the same slip on a call that is no run (a point's velocity of a body built so): no wrong start is told there
+    (the term the zero angular velocity takes away is)."""
+    from checks._rigid import sheet_state
+    from grader.private import drop_private
+
+    from .test_mutants import evidence, planted_package, scene
+
+    state = sheet_state({"B_v_B": [0.3, -0.2, 0.5], "B_omega_B": [0.4, 1.1, -0.7], "B_a_B": [0.1, 0.0, 0.2],
+                         "B_omegaDot_B": [0.0, 0.3, 0.1]})
+    student = planted_package(tmp_path, "rigid_body.py", "self.B_omega_B = _vector_or_zeros(B_omega_B)",
+                              "self.B_omega_B = np.zeros(3)")
+    try:
+        run = evidence("problem_12.integrate", (state, 0.05, 4), ("B_r_IB",), student)
+        run.alone = True
+        found = mutants.mutant_slips(scene("p12.random_steps"), [run])
+        point = evidence("problem_12.point", (state, "velocity_of_point", np.array([0.2, 0.5, -0.1])), (), student)
+        point.alone = True
+        alone = mutants.mutant_slips(scene("p12.velocity_of_point"), [point])
+    finally:
+        drop_private(student)
+    from checks._diagnoses import DIAGNOSES
+
+    assert {DIAGNOSES[h.name].family for h in found} == {"ignored_argument", "initial_state"}, \
+        [(h.name, h.detail) for h in found]
+    assert alone and "initial_state" not in {DIAGNOSES[h.name].family for h in alone}, \
+        [(h.name, h.detail) for h in alone]
