@@ -86,53 +86,56 @@ for ``radius * cb`` where ``radius = l2 + l3 * np.sin(phi)``: a term left out th
 from another one it stores (``self.B_a_B = _vector_or_zeros(B_omegaDot_B)``, a line copied from its neighbour) and a
 list of names with one entry that is read nowhere else written as its neighbour (``(m1, m1)`` for ``(m1, m2)``, in a
 loop's iterable too): a value left unused, an argument ignored; one read of an argument where another that the same line
-reads in its arithmetic belongs (``length**2 + width**2`` for ``length**2 + height**2``: the wrong argument); and an
-entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among the slips of a place
-are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or starts one late (``for
-body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps over a range one step longer
-(``range(n + 1)``: one step too many), a keyword argument left out of a call of a function or a class of the reference
-whose parameter of that name has a default (the callee then uses the default: a term left out, a joint built without its
-``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset), every inverse and
-solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the identity matrix
-written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added, told as an
-offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r) * np.eye(3)``: the
-identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one statement where the
-function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside ``self.B_I_B``: a wrong
-frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``); last of all, after the
-reads of names, every read of one of a function's arguments multiplied by the factor of a conversion of units into the
-ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in rad/s, ``phi * np.pi / 180``
-of an angle already in radians: a scale).  The reads of names and the indices written come after every other slip of
-every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the older slips first), and the
-slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single, ``np.asarray(q,
-dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer, ``dtype=int``, it cuts
-every value to a whole number, as do an array created of integers and filled with floats, ``np.zeros(n, dtype=int)``, a
-number converted with ``int`` where ``float`` belongs, and a division by a whole number written ``//``: far outside the
-band, not one of these); an array given no dtype created in single precision; an argument converted to float32 at a
-function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an expression of numbers or a read of a
-module's constant rounded to two, three or four decimals (the sheet prints four), ``np.pi / 6`` as 0.52, ``np.sqrt(1.0 /
-3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of names, after the other slips).  A slip of precision is
-told only where the student's value is in the band such slips make (``PRECISION_BAND``; on the other inputs and the
-call's other values, in that band or the expected value itself), differs from the expected one beyond the tolerance and
-is reproduced closely (``PRECISION_SHARE`` of the difference left at most), and none is tried where the value shown is
-beyond the band; on a comparison of one input (no second one to draw) the slips of precision alone are tried there,
-where the value is in the band.  An edit that is as truly a slip of another family is told with both names, as a twin
-(``rivals``): a product with a quantity where the division by it belongs (or the reverse) uses the quantity as its
-reciprocal; a quantity and its rate exchanged read each where the other belongs (a state row); a parameter with a
-default that the edit leaves unused is an argument ignored, where the engine could test none of the call's arguments
-itself, and so is an argument of the call that the engine's test had no budget to change. A slip is one kind of mistake
-even where it takes more than one edit (sin and cos exchanged in a term); an exchange of reads of a run's state, or a
-read of its other half, is a state read from the wrong rows; a skew matrix transposed is its negative, told as a sign or
-a transpose, and a cross product the other way round as a sign or the factors' order (``grammar.EQUIVALENCES``); inside
-a loop's iterable only the slips that keep its count are made (``_KEEP_COUNT``: exchanges, a dtype, a name written as
-its neighbour, a quantity read for its rate).  A mutant is kept when its value reproduces the student's within the
-comparison's tolerance on the input shown *and* on the second one (and on a third where the engine can draw one), and
-differs from the expected value (an equivalent mutant says nothing).  Where the probe computes more than the compared
-value and declares the cheaper call that holds it (``part``: ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant
-is evaluated on that call first and on the whole probe only where it reproduces the student's value there: the mutants
-kept are those the whole probe keeps, at the cost of the part for the others. Each call gets its own copy of the input's
-arguments (a mutant may change them in place), unpickled from one kept for the input.  A slip inside an index is one of
-the index.  A cause is named only when the mutants kept are of one family of the vocabulary, or of two; the hint says
-what kind of slip and in which of the student's functions, never the reference's code.
+reads in its arithmetic belongs (``length**2 + width**2`` for ``length**2 + height**2``: the wrong argument); one read
+of a coordinate where another unpacked with it belongs (``q2`` for ``q1`` of ``q1, q2 = q``: read from another's row); a
+number a product or a quotient takes typed as another that a formula of the module takes (``m / 20`` for ``m / 12``: a
+factor off); and an entry written into a neighbouring index (``a[0] = ...`` for ``a[1] = ...``: a wrong index).  Among
+the slips of a place are also a loop (or any loop of a comprehension) over one item fewer, that stops one short or
+starts one late (``for body in bodies[:-1]``, ``range(1, n)``: a term of its sum left out), a loop of steps over a range
+one step longer (``range(n + 1)``: one step too many), a keyword argument left out of a call of a function or a class of
+the reference whose parameter of that name has a default (the callee then uses the default: a term left out, a joint
+built without its ``A_PDp``; a point's position by the notation left out, ``P_r_PDp``, moves the point: an offset),
+every inverse and solve of one statement left out together (``J M J^T`` for ``(J M^-1 J^T)^-1``: no inverse), and the
+identity matrix written as the number 1 (``1.0 + W`` for ``np.eye(3) + W``: numpy adds it to every entry, a term added,
+told as an offset as well where it is the same on every input) or left out of a product (``r @ r`` for ``(r @ r) *
+np.eye(3)``: the identity left out, a term of its own), and a body's matrix turned into inertial coordinates in one
+statement where the function has the rotation at hand (``A_IB @ B_I_B @ A_IB.T`` for ``B_I_B``, ``self.A_IB`` beside
+``self.B_I_B``: a wrong frame), and so one read of a vector in the body's coordinates (``A_IB @ B_v_B`` for ``B_v_B``);
+last of all, after the reads of names, every read of one of a function's arguments multiplied by the factor of a
+conversion of units into the ones the function computes in (``CONVERSIONS``: ``omega * np.pi / 30`` of a rate already in
+rad/s, ``phi * np.pi / 180`` of an angle already in radians: a scale).  The reads of names and the indices written come
+after every other slip of every function, as many as ``MAX_MUTANTS`` leaves room for, so that the budget reaches the
+older slips first), and the slips of precision (``PRECISION_SLIPS``: a dtype of double precision given as single,
+``np.asarray(q, dtype=np.float32)``, also inside a loop's bounds, where it changes no count (given as an integer,
+``dtype=int``, it cuts every value to a whole number, as do an array created of integers and filled with floats,
+``np.zeros(n, dtype=int)``, a number converted with ``int`` where ``float`` belongs, and a division by a whole number
+written ``//``: far outside the band, not one of these); an array given no dtype created in single precision; an
+argument converted to float32 at a function's start; a constant typed short, pi as 3.14 or 3.1416, 9.81 as 9.8, and an
+expression of numbers or a read of a module's constant rounded to two, three or four decimals (the sheet prints four),
+``np.pi / 6`` as 0.52, ``np.sqrt(1.0 / 3.0)`` as 0.577, ``GAMMA`` as 0.52: these come with the reads of names, after the
+other slips).  A slip of precision is told only where the student's value is in the band such slips make
+(``PRECISION_BAND``; on the other inputs and the call's other values, in that band or the expected value itself),
+differs from the expected one beyond the tolerance and is reproduced closely (``PRECISION_SHARE`` of the difference left
+at most), and none is tried where the value shown is beyond the band; on a comparison of one input (no second one to
+draw) the slips of precision alone are tried there, where the value is in the band.  An edit that is as truly a slip of
+another family is told with both names, as a twin (``rivals``): a product with a quantity where the division by it
+belongs (or the reverse) uses the quantity as its reciprocal; a quantity and its rate exchanged read each where the
+other belongs (a state row); a parameter with a default that the edit leaves unused is an argument ignored, where the
+engine could test none of the call's arguments itself, and so is an argument of the call that the engine's test had no
+budget to change. A slip is one kind of mistake even where it takes more than one edit (sin and cos exchanged in a
+term); an exchange of reads of a run's state, or a read of its other half, is a state read from the wrong rows; a skew
+matrix transposed is its negative, told as a sign or a transpose, and a cross product the other way round as a sign or
+the factors' order (``grammar.EQUIVALENCES``); inside a loop's iterable only the slips that keep its count are made
+(``_KEEP_COUNT``: exchanges, a dtype, a name written as its neighbour, a quantity read for its rate).  A mutant is kept
+when its value reproduces the student's within the comparison's tolerance on the input shown *and* on the second one
+(and on a third where the engine can draw one), and differs from the expected value (an equivalent mutant says nothing).
+Where the probe computes more than the compared value and declares the cheaper call that holds it (``part``:
+``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only
+where it reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part
+for the others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from
+one kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of
+one family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never
+the reference's code.
 
 The reference runs in the grader's process here, so the tier is bounded: loop bounds and conditions are never
 mutated, the mutants of one explanation are at most ``MAX_MUTANTS`` and their measuring (the reference's runs on
@@ -324,6 +327,7 @@ class _Function:
     sympy: frozenset = frozenset()  # the names its module's top level binds to sympy (``sp``) or its simplifiers
     given: bool = False  # a function of a problem's own module that holds no region: the template gives it whole
     keywords: frozenset = frozenset()  # ``(callee, keyword)`` of the reference's parameters that have a default
+    numbers: frozenset = frozenset()  # the numbers its module's formulas multiply or divide by (``12`` of ``m / 12``)
 
 
 @lru_cache(maxsize=4)
@@ -342,13 +346,13 @@ def _functions(root: str) -> tuple[_Function, ...]:
     keywords = _keyword_defaults([tree for _, _, tree in modules])
     found = []
     for path, regions, tree in modules:
-        constants, sympy = _constants(tree), _sympy_names(tree.body)
+        constants, sympy, numbers = _constants(tree), _sympy_names(tree.body), _factor_numbers(tree)
         own = _OWN_MODULE.fullmatch(path.stem)
         for node, names in _definitions(tree):
             inside = tuple(r for r in regions if node.lineno <= r[1] <= node.end_lineno)
             if inside:
                 found.append(_Function(path.stem, names, node, inside, attributes, constants, angled, sympy,
-                                       keywords=keywords))
+                                       keywords=keywords, numbers=numbers))
             else:  # given whole: by a problem's own module, or by the library (any problem's, ``LIBRARY``)
                 whole = ((int(own.group(1)) if own else LIBRARY, node.lineno, node.end_lineno + 1),)
                 found.append(_Function(path.stem, names, node, whole, attributes, constants, angled, sympy,
@@ -358,6 +362,18 @@ def _functions(root: str) -> tuple[_Function, ...]:
 
 #: the problem of the regions of the functions the library gives whole (a constructor, a helper): each problem's
 LIBRARY = 0
+
+
+def _factor_numbers(tree: ast.Module) -> frozenset:
+    """The numbers a module's formulas multiply or divide by (``12`` of ``m / 12``, ``20.0`` of ``20.0 / m``), but 0
+    and 1: one formula's number typed into another (the cuboid's twelfth for the ellipsoid's twentieth)."""
+    return frozenset(child.value for node in ast.walk(tree) if isinstance(node, ast.BinOp)
+                     and isinstance(node.op, (ast.Mult, ast.Div)) for child in (node.left, node.right)
+                     if _factor_number(child))
+
+
+def _factor_number(node) -> bool:
+    return isinstance(node, ast.Constant) and type(node.value) in (int, float) and abs(node.value) not in (0, 1)
 
 
 def _constants(tree: ast.Module) -> frozenset:
@@ -630,6 +646,10 @@ SLIPS = {
                                  "``radius = l2 + l3 * sin(phi)``): the other terms are left out there"),
     "term_doubled": ("factor_two", "`{f}` takes one term of a sum twice (as the Coriolis term of a moving point "
                                    "is, ``2 * omega x v``)"),
+    "sibling_number": ("wrong_factor", "`{f}` takes a number of another formula of its module (the cuboid's 12 "
+                                       "where the ellipsoid's 20 belongs)"),
+    "coordinate": ("state_row", "`{f}` reads one coordinate where another unpacked with it belongs (``q1`` for ``q2`` "
+                                "of ``q1, q2 = q``): a value read from another's row"),
     "parameter_read": ("wrong_parameter", "`{f}` reads one of its arguments where another one that the same line "
                                           "reads belongs (the width for the height)"),
     "stored_from": ("value_unused", "`{f}` stores one of its arguments from another (a line copied from its "
@@ -2360,6 +2380,29 @@ def _sibling_reads(function: ast.FunctionDef) -> dict:
     return found
 
 
+def _unpacked_together(function: ast.FunctionDef) -> dict:
+    """``{name: the others}`` of the names the function unpacks together from one vector (``q1, q2 = q``, ``x, h =
+    y[:2]``, ``np.asarray(q, dtype=float)``): its coordinates, each of which a read of the wrong one would take (``q1``
+    for ``q2``).  A tuple of values bound at once (``a, b = f(x), g(y)``) or the results of another call (sympy's
+    ``symbols()``) unpack no vector."""
+    found: dict = {}
+    for node in ast.walk(function):
+        for target in node.targets if isinstance(node, ast.Assign) and _vector_read(node.value) else ():
+            if isinstance(target, ast.Tuple) and 2 <= len(target.elts) <= 6 \
+                    and all(isinstance(e, ast.Name) for e in target.elts):
+                names = [e.id for e in target.elts if e.id != "_"]
+                for name in names:
+                    found.setdefault(name, set()).update(other for other in names if other != name)
+    return {name: tuple(sorted(others)) for name, others in found.items() if others}
+
+
+def _vector_read(value) -> bool:
+    """A vector read as it is: a name, an index or a slice of one, or one converted (``np.asarray(q, dtype=float)``)."""
+    if isinstance(value, ast.Call) and _callee(value) in ("asarray", "array", "ravel") and len(value.args) == 1:
+        value = value.args[0]
+    return isinstance(value, (ast.Name, ast.Subscript, ast.Attribute))
+
+
 def _unread_once(function: ast.FunctionDef) -> frozenset:
     """The names the function reads once only: a list of names with one of them written as its neighbour leaves it
     unused (``(m1, m1)`` for ``(m1, m2)``)."""
@@ -2378,7 +2421,8 @@ def _built(function: ast.FunctionDef) -> frozenset:
 
 
 def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
-                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {})):
+                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {}, {}),
+                numbers: frozenset = frozenset()):
     """One read of a name for another of its kind: an angle for another angle that the function reads (``np.cos(beta)``
     for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the read of the sum for
     its term is as truly a term added, and the reverse a term left out: ``sums``), a parameter read as its default, its
@@ -2386,11 +2430,14 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     from a start read as that start (``_starts``: the computation left unused); a slice's axes exchanged in one
     statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
     say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``).
-    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads)`` of the function: a name bound to a sum
-    read as one of its terms (the others left out there), a constructor's argument stored from another one it stores
-    (a line copied from its neighbour), a list of names with one that is read nowhere else written as its neighbour,
-    and one read of an argument where another that the same line reads belongs (not of an angle: its own slip)."""
-    terms, stored, once, siblings = reads
+    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads, _unpacked_together)`` of the function: a
+    name bound to a sum read as one of its terms (the others left out there), a constructor's argument stored from
+    another one it stores (a line copied from its neighbour), a list of names with one that is read nowhere else
+    written as its neighbour, one read of an argument where another that the same line reads belongs (not of an
+    angle: its own slip), and one read of a coordinate where another unpacked with it belongs (``q1`` for ``q2`` of
+    ``q1, q2 = q``: read from the other's row; of two angles, the angle's slip).  A number a product or a quotient
+    takes typed as another that a formula of the module takes (``numbers``: ``m / 20`` for ``m / 12``)."""
+    terms, stored, once, siblings, unpacked = reads
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
@@ -2403,12 +2450,19 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "stored_from", lambda n, other=other: ast.Name(other, ast.Load())
         for other in siblings.get(id(node), ()) if node.id not in angles else ():
             yield "parameter_read", lambda n, other=other: ast.Name(other, ast.Load())
+        for other in unpacked.get(node.id, ()):
+            if not (node.id in angles and other in angles):
+                yield "coordinate", lambda n, other=other: ast.Name(other, ast.Load())
         for slip, value in defaults.get(node.id, ()):
             yield slip, lambda n, value=value: copy.deepcopy(value)
         if node.id in starts:  # ``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start for the value computed
             yield "start_value", lambda n: ast.Name(starts[n.id], ast.Load())
         if node.id in built and isinstance(parent, ast.Call) and node in parent.args:  # ``f(..., -hip)``
             yield "sign", _negated
+    if _factor_number(node) and isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Mult, ast.Div)):
+        for other in sorted(numbers - {node.value}, key=float):  # ``m / 20`` for ``m / 12``: another formula's
+            typed = int(other) if type(node.value) is int and float(other).is_integer() else float(other)
+            yield "sibling_number", lambda n, typed=typed: ast.Constant(typed)
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) and not _number(node.right):
         # one term of a sum taken twice; a sum's first term only where it is no sum itself (else its own last)
         yield "term_doubled", lambda n: _with(n, right=ast.BinOp(ast.Constant(2), ast.Mult(), n.right))
@@ -2515,7 +2569,7 @@ def _mutated(function: _Function, lines: tuple):
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     built = _built(function.node)
     reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node),
-             _sibling_reads(function.node))
+             _sibling_reads(function.node), _unpacked_together(function.node))
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -2529,7 +2583,8 @@ def _mutated(function: _Function, lines: tuple):
                 _default_slips(function.node, lines, defaults) if late_pass else _parameter_slips(function.node, lines)
         elif late_pass:
             slips = () if (guarded and guarded != ITERABLE) or indexing else itertools.chain(
-                _name_slips(node, parent, angles, defaults, sums, starts, built, reads), _written_index_slips(node),
+                _name_slips(node, parent, angles, defaults, sums, starts, built, reads, function.numbers),
+                _written_index_slips(node),
                 _typed_slips(node, parent, function.constants))  # constants typed short: late slips too
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
@@ -2985,7 +3040,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
-                        "sum_part", "stored_from", "repeated", "term_doubled", "parameter_read"})
+                        "sum_part", "stored_from", "repeated", "term_doubled", "parameter_read", "coordinate",
+                        "sibling_number"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

@@ -1,10 +1,11 @@
-"""The formula tier's reads of one name for another of its kind (``grader.diagnosis.mutants``), on a made-up problem:
-an angle read where another angle belongs (told as ``wrong_angle``), a parameter read as its default's constant or
-as its module's constant of that name (the argument ignored), a gravity read as the Earth's, a slice's axes
-exchanged (a transpose), a list of names that starts with its last (entries in the wrong order) and a length
-taken where its square belongs.  Each slip is named; a near miss of each
-(a value that no single read reproduces) is not told in the slip's family.  The graded mistakes on the reference
-are in ``tests/engine/names.toml``.
+"""The formula tier's reads of one name for another of its kind (``grader.diagnosis.mutants``), on a made-up problem: an
+angle read where another angle belongs (told as ``wrong_angle``), a parameter read as its default's constant or as its
+module's constant of that name (the argument ignored), a gravity read as the Earth's, a slice's axes exchanged (a
+transpose), a list of names that starts with its last (entries in the wrong order) and a length taken where its square
+belongs; on the reference, a coordinate read where another unpacked with it belongs (a state row) and a number of
+another formula of the module typed into one (a factor off).  Each slip is named; a near miss of each (a value that no
+single read reproduces) is not told in the slip's family.  The graded mistakes on the reference are in
+``tests/engine/names.toml``.
 """
 
 import ast
@@ -277,3 +278,51 @@ def test_the_reads_of_names_take_only_the_room_the_bound_leaves(made_up, monkeyp
     assert [m.slip for m in mutants.mutants_of(package, root, 97, probe, args)] == [m.slip for m in others]
     monkeypatch.setattr(mutants, "MAX_MUTANTS", len(others) - 1)
     assert mutants.mutants_of(package, root, 97, probe, args) is None
+
+
+# ------------------------------------------------------------------------------------------ on the reference
+
+
+def _reference_slips(tmp_path, check_id, file, old, new, probe, inputs):
+    from .test_mutants import slips_of
+
+    return {h.name for h in slips_of(tmp_path, check_id, file, old, new, probe, inputs)}
+
+
+CHAIN_A = [("a", np.array([0.7, 1.3]), 0.8), ("a", np.array([-0.4, 0.5]), 1.2)]
+
+
+def test_a_coordinate_read_where_another_unpacked_with_it_belongs_is_a_state_row(tmp_path):
+    """Problem 21's chain a, ``q2 + d cos(q2)`` for ``q1 + d cos(q2)`` where ``q1, q2 = q``: one coordinate read from
+    another's row (``mutants._unpacked_together``).  The near miss, ``2 q1``, is no read of another coordinate."""
+    names = _reference_slips(tmp_path / "a", "p21.chain_a_values", "planar.py", "q1 + d * np.cos(q2)",
+                             "q2 + d * np.cos(q2)", "problem_21.chain", CHAIN_A)
+    assert names == {"state_row"}, names
+    near = _reference_slips(tmp_path / "b", "p21.chain_a_values", "planar.py", "q1 + d * np.cos(q2)",
+                            "2 * q1 + d * np.cos(q2)", "problem_21.chain", CHAIN_A)
+    assert "state_row" not in near, near
+
+
+ELLIPSOIDS = [("ellipsoid", 2.0, 0.4, 0.7, 1.1), ("ellipsoid", 3.5, 1.2, 0.3, 0.8)]
+
+
+def test_a_number_of_another_formula_of_the_module_is_a_factor_off(tmp_path):
+    """Problem 16's ellipsoid with ``m / 6``, the six points' share, for ``m / 20``: a number that another formula of
+    the module divides by, typed into this one (``mutants._factor_numbers``), a factor off.  The near miss, ``m / 7``,
+    is no number of the module: named nothing."""
+    old = "return m / 20 * np.diag([b**2 + c**2, a**2 + c**2, a**2 + b**2])"
+    names = _reference_slips(tmp_path / "a", "p16.bodies", "inertia.py", old, old.replace("m / 20", "m / 6"),
+                             "problem_16.body", ELLIPSOIDS)
+    assert names == {"wrong_factor"}, names
+    near = _reference_slips(tmp_path / "b", "p16.bodies", "inertia.py", old, old.replace("m / 20", "m / 7"),
+                            "problem_16.body", ELLIPSOIDS)
+    assert near == set(), near
+
+
+def test_the_coordinates_unpacked_together_are_those_of_one_vector():
+    """Names unpacked from one vector (a name, an index or slice of one, or one converted) are read one for another;
+    names bound at once to several values, or unpacked from another call's results (sympy's ``symbols()``), are not:
+    each reads a quantity of its own."""
+    tree = ast.parse("def f(q, y):\n    q1, q2 = np.asarray(q, dtype=float)\n    x, h, _ = y[:3]\n"
+                     "    a, b = f(q), g(y)\n    s, l = symbols()\n    return q1")
+    assert mutants._unpacked_together(tree.body[0]) == {"q1": ("q2",), "q2": ("q1",), "x": ("h",), "h": ("x",)}
