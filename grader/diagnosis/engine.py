@@ -33,6 +33,7 @@ from .evidence import (
     locate,
     part_of,
     Source,
+    stepped,
     within,
 )
 from .grammar import (
@@ -641,12 +642,12 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
         return _from_results(scene, evidences)
     decl = declaration(first.source.probe)
     constants = constants_of(scene, decl, first.source.args)
-    stepped = _stepped(decl)
+    in_steps = stepped(decl)
     if len(evidences) == 1 and not (decl is not None and decl.motion):
         second = _second_input(scene, first)
         if second is not None:
             evidences = [first, second]
-    elif len(evidences) == 1 and stepped:
+    elif len(evidences) == 1 and in_steps:
         first.alone = True  # a run of the student's own steps from the one start asked: its other states say more
     trace.note("inputs", count=len(evidences), declared=decl is not None,
                motion=bool(decl is not None and decl.motion), found_so_far=[h.name for h in found])
@@ -662,7 +663,7 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     explained = any(tiers)
     unreached = []
     tiers.append(_heard(lambda: _ignored(scene, evidences, unreached), explained, "ignored"))
-    if not (decl is not None and decl.motion) or stepped:  # slips inside a formula: the last tier
+    if not (decl is not None and decl.motion) or in_steps:  # slips inside a formula: the last tier
         # an array argument ignored is told only beside another explanation (``_beside``): alone it explains
         # nothing, and the formula tier is heard in full
         explaining = _without_arrays_ignored(tiers)
@@ -709,13 +710,6 @@ def _on_its_grid(run: Evidence | None, decl: Declaration | None, evidence: Evide
         return False
     k = (value - times[0]) / steps.mean()  # a time of the grid beyond its last (a run ended at its event)
     return abs(k - round(k)) * steps.mean() <= scale
-
-
-def _stepped(decl: Declaration | None) -> bool:
-    """A run counted in steps (``"time": "step"``): the student's own step function called again and again, with no
-    solver between it and the states, so that a slip inside it gives the run exactly, as a formula's slip gives a
-    value; the formula tier tries its slips on the run's states."""
-    return decl is not None and bool(decl.motion) and decl.motion.get("time") == "step"
 
 
 def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
@@ -933,16 +927,13 @@ def rivalled(scene: Scene, evidence: Evidence, diagnosis: str) -> Finding | None
     if evidence.source is not None:
         rivals = _rivals(scene, evidence, diagnosis)
     else:
-        call = judged_call(getattr(scene.ctx, "calls", ()), evidence)
-        if call is None:
+        judged_ = _judged_results(scene, evidence, evidence.tol)
+        if judged_ is None:
             trace.note("rival", reason="no call behind the derived value")
             return None
-        expected_root = scene.reference(call.probe, call.args)
-        results = _result_evidences(Evidence(np.zeros(0), np.zeros(0), evidence.tol, "the result",
-                                             call=(call.probe, call.args, call.root, expected_root)))
-        found = [_rivals(scene, result, diagnosis) for result in list(results.values())[:RESULT_LEAVES]]
-        names = set.intersection(*(set(f.names) for f in found)) if found and all(found) else set()
-        rivals = found[0] if found and all(found) and names == set(found[0].names) else None
+        found = [_rivals(scene, result, diagnosis) for result in list(judged_[1].values())[:RESULT_LEAVES]]
+        agreed = found and all(found) and all(set(found[0].names) <= set(f.names) for f in found)
+        rivals = found[0] if agreed else None
     if rivals is None:
         return None
     said = " or ".join(DIAGNOSES[n].student for n in rivals.names)
@@ -1010,7 +1001,7 @@ def _result_evidences(evidence: Evidence) -> dict:
         return {}
     probe, args, got_root, expected_root = evidence.call
     decl = declaration(probe)
-    if decl is not None and decl.motion and not _stepped(decl):
+    if decl is not None and decl.motion and not stepped(decl):
         return {}
     found = {}
     for path, expected in _leaves(expected_root):
@@ -1029,7 +1020,7 @@ def _from_results(scene: Scene, evidences: list) -> Finding | None:
     that differs from the reference's on both failing inputs (on one, where the check has no second: on it and on
     the engine's own second input) is explained as a comparison of its own, and the causes that every result
     explained names are named (one result's "could be X or Y" beside another's "X" is X), with the hints of the
-    results that name those alone.  A run counted in steps is such a call too (``_stepped``: its results are the
+    results that name those alone.  A run counted in steps is such a call too (``evidence.stepped``: its results are the
     states the student's own step gives)."""
     first = _result_evidences(evidences[0])
     second = _result_evidences(evidences[1]) if len(evidences) > 1 else None
@@ -1073,15 +1064,12 @@ def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
     value it holds tells the call; its tolerance is the comparison's)."""
     if evidence is not None and evidence.typed:  # a typed answer judged by a property: its key stands beside it
         return find(scene, [evidence])
-    log = getattr(scene.ctx, "calls", ())
-    call = judged_call(log, evidence)
-    if call is None:
+    tol = evidence.tol if evidence is not None and isinstance(evidence.tol, Tol) else JUDGED_TOL
+    judged_ = _judged_results(scene, evidence, tol)
+    if judged_ is None:
         trace.note("judged", reason="no declared call")
         return None
-    tol = evidence.tol if evidence is not None and isinstance(evidence.tol, Tol) else JUDGED_TOL
-    expected_root = scene.reference(call.probe, call.args)
-    results = _result_evidences(Evidence(np.zeros(0), np.zeros(0), tol, "the result",
-                                         call=(call.probe, call.args, call.root, expected_root)))
+    call, results = judged_
     trace.note("judged", probe=call.probe, differs=[list(map(str, path)) for path in results])
     findings, left = [], False
     for path in list(results)[:RESULT_LEAVES]:
@@ -1092,6 +1080,18 @@ def judged(scene: Scene, evidence: Evidence | None) -> Finding | None:
     if left:
         return Finding((), KIT_NOTE)
     return _agreed(findings, labelled=False)
+
+
+def _judged_results(scene: Scene, evidence: Evidence | None, tol) -> tuple[Source, dict] | None:
+    """``(call, results)``: the student's call behind a value a check judged (``judged_call``) and those of its
+    results that differ beyond ``tol`` from the reference's call on the same arguments (``_result_evidences``); None
+    where no such call is known."""
+    call = judged_call(getattr(scene.ctx, "calls", ()), evidence)
+    if call is None:
+        return None
+    expected_root = scene.reference(call.probe, call.args)
+    return call, _result_evidences(Evidence(np.zeros(0), np.zeros(0), tol, "the result",
+                                            call=(call.probe, call.args, call.root, expected_root)))
 
 
 def judged_call(log, evidence: Evidence | None) -> Source | None:
@@ -1118,7 +1118,7 @@ UPSTREAM_PROBE = "_upstream.call"
 
 def _judgeable(probe) -> bool:
     """A probe whose call the engine may compare with the reference's: one it knows by name (``probes``), not a
-    run's (whose comparison is the checks' own) but one counted in steps (``_stepped``: the student's own step
+    run's (whose comparison is the checks' own) but one counted in steps (``evidence.stepped``: the student's own step
     called again and again, whose states a formula's slip gives exactly), nor the grader's own call of an earlier
     problem's function (``UPSTREAM_PROBE``)."""
     if not isinstance(probe, str) or probe == UPSTREAM_PROBE:
@@ -1130,7 +1130,7 @@ def _judgeable(probe) -> bool:
         except ProbeLookupError:
             return False
         return True
-    return not decl.motion or _stepped(decl)
+    return not decl.motion or stepped(decl)
 
 
 def _same_shape(evidence: Evidence) -> bool:

@@ -21,6 +21,7 @@ __all__ = [
     "part_of",
     "rows_of",
     "declaration",
+    "stepped",
     "Source",
     "Evidence",
     "Finding",
@@ -95,6 +96,13 @@ def declaration(probe: str) -> Declaration | None:
     )
     DECLARATIONS[probe] = found
     return found
+
+
+def stepped(decl: Declaration | None) -> bool:
+    """A run counted in steps (``"time": "step"``): the student's own step function called again and again, with no
+    solver between it and the states, so that a slip inside it gives the run exactly, as a formula's slip gives a
+    value; the formula tier tries its slips on the run's states."""
+    return decl is not None and bool(decl.motion) and decl.motion.get("time") == "step"
 
 
 def part_of(source) -> tuple | None:

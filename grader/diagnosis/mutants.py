@@ -198,7 +198,8 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
-from .evidence import array_of, at_point, distinct, Evidence, Hypothesis, part_of, reproduces, rows_of, Source, within
+from .evidence import (array_of, at_point, declaration, distinct, Evidence, Hypothesis, part_of, reproduces, rows_of,
+                       Source, stepped, within)
 from .grammar import EARTH_GRAVITY, equivalents
 
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
@@ -3526,22 +3527,15 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
                 f"a matrix factor of a product in `{mutant.function}` is left out (a rotation, of a value that is "
                 "a matrix)"), twin=True))
         if mutant.function == "__init__" and DIAGNOSES[name].family == "ignored_argument" and evidences \
-                and _run_counted_in_steps(evidences[0]):  # an object that a run steps from its start, built
-            # ignoring a value it is given: the run starts from another state
+                and evidences[0].source is not None and stepped(declaration(evidences[0].source.probe)):
+            # an object that a run steps from its start, built ignoring a value it is given: the run starts from
+            # another state
             found.setdefault(f"{key}=start", Hypothesis(f"{key}=start", "initial_state", COST, (
                 f"{detail}: the object the run steps starts from another state than the one given"), twin=True))
         unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
         for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told
     return list(found.values())
-
-
-def _run_counted_in_steps(evidence: Evidence) -> bool:
-    """Whether ``evidence`` compares a value of a run counted in steps (its probe declares ``"time": "step"``)."""
-    from .evidence import declaration
-
-    decl = declaration(evidence.source.probe) if evidence.source is not None else None
-    return decl is not None and bool(decl.motion) and decl.motion.get("time") == "step"
 
 
 #: the slips whose edit is as truly a slip of another family: a product with a quantity for a division by it uses
