@@ -132,7 +132,7 @@ when its value reproduces the student's within the comparison's tolerance on the
 Where the probe computes more than the compared value and declares the cheaper call that holds it (``part``:
 ``lagrange``'s ``M``, ``f``, ``g`` are ``mfg``'s), a mutant is evaluated on that call first and on the whole probe only
 where it reproduces the student's value there: the mutants kept are those the whole probe keeps, at the cost of the part
-for the others. Each call gets its own copy of the input's arguments (a mutant may change them in place), unpickled from
+for the others. Each call gets its own copy of the input's arguments (a mutant may change them in place), copied from
 one kept for the input.  A slip inside an index is one of the index.  A cause is named only when the mutants kept are of
 one family of the vocabulary, or of two; the hint says what kind of slip and in which of the student's functions, never
 the reference's code.
@@ -2928,8 +2928,8 @@ def _probe(probe):
 
 
 def _call(package, probe, args, path, quick: bool = False, replies: dict | None = None, remember: bool = False):
-    """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the bytes of
-    ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per package
+    """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the arguments
+    kept by ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per package
     would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by reading its
     expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given): the whole
     replies of the calls made so far with the package's code as it is now, by the call, which a call on the same
@@ -2942,7 +2942,7 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
     from probes._codec import decode, encode
     from probes._symbolic import quick as reading
 
-    key = (probe, args if isinstance(args, bytes) else id(args), quick)
+    key = (probe, args if isinstance(args, _Kept) else id(args), quick)
     if replies is not None and key in replies:
         value = replies[key]
         if isinstance(value, Exception):  # a reply is plain data: an exception is the call's own
@@ -2961,18 +2961,63 @@ def _call(package, probe, args, path, quick: bool = False, replies: dict | None 
     return array_of(at_point(value, path))
 
 
+class _Kept:
+    """The arguments of one input, kept once for the many calls of its mutants: a copy of their own, which each call
+    copies again (``_copied``), and their pickled bytes, by which two kept inputs are the same call (``_call``'s
+    replies)."""
+
+    __slots__ = ("args", "blob")
+
+    def __init__(self, args: tuple, blob: bytes):
+        self.args, self.blob = _fresh(args, {}), blob
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, _Kept) and self.blob == other.blob
+
+    def __hash__(self) -> int:
+        return hash(self.blob)
+
+
 def _kept_once(args: tuple):
-    """The arguments of one input, kept once for the many calls of its mutants: pickled, where they can be (a
-    copy unpickled costs a fraction of a deep copy of nested data), else as they are."""
+    """The arguments of one input, kept once for the many calls of its mutants (``_Kept``), where they can be
+    pickled; else as they are (deep-copied at each call)."""
     try:
-        return pickle.dumps(tuple(args), protocol=pickle.HIGHEST_PROTOCOL)
+        return _Kept(tuple(args), pickle.dumps(tuple(args), protocol=pickle.HIGHEST_PROTOCOL))
     except Exception:  # noqa: BLE001 - arguments that cannot be pickled are deep-copied at each call
         return tuple(args)
 
 
+#: the types whose values a copy of arguments shares rather than copies (immutable)
+_SHARED = frozenset((float, int, bool, str, bytes, type(None), complex))
+
+
+def _fresh(value, memo: dict):
+    """A deep copy of plain arguments (numbers, strings, numeric arrays, and dicts, lists and tuples of them), made
+    by walking them, which costs a fraction of ``copy.deepcopy`` or of unpickling; a value shared twice is copied
+    once, as ``copy.deepcopy`` copies it; anything else is deep-copied."""
+    kind = type(value)
+    if kind in _SHARED:
+        return value
+    seen = memo.get(id(value))
+    if seen is not None:
+        return seen
+    if kind is np.ndarray and value.dtype.kind in "biuf":
+        made = value.copy()
+    elif kind is dict:
+        made = {key: _fresh(item, memo) for key, item in value.items()}
+    elif kind is list:
+        made = [_fresh(item, memo) for item in value]
+    elif kind is tuple:
+        made = tuple(_fresh(item, memo) for item in value)
+    else:
+        made = copy.deepcopy(value)
+    memo[id(value)] = made
+    return made
+
+
 def _copied(args) -> tuple:
     """A copy of the arguments for one call (a mutant may change them in place)."""
-    return pickle.loads(args) if isinstance(args, bytes) else copy.deepcopy(tuple(args))
+    return _fresh(args.args, {}) if isinstance(args, _Kept) else copy.deepcopy(tuple(args))
 
 
 #: the codes each call ran (``_traced``), by the call, while ``_kept`` measures one explanation (None outside it):

@@ -154,6 +154,28 @@ def test_the_arguments_are_copied_for_each_call(made_up):
     assert mutants._kept_once(unpicklable) == unpicklable and mutants._copied(unpicklable)[1] is not unpicklable[1]
 
 
+
+def test_kept_arguments_are_copied_whole_for_each_call_and_are_the_same_call_as_equal_ones():
+    """Each call of a mutant gets a copy of the input's arguments of its own, nested lists, dicts and arrays
+    included, with an array shared twice shared in the copy as in the input; the kept arguments do not follow a
+    change of the input made after they were kept; two inputs kept apart with equal arguments are the same call."""
+    shared = np.arange(3.0)
+    args = ({"bodies": [{"m": 1.0, "I": np.eye(3)}], "axis": shared}, shared, [1, (2.0, "x")])
+    kept = mutants._kept_once(args)
+    args[0]["bodies"][0]["I"][0, 0] = 5.0
+    first, second = mutants._copied(kept), mutants._copied(kept)
+    assert first[0]["bodies"][0]["I"][0, 0] == 1.0
+    assert first[0]["axis"] is first[1] and first[1] is not second[1] and first[1] is not shared
+    first[0]["bodies"][0]["m"] = 9.0
+    first[1][0] = 7.0
+    assert second[0]["bodies"][0]["m"] == 1.0 and second[1][0] == 0.0 and second[2] == [1, (2.0, "x")]
+    again = mutants._kept_once(({"bodies": [{"m": 1.0, "I": np.eye(3)}], "axis": np.arange(3.0)}, np.arange(3.0),
+                                [1, (2.0, "x")]))
+    assert again == mutants._kept_once(({"bodies": [{"m": 1.0, "I": np.eye(3)}], "axis": np.arange(3.0)},
+                                        np.arange(3.0), [1, (2.0, "x")]))
+    assert len({again, mutants._kept_once((1.0,)), mutants._kept_once((1.0,))}) == 2
+
+
 # ------------------------------------------------------------------------------------------ the declarations
 
 
