@@ -146,16 +146,18 @@ for every answer and kept for the process, so it is counted apart, within ``MAKI
 names does not depend on whether an earlier explanation of the process made the mutants, nor on how much a loaded
 machine slows their making.  The worst an explanation's formula tier may spend is so ``MAKING_TIME_BUDGET`` +
 ``TIME_BUDGET`` (or ``SCREENED_TIME_BUDGET`` and ``CONFIRMING_TIME_BUDGET``) + ``GIVEN_TIME_BUDGET`` of CPU time (or
-``LATE_TIME_BUDGET`` in place of the last), the first only where the process has not made those mutants yet.  The
-codes the compared call runs are traced once for an explanation's stages (``_TRACES``), and a grading whose
-explanations ask the tier the same question (the same inputs, student's values and families told: a run's
-right-hand side behind its state and its event) measures the mutants once (``_Measured``; a measure that ran out
-of its time is made again); where an earlier tier already explained the answer, the tier is heard for rivals within
-a budget of its own, ``LATE_MUTANTS`` mutants and ``LATE_TIME_BUDGET``, those of the families not told yet first
-(``late``: a rival of a family told adds a name, not an explanation), warnings are silenced and a mutant that raises
-is dropped.  The student's code runs only for the third input, within the
-scene's budget of the student's calls.  The student kit holds no reference code: the tier runs with the live
-reference only (``left_to_live``: the kit then says that the graded submission may say more).
+``LATE_TIME_BUDGET`` in place of the last), the first only where the process has not made those mutants yet.  These are
+seconds of the machines where the budgets were set: on a slower one (``pace``, measured once for the process, at most
+``PACE_MOST`` times) each budget is as many times longer, so that what the tier names does not depend on the machine's
+speed either.  The codes the compared call runs are traced once for an explanation's stages (``_TRACES``), and a grading
+whose explanations ask the tier the same question (the same inputs, student's values and families told: a run's
+right-hand side behind its state and its event) measures the mutants once (``_Measured``; a measure that ran out of its
+time is made again); where an earlier tier already explained the answer, the tier is heard for rivals within a budget of
+its own, ``LATE_MUTANTS`` mutants and ``LATE_TIME_BUDGET``, those of the families not told yet first (``late``: a rival
+of a family told adds a name, not an explanation), warnings are silenced and a mutant that raises is dropped.  The
+student's code runs only for the third input, within the scene's budget of the student's calls.  The student kit holds
+no reference code: the tier runs with the live reference only (``left_to_live``: the kit then says that the graded
+submission may say more).
 
 A symbolic answer costs most in its simplification (``trigsimp`` of problem 40's matrices: a quarter of a second)
 and in sympy's ``lambdify``, neither of which changes its value.  Where a function of the problem simplifies
@@ -205,8 +207,8 @@ from .grammar import EARTH_GRAVITY, equivalents
 __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BUDGET", "CONFIRMING_TIME_BUDGET",
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
            "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
-           "FACTORS_REORDERED", "TRANSPOSED", "EFFECT_RIVALS", "Mutant", "rivals", "mutants_of", "mutant_slips",
-           "opposite_slips", "late", "left_to_live"]
+           "FACTORS_REORDERED", "TRANSPOSED", "EFFECT_RIVALS", "PACE_NOMINAL", "PACE_MOST", "Mutant", "rivals",
+           "mutants_of", "mutant_slips", "opposite_slips", "late", "left_to_live", "pace"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -3193,6 +3195,44 @@ def _collected(thread: int, clock) -> float:
     return spent[1] + (time.monotonic() - began[1] if began is not None else 0.0)
 
 
+#: the CPU time [s] that ``_pace_work`` takes on the machines where the budgets above were set: the deadlines count
+#: those machines' seconds, so that a slower machine (an old laptop) tries the slips a typical one tries.  Estimated
+#: from the reference's own derivation of problem 40 (``CONFIRMING_TIME_BUDGET``: 0.4 s there), which took 2.2
+#: times as long (0.9 s) on a machine where ``_pace_work`` took 14 ms
+PACE_NOMINAL = 0.0065
+#: the most the deadlines widen for a slow machine: a machine slower than that names less rather than take longer
+PACE_MOST = 4.0
+#: ``[pace]`` once measured (``pace``)
+_PACE: list = []
+
+
+def _pace_work() -> int:
+    """A small piece of the engine's usual work (products of 3 x 3 arrays, a skew matrix built entry by entry,
+    sums in Python), to time the machine by."""
+    a, v, total = np.eye(3), np.ones(3), 0
+    for _ in range(1200):
+        w = np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+        a = a @ w * 0.1 + np.eye(3)
+        v = a @ v / (1.0 + float(np.abs(v).sum()))
+        total += sum(range(20))
+    return total
+
+
+def pace() -> float:
+    """How many times slower than the machines where the budgets were set this one does the engine's work
+    (``PACE_NOMINAL``): at least 1 (a faster machine keeps the budgets) and at most ``PACE_MOST``; measured once
+    for the process, by the thread's CPU time (the best of three), so that a loaded machine is not taken for a slow
+    one."""
+    if not _PACE:
+        times = []
+        for _ in range(3):
+            start = time.thread_time()
+            _pace_work()
+            times.append(time.thread_time() - start)
+        _PACE.append(min(PACE_MOST, max(1.0, min(times) / PACE_NOMINAL)))
+    return _PACE[0]
+
+
 def _cpu_clock(thread: int):
     """The CPU-time clock of ``thread`` (an ident of ``threading``), or None where it cannot be read."""
     try:
@@ -3235,10 +3275,14 @@ class _Deadline:
     earlier explanation of the process made its mutants already; and the work inside ``confirming()`` (a mutant
     that a screening without simplifications kept, evaluated as it is), against ``confirming`` seconds
     (``CONFIRMING_TIME_BUDGET``): a simplification of a symbolic answer may take longer than the screening of every
-    mutant, and it is paid only for the few that reproduce the student's value."""
+    mutant, and it is paid only for the few that reproduce the student's value.
+
+    Every budget is in the seconds of the machines where the budgets were set: the clocks read divided by the
+    machine's ``pace()``, so that a slow machine tries what a typical one tries."""
 
     def __init__(self, seconds: float, making: float | None = None, confirming: float | None = None):
         self.thread = threading.get_ident()
+        self.pace = pace()
         self.seconds = seconds
         self.apart = {"making": MAKING_TIME_BUDGET if making is None else making,
                       "confirming": CONFIRMING_TIME_BUDGET if confirming is None else confirming}
@@ -3257,13 +3301,14 @@ class _Deadline:
 
     def _now(self) -> tuple[float, float]:
         """The thread's CPU time (wall time where it has no clock) less the time it spent collecting garbage, and
-        the wall time less the time it waited for a core."""
+        the wall time less the time it waited for a core, each divided by the machine's pace."""
         wall = time.monotonic()
         queued = _queued(self.schedstat)
         if queued is not None:
             self.queued = queued
         collected = _collected(self.thread, self.clock)
-        return (time.clock_gettime(self.clock) if self.clock is not None else wall) - collected, wall - self.queued
+        cpu = (time.clock_gettime(self.clock) if self.clock is not None else wall) - collected
+        return cpu / self.pace, (wall - self.queued) / self.pace
 
     def _accounts(self, now: tuple[float, float]) -> tuple[tuple[float, float], dict]:
         """``((cpu, wall) screening, {kind: (cpu, wall)} of the work counted apart)`` spent until ``now``."""

@@ -64,6 +64,33 @@ def test_the_screening_past_its_budget_is_interrupted_whatever_was_confirmed():
             _busy(10.0)
 
 
+
+def test_the_machines_pace_is_measured_once_and_bounded():
+    """The machine's pace (how many times slower than the machines where the budgets were set it does the engine's
+    work) is measured once for the process, and is at least 1 and at most ``PACE_MOST``."""
+    first = mutants.pace()
+    assert 1.0 <= first <= mutants.PACE_MOST and mutants.pace() == first
+
+
+@pytest.mark.parametrize("pace, fired", [(1.0, True), (4.0, False)])
+def test_a_slow_machine_has_budgets_as_many_times_longer(monkeypatch, pace, fired):
+    """On a machine four times slower the screening's budget of 0.2 s lets it spend 0.5 s of CPU time, which a
+    machine of the budgets' own pace interrupts; on both, work past the widened budget is interrupted."""
+    monkeypatch.setattr(mutants, "_PACE", [pace])
+    interrupted = False
+    try:
+        with mutants._Deadline(0.2) as deadline:
+            _busy(0.5)
+    except mutants._Timeout:
+        interrupted = True
+    assert interrupted == fired == deadline.fired
+    start = time.thread_time()
+    with pytest.raises(mutants._Timeout):
+        with mutants._Deadline(0.2):
+            _busy(30.0)
+    assert time.thread_time() - start < 10.0
+
+
 # ------------------------------------------------------------------------------------------ what probes remember
 
 
