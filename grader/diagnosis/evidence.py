@@ -15,6 +15,7 @@ from ..values import Tol
 __all__ = [
     "DISTINCT",
     "call_key",
+    "text_key",
     "Declaration",
     "DECLARATIONS",
     "SHORTCUTS",
@@ -217,13 +218,72 @@ class Hypothesis:
 
 
 def call_key(probe: str, args: tuple) -> str:
-    """A stable text key of a probe call, the engine's own (the names of the engine's draw sites, the calls it has
-    prepared): the probe's name and its arguments as plain data."""
+    """A key of a probe call, the engine's own (the calls its scene has asked, the calls it has prepared, the runs it
+    keeps): the probe's name and a digest of its arguments as plain data, where two arguments are the same exactly
+    where ``text_key`` writes them alike (arrays by their shape and entries as floats, lists and tuples alike, a
+    dict's entries by their keys as text, ``1`` and ``1.0`` apart), without writing their numbers as text."""
+    import hashlib
+
+    parts: list = []
+    try:
+        _fed(list(args), parts, 0)
+    except _Unkeyed:
+        return "j" + text_key(probe, args)
+    return "h" + probe + hashlib.blake2b(b"".join(parts), digest_size=16).hexdigest()
+
+
+def text_key(probe: str, args: tuple) -> str:
+    """A stable text key of a probe call: the probe's name and its arguments as plain data (JSON), which names a
+    draw site of the engine's (``Scene.draw_seed``) in the grading and in the student kit alike."""
     import json
 
     from probes._codec import encode
 
     return probe + json.dumps(encode(list(args)), sort_keys=True)
+
+
+class _Unkeyed(Exception):
+    """An argument that ``call_key`` does not digest itself (``text_key`` writes it)."""
+
+
+#: ``probes._codec``'s bound of integers kept as they are (larger ones are written as floats)
+_EXACT = 2**53
+
+
+def _fed(value, parts: list, depth: int) -> None:
+    """The bytes of ``value`` for ``call_key``, appended to ``parts``, each tagged with its kind."""
+    if depth > 20:
+        raise _Unkeyed
+    if isinstance(value, np.generic):
+        value = value.item()
+    kind = type(value)
+    if kind is np.ndarray:
+        if value.dtype.kind not in "biuf":
+            raise _Unkeyed
+        parts += [b"a", repr(value.shape).encode(), np.ascontiguousarray(value, dtype=float).tobytes()]
+    elif kind is bool or value is None:
+        parts.append(b"b" + repr(value).encode())
+    elif isinstance(value, int) and not isinstance(value, bool) and abs(value) < _EXACT:
+        parts.append(b"i" + repr(int(value)).encode() + b";")
+    elif isinstance(value, (int, float)) and not isinstance(value, bool):
+        parts.append(b"f" + np.float64(value).tobytes())
+    elif isinstance(value, str):
+        text = value.encode("utf-8", "surrogatepass")
+        parts.append(b"s" + repr(len(text)).encode() + b":" + text)
+    elif isinstance(value, (list, tuple)):
+        parts.append(b"[" + repr(len(value)).encode() + b":")
+        for item in value:
+            _fed(item, parts, depth + 1)
+    elif isinstance(value, dict):
+        items = sorted(((str(k), v) for k, v in value.items()), key=lambda entry: entry[0])
+        if len({k for k, _ in items}) != len(items):
+            raise _Unkeyed
+        parts.append(b"{" + repr(len(items)).encode() + b":")
+        for k, item in items:
+            _fed(k, parts, depth + 1)
+            _fed(item, parts, depth + 1)
+    else:
+        raise _Unkeyed
 
 
 def walk(value, path=(), depth=0):

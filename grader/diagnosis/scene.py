@@ -10,7 +10,7 @@ import numpy as np
 
 from ..errors import GraderFault, StudentFault
 from . import trace
-from .evidence import array_of, at, call_key, Declaration, Evidence, part_of, Source
+from .evidence import array_of, at, call_key, Declaration, Evidence, part_of, Source, text_key
 from .grammar import EARTH_GRAVITY, label_of, leaves_of
 
 __all__ = [
@@ -96,7 +96,7 @@ class Scene:
     def draw_seed(self, source: Source) -> list:
         """The seed of the engine's own second input for a source: the oracle's draw of a site named after the
         call (live from the run's seed; in the kit the draw recorded with the key)."""
-        site = f"{self.ctx.check_id}~engine~{zlib.crc32(call_key(source.probe, source.args).encode()):08x}"
+        site = f"{self.ctx.check_id}~engine~{zlib.crc32(text_key(source.probe, source.args).encode()):08x}"
         drawn = self.ctx.oracle.draw(site, lambda rng: [int(x) for x in rng.integers(0, 2**32, 2)],
                                      self.ctx.seed, check=self.ctx.check_id)
         return [int(x) for x in drawn]
