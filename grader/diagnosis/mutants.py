@@ -2930,9 +2930,9 @@ def _probe(probe):
 
 
 def _call(package, probe, args, path, quick: bool = False, replies: dict | None = None, remember: bool = False):
-    """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the arguments
-    kept by ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per package
-    would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by reading its
+    """The value at ``path`` of ``probe`` on the package, called on a copy of ``args`` (a tuple, or the arguments kept
+    by ``_kept_once``) and made anew by the probe (``probes.fresh``: a probe that keeps what it computed once per
+    package would give the reference's value for every mutant); ``quick``: a symbolic answer is evaluated by reading its
     expressions (``probes._symbolic.quick``) rather than by sympy's ``lambdify``.  ``replies`` (given): the whole
     replies of the calls made so far with the package's code as it is now, by the call, which a call on the same
     arguments reads rather than makes again (a comparison's other values of the same call, ``_siblings``), and a call
