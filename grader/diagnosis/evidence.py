@@ -233,13 +233,12 @@ def call_key(probe: str, args: tuple) -> str:
 
 
 def text_key(probe: str, args: tuple) -> str:
-    """A stable text key of a probe call: the probe's name and its arguments as plain data (JSON), which names a
-    draw site of the engine's (``Scene.draw_seed``) in the grading and in the student kit alike."""
-    import json
+    """A stable text key of a probe call, the oracle's (``grader.oracle.call_key``: the probe's name and its
+    arguments as plain data, JSON), which names a draw site of the engine's (``Scene.draw_seed``) in the grading and
+    in the student kit alike."""
+    from ..oracle import call_key as oracle_key
 
-    from probes._codec import encode
-
-    return probe + json.dumps(encode(list(args)), sort_keys=True)
+    return oracle_key(probe, args)
 
 
 class _Unkeyed(Exception):
@@ -263,9 +262,9 @@ def _fed(value, parts: list, depth: int) -> None:
         parts += [b"a", repr(value.shape).encode(), np.ascontiguousarray(value, dtype=float).tobytes()]
     elif kind is bool or value is None:
         parts.append(b"b" + repr(value).encode())
-    elif isinstance(value, int) and not isinstance(value, bool) and abs(value) < _EXACT:
+    elif isinstance(value, int) and abs(value) < _EXACT:  # a bool was told above
         parts.append(b"i" + repr(int(value)).encode() + b";")
-    elif isinstance(value, (int, float)) and not isinstance(value, bool):
+    elif isinstance(value, (int, float)):
         parts.append(b"f" + np.float64(value).tobytes())
     elif isinstance(value, str):
         text = value.encode("utf-8", "surrogatepass")

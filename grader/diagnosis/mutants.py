@@ -2984,7 +2984,8 @@ def _kept_once(args: tuple):
     """The arguments of one input, kept once for the many calls of its mutants (``_Kept``), where they can be
     pickled; else as they are (deep-copied at each call)."""
     try:
-        return _Kept(tuple(args), pickle.dumps(tuple(args), protocol=pickle.HIGHEST_PROTOCOL))
+        args = tuple(args)
+        return _Kept(args, pickle.dumps(args, protocol=pickle.HIGHEST_PROTOCOL))
     except Exception:  # noqa: BLE001 - arguments that cannot be pickled are deep-copied at each call
         return tuple(args)
 
