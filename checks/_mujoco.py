@@ -13,8 +13,8 @@ import numpy as np
 
 from grader.checking import CheckFailure, Mistake, Tol, assert_close, fail, figure
 from grader.errors import StudentFault, ends_grading
-from grader.oracle import call_key
 from grader.results import Series
+from probes import call_key
 
 __all__ = [
     "LENGTH", "WIDTH", "HEIGHT", "VOLUME", "ALUMINIUM", "HDPE", "EARTH", "MOON", "SAMPLE",

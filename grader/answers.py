@@ -138,7 +138,7 @@ def _shown(value) -> str:
 def wrong_answer(check_id: str, probe: str, args: tuple, value, expected) -> Answer | None:
     """The record of the student's ``value`` of ``probe(*args)`` when it differs from the reference's ``expected``
     beyond ``EXACT``; None when it agrees."""
-    from .oracle import call_key
+    from probes import call_key
 
     if _agrees(value, expected):
         return None

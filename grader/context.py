@@ -115,7 +115,7 @@ class Context:
         fixed inputs that differ from the reference's on the same call."""
         if self._recording and not passed and self._asked and self._referenced:
             from .answers import wrong_answer
-            from .oracle import call_key
+            from probes import call_key
 
             expected = {call_key(probe, args): value for probe, args, value in self._referenced}
             for probe, args, value in self._asked:
@@ -231,7 +231,7 @@ class Context:
         ``"module.function"`` to ``(the problem that owns it, the check that grades it)``; ``flaw(mine,
         reference)`` says why a value of the student's is not real ("" when it is).  While the kit's key is
         recorded, the calls are recorded at once; in the kit the student's functions are compared at those calls."""
-        from .oracle import call_key
+        from probes import call_key
 
         probe = _probe_name(probe)
         key = call_key(probe, args)

@@ -34,6 +34,7 @@ from functools import lru_cache
 from pathlib import Path
 
 import probes
+from probes import call_key
 
 from .errors import GraderFault
 
@@ -49,7 +50,6 @@ __all__ = [
     "reference_available",
     "sources_fingerprint",
     "KEY_FILE",
-    "call_key",
     "draw_pool",
     "hypothesis_run",
     "private_hypothesis_home",
@@ -59,14 +59,6 @@ __all__ = [
 KEY_FILE = "answer_key.json.gz"
 KEY_FORMAT = "mbd-autograder answer key"
 KEY_VERSION = 1
-
-
-def call_key(probe, args: tuple) -> str:
-    """A stable text key for a probe call: the probe's name (of the probe, or the name itself) and its arguments as
-    plain data."""
-    from probes._codec import encode
-
-    return probes.name_of(probe) + json.dumps(encode(list(args)), sort_keys=True)
 
 
 def _roundtrip(value):

@@ -182,7 +182,7 @@ class Hybrid:
         return proxy
 
     def _forward(self, function: str, args: tuple, real):
-        from .oracle import call_key
+        from probes import call_key
 
         key = call_key(function, args)
         if key not in self._memo:  # the same call again within a run (a constant inside a loop): asked once

@@ -58,7 +58,7 @@ import contextlib
 import importlib
 import threading
 
-__all__ = ["probe", "module", "lookup", "name_of", "remembered", "fresh", "kept_for_one_code", "ProbeLookupError"]
+__all__ = ["probe", "module", "lookup", "name_of", "call_key", "remembered", "fresh", "kept_for_one_code", "ProbeLookupError"]
 
 #: the keywords a probe may declare
 DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw", "part", "rebind", "rows")
@@ -175,6 +175,17 @@ def name_of(probe) -> str:
     if not getattr(probe, "is_probe", False) or not module_name.startswith(f"{__name__}.") or not func_name:
         raise ProbeLookupError(f"{probe!r} is not a probe (a function of probes.* marked @probe)")
     return f"{module_name.removeprefix(f'{__name__}.')}.{func_name}"
+
+
+def call_key(probe, args: tuple) -> str:
+    """A stable text key for a probe call: the probe's name (of the probe, or the name itself) and its arguments as
+    plain data (JSON).  It keys the oracle's cache and the kit's answer key, and names the diagnosis engine's draw
+    sites."""
+    import json
+
+    from ._codec import encode
+
+    return name_of(probe) + json.dumps(encode(list(args)), sort_keys=True)
 
 
 def lookup(name: str):

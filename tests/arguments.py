@@ -22,8 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from grader.gate import probe_function
-from grader.oracle import call_key
-from probes import name_of
+from probes import call_key, name_of
 from probes._codec import decode, encode
 
 from .submissions import ROOT

@@ -23,8 +23,8 @@ import pytest
 from checks._effects import same
 from grader.problems import problems
 from grader.errors import StudentFault
-from grader.oracle import call_key
 from grader.results import Status
+from probes import call_key
 
 from .kit_support import warm_slot
 from .nulls import FILLS, build_null

@@ -233,12 +233,12 @@ def call_key(probe: str, args: tuple) -> str:
 
 
 def text_key(probe: str, args: tuple) -> str:
-    """A stable text key of a probe call, the oracle's (``grader.oracle.call_key``: the probe's name and its
-    arguments as plain data, JSON), which names a draw site of the engine's (``Scene.draw_seed``) in the grading and
-    in the student kit alike."""
-    from ..oracle import call_key as oracle_key
+    """A stable text key of a probe call, the oracle's (``probes.call_key``: the probe's name and its arguments as
+    plain data, JSON), which names a draw site of the engine's (``Scene.draw_seed``) in the grading and in the
+    student kit alike."""
+    import probes
 
-    return oracle_key(probe, args)
+    return probes.call_key(probe, args)
 
 
 class _Unkeyed(Exception):
