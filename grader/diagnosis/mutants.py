@@ -2093,7 +2093,7 @@ def _outside(call: ast.Call):
 def _index_slips(node: ast.Subscript):
     """A neighbouring index: a number one more or less (not below 0), or 0 for a number of 2 or more (the first
     entry where a later one belongs), an expression plus or minus one, a slice of whole numbers one row on or back
-    (as many entries)."""
+    (as many entries), a slice to the end one row early (as many entries: to the last but one)."""
     index = node.slice
     entries = index.elts if isinstance(index, ast.Tuple) else [index]
     for k, entry in enumerate(entries):
@@ -2110,6 +2110,8 @@ def _index_slips(node: ast.Subscript):
             for step in (-1, 1):
                 if _bound(entry.lower) + step >= 0:
                     yield "index", lambda n, k=k, step=step: _reindexed(n, k, step)
+        elif _open_ended(entry):  # ``y[1:3]`` for ``y[2:]`` of four: as many entries, one row early
+            yield "index", lambda n, k=k: _reindexed(n, k, -1)
 
 
 def _bound(value) -> int:
@@ -2123,12 +2125,20 @@ def _shiftable(entry) -> bool:
                                                     and isinstance(entry.lower.value, int) and entry.lower.value >= 0)
 
 
+def _open_ended(entry) -> bool:
+    """A slice from a whole number of 1 or more to the end, without a step (``y[2:]``)."""
+    return isinstance(entry, ast.Slice) and entry.step is None and entry.upper is None and _number(entry.lower) \
+        and isinstance(entry.lower.value, int) and entry.lower.value >= 1
+
+
 def _reindexed(node: ast.Subscript, k: int, step: int):
     index = node.slice
     entries = list(index.elts) if isinstance(index, ast.Tuple) else [index]
     entry = entries[k]
     if _number(entry):
         entries[k] = ast.Constant(entry.value + step)
+    elif isinstance(entry, ast.Slice) and entry.upper is None:  # open-ended, one row early: to the last but one
+        entries[k] = ast.Slice(ast.Constant(entry.lower.value + step), ast.Constant(step), None)
     elif isinstance(entry, ast.Slice):
         entries[k] = ast.Slice(ast.Constant(_bound(entry.lower) + step), ast.Constant(entry.upper.value + step), None)
     else:

@@ -1238,6 +1238,17 @@ def test_a_part_of_a_runs_state_read_from_the_other_half_is_a_state_row_slip(mad
     assert names == {"state_row"}, [(h.name, h.detail) for h in found]
 
 
+def test_an_open_slice_of_a_runs_state_read_one_row_early_is_a_state_row_slip(made_up):
+    """``qd = y[1:3]`` for ``qd = y[2:]``: the rates read as many rows, one row early (the slice's open end
+    written out one short), is a state read from the wrong rows."""
+    def early(t, y):
+        q, qd = y[:2], y[1:3]
+        return np.concatenate([qd, -3.0 * q - 0.5 * qd + np.array([t, 0.0])])
+
+    names, found = names_of(made_up, "rates", early, STATES)
+    assert names and {DIAGNOSES[n].family for n in names} == {"state_row"}, [(h.name, h.detail) for h in found]
+
+
 def test_halves_of_a_vector_that_is_no_state_exchanged_are_swapped_entries(made_up):
     """The near miss: the same exchange of a vector that is no run's state (not ``y`` of ``f(t, y)``) is an
     exchange of entries or names, never a state row."""
