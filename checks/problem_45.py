@@ -19,7 +19,10 @@ from grader.checking import (
     as_array,
     assert_close,
     check,
+    close,
+    engine_on,
     fail,
+    transposed_shape_hint,
 )
 from probes import problem_45 as p45
 
@@ -53,7 +56,16 @@ def _describe(args):
     return ", ".join(f"{name} = {value:.4g}" for name, value in args[1][0].items())
 
 
-def _value(got, key):
+def _value(got, key, expected=None, tol=None):
+    """The answer ``key`` at the first point, or a failure that says why it cannot be graded; with ``expected``
+    (the value asked for, within ``tol``): a matrix of the transposed shape whose transpose is it fails as a
+    transpose."""
+    transposed = got.get("transposed") if isinstance(got, dict) else None
+    if transposed and expected is not None and engine_on() \
+            and close(np.asarray(transposed[0], dtype=float), expected, tol):
+        rows, columns = np.shape(expected)
+        fail(f"{got['problem']}: the transposed shape, and its transpose is the {FORMS[key].split(' as ')[0]} "
+             "asked for.", transposed_shape_hint((rows, columns)), "transpose")
     if isinstance(got, dict) and "problem" in got:
         fail(f"{got['problem']}.", f"Return {FORMS[key]} in the symbols of symbols().", "format")
     if not isinstance(got, list) or len(got) != 1:
@@ -78,7 +90,7 @@ def check_jacobian(ctx):
         fd = np.column_stack([(_contacts(q + H * e, s, d) - _contacts(q - H * e, s, d)) / (2 * H) for e in np.eye(3)])
         other_side = fd.copy()
         other_side[1, 2] = -s - l
-        assert_close(_value(got, "J"), fd, "J", DIFFERENCES, [
+        assert_close(_value(got, "J", fd, DIFFERENCES), fd, "J", DIFFERENCES, [
             Mistake("jacobian_sign", -fd, "J = dc/dq with c = y cos phi - (x - s_k) sin phi - d (s_k = 0, s): at "
                     "phi = 0 its y-entries are +1."),
             Mistake("support_side", other_side, "The second support sits at x = +s: c2 = y cos phi - (x - s) sin phi "

@@ -41,18 +41,35 @@ def _problem(key, matrix):
     return None
 
 
+def _each(key, points):
+    return len(points)
+
+
 @probe(
-    returns=Either(Dict({"problem": Text()}), Seq(Arr(any_shape=True), length=lambda key, points: len(points))),
+    returns=Either(Dict({"problem": Text(), "transposed": Seq(Arr(any_shape=True), length=_each)},
+                        optional=("transposed",)),
+                   Seq(Arr(any_shape=True), length=_each)),
     says="the answer {0}",
 )
 def evaluate(pkg, key, points):
     """``[value at every point {symbol name: value}]`` of the answer ``key`` (``"J"``: ``impact_jacobian()``,
     ``"Lam"``: ``impulses()``, ``"s_limit"``: ``opening_limit()``); or ``{"problem": text}`` if it has the wrong
-    shape or uses symbols outside ``NAMES``."""
+    shape or uses symbols outside ``NAMES``, with ``"transposed"``, the values of its transpose, where its shape is
+    the transposed one of a matrix that is not square (the check tells whether it is the transpose asked for)."""
     matrix = _answer(pkg, key)
     problem = _problem(key, matrix)
+    shape = SHAPES[key]
+    if problem and len(shape) == 2 and shape[0] != shape[1] and matrix.shape == shape[::-1] \
+            and not _problem(key, matrix.T):  # the transpose kept beside the answer: its id keys its function
+        transposed = remembered(_ANSWERS, ("transposed", pkg.__name__, id(matrix)), lambda: matrix.T)
+        return {"problem": problem, "transposed": _values(pkg, key, transposed, points)}
     if problem:
         return {"problem": problem}
+    return _values(pkg, key, matrix, points)
+
+
+def _values(pkg, key, matrix, points):
+    """The values of ``matrix`` (of the answer ``key``'s shape) at the points."""
     function = remembered(_ANSWERS, ("function", pkg.__name__, id(matrix)), lambda: named(NAMES, matrix, "numpy"))
     return [np.array(function(*(float(point[name]) for name in NAMES)), dtype=float).reshape(SHAPES[key])
             for point in points]
