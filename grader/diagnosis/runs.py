@@ -728,10 +728,11 @@ def parameter_variants(motion: dict, args: tuple, sheet, start=None, parts=None)
 
     * ``{"arg": index, "names": (...)}``, one argument holding them all: exchanged in pairs, scaled by the
       ``PARAMETER_FACTORS``, one with a sign convention (``SIGNED``: the gravity) with its sign turned, and, where
-      the argument is given, each at the sheet's value (that parameter ignored);
+      the argument is given, each at the sheet's value (that parameter ignored) and each at zero (passed as zero);
     * ``{"args": (indices), "names": (...)}``, one argument each: exchanged in pairs (any two, where one at least is
       not given: the grammar's input slips exchange the given ones), one with a sign convention with its sign
-      turned, and each given one at the sheet's value (the argument ignored, the module's constant used instead).
+      turned, and each given one at the sheet's value (the argument ignored, the module's constant used instead)
+      and at zero (passed as zero, its term left out).
 
     ``motion["start"]`` (``{"arg": index, "name": ..., "sheet": probe}``), the argument that holds the run's start
     (``start``: the sheet's): the reference's run from the sheet's start where another is given (the argument
@@ -863,6 +864,9 @@ def _vector_variants(spec: dict, args: tuple, sheet) -> list:
             changed = values.copy()
             changed[i] = -values[i]
             found.append((_negated(i, name, changed[i]), run_with(changed)))
+    if given is not sheet:  # each given one passed as zero
+        found += [(_zeroed(i, name, values[i]), run_with(np.where(np.arange(values.size) == i, 0.0, values)))
+                  for i, name in enumerate(names) if values[i] != 0.0]
     # each parameter given at its sheet value (the module's constant used where the argument belongs)
     defaults = array_of(sheet)
     if given is not sheet and defaults is not None and defaults.shape == values.shape:
@@ -904,7 +908,19 @@ def _scalar_variants(spec: dict, args: tuple, sheet) -> list:
                           run_with({k: float(defaults[k])})))
         if values[k] != 0.0 and SIGNED.match(name):
             found.append((_negated(k, name, -values[k]), run_with({k: -values[k]})))
+        if given[k] and values[k] != 0.0:
+            found.append((_zeroed(k, name, values[k]), run_with({k: 0.0})))
     return found
+
+
+def _zeroed(k: int, name: str, value: float) -> Hypothesis:
+    """The hypothesis of a run whose parameter ``name``, given as ``value``, is passed as zero (``args=(0.0, g)``
+    for ``args=(drag, g)``): its term left out; the gravity so is the gravity missing."""
+    if SIGNED.match(name):
+        return Hypothesis(f"run:zero:{k}", "missing_gravity", 2, f"{name} = {value:g} is given, but your run is the "
+                          f"reference's with {name} = 0: the gravity is left out")
+    return Hypothesis(f"run:zero:{k}", "ignored_argument", 2, f"{name} = {value:g} is given, but your run is the "
+                      f"reference's with {name} = 0: the argument is ignored (passed as zero)")
 
 
 def _negated(k: int, name: str, value: float) -> Hypothesis:

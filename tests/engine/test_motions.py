@@ -389,6 +389,24 @@ def test_parameters_given_in_one_argument_are_each_tried_at_the_sheets_value_onl
     assert not {k for k, _ in parameter_variants(motion, (None,), (0.5, 1.0, 9.81)) if k.key.startswith("run:sheet")}
 
 
+def test_each_given_parameter_is_tried_at_zero_left_out_and_the_gravity_so_is_missing():
+    """``args=(0.0, g)`` for ``args=(drag, g)``: a parameter given but passed as zero (its term left out) is tried
+    where it is given and not zero already, in one argument or in one argument each; the gravity so is the gravity
+    missing, any other the argument ignored."""
+    from grader.diagnosis.runs import parameter_variants
+
+    motion = {"parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g")}}
+    variants = {h.key: (h, args) for h, args in parameter_variants(motion, (10.0, 0.1, 9.81), (10.0, 0.1, 9.81))}
+    assert variants["run:zero:1"][1] == (10.0, 0.0, 9.81) and variants["run:zero:1"][0].name == "ignored_argument"
+    assert variants["run:zero:2"][1] == (10.0, 0.1, 0.0) and variants["run:zero:2"][0].name == "missing_gravity"
+    variants = {h.key for h, _ in parameter_variants(motion, (10.0, 0.0), (10.0, 0.1, 9.81))}
+    assert "run:zero:1" not in variants and "run:zero:2" not in variants  # zero already; not given
+    motion = {"parameters": {"arg": 0, "names": ("m", "theta", "g")}}
+    variants = {h.key: (h, args) for h, args in parameter_variants(motion, ((0.8, 0.6, 9.81),), (0.5, 1.0, 9.81))}
+    assert variants["run:zero:2"][1] == ([0.8, 0.6, 0.0],) and variants["run:zero:2"][0].name == "missing_gravity"
+    assert not {k for k, _ in parameter_variants(motion, (None,), (0.5, 1.0, 9.81)) if k.key.startswith("run:zero")}
+
+
 def test_a_varied_run_explains_an_event_only_where_it_agrees_up_to_it_and_finds_it_at_the_students_time():
     """An event's time compared: the reference's varied run must find the event at the student's time and agree
     with the student's run before it (what follows the event is another comparison's), while the reference's own
@@ -417,7 +435,8 @@ def test_parameters_given_one_argument_each_are_exchanged_only_where_one_is_the_
 
     motion = {"parameters": {"args": (0, 1, 2), "names": ("v0", "drag", "g")}}
     variants = dict((h.key, args) for h, args in parameter_variants(motion, (10.0, 0.1), (10.0, 0.1, 9.81)))
-    assert set(variants) == {"run:swap:0:2", "run:swap:1:2", "run:negated:2"}, variants
+    assert set(variants) - {"run:zero:0", "run:zero:1"} == {"run:swap:0:2", "run:swap:1:2", "run:negated:2"}, \
+        variants
     assert variants["run:swap:0:2"] == (9.81, 0.1, 10.0)
     assert variants["run:negated:2"] == (10.0, 0.1, -9.81)
     variants = dict((h.key, args) for h, args in parameter_variants(motion, (20.0, 0.3), (10.0, 0.1, 9.81)))
