@@ -1355,14 +1355,22 @@ def _related(a: str, b: str) -> str | None:
 _FRAME_OBJECT = re.compile(r"^C\d$")
 
 
+#: what marks a text key of the function's subscripts among its names (``_names``)
+_KEY = "'"
+
+
+def _text_key(index) -> bool:
+    return isinstance(index, ast.Constant) and isinstance(index.value, str)
+
+
 def _read_slips(node, names: frozenset, attributes: frozenset):
-    """A read of a name (or of an object's attribute) replaced by a name of the function (an attribute of the
-    module) that is its rate or what it is the rate of, or the same quantity in another frame's coordinates
-    (``_related``); a coordinate system read for another (``C1`` for ``C3``), left out of a call that takes it alone
+    """A read of a name (or of an object's attribute, or of an entry under a text key) replaced by a name of the
+    function (an attribute of the module, a text key of the function's subscripts) that is its rate or what it is
+    the rate of, or the same quantity in another frame's coordinates (``_related``); a coordinate system read for another (``C1`` for ``C3``), left out of a call that takes it alone
     (``C3.get_transform()`` for ``C3.get_transform(C3)``: the default frame), or given to a call of one that takes
     none (``C3.get_transform(C1)`` for ``C3.get_transform()``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
-        for other in sorted(names):
+        for other in sorted(n for n in names if not n.startswith(_KEY)):
             slip = _related(node.id, other)
             if slip is not None:
                 yield slip, lambda n, other=other: ast.Name(other, ast.Load())
@@ -1371,6 +1379,11 @@ def _read_slips(node, names: frozenset, attributes: frozenset):
             slip = _related(node.attr, other)
             if slip is not None:
                 yield slip, lambda n, other=other: _with(n, attr=other)
+    elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load) and _text_key(node.slice):
+        for other in sorted(k for k in names if k.startswith(_KEY)):  # ``A["A_IC3"]`` for ``A["A_IC2"]``
+            slip = _related(node.slice.value, other[len(_KEY):])
+            if slip is not None:
+                yield slip, lambda n, other=other: _with(n, slice=ast.Constant(other[len(_KEY):]))
     elif isinstance(node, (ast.List, ast.Tuple)) and isinstance(node.ctx, ast.Load) and len(node.elts) >= 2 \
             and all(isinstance(e, ast.Name) for e in node.elts):
         # ``[q1, q2]`` for ``[dq1, dq2]``: every entry read as what its rate belongs to, or the reverse
@@ -2703,9 +2716,13 @@ def _used_parameters(function: ast.FunctionDef, parameters: frozenset) -> frozen
 
 
 def _names(function: ast.FunctionDef) -> frozenset:
-    """The names a function reads or binds, and its arguments."""
+    """The names a function reads or binds, and its arguments; and the text keys of its subscripts and of its
+    dicts' entries, each marked by ``_KEY`` (no name begins so)."""
     arguments = function.args.posonlyargs + function.args.args + function.args.kwonlyargs
-    return frozenset({n.id for n in ast.walk(function) if isinstance(n, ast.Name)} | {a.arg for a in arguments})
+    keys = {n.slice.value for n in ast.walk(function) if isinstance(n, ast.Subscript) and _text_key(n.slice)} | \
+        {k.value for n in ast.walk(function) if isinstance(n, ast.Dict) for k in n.keys if _text_key(k)}
+    return frozenset({n.id for n in ast.walk(function) if isinstance(n, ast.Name)} | {a.arg for a in arguments}
+                     | {_KEY + k for k in keys})
 
 
 def _parented(root):
