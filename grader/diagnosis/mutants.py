@@ -1366,7 +1366,8 @@ def _text_key(index) -> bool:
 def _read_slips(node, names: frozenset, attributes: frozenset):
     """A read of a name (or of an object's attribute, or of an entry under a text key) replaced by a name of the
     function (an attribute of the module, a text key of the function's subscripts) that is its rate or what it is
-    the rate of, or the same quantity in another frame's coordinates (``_related``); a coordinate system read for another (``C1`` for ``C3``), left out of a call that takes it alone
+    the rate of, or the same quantity in another frame's coordinates (``_related``); a coordinate system read for
+    another (``C1`` for ``C3``), left out of a call that takes it alone
     (``C3.get_transform()`` for ``C3.get_transform(C3)``: the default frame), or given to a call of one that takes
     none (``C3.get_transform(C1)`` for ``C3.get_transform()``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
