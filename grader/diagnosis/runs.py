@@ -40,6 +40,7 @@ from .scene import Scene
 
 __all__ = [
     "START_KEY",
+    "OFFSET_KEY",
     "variant_sheets",
     "FIXED_STEPS",
     "STEP_WINDOW",
@@ -83,6 +84,8 @@ __all__ = [
 #: the key of a run's start that differs from the given one (``motion_slips``), and the prefix of the keys of the
 #: slips of a value that made it (``engine``)
 START_KEY = "motion:start"
+#: the key of a run that is the reference's plus a constant offset (and, beginning so, of its start moved by it)
+OFFSET_KEY = "motion:offset"
 #: the steps of the reference's fixed-step runs that a run's error is compared with [s]
 FIXED_STEPS = (0.005, 0.01, 0.02, 0.05)
 #: the states along the reference's run at which the student's right-hand side is compared with the reference's,
@@ -179,11 +182,11 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
     offsets = {k: np.mean(G[k] - R[k], axis=0) for k in keys}
     if all(within(G[k] - offsets[k], R[k], tol) for k in keys):
         words = "; ".join(f"{k}: {format_array(offsets[k])}" for k in wrong)
-        found.append(Hypothesis("motion:offset", "offset", 2, f"your run is the reference's plus a constant offset "
+        found.append(Hypothesis(OFFSET_KEY, "offset", 2, f"your run is the reference's plus a constant offset "
                                  f"({words})"))
         if abs(t[0] - t_r[0]) < 1e-9:  # a run from a start moved by the offset looks the same where the motion
             # does not depend on where it is (a height, say)
-            found.append(Hypothesis("motion:offset-start", "initial_state", 2, f"your run starts at {words} from "
+            found.append(Hypothesis(f"{OFFSET_KEY}-start", "initial_state", 2, f"your run starts at {words} from "
                                      "the given state and keeps that offset"))
     # a state read from the wrong row
     rows = reread(G, R, keys, tol)

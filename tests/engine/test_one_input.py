@@ -113,6 +113,40 @@ def test_a_start_that_no_slip_gives_is_told_as_a_wrong_start_alone(monkeypatch):
     assert _names(_explain_start(monkeypatch, one)) == ("initial_state",)
 
 
+#: a run of two states: a matrix's nine entries that drift at a constant rate (a motion that does not depend on where
+#: it is: a start moved keeps its offset) and three rates that stay as they are
+MATRIX, DRIFT = np.linspace(-0.93, 0.87, 9) + np.pi / 1000, np.linspace(0.1, 0.9, 9)
+W = np.array([0.3, -1.1, 0.7]) + np.e / 1000
+
+
+def _drift(start):
+    return {"t": T, "A": start + np.outer(T, DRIFT), "w": np.tile(W, (T.size, 1))}
+
+
+def _explain_drift(monkeypatch, start):
+    """A run ``drift()`` of a matrix and rates, the student's from the matrix ``start``, compared tightly."""
+    monkeypatch.setitem(engine.DECLARATIONS, "stub.drift", Declaration(motion={"time": "t", "states": ("A", "w")}))
+    expected, got = _drift(MATRIX), _drift(start)
+
+    class Ctx(_Ctx):
+        calls = [("reference", "stub.drift", (), expected), ("student", "stub.drift", (), got)]
+        oracle = StandInOracle({"stub.drift": lambda: expected})
+        child = StandInChild({"stub.drift": lambda: got})
+
+    return explain(Ctx(), [Evidence(got["A"], expected["A"], Tol("tight", 1e-12, 1e-12), "A", got, expected)])
+
+
+def test_a_start_of_one_state_in_float32_is_told_as_float32_beside_the_wrong_start_not_an_offset(monkeypatch):
+    """``as_matrix(A_IB).astype(np.float32)``: the start of one state (a matrix) in single precision, the other
+    states' in double: the rounded state's every entry is exact in single precision, which no number count tells,
+    and the run keeps the start's offset: told as the start made in float32, not as a constant offset; a start of
+    that state moved by a like amount that no rounding gives is told as a wrong start or an offset."""
+    finding = _explain_drift(monkeypatch, MATRIX.astype(np.float32).astype(float))
+    assert set(_names(finding)) == {"initial_state", "float32"}, finding
+    moved = _explain_drift(monkeypatch, MATRIX + 3e-8)
+    assert "float32" not in _names(moved) and "offset" in _names(moved), moved
+
+
 # ------------------------------------------------------------------------------------------ any value on one input
 
 
