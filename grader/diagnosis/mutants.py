@@ -732,6 +732,7 @@ SLIPS = {
     "keyword_point": ("offset", "a call in `{f}` leaves out a point's position among its keyword arguments, so that "
                                 "the callee's default puts the point elsewhere"),
     "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
+    "whole_sum": ("extra_term", "`{f}` sums every entry of a matrix where its trace (the diagonal's sum) belongs"),
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
     "identity_left_out": ("missing_identity", "the identity matrix of a product in `{f}` is left out (the number "
@@ -2069,6 +2070,10 @@ def _call_slips(node: ast.Call):
         yield "magnitude", lambda n: n.args[0]
     if callee == "eye" and len(args) == 1 and not node.keywords:  # ``np.eye(3) + W`` as ``1.0 + W``
         yield "identity", lambda n: ast.Constant(1.0)
+    if callee == "trace" and len(args) == 1 and not node.keywords:  # ``np.sum(S)`` for ``np.trace(S)``
+        yield "whole_sum", lambda n: ast.Call(_np("sum"), [n.args[0]], [])
+    elif callee == "trace" and not args and not node.keywords and isinstance(node.func, ast.Attribute):
+        yield "whole_sum", lambda n: ast.Call(_np("sum"), [n.func.value], [])  # ``S.sum()`` for ``S.trace()``
     yield from _single_slips(node)
     if callee in ("inv", "solve") or any(isinstance(a, ast.Starred) for a in args):
         return
