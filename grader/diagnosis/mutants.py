@@ -607,6 +607,7 @@ SLIPS = {
     "distributed": ("missing_factor", "a factor in `{f}` multiplies one term of a sum only, not the whole sum"),
     "rotated": ("wrong_frame", "a rotation in `{f}` is applied to one term of a sum only, not the whole sum"),
     "entry_sign": ("sign_flip", "one entry that `{f}` builds has the wrong sign"),
+    "vector_sign": ("sign_flip", "a vector that `{f}` writes out has the wrong sign (every entry's sign turned)"),
     "written_index": ("wrong_index", "`{f}` writes an entry into a neighbouring index (row or column)"),
     "kept_adding": ("extra_term", "`{f}` adds a new value to the one its object keeps where it should replace it"),
     "one_inverted": ("no_inverse", "`{f}` inverts one factor of a product where the whole product's inverse "
@@ -1426,6 +1427,24 @@ def _entry_slips(node, parent):
     if isinstance(parent, ast.List) and isinstance(parent.ctx, ast.Load) \
             and not isinstance(node, (ast.List, ast.Tuple, ast.Starred)) and not _zero(node):
         yield "zeroed", lambda n: ast.Constant(0.0)
+    if _written_vector(node):  # ``(DX, -DY, 0.0)`` for ``(-DX, DY, 0.0)``: every entry's sign turned
+        yield "vector_sign", lambda n: _with(n, elts=[e if _zero(e) else _sign_turned(e) for e in n.elts])
+
+
+def _written_vector(node) -> bool:
+    """A vector written out of numbers and constants (``(-DX, DY, 0.0)``), two entries at least not zero."""
+    def entry(e):
+        e = e.operand if isinstance(e, ast.UnaryOp) and isinstance(e.op, ast.USub) else e
+        return _number(e) or (isinstance(e, ast.Name) and e.id.isupper()) \
+            or (isinstance(e, ast.Attribute) and e.attr.isupper())
+
+    return isinstance(node, (ast.Tuple, ast.List)) and isinstance(node.ctx, ast.Load) and len(node.elts) >= 2 \
+        and all(entry(e) for e in node.elts) and sum(not _zero(e) for e in node.elts) >= 2
+
+
+def _sign_turned(node):
+    """``node`` with its sign turned: a negation taken off, else one put on."""
+    return node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else _negated(node)
 
 
 def _zero(node) -> bool:
