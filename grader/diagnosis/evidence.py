@@ -274,9 +274,10 @@ def _fed(value, parts: list, depth: int) -> None:
         for item in value:
             _fed(item, parts, depth + 1)
     elif isinstance(value, dict):
-        items = sorted(((str(k), v) for k, v in value.items()), key=lambda entry: entry[0])
-        if len({k for k, _ in items}) != len(items):
-            raise _Unkeyed
+        merged = {}  # keys as text, and of two keys alike as text the later entry, as the codec writes a dict
+        for k, item in value.items():
+            merged[str(k)] = item
+        items = sorted(merged.items(), key=lambda entry: entry[0])
         parts.append(b"{" + repr(len(items)).encode() + b":")
         for k, item in items:
             _fed(k, parts, depth + 1)
