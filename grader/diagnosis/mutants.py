@@ -580,6 +580,8 @@ SLIPS = {
     "trigs": ("sin_cos_swapped", "`{f}` takes sin where cos belongs and cos where sin belongs in one expression"),
     "rows": ("state_row", "`{f}` reads a part of the state from the wrong rows"),
     "solved": ("multiplied_not_solved", "`{f}` multiplies by a matrix where it should solve with it"),
+    "unsolved": ("no_inverse", "`{f}` leaves out a solve: the right-hand side where the matrix's inverse times it "
+                               "belongs"),
     "solve_scope": ("no_inverse", "`{f}` solves with a matrix for part of a sum only: the rest is added outside the "
                                   "solve, without the inverse it belongs under"),
     "inverse": ("no_inverse", "`{f}` uses a matrix where its inverse belongs"),
@@ -2058,6 +2060,7 @@ def _call_slips(node: ast.Call):
         yield "count", lambda n: ast.Call(ast.Name("len", ast.Load()), [_summed(n)], [])
     if callee == "solve" and len(args) == 2 and not node.keywords:
         yield "solved", lambda n: ast.BinOp(n.args[0], ast.MatMult(), n.args[1])
+        yield "unsolved", lambda n: n.args[1]  # ``b`` for ``solve(A, b)``: the matrix's inverse left out
         if not (isinstance(args[0], ast.Attribute) and args[0].attr == "T"):  # ``solve(A.T, b)``: the system's
             # matrix transposed (its blocks ``-J.T`` and ``J`` exchanged), as a product's factor may be
             yield "transpose", lambda n: _with(n, args=[_transposed(n.args[0]), n.args[1]])
