@@ -597,6 +597,7 @@ SLIPS = {
     "norm": ("wrong_factor", "`{f}` takes a square root of a sum of squares where the sum belongs"),
     "rates": ("state_row", "`{f}` reads a quantity where its rate belongs, or a rate where the quantity belongs"),
     "frame_objects": ("wrong_frame", "`{f}` reads one coordinate system where another belongs (``C1`` for ``C3``)"),
+    "trig_names": ("sin_cos_swapped", "`{f}` reads a sine's values where the cosine's belong (or the reverse)"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
     "identity_block": ("extra_term", "`{f}` writes the identity where a square block of zeros belongs (``np.eye(k)`` "
                                      "for ``np.zeros((k, k))``)"),
@@ -1346,13 +1347,22 @@ def _siblings(a: str, b: str) -> bool:
         and all(len(p) == 1 and p.isupper() for p in (first[-1], second[-1]))
 
 
+def _trig_siblings(a: str, b: str) -> bool:
+    """Two names of a sine's and a cosine's like values: one part (between underscores) ``sin`` in one where the
+    other has ``cos`` (``sin_coeffs`` and ``cos_coeffs``)."""
+    first, second = a.split("_"), b.split("_")
+    differ = [(x, y) for x, y in zip(first, second) if x != y]
+    return len(first) == len(second) >= 2 and len(differ) == 1 and set(differ[0]) == {"sin", "cos"}
+
+
 def _related(a: str, b: str) -> str | None:
-    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames", "siblings" or None."""
+    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames", "siblings", "trig_names" or None."""
     if a == b:
         return None
     if _FRAME_OBJECT.match(a) and _FRAME_OBJECT.match(b):  # ``C1.get_transform()`` for ``C3.get_transform()``
         return "frame_objects"
-    return "rates" if _rates(a, b) else "frames" if _frames(a, b) else "siblings" if _siblings(a, b) else None
+    return "rates" if _rates(a, b) else "frames" if _frames(a, b) else "siblings" if _siblings(a, b) \
+        else "trig_names" if _trig_siblings(a, b) else None
 
 
 #: a coordinate system by the course's notation (``C1``, ``C2``, ``C3``: the frames of problems 6 and 9)
