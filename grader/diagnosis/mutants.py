@@ -736,6 +736,8 @@ SLIPS = {
     "keyword_point": ("offset", "a call in `{f}` leaves out a point's position among its keyword arguments, so that "
                                 "the callee's default puts the point elsewhere"),
     "inverses": ("no_inverse", "`{f}` leaves out every inverse (and solve) of one statement"),
+    "principal": ("missing_term", "`{f}` multiplies by an inertia's diagonal alone (the principal moments), its "
+                                  "off-diagonal entries left out"),
     "whole_sum": ("extra_term", "`{f}` sums every entry of a matrix where its trace (the diagonal's sum) belongs"),
     "identity": ("extra_term", "`{f}` writes the identity matrix as the number 1 (numpy adds it to every entry, not "
                                "to the diagonal alone)"),
@@ -1367,6 +1369,9 @@ def _related(a: str, b: str) -> str | None:
 
 #: a coordinate system by the course's notation (``C1``, ``C2``, ``C3``: the frames of problems 6 and 9)
 _FRAME_OBJECT = re.compile(r"^C\d$")
+#: an inertia by the course's notation (``I``, ``B_I_B``, ``theta``), whose product with a vector the principal
+#: moments alone do not give where axes are not principal
+_INERTIA = re.compile(r"^(I|Theta|theta|inertia\w*|[A-Z][A-Za-z0-9]*_I_[A-Z][A-Za-z0-9]*)$")
 
 
 #: what marks a text key of the function's subscripts among its names (``_names``)
@@ -1898,6 +1903,8 @@ def _pairs(count: int):
 def _binop_slips(node: ast.BinOp):
     yield from _distributed_slips(node)
     op = node.op
+    if isinstance(op, ast.MatMult) and _INERTIA.match(_label(node.left) or "-"):  # ``np.diag(I) * w`` for ``I @ w``
+        yield "principal", lambda n: ast.BinOp(ast.Call(_np("diag"), [n.left], []), ast.Mult(), n.right)
     if isinstance(op, ast.Sub) and isinstance(node.left, ast.BinOp) and isinstance(node.left.op, ast.Sub):
         yield "sign", _all_added  # ``a + f + g`` for ``a - f - g``: every term subtracted added instead
     if isinstance(op, ast.Add) and all(isinstance(side, ast.BinOp) and isinstance(side.op, ast.Mult)
