@@ -704,6 +704,8 @@ SLIPS = {
     "constant_converted_back": ("degrees", "the constant `{f}` is converted the wrong way (rad2deg where deg2rad "
                                            "belongs, or the reverse)"),
     "constant_typed": ("rounded", "the constant `{f}` is typed short (pi / 2 as 1.57)"),
+    "constant_single": ("float32", "the constant `{f}` is an array of single precision (``dtype=np.float32``) where "
+                                   "numpy's float64 belongs"),
     "constant_transposed": ("transpose", "a matrix of the constant `{f}` is written transposed (its rows as "
                                          "columns)"),
     "constants": ("swapped", "the constants `{f}` are exchanged"),
@@ -762,7 +764,7 @@ _DTYPES = frozenset({"single", "integer", "integer_call"})
 #: written as its neighbour, a quantity read for its rate (``zip(q, qdd)`` for ``zip(q, qd)``)
 _KEEP_COUNT = _EXCHANGES | _DTYPES | frozenset({"repeated", "rates"})
 #: the slips of precision: told only where the student's value is in the band of precision (``PRECISION_BAND``)
-PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed", "constant_typed"})
+PRECISION_SLIPS = frozenset({"single", "single_argument", "short", "typed", "constant_typed", "constant_single"})
 #: the largest difference between the student's value and the expected one, relative to the expected value's size,
 #: that a slip of precision makes (a constant typed to two decimals, float32 accumulated over a run: pi as 3.14 is
 #: 5e-4, g as 9.8 is 1e-3, float32 alone about 1e-7); past it a slip of precision is not told
@@ -4444,6 +4446,10 @@ def _number_slips(expression):
     conversion of an angle the other way (``_BACK``), and an expression of numbers in it that is not one number
     (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
     parents = {id(child): node for node in ast.walk(expression) for child in ast.iter_child_nodes(node)}
+    if isinstance(expression, ast.Call) and _callee(expression) in ("array", "asarray") \
+            and not any(k.arg == "dtype" for k in expression.keywords):  # ``np.array([...], dtype=np.float32)``
+        yield "constant_single", 0, _with(expression, keywords=[*expression.keywords,
+                                                                ast.keyword("dtype", _float32())])
     for index, node in enumerate(ast.walk(expression)):
         if _conversion(node):
             yield "constant_converted_back", index, _converted_back(node)

@@ -297,6 +297,27 @@ def test_an_expression_of_a_constant_changed_otherwise_is_no_sign(tmp_path):
     assert "sign_flip" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
 
 
+def test_an_array_constant_of_single_precision_is_float32(tmp_path):
+    """Problem 38's gravity on the slope typed as an array of ``dtype=np.float32``: its entries rounded to single
+    precision, which the walker's right-hand side carries into its accelerations; the near miss, the gravity's
+    entries typed to four decimals (a rounding no float32 gives), is no float32."""
+    def slips(new, folder):  # the answers differ from the expected ones by little: beyond a tight tolerance
+        student = planted_package(tmp_path / folder, "problem_38.py",
+                                  "I_GRAV = np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0])", new)
+        try:
+            evidences = [evidence("problem_38.walker_ode", ([(t, y)],), (0,), student)
+                         for t, y in ((0.3, [0.2, -0.4, 0.7, -1.1]), (1.1, [-0.6, 0.5, -0.3, 0.9]))]
+            assert all(not np.array_equal(e.got, e.expected) for e in evidences)
+            return mutants.mutant_slips(scene("p38.walker_ode"), evidences)
+        finally:
+            drop_private(student)
+
+    assert_told(slips("I_GRAV = np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0], dtype=np.float32)", "single"), "float32",
+                "`I_GRAV` is an array of single precision")
+    found = slips("I_GRAV = np.round(np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0]), 4)", "rounded")
+    assert "float32" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
+
+
 def test_an_entry_of_a_constant_written_0_is_a_term_left_out_and_an_offset(tmp_path):
     """Problem 46's wire anchor with its first coordinate typed 0: a number of the data the module holds, which
     is where the anchor sits; told as a term left out and as an offset, as an entry of a list that a given
