@@ -751,10 +751,11 @@ def _start_slips(run: Evidence, decl: Declaration, cost: int) -> list:
 def _rounded_states(G: dict, R: dict, keys: list, tol: Tol) -> list:
     """The rounding slips (``precision_slips``) of the run's start in one of its states ``keys`` (the student's
     ``G``, the reference's ``R``) that differs, every other state's start within the tolerance."""
-    off = [k for k in keys if not within(np.asarray(G[k][0], dtype=float), np.asarray(R[k][0], dtype=float), tol)]
+    starts = [(np.asarray(G[k][0], dtype=float), np.asarray(R[k][0], dtype=float)) for k in keys]
+    off = [(mine, theirs) for mine, theirs in starts if not within(mine, theirs, tol)]
     if len(off) != 1:
         return []
-    mine, theirs = (np.asarray(X[off[0]][0], dtype=float) for X in (G, R))
+    (mine, theirs), = off
     return precision_slips(mine, theirs, tol) if mine.shape == theirs.shape and np.all(np.isfinite(mine)) else []
 
 

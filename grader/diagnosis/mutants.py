@@ -1376,23 +1376,19 @@ _FRAME_OBJECT = re.compile(r"^C\d$")
 _INERTIA = re.compile(r"^(I|Theta|theta|inertia\w*|[A-Z][A-Za-z0-9]*_I_[A-Z][A-Za-z0-9]*)$")
 
 
-#: what marks a text key of the function's subscripts among its names (``_names``)
-_KEY = "'"
-
-
 def _text_key(index) -> bool:
     return isinstance(index, ast.Constant) and isinstance(index.value, str)
 
 
-def _read_slips(node, names: frozenset, attributes: frozenset):
+def _read_slips(node, names: frozenset, attributes: frozenset, keys: frozenset = frozenset()):
     """A read of a name (or of an object's attribute, or of an entry under a text key) replaced by a name of the
-    function (an attribute of the module, a text key of the function's subscripts) that is its rate or what it is
+    function (an attribute of the module, a text key of the function's, ``_text_keys``) that is its rate or what it is
     the rate of, or the same quantity in another frame's coordinates (``_related``); a coordinate system read for
     another (``C1`` for ``C3``), left out of a call that takes it alone
     (``C3.get_transform()`` for ``C3.get_transform(C3)``: the default frame), or given to a call of one that takes
     none (``C3.get_transform(C1)`` for ``C3.get_transform()``)."""
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
-        for other in sorted(n for n in names if not n.startswith(_KEY)):
+        for other in sorted(names):
             slip = _related(node.id, other)
             if slip is not None:
                 yield slip, lambda n, other=other: ast.Name(other, ast.Load())
@@ -1402,10 +1398,10 @@ def _read_slips(node, names: frozenset, attributes: frozenset):
             if slip is not None:
                 yield slip, lambda n, other=other: _with(n, attr=other)
     elif isinstance(node, ast.Subscript) and isinstance(node.ctx, ast.Load) and _text_key(node.slice):
-        for other in sorted(k for k in names if k.startswith(_KEY)):  # ``A["A_IC3"]`` for ``A["A_IC2"]``
-            slip = _related(node.slice.value, other[len(_KEY):])
+        for other in sorted(keys):  # ``A["A_IC3"]`` for ``A["A_IC2"]``
+            slip = _related(node.slice.value, other)
             if slip is not None:
-                yield slip, lambda n, other=other: _with(n, slice=ast.Constant(other[len(_KEY):]))
+                yield slip, lambda n, other=other: _with(n, slice=ast.Constant(other))
     elif isinstance(node, (ast.List, ast.Tuple)) and isinstance(node.ctx, ast.Load) and len(node.elts) >= 2 \
             and all(isinstance(e, ast.Name) for e in node.elts):
         # ``[q1, q2]`` for ``[dq1, dq2]``: every entry read as what its rate belongs to, or the reverse
@@ -2636,7 +2632,7 @@ def _mutated(function: _Function, lines: tuple):
              if _in(node, lines)]
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
-    names, parameters = _names(function.node), _parameters(function.node)
+    names, parameters, keys = _names(function.node), _parameters(function.node), _text_keys(function.node)
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
@@ -2663,7 +2659,7 @@ def _mutated(function: _Function, lines: tuple):
             slips = _single_slips(node) if isinstance(node, ast.Call) else ()
         else:
             slips = itertools.chain(_slips(node, parent), _entry_slips(node, parent),
-                                    _read_slips(node, names, function.attributes),
+                                    _read_slips(node, names, function.attributes, keys),
                                     _trig_read_slips(node, parent, others),
                                     _keyword_slips(node, function.keywords), _first_slips(node, parent),
                                     _position_slips(node),
@@ -2763,13 +2759,16 @@ def _used_parameters(function: ast.FunctionDef, parameters: frozenset) -> frozen
 
 
 def _names(function: ast.FunctionDef) -> frozenset:
-    """The names a function reads or binds, and its arguments; and the text keys of its subscripts and of its
-    dicts' entries, each marked by ``_KEY`` (no name begins so)."""
+    """The names a function reads or binds, and its arguments."""
     arguments = function.args.posonlyargs + function.args.args + function.args.kwonlyargs
-    keys = {n.slice.value for n in ast.walk(function) if isinstance(n, ast.Subscript) and _text_key(n.slice)} | \
-        {k.value for n in ast.walk(function) if isinstance(n, ast.Dict) for k in n.keys if _text_key(k)}
-    return frozenset({n.id for n in ast.walk(function) if isinstance(n, ast.Name)} | {a.arg for a in arguments}
-                     | {_KEY + k for k in keys})
+    return frozenset({n.id for n in ast.walk(function) if isinstance(n, ast.Name)} | {a.arg for a in arguments})
+
+
+def _text_keys(function: ast.FunctionDef) -> frozenset:
+    """The text keys of a function's subscripts and of its dicts' entries (``A["A_IC2"]``)."""
+    return frozenset({n.slice.value for n in ast.walk(function) if isinstance(n, ast.Subscript)
+                      and _text_key(n.slice)}
+                     | {k.value for n in ast.walk(function) if isinstance(n, ast.Dict) for k in n.keys if _text_key(k)})
 
 
 def _parented(root):
