@@ -350,6 +350,13 @@ def check_driven_rate(ctx):
     if np.isclose(slope, RATE * 180 / np.pi, rtol=0.05) or np.isclose(slope, RATE * np.pi / 180, rtol=0.05):
         fail(message, "The rate is in rad/s: you converted it as if it were in degrees (or converted degrees "
              "twice).", "rate_degrees")
+    if np.isclose(slope, RATE, rtol=0.02) and not abs(start - start_ref) <= DRIVEN.atol:
+        # the drive turns the joint at its rate, from a start at another: the keyframe's initial velocity, not
+        # the servo (a servo's stiffness has no say at t = 0)
+        fail(f"{message}\nIts drive turns it at the rate, but it starts at {start:.4g} rad/s where q1 = {RATE:g} t "
+             f"turns at {start_ref:.4g} rad/s" + (", the other way" if start * start_ref < 0 else "") + ".",
+             "Start joint 1 at the rate it is driven at: the keyframe's initial velocity is the rate itself, "
+             '<key qvel="rate 0" ctrl="rate"/>.', "initial_state")
     if np.isclose(slope, RATE, rtol=0.02):
         stepped = stepped_otherwise(got)
         if stepped:  # a servo that lags and a model stepped otherwise both stray from q1 = t on the right average
