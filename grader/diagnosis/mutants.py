@@ -1957,6 +1957,11 @@ def _binop_slips(node: ast.BinOp):
             yield "factor", lambda n: _with(n, left=ast.Constant(1.0))  # ``m / 12`` as ``1 / 12``: the mass left out
         if not _reciprocal(node):  # ``12 / m`` as ``m / 12`` (``1 / x`` as ``x``: a reciprocal, the inputs' slip)
             yield "ratio", lambda n: _with(n, left=n.right, right=n.left)
+        if isinstance(node.left, ast.BinOp) and isinstance(node.left.op, ast.Mult):
+            # ``-m J v / (m a**2 + J)`` as ``-(m a**2 + J) v / (m J)``: the ratio that scales a quantity upside
+            # down, the quantity kept on top (the last factor of the numerator, or the first)
+            yield "ratio", lambda n: ast.BinOp(ast.BinOp(n.right, ast.Mult(), n.left.right), ast.Div(), n.left.left)
+            yield "ratio", lambda n: ast.BinOp(ast.BinOp(n.left.left, ast.Mult(), n.right), ast.Div(), n.left.right)
     elif isinstance(op, ast.MatMult):
         if ast.dump(node.left) == ast.dump(node.right) and not isinstance(node.left, (ast.Attribute, ast.Call)):
             yield "norm", _root_of  # ``np.sqrt(r @ r)`` for ``r @ r``: the length where its square belongs
