@@ -55,7 +55,7 @@ from .grammar import (
 from . import trace
 from .models import is_model, model_slips
 from .rebound import REBOUND, rebound_input
-from .mutants import KIT_NOTE, left_to_live, mutant_slips, opposite_slips
+from .mutants import Contested, KIT_NOTE, left_to_live, mutant_slips, opposite_slips
 from .scene import Budget, constants_of, evidence_at, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
 from .runs import (
@@ -673,10 +673,13 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
         explaining = _without_arrays_ignored(tiers)
         told = {DIAGNOSES[h.name].family for tier in explaining for h in tier} if any(explaining) else None
         untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
-        formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
-                                               lambda: _second_input(scene, evidences[-1]), told, untested,
-                                               tuple(unreached)),
-                          any(explaining), "formulas")
+        try:
+            formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
+                                                   lambda: _second_input(scene, evidences[-1]), told, untested,
+                                                   tuple(unreached)),
+                              any(explaining), "formulas")
+        except Contested:  # rivals of the earlier explanation, of too many families to tell
+            return None
         formulas = _unscaled(_told_apart(formulas), evidences)
         if not formulas and left_to_live(scene, evidences):
             tiers = _beside(tiers)

@@ -208,7 +208,7 @@ __all__ = ["MAX_MUTANTS", "TIME_BUDGET", "SCREENED_TIME_BUDGET", "MAKING_TIME_BU
            "LATE_MUTANTS", "LATE_TIME_BUDGET", "NEIGHBOURS", "COST", "KIT_NOTE", "NAMES_A_FUNCTION", "SLIPS",
            "PRECISION_SLIPS", "PRECISION_BAND", "PRECISION_SHARE", "RIVALS", "OPPOSITES", "OPERANDS_EXCHANGED",
            "FACTORS_REORDERED", "TRANSPOSED", "EFFECT_RIVALS", "PACE_NOMINAL", "PACE_MOST", "Mutant", "rivals",
-           "mutants_of", "mutant_slips", "opposite_slips", "late", "left_to_live", "pace"]
+           "mutants_of", "mutant_slips", "Contested", "opposite_slips", "late", "left_to_live", "pace"]
 
 
 #: the mutants one explanation evaluates at most (past it, nothing is named: the slips were not all tried)
@@ -3889,7 +3889,30 @@ def _slips_on(scene, evidences: list[Evidence], another, told, untested, unreach
                 trace.note("third", kept=None if kept is None else sorted({m.name for m in kept}))
     except GraderFault:
         return []
+    if told is not None and kept:
+        _contest(kept, told)
     return _hypotheses(kept or [], inputs, untested, unreached)
+
+
+class Contested(Exception):
+    """An earlier tier's explanation that the formula tier contests: slips of the reference's code of more
+    families than can be told (``MAX_FAMILIES``), some of them not the earlier tier's, reproduce the answer as
+    well, so the earlier finding is one reading among too many (``A_DsDp.T @ a`` negates an acceleration of a
+    pendulum as a sign would, and is also a factor exchanged and a frame the other way).  No cost outranks a
+    rival that reproduces the answer on the same inputs: nothing is told."""
+
+    def __init__(self, families):
+        super().__init__(", ".join(families))
+        self.families = tuple(families)
+
+
+def _contest(kept: list, told) -> None:
+    """Raise ``Contested`` where the formula tier heard late (``told``: the families an earlier tier explained the
+    answer with) kept slips of more than ``MAX_FAMILIES`` families, one of them at least not told."""
+    families = {DIAGNOSES[m.name].family for m in kept}
+    if len(families) > MAX_FAMILIES and families - set(told):
+        trace.note("contested", told=sorted(told), families=sorted(families))
+        raise Contested(sorted(families))
 
 
 def own_calls(evidences: list[Evidence]) -> list[Evidence]:
