@@ -657,6 +657,9 @@ SLIPS = {
                                        "where the ellipsoid's 20 belongs)"),
     "coordinate": ("state_row", "`{f}` reads one coordinate where another unpacked with it belongs (``q1`` for ``q2`` "
                                 "of ``q1, q2 = q``): a value read from another's row"),
+    "unsolved_read": ("inverse_left_out", "`{f}` reads the right-hand side of a solve where the solved value belongs "
+                                          "(``J @ J.T`` for ``J @ Minv_JT`` of ``Minv_JT = solve(M, J.T)``): the "
+                                          "matrix's inverse left out there"),
     "parameter_read": ("wrong_parameter", "`{f}` reads one of its arguments where another one that the same line "
                                           "reads belongs (the width for the height)"),
     "stored_from": ("value_unused", "`{f}` stores one of its arguments from another (a line copied from its "
@@ -2418,6 +2421,14 @@ def _bound_terms(function: ast.FunctionDef) -> dict:
     return found
 
 
+def _bound_solves(function: ast.FunctionDef) -> dict:
+    """``{name: the right-hand side}`` of the names the function binds once, and to a solve (``Minv_JT =
+    np.linalg.solve(M, J.T)``: ``J.T``)."""
+    return {name: value.args[1] for name, value in _bound_once(function).items()
+            if isinstance(value, ast.Call) and len(value.args) == 2 and not value.keywords
+            and (getattr(value.func, "attr", None) or getattr(value.func, "id", None)) == "solve"}
+
+
 def _stored_reads(function: ast.FunctionDef) -> dict:
     """``{id of a read: the other arguments}`` of a constructor's reads of its arguments in the statements that
     store them (``self.B_a_B = _vector_or_zeros(B_a_B)``), where it stores two or more: the others, each one a read
@@ -2495,7 +2506,7 @@ def _built(function: ast.FunctionDef) -> frozenset:
 
 
 def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
-                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {}, {}),
+                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {}, {}, {}),
                 numbers: frozenset = frozenset()):
     """One read of a name for another of its kind: an angle for another angle that the function reads (``np.cos(beta)``
     for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the read of the sum for
@@ -2504,14 +2515,16 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     from a start read as that start (``_starts``: the computation left unused); a slice's axes exchanged in one
     statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
     say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``).
-    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads, _unpacked_together)`` of the function: a
-    name bound to a sum read as one of its terms (the others left out there), a constructor's argument stored from
-    another one it stores (a line copied from its neighbour), a list of names with one that is read nowhere else
-    written as its neighbour, one read of an argument where another that the same line reads belongs (not of an
-    angle: its own slip), and one read of a coordinate where another unpacked with it belongs (``q1`` for ``q2`` of
-    ``q1, q2 = q``: read from the other's row; of two angles, the angle's slip).  A number a product or a quotient
+    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads, _unpacked_together, _bound_solves)`` of
+    the function: a name bound to a sum read as one of its terms (the others left out there), a constructor's argument
+    stored from another one it stores (a line copied from its neighbour), a list of names with one that is read
+    nowhere else written as its neighbour, one read of an argument where another that the same line reads belongs
+    (not of an angle: its own slip), one read of a coordinate where another unpacked with it belongs (``q1`` for
+    ``q2`` of ``q1, q2 = q``: read from the other's row; of two angles, the angle's slip), and one read of a name
+    bound to a solve as the solve's right-hand side (``J @ J.T`` for ``J @ Minv_JT`` of ``Minv_JT = solve(M, J.T)``:
+    the inverse left out of that product alone).  A number a product or a quotient
     takes typed as another that a formula of the module takes (``numbers``: ``m / 20`` for ``m / 12``)."""
-    terms, stored, once, siblings, unpacked = reads
+    terms, stored, once, siblings, unpacked, solved = reads
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
@@ -2527,6 +2540,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
         for other in unpacked.get(node.id, ()):
             if not (node.id in angles and other in angles):
                 yield "coordinate", lambda n, other=other: ast.Name(other, ast.Load())
+        if node.id in solved:  # ``J @ J.T`` for ``J @ Minv_JT``: the solve's right-hand side where its value belongs
+            yield "unsolved_read", lambda n: copy.deepcopy(solved[n.id])
         for slip, value in defaults.get(node.id, ()):
             yield slip, lambda n, value=value: copy.deepcopy(value)
         if node.id in starts:  # ``cardan(*ANGLES0)`` for ``cardan(*angles)``: the start for the value computed
@@ -2643,7 +2658,7 @@ def _mutated(function: _Function, lines: tuple):
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     built = _built(function.node)
     reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node),
-             _sibling_reads(function.node), _unpacked_together(function.node))
+             _sibling_reads(function.node), _unpacked_together(function.node), _bound_solves(function.node))
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -3729,6 +3744,7 @@ RIVALS = {
     "parameters_rates": ("state_row", "`{f}` reads a quantity where its rate belongs, and the rate where the "
                                       "quantity belongs"),
     "inverse_factor": ("missing_matrix_factor", "a matrix factor of a product in `{f}` is left out"),
+    "unsolved_read": ("missing_matrix_factor", "a matrix factor of a product in `{f}` is left out"),
     "unpacked": ("state_row", "`{f}` reads each coordinate it unpacks from another's row of the state"),
     "angle_sum": ("extra_term", "`{f}` reads a sum of angles where one of its terms belongs (a term added)"),
     "angle_part": ("missing_term", "`{f}` reads one term of a sum of angles where the sum belongs (a term left "
