@@ -157,6 +157,26 @@ def test_never_a_default_cause(monkeypatch):
     assert "got:" in failure.message and "expected:" in failure.message and "|diff|" in failure.message
 
 
+def test_a_finding_the_formula_tier_contests_is_told_as_nothing(monkeypatch):
+    """An earlier tier's explanation that the formula tier, heard late, contests with slips of more families than
+    can be told (``mutants.Contested``) is told as nothing: the transpose alone stands only where nothing contests
+    it."""
+    from grader.diagnosis import engine as finding, mutants
+
+    declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
+
+    def contesting(scene, evidences, another=None, told=None, untested=False, unreached=()):
+        if told is not None:  # heard late: three families of the reference's code reproduce the answer as well
+            raise mutants.Contested(["order", "scale", "sign"])
+        return []
+
+    monkeypatch.setattr(finding, "mutant_slips", lambda *args, **kwargs: [])
+    assert compare(lambda a, b: reference_f(a, b).T).diagnosis == "transpose"
+    monkeypatch.setattr(finding, "mutant_slips", contesting)
+    failure = compare(lambda a, b: reference_f(a, b).T)
+    assert failure.diagnosis == "" and failure.hint == ""
+
+
 def test_a_slip_that_holds_on_one_input_only_is_not_named(monkeypatch):
     """The student's value is the transpose on the degenerate input (b = 0, a = 0) only: nothing is named."""
     declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
