@@ -385,6 +385,8 @@ _TABLE = (
        "steps: t_eval not passed)", "left the output times out of a run"),
     _D("span_short", "time_shift", "a run that ends too early (the span of its integration shorter than the one "
        "asked for)", "ended a run too early"),
+    _D("piece_left_out", "missing_term", "a piece of a run left out (its last piece, between the last break and the "
+       "end, never integrated)", "left a piece of a run un-integrated"),
     _D("samples_left_out", "time_shift", "output times left out (a boundary of the span or of a piece taken with < "
        "where <= belongs)", "left output times out of a run"),
     # ---------------------------------------------------------------- precision

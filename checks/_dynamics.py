@@ -499,9 +499,9 @@ def _assert_samples(t, times, span, what, pieces=False):
     or of a piece, taken with < where <= belongs, or the reverse), times kept twice (``samples_repeated``: a sample
     on a boundary kept by both pieces that meet there), every m-th time alone (``output_step``: an output step m
     times too long).  A run that lacks its last output time alone has left the end out (taken with < where <=
-    belongs: ``samples_left_out``) or ended one step short (``span_short``), unless it is integrated in pieces
-    between breaks at the output times (``pieces``: its last piece, one output step long, may never have been
-    integrated); one that stops further short of the span's end, or that both leaves out and repeats times, is told
+    belongs: ``samples_left_out``) or ended one step short (``span_short``), or, where it is integrated in pieces
+    between breaks at the output times (``pieces``), left its last piece, one output step long, un-integrated
+    (``piece_left_out``); one that stops further short of the span's end, or that both leaves out and repeats times, is told
     by what differs alone (``shape``): its causes are too many (the last piece of a run in pieces never integrated,
     an event that ends it, a span cut short)."""
     if np.any(np.diff(t) < 0):
@@ -537,12 +537,15 @@ def _assert_samples(t, times, span, what, pieces=False):
     if missing[-1] == times.size - 1 and missing.size == times.size - 1 - kept[-1]:
         last = (f"the last output time, {times[-1]:.6g} s, is" if missing.size == 1 else
                 f"the last {missing.size} output times, from {times[missing[0]]:.6g} s to {times[-1]:.6g} s, are")
-        # the end alone left out is the end taken with < where <= belongs, or a span one step short; more of the
-        # run's end missing has causes too many to name
+        # the end alone left out is the end taken with < where <= belongs, or a span one step short, or, in a run in
+        # pieces, its last piece, one output step long, never integrated; more of the run's end missing has causes
+        # too many to name
         fail(f"{said} the run stops at {t[-1]:.6g} s: {last} not in it.",
              "Integrate over the whole span asked for, up to its end, and keep every output time in it (the end "
-             "of the span included).", "samples_left_out or span_short" if missing.size == 1 and not pieces
-             else "shape")
+             "of the span included" + (", and the last piece of the run, from the last break to the end, "
+                                       "integrated too)." if pieces else ")."),
+             ("samples_left_out or span_short or piece_left_out" if pieces else "samples_left_out or span_short")
+             if missing.size == 1 else "shape")
     fail(f"{said} {_listed(times[missing])} {'is' if missing.size == 1 else 'are'} left out.",
          "Keep every output time asked for: a boundary of the span or of a piece belongs to the run (<= where the "
          "end is included, >= where the start is).", "samples_left_out")

@@ -104,10 +104,15 @@ def test_uneven_times_that_stop_short_or_lie_on_the_grid_are_no_solvers_own_step
     assert caught.value.diagnosis != "solver_steps"
 
 
-def test_a_run_in_pieces_that_lacks_its_last_output_time_names_no_cause():
+def test_a_run_in_pieces_that_lacks_its_last_output_time_may_also_have_left_its_last_piece_out():
     """Integrated in pieces between breaks at the output times, a run's last piece is one output step long: left
-    un-integrated, it leaves out the last output time alone, as the end taken with < does; nothing is named."""
+    un-integrated, it leaves out the last output time alone, as the end taken with < does; both are named, a piece
+    left out beside the end left out or a span one step short."""
     with pytest.raises(CheckFailure) as caught:
         run_array(_run(TIMES[:-1]), "q", (101, 2), "simulate()", times=TIMES, pieces=True)
-    assert caught.value.diagnosis == "shape"
+    assert caught.value.diagnosis == "samples_left_out or span_short or piece_left_out"
     assert "the last output time, 2 s, is not in it" in caught.value.message
+    assert "the last piece of the run" in caught.value.hint
+    with pytest.raises(CheckFailure) as caught:  # further short: too many causes (an event, a span cut short)
+        run_array(_run(TIMES[:80]), "q", (101, 2), "simulate()", times=TIMES, pieces=True)
+    assert caught.value.diagnosis == "shape"
