@@ -599,6 +599,8 @@ SLIPS = {
     "frame_objects": ("wrong_frame", "`{f}` reads one coordinate system where another belongs (``C1`` for ``C3``)"),
     "trig_names": ("sin_cos_swapped", "`{f}` reads a sine's values where the cosine's belong (or the reverse)"),
     "frames": ("wrong_frame", "`{f}` reads a quantity in the coordinates of another frame"),
+    "frames_turned": ("wrong_frame", "`{f}` reads a rotation the other way round (``A_BI`` for ``A_IB``): its "
+                                     "transpose"),
     "identity_block": ("extra_term", "`{f}` writes the identity where a square block of zeros belongs (``np.eye(k)`` "
                                      "for ``np.zeros((k, k))``)"),
     "one_based": ("offset", "`{f}` counts from one where numpy counts from zero (``np.arange(1, n + 1)`` for "
@@ -1345,6 +1347,17 @@ def _frames(a: str, b: str) -> bool:
     return first[frame] != second[frame] and all(_FRAME_PART.match(p) for p in (first[frame], second[frame]))
 
 
+def _turned_round(a: str, b: str) -> bool:
+    """Two names of one rotation and of the rotation the other way round, by the course's notation: ``A_IB`` and
+    ``A_BI``, ``A_DsDp`` and ``A_DpDs`` (the frames of the second in the reverse order of the first's)."""
+    first, second = a.split("_"), b.split("_")
+    if len(first) != 2 or len(second) != 2 or first[0] != "A" or second[0] != "A":
+        return False
+    frames = re.findall(r"[A-Z][a-z0-9]*", first[1])
+    return len(frames) == 2 and "".join(frames) == first[1] and "".join(reversed(frames)) == second[1] \
+        and frames[0] != frames[1]
+
+
 def _siblings(a: str, b: str) -> bool:
     """Two matrices of a pair by the course's notation: one capital letter names the matrix and its last part, one
     capital letter, tells the two apart (``B_J_S`` and ``B_J_R``, ``S_J_S`` and ``S_J_R``)."""
@@ -1363,12 +1376,14 @@ def _trig_siblings(a: str, b: str) -> bool:
 
 
 def _related(a: str, b: str) -> str | None:
-    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames", "siblings", "trig_names" or None."""
+    """The slip of reading ``b`` where ``a`` belongs: "rates", "frames_turned" (a rotation the other way round),
+    "frames", "siblings", "trig_names" or None."""
     if a == b:
         return None
     if _FRAME_OBJECT.match(a) and _FRAME_OBJECT.match(b):  # ``C1.get_transform()`` for ``C3.get_transform()``
         return "frame_objects"
-    return "rates" if _rates(a, b) else "frames" if _frames(a, b) else "siblings" if _siblings(a, b) \
+    return "rates" if _rates(a, b) else "frames_turned" if _turned_round(a, b) else "frames" if _frames(a, b) \
+        else "siblings" if _siblings(a, b) \
         else "trig_names" if _trig_siblings(a, b) else None
 
 
@@ -3681,9 +3696,23 @@ def _value(package, evidence: Evidence, call: tuple, quick: bool = False, replie
     return value
 
 
+#: the slips that write a matrix's transpose otherwise: ``v @ A`` is ``A.T @ v``, and a rotation read the other way
+#: round (``A_DpDs`` for ``A_DsDp``) is its transpose; where a matrix transposed (``TRANSPOSED``) reproduces the
+#: answer as well, they are readings of that transpose, told beside it as twins, not rivals of other families
+TRANSPOSED_READINGS = frozenset({"factors", "frames_turned"})
+
+
+def _readings(kept: list[Mutant]) -> set:
+    """The ids of the mutants kept that read a transpose kept beside them otherwise (``TRANSPOSED_READINGS``)."""
+    if not any(m.slip in TRANSPOSED for m in kept):
+        return set()
+    return {id(m) for m in kept if m.slip in TRANSPOSED_READINGS}
+
+
 def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bool = False,
                 unreached=()) -> list[Hypothesis]:
-    families = {DIAGNOSES[m.name].family for m in kept}
+    readings = _readings(kept)
+    families = {DIAGNOSES[m.name].family for m in kept if id(m) not in readings}
     if not kept or len(families) > MAX_FAMILIES:
         return []
     constant = families <= _TERMS and _constant_difference(evidences)
@@ -3693,7 +3722,7 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
         if constant and mutant.slip not in _ENTRIES | _ADDED:  # a term that is the same on every input: an offset
             name, detail = "offset", f"{detail}, and it is the same on every input: your values are all off by it"
         key = f"mutant:{name}:{detail}"
-        found.setdefault(key, Hypothesis(key, name, COST, detail))
+        found.setdefault(key, Hypothesis(key, name, COST, detail, twin=id(mutant) in readings))
         if constant and mutant.slip in _ENTRIES | _ADDED:  # an entry left out (or the identity's 1 added to every
             # entry), and every value off by the same amount
             found.setdefault(f"{key}=offset", Hypothesis(f"{key}=offset", "offset", COST, (
@@ -3925,7 +3954,8 @@ class Contested(Exception):
 def _contest(kept: list, told) -> None:
     """Raise ``Contested`` where the formula tier heard late (``told``: the families an earlier tier explained the
     answer with) kept slips of more than ``MAX_FAMILIES`` families, one of them at least not told."""
-    families = {DIAGNOSES[m.name].family for m in kept}
+    readings = _readings(kept)
+    families = {DIAGNOSES[m.name].family for m in kept if id(m) not in readings}
     if len(families) > MAX_FAMILIES and families - set(told):
         trace.note("contested", told=sorted(told), families=sorted(families))
         raise Contested(sorted(families))
