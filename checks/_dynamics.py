@@ -501,9 +501,9 @@ def _assert_samples(t, times, span, what, pieces=False):
     times too long).  A run that lacks its last output time alone has left the end out (taken with < where <=
     belongs: ``samples_left_out``) or ended one step short (``span_short``), or, where it is integrated in pieces
     between breaks at the output times (``pieces``), left its last piece, one output step long, un-integrated
-    (``piece_left_out``); one that stops further short of the span's end, or that both leaves out and repeats times, is told
-    by what differs alone (``shape``): its causes are too many (the last piece of a run in pieces never integrated,
-    an event that ends it, a span cut short)."""
+    (``piece_left_out``); one that stops further short of the span's end, or that both leaves out and repeats
+    times, is told by what differs alone (``shape``): its causes are too many (the last piece of a run in pieces
+    never integrated, an event that ends it, a span cut short)."""
     if np.any(np.diff(t) < 0):
         return
     at = np.clip(np.searchsorted(times, t), 1, times.size - 1)

@@ -31,8 +31,10 @@ def successor_vector(A_DsDp, Dp_v, Dp_w):
 
 made_up = made_up_fixture(SOURCE, 76, "transposed_readings")
 
-INPUTS = [(Rotation.from_rotvec([0.3, -0.5, 0.8]).as_matrix(), np.array([0.4, -1.2, 0.7]), np.array([1.0, 0.2, -0.3])),
-          (Rotation.from_rotvec([1.1, 0.2, -0.4]).as_matrix(), np.array([-0.9, 0.5, 1.3]), np.array([0.1, -0.8, 0.6]))]
+INPUTS = [(Rotation.from_rotvec([0.3, -0.5, 0.8]).as_matrix(), np.array([0.4, -1.2, 0.7]),
+           np.array([1.0, 0.2, -0.3])),
+          (Rotation.from_rotvec([1.1, 0.2, -0.4]).as_matrix(), np.array([-0.9, 0.5, 1.3]),
+           np.array([0.1, -0.8, 0.6]))]
 
 
 def found(package, student):
