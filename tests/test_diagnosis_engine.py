@@ -231,6 +231,17 @@ def test_zeros_are_not_a_rounding_of_small_values():
     assert [h.name for h in precision_slips(np.round(small, 5), small, Tol("tight", 1e-9))] == ["rounded"]
 
 
+def test_whole_numbers_are_not_a_rounding_of_values_near_them():
+    """A rotation a little off the identity rounds to the identity at two decimals, but an answer of 0s and 1s has
+    not rounded anything (a rotation whose small angle a formula leaves out was told "rounded to 2 decimals"); the
+    same rotation rounded to three decimals is named."""
+    from grader.diagnosis.grammar import precision_slips
+
+    near = np.array([[0.99998, -0.00471, 0.0], [0.00471, 0.99998, 0.0], [0.0, 0.0, 1.0]])
+    assert precision_slips(np.eye(3), near, Tol("tight", 1e-9)) == []
+    assert [h.name for h in precision_slips(np.round(near, 3), near, Tol("tight", 1e-9))] == ["rounded"]
+
+
 def test_an_ignored_argument_is_found_by_changing_it_for_the_student(monkeypatch):
     declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))
     failure = compare(lambda a, b: reference_f(a, 0.7))

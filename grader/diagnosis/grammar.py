@@ -312,6 +312,8 @@ def precision_slips(got, E, tol: Tol) -> list:
             continue  # rounded to nothing: an answer of zeros has not rounded anything
         if largest * 10.0 ** decimals < 10.0 ** (ROUNDED_DIGITS - 1):
             continue  # a rounding that keeps fewer digits than a student writes is a coincidence, not a slip
+        if largest < 10.0 ** (ROUNDED_DIGITS - 1) and np.all(rounded == np.round(rounded)):
+            continue  # whole numbers alone (a rotation's 0 and 1): rounded to no decimal, too few digits as well
         if np.all(np.abs(got - rounded) <= 1e-12 * np.maximum(1.0, np.abs(E))) and not within(rounded, E, tol):
             found.append(Hypothesis(f"rounded:{decimals}", "rounded", 1,
                                      f"your values are the expected ones rounded to {decimals} decimals: return "
