@@ -358,6 +358,24 @@ def _aligned(got, expected, margin=0.01):
             {"t": t_ours[ours], "q": np.asarray(expected["q"])[ours], "qd": np.asarray(expected["qd"])[ours]})
 
 
+def _assert_closing(got, J, q_minus, Lam):
+    """Where the impulse does not pull (``Lam <= 0``) and the run's own rates before the impact do not stretch the
+    wire (``J_lam qd_minus >= 0``), the impulse follows from those rates, not from a sign of its formula: fail on the
+    rates, told as the angles read where the rates belong (a state's wrong rows) where they are the angles."""
+    if got.get("qd_minus") is None:
+        return
+    qd_minus = as_array(got["qd_minus"], "qd_minus", (3,))
+    closing = float((J @ qd_minus)[0])
+    if closing < 0:
+        return
+    rows = bool(np.array_equal(qd_minus, q_minus))
+    fail(f"the impulse of the wire is Lam = {Lam:.6g}, and with your rates before the impact, qd_minus = "
+         f"{np.round(qd_minus, 6).tolist()}, J_lam qd_minus = {closing:.6g} >= 0: those rates do not stretch the "
+         "wire, so no impulse is needed to stop them" + (" (they are the angles q_minus)." if rows else "."),
+         "The impact starts from the state at the event: q_minus = y_event[:3] and qd_minus = y_event[3:], the "
+         "rates with which the wire becomes taut (J_lam qd_minus < 0).", "state_row" if rows else "")
+
+
 @check(3, title="the run: the wire becomes taut at t = 0.933 s (within 2e-3 s of a tight run), q+ = q-, the impact "
        "leaves J qd+ = 0 with Lam > 0, and q+, qd+ match within the erratum's bands; with a wire hung elsewhere, the "
        "event and q+ follow and the run stays on that wire", stage=STAGE_VALUES, group="wire")
@@ -374,6 +392,7 @@ def check_event_and_impact(ctx):
     assert_close(J @ qd_plus, np.zeros(1), "J_lam qd_plus", Tol("after a plastic impact", 1e-6, 1e-6),
                  context="(with your own constraint_terms at the impact: a plastic impact stops the wire's stretching)")
     if Lam[0] <= 0:
+        _assert_closing(got, J, q_minus, Lam[0])
         fail(f"the impulse of the wire is Lam = {Lam[0]:.6g}: a taut wire pulls, Lam > 0 (J_lam = -dir.T A_IE "
              f"B_J_S,E).", "Lam = -(J M^-1 J.T)^-1 J qd_minus with J qd_minus < 0 at the moment the wire becomes "
              "taut.", "impulse_sign")
