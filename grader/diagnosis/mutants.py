@@ -3942,9 +3942,9 @@ def _slips_on(scene, evidences: list[Evidence], another, told, untested, unreach
 class Contested(Exception):
     """An earlier tier's explanation that the formula tier contests: slips of the reference's code of more
     families than can be told (``MAX_FAMILIES``), some of them not the earlier tier's, reproduce the answer as
-    well, so the earlier finding is one reading among too many (``A_DsDp.T @ a`` negates an acceleration of a
-    pendulum as a sign would, and is also a factor exchanged and a frame the other way).  No cost outranks a
-    rival that reproduces the answer on the same inputs: nothing is told."""
+    well, so the earlier finding is one reading among too many (a value with its sign turned, which a term
+    exchanged, a factor scaled and an entry read from another row each give as well).  No cost outranks a rival
+    that reproduces the answer on the same inputs: nothing is told."""
 
     def __init__(self, families):
         super().__init__(", ".join(families))
