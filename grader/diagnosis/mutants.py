@@ -2440,8 +2440,8 @@ def _bound_solves(function: ast.FunctionDef) -> dict:
     """``{name: the right-hand side}`` of the names the function binds once, and to a solve (``Minv_JT =
     np.linalg.solve(M, J.T)``: ``J.T``)."""
     return {name: value.args[1] for name, value in _bound_once(function).items()
-            if isinstance(value, ast.Call) and len(value.args) == 2 and not value.keywords
-            and (getattr(value.func, "attr", None) or getattr(value.func, "id", None)) == "solve"}
+            if isinstance(value, ast.Call) and _callee(value) == "solve" and len(value.args) == 2
+            and not value.keywords}
 
 
 def _stored_reads(function: ast.FunctionDef) -> dict:
@@ -3709,10 +3709,15 @@ def _readings(kept: list[Mutant]) -> set:
     return {id(m) for m in kept if m.slip in TRANSPOSED_READINGS}
 
 
+def _families(kept: list[Mutant], readings: set) -> set:
+    """The families of the mutants kept, the readings of a transpose (``_readings``) aside: those they explain with."""
+    return {DIAGNOSES[m.name].family for m in kept if id(m) not in readings}
+
+
 def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bool = False,
                 unreached=()) -> list[Hypothesis]:
     readings = _readings(kept)
-    families = {DIAGNOSES[m.name].family for m in kept if id(m) not in readings}
+    families = _families(kept, readings)
     if not kept or len(families) > MAX_FAMILIES:
         return []
     constant = families <= _TERMS and _constant_difference(evidences)
@@ -3954,8 +3959,7 @@ class Contested(Exception):
 def _contest(kept: list, told) -> None:
     """Raise ``Contested`` where the formula tier heard late (``told``: the families an earlier tier explained the
     answer with) kept slips of more than ``MAX_FAMILIES`` families, one of them at least not told."""
-    readings = _readings(kept)
-    families = {DIAGNOSES[m.name].family for m in kept if id(m) not in readings}
+    families = _families(kept, _readings(kept))
     if len(families) > MAX_FAMILIES and families - set(told):
         trace.note("contested", told=sorted(told), families=sorted(families))
         raise Contested(sorted(families))
