@@ -135,8 +135,9 @@ Every reference call the engine may need is a function of the probe's arguments 
 holds them: while the key is recorded, every comparison of a declared probe makes them (``prepare``).
 
 The package: ``evidence`` (declarations, evidence, where values came from), ``grammar`` (slips of values and arguments),
-``terms``, ``runs``, ``models``, ``scene`` (the reference and the student's code, with budgets) and ``engine``
-(explaining, and recording the key).
+``terms``, ``runs``, ``models``, ``scene`` (the reference and the student's code, with budgets), ``mutants`` (slips of
+the reference's code; ``passes``: a tree's forward kinematics, computed once for the many mutants whose calls repeat
+it alike) and ``engine`` (explaining, and recording the key).
 """
 
 from __future__ import annotations

@@ -200,6 +200,7 @@ from checks._diagnoses import DIAGNOSES
 
 from ..errors import GraderFault
 from . import trace
+from .passes import Shared
 from .evidence import (array_of, at_point, declaration, distinct, Evidence, Hypothesis, part_of, reproduces, rows_of,
                        Source, stepped, within)
 from .grammar import EARTH_GRAVITY, equivalents
@@ -3537,6 +3538,7 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     rows = [None if row is None else (row[0], (row[1][0], _kept_once(row[1][1]))) for row in rows]
     screened = bool(twins)
     banded = bool(inputs) and _in_band(inputs[0], differs=False)  # else no slip of precision is told: none is tried
+    shared = Shared(package, originals, str(Path(package.__file__).parent))
     for holder, twin in twins:
         originals.setdefault(id(holder), (holder, holder.__code__))
     for tried, mutant in enumerate(mutants):
@@ -3557,7 +3559,7 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
             # a slip of the same function that the kept ones hold already adds no name: its screened value decides
             again = any(k.slip == mutant.slip and k.module == mutant.module and k.path == mutant.path for k in kept)
             values = _mutated_values(package, mutant, inputs, calls, (parts, rows), originals, twins, screened,
-                                     misses, deadline, confirm=not again)
+                                     misses, deadline, confirm=not again, shared=shared)
         if values is None:
             if misses == [0] and not screened:
                 _REFUTED.refute(mutant, ran)
@@ -3579,11 +3581,13 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
 
 
 def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, cheaper: tuple, originals: dict,
-                    twins: tuple, screened: bool, misses: list, deadline: _Deadline, confirm: bool) -> list | None:
+                    twins: tuple, screened: bool, misses: list, deadline: _Deadline, confirm: bool,
+                    shared: Shared | None = None) -> list | None:
     """The values of the calls with the mutant's code in its function's place (see ``_evaluate``), or None
     (``misses`` gets the input at which it is not the student's); ``cheaper``: the inputs' ``(parts, rows)`` (see
     ``_staged``); a screened mutant that reproduces it is evaluated as it is, where ``confirm``, within
-    ``deadline``'s budget of confirming."""
+    ``deadline``'s budget of confirming; ``shared``: the passes of state the mutants' calls share
+    (``passes.Shared``)."""
     from probes import kept_for_one_code
 
     holder = _live(package, mutant.module, mutant.path)
@@ -3592,13 +3596,15 @@ def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list
         for other, twin in twins:
             other.__code__ = twin
         holder.__code__ = (mutant.quick or mutant.code) if screened else mutant.code
-        with kept_for_one_code():  # one code on every input: what a probe makes once for it, it makes once
+        sharing = contextlib.nullcontext() if shared is None else shared.around(holder)
+        with sharing, kept_for_one_code():  # one code on every input: what a probe makes once for it, it makes once
             values = _staged(package, inputs, calls, *cheaper, quick=screened, misses=misses)
         if values is not None and screened and confirm:  # the mutant's own value decides
             for other, _ in twins:
                 other.__code__ = originals[id(other)][1]
             holder.__code__ = mutant.code
-            with kept_for_one_code(_confirmed_store(package, mutant)), deadline.confirming():
+            sharing = contextlib.nullcontext() if shared is None else shared.around(holder)
+            with sharing, kept_for_one_code(_confirmed_store(package, mutant)), deadline.confirming():
                 values = _reproduced(package, inputs, calls, misses=misses)
     finally:
         for other, _ in twins:
