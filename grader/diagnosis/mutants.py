@@ -706,6 +706,7 @@ SLIPS = {
     "constant_direction": ("wrong_factor", "the vector constant `{f}` is written as its direction alone (divided by "
                                            "its length: gravity as a unit vector)"),
     "constant_entries": ("swapped", "two entries of the constant `{f}` are exchanged"),
+    "constant_trig": ("sin_cos_swapped", "the constant `{f}` takes sin where cos belongs, or the reverse"),
     "constant_zeroed": ("missing_term", "an entry of the constant `{f}` is left out (written 0)"),
     "constant_converted_back": ("degrees", "the constant `{f}` is converted the wrong way (rad2deg where deg2rad "
                                            "belongs, or the reverse)"),
@@ -4526,8 +4527,8 @@ def _number_slips(expression):
     """``(slip, expression)`` of each number of the expression typed otherwise (``_NUMBER_SLIPS``; an integer that the
     slip keeps whole stays an integer, a count of steps that ``range`` takes), each entry of a list or tuple of it
     written 0, each two entries of one exchanged, a matrix of it written out row by row (``_written_out``) transposed, a
-    conversion of an angle the other way (``_BACK``), and an expression of numbers in it that is not one number
-    (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
+    conversion of an angle the other way (``_BACK``), a sine of it for a cosine or the reverse, and an expression of
+    numbers in it that is not one number (``np.pi / 2``) typed short to ``TYPED_DECIMALS`` (a slip of precision)."""
     parents = {id(child): node for node in ast.walk(expression) for child in ast.iter_child_nodes(node)}
     if isinstance(expression, ast.Call) and _callee(expression) in ("array", "asarray") \
             and not any(k.arg == "dtype" for k in expression.keywords):  # ``np.array([...], dtype=np.float32)``
@@ -4559,6 +4560,9 @@ def _number_slips(expression):
                 if slip == "constant_degrees":  # 0.35 rad typed as the degrees a student reads off it: 20
                     for typed in _degrees_typed(value):
                         yield slip, index, ast.Constant(typed)
+    for index, node in enumerate(ast.walk(expression)):  # ``np.cos(SLOPE)`` for ``np.sin(SLOPE)``
+        if isinstance(node, ast.Call) and _callee(node) in _TRIG and len(node.args) == 1:
+            yield "constant_trig", index, _with(node, func=_renamed(node.func))
     for index, node in enumerate(ast.walk(expression)):  # ``np.cos(SLOPE)`` for ``-np.cos(SLOPE)``
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) and not _number(node.operand):
             yield "constant_sign", index, node.operand
