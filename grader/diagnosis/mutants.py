@@ -656,6 +656,8 @@ SLIPS = {
                                  "``radius = l2 + l3 * sin(phi)``): the other terms are left out there"),
     "term_doubled": ("factor_two", "`{f}` takes one term of a sum twice (as the Coriolis term of a moving point "
                                    "is, ``2 * omega x v``)"),
+    "term_halved": ("factor_half", "`{f}` takes one term of a sum halved (a factor 1/2 that belongs elsewhere: "
+                                   "in a kinetic energy, a drag's ``rho v**2 / 2``)"),
     "sibling_number": ("wrong_factor", "`{f}` takes a number of another formula of its module (the cuboid's 12 "
                                        "where the ellipsoid's 20 belongs)"),
     "coordinate": ("state_row", "`{f}` reads one coordinate where another unpacked with it belongs (``q1`` for ``q2`` "
@@ -2570,11 +2572,13 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             typed = int(other) if type(node.value) is int and float(other).is_integer() else float(other)
             yield "sibling_number", lambda n, typed=typed: ast.Constant(typed)
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) and not _number(node.right):
-        # one term of a sum taken twice; a sum's first term only where it is no sum itself (else its own last)
-        yield "term_doubled", lambda n: _with(n, right=ast.BinOp(ast.Constant(2), ast.Mult(), n.right))
+        # one term of a sum taken twice or halved; a sum's first term only where it is no sum itself (else its own last)
+        for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
+            yield slip, lambda n, k=factor: _with(n, right=ast.BinOp(ast.Constant(k), ast.Mult(), n.right))
         if not (isinstance(node.left, ast.BinOp) and isinstance(node.left.op, (ast.Add, ast.Sub))) \
                 and not _number(node.left):
-            yield "term_doubled", lambda n: _with(n, left=ast.BinOp(ast.Constant(2), ast.Mult(), n.left))
+            for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
+                yield slip, lambda n, k=factor: _with(n, left=ast.BinOp(ast.Constant(k), ast.Mult(), n.left))
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
@@ -3199,8 +3203,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
-                        "sum_part", "stored_from", "repeated", "term_doubled", "parameter_read", "coordinate",
-                        "sibling_number"})
+                        "sum_part", "stored_from", "repeated", "term_doubled", "term_halved", "parameter_read",
+                        "coordinate", "sibling_number"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),

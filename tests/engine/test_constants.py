@@ -2,8 +2,8 @@
 types from the sheet into the constants of a problem's module or of the library (lengths, masses, gains, gravity)
 may be typed otherwise (a number's sign, a factor 2, ten, a hundred or a thousand, degrees for radians, a square
 root, an entry of a table exchanged or written 0, a matrix written out transposed, a vector written as its
-direction alone, a sine for a cosine, two constants exchanged); those slips are tried after every slip of the code, where none reproduced
-the student's value.
+direction alone, a sine for a cosine, two constants exchanged); those slips are tried after every slip of the code,
+where none reproduced the student's value.
 
 The test plants a mistake into a copy of the reference and asks the tier on two inputs, as
 ``tests/engine/test_mutants.py`` does: the library's gravity typed a tenth of itself reaches problem 24's triple
@@ -301,8 +301,7 @@ def test_a_constant_that_takes_a_sine_for_a_cosine_is_sin_and_cos_swapped(tmp_pa
     """Problem 38's gravity on the slope typed ``[np.sin(SLOPE), -np.sin(SLOPE), 0.0]``: the part across the slope a
     sine where its cosine belongs; the near miss, the part along the slope of twice the slope's angle, is none."""
     assert_told(gravity_slips(tmp_path / "a", "I_GRAV = np.array([np.sin(SLOPE), -np.sin(SLOPE), 0.0])"),
-                "sin_cos_swapped",
-                "the constant `I_GRAV` takes sin where cos belongs")
+                "sin_cos_swapped", "the constant `I_GRAV` takes sin where cos belongs")
     found = gravity_slips(tmp_path / "b", "I_GRAV = np.array([np.sin(2 * SLOPE), -np.cos(SLOPE), 0.0])")
     assert "sin_cos_swapped" not in {h.name for h in found}, [(h.name, h.detail) for h in found]
 

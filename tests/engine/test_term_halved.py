@@ -1,0 +1,48 @@
+"""The formula tier's term of a sum halved (``grader.diagnosis.mutants``: ``term_halved``): a factor 1/2 put where
+it does not belong, on one term of a sum (a drag force written as ``rho v**2 / 2`` is written where the sheet's
+constant holds the half already), is a factor half.
+
+A mistake planted into a made-up problem (a ball's acceleration under gravity and drag) that the tier names on two
+inputs, with a near miss it must not name so: the drag taken a third of itself, which no factor 1/2 gives."""
+
+from .stand_ins import made_up_fixture
+from .test_mutants import made_up_evidences, scene
+from grader.diagnosis import mutants
+
+SOURCE = '''"""A made-up problem for a term of a sum halved."""
+
+import numpy as np
+
+
+def acceleration(v, k, g):
+    """A made-up ball's acceleration at the speed ``v`` under gravity ``g`` and a drag of constant ``k``."""
+    # BEGIN SOLUTION problem 75
+    return -g - k * np.abs(v) * v
+    # END SOLUTION
+'''
+
+made_up = made_up_fixture(SOURCE, 75, "term_halved")
+
+INPUTS = [(1.3, 0.4, 9.81), (-2.8, 0.7, 3.7)]
+
+
+def found(package, student):
+    return mutants.mutant_slips(scene("p75.acceleration"), made_up_evidences(package, "acceleration", student,
+                                                                              INPUTS, number=75))
+
+
+def test_the_drag_halved_is_a_factor_half(made_up):
+    def student(v, k, g):
+        return -g - 0.5 * k * abs(v) * v
+
+    hypotheses = found(made_up, student)
+    assert {h.name for h in hypotheses} == {"factor_half"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("one term of a sum halved" in h.detail for h in hypotheses), [h.detail for h in hypotheses]
+
+
+def test_the_drag_taken_a_third_is_no_factor_half(made_up):
+    def student(v, k, g):
+        return -g - k * abs(v) * v / 3.0
+
+    hypotheses = found(made_up, student)
+    assert not any(h.name == "factor_half" for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
