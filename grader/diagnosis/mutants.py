@@ -671,6 +671,8 @@ SLIPS = {
                                     "neighbour): the argument that belongs there is never used"),
     "repeated": ("value_unused", "`{f}` writes one entry of a list of names as its neighbour (``(m1, m1)`` for "
                                  "``(m1, m2)``): the name that belongs there is never used"),
+    "argument_repeated": ("value_unused", "`{f}` passes one argument of a call as its neighbour (``f(y, m, m, g)`` "
+                                          "for ``f(y, m, theta, g)``): the name that belongs there is never used"),
     "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
                                     "where its argument belongs: the argument is ignored"),
     "defaults": ("ignored_argument", "`{f}` reads every parameter that has a default as that default (the module's "
@@ -2590,6 +2592,13 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
                 if 0 <= j < len(node.elts):
                     yield "repeated", lambda n, k=k, j=j: _with(n, elts=n.elts[:k] + [copy.deepcopy(n.elts[j])]
                                                                 + n.elts[k + 1:])
+    if isinstance(node, ast.Call):  # ``f(y, m, m, g)`` for ``f(y, m, theta, g)``: theta, read nowhere else, unused
+        named = {k: a.id for k, a in enumerate(node.args) if isinstance(a, ast.Name)}
+        for k, name in named.items() if len(set(named.values())) == len(named) else ():
+            for j in (k - 1, k + 1) if name in once and not name.isupper() else ():
+                if j in named:
+                    yield "argument_repeated", lambda n, k=k, j=j: _with(
+                        n, args=n.args[:k] + [copy.deepcopy(n.args[j])] + n.args[k + 1:])
     if isinstance(node, (ast.Tuple, ast.List)) and 3 <= len(node.elts) <= 6 \
             and all(isinstance(e, ast.Name) for e in node.elts):  # ``[phi, x, y]`` for ``[x, y, phi]``, read or bound
         yield "cycled", lambda n: _with(n, elts=n.elts[-1:] + n.elts[:-1])
@@ -3203,7 +3212,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
-                        "sum_part", "stored_from", "repeated", "term_doubled", "term_halved", "parameter_read",
+                        "sum_part", "stored_from", "repeated", "argument_repeated", "term_doubled", "term_halved",
+                        "parameter_read",
                         "coordinate", "sibling_number"})
 
 
