@@ -1,0 +1,93 @@
+"""A read of one value for another that leaves a value passed in unused (``grader.diagnosis.mutants.rivals``:
+``UNUSED_READS``): ``M @ qd_des`` for ``M @ qdd_des`` in a controller that a compared right-hand side calls reads a
+rate where its own rate belongs, and leaves the desired accelerations passed to it read nowhere.  Both are told: a
+state read from the wrong row, or a value left unused.
+
+A mistake planted into a made-up problem (a right-hand side that calls its controller), named on two inputs; the
+same read in the compared function itself adds no value left unused there (the test of an ignored argument is the
+measure of its own arguments); and a slip of another kind that leaves the value unused (its term dropped) adds none
+either."""
+
+import importlib
+
+import numpy as np
+
+from checks._diagnoses import DIAGNOSES
+from grader.checking import Tol
+from grader.diagnosis import mutants
+from grader.diagnosis.evidence import Evidence, Source, array_of
+from .stand_ins import made_up_fixture
+from .test_mutants import scene
+
+TIGHT = Tol("tight", 1e-9, 1e-9)
+
+SOURCE = '''"""A made-up problem for a read that leaves a value passed in unused."""
+
+import numpy as np
+
+
+def controller(M, qd_des, qdd_des):
+    """A made-up controller's torques."""
+    # BEGIN SOLUTION problem 73
+    return M @ qdd_des + 0.5 * qd_des
+    # END SOLUTION
+
+
+def rhs(M, q_des, qd_des, qdd_des):
+    """A made-up right-hand side: the torques less a spring's pull."""
+    # BEGIN SOLUTION problem 73
+    return controller(M, qd_des, qdd_des) - 2.0 * q_des
+    # END SOLUTION
+'''
+
+made_up = made_up_fixture(SOURCE, 73, "unused_reads")
+
+INPUTS = [(np.array([[2.0, 0.3], [0.3, 1.5]]), np.array([0.2, -0.4]), np.array([1.1, 0.6]), np.array([-0.7, 2.2])),
+          (np.array([[3.1, -0.2], [-0.2, 0.9]]), np.array([-1.3, 0.8]), np.array([0.4, -1.9]), np.array([1.6, 0.3]))]
+
+
+def probe_of(name):
+    def probe(pkg, *args):
+        return getattr(importlib.import_module(f"{pkg.__name__}.problem_73"), name)(*args)
+
+    probe.__name__ = name  # the compared call's own function, by its name
+    return probe
+
+
+def found(package, name, student):
+    probe = probe_of(name)
+    inputs = INPUTS if name == "rhs" else [(M, qd_des, qdd_des) for M, _, qd_des, qdd_des in INPUTS]
+    evidences = [Evidence(array_of(student(*args)), array_of(probe(package, *args)), TIGHT, "value",
+                          source=Source(probe, args, ())) for args in inputs]
+    return mutants.mutant_slips(scene(f"p73.{name}"), evidences)
+
+
+def families(hypotheses) -> set:
+    return {DIAGNOSES[h.name].family for h in hypotheses}
+
+
+def test_a_rate_read_in_the_controller_leaves_the_desired_accelerations_unused(made_up):
+    def student(M, q_des, qd_des, qdd_des):
+        return M @ qd_des + 0.5 * qd_des - 2.0 * q_des
+
+    hypotheses = found(made_up, "rhs", student)
+    assert families(hypotheses) == {"state_row", "ignored_argument"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("the value passed as `qdd_des` is never used" in h.detail for h in hypotheses), \
+        [h.detail for h in hypotheses]
+
+
+def test_the_same_read_in_the_compared_function_adds_no_value_unused(made_up):
+    def student(M, qd_des, qdd_des):
+        return M @ qd_des + 0.5 * qd_des
+
+    hypotheses = found(made_up, "controller", student)
+    assert not any("is never used" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+    assert "state_row" in families(hypotheses)
+
+
+def test_a_term_dropped_in_the_controller_adds_no_value_unused(made_up):
+    def student(M, q_des, qd_des, qdd_des):
+        return 0.5 * qd_des - 2.0 * q_des
+
+    hypotheses = found(made_up, "rhs", student)
+    assert not any("the value passed as" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
