@@ -87,6 +87,15 @@ class Scene:
             probe, args = part
         return array_of(at(self.reference(probe, args), path))
 
+    def student_at(self, probe: str, args: tuple, path: tuple):
+        """The student's value at ``path`` of ``probe(*args)`` (an array, or None), through the cheaper call the
+        probe declares to hold it (``part``), as ``reference_at`` takes the reference's: the probe's own code makes
+        the part's value alike from any package's functions."""
+        part = part_of(Source(probe, tuple(args), tuple(path)))
+        if part is not None:
+            probe, args = part
+        return array_of(at(self.student(probe, args), path))
+
     def student(self, probe: str, args: tuple):
         self.student_calls += 1
         if self.student_calls > MAX_STUDENT_CALLS:
