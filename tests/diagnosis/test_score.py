@@ -1,7 +1,7 @@
 """The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second
-to the thirtieth held-out sets written apart from the engine (``fresh2`` ... ``fresh30``), and the script that
+to the thirty-first held-out sets written apart from the engine (``fresh2`` ... ``fresh31``), and the script that
 grades them and classifies each diagnosis (``tests/diagnosis/score.py``), strictly and leniently (where an entry of
-the seventh to the thirtieth set names a second family, ``also``).
+the seventh to the thirty-first set names a second family, ``also``).
 
 The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
 into the reference, and the diagnosis recorded with it (``today``) is not the right cause, which is what put it in
@@ -55,6 +55,7 @@ from .score import (
     FRESH28,
     FRESH29,
     FRESH30,
+    FRESH31,
     NAMED,
     NAMED2,
     NAMED3,
@@ -100,6 +101,7 @@ FRESH27_SET = fresh_mistakes(FRESH27)
 FRESH28_SET = fresh_mistakes(FRESH28)
 FRESH29_SET = fresh_mistakes(FRESH29)
 FRESH30_SET = fresh_mistakes(FRESH30)
+FRESH31_SET = fresh_mistakes(FRESH31)
 
 
 def _fallback(name):
@@ -126,12 +128,12 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
                                   (FRESH20_SET, []), (FRESH21_SET, []), (FRESH22_SET, []),
                                   (FRESH23_SET, []), (FRESH24_SET, []), (FRESH25_SET, []),
                                   (FRESH26_SET, []), (FRESH27_SET, []), (FRESH28_SET, []),
-                                  (FRESH29_SET, []), (FRESH30_SET, [])],
+                                  (FRESH29_SET, []), (FRESH30_SET, []), (FRESH31_SET, [])],
                          ids=["first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth",
                               "tenth", "eleventh", "twelfth", "thirteenth", "fourteenth", "fifteenth", "sixteenth",
                               "seventeenth", "eighteenth", "nineteenth", "twentieth", "twenty-first",
                               "twenty-second", "twenty-third", "twenty-fourth", "twenty-fifth", "twenty-sixth",
-                              "twenty-seventh", "twenty-eighth", "twenty-ninth", "thirtieth"])
+                              "twenty-seventh", "twenty-eighth", "twenty-ninth", "thirtieth", "thirty-first"])
 def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
     for mistakes in sets:
         assert defects(mistakes) == []
@@ -362,7 +364,7 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
     _assert_repeats_none(FRESH4_SET, earlier)
 
 
-# ------------------------------------------------------------------------------- the fifth to thirtieth sets
+# --------------------------------------------------------------------------- the fifth to thirty-first sets
 
 #: the sets written like the fourth (every realistic mistake whose check fails, whatever its diagnosis), each with
 #: the sets written before it beyond the first three (whose entries ``_earlier_entries`` reads itself)
@@ -447,20 +449,27 @@ LATER_SETS = {"fifth": (FRESH5_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET),
                             + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
                             + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
                             + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                            + FRESH28_SET + FRESH29_SET)}
+                            + FRESH28_SET + FRESH29_SET),
+              "thirty-first": (FRESH31_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
+                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
+                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
+                               + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
+                               + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
+                               + FRESH28_SET + FRESH29_SET + FRESH30_SET)}
 
 #: the size of a later set and its mistakes in the simulated problems, at least: ninety and twenty, except the tenth
-#: to thirtieth sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth
+#: to thirty-first sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth
 #: 42, the thirteenth 36, the fourteenth 43, the fifteenth 40, the sixteenth 38, the seventeenth 30, the eighteenth
 #: 29, the nineteenth 35, the twentieth 35, the twenty-first 27, the twenty-second 26, the twenty-third 31, the
 #: twenty-fourth 26, the twenty-fifth 28, the twenty-sixth 30, the twenty-seventh 33, the twenty-eighth 31, the
-#: twenty-ninth 32 and the thirtieth 32, at most four of one problem) after the earlier sets had taken most slips of
-#: the simulated problems (the seventeenth: 11 of its entries in the problems of ``SIMULATED``, 14 in Exercise I's
-#: MuJoCo problems and the runs; the eighteenth: 11 and 16; the nineteenth: 12 and 17; the twentieth: 13 and 17; the
-#: twenty-first: 11 and 13; the twenty-second: 10 and 14, counting problem 24's run; the twenty-third: 14 and 17; the
-#: twenty-fourth: 12 and 12; the twenty-fifth: 11 and 15; the twenty-sixth: 10 and 16; the twenty-seventh: 11 and 15;
-#: the twenty-eighth: 10 and 10, 11 counting problem 24's run; the twenty-ninth: 13 and 13, 15 counting problem 24's;
-#: the thirtieth: 13 and 13, 15 counting problem 24's)
+#: twenty-ninth 32, the thirtieth 32 and the thirty-first 32, at most four of one problem) after the earlier sets had
+#: taken most slips of the simulated problems (the seventeenth: 11 of its entries in the problems of ``SIMULATED``,
+#: 14 in Exercise I's MuJoCo problems and the runs; the eighteenth: 11 and 16; the nineteenth: 12 and 17; the
+#: twentieth: 13 and 17; the twenty-first: 11 and 13; the twenty-second: 10 and 14, counting problem 24's run; the
+#: twenty-third: 14 and 17; the twenty-fourth: 12 and 12; the twenty-fifth: 11 and 15; the twenty-sixth: 10 and 16;
+#: the twenty-seventh: 11 and 15; the twenty-eighth: 10 and 10, 11 counting problem 24's run; the twenty-ninth: 13
+#: and 13, 15 counting problem 24's; the thirtieth: 13 and 13, 15 counting problem 24's; the thirty-first: 11 in the
+#: problems of ``SIMULATED``, one of them in each of problems 24 and 38)
 LATER_SIZES = {"tenth": (50, 14), "eleventh": (48, 15), "twelfth": (42, 14), "thirteenth": (36, 13),
                "fourteenth": (43, 15), "fifteenth": (40, 13), "sixteenth": (38, 13),
                "seventeenth": (30, 11), "eighteenth": (29, 11), "nineteenth": (35, 12),
@@ -468,7 +477,8 @@ LATER_SIZES = {"tenth": (50, 14), "eleventh": (48, 15), "twelfth": (42, 14), "th
                "twenty-third": (31, 14), "twenty-fourth": (26, 12),
                "twenty-fifth": (28, 11), "twenty-sixth": (30, 10),
                "twenty-seventh": (33, 11), "twenty-eighth": (31, 10),
-               "twenty-ninth": (32, 13), "thirtieth": (32, 13)}
+               "twenty-ninth": (32, 13), "thirtieth": (32, 13),
+               "thirty-first": (32, 11)}
 
 
 @pytest.mark.parametrize("which", sorted(LATER_SETS))
@@ -551,7 +561,7 @@ def test_a_set_without_a_second_family_reads_alike_strictly_and_leniently(which)
                                    "fourteenth", "fifteenth", "sixteenth", "seventeenth", "eighteenth",
                                    "nineteenth", "twentieth", "twenty-first", "twenty-second", "twenty-third",
                                    "twenty-fourth", "twenty-fifth", "twenty-sixth", "twenty-seventh",
-                                   "twenty-eighth", "twenty-ninth", "thirtieth"])
+                                   "twenty-eighth", "twenty-ninth", "thirtieth", "thirty-first"])
 def test_a_set_with_second_families_reads_them_leniently_only(which):
     """The sets that name a second family (``also``) on some entries: an entry without one is classified alike
     strictly and leniently, whatever is told; an entry with one is right leniently and wrong strictly when only its
@@ -564,7 +574,8 @@ def test_a_set_with_second_families_reads_them_leniently_only(which):
               "twenty-third": FRESH23_SET, "twenty-fourth": FRESH24_SET,
               "twenty-fifth": FRESH25_SET, "twenty-sixth": FRESH26_SET,
               "twenty-seventh": FRESH27_SET, "twenty-eighth": FRESH28_SET,
-              "twenty-ninth": FRESH29_SET, "thirtieth": FRESH30_SET}[which]
+              "twenty-ninth": FRESH29_SET, "thirtieth": FRESH30_SET,
+              "thirty-first": FRESH31_SET}[which]
     named = {}
     for name, family in FALLBACK.items():
         named.setdefault(family, name)
