@@ -298,6 +298,8 @@ class Mutant:
     quick: object = None  # the code without sympy's simplifications (``_unsimplified``), where it has any
     given: bool = False  # a slip of a function that the problem's module gives whole (``_Function.given``)
     bindings: tuple = ()  # a slip of a module's constant: ``(holder, attribute, value)`` set while it is measured
+    unread: tuple = ()  # the names the function binds and reads that the slip leaves unread (``qdd`` of ``return q,
+    # qd, qd`` for ``return q, qd, qdd``)
 
     @property
     def function(self) -> str:
@@ -2676,8 +2678,8 @@ def _written_index_slips(node):
 
 
 def _mutated(function: _Function, lines: tuple):
-    """``(slip, new definition, parameters it leaves unused)`` of every slip of the function's regions ``lines``,
-    each once."""
+    """``(slip, new definition, parameters it leaves unused, names bound in the function it leaves unread)`` of
+    every slip of the function's regions ``lines``, each once."""
     sites = [(index, node, parent, guarded, indexing)
              for index, (node, parent, guarded, indexing) in enumerate(_parented(function.node))
              if _in(node, lines)]
@@ -2686,6 +2688,7 @@ def _mutated(function: _Function, lines: tuple):
     names, parameters, keys = _names(function.node), _parameters(function.node), _text_keys(function.node)
     others = _trig_names(function.node)
     used = _used_parameters(function.node, parameters)
+    bound = _read_bound(function.node, parameters)
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     built = _built(function.node)
     reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node),
@@ -2759,7 +2762,15 @@ def _mutated(function: _Function, lines: tuple):
             key = ast.dump(tree)  # the new nodes' places are filled in where the tree is compiled (``_compiled``)
             if key not in seen:
                 seen.add(key)
-                yield slip, tree, tuple(sorted(p for p in used if not _read_in(key, p)))
+                yield slip, tree, tuple(sorted(p for p in used if not _read_in(key, p))), \
+                    tuple(sorted(n for n in bound if not _read_in(key, n)))
+
+
+def _read_bound(function: ast.FunctionDef, parameters: frozenset) -> frozenset:
+    """The names other than its parameters that the function binds (by assignment, or unpacking) and reads."""
+    stored = {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    read = {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
+    return frozenset((stored & read) - parameters)
 
 
 def _read_in(dumped: str, name: str) -> bool:
@@ -3244,8 +3255,9 @@ def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()
         defaulted = _defaulted(function.node)
         with deadline.making() if deadline is not None else contextlib.nullcontext():
             codes = _codes(function, lines, live.__code__.co_filename, live.__code__.co_freevars)
-        for slip, code, unused, twin in codes:
-            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted, twin, function.given)
+        for slip, code, unused, unread, twin in codes:
+            mutant = Mutant(function.module, function.path, slip, code, unused, defaulted, twin, function.given,
+                            unread=unread)
             (reads if slip in LATE_SLIPS else found).append(mutant)
             if len(found) > MAX_MUTANTS:
                 return None
@@ -3254,19 +3266,19 @@ def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = ()
 
 @lru_cache(maxsize=512)
 def _codes(function: _Function, lines: tuple, filename: str, freevars: tuple) -> tuple:
-    """``(slip, code object, parameters left unused, code without simplifications or None)`` of the function's
-    mutants, compiled once for the process (a mutant whose code does not fit the live function's closure is left
-    out)."""
+    """``(slip, code object, parameters left unused, names left unread, code without simplifications or None)`` of
+    the function's mutants, compiled once for the process (a mutant whose code does not fit the live function's
+    closure is left out)."""
     found = []
     simplifies = _simplifies(function)
-    for slip, tree, unused in _mutated(function, lines):
+    for slip, tree, unused, unread in _mutated(function, lines):
         try:
             code = _compiled(function, tree, filename)
         except (SyntaxError, ValueError, TypeError, KeyError, NameError, AttributeError):
             continue
         if code.co_freevars == freevars:
-            found.append((slip, code, unused, _unsimplified(function, tree, filename, freevars) if simplifies
-                          else None))
+            found.append((slip, code, unused, unread,
+                          _unsimplified(function, tree, filename, freevars) if simplifies else None))
     return tuple(found)
 
 
@@ -3829,9 +3841,10 @@ def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozense
     ignored).  Where that test changed an argument it is the measure of an argument ignored, heard as a tier of its
     own: an argument it found followed is no twin.  A read of one value for another (``UNUSED_READS``) in a function
     other than the compared call's (``inner``) that leaves one of its parameters unused leaves the value passed
-    there unused (``M @ qd_des`` for ``M @ qdd_des``: the desired accelerations read nowhere).  A slip of a module's
-    constant that is a start (``_START``: ``Q0``, ``START_ANGLES``: two of its entries exchanged, one typed in
-    degrees) starts the run from another state as truly: a wrong initial state, told beside it."""
+    there unused (``M @ qd_des`` for ``M @ qdd_des``: the desired accelerations read nowhere); in any function, one
+    that leaves a name it binds unread leaves the value it computed there unused (``return q, qd, qd``).  A slip of a
+    module's constant that is a start (``_START``: ``Q0``, ``START_ANGLES``: two of its entries exchanged, one typed
+    in degrees) starts the run from another state as truly: a wrong initial state, told beside it."""
     found = []
     if mutant.slip in RIVALS:
         name, detail = RIVALS[mutant.slip]
@@ -3843,6 +3856,10 @@ def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozense
         found.append(Hypothesis(f"{key}=unread:{parameter}", "value_unused", COST, (
             f"`{mutant.function}` reads another value where its argument `{parameter}` belongs: the value passed "
             f"as `{parameter}` is never used"), twin=True))
+    for name in mutant.unread if mutant.slip in UNUSED_READS else ():
+        found.append(Hypothesis(f"{key}=unread:{name}", "value_unused", COST, (
+            f"`{mutant.function}` reads another value where `{name}` belongs: the value it computes as `{name}` is "
+            "never used"), twin=True))
     for parameter in mutant.unused:
         if (untested and parameter in mutant.defaulted) or parameter in unreached:
             found.append(Hypothesis(f"{key}=unused:{parameter}", "ignored_argument", COST,

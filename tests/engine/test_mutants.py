@@ -2253,7 +2253,7 @@ def test_a_symbolic_functions_substitutions_are_not_exchanged_nor_its_angles_con
     lines = tuple((region[1], region[2]) for region in function.regions)
     slips = list(mutants._mutated(function, lines))
     assert slips
-    for slip, tree, _ in slips:
+    for slip, tree, _, _ in slips:
         assert {ast.dump(node) for node in ast.walk(tree) if isinstance(node, ast.Dict)} <= dicts, slip
         assert slip != "converted_radians"
 

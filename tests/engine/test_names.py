@@ -261,7 +261,7 @@ def test_the_reads_of_names_are_bounded_and_come_last(made_up):
     assert {ast.unparse(v) for _, v in mutants._defaults(functions["sag"])["span"]} == {"SPAN"}
     for function in functions.values():
         lines = tuple((first, last) for _, first, last in function.regions)
-        slips = [slip for slip, _, _ in mutants._mutated(function, lines)]
+        slips = [slip for slip, *_ in mutants._mutated(function, lines)]
         late = [k for k, slip in enumerate(slips) if slip in mutants.LATE_SLIPS]
         assert not late or late == list(range(late[0], len(slips))), (function.path, slips)
 

@@ -6,7 +6,8 @@ state read from the wrong row, or a value left unused.
 A mistake planted into a made-up problem (a right-hand side that calls its controller), named on two inputs; the
 same read in the compared function itself adds no value left unused there (the test of an ignored argument is the
 measure of its own arguments); and a slip of another kind that leaves the value unused (its term dropped) adds none
-either."""
+either.  A read that leaves a value the function computes unread (``return q, qd, qd`` for ``return q, qd, qdd``)
+is told so in any function, the compared one too."""
 
 import importlib
 
@@ -33,6 +34,16 @@ def controller(M, qd_des, qdd_des):
     # END SOLUTION
 
 
+def motion(t):
+    """A made-up motion's position, rate and acceleration at ``t``."""
+    # BEGIN SOLUTION problem 73
+    q = np.sin(t)
+    qd = np.cos(t)
+    qdd = -np.sin(t)
+    return np.array([q, qd, qdd])
+    # END SOLUTION
+
+
 def rhs(M, q_des, qd_des, qdd_des):
     """A made-up right-hand side: the torques less a spring's pull."""
     # BEGIN SOLUTION problem 73
@@ -55,8 +66,12 @@ def probe_of(name):
 
 
 def found(package, name, student):
-    probe = probe_of(name)
     inputs = INPUTS if name == "rhs" else [(M, qd_des, qdd_des) for M, _, qd_des, qdd_des in INPUTS]
+    return found_of(package, name, student, inputs)
+
+
+def found_of(package, name, student, inputs):
+    probe = probe_of(name)
     evidences = [Evidence(array_of(student(*args)), array_of(probe(package, *args)), TIGHT, "value",
                           source=Source(probe, args, ())) for args in inputs]
     return mutants.mutant_slips(scene(f"p73.{name}"), evidences)
@@ -91,3 +106,11 @@ def test_a_term_dropped_in_the_controller_adds_no_value_unused(made_up):
 
     hypotheses = found(made_up, "rhs", student)
     assert not any("the value passed as" in h.detail for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+def test_a_rate_returned_for_its_rate_leaves_the_value_computed_unused(made_up):
+    hypotheses = [h for h in found_of(made_up, "motion", lambda t: np.array([np.sin(t), np.cos(t), np.cos(t)]),
+                                      [(0.4,), (1.3,)])]
+    assert families(hypotheses) == {"state_row", "ignored_argument"}, [(h.name, h.detail) for h in hypotheses]
+    assert any("the value it computes as `qdd` is never used" in h.detail for h in hypotheses), \
+        [h.detail for h in hypotheses]
