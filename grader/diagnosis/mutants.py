@@ -3784,10 +3784,8 @@ def _hypotheses(kept: list[Mutant], evidences: list[Evidence] = (), untested: bo
             # another state
             found.setdefault(f"{key}=start", Hypothesis(f"{key}=start", "initial_state", COST, (
                 f"{detail}: the object the run steps starts from another state than the one given"), twin=True))
-        probe = evidences[0].source.probe
-        unused = _unreached(mutant, probe, unreached) if unreached else frozenset()
-        inner = not _of_probe(mutant, probe)
-        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused, inner):
+        unused = _unreached(mutant, evidences[0].source.probe, unreached) if unreached else frozenset()
+        for twin in equivalents(found[key], KINDS.get(mutant.slip, ())) + rivals(mutant, key, untested, unused):
             found.setdefault(twin.key, twin)  # one value by mathematics, or one edit read two ways: both told
     return list(found.values())
 
@@ -3823,14 +3821,12 @@ RIVALS = {
 
 
 #: the slips that read one value where another belongs (a quantity for its rate, a frame's coordinates for
-#: another's, one argument, angle or coordinate for another): where the edit leaves unused a parameter of a function
-#: other than the compared call's (a value its caller computed and passes, which the test of an ignored argument
-#: never changes), that value is read nowhere, as truly a value left unused
+#: another's, one argument, angle or coordinate for another): where the edit leaves a name the function binds
+#: unread, the value it computed there is read nowhere, as truly a value left unused
 UNUSED_READS = frozenset({"rates", "frames", "parameter_read", "angle", "coordinate"})
 
 
-def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozenset = frozenset(),
-           inner: bool = False) -> list[Hypothesis]:
+def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozenset = frozenset()) -> list[Hypothesis]:
     """The other readings of one mutant's edit, told beside its own name as a twin is (never where they would take
     the families told past two): a quantity used as its reciprocal (``RIVALS``); where the test of an ignored
     argument could change none of the call's arguments (``untested``: a probe of an event function, say), an
@@ -3839,12 +3835,11 @@ def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozense
     where that test ran out of its budget before it came to it (``unreached``: the names of the compared call's
     parameters it did not change; ``m = L W H`` for ``m = L W H rho``: a factor left out, and the density
     ignored).  Where that test changed an argument it is the measure of an argument ignored, heard as a tier of its
-    own: an argument it found followed is no twin.  A read of one value for another (``UNUSED_READS``) in a function
-    other than the compared call's (``inner``) that leaves one of its parameters unused leaves the value passed
-    there unused (``M @ qd_des`` for ``M @ qdd_des``: the desired accelerations read nowhere); in any function, one
-    that leaves a name it binds unread leaves the value it computed there unused (``return q, qd, qd``).  A slip of a
-    module's constant that is a start (``_START``: ``Q0``, ``START_ANGLES``: two of its entries exchanged, one typed
-    in degrees) starts the run from another state as truly: a wrong initial state, told beside it."""
+    own: an argument it found followed is no twin.  A read of one value for another (``UNUSED_READS``) that leaves
+    a name the function binds unread leaves the value it computed there unused (``return q, qd, qd`` for ``return
+    q, qd, qdd``).  A slip of a module's constant that is a start (``_START``: ``Q0``, ``START_ANGLES``: two of its
+    entries exchanged, one typed in degrees) starts the run from another state as truly: a wrong initial state, told
+    beside it."""
     found = []
     if mutant.slip in RIVALS:
         name, detail = RIVALS[mutant.slip]
@@ -3852,10 +3847,6 @@ def rivals(mutant: Mutant, key: str, untested: bool = False, unreached: frozense
     if mutant.bindings and _START.match(mutant.function) and DIAGNOSES[mutant.name].family != "initial_state":
         found.append(Hypothesis(f"{key}=start", "initial_state", COST, f"the start `{mutant.function}` is typed "
                                 "otherwise: the run starts from another state", twin=True))
-    for parameter in mutant.unused if inner and mutant.slip in UNUSED_READS else ():
-        found.append(Hypothesis(f"{key}=unread:{parameter}", "value_unused", COST, (
-            f"`{mutant.function}` reads another value where its argument `{parameter}` belongs: the value passed "
-            f"as `{parameter}` is never used"), twin=True))
     for name in mutant.unread if mutant.slip in UNUSED_READS else ():
         found.append(Hypothesis(f"{key}=unread:{name}", "value_unused", COST, (
             f"`{mutant.function}` reads another value where `{name}` belongs: the value it computes as `{name}` is "
@@ -3880,21 +3871,9 @@ def _unreached(mutant: Mutant, probe, positions) -> frozenset:
         parameters = list(inspect.signature(function).parameters)[1:]
     except (ProbeLookupError, TypeError, ValueError):
         return frozenset()
-    if not _of_probe(mutant, function):
+    if getattr(function, "__name__", None) != mutant.function:
         return frozenset()
     return frozenset(parameters[i] for i in positions if i < len(parameters))
-
-
-def _of_probe(mutant: Mutant, probe) -> bool:
-    """The mutant is of the function of the probe's name: the compared call's own, whose arguments the test of an
-    ignored argument changes."""
-    from probes import ProbeLookupError, lookup
-
-    try:
-        function = lookup(probe) if isinstance(probe, str) else probe
-    except ProbeLookupError:
-        return False
-    return getattr(function, "__name__", None) == mutant.function
 
 
 #: what the expression of a slip is, for the grammar's equivalences (``grammar.EQUIVALENCES``)
