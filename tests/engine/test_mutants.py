@@ -298,9 +298,11 @@ def test_a_slip_on_one_input_only_is_no_cause(tmp_path):
 
 
 def test_two_mistakes_at_once_are_no_single_slip(tmp_path):
+    """One entry of the bearings' difference halved and the other's sign turned: two slips of two kinds.  (Both
+    entries halved is the difference halved, one slip: a lever arm ``d`` for ``d / 2``.)"""
     found = slips_of(tmp_path, "p39.bearing_forces", "problem_39.py",
                      "difference = np.array([0.0, 2.0 * moment[2] / d, -2.0 * moment[1] / d])",
-                     "difference = np.array([0.0, moment[2] / d, -moment[1] / d])", "problem_39.bearing_forces",
+                     "difference = np.array([0.0, moment[2] / d, 2.0 * moment[1] / d])", "problem_39.bearing_forces",
                      BEARINGS, (0,))
     assert found == []
 
