@@ -400,7 +400,29 @@ def check_event_and_impact(ctx):
                  f"{SHEET_Q_PLUS.tolist()})", note=f"{ERRATUM} {BANDS_NOTE}")
     assert_close(qd_plus, expected["qd_plus"], "qd_plus", QD_PLUS, context=f"(a tight reference run; the sheet prints "
                  f"{SHEET_QD_PLUS.tolist()})", note=f"{ERRATUM} {BANDS_NOTE}")
+    _assert_halves_after(got, t_event, q_plus, qd_plus)
     _assert_other_wire(ctx, got)
+
+
+def _assert_halves_after(got, t_event, q_plus, qd_plus):
+    """The run's row at the event time is the state after the impact, from which the constrained phase starts.
+    Where that row holds the impact's state with its halves exchanged (``qd_plus`` as the angles, ``q_plus`` as the
+    rates: the second phase started from ``concatenate([qd_plus, q_plus])``), the state was put together in the
+    wrong order: told as such.  Any other row there is left to the checks of the motion (a run may end its first
+    phase at the event time, with the state before the impact in the last such row)."""
+    try:
+        t, q, qd = (np.asarray(got[key], dtype=float) for key in ("t", "q", "qd"))
+    except (KeyError, TypeError, ValueError):
+        return
+    if t.ndim != 1 or q.shape != (t.size, 3) or qd.shape != (t.size, 3):
+        return
+    rows = np.flatnonzero(np.abs(t - t_event) <= 1e-9 * max(1.0, abs(t_event)))
+    if rows.size and close(q[rows[-1]], qd_plus, EXACT) and close(qd[rows[-1]], q_plus, EXACT) \
+            and not close(q_plus, qd_plus, EXACT):
+        fail(f"the run's state at the event time t = {t_event:.6g} s, from which the constrained phase starts, holds "
+             f"your qd_plus as its angles and your q_plus as its rates: the state after the impact is put together "
+             f"with its halves exchanged.", "The state is y = (q, qd): start the constrained phase from "
+             "concatenate([q_plus, qd_plus]).", "state_row")
 
 
 def _positions_kept(q_minus, q_plus, expected, of, why):
