@@ -66,6 +66,9 @@ class Shared:
         try:
             for cls, method, function in self._classes():
                 if function is not holder:
+                    # kept as a constant's binding is: ``mutants._restore`` puts it back after the deadline, where
+                    # the deadline's interruption cut this block's own restoring short
+                    self.originals.setdefault((id(cls), method), (cls, method, function))
                     setattr(cls, method, self._wrapped(function))
                     installed.append((cls, method, function))
             yield

@@ -109,3 +109,20 @@ def test_a_pass_that_writes_into_a_container_is_not_kept():
     for a, b in zip(fresh.bodies, reached.bodies):
         for name in ("A_IB", "B_r_IB", "B_v_B", "B_omega_B", "B_a_B", "B_omegaDot_B", "B_J_S", "B_J_R"):
             assert np.array_equal(getattr(a, name), getattr(b, name)), name
+
+
+def test_the_pass_is_put_back_by_the_restoring_of_the_explanation():
+    """The shared pass is kept in the explanation's ``originals`` as a constant's binding is: where the deadline's
+    interruption cuts the block's own restoring short, ``mutants._restore`` (after the deadline) puts it back."""
+    root, package = mutants._package()
+    tree_module = __import__(f"{package.__name__}.tree", fromlist=["KinematicTree"])
+    original = tree_module.KinematicTree.__dict__["forward_kinematics"]
+    originals: dict = {}
+    shared = Shared(package, originals, str(root))
+    blocked = shared.around(None)
+    blocked.__enter__()  # entered and never left: its own restoring cut short
+    try:
+        assert tree_module.KinematicTree.__dict__["forward_kinematics"] is not original
+    finally:
+        mutants._restore(originals)
+    assert tree_module.KinematicTree.__dict__["forward_kinematics"] is original
