@@ -22,13 +22,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["PASSES", "MAX_KEPT", "Shared"]
+__all__ = ["PASSES", "MAX_KEPT", "MISSES_TRIED", "Shared"]
 
 #: the passes kept: ``(module, class, method)`` of the private package; the method's ``self`` holds the objects it
 #: updates (``bodies``, ``joints``) and it returns ``self``
 PASSES = (("tree", "KinematicTree", "forward_kinematics"),)
 #: the most passes kept for one explanation
 MAX_KEPT = 256
+#: the passes run as they are (keyed, traced, none set again) before sharing is weighed by what it saved
+MISSES_TRIED = 16
 #: the attribute values a kept pass may set: copied where they are arrays
 _PLAIN = (type(None), bool, int, float, str, np.ndarray, np.floating, np.integer)
 
@@ -47,6 +49,7 @@ class Shared:
         self.package, self.originals, self.root = package, originals, root
         self.kept: dict = {}
         self.hits = self.misses = 0
+        self.reaching: set = set()  # the original codes a pass has been seen to run
 
     def _classes(self) -> list:
         found = []
@@ -61,10 +64,12 @@ class Shared:
     @contextlib.contextmanager
     def around(self, holder):
         """Within: the passes shared, unless ``holder`` (the function whose code the mutant changes) is one of
-        them."""
+        them or a pass has been seen to run its code (its mutants run the pass as it is, without the cost of keying
+        and tracing it), or the passes are seldom met alike (``_worth``)."""
         installed = []
+        original = self.originals.get(id(holder), (None, None))[1] if holder is not None else None
         try:
-            for cls, method, function in self._classes():
+            for cls, method, function in self._classes() if original not in self.reaching and self._worth() else ():
                 if function is not holder:
                     # kept as a constant's binding is: ``mutants._restore`` puts it back after the deadline, where
                     # the deadline's interruption cut this block's own restoring short
@@ -75,6 +80,11 @@ class Shared:
         finally:
             for cls, method, function in installed:
                 setattr(cls, method, function)
+
+    def _worth(self) -> bool:
+        """Whether keying and tracing the passes pays: after ``MISSES_TRIED`` passes run as they are, only where
+        at least as many were set again."""
+        return self.misses < MISSES_TRIED or self.hits >= self.misses
 
     def _changed(self) -> set:
         """The original codes of the functions that run another code now."""
@@ -128,8 +138,10 @@ class Shared:
         finally:
             sys.setprofile(previous)
         self.misses += 1
-        swapped_in = {kept[0].__code__ for kept in self.originals.values() if len(kept) == 2}
-        if before is None or result is not tree or seen & swapped_in or len(self.kept) >= MAX_KEPT:
+        swapped = {kept[0].__code__: kept[1] for kept in self.originals.values()
+                   if len(kept) == 2 and kept[0].__code__ is not kept[1]}
+        self.reaching |= {swapped.get(code, code) for code in seen}
+        if before is None or result is not tree or seen & set(swapped) or len(self.kept) >= MAX_KEPT:
             return result
         effects = _effects(objects, before)
         after = _objects(tree)
