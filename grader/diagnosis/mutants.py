@@ -661,6 +661,8 @@ SLIPS = {
                                    "is, ``2 * omega x v``)"),
     "term_halved": ("factor_half", "`{f}` takes one term of a sum halved (a factor 1/2 that belongs elsewhere: "
                                    "in a kinetic energy, a drag's ``rho v**2 / 2``)"),
+    "step_term": ("step_typed", "`{f}` takes the term of its step halved or doubled (``x + dt * f / 2`` for ``x + dt "
+                                "* f``): the run takes steps of another size"),
     "sibling_number": ("wrong_factor", "`{f}` takes a number of another formula of its module (the cuboid's 12 "
                                        "where the ellipsoid's 20 belongs)"),
     "coordinate": ("state_row", "`{f}` reads one coordinate where another unpacked with it belongs (``q1`` for ``q2`` "
@@ -2578,11 +2580,14 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "sibling_number", lambda n, typed=typed: ast.Constant(typed)
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) and not _number(node.right):
         # one term of a sum taken twice or halved; a sum's first term only where it is no sum itself (else its own last)
+        # (a term that takes a step, ``dt * f`` of ``x + dt * f``, so scaled is a step of another size)
         for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
+            slip = "step_term" if _takes_step(node.right) else slip
             yield slip, lambda n, k=factor: _with(n, right=ast.BinOp(ast.Constant(k), ast.Mult(), n.right))
         if not (isinstance(node.left, ast.BinOp) and isinstance(node.left.op, (ast.Add, ast.Sub))) \
                 and not _number(node.left):
             for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
+                slip = "step_term" if _takes_step(node.left) else slip
                 yield slip, lambda n, k=factor: _with(n, left=ast.BinOp(ast.Constant(k), ast.Mult(), n.left))
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
@@ -3220,12 +3225,18 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
     return owner is not None and owner[0] < problem
 
 
+def _takes_step(term) -> bool:
+    """The term is a product that takes a step by the course's names (``dt * f``, ``h * k1``, ``DT * rates``)."""
+    return isinstance(term, ast.BinOp) and isinstance(term.op, ast.Mult) and any(
+        isinstance(n, ast.Name) and _STEP_CONSTANT.match(n.id.upper()) for n in ast.walk(term))
+
+
 #: the slips of a read of one name for another (``_name_slips``, ``_default_slips``): tried after every other slip
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
                         "sum_part", "stored_from", "repeated", "argument_repeated", "term_doubled", "term_halved",
-                        "parameter_read",
+                        "step_term", "parameter_read",
                         "coordinate", "sibling_number"})
 
 

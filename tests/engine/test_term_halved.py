@@ -3,7 +3,8 @@ it does not belong, on one term of a sum (a drag force written as ``rho v**2 / 2
 constant holds the half already), is a factor half.
 
 A mistake planted into a made-up problem (a ball's acceleration under gravity and drag) that the tier names on two
-inputs, with a near miss it must not name so: the drag taken a third of itself, which no factor 1/2 gives."""
+inputs, with a near miss it must not name so: the drag taken a third of itself, which no factor 1/2 gives.  A term
+that takes the step (``x + dt * v / 2`` for ``x + dt * v``) so halved is a step of another size, not a factor."""
 
 from .stand_ins import made_up_fixture
 from .test_mutants import made_up_evidences, scene
@@ -18,6 +19,13 @@ def acceleration(v, k, g):
     """A made-up ball's acceleration at the speed ``v`` under gravity ``g`` and a drag of constant ``k``."""
     # BEGIN SOLUTION problem 75
     return -g - k * np.abs(v) * v
+    # END SOLUTION
+
+
+def euler_step(x, v, dt):
+    """One made-up explicit Euler step of the position ``x`` at the speed ``v``."""
+    # BEGIN SOLUTION problem 75
+    return x + dt * v
     # END SOLUTION
 '''
 
@@ -46,3 +54,10 @@ def test_the_drag_taken_a_third_is_no_factor_half(made_up):
 
     hypotheses = found(made_up, student)
     assert not any(h.name == "factor_half" for h in hypotheses), [(h.name, h.detail) for h in hypotheses]
+
+
+def test_the_step_term_halved_is_a_step_of_another_size(made_up):
+    evidences = made_up_evidences(made_up, "euler_step", lambda x, v, dt: x + dt * v / 2,
+                                  [(0.3, 1.7, 0.01), (-1.2, 0.4, 0.05)], number=75)
+    hypotheses = mutants.mutant_slips(scene("p75.euler_step"), evidences)
+    assert {h.name for h in hypotheses} == {"step_typed"}, [(h.name, h.detail) for h in hypotheses]
