@@ -3226,8 +3226,8 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
 
 
 def _takes_step(term) -> bool:
-    """The term is a product that takes a step by the course's names (``dt * f``, ``h * k1``, ``DT * rates``)."""
-    return isinstance(term, ast.BinOp) and isinstance(term.op, ast.Mult) and any(
+    """The term is a product that takes a step by the course's names (``dt * f``, ``h * k1``, ``dt * W @ A``)."""
+    return isinstance(term, ast.BinOp) and isinstance(term.op, (ast.Mult, ast.MatMult, ast.Div)) and any(
         isinstance(n, ast.Name) and _STEP_CONSTANT.match(n.id.upper()) for n in ast.walk(term))
 
 

@@ -4,7 +4,10 @@ constant holds the half already), is a factor half.
 
 A mistake planted into a made-up problem (a ball's acceleration under gravity and drag) that the tier names on two
 inputs, with a near miss it must not name so: the drag taken a third of itself, which no factor 1/2 gives.  A term
-that takes the step (``x + dt * v / 2`` for ``x + dt * v``) so halved is a step of another size, not a factor."""
+that takes the step (``x + dt * E @ v / 2`` for ``x + dt * E @ v``, a matrix product as problem 8's) so halved is a
+step of another size, not a factor."""
+
+import numpy as np
 
 from .stand_ins import made_up_fixture
 from .test_mutants import made_up_evidences, scene
@@ -25,7 +28,7 @@ def acceleration(v, k, g):
 def euler_step(x, v, dt):
     """One made-up explicit Euler step of the position ``x`` at the speed ``v``."""
     # BEGIN SOLUTION problem 75
-    return x + dt * v
+    return x + dt * np.eye(2) @ v
     # END SOLUTION
 '''
 
@@ -58,6 +61,7 @@ def test_the_drag_taken_a_third_is_no_factor_half(made_up):
 
 def test_the_step_term_halved_is_a_step_of_another_size(made_up):
     evidences = made_up_evidences(made_up, "euler_step", lambda x, v, dt: x + dt * v / 2,
-                                  [(0.3, 1.7, 0.01), (-1.2, 0.4, 0.05)], number=75)
+                                  [(np.array([0.3, 1.1]), np.array([1.7, -0.2]), 0.01),
+                                   (np.array([-1.2, 0.5]), np.array([0.4, 2.3]), 0.05)], number=75)
     hypotheses = mutants.mutant_slips(scene("p75.euler_step"), evidences)
     assert {h.name for h in hypotheses} == {"step_typed"}, [(h.name, h.detail) for h in hypotheses]
