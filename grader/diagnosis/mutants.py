@@ -661,8 +661,8 @@ SLIPS = {
                                    "is, ``2 * omega x v``)"),
     "term_halved": ("factor_half", "`{f}` takes one term of a sum halved (a factor 1/2 that belongs elsewhere: "
                                    "in a kinetic energy, a drag's ``rho v**2 / 2``)"),
-    "step_term": ("step_typed", "`{f}` takes the term of its step halved or doubled (``x + dt * f / 2`` for ``x + dt "
-                                "* f``): the run takes steps of another size"),
+    "step_term": ("step_typed", "`{f}` takes the term of its step halved (``x + dt * f / 2`` for ``x + dt * f``): the "
+                                "run takes steps of half the size"),
     "sibling_number": ("wrong_factor", "`{f}` takes a number of another formula of its module (the cuboid's 12 "
                                        "where the ellipsoid's 20 belongs)"),
     "coordinate": ("state_row", "`{f}` reads one coordinate where another unpacked with it belongs (``q1`` for ``q2`` "
@@ -2580,14 +2580,15 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "sibling_number", lambda n, typed=typed: ast.Constant(typed)
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) and not _number(node.right):
         # one term of a sum taken twice or halved; a sum's first term only where it is no sum itself (else its own last)
-        # (a term that takes a step, ``dt * f`` of ``x + dt * f``, so scaled is a step of another size)
+        # (a term that takes a step, ``dt * f`` of ``x + dt * f``, so halved is a step of half the size; so doubled
+        # it is as truly the update written twice, which the term taken twice tells)
         for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
-            slip = "step_term" if _takes_step(node.right) else slip
+            slip = "step_term" if factor < 1 and _takes_step(node.right) else slip
             yield slip, lambda n, k=factor: _with(n, right=ast.BinOp(ast.Constant(k), ast.Mult(), n.right))
         if not (isinstance(node.left, ast.BinOp) and isinstance(node.left.op, (ast.Add, ast.Sub))) \
                 and not _number(node.left):
             for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
-                slip = "step_term" if _takes_step(node.left) else slip
+                slip = "step_term" if factor < 1 and _takes_step(node.left) else slip
                 yield slip, lambda n, k=factor: _with(n, left=ast.BinOp(ast.Constant(k), ast.Mult(), n.left))
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):

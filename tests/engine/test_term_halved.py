@@ -65,3 +65,14 @@ def test_the_step_term_halved_is_a_step_of_another_size(made_up):
                                    (np.array([-1.2, 0.5]), np.array([0.4, 2.3]), 0.05)], number=75)
     hypotheses = mutants.mutant_slips(scene("p75.euler_step"), evidences)
     assert {h.name for h in hypotheses} == {"step_typed"}, [(h.name, h.detail) for h in hypotheses]
+
+
+def test_the_step_term_doubled_is_the_update_written_twice(made_up):
+    """The step's term doubled (``x + 2 * dt * E @ v``) is as truly the update written twice: the term taken twice
+    tells it, with the term added once more beside it."""
+    evidences = made_up_evidences(made_up, "euler_step", lambda x, v, dt: x + 2 * dt * v,
+                                  [(np.array([0.3, 1.1]), np.array([1.7, -0.2]), 0.01),
+                                   (np.array([-1.2, 0.5]), np.array([0.4, 2.3]), 0.05)], number=75)
+    hypotheses = mutants.mutant_slips(scene("p75.euler_step"), evidences)
+    assert {h.name for h in hypotheses} >= {"factor_two", "extra_term"}, [(h.name, h.detail) for h in hypotheses]
+    assert "step_typed" not in {h.name for h in hypotheses}, [(h.name, h.detail) for h in hypotheses]
