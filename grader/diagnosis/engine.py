@@ -416,8 +416,7 @@ def _unchanged(scene: Scene, at_input: Evidence, path) -> bool | None:
             or not distinct(theirs, at_input.expected, at_input.tol):
         return None
     try:
-        other = scene.student_at(source.probe, args, student.path) if student.probe == source.probe \
-            else array_of(at(scene.student(source.probe, args), student.path))
+        other = scene.student_at(source.probe, args, student.path)
     except StudentFault:
         return None
     if other is None or other.shape != at_input.got.shape:
@@ -434,8 +433,7 @@ def _moved_input(scene: Scene, evidence: Evidence, decl: Declaration | None) -> 
         return None
     try:
         expected = scene.reference_at(source.probe, args, source.path)
-        got = scene.student_at(source.probe, args, student.path) if student.probe == source.probe \
-            else array_of(at(scene.student(source.probe, args), student.path))
+        got = scene.student_at(source.probe, args, student.path)
     except (GraderFault, StudentFault):
         return None
     if expected is None or got is None or got.shape != expected.shape \

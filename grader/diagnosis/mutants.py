@@ -298,8 +298,7 @@ class Mutant:
     quick: object = None  # the code without sympy's simplifications (``_unsimplified``), where it has any
     given: bool = False  # a slip of a function that the problem's module gives whole (``_Function.given``)
     bindings: tuple = ()  # a slip of a module's constant: ``(holder, attribute, value)`` set while it is measured
-    unread: tuple = ()  # the names the function binds and reads that the slip leaves unread (``qdd`` of ``return q,
-    # qd, qd`` for ``return q, qd, qdd``)
+    unread: tuple = ()  # the names the function binds and reads that the slip leaves unread (``qdd``, returned as qd)
 
     @property
     def function(self) -> str:
@@ -2580,16 +2579,10 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "sibling_number", lambda n, typed=typed: ast.Constant(typed)
     if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)) and not _number(node.right):
         # one term of a sum taken twice or halved; a sum's first term only where it is no sum itself (else its own last)
-        # (a term that takes a step, ``dt * f`` of ``x + dt * f``, so halved is a step of half the size; so doubled
-        # it is as truly the update written twice, which the term taken twice tells)
-        for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
-            slip = "step_term" if factor < 1 and _takes_step(node.right) else slip
-            yield slip, lambda n, k=factor: _with(n, right=ast.BinOp(ast.Constant(k), ast.Mult(), n.right))
+        yield from _scaled_terms(node, "right")
         if not (isinstance(node.left, ast.BinOp) and isinstance(node.left.op, (ast.Add, ast.Sub))) \
                 and not _number(node.left):
-            for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
-                slip = "step_term" if factor < 1 and _takes_step(node.left) else slip
-                yield slip, lambda n, k=factor: _with(n, left=ast.BinOp(ast.Constant(k), ast.Mult(), n.left))
+            yield from _scaled_terms(node, "left")
     if isinstance(node, (ast.Assign, ast.AugAssign, ast.Return, ast.Expr)):
         for pattern in sorted({_axes(n) for n in ast.walk(node)} - {None}):
             yield "axes", lambda n, pattern=pattern: _axes_exchanged(n, pattern)
@@ -3226,6 +3219,15 @@ def _owned_earlier(function: _Function, problem: int) -> bool:
     return owner is not None and owner[0] < problem
 
 
+def _scaled_terms(node: ast.BinOp, side: str):
+    """The term on ``side`` of a sum taken twice, and halved: a term that takes a step (``dt * f`` of ``x + dt * f``)
+    so halved is a step of half the size; so doubled it is as truly the update written twice, which the term taken
+    twice tells."""
+    for slip, factor in (("term_doubled", 2), ("term_halved", 0.5)):
+        slip = "step_term" if factor < 1 and _takes_step(getattr(node, side)) else slip
+        yield slip, lambda n, k=factor: _with(n, **{side: ast.BinOp(ast.Constant(k), ast.Mult(), getattr(n, side))})
+
+
 def _takes_step(term) -> bool:
     """The term is a product that takes a step by the course's names (``dt * f``, ``h * k1``, ``dt * W @ A``)."""
     return isinstance(term, ast.BinOp) and isinstance(term.op, (ast.Mult, ast.MatMult, ast.Div)) and any(
@@ -3237,8 +3239,7 @@ def _takes_step(term) -> bool:
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
                         "sum_part", "stored_from", "repeated", "argument_repeated", "term_doubled", "term_halved",
-                        "step_term", "parameter_read",
-                        "coordinate", "sibling_number"})
+                        "step_term", "parameter_read", "coordinate", "sibling_number"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
