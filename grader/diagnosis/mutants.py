@@ -675,6 +675,9 @@ SLIPS = {
                                     "neighbour): the argument that belongs there is never used"),
     "repeated": ("value_unused", "`{f}` writes one entry of a list of names as its neighbour (``(m1, m1)`` for "
                                  "``(m1, m2)``): the name that belongs there is never used"),
+    "zeros_filled": ("extra_term", "`{f}` passes a value where an array of zeros belongs (``forward_dynamics(M, f, g, "
+                                   "qd)`` for ``forward_dynamics(M, f, g, np.zeros(n))``: the rates as the torques): a "
+                                   "term that does not belong is added"),
     "argument_repeated": ("value_unused", "`{f}` passes one argument of a call as its neighbour (``f(y, m, m, g)`` "
                                           "for ``f(y, m, theta, g)``): the name that belongs there is never used"),
     "default": ("ignored_argument", "`{f}` reads a constant (the default, or the module's constant of that name) "
@@ -2454,6 +2457,33 @@ def _bound_solves(function: ast.FunctionDef) -> dict:
             and not value.keywords}
 
 
+#: the calls that make an array of zeros: one passed to a call stands for a quantity that is zero there (no torque)
+_ZEROS = frozenset({"zeros", "zeros_like"})
+#: the names of a function that a slip of one argument of zeros tries in its place, at most
+MAX_FILLS = 6
+
+
+def _zero_arguments(function: ast.FunctionDef) -> dict:
+    """``{id of an argument of zeros: the names}`` of the arrays of zeros that the function passes to a call by
+    themselves (``forward_dynamics(M, f, g, np.zeros(3))``; not one inside a list, a state's rates at rest), with the
+    names a slip could pass there instead: the function's parameters and the names it binds before that line, but
+    ``self`` and the module's constants (upper case)."""
+    parameters = _parameters(function) - {"self", "cls"}
+    bound = [(n.lineno, n.id) for n in ast.walk(function) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)]
+    found = {}
+    for call in ast.walk(function):
+        if not isinstance(call, ast.Call) or _callee(call) in _ZEROS:
+            continue
+        for argument in call.args:
+            if not (isinstance(argument, ast.Call) and _callee(argument) in _ZEROS):
+                continue
+            names = sorted(parameters | {name for line, name in bound if line < call.lineno})
+            names = [name for name in names if not name.isupper() and name != "_"]
+            if names:
+                found[id(argument)] = tuple(names[:MAX_FILLS])
+    return found
+
+
 def _stored_reads(function: ast.FunctionDef) -> dict:
     """``{id of a read: the other arguments}`` of a constructor's reads of its arguments in the statements that
     store them (``self.B_a_B = _vector_or_zeros(B_a_B)``), where it stores two or more: the others, each one a read
@@ -2531,7 +2561,7 @@ def _built(function: ast.FunctionDef) -> frozenset:
 
 
 def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, starts: dict,
-                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {}, {}, {}),
+                built: frozenset = frozenset(), reads: tuple = ({}, {}, frozenset(), {}, {}, {}, {}),
                 numbers: frozenset = frozenset()):
     """One read of a name for another of its kind: an angle for another angle that the function reads (``np.cos(beta)``
     for ``np.cos(phi)``; where one is bound to a sum of the other and more, ``g_e = q2 + q4``, the read of the sum for
@@ -2540,16 +2570,19 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     from a start read as that start (``_starts``: the computation left unused); a slice's axes exchanged in one
     statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
     say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``).
-    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads, _unpacked_together, _bound_solves)`` of
+    ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads, _unpacked_together, _bound_solves,
+    _zero_arguments)`` of
     the function: a name bound to a sum read as one of its terms (the others left out there), a constructor's argument
     stored from another one it stores (a line copied from its neighbour), a list of names with one that is read
     nowhere else written as its neighbour, one read of an argument where another that the same line reads belongs
     (not of an angle: its own slip), one read of a coordinate where another unpacked with it belongs (``q1`` for
     ``q2`` of ``q1, q2 = q``: read from the other's row; of two angles, the angle's slip), and one read of a name
     bound to a solve as the solve's right-hand side (``J @ J.T`` for ``J @ Minv_JT`` of ``Minv_JT = solve(M, J.T)``:
-    the inverse left out of that product alone).  A number a product or a quotient
+    the inverse left out of that product alone), and an argument of zeros passed to a call as a name the function
+    has bound before it (``forward_dynamics(M, f, g, qd)`` for ``forward_dynamics(M, f, g, np.zeros(n))``: the rates
+    as the torques, a term that does not belong added).  A number a product or a quotient
     takes typed as another that a formula of the module takes (``numbers``: ``m / 20`` for ``m / 12``)."""
-    terms, stored, once, siblings, unpacked, solved = reads
+    terms, stored, once, siblings, unpacked, solved, fills = reads
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
             for other in sorted(angles - {node.id}):
@@ -2573,6 +2606,8 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
             yield "start_value", lambda n: ast.Name(starts[n.id], ast.Load())
         if node.id in built and isinstance(parent, ast.Call) and node in parent.args:  # ``f(..., -hip)``
             yield "sign", _negated
+    for other in fills.get(id(node), ()):  # ``forward_dynamics(M, f, g, qd)`` for ``..., np.zeros(n))``
+        yield "zeros_filled", lambda n, other=other: ast.Name(other, ast.Load())
     if _factor_number(node) and isinstance(parent, ast.BinOp) and isinstance(parent.op, (ast.Mult, ast.Div)):
         for other in sorted(numbers - {node.value}, key=float):  # ``m / 20`` for ``m / 12``: another formula's
             typed = int(other) if type(node.value) is int and float(other).is_integer() else float(other)
@@ -2691,7 +2726,8 @@ def _mutated(function: _Function, lines: tuple):
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
     built = _built(function.node)
     reads = (_bound_terms(function.node), _stored_reads(function.node), _unread_once(function.node),
-             _sibling_reads(function.node), _unpacked_together(function.node), _bound_solves(function.node))
+             _sibling_reads(function.node), _unpacked_together(function.node), _bound_solves(function.node),
+             _zero_arguments(function.node))
     symbolic = _symbolic(function)
     # the reads of one name for another come after every other slip: the tier tries them last, within its budget;
     # the arguments converted to other units come last of all
@@ -3238,8 +3274,8 @@ def _takes_step(term) -> bool:
 #: of every function, as many as ``MAX_MUTANTS`` leaves room for
 LATE_SLIPS = frozenset({"angle", "angle_sum", "angle_part", "default", "defaults", "start_value", "earth", "axes",
                         "cycled", "typed", "written_index", "converted_radians", "converted_rpm", "converted_degrees",
-                        "sum_part", "stored_from", "repeated", "argument_repeated", "term_doubled", "term_halved",
-                        "step_term", "parameter_read", "coordinate", "sibling_number"})
+                        "sum_part", "stored_from", "repeated", "argument_repeated", "zeros_filled", "term_doubled",
+                        "term_halved", "step_term", "parameter_read", "coordinate", "sibling_number"})
 
 
 def mutants_of(package, root: Path, problem: int, probe, args, quick: tuple = (),
