@@ -48,11 +48,13 @@ not an explanation: where it would take the families told past two, it is left o
 So is one edit or one finding that reads as a slip of another family as truly (``mutants.rivals``,
 ``engine._unturned``): a product with a quantity where the division by it belongs is a factor off and the quantity
 used as its reciprocal; an angle or a rotation found ignored, where the student's value is the reference's with it
-turning nothing, is a rotation left out as well; where no argument of the call could be tested, a parameter with a
-default that a slip of a formula leaves unused is an argument ignored, and so is an argument of the call that the
-test of an ignored argument had no budget to change (a mass computed without its density: a factor left out, and
-the density ignored); and a factor left out of a product that leaves the answer no multiple of the expected one (a
-cosine left out of some entries, an inverse mass matrix) is a part of the formula left out, a term missing
+turning nothing, is a rotation left out as well, and an argument found ignored where the student's value is the
+reference's with it zero is the terms it makes left out as well (``engine._zeroed``: an array so ignored is told even
+where no other tier explains the answer, with both readings); where no argument of the call could be tested, a parameter
+with a default that a slip of a formula leaves unused is an argument ignored, and so is an argument of the call that the
+test of an ignored argument had no budget to change (a mass computed without its density: a factor left out, and the
+density ignored); and a factor left out of a product that leaves the answer no multiple of the expected one (a cosine
+left out of some entries, an inverse mass matrix) is a part of the formula left out, a term missing
 (``engine._unscaled``).  A name more particular than another is
 told alone only where the evidence proves it: two names unpacked from a run's state and exchanged read the state
 from each other's rows (a state row, not entries swapped).

@@ -489,7 +489,8 @@ def _ignored(scene: Scene, evidences: list, unreached: list | None = None) -> li
                                     f"your value does not change when {_label(decl, path)} {changed_how(value)} "
                                     "(on the input shown and on one with every argument changed), while the "
                                     "expected one does: the function ignores it"))
-            found += _unturned(scene, [first, shifted], found[-1], decl, path, role)
+            found += _unturned(scene, [first, shifted], found[-1], decl, path, role) \
+                or _zeroed(scene, [first, shifted], found[-1], decl, path, role)
     trace.note("ignored", arguments=len(leaves), followed=len(followed), found=[h.key for h in found],
                complete=complete)
     ignored = [h for h in found if not h.twin]  # a twin reads an argument ignored another way
@@ -523,6 +524,35 @@ def _unturned(scene: Scene, inputs: list, ignored: Hypothesis, decl: Declaration
     return [Hypothesis(f"{ignored.key}=unturned", "wrong_frame", ignored.cost,
                        f"your value is the expected one with {_label(decl, path)} turning nothing: a rotation by it "
                        "is left out (the value stays in the coordinates of the frame not turned)", twin=True)]
+
+
+def _zeroed(scene: Scene, inputs: list, ignored: Hypothesis, decl: Declaration | None, path, role: str) -> list:
+    """The rival of an argument found ignored (``ignored``) that adds terms to the value: where the student's value
+    is the reference's with that argument zero on the input shown and on the moved one (``inputs``), the terms it
+    makes are left out, a term missing told beside the argument ignored (a twin: one value, read two ways; ``M qdd =
+    f + g`` for ``M qdd = f + g + tau``, a gait's sine series left out with its coefficients).  Two reference calls;
+    none for an angle or a rotation (zero turns nothing: ``_unturned``'s), nor where the argument is zero already."""
+    for one in inputs:
+        args = tuple(one.source.args)
+        try:
+            value = at(list(args), path)
+        except (IndexError, KeyError, TypeError):
+            return []
+        array = array_of(value)
+        if array is None or not np.all(np.isfinite(array)) or not np.any(array != 0) \
+                or unturned(role, value) is not None:
+            return []
+        zero = np.zeros_like(array, dtype=float)
+        zero = float(zero) if zero.ndim == 0 else zero.tolist() if isinstance(value, (list, tuple)) else zero
+        try:
+            expected = scene.reference_at(one.source.probe, replaced(args, path, zero), one.source.path)
+        except GraderFault:
+            return []
+        if expected is None or expected.shape != one.got.shape or not within(expected, one.got, one.tol):
+            return []
+    return [Hypothesis(f"{ignored.key}{ZEROED}", "missing_term", ignored.cost,
+                       f"your value is the expected one with {_label(decl, path)} zero: the terms it makes are left "
+                       "out", twin=True)]
 
 
 def _label(decl: Declaration | None, path) -> str:
@@ -846,18 +876,25 @@ def _beside(tiers: list) -> list:
     angle changes), which is no argument ignored, and where it would take the families told past
     ``MAX_FAMILIES`` it is left out rather than nothing named (a pendulum's Jacobian that no angle changes, beside
     a sign and a term that each reproduce it).  A number ignored, or every argument (a constant answer), is a
-    tier's explanation as any other."""
+    tier's explanation as any other; so, where no other tier explains the answer, is an array ignored whose value
+    is the reference's with the array zero (``_zeroed``), told with the terms it makes left out: both readings."""
     others = [tier for tier in tiers if not any(h.key.startswith(IGNORED_KEYS) for h in tier)]
     simplest = [h for tier in others if tier for h in tier if h.cost == min(g.cost for g in tier) and not h.twin]
     families = {DIAGNOSES[h.name].family for h in simplest}
     if simplest and len(families | {DIAGNOSES["ignored_argument"].family}) <= MAX_FAMILIES:
         return tiers
-    return _without_arrays_ignored(tiers)
+    return _without_arrays_ignored(tiers, zeroed=not simplest)
 
 
-def _without_arrays_ignored(tiers: list) -> list:
-    """The tiers without their hypotheses of an array argument ignored (``IGNORED_ARRAY``)."""
-    return [[h for h in tier if not h.key.startswith(IGNORED_ARRAY)] for tier in tiers]
+def _without_arrays_ignored(tiers: list, zeroed: bool = False) -> list:
+    """The tiers without their hypotheses of an array argument ignored (``IGNORED_ARRAY``); with ``zeroed``, but
+    those with their twin of the array zero (``_zeroed``: the terms it makes left out) and that twin."""
+    def kept(tier):
+        pairs = {h.key[:-len(ZEROED)] for h in tier if h.key.endswith(ZEROED)} if zeroed else set()
+        return [h for h in tier if not h.key.startswith(IGNORED_ARRAY) or h.key in pairs
+                or (h.key.endswith(ZEROED) and h.key[:-len(ZEROED)] in pairs)]
+
+    return [kept(tier) for tier in tiers]
 
 
 def _where(evidences: list) -> str:
@@ -879,6 +916,8 @@ INPUT_KEYS = "in:"
 #: the keys of the test of an ignored argument: a number ignored (or every argument), an array ignored
 IGNORED_ARRAY = "ignored-array:"
 IGNORED_KEYS = ("ignored:", IGNORED_ARRAY)
+#: the end of the key of an argument ignored's twin of the argument zero (``_zeroed``)
+ZEROED = "=zeroed"
 
 
 def _heard(ask, explained: bool, tier: str) -> list:

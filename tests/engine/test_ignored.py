@@ -107,6 +107,41 @@ def test_a_frame_ignored_is_told_beside_the_other_frame(monkeypatch):
     assert "when A turns" in finding.hint
 
 
+#: a made-up gait: a cosine series and a sine series of the time, ``a @ cos(k t) + b @ sin(k t)``
+GAIT = Declaration(args=("scalar", "vector", "vector"), names=("t", "a", "b"), draw=False)
+HARMONICS = np.array([1.0, 2.0, 3.0])
+
+
+def _gait(t, a, b):
+    return np.asarray(a) @ np.cos(HARMONICS * t) + np.asarray(b) @ np.sin(HARMONICS * t)
+
+
+def test_an_argument_ignored_whose_zero_gives_the_value_is_told_beside_its_terms_left_out(monkeypatch):
+    """The sine series left out: the value does not follow its coefficients ``b`` (the argument ignored), and it
+    is the reference's with ``b`` zero: the terms ``b`` makes are left out, one value read two ways."""
+    finding = _explain(monkeypatch, "stub.gait", GAIT, _gait, lambda t, a, b: np.asarray(a) @ np.cos(HARMONICS * t),
+                       (0.7, np.array([0.3, -0.2, 0.05]), np.array([0.4, 0.1, -0.3])))
+    assert finding is not None and set(finding.names) == {"ignored_argument", "missing_term"}, finding
+    assert "with b zero" in finding.hint, finding.hint
+
+
+def test_an_argument_ignored_for_another_is_no_term_left_out(monkeypatch):
+    """The near miss: the sine series with the cosine's coefficients, ``a @ sin(k t)``: ``b`` is ignored, but the
+    value is not the reference's with ``b`` zero: the argument ignored alone, which, an array, is told only beside
+    another explanation (none here)."""
+    from grader.diagnosis import engine as explaining
+
+    heard = []
+    ignored = explaining._ignored
+    monkeypatch.setattr(explaining, "_ignored", lambda scene, evidences, *rest: heard.append(
+        ignored(scene, evidences, *rest)) or heard[-1])
+    finding = _explain(monkeypatch, "stub.gait", GAIT, _gait,
+                       lambda t, a, b: np.asarray(a) @ np.cos(HARMONICS * t) + np.asarray(a) @ np.sin(HARMONICS * t),
+                       (0.7, np.array([0.3, -0.2, 0.05]), np.array([0.4, 0.1, -0.3])))
+    assert [h.name for h in heard[0]] == ["ignored_argument"] and "when b is scaled" in heard[0][0].detail, heard
+    assert finding is None, finding
+
+
 def test_masses_ignored_are_told_beside_a_rival_never_alone(monkeypatch):
     """A probe that declares nothing: the student's sum of squared distances without the masses does not follow
     the masses, which the test of an ignored argument finds; alone, no other tier explaining it, an array that a
