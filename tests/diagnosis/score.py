@@ -800,7 +800,7 @@ student makes (a halved acceleration and a run cut by a row), and 5 failed their
 proportion and spread (3 for the shares of Exercises VI and VII, 1 a second entry of problem 19 that would have put
 the family scale above a fifth of the set, and 1 a second entry of problem 24 that would have left Exercise III at the
 edge of its share).  The whole set takes about a minute on a two-core machine beside other work (62 s graded, 64 s in
-all in the recording run); it was written in about 35 minutes.
+all in the recording run); it was written in about 30 minutes.
 
 **Two classifications.**  Every run classifies each diagnosis twice: *strictly* (right only when a told family is
 the entry's ``family``, as above) and *leniently* (right when a told family is its ``family`` or its ``also``;
