@@ -198,13 +198,28 @@ def motion_slips(evidence: Evidence, decl: Declaration) -> list:
         found.append(Hypothesis("motion:shift", "time_shift", 2, f"your run is the reference's shifted in time: "
                                  f"yours at t is the reference's at t {shift:+.4g}"))
     # a wrong initial state: the start differs from the given one (not where states read from other rows give the
-    # whole run, its start too)
-    start = [k for k in motion.get("states", ()) if k in G and abs(t[0] - t_r[0]) < 1e-9
-             and not within(G[k][0], R[k][0], tol)]
+    # whole run, its start too; nor of a state declared after one whose whole run is the reference's: the states
+    # are declared coordinates first, then their rates, and a run's coordinates follow from their rates' start, so
+    # rates whose start differs beside coordinates that are right throughout did not drive the run, where that
+    # start, kept over the run, would have moved the coordinates past the tolerance: they were derived otherwise,
+    # differenced from the angles, say; a coordinate's start may differ where its rates do not)
+    states = list(motion.get("states", ()))
+    start = [k for k in states if k in G and abs(t[0] - t_r[0]) < 1e-9 and not within(G[k][0], R[k][0], tol)]
+    settled = [k for k in states if k in G and k not in start and within(G[k], R[k], tol)]
+    start = [k for k in start if not any(states.index(s) < states.index(k) and _moves(G[k][0] - R[k][0], t, R[s], tol)
+                                         for s in settled)]
     if start and rows is None:
         words = "; ".join(f"{k}(t0) = {format_array(G[k][0])}, expected {format_array(R[k][0])}" for k in start)
         found.append(Hypothesis(START_KEY, "initial_state", 3, f"your run starts from another state: {words}"))
     return found
+
+
+def _moves(difference, t, settled, tol) -> bool:
+    """Whether a start of rates off by ``difference``, kept over the run's times ``t``, moves the coordinates
+    ``settled`` (the reference's run) past the tolerance: a start off by less (a rounding of the rates) may leave
+    them as they are."""
+    drift = float(np.max(np.abs(difference))) * float(t[-1] - t[0])
+    return not within(np.asarray(settled, dtype=float) + drift, np.asarray(settled, dtype=float), tol)
 
 
 #: how evenly a grid's samples must lie, and how closely its spacing must be a grid's of one sample more or fewer

@@ -558,3 +558,48 @@ def test_an_output_grid_one_sample_off_is_told_only_for_that_spacing(times, told
 
     found = grid_slips(_grid_evidence(times), Declaration(motion={"time": "t", "states": ("q",)}))
     assert [h.name for h in found] == (["grid_off_by_one"] if told else [])
+
+
+def _rates_run(mine, span=1.0):
+    """The motion slips of a stand-in run of two angles and their rates, over ``span`` seconds, against the
+    student's ``mine``."""
+    from grader.diagnosis import Declaration, Source
+    from grader.diagnosis.runs import motion_slips
+
+    t = np.linspace(0.0, span, 41)
+    ours = {"t": t, "q": np.column_stack([np.sin(2 * t), 0.3 * t * t]),
+            "qd": np.column_stack([2 * np.cos(2 * t), 0.6 * t])}
+    got = dict(mine(ours), t=t)
+    decl = Declaration(motion={"time": "t", "states": ("q", "qd")})
+    evidence = Evidence(got["qd"], ours["qd"], Tol("band", 1e-3), "qd", source=Source("stub.run", (), ("qd",), ours),
+                        student=Source("stub.run", (), ("qd",), got))
+    return {h.name for h in motion_slips(evidence, decl)}
+
+
+def test_rates_derived_from_angles_that_are_right_are_no_wrong_start():
+    """A run whose angles are the reference's throughout, its rates differenced from them afterwards (the first
+    rate a forward difference): the rates' start differs, but rates from another start would have moved the angles,
+    declared before them, so no wrong start is told; the near miss, a run from other rates, moves the angles too and
+    is told so.  (A coordinate's start that differs beside rates right throughout is a wrong start still:
+    ``test_one_input``'s drift of a matrix.)"""
+    def differenced(ours):
+        return {"q": ours["q"], "qd": np.vstack([np.diff(ours["q"], axis=0) / np.diff(ours["t"])[:, None],
+                                                 (ours["q"][-1] - ours["q"][-2]) / (ours["t"][-1] - ours["t"][-2])])}
+
+    assert "initial_state" not in _rates_run(differenced)
+
+    def started_otherwise(ours):
+        t = ours["t"][:, None]
+        return {"q": ours["q"] + 0.05 * t, "qd": ours["qd"] + 0.05}
+
+    assert "initial_state" in _rates_run(started_otherwise)
+
+
+def test_rates_started_a_little_off_beside_angles_within_the_tolerance_are_a_wrong_start():
+    """A start of the rates off by so little that, kept over the run, it would move the angles by less than their
+    tolerance (rounded, say): the angles being right says nothing of the start, which is told."""
+    def nudged(ours):
+        t = ours["t"][:, None]
+        return {"q": ours["q"] + 2e-3 * t, "qd": ours["qd"] + 2e-3 * np.exp(-20 * t)}
+
+    assert "initial_state" in _rates_run(nudged, span=0.2)
