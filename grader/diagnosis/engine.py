@@ -507,20 +507,8 @@ def _unturned(scene: Scene, inputs: list, ignored: Hypothesis, decl: Declaration
     on the input shown and on the moved one (``inputs``), a rotation by it is left out, a slip of the frame told
     beside the argument ignored (a twin: one value, read two ways).  Two reference calls; none where the argument
     is of another kind."""
-    for one in inputs:
-        args = tuple(one.source.args)
-        try:
-            still = unturned(role, at(list(args), path))
-        except (IndexError, KeyError, TypeError):
-            return []
-        if still is None:
-            return []
-        try:
-            value = scene.reference_at(one.source.probe, replaced(args, path, still), one.source.path)
-        except GraderFault:
-            return []
-        if value is None or value.shape != one.got.shape or not within(value, one.got, one.tol):
-            return []
+    if not _reproduced_with(scene, inputs, path, lambda value: unturned(role, value)):
+        return []
     return [Hypothesis(f"{ignored.key}=unturned", "wrong_frame", ignored.cost,
                        f"your value is the expected one with {_label(decl, path)} turning nothing: a rotation by it "
                        "is left out (the value stays in the coordinates of the frame not turned)", twin=True)]
@@ -532,27 +520,40 @@ def _zeroed(scene: Scene, inputs: list, ignored: Hypothesis, decl: Declaration |
     makes are left out, a term missing told beside the argument ignored (a twin: one value, read two ways; ``M qdd =
     f + g`` for ``M qdd = f + g + tau``, a gait's sine series left out with its coefficients).  Two reference calls;
     none for an angle or a rotation (zero turns nothing: ``_unturned``'s), nor where the argument is zero already."""
-    for one in inputs:
-        args = tuple(one.source.args)
-        try:
-            value = at(list(args), path)
-        except (IndexError, KeyError, TypeError):
-            return []
+    def zero(value):
         array = array_of(value)
         if array is None or not np.all(np.isfinite(array)) or not np.any(array != 0) \
                 or unturned(role, value) is not None:
-            return []
+            return None
         zero = np.zeros_like(array, dtype=float)
-        zero = float(zero) if zero.ndim == 0 else zero.tolist() if isinstance(value, (list, tuple)) else zero
-        try:
-            expected = scene.reference_at(one.source.probe, replaced(args, path, zero), one.source.path)
-        except GraderFault:
-            return []
-        if expected is None or expected.shape != one.got.shape or not within(expected, one.got, one.tol):
-            return []
+        return float(zero) if zero.ndim == 0 else zero.tolist() if isinstance(value, (list, tuple)) else zero
+
+    if not _reproduced_with(scene, inputs, path, zero):
+        return []
     return [Hypothesis(f"{ignored.key}{ZEROED}", "missing_term", ignored.cost,
                        f"your value is the expected one with {_label(decl, path)} zero: the terms it makes are left "
                        "out", twin=True)]
+
+
+def _reproduced_with(scene: Scene, inputs: list, path, replacement) -> bool:
+    """Whether the reference, with the argument at ``path`` replaced by ``replacement(argument)``, gives the
+    student's value on every one of ``inputs``: False where the replacement is None (no such value) or the
+    reference fails there."""
+    for one in inputs:
+        args = tuple(one.source.args)
+        try:
+            new = replacement(at(list(args), path))
+        except (IndexError, KeyError, TypeError):
+            return False
+        if new is None:
+            return False
+        try:
+            value = scene.reference_at(one.source.probe, replaced(args, path, new), one.source.path)
+        except GraderFault:
+            return False
+        if value is None or value.shape != one.got.shape or not within(value, one.got, one.tol):
+            return False
+    return True
 
 
 def _label(decl: Declaration | None, path) -> str:
@@ -692,7 +693,8 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
     outputs = _keep(inputs, [k for k in keys if not k.startswith(INPUT_KEYS)])
     if all(_same_shape(e) for e in evidences) and (len(inputs) > 1 or _told_enough(first)):
         outputs += _rounded(evidences, run, decl)  # a run's value as well: rounded only if so
-    tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs), described]
+    tiers = [found, outputs, _keep(inputs, [k for k in keys if k.startswith(INPUT_KEYS)]), term_slips(inputs),
+             described]
     trace.note("grammar", hypotheses=len(inputs[0].predicted), found=[h.name for tier in tiers for h in tier])
     explained = any(tiers)
     unreached = []
