@@ -2571,17 +2571,16 @@ def _name_slips(node, parent, angles: frozenset, defaults: dict, sums: dict, sta
     statement (``V[2, :]`` for ``V[:, 2]``, on both sides of ``V[:, 2] = -V[:, 2]``); and a list of names (coordinates,
     say) in the order of another that starts with its last or its second (``[phi, x, y]`` for ``[x, y, phi]``).
     ``reads``: ``(_bound_terms, _stored_reads, _unread_once, _sibling_reads, _unpacked_together, _bound_solves,
-    _zero_arguments)`` of
-    the function: a name bound to a sum read as one of its terms (the others left out there), a constructor's argument
-    stored from another one it stores (a line copied from its neighbour), a list of names with one that is read
-    nowhere else written as its neighbour, one read of an argument where another that the same line reads belongs
-    (not of an angle: its own slip), one read of a coordinate where another unpacked with it belongs (``q1`` for
-    ``q2`` of ``q1, q2 = q``: read from the other's row; of two angles, the angle's slip), and one read of a name
-    bound to a solve as the solve's right-hand side (``J @ J.T`` for ``J @ Minv_JT`` of ``Minv_JT = solve(M, J.T)``:
-    the inverse left out of that product alone), and an argument of zeros passed to a call as a name the function
-    has bound before it (``forward_dynamics(M, f, g, qd)`` for ``forward_dynamics(M, f, g, np.zeros(n))``: the rates
-    as the torques, a term that does not belong added).  A number a product or a quotient
-    takes typed as another that a formula of the module takes (``numbers``: ``m / 20`` for ``m / 12``)."""
+    _zero_arguments)`` of the function: a name bound to a sum read as one of its terms (the others left out there), a
+    constructor's argument stored from another one it stores (a line copied from its neighbour), a list of names with
+    one that is read nowhere else written as its neighbour, one read of an argument where another that the same line
+    reads belongs (not of an angle: its own slip), one read of a coordinate where another unpacked with it belongs
+    (``q1`` for ``q2`` of ``q1, q2 = q``: read from the other's row; of two angles, the angle's slip), and one read of a
+    name bound to a solve as the solve's right-hand side (``J @ J.T`` for ``J @ Minv_JT`` of ``Minv_JT = solve(M,
+    J.T)``: the inverse left out of that product alone), and an argument of zeros passed to a call as a name the
+    function has bound before it (``forward_dynamics(M, f, g, qd)`` for ``forward_dynamics(M, f, g, np.zeros(n))``: the
+    rates as the torques, a term that does not belong added).  A number a product or a quotient takes typed as another
+    that a formula of the module takes (``numbers``: ``m / 20`` for ``m / 12``)."""
     terms, stored, once, siblings, unpacked, solved, fills = reads
     if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
         if node.id in angles:
