@@ -525,8 +525,8 @@ def _zeroed(scene: Scene, inputs: list, ignored: Hypothesis, decl: Declaration |
         if array is None or not np.all(np.isfinite(array)) or not np.any(array != 0) \
                 or unturned(role, value) is not None:
             return None
-        zero = np.zeros_like(array, dtype=float)
-        return float(zero) if zero.ndim == 0 else zero.tolist() if isinstance(value, (list, tuple)) else zero
+        zeros = np.zeros_like(array, dtype=float)
+        return float(zeros) if zeros.ndim == 0 else zeros.tolist() if isinstance(value, (list, tuple)) else zeros
 
     if not _reproduced_with(scene, inputs, path, zero):
         return []
@@ -892,9 +892,9 @@ def _without_arrays_ignored(tiers: list, zeroed: bool = False) -> list:
     """The tiers without their hypotheses of an array argument ignored (``IGNORED_ARRAY``); with ``zeroed``, but
     those with their twin of the array zero (``_zeroed``: the terms it makes left out) and that twin."""
     def kept(tier):
-        pairs = {h.key[:-len(ZEROED)] for h in tier if h.key.endswith(ZEROED)} if zeroed else set()
-        return [h for h in tier if not h.key.startswith(IGNORED_ARRAY) or h.key in pairs
-                or (h.key.endswith(ZEROED) and h.key[:-len(ZEROED)] in pairs)]
+        pairs = {h.key[:-len(ZEROED)] for h in tier if h.key.endswith(ZEROED)}
+        return [h for h in tier if not h.key.startswith(IGNORED_ARRAY)
+                or zeroed and (h.key in pairs or h.key.endswith(ZEROED))]
 
     return [kept(tier) for tier in tiers]
 
