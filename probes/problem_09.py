@@ -3,8 +3,9 @@
 from . import module, probe
 from ._forms import ANY, Arr, Dict, Maybe, Seq
 
-#: the sheet's angles of problem 6, which ``build_chain()`` reads from the module (imported there)
-REBIND = {"module": "problem_09", "names": ("GAMMA", "BETA", "ALPHA")}
+#: the sheet's angles of problem 6, which ``build_chain()`` reads from the module (imported there), and its vector
+#: ``C3_V``, which ``vectors()`` reads (drawn anew so that its two entries alike are not: see problem 6's probes)
+REBIND = {"module": "problem_09", "names": ("GAMMA", "BETA", "ALPHA", "C3_V")}
 #: ``vectors()``: the coordinates of V in I, C1, C2, C3
 VECTORS = Dict({"I_v": Arr(3), "C1_v": Arr(3), "C2_v": Arr(3), "C3_v": Arr(3)})
 

@@ -34,7 +34,7 @@ from ..kit_support import (  # noqa: F401 (fixtures)
     graded_table,
     grade_live_and_kit,
 )
-from ..submissions import build_planted
+from ..submissions import Planted, build_planted
 
 ROOT = Path(__file__).resolve().parents[2]
 TABLE = ROOT / "tests" / "engine" / "rebound.toml"
@@ -164,3 +164,36 @@ def test_the_slip_with_the_numbers_typed_in_is_not_named_as_it(mistake, tmp_path
     assert result.status is Status.FAILED, result.message
     assert not set(families_of(result.diagnosis)) & set(families_of(mistake.diagnosis)), result.diagnosis
     assert mistake.message not in result.hint
+
+
+#: problem 6's ``C2_v`` from ``C3_v`` through ``R1(alpha)`` taken the wrong way round, and its entries 2 and 3
+#: exchanged: the sheet's ``C3_V = (1, 1, 1)`` has those entries alike, so the two give one value there
+TRANSPOSED_ON_ALIKE = Planted(
+    name="rebound-row-alike-transposed", problem=6, file="problem_06.py",
+    old='"C2_v": A["A_IC2"].T @ I_v,', new='"C2_v": R1(ALPHA).T @ C3_V,', check="p06.vectors")
+SWAPPED_ENTRIES = Planted(
+    name="rebound-row-alike-swapped", problem=6, file="problem_06.py",
+    old='"C2_v": A["A_IC2"].T @ I_v,', new='"C2_v": (A["A_IC2"].T @ I_v)[[0, 2, 1]],', check="p06.vectors",
+    diagnosis="swapped", message="entries 2 and 3 are swapped")
+
+
+def test_a_row_of_the_sheet_with_entries_alike_is_drawn_with_each_its_own(tmp_path, slot):
+    """The sheet's vector ``C3_V`` has two entries alike: drawn with the angles only, every second input keeps them
+    alike, and a rotation taken the wrong way round is told as two entries swapped on both inputs.  The vector is
+    drawn too (each entry its own), where the wrong rotation is told nothing and two entries swapped are still told."""
+    from grader import grade_problem
+    from grader.workers import Forked
+
+    from ..kit_support import SEED
+
+    def graded(mistake):
+        submission = build_planted(mistake, tmp_path / mistake.name)
+        report = grade_problem(6, submission, seed=SEED, workers=Forked(slot))
+        return {r.check_id: r for r in report.results}["p06.vectors"]
+
+    transposed = graded(TRANSPOSED_ON_ALIKE)
+    assert transposed.status is Status.FAILED, transposed.message
+    assert transposed.diagnosis != "swapped", transposed.hint
+    swapped = graded(SWAPPED_ENTRIES)
+    assert swapped.status is Status.FAILED and swapped.diagnosis == "swapped", (swapped.diagnosis, swapped.hint)
+    assert SWAPPED_ENTRIES.message in swapped.hint, swapped.hint
