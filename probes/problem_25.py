@@ -9,12 +9,16 @@ from ._symbolic import lambdify
 from ._trees import OUTLINE, POSES
 
 _SYMBOLIC = {}
+#: the lengths ``build_walker`` reads from the module: on the sheet the leg is twice the foot's radius, so the
+#: engine draws them anew with the angles (each its own)
+REBIND = {"module": "problem_25", "names": ("LEG_LENGTH", "FOOT_RADIUS", "DX", "DY")}
 
 
 @probe(
     returns=Dict({**POSES.fields, "outline": OUTLINE, "x": Arr(any_shape=True)}),
     says="build_walker()",
     args=("angle", "angle"),
+    rebind=REBIND,
 )
 def walker(pkg, alpha, gamma):
     """The walker of ``build_walker`` at ``q = (alpha, gamma)``: body states, outline and ``cog_positions``."""

@@ -54,7 +54,7 @@ from .grammar import (
 )
 from . import trace
 from .models import is_model, model_slips
-from .rebound import REBOUND, rebound_input
+from .rebound import REBOUND, rebound_input, rebound_with
 from .mutants import Contested, KIT_NOTE, left_to_live, mutant_slips, opposite_slips
 from .scene import Budget, constants_of, evidence_at, MAX_STUDENT_CALLS, Scene
 from .terms import term_slips, term_values
@@ -301,8 +301,8 @@ def _vanishes(value: np.ndarray, expected: np.ndarray, tol: Tol) -> bool:
 def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
     """The same comparison on an input the engine draws (``_drawn``: the probe's declared angles, vectors,
     rotations and scalars drawn anew, or every float of its arguments varied; where that draws nothing, the
-    module's constants the probes declare drawn anew, ``rebound_input``): the student's value there and the
-    reference's, or None.  Where the call has no arguments to draw or its value does not change with them, and no
+    module's constants the probes declare drawn anew, ``rebound_input``; where both are declared, the arguments and
+    the constants drawn at once, ``rebound_with``): the student's value there and the reference's, or None.  Where the call has no arguments to draw or its value does not change with them, and no
     constant is drawn anew, the evidence is marked ``alone``: its one input is all there is."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or evidence.motion:
@@ -315,6 +315,9 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
         evidence.alone = second is None and drawn is ALONE
         return second
     args, expected_root = drawn
+    with_constants = rebound_with(scene, evidence, args, expected_root)
+    if with_constants is not None:
+        return with_constants
     return evidence_at(scene, evidence, Source(source.probe, tuple(args), source.path, expected_root),
                        (source.probe, tuple(args)), "second")
 

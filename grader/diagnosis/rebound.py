@@ -19,7 +19,7 @@ from . import trace
 from .evidence import array_of, at, distinct, Evidence, Source
 from .scene import evidence_at
 
-__all__ = ["REBOUND", "CONSTANTS", "rebinding", "rebound_input", "rebound_drawn"]
+__all__ = ["REBOUND", "CONSTANTS", "rebinding", "rebound_input", "rebound_with", "rebound_drawn"]
 
 #: the probe that runs another one with constants bound (``probes._rebound``), and the one of the sheet's values
 REBOUND = "_rebound.rebound"
@@ -91,6 +91,29 @@ def _bindings(scene, probe: str, seed, attempt: int) -> list | None:
                 taken.append(drawn[-1])
         bindings.append([module, name, drawn if row.ndim else drawn[0]])
     return bindings or None
+
+
+def rebound_with(scene, evidence: Evidence, args, root) -> Evidence | None:
+    """The same comparison at the arguments the engine drew (``args``, where the reference's answer is ``root``)
+    with the constants the probe declares drawn anew as well, or None (none declared, or no draw usable: the value
+    does not change with them).  Constants related on the sheet stay so at every draw of the arguments alone
+    (problem 25's leg is twice its foot's radius, so a sum without the leg's length gives what one with the two
+    terms' signs turned does): drawn as well, such a coincidence no longer reproduces the student's value."""
+    source, student = evidence.source, evidence.student
+    if rebinding(source.probe) is None:
+        return None
+    drawn_source = Source(source.probe, tuple(args), source.path, root)
+    value = array_of(at(root, source.path))
+    if value is None:
+        return None
+    drawn = rebound_drawn(scene, drawn_source, value, evidence.tol)
+    if drawn is None:
+        return None
+    bindings, expected_root = drawn
+    trace.note("rebound", bindings=[[name, np.round(value, 6).tolist()] for _, name, value in bindings], drawn=True)
+    return evidence_at(scene, evidence, Source(REBOUND, (source.probe, bindings, list(args)), source.path,
+                                               expected_root),
+                       (REBOUND, (student.probe, bindings, list(args))), "rebound")
 
 
 def _inner(source: Source) -> tuple[str, list, int]:
