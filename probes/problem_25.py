@@ -9,8 +9,8 @@ from ._symbolic import lambdify
 from ._trees import OUTLINE, POSES
 
 _SYMBOLIC = {}
-#: the lengths ``build_walker`` reads from the module: on the sheet the leg is twice the foot's radius, so the
-#: engine draws them anew with the angles (each its own)
+#: the lengths ``build_walker`` and ``cog_positions_symbolic`` read from the module: on the sheet the leg is twice
+#: the foot's radius, so the engine draws them anew with the angles (each its own)
 REBIND = {"module": "problem_25", "names": ("LEG_LENGTH", "FOOT_RADIUS", "DX", "DY")}
 
 
@@ -64,6 +64,7 @@ def _symbolic(pkg):
         ),
     ),
     says="cog_positions_symbolic()",
+    rebind=REBIND,
 )
 def symbolic(pkg, points, h):
     """``x`` and ``J`` of ``cog_positions_symbolic`` at every point ``(alpha, gamma)``, and ``x`` at the points

@@ -298,12 +298,16 @@ def _vanishes(value: np.ndarray, expected: np.ndarray, tol: Tol) -> bool:
     return not distinct(value, zeros, tol) and distinct(expected, zeros, tol)
 
 
-def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
+def _second_input(scene: Scene, evidence: Evidence, constants: bool = False) -> Evidence | None:
     """The same comparison on an input the engine draws (``_drawn``: the probe's declared angles, vectors,
     rotations and scalars drawn anew, or every float of its arguments varied; where that draws nothing, the
-    module's constants the probes declare drawn anew, ``rebound_input``; where both are declared, the arguments and
-    the constants drawn at once, ``rebound_with``): the student's value there and the reference's, or None.  Where the call has no arguments to draw or its value does not change with them, and no
-    constant is drawn anew, the evidence is marked ``alone``: its one input is all there is."""
+    module's constants the probes declare drawn anew, ``rebound_input``): the student's value there and the
+    reference's, or None.  Where the call has no arguments to draw or its value does not change with them, and no
+    constant is drawn anew, the evidence is marked ``alone``: its one input is all there is.  ``constants``: the
+    formula tier's third input, where the module's constants the probe declares are drawn at once with its
+    arguments (``rebound_with``): a slip of the code that gives the student's value only where the sheet's constants
+    are related (problem 25's leg twice its foot's radius) is refuted there.  The second input keeps the constants:
+    the grammar's slips of the arguments and the terms a probe declares are asked of its own call."""
     source, student = evidence.source, evidence.student
     if source is None or student is None or evidence.motion:
         return None
@@ -315,11 +319,11 @@ def _second_input(scene: Scene, evidence: Evidence) -> Evidence | None:
         evidence.alone = second is None and drawn is ALONE
         return second
     args, expected_root = drawn
-    with_constants = rebound_with(scene, evidence, args, expected_root)
-    if with_constants is not None:
-        return with_constants
-    return evidence_at(scene, evidence, Source(source.probe, tuple(args), source.path, expected_root),
-                       (source.probe, tuple(args)), "second")
+    plain = evidence_at(scene, evidence, Source(source.probe, tuple(args), source.path, expected_root),
+                        (source.probe, tuple(args)), "second")
+    if not constants:
+        return plain
+    return rebound_with(scene, evidence, args, expected_root, plain) or plain
 
 
 #: the other values of the call shown that a slip of the formula tier must reproduce as well, at most
@@ -710,8 +714,8 @@ def _find(scene: Scene, evidences: list, runs: bool) -> Finding | None:
         untested = not (_testable(first) and ignore_candidates(decl, first.source.args))
         try:
             formulas = _heard(lambda: mutant_slips(scene, evidences + _siblings(evidences),
-                                                   lambda: _second_input(scene, evidences[-1]), told, untested,
-                                                   tuple(unreached)),
+                                                   lambda: _second_input(scene, evidences[-1], constants=True),
+                                                   told, untested, tuple(unreached)),
                               any(explaining), "formulas")
         except Contested:  # rivals of the earlier explanation, of too many families to tell
             return None

@@ -536,10 +536,10 @@ def _point_keys(path, count: int) -> list:
 
 
 def _shared_points(source: Source, student: Source):
-    """``(count, at_source, at_student)`` where the reference's and the student's calls (of two probes: the
-    reference's values and the student's answer evaluated) were asked at the very same points (one argument of each, a list of two points or more, equal: a symbolic answer and the reference's values
-    evaluated at the points the check drew) and each path indexes them at one position, with the same index: the
-    positions of that index in the two paths; or None."""
+    """``(count, at_source, at_student)`` where the reference's and the student's calls (of two probes: the reference's
+    values and the student's answer evaluated) were asked at the very same points (one argument of each, a list of two
+    points or more, equal: a symbolic answer and the reference's values evaluated at the points the check drew) and each
+    path indexes them at one position, with the same index: the positions of that index in the two paths; or None."""
     if source.root is None or student.root is None or source.probe == student.probe:
         return None  # one probe on the same points: the engine draws its second input itself
     keys = {_args_key((arg,)) for arg in student.args if isinstance(arg, (list, tuple)) and 1 < len(arg) <= MAX_POINTS}

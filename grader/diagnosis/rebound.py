@@ -93,14 +93,17 @@ def _bindings(scene, probe: str, seed, attempt: int) -> list | None:
     return bindings or None
 
 
-def rebound_with(scene, evidence: Evidence, args, root) -> Evidence | None:
+def rebound_with(scene, evidence: Evidence, args, root, plain: Evidence | None) -> Evidence | None:
     """The same comparison at the arguments the engine drew (``args``, where the reference's answer is ``root``)
-    with the constants the probe declares drawn anew as well, or None (none declared, or no draw usable: the value
-    does not change with them).  Constants related on the sheet stay so at every draw of the arguments alone
-    (problem 25's leg is twice its foot's radius, so a sum without the leg's length gives what one with the two
-    terms' signs turned does): drawn as well, such a coincidence no longer reproduces the student's value."""
+    with the constants the probe declares drawn anew as well (the formula tier's third input), or None (none
+    declared, or no draw usable: the value does not change with them).  Constants related on the sheet stay so at
+    every draw of the arguments alone (problem 25's leg is twice its foot's radius, so a sum without the leg's length
+    gives what one with the two terms' signs turned does): drawn as well, such a coincidence no longer reproduces
+    the student's value.  A student who typed the sheet's numbers rather than reading the constants gives at the
+    constants drawn what they give at the arguments alone (``plain``, that comparison): no slip of a formula
+    reproduces that, so their input stays ``plain`` (None here), where a slip of theirs can still be named."""
     source, student = evidence.source, evidence.student
-    if rebinding(source.probe) is None:
+    if rebinding(source.probe) is None or plain is None:
         return None
     drawn_source = Source(source.probe, tuple(args), source.path, root)
     value = array_of(at(root, source.path))
@@ -111,9 +114,13 @@ def rebound_with(scene, evidence: Evidence, args, root) -> Evidence | None:
         return None
     bindings, expected_root = drawn
     trace.note("rebound", bindings=[[name, np.round(value, 6).tolist()] for _, name, value in bindings], drawn=True)
-    return evidence_at(scene, evidence, Source(REBOUND, (source.probe, bindings, list(args)), source.path,
-                                               expected_root),
-                       (REBOUND, (student.probe, bindings, list(args))), "rebound")
+    rebound = evidence_at(scene, evidence, Source(REBOUND, (source.probe, bindings, list(args)), source.path,
+                                                  expected_root),
+                          (REBOUND, (student.probe, bindings, list(args))), "rebound")
+    if rebound is not None and not distinct(rebound.got, plain.got, evidence.tol):
+        trace.note("rebound", reason="the student's value does not change with the constants")
+        return None
+    return rebound
 
 
 def _inner(source: Source) -> tuple[str, list, int]:

@@ -1,11 +1,16 @@
-"""The engine's second input where a probe takes arguments and also declares the module's constants its functions
-read (``rebind``): the arguments and the constants are drawn anew at once (``grader.diagnosis.rebound.rebound_with``).
+"""The formula tier's third input where a probe takes arguments and also declares the module's constants its
+functions read (``rebind``): the arguments and the constants are drawn anew at once
+(``grader.diagnosis.rebound.rebound_with``); the second input draws the arguments alone, as the grammar's slips of
+the arguments ask.
 
 Problem 25's walker reads the leg's length and the foot's radius from its module, and on the sheet the leg is twice
 the radius: ``dy + l - r`` (the two terms' signs turned) equals ``dy + r`` (the leg's length left out of
-``dy - l + r``) at every pair of angles.  Drawn with the angles only, the second input kept that coincidence, and the
-engine told a term left out; with the lengths drawn too it tells nothing.  A term truly left out (the radius) is
-still named on the same two inputs."""
+``dy - l + r``) at every pair of angles.  Drawn with the angles only, every input kept that coincidence, and the
+formula tier told a term left out; with the lengths drawn too on the third it tells nothing.  A term truly left out
+(the radius) is still named, and so it is where the student typed the sheet's numbers rather than reading the
+constants: their value does not change with the constants, and their third input is the angles' alone.  The angles
+read as degrees, a slip of the arguments, is named on the second input as before (``engine-scale-walker-in-degrees``
+of ``tests/engine/mistakes.toml``)."""
 
 import pytest
 
@@ -22,6 +27,31 @@ SIGNS_TURNED = Planted(name="walker-foot-above-the-hip", problem=25, file="probl
 RADIUS_LEFT_OUT = Planted(name="walker-radius-left-out", problem=25, file="problem_25.py", old=OLD,
                           new="S_r_SDs=(-DX, DY - l, 0.0),", check="p25.sheet_values", diagnosis="missing_term",
                           message="one term of a sum in `build_walker` is left out")
+
+#: the radius left out, by a student who typed the sheet's numbers (the lengths, the hip's offsets)
+TYPED_OLD = """    l, r = LEG_LENGTH, FOOT_RADIUS
+    RollingContactJoint(
+        ground,
+        stance,
+        r=r,
+        P_r_PDp=(0.0, r, 0.0),
+        S_r_SDs=(-DX, DY - l + r, 0.0),
+        q_index=[0],
+    )
+    RotationalJoint(stance, swing, P_r_PDp=(-DX, DY, 0.0), S_r_SDs=(-DX, DY, 0.0), q_index=[1])"""
+TYPED_NEW = """    l, r = 1.0, 0.5
+    RollingContactJoint(
+        ground,
+        stance,
+        r=r,
+        P_r_PDp=(0.0, r, 0.0),
+        S_r_SDs=(-0.05, 0.7 - l, 0.0),
+        q_index=[0],
+    )
+    RotationalJoint(stance, swing, P_r_PDp=(-0.05, 0.7, 0.0), S_r_SDs=(-0.05, 0.7, 0.0), q_index=[1])"""
+RADIUS_LEFT_OUT_TYPED = Planted(name="walker-radius-left-out-typed", problem=25, file="problem_25.py", old=TYPED_OLD,
+                                new=TYPED_NEW, check="p25.sheet_values", diagnosis="missing_term",
+                                message=RADIUS_LEFT_OUT.message)
 
 
 @pytest.fixture(scope="module")
@@ -41,8 +71,9 @@ def test_a_coincidence_of_the_sheets_lengths_is_not_told_as_a_term_left_out(tmp_
     assert result.diagnosis != "missing_term", result.hint
 
 
-def test_a_term_left_out_is_still_named_with_the_lengths_drawn(tmp_path, slot):
-    result = _graded(RADIUS_LEFT_OUT, tmp_path, slot)
+@pytest.mark.parametrize("mistake", [RADIUS_LEFT_OUT, RADIUS_LEFT_OUT_TYPED], ids=lambda m: m.name)
+def test_a_term_left_out_is_still_named_with_the_lengths_drawn(mistake, tmp_path, slot):
+    result = _graded(mistake, tmp_path, slot)
     assert result.status is Status.FAILED, result.message
-    assert result.diagnosis == RADIUS_LEFT_OUT.diagnosis, (result.diagnosis, result.hint)
-    assert RADIUS_LEFT_OUT.message in result.hint, result.hint
+    assert result.diagnosis == mistake.diagnosis, (result.diagnosis, result.hint)
+    assert mistake.message in result.hint, result.hint
