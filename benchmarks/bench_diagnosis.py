@@ -5,7 +5,8 @@
 Grades, in one process and as ``grade batch`` grades (a worker forked from a warm slot, the live reference), the
 reference on a few problems (every check passes: the engine is never asked) and mistakes that fail checks no
 catalogue explains (the engine's development set, ``tests/engine/mistakes.toml``, its slips inside formulas,
-``tests/engine/formulas.toml``, which only the tier of formulas names, and the planted fixed-step loops),
+``tests/engine/formulas.toml``, which only the tier of formulas names, the planted fixed-step loops, and problem
+12's wheel integrated explicitly, a long run that no slip of the formula tier can be measured through in time),
 each with the engine on and off, in turns (on, off, on, off, ...) so that the machine's speed of the moment weighs
 on both alike.  Every grading has a fresh in-memory reference (no result of an earlier grading is reused; the
 reference's persisted long simulations and fixed-step runs are read from the disk cache, as they are after a
@@ -31,8 +32,10 @@ sys.path.insert(0, str(ROOT))
 
 #: the passing gradings: the reference on these problems
 PASSING = (6, 8, 26, 37, 44)
-#: the planted mistakes of tests/planted/ that the engine names (besides the development set)
-PLANTED = ("p37-euler-at-a-large-step", "p42-euler-at-a-large-step", "p44-euler-at-a-large-step")
+#: the planted mistakes of tests/planted/ that the engine names (besides the development set), and one whose long
+#: run (problem 12's wheel, 3001 steps) no slip of the formula tier can be measured through within its budget
+PLANTED = ("p37-euler-at-a-large-step", "p42-euler-at-a-large-step", "p44-euler-at-a-large-step",
+           "p12-explicit-euler")
 #: the failing gradings may cost at most this much more with the engine
 FAILING_TARGET = 1.10
 SEED = 1

@@ -3340,6 +3340,12 @@ _REFIRE = 0.5
 #: a thread that waits rather than works is interrupted after this many times the budget of wall time (not counting
 #: the time it was ready to run and waited for a core, where the system tells it)
 WAIT_FACTOR = 5.0
+#: the mutants measured before the measuring may be given up as one that cannot end within its budget
+#: (``_hopeless``), and the factor by which their pace must overrun the budget's remainder: a run of problem 12's
+#: wheel (3001 steps) costs about a tenth of a second, and its 167 mutants twenty times the budget, which they spent
+#: to the end and named nothing, on each of the check's compared values
+PROJECTED_AFTER = 4
+PROJECTED_FACTOR = 2.0
 
 
 #: the time each thread inside a deadline has spent in the garbage collector, ``[cpu, wall, deadlines]`` [s] by
@@ -3617,12 +3623,16 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     shared = Shared(package, originals, str(Path(package.__file__).parent))
     for holder, twin in twins:
         originals.setdefault(id(holder), (holder, holder.__code__))
+    costs = []  # the measuring time of each mutant measured [s]
     for tried, mutant in enumerate(mutants):
         progress["tried"] = tried
         if deadline.fired:
             return None
         if _REFUTED.refuted(mutant, ran) or (mutant.slip in PRECISION_SLIPS and not banded):
             continue
+        if _hopeless(deadline, costs, mutants[tried:], ran):
+            return None
+        began = deadline.spent()[0]
         misses = []  # the input at which the mutant's value is not the student's
         if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound
             try:
@@ -3636,6 +3646,7 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
             again = any(k.slip == mutant.slip and k.module == mutant.module and k.path == mutant.path for k in kept)
             values = _mutated_values(package, mutant, inputs, calls, (parts, rows), originals, twins, screened,
                                      misses, deadline, confirm=not again, shared=shared)
+        costs.append(deadline.spent()[0] - began)
         if values is None:
             if misses == [0] and not screened:
                 _REFUTED.refute(mutant, ran)
@@ -3654,6 +3665,25 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         kept.append(mutant)
     progress["tried"] = len(mutants)
     return kept
+
+
+def _hopeless(deadline: _Deadline, costs: list, left: list[Mutant], ran) -> bool:
+    """True where the mutants ``left`` (those still to measure, refuted ones aside) cannot all be measured within
+    what remains of ``deadline``'s budget: at the (lower) median of the times the mutants measured so far took (``costs``,
+    at least ``PROJECTED_AFTER`` of them), more than ``PROJECTED_FACTOR`` times that remainder.  Judged after
+    ``PROJECTED_AFTER`` mutants and again at each doubling of their number, so that the measure of one mutant's time
+    is not paid for in a loop.  The measuring is then given up as one whose time runs out: it would have named
+    nothing, at the whole budget's cost."""
+    count = len(costs)
+    if count < PROJECTED_AFTER or count & (count - 1):
+        return False
+    remaining = deadline.seconds - deadline.spent()[0]
+    pace = sorted(costs)[(count - 1) // 2]
+    left = sum(1 for mutant in left if not _REFUTED.refuted(mutant, ran))
+    if pace * left <= PROJECTED_FACTOR * max(remaining, 0.0):
+        return False
+    trace.note("hopeless", measured=count, left=left, each=round(pace, 4), remaining=round(remaining, 3))
+    return True
 
 
 def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, cheaper: tuple, originals: dict,
