@@ -19,7 +19,7 @@ from grader.results import Status
 from grader.workers import Forked
 
 from ..kit_support import SEED, warm_slot
-from ..submissions import Planted, build_planted
+from ..submissions import ROOT, Planted, build_planted
 
 OLD = "S_r_SDs=(-DX, DY - l + r, 0.0),"
 SIGNS_TURNED = Planted(name="walker-foot-above-the-hip", problem=25, file="problem_25.py", old=OLD,
@@ -28,27 +28,12 @@ RADIUS_LEFT_OUT = Planted(name="walker-radius-left-out", problem=25, file="probl
                           new="S_r_SDs=(-DX, DY - l, 0.0),", check="p25.sheet_values", diagnosis="missing_term",
                           message="one term of a sum in `build_walker` is left out")
 
-#: the radius left out, by a student who typed the sheet's numbers (the lengths, the hip's offsets)
-TYPED_OLD = """    l, r = LEG_LENGTH, FOOT_RADIUS
-    RollingContactJoint(
-        ground,
-        stance,
-        r=r,
-        P_r_PDp=(0.0, r, 0.0),
-        S_r_SDs=(-DX, DY - l + r, 0.0),
-        q_index=[0],
-    )
-    RotationalJoint(stance, swing, P_r_PDp=(-DX, DY, 0.0), S_r_SDs=(-DX, DY, 0.0), q_index=[1])"""
-TYPED_NEW = """    l, r = 1.0, 0.5
-    RollingContactJoint(
-        ground,
-        stance,
-        r=r,
-        P_r_PDp=(0.0, r, 0.0),
-        S_r_SDs=(-0.05, 0.7 - l, 0.0),
-        q_index=[0],
-    )
-    RotationalJoint(stance, swing, P_r_PDp=(-0.05, 0.7, 0.0), S_r_SDs=(-0.05, 0.7, 0.0), q_index=[1])"""
+#: the radius left out, by a student who typed the sheet's numbers (the lengths, the hip's offsets): the reference's
+#: joints of the walker, from its lengths read to its hip joint, with the numbers in place of the constants
+_WALKER = (ROOT / "reference" / "problem_25.py").read_text()
+TYPED_OLD = _WALKER[_WALKER.index("    l, r = LEG_LENGTH, FOOT_RADIUS"):_WALKER.index("q_index=[1])") + len("q_index=[1])")]
+TYPED_NEW = TYPED_OLD.replace("LEG_LENGTH, FOOT_RADIUS", "1.0, 0.5").replace("-DX", "-0.05") \
+    .replace("DY - l + r", "0.7 - l").replace("DY", "0.7")
 RADIUS_LEFT_OUT_TYPED = Planted(name="walker-radius-left-out-typed", problem=25, file="problem_25.py", old=TYPED_OLD,
                                 new=TYPED_NEW, check="p25.sheet_values", diagnosis="missing_term",
                                 message=RADIUS_LEFT_OUT.message)
