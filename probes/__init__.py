@@ -58,7 +58,8 @@ import contextlib
 import importlib
 import threading
 
-__all__ = ["probe", "module", "lookup", "name_of", "call_key", "remembered", "fresh", "kept_for_one_code", "ProbeLookupError"]
+__all__ = ["probe", "module", "lookup", "name_of", "call_key", "remembered", "fresh", "kept_for_one_code",
+           "ProbeLookupError"]
 
 #: the keywords a probe may declare
 DECLARATIONS = ("args", "rotation", "terms", "motion", "constants", "step", "draw", "part", "rebind", "rows")

@@ -3669,11 +3669,11 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
 
 def _hopeless(deadline: _Deadline, costs: list, left: list[Mutant], ran) -> bool:
     """True where the mutants ``left`` (those still to measure, refuted ones aside) cannot all be measured within
-    what remains of ``deadline``'s budget: at the (lower) median of the times the mutants measured so far took (``costs``,
-    at least ``PROJECTED_AFTER`` of them), more than ``PROJECTED_FACTOR`` times that remainder.  Judged after
-    ``PROJECTED_AFTER`` mutants and again at each doubling of their number, so that the measure of one mutant's time
-    is not paid for in a loop.  The measuring is then given up as one whose time runs out: it would have named
-    nothing, at the whole budget's cost."""
+    what remains of ``deadline``'s budget: at the lower median of the times the mutants measured so far took
+    (``costs``, at least ``PROJECTED_AFTER`` of them), more than ``PROJECTED_FACTOR`` times that remainder.  Judged
+    after ``PROJECTED_AFTER`` mutants and again at each doubling of their number, so that the count of the mutants
+    left is not paid for at every mutant.  The measuring is then given up as one whose time runs out: it would have
+    named nothing, at the whole budget's cost."""
     count = len(costs)
     if count < PROJECTED_AFTER or count & (count - 1):
         return False

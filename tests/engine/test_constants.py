@@ -279,7 +279,8 @@ def test_a_drawn_angle_near_its_degrees_but_no_rounding_of_them_is_named_nothing
 def gravity_slips(tmp_path, new: str):
     """The tier on problem 38's walker with its gravity vector on the slope written as ``new``."""
     return planted_slips(tmp_path, "problem_38.py", "I_GRAV = np.array([np.sin(SLOPE), -np.cos(SLOPE), 0.0])", new,
-                         "problem_38.walker_ode", [([(0.3, [0.2, -0.4, 0.7, -1.1])],), ([(1.1, [-0.6, 0.5, -0.3, 0.9])],)],
+                         "problem_38.walker_ode",
+                         [([(0.3, [0.2, -0.4, 0.7, -1.1])],), ([(1.1, [-0.6, 0.5, -0.3, 0.9])],)],
                          (0,), "p38.walker_ode")
 
 

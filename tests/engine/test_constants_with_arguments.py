@@ -31,7 +31,8 @@ RADIUS_LEFT_OUT = Planted(name="walker-radius-left-out", problem=25, file="probl
 #: the radius left out, by a student who typed the sheet's numbers (the lengths, the hip's offsets): the reference's
 #: joints of the walker, from its lengths read to its hip joint, with the numbers in place of the constants
 _WALKER = (ROOT / "reference" / "problem_25.py").read_text()
-TYPED_OLD = _WALKER[_WALKER.index("    l, r = LEG_LENGTH, FOOT_RADIUS"):_WALKER.index("q_index=[1])") + len("q_index=[1])")]
+_HIP = "q_index=[1])"
+TYPED_OLD = _WALKER[_WALKER.index("    l, r = LEG_LENGTH, FOOT_RADIUS"):_WALKER.index(_HIP) + len(_HIP)]
 TYPED_NEW = TYPED_OLD.replace("LEG_LENGTH, FOOT_RADIUS", "1.0, 0.5").replace("-DX", "-0.05") \
     .replace("DY - l + r", "0.7 - l").replace("DY", "0.7")
 RADIUS_LEFT_OUT_TYPED = Planted(name="walker-radius-left-out-typed", problem=25, file="problem_25.py", old=TYPED_OLD,

@@ -235,9 +235,9 @@ def test_a_run_is_told_its_cause(mistake, tmp_path, kit_oracle, deferred_ids, sl
 @pytest.mark.parametrize("mistake", RUN_SLIPS, ids=lambda m: m.name)
 def test_a_slip_of_the_run_itself_is_told(mistake, tmp_path, kit_oracle, deferred_ids, slot):
     """Slips of the run, not of its model: its output grid one sample off, the run's arguments exchanged or
-    ignored, solve_ivp's tolerances loosened, states read from the wrong rows of the solution or of an event's state, an event function reading
-    the other row, the run returned in single precision; and a wrong start, which a state read from the wrong rows
-    must not be mistaken for."""
+    ignored, solve_ivp's tolerances loosened, states read from the wrong rows of the solution or of an event's
+    state, an event function reading the other row, the run returned in single precision; and a wrong start, which a
+    state read from the wrong rows must not be mistaken for."""
     target = failed_alike(mistake, tmp_path / "pkg", kit_oracle, deferred_ids, slot)
     assert_told(mistake, target)
 

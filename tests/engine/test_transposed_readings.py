@@ -15,7 +15,8 @@ from grader.diagnosis import mutants
 from .stand_ins import made_up_fixture
 from .test_mutants import made_up_evidences, scene
 
-SOURCE = '''"""A made-up problem for a rotation transposed, read as a factor exchanged or as the rotation the other way."""
+SOURCE = '''"""A made-up problem for a rotation transposed, read as a factor exchanged or as the rotation the other
+way."""
 
 import numpy as np
 
