@@ -2,7 +2,7 @@
 after a few mutants, where the rest at the pace those took would need more than twice what remains of the budget,
 the measuring ends as one whose time ran out (nothing named), without spending the rest of the budget first.
 
-Problem 12's wheel (3001 steps) is such a run: its 167 mutants take about twenty times the budget, and each of the
+Problem 12's wheel (3001 steps) is such a run: its 167 mutants take about seven times the budget, and each of the
 check's two compared values spent the whole budget naming nothing.  A made-up problem's long loop is given up the
 same way; the same loop on a short input is measured to the end and its slip named."""
 
