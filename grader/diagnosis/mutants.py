@@ -3624,15 +3624,15 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     for holder, twin in twins:
         originals.setdefault(id(holder), (holder, holder.__code__))
     costs = []  # the measuring time of each mutant measured [s]
+    last = deadline.spent()[0]  # the measuring time spent when the last mutant measured ended [s]
     for tried, mutant in enumerate(mutants):
         progress["tried"] = tried
         if deadline.fired:
             return None
         if _REFUTED.refuted(mutant, ran) or (mutant.slip in PRECISION_SLIPS and not banded):
             continue
-        if _hopeless(deadline, costs, mutants[tried:], ran):
+        if _hopeless(deadline.seconds - last, costs, mutants[tried:], ran):
             return None
-        began = deadline.spent()[0]
         misses = []  # the input at which the mutant's value is not the student's
         if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound
             try:
@@ -3646,7 +3646,9 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
             again = any(k.slip == mutant.slip and k.module == mutant.module and k.path == mutant.path for k in kept)
             values = _mutated_values(package, mutant, inputs, calls, (parts, rows), originals, twins, screened,
                                      misses, deadline, confirm=not again, shared=shared)
-        costs.append(deadline.spent()[0] - began)
+        now = deadline.spent()[0]
+        costs.append(now - last)
+        last = now
         if values is None:
             if misses == [0] and not screened:
                 _REFUTED.refute(mutant, ran)
@@ -3667,17 +3669,17 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     return kept
 
 
-def _hopeless(deadline: _Deadline, costs: list, left: list[Mutant], ran) -> bool:
+def _hopeless(remaining: float, costs: list, left: list[Mutant], ran) -> bool:
     """True where the mutants ``left`` (those still to measure, refuted ones aside) cannot all be measured within
-    what remains of ``deadline``'s budget: at the lower median of the times the mutants measured so far took
-    (``costs``, at least ``PROJECTED_AFTER`` of them), more than ``PROJECTED_FACTOR`` times that remainder.  Judged
-    after ``PROJECTED_AFTER`` mutants and again at each doubling of their number, so that the count of the mutants
-    left is not paid for at every mutant.  The measuring is then given up as one whose time runs out: it would have
-    named nothing, at the whole budget's cost."""
+    what remains of the deadline's budget (``remaining`` [s]): at the lower median of the times the mutants measured
+    so far took (``costs``, at least ``PROJECTED_AFTER`` of them), more than ``PROJECTED_FACTOR`` times that
+    remainder.  Judged after ``PROJECTED_AFTER`` mutants and again at each doubling of their number, so that the
+    count of the mutants left is not paid for at every mutant.  The measuring is then given up as one whose time
+    runs out: it would have named nothing, at the whole budget's cost.  The deadline's clock is read once a mutant
+    (``_evaluate``; a reading takes about 30 microseconds, which hundreds of mutants add up)."""
     count = len(costs)
     if count < PROJECTED_AFTER or count & (count - 1):
         return False
-    remaining = deadline.seconds - deadline.spent()[0]
     pace = sorted(costs)[(count - 1) // 2]
     left = sum(1 for mutant in left if not _REFUTED.refuted(mutant, ran))
     if pace * left <= PROJECTED_FACTOR * max(remaining, 0.0):

@@ -112,11 +112,8 @@ def rebound_with(scene, evidence: Evidence, args, root, plain: Evidence | None) 
     drawn = rebound_drawn(scene, drawn_source, value, evidence.tol)
     if drawn is None:
         return None
-    bindings, expected_root = drawn
-    trace.note("rebound", bindings=[[name, np.round(value, 6).tolist()] for _, name, value in bindings], drawn=True)
-    rebound = evidence_at(scene, evidence, Source(REBOUND, (source.probe, bindings, list(args)), source.path,
-                                                  expected_root),
-                          (REBOUND, (student.probe, bindings, list(args))), "rebound")
+    rebound = _at_constants(scene, evidence, drawn, (source.probe, list(args)), (student.probe, list(args)),
+                            drawn=True)
     if rebound is not None and not distinct(rebound.got, plain.got, evidence.tol):
         trace.note("rebound", reason="the student's value does not change with the constants")
         return None
@@ -189,8 +186,16 @@ def rebound_input(scene, evidence: Evidence) -> Evidence | None:
     drawn = rebound_drawn(scene, source, evidence.expected, evidence.tol)
     if drawn is None:
         return None
-    bindings, expected_root = drawn
-    trace.note("rebound", bindings=[[name, np.round(value, 6).tolist()] for _, name, value in bindings])
-    return evidence_at(scene, evidence, Source(REBOUND, (probe, bindings, args), source.path, expected_root),
-                       (REBOUND, (student_probe, bindings, student_args)), "rebound")
+    return _at_constants(scene, evidence, drawn, (probe, args), (student_probe, student_args))
+
+
+def _at_constants(scene, evidence: Evidence, draw: tuple, call: tuple, student_call: tuple, **noted):
+    """The comparison of ``evidence`` at the constants drawn (``draw``: ``(bindings, root)``, ``rebound_drawn``'s),
+    of the reference's ``call`` and the student's ``student_call`` (each ``(probe, args)``), the draw traced with
+    ``noted``."""
+    bindings, expected_root = draw
+    trace.note("rebound", bindings=[[name, np.round(number, 6).tolist()] for _, name, number in bindings], **noted)
+    return evidence_at(scene, evidence, Source(REBOUND, (call[0], bindings, call[1]), evidence.source.path,
+                                               expected_root),
+                       (REBOUND, (student_call[0], bindings, student_call[1])), "rebound")
 
