@@ -830,6 +830,41 @@ erred or were not implemented in their first failing check (3 erred, in answers 
 entry of problem 42, whose other slip gave the set a family it lacked).  The whole set takes about a minute on a
 two-core machine beside other work (66 s graded, 71 s in all in the recording run); it was written in about 30 minutes.
 
+``--set fresh34``, the thirty-fourth held-out set (``tests/diagnosis/fresh34/``), was written, chosen and checked for
+repeats (of the thirty-three earlier sets as well) by the twenty-seventh's rules above, with the diagnosis engine
+switched off for the choice and ``today`` recorded from one run of the set at commit 44a5c82, where its branch started;
+every entry's check failed in that run, and two entries graded in it were dropped after it, found by the tests of the
+set (one replaced the same text as an earlier entry and, widened by the line before it, was the same slip as an earlier
+entry written otherwise; the other planted the same text as the planted suite, having been screened against the wrong
+file), so the set holds the other 25 with the diagnosis that run gave them. Like the thirty-second and thirty-third
+sets, and unlike the thirtieth and thirty-first, no slip was taken from a mechanical screen of the solutions' lines:
+every candidate was written by hand from the sheet, the problem data and the reference, as a student of the course
+slips (a convention misread, a formula of the lecture in the other frame, a term forgotten or carried over from another
+part of the sheet, a loop or a slice written otherwise, a library call or an argument used wrongly, a value read from
+the wrong place, a number rounded), many of them spanning or restructuring a line, and a slip whose replaced text an
+earlier entry had replaced with another slip was tried again with a wider span of its lines; unlike the earlier sets'
+screens, this one also left out every slip in code that the student template gives (its constants and given functions),
+which a student does not write. It holds 25 entries in 19 problems of all seven exercises (I 2, II 2, III 3, IV 4, V 5,
+VI 4, VII 5), at most two of one problem (six problems hold two), 10 of them in the problems of ``SIMULATED`` (every
+one but problem 5, two in each of problems 38 and 47); the earlier sets had taken most slips tried (more than three in
+five candidates repeated an earlier entry's text), and the few untaken slips written in the student's own code of
+Exercises I, II and III bound the set's size. Its slips are spread over 13 families: missing_term 4, frame 3, sign 3,
+extra_term 2, ignored_argument 2, order 2, precision 2, scale 2, and event, inverse, offset, state_row and transpose 1
+each (no family above 20% of the set). One entry names a second family (``also``), decided from the slip alone:
+initial_state 1. Of 298 candidates tried (a slip tried again with a wider span is counted once, by its last try; 7
+grading runs, each after a screen of the texts), 273 were dropped: 192 repeated an earlier entry by its text (the same
+replaced or planted text, or its name), 191 of them found before grading and 1 by the tests after the recording run, 40
+changed code that the student template gives (constants typed from the problem data and given functions; 11 of them
+graded before that screen was added), 24 were the same slip as an earlier entry written otherwise (found by comparing
+each with the earlier entries on the same lines, 23 before grading and 1 after the recording run), 2 were left out
+before grading as slips no student makes (a least-squares solve of part of a system and a mass matrix inverted by
+halves), 9 failed no check (most in the runs' tolerances, start rows and output rows that the checks' bands or calls
+allow, in problem 4's balanced configurations and wrapping of angles, and in rotations about one axis, which commute),
+5 erred in their first failing check (outputs of the wrong shape and ports whose prints raise), and 1 failed its check
+but was left out for spread (a third entry of problem 31, exchanged for two that gave the set the families state_row
+and transpose). The whole set takes about a minute and a quarter on a two-core machine beside other work (75 s graded,
+76 s in all in the recording run); it was written in about 20 minutes.
+
 **Two classifications.**  Every run classifies each diagnosis twice: *strictly* (right only when a told family is
 the entry's ``family``, as above) and *leniently* (right when a told family is its ``family`` or its ``also``;
 wrong only when the told families include neither).  Both are reported, per mistake (``-v``) and in the totals;
@@ -895,6 +930,7 @@ __all__ = [
     "FRESH31",
     "FRESH32",
     "FRESH33",
+    "FRESH34",
     "SETS",
     "HELD_OUT",
     "SYMPTOMS",
@@ -988,6 +1024,8 @@ FRESH31 = ROOT / "tests" / "diagnosis" / "fresh31"
 FRESH32 = ROOT / "tests" / "diagnosis" / "fresh32"
 #: the thirty-third held-out set, written like the thirty-second apart from the engine
 FRESH33 = ROOT / "tests" / "diagnosis" / "fresh33"
+#: the thirty-fourth held-out set, written like the thirty-third apart from the engine
+FRESH34 = ROOT / "tests" / "diagnosis" / "fresh34"
 SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh2": (FRESH2,), "named2": (NAMED2,), "pool2": (FRESH2, NAMED2),
         "fresh3": (FRESH3,), "named3": (NAMED3,), "pool3": (FRESH3, NAMED3),
@@ -1002,18 +1040,18 @@ SETS = {"fresh": (FRESH,), "named": (NAMED,), "pool": (FRESH, NAMED),
         "fresh27": (FRESH27,), "fresh28": (FRESH28,),
         "fresh29": (FRESH29,), "fresh30": (FRESH30,),
         "fresh31": (FRESH31,), "fresh32": (FRESH32,),
-        "fresh33": (FRESH33,)}
+        "fresh33": (FRESH33,), "fresh34": (FRESH34,)}
 #: the held-out sets, on which the issue's target is read: the first three hold only mistakes whose cause was not told
-#: when they were written, the fourth to the thirty-third every realistic mistake whose check fails
+#: when they were written, the fourth to the thirty-fourth every realistic mistake whose check fails
 HELD_OUT = ("fresh", "fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9", "fresh10",
             "fresh11", "fresh12", "fresh13", "fresh14", "fresh15", "fresh16", "fresh17", "fresh18", "fresh19",
             "fresh20", "fresh21", "fresh22", "fresh23", "fresh24", "fresh25", "fresh26", "fresh27", "fresh28",
-            "fresh29", "fresh30", "fresh31", "fresh32", "fresh33")
+            "fresh29", "fresh30", "fresh31", "fresh32", "fresh33", "fresh34")
 #: the held-out sets that sample every realistic mistake whose check fails (the issue's measure: ``--unlisted``)
 SAMPLED = ("fresh4", "fresh5", "fresh6", "fresh7", "fresh8", "fresh9", "fresh10", "fresh11", "fresh12",
            "fresh13", "fresh14", "fresh15", "fresh16", "fresh17", "fresh18", "fresh19", "fresh20",
            "fresh21", "fresh22", "fresh23", "fresh24", "fresh25", "fresh26", "fresh27", "fresh28", "fresh29",
-           "fresh30", "fresh31", "fresh32", "fresh33")
+           "fresh30", "fresh31", "fresh32", "fresh33", "fresh34")
 #: the live seed of the planted suite (``tests/kit_support.SEED``)
 SEED = 12345
 

@@ -1,7 +1,7 @@
 """The held-out measure of the diagnosis (issue 27): the fresh set of mistakes that no catalogue lists, the second
-to the thirty-third held-out sets written apart from the engine (``fresh2`` ... ``fresh33``), and the script that
+to the thirty-fourth held-out sets written apart from the engine (``fresh2`` ... ``fresh34``), and the script that
 grades them and classifies each diagnosis (``tests/diagnosis/score.py``), strictly and leniently (where an entry of
-the seventh to the thirty-third set names a second family, ``also``).
+the seventh to the thirty-fourth set names a second family, ``also``).
 
 The set is data, checked here without grading: every exercise is covered, every entry is well formed and plants
 into the reference, and the diagnosis recorded with it (``today``) is not the right cause, which is what put it in
@@ -58,6 +58,7 @@ from .score import (
     FRESH31,
     FRESH32,
     FRESH33,
+    FRESH34,
     NAMED,
     NAMED2,
     NAMED3,
@@ -106,6 +107,7 @@ FRESH30_SET = fresh_mistakes(FRESH30)
 FRESH31_SET = fresh_mistakes(FRESH31)
 FRESH32_SET = fresh_mistakes(FRESH32)
 FRESH33_SET = fresh_mistakes(FRESH33)
+FRESH34_SET = fresh_mistakes(FRESH34)
 
 
 def _fallback(name):
@@ -133,13 +135,13 @@ def test_the_fresh_set_covers_every_exercise_with_at_least_six_mistakes_and_eigh
                                   (FRESH23_SET, []), (FRESH24_SET, []), (FRESH25_SET, []),
                                   (FRESH26_SET, []), (FRESH27_SET, []), (FRESH28_SET, []),
                                   (FRESH29_SET, []), (FRESH30_SET, []), (FRESH31_SET, []),
-                                  (FRESH32_SET, []), (FRESH33_SET, [])],
+                                  (FRESH32_SET, []), (FRESH33_SET, []), (FRESH34_SET, [])],
                          ids=["first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth",
                               "tenth", "eleventh", "twelfth", "thirteenth", "fourteenth", "fifteenth", "sixteenth",
                               "seventeenth", "eighteenth", "nineteenth", "twentieth", "twenty-first",
                               "twenty-second", "twenty-third", "twenty-fourth", "twenty-fifth", "twenty-sixth",
                               "twenty-seventh", "twenty-eighth", "twenty-ninth", "thirtieth", "thirty-first",
-                              "thirty-second", "thirty-third"])
+                              "thirty-second", "thirty-third", "thirty-fourth"])
 def test_every_entry_plants_into_the_reference_and_names_a_check_of_its_problem(sets):
     for mistakes in sets:
         assert defects(mistakes) == []
@@ -370,7 +372,7 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
     _assert_repeats_none(FRESH4_SET, earlier)
 
 
-# --------------------------------------------------------------------------- the fifth to thirty-third sets
+# -------------------------------------------------------------------------- the fifth to thirty-fourth sets
 
 #: the sets written like the fourth (every realistic mistake whose check fails, whatever its diagnosis), each with
 #: the sets written before it beyond the first three (whose entries ``_earlier_entries`` reads itself)
@@ -473,23 +475,32 @@ LATER_SETS = {"fifth": (FRESH5_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET),
                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
                                + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
                                + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                               + FRESH28_SET + FRESH29_SET + FRESH30_SET + FRESH31_SET + FRESH32_SET)}
+                               + FRESH28_SET + FRESH29_SET + FRESH30_SET + FRESH31_SET + FRESH32_SET),
+              "thirty-fourth": (FRESH34_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
+                                + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
+                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
+                                + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
+                                + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
+                                + FRESH28_SET + FRESH29_SET + FRESH30_SET + FRESH31_SET + FRESH32_SET
+                                + FRESH33_SET)}
 
 #: the size of a later set and its mistakes in the simulated problems, at least: ninety and twenty, except the tenth to
-#: thirty-third sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth 42, the
+#: thirty-fourth sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth 42, the
 #: thirteenth 36, the fourteenth 43, the fifteenth 40, the sixteenth 38, the seventeenth 30, the eighteenth 29, the
 #: nineteenth 35, the twentieth 35, the twenty-first 27, the twenty-second 26, the twenty-third 31, the twenty-fourth
 #: 26, the twenty-fifth 28, the twenty-sixth 30, the twenty-seventh 33, the twenty-eighth 31, the twenty-ninth 32, the
-#: thirtieth 32, the thirty-first 32, the thirty-second 26 and the thirty-third 29, at most four of one problem) after
-#: the earlier sets had taken most slips of the simulated problems (the seventeenth: 11 of its entries in the problems
-#: of ``SIMULATED``, 14 in Exercise I's MuJoCo problems and the runs; the eighteenth: 11 and 16; the nineteenth: 12 and
-#: 17; the twentieth: 13 and 17; the twenty-first: 11 and 13; the twenty-second: 10 and 14, counting problem 24's run;
-#: the twenty-third: 14 and 17; the twenty-fourth: 12 and 12; the twenty-fifth: 11 and 15; the twenty-sixth: 10 and 16;
-#: the twenty-seventh: 11 and 15; the twenty-eighth: 10 and 10, 11 counting problem 24's run; the twenty-ninth: 13 and
-#: 13, 15 counting problem 24's; the thirtieth: 13 and 13, 15 counting problem 24's; the thirty-first: 11 in the
-#: problems of ``SIMULATED``, one of them in each of problems 24 and 38; the thirty-second: 10 in the problems of
-#: ``SIMULATED``, every one but problem 5, two of them in each of problems 37 and 47; the thirty-third: 11 in the
-#: problems of ``SIMULATED``, every one but problem 5, two of them in each of problems 24, 38 and 47)
+#: thirtieth 32, the thirty-first 32, the thirty-second 26, the thirty-third 29 and the thirty-fourth 25, at most four
+#: of one problem) after the earlier sets had taken most slips of the simulated problems (the seventeenth: 11 of its
+#: entries in the problems of ``SIMULATED``, 14 in Exercise I's MuJoCo problems and the runs; the eighteenth: 11 and 16;
+#: the nineteenth: 12 and 17; the twentieth: 13 and 17; the twenty-first: 11 and 13; the twenty-second: 10 and 14,
+#: counting problem 24's run; the twenty-third: 14 and 17; the twenty-fourth: 12 and 12; the twenty-fifth: 11 and 15;
+#: the twenty-sixth: 10 and 16; the twenty-seventh: 11 and 15; the twenty-eighth: 10 and 10, 11 counting problem 24's
+#: run; the twenty-ninth: 13 and 13, 15 counting problem 24's; the thirtieth: 13 and 13, 15 counting problem 24's; the
+#: thirty-first: 11 in the problems of ``SIMULATED``, one of them in each of problems 24 and 38; the thirty-second: 10
+#: in the problems of ``SIMULATED``, every one but problem 5, two of them in each of problems 37 and 47; the
+#: thirty-third: 11 in the problems of ``SIMULATED``, every one but problem 5, two of them in each of problems 24, 38
+#: and 47; the thirty-fourth: 10 in the problems of ``SIMULATED``, every one but problem 5, two of them in each of
+#: problems 38 and 47)
 LATER_SIZES = {"tenth": (50, 14), "eleventh": (48, 15), "twelfth": (42, 14), "thirteenth": (36, 13),
                "fourteenth": (43, 15), "fifteenth": (40, 13), "sixteenth": (38, 13),
                "seventeenth": (30, 11), "eighteenth": (29, 11), "nineteenth": (35, 12),
@@ -499,7 +510,7 @@ LATER_SIZES = {"tenth": (50, 14), "eleventh": (48, 15), "twelfth": (42, 14), "th
                "twenty-seventh": (33, 11), "twenty-eighth": (31, 10),
                "twenty-ninth": (32, 13), "thirtieth": (32, 13),
                "thirty-first": (32, 11), "thirty-second": (26, 10),
-               "thirty-third": (29, 11)}
+               "thirty-third": (29, 11), "thirty-fourth": (25, 10)}
 
 
 @pytest.mark.parametrize("which", sorted(LATER_SETS))
@@ -583,7 +594,7 @@ def test_a_set_without_a_second_family_reads_alike_strictly_and_leniently(which)
                                    "nineteenth", "twentieth", "twenty-first", "twenty-second", "twenty-third",
                                    "twenty-fourth", "twenty-fifth", "twenty-sixth", "twenty-seventh",
                                    "twenty-eighth", "twenty-ninth", "thirtieth", "thirty-first",
-                                   "thirty-second", "thirty-third"])
+                                   "thirty-second", "thirty-third", "thirty-fourth"])
 def test_a_set_with_second_families_reads_them_leniently_only(which):
     """The sets that name a second family (``also``) on some entries: an entry without one is classified alike
     strictly and leniently, whatever is told; an entry with one is right leniently and wrong strictly when only its
@@ -598,7 +609,7 @@ def test_a_set_with_second_families_reads_them_leniently_only(which):
               "twenty-seventh": FRESH27_SET, "twenty-eighth": FRESH28_SET,
               "twenty-ninth": FRESH29_SET, "thirtieth": FRESH30_SET,
               "thirty-first": FRESH31_SET, "thirty-second": FRESH32_SET,
-              "thirty-third": FRESH33_SET}[which]
+              "thirty-third": FRESH33_SET, "thirty-fourth": FRESH34_SET}[which]
     named = {}
     for name, family in FALLBACK.items():
         named.setdefault(family, name)
