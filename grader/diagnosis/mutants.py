@@ -1511,9 +1511,9 @@ def _diagonal_inverse(matrix):
     return ast.Call(_np("diag"), [ast.BinOp(ast.Constant(1.0), ast.Div(), diagonal)], [])
 
 
-def _trig_names(function: ast.FunctionDef) -> dict:
-    """The names the function binds once to a sine or a cosine of one argument (``s2 = np.sin(q2)``), each with
-    the call of the other (``np.cos(q2)``), or the name bound to it where the function has one (``c2``)."""
+def _trig_bound(function: ast.FunctionDef) -> dict:
+    """``{name: the call}`` of the names the function binds once to a sine or a cosine of one argument (``s2 =
+    np.sin(q2)``, ``c2, s2 = np.cos(q2), np.sin(q2)``)."""
     bound: dict = {}
     for node in ast.walk(function):
         for target in node.targets if isinstance(node, ast.Assign) else ():
@@ -1526,15 +1526,60 @@ def _trig_names(function: ast.FunctionDef) -> dict:
             elif isinstance(target, ast.Tuple):
                 for name in target.elts:
                     bound.setdefault(name.id if isinstance(name, ast.Name) else "", []).append(None)
-    calls = {name: values[0] for name, values in bound.items() if len(values) == 1
-             and isinstance(values[0], ast.Call) and _callee(values[0]) in _TRIG and len(values[0].args) == 1
-             and not values[0].keywords}
+    return {name: values[0] for name, values in bound.items() if len(values) == 1
+            and isinstance(values[0], ast.Call) and _callee(values[0]) in _TRIG and len(values[0].args) == 1
+            and not values[0].keywords}
+
+
+def _trig_names(function: ast.FunctionDef) -> dict:
+    """The names the function binds once to a sine or a cosine of one argument (``s2 = np.sin(q2)``), each with
+    the call of the other (``np.cos(q2)``), or the name bound to it where the function has one (``c2``)."""
+    calls = _trig_bound(function)
     by_call = {(_callee(call), ast.dump(call.args[0])): name for name, call in calls.items()}
     others = {}
     for name, call in calls.items():
         sibling = by_call.get((_TRIG[_callee(call)], ast.dump(call.args[0])))
         others[name] = ast.Name(sibling, ast.Load()) if sibling is not None else _with(call, func=_renamed(call.func))
     return others
+
+
+def _summed_terms(node) -> frozenset:
+    """The terms of a sum or a difference (``q[1] + q[3]``: ``q[1]``, ``q[3]``; a term subtracted, under its minus),
+    each by its text; a node that is no sum is its one term."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+        right = _summed_terms(node.right)
+        if isinstance(node.op, ast.Sub):
+            right = frozenset("-" + term for term in right)
+        return _summed_terms(node.left) | right
+    return frozenset({ast.dump(node)})
+
+
+def _trig_angles(function: ast.FunctionDef) -> dict:
+    """``{name: ((other, slip), ...)}`` of the names the function binds once to a sine (a cosine) of one argument,
+    each with the others bound to the same function of another argument (``s2 = np.sin(q2)`` and ``s24 =
+    np.sin(q2 + q4)``): a read of the wrong one is one angle read for another (``s2`` for ``s24``, in a Jacobian's
+    entry written out), ``angle_part`` where the other's argument is one of its terms (a term left out of the
+    sum), ``angle_sum`` where its own argument is one of the other's (a term added), else ``angle``.  Where a
+    function binds more than six names to one of the two, none of them is read for another (a table of sines, not the
+    short names of a chain)."""
+    calls = _trig_bound(function)
+    found = {}
+    for callee in _TRIG:
+        named = {name: _summed_terms(call.args[0]) for name, call in calls.items() if _callee(call) == callee}
+        if not 2 <= len(named) <= 6:
+            continue
+        for name, terms in named.items():
+            found[name] = tuple((other, "angle_part" if others < terms else "angle_sum" if terms < others else "angle")
+                                for other, others in sorted(named.items()) if other != name and others != terms)
+    return found
+
+
+def _trig_angle_slips(node, angled: dict):
+    """A read of a name bound to a sine (a cosine) read as another bound to the sine (the cosine) of another
+    argument, one read at a time (``_trig_angles``)."""
+    if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+        for other, slip in angled.get(node.id, ()):
+            yield slip, lambda n, other=other: ast.Name(other, ast.Load())
 
 
 def _trig_read_slips(node, parent, others: dict):
@@ -2719,7 +2764,7 @@ def _mutated(function: _Function, lines: tuple):
     seen = {ast.dump(function.node)}
     parts, skews = _state_parts(function.node), _skews(function.node)
     names, parameters, keys = _names(function.node), _parameters(function.node), _text_keys(function.node)
-    others = _trig_names(function.node)
+    others, angled = _trig_names(function.node), _trig_angles(function.node)
     used = _used_parameters(function.node, parameters)
     bound = _read_bound(function.node, parameters)
     angles, defaults, sums, starts = _angles(function), _defaults(function), _sums(function.node), _starts(function)
@@ -2741,6 +2786,7 @@ def _mutated(function: _Function, lines: tuple):
         elif late_pass:
             slips = () if (guarded and guarded != ITERABLE) or indexing else itertools.chain(
                 _name_slips(node, parent, angles, defaults, sums, starts, built, reads, function.numbers),
+                _trig_angle_slips(node, angled),
                 _written_index_slips(node),
                 _typed_slips(node, parent, function.constants))  # constants typed short: late slips too
         elif guarded is True:  # a guarded place is not mutated, but for its precision: a dtype changes no count
