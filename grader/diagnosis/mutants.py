@@ -3671,13 +3671,19 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         originals.setdefault(id(holder), (holder, holder.__code__))
     costs = []  # the measuring time of each mutant measured [s]
     last = deadline.spent()[0]  # the measuring time spent when the last mutant measured ended [s]
+    call = _call_of(calls)
+    paced = _REFUTED.given_up(call, ran)  # the pace at which an earlier value of the same call was given up
+    if paced is not None and _projected(paced, deadline.seconds - last, mutants, ran, measured=0) is not None:
+        return None
     for tried, mutant in enumerate(mutants):
         progress["tried"] = tried
         if deadline.fired:
             return None
         if _REFUTED.refuted(mutant, ran) or (mutant.slip in PRECISION_SLIPS and not banded):
             continue
-        if _hopeless(deadline.seconds - last, costs, mutants[tried:], ran):
+        paced = _hopeless(deadline.seconds - last, costs, mutants[tried:], ran)
+        if paced is not None:
+            _REFUTED.give_up(call, ran, paced)
             return None
         misses = []  # the input at which the mutant's value is not the student's
         if mutant.bindings:  # a constant's slip: its value (and what its module computed from it) bound
@@ -3715,23 +3721,44 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
     return kept
 
 
-def _hopeless(remaining: float, costs: list, left: list[Mutant], ran) -> bool:
-    """True where the mutants ``left`` (those still to measure, refuted ones aside) cannot all be measured within
-    what remains of the deadline's budget (``remaining`` [s]): at the lower median of the times the mutants measured
-    so far took (``costs``, at least ``PROJECTED_AFTER`` of them), more than ``PROJECTED_FACTOR`` times that
-    remainder.  Judged after ``PROJECTED_AFTER`` mutants and again at each doubling of their number, so that the
-    count of the mutants left is not paid for at every mutant.  The measuring is then given up as one whose time
-    runs out: it would have named nothing, at the whole budget's cost.  The deadline's clock is read once a mutant
-    (``_evaluate``; a reading takes about 30 microseconds, which hundreds of mutants add up)."""
+def _hopeless(remaining: float, costs: list, left: list[Mutant], ran) -> float | None:
+    """The pace of the mutants measured so far, where the mutants ``left`` (those still to measure, refuted ones
+    aside) cannot all be measured at it within what remains of the deadline's budget (``remaining`` [s]); else None.
+    The pace is the lower median of the times the mutants measured so far took (``costs``, at least
+    ``PROJECTED_AFTER`` of them), and the mutants left cannot be measured where they would take more than
+    ``PROJECTED_FACTOR`` times that remainder (``_projected``).  Judged after ``PROJECTED_AFTER`` mutants and again
+    at each doubling of their number, so that the count of the mutants left is not paid for at every mutant.  The
+    measuring is then given up as one whose time runs out: it would have named nothing, at the whole budget's cost.
+    The deadline's clock is read once a mutant (``_evaluate``; a reading takes about 30 microseconds, which hundreds
+    of mutants add up)."""
     count = len(costs)
     if count < PROJECTED_AFTER or count & (count - 1):
-        return False
-    pace = sorted(costs)[(count - 1) // 2]
+        return None
+    return _projected(sorted(costs)[(count - 1) // 2], remaining, left, ran, measured=count)
+
+
+def _projected(pace: float, remaining: float, left: list[Mutant], ran, measured: int) -> float | None:
+    """``pace`` where the mutants ``left`` that are not refuted, each measured at ``pace`` [s], would take more than
+    ``PROJECTED_FACTOR`` times the budget's ``remaining`` seconds; else None.  ``measured``: the mutants the pace was
+    measured on here (none where it is an earlier value's of the same call, ``_Refuted.given_up``), for the trace."""
     left = sum(1 for mutant in left if not _REFUTED.refuted(mutant, ran))
     if pace * left <= PROJECTED_FACTOR * max(remaining, 0.0):
-        return False
-    trace.note("hopeless", measured=count, left=left, each=round(pace, 4), remaining=round(remaining, 3))
-    return True
+        return None
+    trace.note("hopeless", measured=measured, left=left, each=round(pace, 4), remaining=round(remaining, 3))
+    return pace
+
+
+def _call_of(calls: list) -> tuple | None:
+    """What makes a measuring's calls the same in another explanation of the grading (``_Refuted.given_up``): each
+    input's probe and kept arguments; None where the arguments, kept as they are, cannot be told apart that way (not
+    hashable).  Not the codes that the first input's call runs: two tracings of one call can tell more or fewer
+    (problem 12's wheel: 14, then 9, where the first run met code that runs once)."""
+    key = tuple(calls)
+    try:
+        hash(key)
+    except TypeError:
+        return None
+    return key
 
 
 def _mutated_values(package, mutant: Mutant, inputs: list[Evidence], calls: list, cheaper: tuple, originals: dict,
@@ -4222,16 +4249,22 @@ class _Refuted:
     mutant measured as it is refutes (not one screened by ``_twins``), and one grading's refutations are never
     another's (``grading``: the context of the grading that the explanations belong to, one submission's problem;
     a batch's oracle serves every submission of a worker).  Each thread keeps its own: a process that grades in
-    several threads never hears one thread's refutations in another's grading."""
+    several threads never hears one thread's refutations in another's grading.
+
+    It keeps too the calls whose measuring was given up as one that cannot end within its budget (``_hopeless``),
+    with the pace their mutants were measured at: the check's other compared values of the same call (problem 12's
+    wheel: the body's point and the contact's, from one run of 3001 steps) ask the same mutants of the same call at
+    the same cost, and are given up at once (``given_up``), unless fewer of them are left to measure."""
 
     def __init__(self):
-        self._local = threading.local()  # ``owner``, ``by`` (mutant -> the codes of the calls that refuted it), ``on``
+        # ``owner``, ``by`` (mutant -> the codes of the calls that refuted it), ``on``, ``paces`` (call -> pace)
+        self._local = threading.local()
 
     @contextlib.contextmanager
     def grading(self, owner):
         local = self._local
         if owner is not getattr(local, "owner", None):
-            local.owner, local.by = owner, {}
+            local.owner, local.by, local.paces = owner, {}, {}
         local.on = owner is not None
         try:
             yield
@@ -4247,6 +4280,13 @@ class _Refuted:
 
     def refuted(self, mutant: Mutant, ran: frozenset | None) -> bool:
         return self._on(ran) and any(earlier <= ran for earlier in self._local.by.get(_identity(mutant), ()))
+
+    def give_up(self, call: tuple | None, ran: frozenset | None, pace: float) -> None:
+        if call is not None and self._on(ran):
+            self._local.paces[call] = pace
+
+    def given_up(self, call: tuple | None, ran: frozenset | None) -> float | None:
+        return self._local.paces.get(call) if call is not None and self._on(ran) else None
 
 
 _REFUTED = _Refuted()

@@ -6,6 +6,7 @@ Problem 12's wheel (3001 steps) is such a run: its 167 mutants take about seven 
 check's two compared values spent the whole budget naming nothing.  A made-up problem's long loop is given up the
 same way; the same loop on a short input is measured to the end and its slip named."""
 
+import dataclasses
 import json
 from types import SimpleNamespace
 
@@ -58,16 +59,18 @@ def test_a_measuring_is_given_up_where_the_rest_would_overrun_the_budget_twice()
     # slowest
 
 
-def _traced(tmp_path, monkeypatch, work):
+def _traced(tmp_path, monkeypatch, work, whole=False):
+    """What ``work`` found, and the trace's notes (their kinds, or ``whole`` notes)."""
     path = tmp_path / "trace.jsonl"
+    path.unlink(missing_ok=True)
     monkeypatch.setenv(trace.VARIABLE, str(path))
     trace.begin("p72.spiral", "explain")
     try:
         found = work()
     finally:
         trace.end()
-    notes = [note["what"] for line in path.read_text().splitlines() for note in json.loads(line)["notes"]]
-    return found, notes
+    notes = [note for line in path.read_text().splitlines() for note in json.loads(line)["notes"]]
+    return found, (notes if whole else [note["what"] for note in notes])
 
 
 def test_a_long_loop_no_mutant_can_be_measured_through_is_given_up(made_up, tmp_path, monkeypatch):
@@ -87,3 +90,26 @@ def test_the_same_loop_on_a_short_input_is_measured_through_and_its_slip_named(m
     found, notes = _traced(tmp_path, monkeypatch, lambda: mutants.mutant_slips(scene("p72.spiral"), evidences))
     assert "hopeless" not in notes and "timeout" not in notes, notes
     assert found and {DIAGNOSES[h.name].family for h in found} == {"sign"}, [(h.name, h.detail) for h in found]
+
+
+def test_another_value_of_a_call_given_up_is_given_up_at_once_in_the_same_grading(made_up, tmp_path, monkeypatch):
+    """Two explanations of one grading ask of the same long call (two compared values, as problem 12's wheel's
+    body's point and contact's point from one run): once the first's measuring is given up, the second's is given
+    up before any mutant is measured, at the pace the first measured; another grading (another context) measures its
+    own."""
+    inputs = [(120_000, 0.01), (100_000, 0.013)]
+    first = made_up_evidences(made_up, "spiral", lambda n, r: _reference(n, r) + 0.01, inputs, number=72)
+    values = [first, [dataclasses.replace(e, got=e.got + 0.01) for e in first]]  # the same calls of the same probe
+    grading = scene("p72.spiral")
+
+    def given_up(evidences, within):
+        found, notes = _traced(tmp_path, monkeypatch, lambda: mutants.mutant_slips(within, evidences), whole=True)
+        assert not found
+        return [note for note in notes if note["what"] == "hopeless"]
+
+    first = given_up(values[0], grading)
+    assert len(first) == 1 and first[0]["measured"] >= mutants.PROJECTED_AFTER, first
+    second = given_up(values[1], grading)
+    assert len(second) == 1 and second[0]["measured"] == 0 and second[0]["each"] == first[0]["each"], second
+    other = given_up(values[1], scene("p72.spiral"))
+    assert len(other) == 1 and other[0]["measured"] >= mutants.PROJECTED_AFTER, other
