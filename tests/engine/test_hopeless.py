@@ -52,8 +52,10 @@ def test_a_measuring_is_given_up_where_the_rest_would_overrun_the_budget_twice()
     slow, fast = [0.1] * 4, [0.001] * 4
     assert mutants._hopeless(1.6, slow, left, None)  # 100 x 0.1 s > 2 x 1.6 s
     assert not mutants._hopeless(1.6, fast, left, None)  # 0.1 s: it ends
-    assert not mutants._hopeless(1.6, slow[:3], left, None)  # too few measured to judge
-    assert not mutants._hopeless(1.6, slow + [0.1], left, None)  # judged at 4, 8, 16, ... only
+    assert mutants._hopeless(1.6, slow[:2], left, None)  # judged after two
+    assert not mutants._hopeless(1.6, slow[:1], left, None)  # too few measured to judge
+    assert not mutants._hopeless(1.6, slow[:3], left, None)  # judged at 2, 4, 8, 16, ... only
+    assert not mutants._hopeless(1.6, slow + [0.1], left, None)
     assert not mutants._hopeless(1.6, slow, left[:30], None)  # 3 s <= 3.2 s: it may end
     assert not mutants._hopeless(1.6, [0.1, 0.1, 0.001, 0.001], left, None)  # the median, not the
     # slowest
