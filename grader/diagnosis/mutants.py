@@ -3247,13 +3247,17 @@ def _traced(package, root: Path, probe, args, quick: tuple = ()) -> frozenset:
     """The code objects of the reference's folder that ``probe(*args)`` runs on the private package; with
     ``quick`` (``_twins``), run with those codes without simplifications in their functions' place (a profiler
     slows sympy's simplifications tenfold), each counted as its function's own code.  Traced once for each
-    explanation (``_TRACES``)."""
+    explanation (``_TRACES``), and once for each grading where its arguments can be told apart by their pickled
+    bytes (``_Refuted.traced``: problem 12's wheel, about 0.3 s a tracing, compares two values of one run)."""
     calls = _TRACES["calls"]
     if calls is None:
         return _traced_once(package, root, probe, args, quick)
-    key = (id(package), str(root), probe, id(args), tuple((id(holder), id(twin)) for holder, twin in quick))
+    twins = tuple((id(holder), id(twin)) for holder, twin in quick)
+    key = (id(package), str(root), probe, id(args), twins)
     if key not in calls:
-        calls[key] = (args, _traced_once(package, root, probe, args, quick))  # the arguments kept: their id holds
+        ran = _REFUTED.traced((id(package), str(root), probe, _kept_once(args), twins),
+                              lambda: _traced_once(package, root, probe, args, quick))
+        calls[key] = (args, ran)  # the arguments kept: their id holds
     return calls[key][1]
 
 
@@ -4257,17 +4261,19 @@ class _Refuted:
     It keeps too the calls whose measuring was given up as one that cannot end within its budget (``_hopeless``),
     with the pace their mutants were measured at: the check's other compared values of the same call (problem 12's
     wheel: the body's point and the contact's, from one run of 3001 steps) ask the same mutants of the same call at
-    the same cost, and are given up at once (``given_up``), unless fewer of them are left to measure."""
+    the same cost, and are given up at once (``given_up``), unless fewer of them are left to measure.  And the codes
+    each call runs (``traced``), which those values would trace again."""
 
     def __init__(self):
-        # ``owner``, ``by`` (mutant -> the codes of the calls that refuted it), ``on``, ``paces`` (call -> pace)
+        # ``owner``, ``by`` (mutant -> the codes of the calls that refuted it), ``on``, ``paces`` (call -> pace),
+        # ``traces`` (call -> the codes it runs)
         self._local = threading.local()
 
     @contextlib.contextmanager
     def grading(self, owner):
         local = self._local
         if owner is not getattr(local, "owner", None):
-            local.owner, local.by, local.paces = owner, {}, {}
+            local.owner, local.by, local.paces, local.traces = owner, {}, {}, {}
         local.on = owner is not None
         try:
             yield
@@ -4290,6 +4296,20 @@ class _Refuted:
 
     def given_up(self, call: tuple | None, ran: frozenset | None) -> float | None:
         return self._local.paces.get(call) if call is not None and self._on(ran) else None
+
+    def traced(self, key: tuple, trace) -> frozenset:
+        """The codes a call runs (``_traced``), traced once for the grading where the call's ``key`` (with its
+        arguments kept, ``_kept_once``) can be hashed, else each time (``trace()``)."""
+        local = self._local
+        try:
+            hash(key)
+        except TypeError:
+            return trace()
+        if not getattr(local, "on", False):
+            return trace()
+        if key not in local.traces:
+            local.traces[key] = trace()
+        return local.traces[key]
 
 
 _REFUTED = _Refuted()

@@ -115,3 +115,21 @@ def test_another_value_of_a_call_given_up_is_given_up_at_once_in_the_same_gradin
     assert len(second) == 1 and second[0]["measured"] == 0 and second[0]["each"] == first[0]["each"], second
     other = given_up(values[1], scene("p72.spiral"))
     assert len(other) == 1 and other[0]["measured"] >= mutants.PROJECTED_AFTER, other
+
+
+def test_a_call_is_traced_once_in_a_grading_whose_explanations_ask_it_again(made_up, monkeypatch):
+    """The codes a call runs are traced (``_traced_once``, a run under a profiler) once for the grading's two
+    explanations of one call, and again in another grading."""
+    inputs = [(50, 0.01), (40, 0.013)]
+    first = made_up_evidences(made_up, "spiral", lambda n, r: _reference(n, r) + 0.01, inputs, number=72)
+    values = [first, [dataclasses.replace(e, got=e.got + 0.01) for e in first]]
+    traced = []
+    once = mutants._traced_once
+    monkeypatch.setattr(mutants, "_traced_once",
+                        lambda *args, **kwargs: traced.append(args[2]) or once(*args, **kwargs))
+    grading = scene("p72.spiral")
+    for evidences in values:
+        mutants.mutant_slips(grading, evidences)
+    assert len(traced) == 1, traced
+    mutants.mutant_slips(scene("p72.spiral"), values[1])
+    assert len(traced) == 2, traced
