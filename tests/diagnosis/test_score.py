@@ -376,113 +376,17 @@ def test_the_fourth_set_repeats_no_mistake_of_the_earlier_sets_the_engines_tests
 
 #: the sets written like the fourth (every realistic mistake whose check fails, whatever its diagnosis), each with
 #: the sets written before it beyond the first three (whose entries ``_earlier_entries`` reads itself)
-LATER_SETS = {"fifth": (FRESH5_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET),
-              "sixth": (FRESH6_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET),
-              "seventh": (FRESH7_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET),
-              "eighth": (FRESH8_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET),
-              "ninth": (FRESH9_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                        + FRESH8_SET),
-              "tenth": (FRESH10_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                        + FRESH8_SET + FRESH9_SET),
-              "eleventh": (FRESH11_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                           + FRESH8_SET + FRESH9_SET + FRESH10_SET),
-              "twelfth": (FRESH12_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                          + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET),
-              "thirteenth": (FRESH13_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                             + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET),
-              "fourteenth": (FRESH14_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                             + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET + FRESH13_SET),
-              "fifteenth": (FRESH15_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                            + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET + FRESH13_SET
-                            + FRESH14_SET),
-              "sixteenth": (FRESH16_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET + FRESH7_SET
-                            + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET + FRESH13_SET
-                            + FRESH14_SET + FRESH15_SET),
-              "seventeenth": (FRESH17_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                              + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                              + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET),
-              "eighteenth": (FRESH18_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                             + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                             + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET),
-              "nineteenth": (FRESH19_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                             + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                             + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET),
-              "twentieth": (FRESH20_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                            + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                            + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                            + FRESH19_SET),
-              "twenty-first": (FRESH21_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                               + FRESH19_SET + FRESH20_SET),
-              "twenty-second": (FRESH22_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                                + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                                + FRESH19_SET + FRESH20_SET + FRESH21_SET),
-              "twenty-third": (FRESH23_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                               + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET),
-              "twenty-fourth": (FRESH24_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                                + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                                + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET + FRESH23_SET),
-              "twenty-fifth": (FRESH25_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                               + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET + FRESH23_SET + FRESH24_SET),
-              "twenty-sixth": (FRESH26_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET + FRESH18_SET
-                               + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET + FRESH23_SET + FRESH24_SET
-                               + FRESH25_SET),
-              "twenty-seventh": (FRESH27_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                                 + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                                 + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                                 + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                                 + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET),
-              "twenty-eighth": (FRESH28_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                                + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                                + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                                + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET),
-              "twenty-ninth": (FRESH29_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                               + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                               + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                               + FRESH28_SET),
-              "thirtieth": (FRESH30_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                            + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                            + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                            + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                            + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                            + FRESH28_SET + FRESH29_SET),
-              "thirty-first": (FRESH31_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                               + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                               + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                               + FRESH28_SET + FRESH29_SET + FRESH30_SET),
-              "thirty-second": (FRESH32_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                                + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                                + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                                + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                                + FRESH28_SET + FRESH29_SET + FRESH30_SET + FRESH31_SET),
-              "thirty-third": (FRESH33_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                               + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                               + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                               + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                               + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                               + FRESH28_SET + FRESH29_SET + FRESH30_SET + FRESH31_SET + FRESH32_SET),
-              "thirty-fourth": (FRESH34_SET, FRESH3_SET + NAMED3_SET + FRESH4_SET + FRESH5_SET + FRESH6_SET
-                                + FRESH7_SET + FRESH8_SET + FRESH9_SET + FRESH10_SET + FRESH11_SET + FRESH12_SET
-                                + FRESH13_SET + FRESH14_SET + FRESH15_SET + FRESH16_SET + FRESH17_SET
-                                + FRESH18_SET + FRESH19_SET + FRESH20_SET + FRESH21_SET + FRESH22_SET
-                                + FRESH23_SET + FRESH24_SET + FRESH25_SET + FRESH26_SET + FRESH27_SET
-                                + FRESH28_SET + FRESH29_SET + FRESH30_SET + FRESH31_SET + FRESH32_SET
-                                + FRESH33_SET)}
+_ORDINALS = ("fifth", "sixth", "seventh", "eighth", "ninth", "tenth", "eleventh", "twelfth", "thirteenth", "fourteenth",
+             "fifteenth", "sixteenth", "seventeenth", "eighteenth", "nineteenth", "twentieth", "twenty-first",
+             "twenty-second", "twenty-third", "twenty-fourth", "twenty-fifth", "twenty-sixth", "twenty-seventh",
+             "twenty-eighth", "twenty-ninth", "thirtieth", "thirty-first", "thirty-second", "thirty-third",
+             "thirty-fourth")
+_WRITTEN = (FRESH5_SET, FRESH6_SET, FRESH7_SET, FRESH8_SET, FRESH9_SET, FRESH10_SET, FRESH11_SET, FRESH12_SET,
+            FRESH13_SET, FRESH14_SET, FRESH15_SET, FRESH16_SET, FRESH17_SET, FRESH18_SET, FRESH19_SET, FRESH20_SET,
+            FRESH21_SET, FRESH22_SET, FRESH23_SET, FRESH24_SET, FRESH25_SET, FRESH26_SET, FRESH27_SET, FRESH28_SET,
+            FRESH29_SET, FRESH30_SET, FRESH31_SET, FRESH32_SET, FRESH33_SET, FRESH34_SET)
+LATER_SETS = {ordinal: (written, sum(_WRITTEN[:k], FRESH3_SET + NAMED3_SET + FRESH4_SET))
+              for k, (ordinal, written) in enumerate(zip(_ORDINALS, _WRITTEN))}
 
 #: the size of a later set and its mistakes in the simulated problems, at least: ninety and twenty, except the tenth to
 #: thirty-fourth sets, written to a smaller size (about fifty entries, at most three of one problem; the twelfth 42, the
