@@ -149,6 +149,27 @@ def test_angles_as_degrees_and_negated_angles(monkeypatch):
         assert caught.value.diagnosis == expected  # a rotation by -x is its transpose: both are told
 
 
+def test_every_angle_negated_at_once(monkeypatch):
+    """Two angles each entering with the opposite sign (every rotation the other way): neither angle negated alone
+    reproduces the answer, both at once do."""
+    def rotation(angle):
+        c, s = np.cos(angle), np.sin(angle)
+        return np.array([[c, -s], [s, c]])
+
+    def turned(a, b):
+        return rotation(a) @ np.array([[1.0, 2.0], [0.0, 3.0]]) @ rotation(b)
+
+    declare(monkeypatch, "stub.g", args=("angle", "angle"), names=("a", "b"))
+    oracle = StubOracle({"stub.g": turned})
+    ctx = Context(99, StubChild(lambda probe, a, b: turned(-a, -b)), {}, None, 3, oracle)
+    ctx.begin("p99.g_values")
+    with pytest.raises(CheckFailure) as caught:
+        ctx.compare_random("stub.g", st.tuples(st.floats(-3.0, 3.0, allow_nan=False),
+                                               st.floats(-3.0, 3.0, allow_nan=False)), name="T", tol=EXACT)
+    assert caught.value.diagnosis == "angle_sign", (caught.value.diagnosis, caught.value.hint)
+    assert "every angle enters with the opposite sign" in caught.value.hint, caught.value.hint
+
+
 def test_never_a_default_cause(monkeypatch):
     """A value that no slip of the grammar gives: no diagnosis, no hint; the message says what differs."""
     declare(monkeypatch, "stub.f", args=("scalar", "scalar"), names=("a", "b"))

@@ -423,6 +423,11 @@ def input_slips(decl: Declaration, args: tuple) -> list:
             every = replaced(every, path, _angle(value, np.deg2rad))
         out.append((Hypothesis("in:deg:all", "degrees", 2, "every angle is used as if it were in degrees (radians "
                                 "are given)"), every))
+        every = tuple(args)
+        for path, value in angles:
+            every = replaced(every, path, _angle(value, np.negative))
+        out.append((Hypothesis("in:neg:all", "angle_sign", 2, "every angle enters with the opposite sign (each "
+                                "rotation the other way, as if its inverse were built)"), every))
     for (p1, r1, v1), (p2, r2, v2) in itertools.combinations(leaves, 2):
         if r1 == r2 and len(p1) == len(p2) == 1 and _same_kind(v1, v2) and not equal(v1, v2):
             swapped = replaced(replaced(args, p1, v2), p2, v1)
