@@ -396,6 +396,8 @@ _TABLE = (
        "cut values to whole numbers"),
     _D("absolute_tolerance", "precision", "a tolerance not relative to the size of the values",
        "compared with an absolute tolerance"),
+    _D("event_interpolated", "precision", "the state at an event interpolated between a run's output samples (not "
+       "solve_ivp's y_events, the state at the event itself)", "interpolated the state at an event between samples"),
     # ---------------------------------------------------------------- integration schemes
     _D("euler_not_exponential", "step_size", "an Euler step where the matrix exponential belongs",
        "used Euler instead of the matrix exponential"),

@@ -354,7 +354,9 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     its whole state there from another start: ``_windows``, a slice one entry off, the halves exchanged) that
     differs clearly from the right one and is not zero within the tolerance (a zero, a velocity at an apex say,
     tells no row).  Only where the event itself is found where the reference's is: an event on another quantity
-    moves the state read at it, which no row then reproduces."""
+    moves the state read at it, which no row then reproduces.  The compared value's own state (entry) of the run
+    interpolated at the event's time (``np.interp`` of the output samples where ``y_events`` belongs) is no other
+    row: a value that is it is told as the event's state interpolated (``event_interpolated``)."""
     motion, tol = decl.motion, evidence.tol
     at_events = motion.get("at_events") or {}
     source, student = evidence.source, evidence.student
@@ -382,12 +384,26 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
     last = _last_output(evidence, ran, at_events[key], te)
     if last is not None:
         return last
+    interpolated = None  # the compared value's own state (entry) interpolated at the event: no other row
+    _, own, *entry = at_events[key]
     if ran is not None and ran[0][0] <= te <= ran[0][-1]:
         t, R = ran
         for state, samples in R.items():
             row = np.array([np.interp(te, t, samples[:, j]) for j in range(samples.shape[1])])
-            candidates[f"its {state} at the event"] = row
-            candidates.update({f"its {state}[{j}] at the event": row[j] for j in range(row.size)})
+            rows = {f"its {state} at the event": row}
+            rows.update({f"its {state}[{j}] at the event": row[j] for j in range(row.size)})
+            if state == own:  # the compared value's own row, interpolated: no other row (told apart below)
+                interpolated = row[int(entry[0])] if entry else row
+                rows.pop(f"its {state}[{int(entry[0])}] at the event" if entry else f"its {state} at the event")
+            candidates.update(rows)
+    if interpolated is not None and np.shape(interpolated) == ours.shape \
+            and within(mine, np.asarray(interpolated, dtype=float), tol) \
+            and distinct(np.asarray(interpolated, dtype=float), ours, tol):
+        return [Hypothesis(f"event:interpolated:{key}", "event_interpolated", 2,
+                           f"your {key} is the reference's {own} interpolated between its output samples at the "
+                           f"event {event} = {te:.6g} s, not its state at the event itself (solve_ivp's y_events): "
+                           f"it is {format_array(np.asarray(interpolated, dtype=float))} (expected "
+                           f"{format_array(ours)})")]
     candidates.update(_windows(evidence, motion, event, te, key, ours.size))
     wrong = [label for label, value in candidates.items()
              if np.shape(value) == ours.shape and within(mine, np.asarray(value, dtype=float), tol)

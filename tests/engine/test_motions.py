@@ -535,6 +535,38 @@ def test_a_state_at_an_event_is_read_from_its_rows_only_where_the_event_agrees()
     assert event_state_slips(evidence, decl) == []
 
 
+def test_a_state_at_an_event_interpolated_between_samples_is_its_own_row_read_approximately():
+    """An apex between two output samples: the height interpolated linearly there is the height's own row, read
+    between the samples where the state at the event (y_events) belongs; not another row.  The speed's row
+    interpolated there is another row."""
+    from grader.diagnosis import Declaration, Source
+    from grader.diagnosis.runs import event_state_slips
+
+    t = np.linspace(0.0, 1.0, 11)
+    te = 0.57  # between the samples at 0.5 and 0.6, nearer the later
+    exact = {"h": lambda s: 5.0 - 4.0 * (s - te) ** 2, "v": lambda s: -8.0 * (s - te) + 3.0}
+    ours = {"t": t, "y": np.column_stack([exact["h"](t), exact["v"](t)]), "t_apex": te,
+            "height_apex": np.array(exact["h"](te))}
+    decl = Declaration(motion={"time": "t", "states": ("y",), "events": ("t_apex",),
+                               "at_events": {"height_apex": ("t_apex", "y", 0)}})
+
+    def told(value):
+        mine = dict(ours, height_apex=np.array(value))
+        evidence = Evidence(mine["height_apex"], ours["height_apex"], Tol("the apex's height", 1e-4), "height_apex",
+                            source=Source("stub.run", (), ("height_apex",), ours),
+                            student=Source("stub.run", (), ("height_apex",), mine))
+        return [(h.name, h.detail) for h in event_state_slips(evidence, decl)]
+
+    interpolated = float(np.interp(te, t, ours["y"][:, 0]))
+    assert abs(interpolated - 5.0) > 1e-3  # the samples miss the apex by more than the tolerance
+    found = told(interpolated)
+    assert [name for name, _ in found] == ["event_interpolated"], found
+    assert "interpolated between its output samples" in found[0][1], found
+    found = told(float(np.interp(te, t, ours["y"][:, 1])))  # the speed's row there: another row
+    assert [name for name, _ in found] == ["state_row"], found
+    assert told(5.0 + 0.3) == []
+
+
 def _grid_evidence(times):
     """A run compared by its output times: the student's at ``times``, the reference's every 0.1 s over 1 s, both
     the same motion (sin t) at their own times."""
