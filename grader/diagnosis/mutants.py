@@ -1543,15 +1543,14 @@ def _trig_names(function: ast.FunctionDef) -> dict:
     return others
 
 
-def _summed_terms(node) -> frozenset:
-    """The terms of a sum or a difference (``q[1] + q[3]``: ``q[1]``, ``q[3]``; a term subtracted, under its minus),
-    each by its text; a node that is no sum is its one term."""
-    if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
-        right = _summed_terms(node.right)
-        if isinstance(node.op, ast.Sub):
-            right = frozenset("-" + term for term in right)
-        return _summed_terms(node.left) | right
-    return frozenset({ast.dump(node)})
+def _sum_terms(node) -> list:
+    """The terms of a sum or a difference, first to last (``l2 + l3 * np.sin(phi)``: ``l2``, ``l3 * np.sin(phi)``; a
+    term subtracted, under its minus); a node that is no sum is its one term."""
+    terms = []
+    while isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub)):
+        terms.insert(0, node.right if isinstance(node.op, ast.Add) else ast.UnaryOp(ast.USub(), node.right))
+        node = node.left
+    return [node, *terms]
 
 
 def _trig_angles(function: ast.FunctionDef) -> dict:
@@ -1565,7 +1564,8 @@ def _trig_angles(function: ast.FunctionDef) -> dict:
     calls = _trig_bound(function)
     found = {}
     for callee in _TRIG:
-        named = {name: _summed_terms(call.args[0]) for name, call in calls.items() if _callee(call) == callee}
+        named = {name: frozenset(ast.dump(term) for term in _sum_terms(call.args[0])) for name, call in calls.items()
+                 if _callee(call) == callee}
         if not 2 <= len(named) <= 6:
             continue
         for name, terms in named.items():
@@ -2483,15 +2483,8 @@ def _sums(function: ast.FunctionDef) -> dict:
 def _bound_terms(function: ast.FunctionDef) -> dict:
     """``{name: its terms}`` of the names the function binds once, and to a sum or a difference of two to four
     terms (``radius = l2 + l3 * np.sin(phi)``: ``l2``, ``l3 * np.sin(phi)``; a term subtracted, under its minus)."""
-    found = {}
-    for name, value in _bound_once(function).items():
-        terms = []
-        while isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Add, ast.Sub)) and len(terms) < 4:
-            terms.insert(0, value.right if isinstance(value.op, ast.Add) else ast.UnaryOp(ast.USub(), value.right))
-            value = value.left
-        if value is not None and terms and len(terms) < 4:
-            found[name] = (value, *terms)
-    return found
+    terms = {name: _sum_terms(value) for name, value in _bound_once(function).items()}
+    return {name: tuple(each) for name, each in terms.items() if 2 <= len(each) <= 4}
 
 
 def _bound_solves(function: ast.FunctionDef) -> dict:
