@@ -406,6 +406,12 @@ def rotation_of(decl: Declaration, args):
     return A
 
 
+#: the slips of every angle at once: ``(key, name, transform, words)``
+EVERY_ANGLE = (("deg", "degrees", np.deg2rad, "every angle is used as if it were in degrees (radians are given)"),
+               ("neg", "angle_sign", np.negative, "every angle enters with the opposite sign (each rotation the other "
+                                                  "way, as if its inverse were built)"))
+
+
 def input_slips(decl: Declaration, args: tuple) -> list:
     """``(hypothesis, transformed args)`` of the input slips of a declared probe."""
     out = []
@@ -417,17 +423,11 @@ def input_slips(decl: Declaration, args: tuple) -> list:
                                 "(radians are given)"), replaced(args, path, _angle(value, np.deg2rad))))
         out.append((Hypothesis(f"in:neg:{path}", "angle_sign", 2, f"{label} enters with the opposite sign (a "
                                 "rotation the other way)"), replaced(args, path, _angle(value, np.negative))))
-    if len(angles) > 1:
+    for key, name, f, words in EVERY_ANGLE if len(angles) > 1 else ():
         every = tuple(args)
         for path, value in angles:
-            every = replaced(every, path, _angle(value, np.deg2rad))
-        out.append((Hypothesis("in:deg:all", "degrees", 2, "every angle is used as if it were in degrees (radians "
-                                "are given)"), every))
-        every = tuple(args)
-        for path, value in angles:
-            every = replaced(every, path, _angle(value, np.negative))
-        out.append((Hypothesis("in:neg:all", "angle_sign", 2, "every angle enters with the opposite sign (each "
-                                "rotation the other way, as if its inverse were built)"), every))
+            every = replaced(every, path, _angle(value, f))
+        out.append((Hypothesis(f"in:{key}:all", name, 2, words), every))
     for (p1, r1, v1), (p2, r2, v2) in itertools.combinations(leaves, 2):
         if r1 == r2 and len(p1) == len(p2) == 1 and _same_kind(v1, v2) and not equal(v1, v2):
             swapped = replaced(replaced(args, p1, v2), p2, v1)

@@ -3248,7 +3248,7 @@ def _traced(package, root: Path, probe, args, quick: tuple = ()) -> frozenset:
     twins = tuple((id(holder), id(twin)) for holder, twin in quick)
     key = (id(package), str(root), probe, id(args), twins)
     if key not in calls:
-        ran = _REFUTED.traced((id(package), str(root), probe, _kept_once(args), twins),
+        ran = _REFUTED.traced(_hashable((id(package), str(root), probe, _kept_once(args), twins)),
                               lambda: _traced_once(package, root, probe, args, quick))
         calls[key] = (args, ran)  # the arguments kept: their id holds
     return calls[key][1]
@@ -3671,7 +3671,9 @@ def _evaluate(package, mutants: list[Mutant], inputs: list[Evidence], deadline: 
         originals.setdefault(id(holder), (holder, holder.__code__))
     costs = []  # the measuring time of each mutant measured [s]
     last = deadline.spent()[0]  # the measuring time spent when the last mutant measured ended [s]
-    call = _call_of(calls)
+    # the same calls in another explanation of the grading: each input's probe and kept arguments, not the codes the
+    # first input's call runs (two tracings of problem 12's wheel told 14, then 9: the first met code that runs once)
+    call = _hashable(tuple(calls))
     paced = _REFUTED.given_up(call, ran)  # the pace at which an earlier value of the same call was given up
     if paced is not None and _projected(paced, deadline.seconds - last, mutants, ran, measured=0) is not None:
         return None
@@ -3748,12 +3750,9 @@ def _projected(pace: float, remaining: float, left: list[Mutant], ran, measured:
     return pace
 
 
-def _call_of(calls: list) -> tuple | None:
-    """What makes a measuring's calls the same in another explanation of the grading (``_Refuted.given_up``): each
-    input's probe and kept arguments; None where the arguments, kept as they are, cannot be told apart that way (not
-    hashable).  Not the codes that the first input's call runs: two tracings of one call can tell more or fewer
-    (problem 12's wheel: 14, then 9, where the first run met code that runs once)."""
-    key = tuple(calls)
+def _hashable(key: tuple) -> tuple | None:
+    """``key``, or None where it cannot be hashed (arguments kept as they are, ``_kept_once``, that cannot be told
+    apart by their pickled bytes): a key of what one grading keeps (``_Refuted``)."""
     try:
         hash(key)
     except TypeError:
@@ -4290,15 +4289,11 @@ class _Refuted:
     def given_up(self, call: tuple | None, ran: frozenset | None) -> float | None:
         return self._local.paces.get(call) if call is not None and self._on(ran) else None
 
-    def traced(self, key: tuple, trace) -> frozenset:
-        """The codes a call runs (``_traced``), traced once for the grading where the call's ``key`` (with its
-        arguments kept, ``_kept_once``) can be hashed, else each time (``trace()``)."""
+    def traced(self, key: tuple | None, trace) -> frozenset:
+        """The codes a call runs (``_traced``), traced once for the grading where the call has a ``key`` (with its
+        arguments kept, ``_kept_once``; ``_hashable``), else each time (``trace()``)."""
         local = self._local
-        try:
-            hash(key)
-        except TypeError:
-            return trace()
-        if not getattr(local, "on", False):
+        if key is None or not getattr(local, "on", False):
             return trace()
         if key not in local.traces:
             local.traces[key] = trace()
