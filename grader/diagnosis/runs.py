@@ -393,17 +393,15 @@ def event_state_slips(evidence: Evidence, decl: Declaration) -> list:
             rows = {f"its {state} at the event": row}
             rows.update({f"its {state}[{j}] at the event": row[j] for j in range(row.size)})
             if state == own:  # the compared value's own row, interpolated: no other row (told apart below)
-                interpolated = row[int(entry[0])] if entry else row
+                interpolated = np.asarray(row[int(entry[0])] if entry else row, dtype=float)
                 rows.pop(f"its {state}[{int(entry[0])}] at the event" if entry else f"its {state} at the event")
             candidates.update(rows)
-    if interpolated is not None and np.shape(interpolated) == ours.shape \
-            and within(mine, np.asarray(interpolated, dtype=float), tol) \
-            and distinct(np.asarray(interpolated, dtype=float), ours, tol):
+    if interpolated is not None and interpolated.shape == ours.shape and within(mine, interpolated, tol) \
+            and distinct(interpolated, ours, tol):
         return [Hypothesis(f"event:interpolated:{key}", "event_interpolated", 2,
                            f"your {key} is the reference's {own} interpolated between its output samples at the "
                            f"event {event} = {te:.6g} s, not its state at the event itself (solve_ivp's y_events): "
-                           f"it is {format_array(np.asarray(interpolated, dtype=float))} (expected "
-                           f"{format_array(ours)})")]
+                           f"it is {format_array(interpolated)} (expected {format_array(ours)})")]
     candidates.update(_windows(evidence, motion, event, te, key, ours.size))
     wrong = [label for label, value in candidates.items()
              if np.shape(value) == ours.shape and within(mine, np.asarray(value, dtype=float), tol)
